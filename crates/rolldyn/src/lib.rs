@@ -1,0 +1,26 @@
+//! # rolldyn — ball-bearing dynamics engine
+//!
+//! The core library: no I/O, no printing, SI units throughout. The data flow
+//! follows the physics (see `ARCHITECTURE.md`):
+//!
+//! * [`geometry`] — bearing internal geometry and groove-centre circles (MODEL §2);
+//! * [`material`] — elastic materials and the Hertz effective modulus;
+//! * [`contact`] — exact torus contact, Hertz point contact, precomputed
+//!   contact tables and normal force laws (MODEL §2.1–§2.3);
+//! * [`kinematics`] — pure-rolling speeds, defect frequencies, waviness
+//!   excitation map (MODEL §7);
+//! * [`math`] — elliptic integrals, root finding, monotone interpolation.
+//!
+//! Equation numbers refer to `../shared/spec/MODEL.md` and the seed papers;
+//! every model's doc comment names its source and any correction.
+
+pub mod contact;
+pub mod error;
+pub mod geometry;
+pub mod kinematics;
+pub mod material;
+pub mod math;
+
+pub use error::InvalidParameter;
+pub use geometry::{BearingGeometry, Clearance, GeometrySpec, RingKind};
+pub use material::Material;
