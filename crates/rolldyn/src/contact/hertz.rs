@@ -281,7 +281,8 @@ pub fn solve_ellipticity(curvature_difference: f64) -> Result<f64, InvalidParame
         |u: f64| ellipticity_equation(u.exp()) - f,
         0.0,
         MAX_ELLIPTICITY.ln(),
-        1e-15,
+        // Purely relative tolerance (Brent adds 2ε|x|): ln κ can be ~1e-9.
+        f64::MIN_POSITIVE,
     )
     .map_err(|e| {
         InvalidParameter::new(

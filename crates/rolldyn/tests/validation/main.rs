@@ -1,0 +1,12 @@
+//! Validation cases of `../shared/spec/VALIDATION.md` for the core library.
+//! Each module cites its source, the reference numbers and the tolerance.
+//! Numbers found are reported in `docs/validation.md`.
+
+mod a1_elliptic;
+mod a2_a3_hertz;
+mod a4_tables;
+mod a5_torus;
+mod a6_a8_kinematics;
+mod a7_seed000_geometry;
+mod b3_impact;
+mod common;
