@@ -7,6 +7,7 @@
 //! * [`material`] — elastic materials and the Hertz effective modulus;
 //! * [`contact`] — exact torus contact, Hertz point contact, precomputed
 //!   contact tables and normal force laws (MODEL §2.1–§2.3);
+//! * [`operating`] — speed profiles and applied loads (MODEL §8);
 //! * [`kinematics`] — pure-rolling speeds, defect frequencies, waviness
 //!   excitation map (MODEL §7);
 //! * [`math`] — elliptic integrals, root finding, monotone interpolation.
@@ -20,6 +21,7 @@ pub mod geometry;
 pub mod kinematics;
 pub mod material;
 pub mod math;
+pub mod operating;
 
 pub use error::InvalidParameter;
 pub use geometry::{BearingGeometry, Clearance, GeometrySpec, RingKind};

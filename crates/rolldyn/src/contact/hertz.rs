@@ -47,6 +47,7 @@ use std::f64::consts::PI;
 
 /// Which Hertz contact-stiffness model to use (case file: `model.contact_stiffness`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum HertzModel {
     /// Exact ellipticity solve with complete elliptic integrals (default).

@@ -48,19 +48,10 @@ pub trait NormalLaw {
     fn force(&self, contact: &ContactState) -> f64;
 }
 
-/// How the `viscous` law's damping coefficient is given.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ViscousDamping {
-    /// Constant coefficient c_n \[N·s/m\].
-    Coefficient(f64),
-    /// Damping ratio ζ of the contact linearised at its current δ.
-    Ratio(f64),
-}
-
 /// The built-in normal force laws (case file: `model.normal_law`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
-#[serde(tag = "law", rename_all = "snake_case")]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
 pub enum NormalForceLaw {
     /// Elastic Hertz law.
     #[default]
@@ -80,10 +71,16 @@ pub enum NormalForceLaw {
         /// Coefficient of restitution e in (0, 1].
         restitution: f64,
     },
-    /// Hertz spring plus linear viscous damper.
+    /// Hertz spring plus linear viscous damper; give exactly one of
+    /// `damping` and `damping_ratio`.
     Viscous {
-        /// Damping coefficient or ratio.
-        damping: ViscousDamping,
+        /// Damping coefficient c_n \[N·s/m\], ≥ 0.
+        #[serde(default)]
+        damping: Option<f64>,
+        /// Damping ratio ζ ≥ 0 of the contact linearised at its current δ:
+        /// c_n = 2ζ√(1.5 K_c δ^{1/2} m).
+        #[serde(default)]
+        damping_ratio: Option<f64>,
     },
 }
 
@@ -116,31 +113,32 @@ impl NormalForceLaw {
             | Self::HuntCrossley { restitution: e }
             | Self::Flores { restitution: e } => restitution(e),
             Self::Viscous {
-                damping: ViscousDamping::Coefficient(c),
-            } => {
-                if c.is_finite() && c >= 0.0 {
-                    Ok(())
-                } else {
-                    Err(InvalidParameter::new(
-                        "damping",
-                        c,
-                        "damping coefficient must be ≥ 0",
-                    ))
-                }
-            }
-            Self::Viscous {
-                damping: ViscousDamping::Ratio(z),
-            } => {
-                if z.is_finite() && z >= 0.0 {
-                    Ok(())
-                } else {
-                    Err(InvalidParameter::new(
-                        "damping_ratio",
-                        z,
-                        "damping ratio must be ≥ 0",
-                    ))
-                }
-            }
+                damping,
+                damping_ratio,
+            } => match (damping, damping_ratio) {
+                (Some(c), None) if c.is_finite() && c >= 0.0 => Ok(()),
+                (Some(c), None) => Err(InvalidParameter::new(
+                    "damping",
+                    c,
+                    "damping coefficient must be ≥ 0",
+                )),
+                (None, Some(z)) if z.is_finite() && z >= 0.0 => Ok(()),
+                (None, Some(z)) => Err(InvalidParameter::new(
+                    "damping_ratio",
+                    z,
+                    "damping ratio must be ≥ 0",
+                )),
+                (Some(_), Some(_)) => Err(InvalidParameter::new(
+                    "damping_ratio",
+                    "given",
+                    "give either damping or damping_ratio, not both",
+                )),
+                (None, None) => Err(InvalidParameter::new(
+                    "damping",
+                    "missing",
+                    "the viscous law needs damping (N·s/m) or damping_ratio",
+                )),
+            },
         }
     }
 
@@ -165,12 +163,16 @@ impl NormalLaw for NormalForceLaw {
         let elastic = c.stiffness * c.penetration * sqrt_delta;
         let q = match *self {
             Self::Hertz => elastic,
-            Self::Viscous { damping } => {
-                let coefficient = match damping {
-                    ViscousDamping::Coefficient(cn) => cn,
-                    ViscousDamping::Ratio(zeta) => {
+            Self::Viscous {
+                damping,
+                damping_ratio,
+            } => {
+                let coefficient = match (damping, damping_ratio) {
+                    (Some(cn), _) => cn,
+                    (None, Some(zeta)) => {
                         2.0 * zeta * (1.5 * c.stiffness * sqrt_delta * c.effective_mass).sqrt()
                     }
+                    (None, None) => 0.0,
                 };
                 elastic + coefficient * c.penetration_rate
             }
@@ -241,7 +243,8 @@ mod tests {
             NormalForceLaw::HuntCrossley { restitution: 0.5 },
             NormalForceLaw::Flores { restitution: 0.5 },
             NormalForceLaw::Viscous {
-                damping: ViscousDamping::Coefficient(1e5),
+                damping: Some(1e5),
+                damping_ratio: None,
             },
         ];
         for law in laws {

@@ -1,0 +1,573 @@
+//! The validated case: SI units, every rule of MODEL §2 checked. Built by
+//! [`crate::load_case`] from a [`RawCase`]; nothing runs on unchecked input.
+
+use crate::raw::*;
+use crate::units::{Dimension, Quantity};
+use rolldyn::contact::normal_law::DEFAULT_IMPACT_SPEED_FLOOR;
+use rolldyn::contact::{HertzModel, NormalForceLaw};
+use rolldyn::operating::{Loads, SpeedProfile};
+use rolldyn::{BearingGeometry, Clearance, GeometrySpec, Material};
+
+/// A rule broken by one key: the raw material of a [`crate::CaseError`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Invalid {
+    /// Dotted key.
+    pub key: String,
+    /// Value as written, if any.
+    pub value: Option<String>,
+    /// The rule.
+    pub rule: String,
+}
+
+impl Invalid {
+    fn new(key: impl Into<String>, value: Option<String>, rule: impl Into<String>) -> Self {
+        Self {
+            key: key.into(),
+            value,
+            rule: rule.into(),
+        }
+    }
+    fn missing(key: &str, what: &str) -> Self {
+        Self::new(key, None, format!("missing: {what}"))
+    }
+}
+
+/// A validated rolldyn case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    /// Title.
+    pub title: Option<String>,
+    /// The bearing.
+    pub bearing: Bearing,
+    /// Cage data (all optional until the dynamic engine).
+    pub cage: Cage,
+    /// Ball and ring materials.
+    pub materials: Materials,
+    /// Lubricant, if given.
+    pub lubricant: Option<Lubricant>,
+    /// Inner-ring speed, if given.
+    pub speed: Option<SpeedProfile>,
+    /// Loads on the inner ring.
+    pub loads: Loads,
+    /// Normal force law.
+    pub normal_law: NormalForceLaw,
+    /// Hertz contact-stiffness model.
+    pub contact_stiffness: HertzModel,
+    /// Impact-speed floor v_floor \[m/s\].
+    pub impact_speed_floor: f64,
+    /// Simulated time \[s\], if given.
+    pub duration: Option<f64>,
+    /// Relative tolerance of adaptive integrators.
+    pub relative_tolerance: Option<f64>,
+    /// Largest integrator step \[s\].
+    pub max_step: Option<f64>,
+    /// Recorder sample rate \[Hz\].
+    pub sample_rate: Option<f64>,
+    /// Output directory.
+    pub output_directory: Option<String>,
+    /// Assumed values: (dotted key, reason).
+    pub assumptions: Vec<(String, String)>,
+}
+
+/// Bearing identity and geometry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Bearing {
+    /// Preset the geometry came from, if any.
+    pub preset: Option<String>,
+    /// Designation.
+    pub designation: Option<String>,
+    /// Validated geometry.
+    pub geometry: BearingGeometry,
+    /// Bore \[m\].
+    pub bore: Option<f64>,
+    /// Outside diameter \[m\].
+    pub outside_diameter: Option<f64>,
+    /// Width \[m\].
+    pub width: Option<f64>,
+}
+
+/// Cage data in SI.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Cage {
+    /// Guidance.
+    pub guidance: Option<CageGuidance>,
+    /// Pocket clearance C_p \[m\].
+    pub pocket_clearance: Option<f64>,
+    /// Cage bore \[m\].
+    pub inner_diameter: Option<f64>,
+    /// Cage outside diameter \[m\].
+    pub outer_diameter: Option<f64>,
+    /// Guide-land width \[m\].
+    pub guide_land_width: Option<f64>,
+    /// Guide clearance \[m\].
+    pub guide_clearance: Option<f64>,
+    /// Mass \[kg\].
+    pub mass: Option<f64>,
+    /// Polar moment of inertia \[kg·m²\].
+    pub inertia: Option<f64>,
+}
+
+/// A material with a display name.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NamedMaterial {
+    /// Name for reports.
+    pub name: String,
+    /// Properties.
+    pub material: Material,
+}
+
+/// Ball and ring materials.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Materials {
+    /// Ball material.
+    pub ball: NamedMaterial,
+    /// Ring material.
+    pub rings: NamedMaterial,
+}
+
+/// Lubricant in SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lubricant {
+    /// Name.
+    pub name: Option<String>,
+    /// η₀ \[Pa·s\].
+    pub viscosity: f64,
+    /// α_p \[1/Pa\].
+    pub pressure_viscosity: f64,
+    /// Density \[kg/m³\].
+    pub density: Option<f64>,
+    /// Thermal conductivity \[W/(m·K)\].
+    pub thermal_conductivity: Option<f64>,
+    /// Specific heat \[J/(kg·K)\].
+    pub specific_heat: Option<f64>,
+    /// Reference temperature \[K\].
+    pub temperature: Option<f64>,
+}
+
+/// Built-in material names and properties.
+pub const MATERIALS: [(&str, Material); 2] = [
+    ("steel_52100", Material::STEEL_52100),
+    ("silicon_nitride", Material::SILICON_NITRIDE),
+];
+
+fn text<D>(q: &Option<Quantity<D>>) -> Option<String> {
+    q.as_ref().map(|q| q.to_string())
+}
+
+/// A checked optional quantity: `Ok(None)` when absent.
+fn checked<D: Dimension>(
+    key: &str,
+    q: &Option<Quantity<D>>,
+    rule: impl Fn(f64) -> Result<(), String>,
+) -> Result<Option<f64>, Invalid> {
+    match q {
+        None => Ok(None),
+        Some(q) => rule(q.si)
+            .map(|_| Some(q.si))
+            .map_err(|r| Invalid::new(key, Some(q.to_string()), r)),
+    }
+}
+
+fn positive(v: f64) -> Result<(), String> {
+    if v > 0.0 {
+        Ok(())
+    } else {
+        Err("must be positive".into())
+    }
+}
+
+fn non_negative(v: f64) -> Result<(), String> {
+    if v >= 0.0 {
+        Ok(())
+    } else {
+        Err("must not be negative".into())
+    }
+}
+
+fn positive_number(
+    key: &str,
+    v: Option<f64>,
+    rule: impl Fn(f64) -> bool,
+    what: &str,
+) -> Result<Option<f64>, Invalid> {
+    match v {
+        Some(x) if !x.is_finite() => Err(Invalid::new(
+            key,
+            Some(x.to_string()),
+            "must be a finite number",
+        )),
+        Some(x) if !rule(x) => Err(Invalid::new(key, Some(x.to_string()), what)),
+        other => Ok(other),
+    }
+}
+
+impl Case {
+    /// Validates a raw case (already merged with its preset and overrides).
+    pub fn from_raw(raw: &RawCase) -> Result<Self, Invalid> {
+        let op = &raw.operating;
+        let speed = match (&op.speed, &op.speed_profile) {
+            (Some(_), Some(_)) => {
+                return Err(Invalid::new(
+                    "operating.speed_profile",
+                    None,
+                    "give either operating.speed (constant) or operating.speed_profile, not both",
+                ));
+            }
+            (Some(s), None) => Some(SpeedProfile::Constant(s.si)),
+            (None, Some(points)) => Some(
+                SpeedProfile::piecewise_linear(
+                    points.iter().map(|p| (p.time.si, p.speed.si)).collect(),
+                )
+                .map_err(|(i, e)| {
+                    let v = points.get(i).map(|p| p.time.to_string());
+                    Invalid::new(format!("operating.speed_profile[{i}].time"), v, e.rule)
+                })?,
+            ),
+            (None, None) => None,
+        };
+        let force = |q: &Option<Quantity<crate::units::Force>>| q.as_ref().map_or(0.0, |q| q.si);
+        let moment = |q: &Option<Quantity<crate::units::Moment>>| q.as_ref().map_or(0.0, |q| q.si);
+        let loads = Loads {
+            force: [force(&op.force_x), force(&op.force_y), force(&op.force_z)],
+            moment: [moment(&op.moment_y), moment(&op.moment_z)],
+        };
+
+        let normal_law = raw.model.normal_law.map_or(NormalForceLaw::Hertz, |c| c.0);
+        normal_law.validate().map_err(|e| {
+            Invalid::new(
+                format!("model.normal_law.{}", e.field),
+                Some(e.value),
+                e.rule,
+            )
+        })?;
+        let impact_speed_floor = checked(
+            "model.impact_speed_floor",
+            &raw.model.impact_speed_floor,
+            positive,
+        )?
+        .unwrap_or(DEFAULT_IMPACT_SPEED_FLOOR);
+
+        let s = &raw.solver;
+        let duration = checked("solver.duration", &s.duration, positive)?;
+        let max_step = checked("solver.max_step", &s.max_step, positive)?;
+        let relative_tolerance = positive_number(
+            "solver.relative_tolerance",
+            s.relative_tolerance,
+            |x| x > 0.0 && x < 1.0,
+            "must lie in (0, 1)",
+        )?;
+        let sample_rate = checked("output.sample_rate", &raw.output.sample_rate, positive)?;
+
+        Ok(Self {
+            title: raw.title.clone(),
+            bearing: bearing(&raw.bearing)?,
+            cage: cage(&raw.cage)?,
+            materials: Materials {
+                ball: material("materials.ball", raw.materials.ball.as_ref())?,
+                rings: material("materials.rings", raw.materials.rings.as_ref())?,
+            },
+            lubricant: raw.lubricant.as_ref().map(lubricant).transpose()?,
+            speed,
+            loads,
+            normal_law,
+            contact_stiffness: raw.model.contact_stiffness.unwrap_or_default(),
+            impact_speed_floor,
+            duration,
+            relative_tolerance,
+            max_step,
+            sample_rate,
+            output_directory: raw.output.directory.clone(),
+            assumptions: raw
+                .assumptions
+                .iter()
+                .map(|(k, v)| (k.clone(), v.clone()))
+                .collect(),
+        })
+    }
+}
+
+/// The parametrization groups of MODEL §2, by their keys.
+pub const PARAMETRIZATIONS: [&[&str]; 3] = [
+    &["free_contact_angle"],
+    &["diametral_clearance"],
+    &["inner_raceway_diameter", "outer_raceway_diameter"],
+];
+
+fn groove(
+    ring: &str,
+    curvature: Option<f64>,
+    radius: &Option<Quantity<crate::units::Length>>,
+    ball_diameter: f64,
+) -> Result<(f64, &'static str), Invalid> {
+    let (ck, rk) = match ring {
+        "inner" => (
+            "bearing.inner_groove_curvature",
+            "bearing.inner_groove_radius",
+        ),
+        _ => (
+            "bearing.outer_groove_curvature",
+            "bearing.outer_groove_radius",
+        ),
+    };
+    match (curvature, radius) {
+        (Some(_), Some(r)) => Err(Invalid::new(
+            rk,
+            Some(r.to_string()),
+            format!("give either {ck} or {rk}, not both"),
+        )),
+        (Some(f), None) => Ok((f, "curvature")),
+        (None, Some(r)) => Ok((r.si / ball_diameter, "radius")),
+        (None, None) => Err(Invalid::missing(
+            ck,
+            &format!("give the {ring} groove curvature factor f = r/D (e.g. 0.52) or {rk}"),
+        )),
+    }
+}
+
+fn bearing(b: &RawBearing) -> Result<Bearing, Invalid> {
+    let d = b.ball_diameter.as_ref().ok_or_else(|| {
+        Invalid::missing(
+            "bearing.ball_diameter",
+            "ball diameter D, e.g. \"6.35 mm\" (or give bearing.preset)",
+        )
+    })?;
+    let z = b
+        .ball_count
+        .ok_or_else(|| Invalid::missing("bearing.ball_count", "number of balls Z"))?;
+    if z < 3 {
+        return Err(Invalid::new(
+            "bearing.ball_count",
+            Some(z.to_string()),
+            "a bearing needs at least 3 balls",
+        ));
+    }
+    let (fi, fi_form) = groove(
+        "inner",
+        b.inner_groove_curvature,
+        &b.inner_groove_radius,
+        d.si,
+    )?;
+    let (fo, fo_form) = groove(
+        "outer",
+        b.outer_groove_curvature,
+        &b.outer_groove_radius,
+        d.si,
+    )?;
+
+    let given: Vec<&[&str]> = PARAMETRIZATIONS
+        .iter()
+        .copied()
+        .filter(|keys| keys.iter().any(|k| param_value(b, k).is_some()))
+        .collect();
+    let clearance = match given.as_slice() {
+        [] => {
+            return Err(Invalid::missing(
+                "bearing.free_contact_angle",
+                "give one clearance parametrization: free_contact_angle, diametral_clearance, or inner_raceway_diameter + outer_raceway_diameter",
+            ));
+        }
+        [one] => match one[0] {
+            "free_contact_angle" => Clearance::FreeContactAngle(
+                param_value(b, "free_contact_angle").unwrap_or_default(),
+            ),
+            "diametral_clearance" => {
+                Clearance::Diametral(param_value(b, "diametral_clearance").unwrap_or_default())
+            }
+            _ => {
+                let (Some(inner), Some(outer)) = (
+                    b.inner_raceway_diameter.as_ref(),
+                    b.outer_raceway_diameter.as_ref(),
+                ) else {
+                    let missing = if b.inner_raceway_diameter.is_none() {
+                        "inner"
+                    } else {
+                        "outer"
+                    };
+                    return Err(Invalid::missing(
+                        &format!("bearing.{missing}_raceway_diameter"),
+                        "parametrization (c) needs both raceway diameters",
+                    ));
+                };
+                if let Some(p) = &b.pitch_diameter {
+                    return Err(Invalid::new(
+                        "bearing.pitch_diameter",
+                        Some(p.to_string()),
+                        "with inner/outer_raceway_diameter the pitch diameter is derived, (d_i + d_o)/2; remove it",
+                    ));
+                }
+                Clearance::RacewayDiameters {
+                    inner: inner.si,
+                    outer: outer.si,
+                }
+            }
+        },
+        [first, second, ..] => {
+            return Err(Invalid::new(
+                format!("bearing.{}", second[0]),
+                None,
+                format!(
+                    "conflicts with bearing.{}: give exactly one clearance parametrization (free_contact_angle, diametral_clearance, or the raceway diameters)",
+                    first[0]
+                ),
+            ));
+        }
+    };
+    let pitch = match clearance {
+        Clearance::RacewayDiameters { .. } => 0.0,
+        _ => {
+            b.pitch_diameter
+                .as_ref()
+                .ok_or_else(|| Invalid::missing("bearing.pitch_diameter", "pitch diameter d_m"))?
+                .si
+        }
+    };
+    let spec = GeometrySpec {
+        ball_diameter: d.si,
+        ball_count: z as usize,
+        pitch_diameter: pitch,
+        inner_groove_curvature: fi,
+        outer_groove_curvature: fo,
+        clearance,
+        preload: b.preload.unwrap_or(false),
+    };
+    let geometry = BearingGeometry::new(&spec).map_err(|e| {
+        let key = match (e.field, fi_form, fo_form) {
+            ("inner_groove_curvature", "radius", _) => "inner_groove_radius",
+            ("outer_groove_curvature", _, "radius") => "outer_groove_radius",
+            (f, _, _) => f,
+        };
+        let value = match key {
+            "ball_diameter" => text(&b.ball_diameter),
+            "pitch_diameter" => text(&b.pitch_diameter),
+            "inner_groove_radius" => text(&b.inner_groove_radius),
+            "outer_groove_radius" => text(&b.outer_groove_radius),
+            "free_contact_angle" => text(&b.free_contact_angle),
+            "diametral_clearance" => text(&b.diametral_clearance),
+            "inner_raceway_diameter" => text(&b.inner_raceway_diameter),
+            "outer_raceway_diameter" => text(&b.outer_raceway_diameter),
+            "ball_count" => b.ball_count.map(|z| z.to_string()),
+            "inner_groove_curvature" => b.inner_groove_curvature.map(|f| f.to_string()),
+            "outer_groove_curvature" => b.outer_groove_curvature.map(|f| f.to_string()),
+            _ => Some(e.value.clone()),
+        };
+        Invalid::new(format!("bearing.{key}"), value, e.rule)
+    })?;
+    let optional =
+        |key: &str, q: &Option<Quantity<crate::units::Length>>| checked(key, q, positive);
+    Ok(Bearing {
+        preset: b.preset.clone(),
+        designation: b.designation.clone(),
+        geometry,
+        bore: optional("bearing.bore", &b.bore)?,
+        outside_diameter: optional("bearing.outside_diameter", &b.outside_diameter)?,
+        width: optional("bearing.width", &b.width)?,
+    })
+}
+
+fn param_value(b: &RawBearing, key: &str) -> Option<f64> {
+    match key {
+        "free_contact_angle" => b.free_contact_angle.as_ref().map(|q| q.si),
+        "diametral_clearance" => b.diametral_clearance.as_ref().map(|q| q.si),
+        "inner_raceway_diameter" => b.inner_raceway_diameter.as_ref().map(|q| q.si),
+        "outer_raceway_diameter" => b.outer_raceway_diameter.as_ref().map(|q| q.si),
+        _ => None,
+    }
+}
+
+fn cage(c: &RawCage) -> Result<Cage, Invalid> {
+    let cage = Cage {
+        guidance: c.guidance,
+        pocket_clearance: checked("cage.pocket_clearance", &c.pocket_clearance, positive)?,
+        inner_diameter: checked("cage.inner_diameter", &c.inner_diameter, positive)?,
+        outer_diameter: checked("cage.outer_diameter", &c.outer_diameter, positive)?,
+        guide_land_width: checked("cage.guide_land_width", &c.guide_land_width, positive)?,
+        guide_clearance: checked("cage.guide_clearance", &c.guide_clearance, positive)?,
+        mass: checked("cage.mass", &c.mass, positive)?,
+        inertia: checked("cage.inertia", &c.inertia, positive)?,
+    };
+    if let (Some(i), Some(o)) = (cage.inner_diameter, cage.outer_diameter) {
+        if o <= i {
+            return Err(Invalid::new(
+                "cage.outer_diameter",
+                text(&c.outer_diameter),
+                format!(
+                    "must exceed cage.inner_diameter ({})",
+                    text(&c.inner_diameter).unwrap_or_default()
+                ),
+            ));
+        }
+    }
+    Ok(cage)
+}
+
+fn material(key: &str, choice: Option<&MaterialChoice>) -> Result<NamedMaterial, Invalid> {
+    match choice {
+        None => Ok(NamedMaterial {
+            name: "steel_52100".into(),
+            material: Material::STEEL_52100,
+        }),
+        Some(MaterialChoice::Named(name)) => MATERIALS
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(n, m)| NamedMaterial {
+                name: n.to_string(),
+                material: *m,
+            })
+            .ok_or_else(|| {
+                Invalid::new(
+                    key,
+                    Some(format!("\"{name}\"")),
+                    format!(
+                        "unknown material; built-in: {} (or give a table with elastic_modulus, poisson_ratio, density)",
+                        MATERIALS.map(|m| m.0).join(", ")
+                    ),
+                )
+            }),
+        Some(MaterialChoice::Custom(m)) => {
+            checked(&format!("{key}.elastic_modulus"), &Some(m.elastic_modulus.clone()), positive)?;
+            checked(&format!("{key}.density"), &Some(m.density.clone()), positive)?;
+            positive_number(
+                &format!("{key}.poisson_ratio"),
+                Some(m.poisson_ratio),
+                |v| v > -1.0 && v < 0.5,
+                "Poisson's ratio must lie in (-1, 0.5)",
+            )?;
+            Ok(NamedMaterial {
+                name: m.name.clone().unwrap_or_else(|| "custom".into()),
+                material: Material {
+                    elastic_modulus: m.elastic_modulus.si,
+                    poisson_ratio: m.poisson_ratio,
+                    density: m.density.si,
+                },
+            })
+        }
+    }
+}
+
+fn lubricant(l: &RawLubricant) -> Result<Lubricant, Invalid> {
+    Ok(Lubricant {
+        name: l.name.clone(),
+        viscosity: checked("lubricant.viscosity", &Some(l.viscosity.clone()), positive)?
+            .unwrap_or_default(),
+        pressure_viscosity: checked(
+            "lubricant.pressure_viscosity",
+            &Some(l.pressure_viscosity.clone()),
+            non_negative,
+        )?
+        .unwrap_or_default(),
+        density: checked("lubricant.density", &l.density, positive)?,
+        thermal_conductivity: checked(
+            "lubricant.thermal_conductivity",
+            &l.thermal_conductivity,
+            positive,
+        )?,
+        specific_heat: checked("lubricant.specific_heat", &l.specific_heat, positive)?,
+        temperature: checked("lubricant.temperature", &l.temperature, |t| {
+            if t > 0.0 {
+                Ok(())
+            } else {
+                Err("must be above absolute zero".into())
+            }
+        })?,
+    })
+}

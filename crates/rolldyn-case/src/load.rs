@@ -1,0 +1,329 @@
+//! From text to a validated [`Case`]: parse (with spans), apply
+//! command-line overrides, merge a `bearing.preset`, deserialize with the
+//! key path of any error, validate, and map every error back to where the
+//! value came from.
+
+use crate::case::{Case, Invalid, PARAMETRIZATIONS};
+use crate::error::{CaseError, Origin, SpanMap, position};
+use crate::presets;
+use crate::raw::RawCase;
+use std::collections::BTreeMap;
+use toml::{Table, Value};
+
+/// One command-line override of a case key.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Override {
+    /// Dotted key, e.g. `operating.speed`.
+    pub key: String,
+    /// New value.
+    pub value: Value,
+    /// How the user wrote it (for messages).
+    pub text: String,
+}
+
+impl Override {
+    /// Parses `dotted.key=value`. The value is read as a TOML value when it
+    /// is one (`22`, `0.52`, `true`, `"6.35 mm"`, `{ law = "hertz" }`) and
+    /// as a plain string otherwise (`6.35 mm`).
+    pub fn parse_set(arg: &str) -> Result<Self, CaseError> {
+        let Some((key, raw)) = arg.split_once('=') else {
+            return Err(CaseError {
+                source_name: "command line".into(),
+                origin: Origin::Override(format!("--set {arg}")),
+                key: None,
+                value: None,
+                rule: "expected --set dotted.key=value, e.g. --set bearing.ball_count=22".into(),
+            });
+        };
+        let key = key.trim();
+        let raw = raw.trim();
+        let value = toml::from_str::<Table>(&format!("v = {raw}"))
+            .ok()
+            .and_then(|mut t| t.remove("v"))
+            .unwrap_or_else(|| Value::String(raw.to_string()));
+        Ok(Self {
+            key: key.to_string(),
+            value,
+            text: format!("--set {key}={raw}"),
+        })
+    }
+
+    /// A string-valued override from a dedicated flag (`--speed 8000rpm`).
+    pub fn flag(flag: &str, key: &str, value: &str) -> Self {
+        Self {
+            key: key.to_string(),
+            value: Value::String(value.to_string()),
+            text: format!("{flag} {value}"),
+        }
+    }
+}
+
+/// Keys that replace each other within a table: setting one removes the
+/// others (the later source wins instead of conflicting).
+fn displaced_keys(table_path: &str, key: &str) -> Vec<&'static str> {
+    match (table_path, key) {
+        ("operating", "speed") => vec!["speed_profile"],
+        ("operating", "speed_profile") => vec!["speed"],
+        ("bearing", "inner_groove_curvature") => vec!["inner_groove_radius"],
+        ("bearing", "inner_groove_radius") => vec!["inner_groove_curvature"],
+        ("bearing", "outer_groove_curvature") => vec!["outer_groove_radius"],
+        ("bearing", "outer_groove_radius") => vec!["outer_groove_curvature"],
+        ("bearing", k) => match PARAMETRIZATIONS.iter().position(|g| g.contains(&k)) {
+            Some(i) => {
+                let mut out: Vec<&'static str> = PARAMETRIZATIONS
+                    .iter()
+                    .enumerate()
+                    .filter(|(j, _)| *j != i)
+                    .flat_map(|(_, g)| g.iter().copied())
+                    .collect();
+                if i == 2 {
+                    out.push("pitch_diameter");
+                }
+                out
+            }
+            None => vec![],
+        },
+        _ => vec![],
+    }
+}
+
+/// Sets `value` at `path` (creating tables), removing displaced keys.
+fn set_path(table: &mut Table, path: &str, value: Value) -> Result<(), String> {
+    let parts: Vec<&str> = path.split('.').collect();
+    let (leaf, parents) = parts.split_last().ok_or("empty key")?;
+    let mut current = table;
+    for (i, part) in parents.iter().enumerate() {
+        let entry = current
+            .entry(part.to_string())
+            .or_insert_with(|| Value::Table(Table::new()));
+        current = entry
+            .as_table_mut()
+            .ok_or_else(|| format!("{} is not a table", parts[..=i].join(".")))?;
+    }
+    for k in displaced_keys(&parents.join("."), leaf) {
+        current.remove(k);
+    }
+    current.insert(leaf.to_string(), value);
+    Ok(())
+}
+
+/// Overlays `top` on `base`, table by table, removing displaced keys.
+fn overlay(base: &mut Table, top: &Table, path: &str) {
+    for (k, v) in top {
+        let child = if path.is_empty() {
+            k.clone()
+        } else {
+            format!("{path}.{k}")
+        };
+        match (base.get_mut(k), v) {
+            (Some(Value::Table(b)), Value::Table(t)) => overlay(b, t, &child),
+            _ => {
+                for d in displaced_keys(path, k) {
+                    base.remove(d);
+                }
+                base.insert(k.clone(), v.clone());
+            }
+        }
+    }
+}
+
+/// Every leaf path of a table (`bearing.ball_diameter`, ...).
+fn leaf_paths(table: &Table, prefix: &str, out: &mut Vec<String>) {
+    for (k, v) in table {
+        let p = if prefix.is_empty() {
+            k.clone()
+        } else {
+            format!("{prefix}.{k}")
+        };
+        match v {
+            Value::Table(t) if prefix != "assumptions" && k != "assumptions" => {
+                leaf_paths(t, &p, out)
+            }
+            _ => out.push(p),
+        }
+    }
+}
+
+fn has_path(table: &Table, path: &str) -> bool {
+    let mut current = table;
+    let parts: Vec<&str> = path.split('.').collect();
+    for (i, part) in parts.iter().enumerate() {
+        match current.get(*part) {
+            Some(Value::Table(t)) if i + 1 < parts.len() => current = t,
+            Some(_) if i + 1 == parts.len() => return true,
+            _ => return false,
+        }
+    }
+    false
+}
+
+/// Sections a `bearing.preset` brings in.
+const PRESET_SECTIONS: [&str; 3] = ["bearing", "cage", "materials"];
+
+struct Sources<'a> {
+    name: &'a str,
+    text: &'a str,
+    spans: SpanMap,
+    overrides: BTreeMap<String, String>,
+    preset: Option<(String, Table)>,
+}
+
+impl Sources<'_> {
+    fn error(&self, key: Option<String>, value: Option<String>, rule: String) -> CaseError {
+        let origin = match &key {
+            None => Origin::Unknown,
+            Some(k) => {
+                if let Some(text) = self
+                    .overrides
+                    .iter()
+                    .find(|(o, _)| {
+                        k == *o
+                            || k.starts_with(&format!("{o}."))
+                            || k.starts_with(&format!("{o}["))
+                    })
+                    .map(|(_, t)| t)
+                {
+                    Origin::Override(text.clone())
+                } else if self.spans.contains(k) {
+                    self.spans
+                        .find(k)
+                        .map_or(Origin::Unknown, |s| position(self.text, s.start))
+                } else if let Some((name, _)) = self.preset.as_ref().filter(|(_, t)| has_path(t, k))
+                {
+                    Origin::Preset(name.clone())
+                } else {
+                    self.spans
+                        .find(k)
+                        .map_or(Origin::Unknown, |s| position(self.text, s.start))
+                }
+            }
+        };
+        CaseError {
+            source_name: self.name.to_string(),
+            origin,
+            key,
+            value,
+            rule,
+        }
+    }
+}
+
+/// Loads and validates a case from `text` (named `source_name` in messages),
+/// applying `overrides` in order.
+pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Result<Case, CaseError> {
+    let document = toml::de::DeTable::parse(text).map_err(|e| CaseError {
+        source_name: source_name.to_string(),
+        origin: e
+            .span()
+            .map_or(Origin::Unknown, |s| position(text, s.start)),
+        key: None,
+        value: None,
+        rule: format!("TOML syntax error: {}", e.message().trim()),
+    })?;
+    let mut sources = Sources {
+        name: source_name,
+        text,
+        spans: SpanMap::from_document(document.get_ref()),
+        overrides: BTreeMap::new(),
+        preset: None,
+    };
+    let mut table: Table =
+        toml::from_str(text).map_err(|e| sources.error(None, None, e.message().to_string()))?;
+
+    for o in overrides {
+        set_path(&mut table, &o.key, o.value.clone())
+            .map_err(|rule| sources.error(Some(o.key.clone()), Some(o.value.to_string()), rule))?;
+        sources.overrides.insert(o.key.clone(), o.text.clone());
+    }
+
+    let preset_name = table
+        .get("bearing")
+        .and_then(|b| b.get("preset"))
+        .map(|p| p.as_str().map(str::to_string).ok_or(p.to_string()));
+    if let Some(name) = preset_name {
+        let key = Some("bearing.preset".to_string());
+        let name = name.map_err(|v| {
+            sources.error(
+                key.clone(),
+                Some(v),
+                "must be a preset name (a string)".into(),
+            )
+        })?;
+        let preset = presets::find(&name).ok_or_else(|| {
+            sources.error(
+                key.clone(),
+                Some(format!("\"{name}\"")),
+                format!("unknown preset; available: {}", presets::names()),
+            )
+        })?;
+        let preset_table: Table = toml::from_str(preset.text).map_err(|e| {
+            sources.error(
+                key.clone(),
+                Some(name.clone()),
+                format!("preset does not parse: {e}"),
+            )
+        })?;
+        let mut merged = Table::new();
+        for section in PRESET_SECTIONS {
+            if let Some(v) = preset_table.get(section) {
+                merged.insert(section.to_string(), v.clone());
+            }
+        }
+        let mut user_leaves = Vec::new();
+        leaf_paths(&table, "", &mut user_leaves);
+        if let Some(Value::Table(assumed)) = preset_table.get("assumptions") {
+            let inherited: Table = assumed
+                .iter()
+                .filter(|(k, _)| {
+                    PRESET_SECTIONS
+                        .iter()
+                        .any(|s| k.starts_with(&format!("{s}.")))
+                })
+                .filter(|(k, _)| !user_leaves.contains(k))
+                .map(|(k, v)| (k.clone(), v.clone()))
+                .collect();
+            merged.insert("assumptions".into(), Value::Table(inherited));
+        }
+        overlay(&mut merged, &table, "");
+        sources.preset = Some((preset.name.to_string(), merged.clone()));
+        table = merged;
+    }
+
+    // A value given on the command line is no longer an assumption.
+    if let Some(Value::Table(assumed)) = table.get_mut("assumptions") {
+        for key in sources.overrides.keys() {
+            assumed.remove(key);
+        }
+    }
+
+    let raw: RawCase = serde_path_to_error::deserialize(table.clone()).map_err(|e| {
+        let path = e.path().to_string();
+        let message = e.inner().message().to_string();
+        let rule = message
+            .split("\nin `")
+            .next()
+            .unwrap_or(&message)
+            .trim()
+            .to_string();
+        sources.error((path != ".").then_some(path), None, rule)
+    })?;
+
+    for key in raw.assumptions.keys() {
+        if !has_path(&table, key) {
+            return Err(sources.error(
+                Some(format!("assumptions.{key}")),
+                None,
+                format!("names a key that this case does not set (`{key}`); assumptions must refer to values in the case"),
+            ));
+        }
+    }
+
+    Case::from_raw(&raw)
+        .map_err(|Invalid { key, value, rule }| sources.error(Some(key), value, rule))
+}
+
+/// The built-in default case (the 7008C preset) with `overrides`.
+pub fn load_default(overrides: &[Override]) -> Result<Case, CaseError> {
+    let preset = presets::find(presets::DEFAULT_PRESET).map_or("", |p| p.text);
+    load_case("built-in default case (7008C)", preset, overrides)
+}

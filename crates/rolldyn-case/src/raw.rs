@@ -1,0 +1,370 @@
+//! The case file as written: TOML structure, key names, units. Everything
+//! here is syntax; [`crate::validate`] turns it into a checked
+//! [`crate::Case`] in SI units. Unknown keys are errors (typos!).
+//!
+//! The doc comments of these types are the reference of the case format:
+//! `rolldyn schema` exports them as a JSON Schema and `docs/case-format.md`
+//! lists them with units and defaults.
+
+use crate::units::*;
+use rolldyn::contact::normal_law::{DEFAULT_IMPACT_SPEED_FLOOR, NormalForceLaw};
+use schemars::{JsonSchema, Schema, SchemaGenerator, json_schema};
+use serde::de::{self, MapAccess, Visitor};
+use serde::{Deserialize, Deserializer, Serialize};
+use std::collections::BTreeMap;
+use std::fmt;
+
+/// A rolldyn case file.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawCase {
+    /// Free-text title of the case.
+    pub title: Option<String>,
+    /// Bearing internal geometry (a preset, or the full geometry).
+    #[serde(default)]
+    pub bearing: RawBearing,
+    /// Cage geometry and inertia (used by the dynamic engine).
+    #[serde(default)]
+    pub cage: RawCage,
+    /// Materials of balls and rings.
+    #[serde(default)]
+    pub materials: RawMaterials,
+    /// Lubricant properties (used by EHL traction, films and thermal models).
+    pub lubricant: Option<RawLubricant>,
+    /// Speeds and loads.
+    #[serde(default)]
+    pub operating: RawOperating,
+    /// Model choices.
+    #[serde(default)]
+    pub model: RawModel,
+    /// Time-integration settings (used by `rolldyn run`).
+    #[serde(default)]
+    pub solver: RawSolver,
+    /// Output settings (used by `rolldyn run`).
+    #[serde(default)]
+    pub output: RawOutput,
+    /// Values that were assumed rather than taken from a source, by dotted
+    /// key, with the reason: `"bearing.inner_groove_curvature" = "not given
+    /// in the paper; Harris's typical value"`. `rolldyn check` lists them.
+    #[serde(default)]
+    pub assumptions: BTreeMap<String, String>,
+}
+
+/// Bearing geometry. Give a `preset`, or D, Z, the groove curvatures and
+/// exactly one clearance parametrization: (a) `free_contact_angle` with
+/// `pitch_diameter`, (b) `diametral_clearance` with `pitch_diameter`, or
+/// (c) `inner_raceway_diameter` + `outer_raceway_diameter` (pitch diameter
+/// derived). Keys given next to a preset override the preset's values.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawBearing {
+    /// Name of a built-in bearing (`rolldyn presets` lists them).
+    pub preset: Option<String>,
+    /// Designation, free text (e.g. "7008C").
+    pub designation: Option<String>,
+    /// Ball diameter D.
+    pub ball_diameter: Option<Quantity<Length>>,
+    /// Number of balls Z (3 ≤ Z ≤ 1000).
+    pub ball_count: Option<i64>,
+    /// Pitch diameter d_m (parametrizations a and b).
+    pub pitch_diameter: Option<Quantity<Length>>,
+    /// Inner groove curvature factor f_i = r_i/D, in (0.5, 1).
+    pub inner_groove_curvature: Option<f64>,
+    /// Outer groove curvature factor f_o = r_o/D, in (0.5, 1).
+    pub outer_groove_curvature: Option<f64>,
+    /// Inner groove radius r_i (alternative to `inner_groove_curvature`).
+    pub inner_groove_radius: Option<Quantity<Length>>,
+    /// Outer groove radius r_o (alternative to `outer_groove_curvature`).
+    pub outer_groove_radius: Option<Quantity<Length>>,
+    /// (a) Free (initial) contact angle α₀, in [0°, 60°].
+    pub free_contact_angle: Option<Quantity<Angle>>,
+    /// (b) Diametral clearance P_d (negative only with `preload = true`).
+    pub diametral_clearance: Option<Quantity<Length>>,
+    /// (c) Inner raceway (groove-bottom) diameter d_i.
+    pub inner_raceway_diameter: Option<Quantity<Length>>,
+    /// (c) Outer raceway (groove-bottom) diameter d_o.
+    pub outer_raceway_diameter: Option<Quantity<Length>>,
+    /// Allow a negative clearance (interference, preloaded set). Default false.
+    pub preload: Option<bool>,
+    /// Bore diameter d (boundary dimension, informational).
+    pub bore: Option<Quantity<Length>>,
+    /// Outside diameter (boundary dimension, informational).
+    pub outside_diameter: Option<Quantity<Length>>,
+    /// Ring width (boundary dimension, informational).
+    pub width: Option<Quantity<Length>>,
+}
+
+/// Cage data (MODEL §5). All optional until the dynamic engine needs them.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawCage {
+    /// How the cage is guided: "outer_ring", "inner_ring" or "ball".
+    pub guidance: Option<CageGuidance>,
+    /// Pocket clearance C_p (diametral, ball to pocket).
+    pub pocket_clearance: Option<Quantity<Length>>,
+    /// Cage bore (small) diameter.
+    pub inner_diameter: Option<Quantity<Length>>,
+    /// Cage outside (large) diameter.
+    pub outer_diameter: Option<Quantity<Length>>,
+    /// Guide-land width G.
+    pub guide_land_width: Option<Quantity<Length>>,
+    /// Guide clearance C_g (diametral, cage to guiding land).
+    pub guide_clearance: Option<Quantity<Length>>,
+    /// Cage mass.
+    pub mass: Option<Quantity<Mass>>,
+    /// Cage polar moment of inertia about the bearing axis.
+    pub inertia: Option<Quantity<Inertia>>,
+}
+
+/// Cage guidance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum CageGuidance {
+    /// Guided on a land of the outer ring.
+    OuterRing,
+    /// Guided on a land of the inner ring.
+    InnerRing,
+    /// Guided by the balls.
+    Ball,
+}
+
+/// Materials: a preset name ("steel_52100", "silicon_nitride") or a table.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawMaterials {
+    /// Ball material. Default: the preset's, else steel_52100.
+    pub ball: Option<MaterialChoice>,
+    /// Ring material (inner and outer). Default: the preset's, else steel_52100.
+    pub rings: Option<MaterialChoice>,
+}
+
+/// A material given by name or by its properties.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum MaterialChoice {
+    /// A built-in material: "steel_52100" or "silicon_nitride".
+    Named(String),
+    /// Explicit properties.
+    Custom(RawMaterial),
+}
+
+/// Explicit material properties.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawMaterial {
+    /// Name for reports.
+    pub name: Option<String>,
+    /// Young's modulus E.
+    pub elastic_modulus: Quantity<Pressure>,
+    /// Poisson's ratio ν, in (−1, 0.5).
+    pub poisson_ratio: f64,
+    /// Density ρ.
+    pub density: Quantity<Density>,
+}
+
+/// Deserializes "a string or a table" into one of two variants while
+/// keeping the inner table's own error messages (serde's untagged enums
+/// would replace them with "did not match any variant").
+macro_rules! string_or_table {
+    ($ty:ident, $named:ident, $table:ty, $what:literal) => {
+        impl<'de> Deserialize<'de> for $ty {
+            fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+                struct V;
+                impl<'de> Visitor<'de> for V {
+                    type Value = $ty;
+                    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                        f.write_str($what)
+                    }
+                    fn visit_str<E: de::Error>(self, v: &str) -> Result<$ty, E> {
+                        Ok($ty::$named(v.to_string()))
+                    }
+                    fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<$ty, A::Error> {
+                        <$table>::deserialize(de::value::MapAccessDeserializer::new(map))
+                            .map(Into::into)
+                    }
+                }
+                d.deserialize_any(V)
+            }
+        }
+    };
+}
+
+string_or_table!(
+    MaterialChoice,
+    Named,
+    RawMaterial,
+    "a material name (\"steel_52100\", \"silicon_nitride\") or a table with elastic_modulus, poisson_ratio, density"
+);
+
+impl From<RawMaterial> for MaterialChoice {
+    fn from(m: RawMaterial) -> Self {
+        Self::Custom(m)
+    }
+}
+
+impl JsonSchema for MaterialChoice {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "MaterialChoice".into()
+    }
+    fn json_schema(g: &mut SchemaGenerator) -> Schema {
+        json_schema!({
+            "description": "A built-in material name or explicit properties.",
+            "anyOf": [
+                { "type": "string", "enum": ["steel_52100", "silicon_nitride"] },
+                g.subschema_for::<RawMaterial>(),
+            ]
+        })
+    }
+}
+
+/// Lubricant properties at the reference temperature.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawLubricant {
+    /// Name for reports.
+    pub name: Option<String>,
+    /// Dynamic viscosity η₀ at atmospheric pressure and `temperature`.
+    pub viscosity: Quantity<Viscosity>,
+    /// Pressure–viscosity coefficient α_p (Barus).
+    pub pressure_viscosity: Quantity<PressureViscosity>,
+    /// Density.
+    pub density: Option<Quantity<Density>>,
+    /// Thermal conductivity.
+    pub thermal_conductivity: Option<Quantity<ThermalConductivity>>,
+    /// Specific heat capacity.
+    pub specific_heat: Option<Quantity<SpecificHeat>>,
+    /// Temperature at which `viscosity` holds.
+    pub temperature: Option<Quantity<Temperature>>,
+}
+
+/// Operating conditions: inner-ring speed and loads on the inner ring
+/// (frame: x along the bearing axis, y and z radial).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawOperating {
+    /// Constant inner-ring speed.
+    pub speed: Option<Quantity<AngularSpeed>>,
+    /// Piecewise-linear inner-ring speed table (alternative to `speed`):
+    /// `[{ time = "0 s", speed = "1000 rpm" }, ...]`, times increasing.
+    pub speed_profile: Option<Vec<RawSpeedPoint>>,
+    /// Axial force F_x on the inner ring (positive loads the balls).
+    pub force_x: Option<Quantity<Force>>,
+    /// Radial force F_y on the inner ring.
+    pub force_y: Option<Quantity<Force>>,
+    /// Radial force F_z on the inner ring.
+    pub force_z: Option<Quantity<Force>>,
+    /// Moment M_y on the inner ring.
+    pub moment_y: Option<Quantity<Moment>>,
+    /// Moment M_z on the inner ring.
+    pub moment_z: Option<Quantity<Moment>>,
+}
+
+/// One point of a speed profile.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawSpeedPoint {
+    /// Time of the point.
+    pub time: Quantity<Time>,
+    /// Inner-ring speed at that time.
+    pub speed: Quantity<AngularSpeed>,
+}
+
+/// Model choices.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawModel {
+    /// Normal force law: "hertz" (default), or a table
+    /// `{ law = "lankarani_nikravesh", restitution = 0.9 }`; laws:
+    /// hertz, lankarani_nikravesh, hunt_crossley, flores (restitution),
+    /// viscous (damping in N·s/m, or damping_ratio).
+    pub normal_law: Option<NormalLawChoice>,
+    /// Hertz contact-stiffness model: "exact" (default), "hamrock_brewe",
+    /// "hertz_circular" (seed 000 eq 12, planar papers only).
+    pub contact_stiffness: Option<rolldyn::contact::HertzModel>,
+    /// Lower bound v_floor of the recorded impact speed of the hysteresis
+    /// laws (default 1 mm/s).
+    pub impact_speed_floor: Option<Quantity<Velocity>>,
+}
+
+/// A normal law given by name ("hertz") or as a table with parameters,
+/// e.g. `{ law = "lankarani_nikravesh", restitution = 0.9 }`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(transparent)]
+pub struct NormalLawChoice(pub NormalForceLaw);
+
+impl<'de> Deserialize<'de> for NormalLawChoice {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = NormalLawChoice;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a law name or a table { law = \"...\", ... }")
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<NormalLawChoice, E> {
+                match v {
+                    "hertz" => Ok(NormalLawChoice(NormalForceLaw::Hertz)),
+                    other if NormalForceLaw::NAMES.contains(&other) => Err(E::custom(format!(
+                        "the law \"{other}\" needs parameters: write a table, e.g. {{ law = \"{other}\", {} }}",
+                        if other == "viscous" {
+                            "damping_ratio = 0.1"
+                        } else {
+                            "restitution = 0.9"
+                        }
+                    ))),
+                    other => Err(E::custom(format!(
+                        "unknown normal law \"{other}\"; expected one of {}",
+                        NormalForceLaw::NAMES.join(", ")
+                    ))),
+                }
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<NormalLawChoice, A::Error> {
+                NormalForceLaw::deserialize(de::value::MapAccessDeserializer::new(map))
+                    .map(NormalLawChoice)
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+impl JsonSchema for NormalLawChoice {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "NormalLawChoice".into()
+    }
+    fn json_schema(g: &mut SchemaGenerator) -> Schema {
+        json_schema!({
+            "description": "A normal force law (MODEL §2.3).",
+            "anyOf": [
+                { "type": "string", "enum": ["hertz"] },
+                g.subschema_for::<NormalForceLaw>(),
+            ]
+        })
+    }
+}
+
+/// Time-integration settings (read by `rolldyn run`, which arrives with
+/// the dynamic engine; validated now).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawSolver {
+    /// Simulated time.
+    pub duration: Option<Quantity<Time>>,
+    /// Relative error tolerance of adaptive integrators (default 1e-6).
+    pub relative_tolerance: Option<f64>,
+    /// Largest step the integrator may take.
+    pub max_step: Option<Quantity<Time>>,
+}
+
+/// Output settings (read by `rolldyn run`).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawOutput {
+    /// Sample rate of the recorded time series.
+    pub sample_rate: Option<Quantity<Frequency>>,
+    /// Output directory.
+    pub directory: Option<String>,
+}
+
+/// Default impact-speed floor as it appears in case files.
+pub fn default_impact_speed_floor_text() -> String {
+    format!("{} mm/s", DEFAULT_IMPACT_SPEED_FLOOR * 1e3)
+}

@@ -1,0 +1,111 @@
+//! Operating conditions (MODEL §8): the inner-ring speed profile and the
+//! loads applied to the inner ring, in SI units.
+
+use crate::error::InvalidParameter;
+
+/// Inner-ring speed as a function of time.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SpeedProfile {
+    /// Constant speed \[rad/s\].
+    Constant(f64),
+    /// Piecewise-linear table of (time \[s\], speed \[rad/s\]), times strictly
+    /// increasing; held constant outside the table (seed 002's ramp).
+    PiecewiseLinear(Vec<(f64, f64)>),
+}
+
+impl SpeedProfile {
+    /// Builds a piecewise-linear profile, checking the table. The error's
+    /// field is `speed_profile[i]`-style: the index of the offending point.
+    pub fn piecewise_linear(points: Vec<(f64, f64)>) -> Result<Self, (usize, InvalidParameter)> {
+        if points.is_empty() {
+            return Err((
+                0,
+                InvalidParameter::new("speed_profile", "[]", "needs at least one point"),
+            ));
+        }
+        for (i, &(t, w)) in points.iter().enumerate() {
+            if !t.is_finite() || !w.is_finite() {
+                return Err((
+                    i,
+                    InvalidParameter::new("time", t, "time and speed must be finite"),
+                ));
+            }
+            if i > 0 && t <= points[i - 1].0 {
+                return Err((
+                    i,
+                    InvalidParameter::new(
+                        "time",
+                        format!("{t} s"),
+                        format!(
+                            "times must increase strictly (previous point: {} s)",
+                            points[i - 1].0
+                        ),
+                    ),
+                ));
+            }
+        }
+        Ok(Self::PiecewiseLinear(points))
+    }
+
+    /// Speed at time t \[rad/s\].
+    pub fn speed_at(&self, t: f64) -> f64 {
+        match self {
+            Self::Constant(w) => *w,
+            Self::PiecewiseLinear(points) => {
+                let i = points.partition_point(|p| p.0 <= t);
+                match i {
+                    0 => points[0].1,
+                    i if i == points.len() => points[i - 1].1,
+                    i => {
+                        let (t0, w0) = points[i - 1];
+                        let (t1, w1) = points[i];
+                        w0 + (w1 - w0) * (t - t0) / (t1 - t0)
+                    }
+                }
+            }
+        }
+    }
+
+    /// The speed the profile ends at (the constant speed, or the last point).
+    pub fn final_speed(&self) -> f64 {
+        match self {
+            Self::Constant(w) => *w,
+            Self::PiecewiseLinear(points) => points.last().map_or(0.0, |p| p.1),
+        }
+    }
+}
+
+/// Loads on the inner ring in the global frame (x: bearing axis).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Loads {
+    /// Forces (F_x, F_y, F_z) \[N\].
+    pub force: [f64; 3],
+    /// Moments (M_y, M_z) \[N·m\].
+    pub moment: [f64; 2],
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn seed002_ramp() {
+        let rpm = std::f64::consts::TAU / 60.0;
+        let p = SpeedProfile::piecewise_linear(vec![
+            (0.0, 1000.0 * rpm),
+            (0.5, 1000.0 * rpm),
+            (1.4, 10_000.0 * rpm),
+        ])
+        .unwrap();
+        assert_eq!(p.speed_at(0.2), 1000.0 * rpm);
+        assert!((p.speed_at(0.6) - 2000.0 * rpm).abs() < 1e-9);
+        assert_eq!(p.speed_at(3.0), 10_000.0 * rpm);
+        assert_eq!(p.final_speed(), 10_000.0 * rpm);
+    }
+
+    #[test]
+    fn rejects_non_increasing_times() {
+        let err = SpeedProfile::piecewise_linear(vec![(0.0, 1.0), (0.0, 2.0)]).unwrap_err();
+        assert_eq!(err.0, 1);
+    }
+}
