@@ -132,6 +132,13 @@ impl SpanMap {
     pub fn contains(&self, path: &str) -> bool {
         self.spans.contains_key(path)
     }
+
+    /// The source text of `path`'s value, if it is a short one-line value.
+    pub fn value_text<'t>(&self, path: &str, text: &'t str) -> Option<&'t str> {
+        let span = self.spans.get(path)?;
+        let value = text.get(span.clone())?.trim();
+        (!value.contains('\n') && value.len() <= 80).then_some(value)
+    }
 }
 
 /// 1-based line and column of byte offset `pos` in `text`, with the line.

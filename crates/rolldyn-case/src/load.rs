@@ -164,37 +164,47 @@ struct Sources<'a> {
     name: &'a str,
     text: &'a str,
     spans: SpanMap,
-    overrides: BTreeMap<String, String>,
+    overrides: BTreeMap<String, (String, String)>,
     preset: Option<(String, Table)>,
 }
 
 impl Sources<'_> {
+    /// The override that set `key` (or a table containing it).
+    fn override_of(&self, key: &str) -> Option<(&String, &(String, String))> {
+        self.overrides.iter().find(|(o, _)| {
+            key == o.as_str()
+                || key.starts_with(&format!("{o}."))
+                || key.starts_with(&format!("{o}["))
+        })
+    }
+
+    /// An error about `key`, located at its source; a missing `value` is
+    /// filled in from the source text.
     fn error(&self, key: Option<String>, value: Option<String>, rule: String) -> CaseError {
-        let origin = match &key {
-            None => Origin::Unknown,
+        let (origin, found) = match key.as_deref() {
+            None => (Origin::Unknown, None),
             Some(k) => {
-                if let Some(text) = self
-                    .overrides
-                    .iter()
-                    .find(|(o, _)| {
-                        k == *o
-                            || k.starts_with(&format!("{o}."))
-                            || k.starts_with(&format!("{o}["))
-                    })
-                    .map(|(_, t)| t)
-                {
-                    Origin::Override(text.clone())
+                if let Some((set_key, (text, v))) = self.override_of(k) {
+                    (
+                        Origin::Override(text.clone()),
+                        (set_key == k).then(|| v.clone()),
+                    )
                 } else if self.spans.contains(k) {
-                    self.spans
+                    let at = self
+                        .spans
                         .find(k)
-                        .map_or(Origin::Unknown, |s| position(self.text, s.start))
+                        .map_or(Origin::Unknown, |s| position(self.text, s.start));
+                    (at, self.spans.value_text(k, self.text).map(str::to_string))
                 } else if let Some((name, _)) = self.preset.as_ref().filter(|(_, t)| has_path(t, k))
                 {
-                    Origin::Preset(name.clone())
+                    (Origin::Preset(name.clone()), None)
                 } else {
-                    self.spans
-                        .find(k)
-                        .map_or(Origin::Unknown, |s| position(self.text, s.start))
+                    (
+                        self.spans
+                            .find(k)
+                            .map_or(Origin::Unknown, |s| position(self.text, s.start)),
+                        None,
+                    )
                 }
             }
         };
@@ -202,7 +212,7 @@ impl Sources<'_> {
             source_name: self.name.to_string(),
             origin,
             key,
-            value,
+            value: value.or(found),
             rule,
         }
     }
@@ -233,7 +243,9 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
     for o in overrides {
         set_path(&mut table, &o.key, o.value.clone())
             .map_err(|rule| sources.error(Some(o.key.clone()), Some(o.value.to_string()), rule))?;
-        sources.overrides.insert(o.key.clone(), o.text.clone());
+        sources
+            .overrides
+            .insert(o.key.clone(), (o.text.clone(), o.value.to_string()));
     }
 
     let preset_name = table

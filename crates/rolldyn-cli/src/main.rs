@@ -1,1 +1,273 @@
-fn main() {}
+//! `rolldyn` — the command-line front end of the rolldyn bearing engine.
+//!
+//! Exit codes: 0 success, 1 internal failure (e.g. cannot write output),
+//! 2 bad input (case file, override or argument).
+
+mod report;
+
+use clap::{Args, Parser, Subcommand};
+use rolldyn_case::units::{Angle, Force, Quantity};
+use rolldyn_case::{Case, CaseError, Override, load_case, load_default, presets};
+use std::io::{Read, Write};
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(name = "rolldyn", version, about = "Ball-bearing dynamics: geometry, Hertz contact, kinematics", long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// The case to work on, and overrides of its values.
+#[derive(Args, Debug, Clone)]
+struct CaseArgs {
+    /// Case file (TOML); `-` reads standard input; omitted: the built-in
+    /// default case (7008C at 10 000 rpm, F_x = 200 N).
+    case: Option<String>,
+    /// Override the inner-ring speed, e.g. "8000 rpm".
+    #[arg(long, value_name = "SPEED")]
+    speed: Option<String>,
+    /// Override the axial load F_x, e.g. "500 N".
+    #[arg(long, value_name = "FORCE")]
+    axial_load: Option<String>,
+    /// Override the radial load F_z, e.g. "1 kN".
+    #[arg(long, value_name = "FORCE")]
+    radial_load: Option<String>,
+    /// Override any key: --set bearing.ball_count=22 (repeatable).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    set: Vec<String>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Validate a case and print the derived geometry, contact constants,
+    /// frequencies and assumptions.
+    Check {
+        #[command(flatten)]
+        case: CaseArgs,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Characteristic frequencies: cage, BPFO, BPFI, ball spin, waviness lines.
+    Frequencies {
+        #[command(flatten)]
+        case: CaseArgs,
+        /// Contact angle to use, e.g. "15 deg" (default: nominal angle).
+        #[arg(long, value_name = "ANGLE")]
+        angle: Option<String>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Hertz contact of one ball on the inner and outer raceway.
+    Contact {
+        #[command(flatten)]
+        case: CaseArgs,
+        /// Normal load per contact, e.g. "500 N".
+        #[arg(long, value_name = "FORCE")]
+        load: String,
+        /// Contact angle, e.g. "20 deg" (default: nominal angle).
+        #[arg(long, value_name = "ANGLE")]
+        angle: Option<String>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// List the built-in bearings.
+    Presets {
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Print a complete, commented case file to start from.
+    New {
+        /// Preset name (see `rolldyn presets`).
+        #[arg(long, default_value = presets::DEFAULT_PRESET)]
+        preset: String,
+    },
+    /// Print the JSON Schema of the case-file format.
+    Schema,
+}
+
+/// A failure with its exit code.
+enum Failure {
+    BadInput(String),
+    Internal(String),
+}
+
+impl From<CaseError> for Failure {
+    fn from(e: CaseError) -> Self {
+        Failure::BadInput(e.to_string())
+    }
+}
+
+fn bad_arg(flag: &str, value: &str, rule: impl std::fmt::Display) -> Failure {
+    Failure::BadInput(format!("argument {flag} {value}: {rule}"))
+}
+
+impl CaseArgs {
+    fn overrides(&self) -> Result<Vec<Override>, Failure> {
+        let mut out = Vec::new();
+        if let Some(s) = &self.speed {
+            out.push(Override::flag("--speed", "operating.speed", s));
+        }
+        if let Some(f) = &self.axial_load {
+            out.push(Override::flag("--axial-load", "operating.force_x", f));
+        }
+        if let Some(f) = &self.radial_load {
+            out.push(Override::flag("--radial-load", "operating.force_z", f));
+        }
+        for s in &self.set {
+            out.push(Override::parse_set(s)?);
+        }
+        Ok(out)
+    }
+
+    /// Loads and validates the case with its overrides.
+    fn load(&self) -> Result<(String, Case), Failure> {
+        let overrides = self.overrides()?;
+        match self.case.as_deref() {
+            None => Ok((
+                "built-in default case (7008C)".into(),
+                load_default(&overrides)?,
+            )),
+            Some(path) => {
+                let (name, text) = if path == "-" {
+                    let mut text = String::new();
+                    std::io::stdin().read_to_string(&mut text).map_err(|e| {
+                        Failure::BadInput(format!("cannot read the case from standard input: {e}"))
+                    })?;
+                    ("<stdin>".to_string(), text)
+                } else {
+                    let text = std::fs::read_to_string(path).map_err(|e| {
+                        Failure::BadInput(format!("cannot read case file {path}: {e}"))
+                    })?;
+                    (path.to_string(), text)
+                };
+                let case = load_case(&name, &text, &overrides)?;
+                Ok((name, case))
+            }
+        }
+    }
+}
+
+fn parse_angle(flag: &str, text: Option<&String>) -> Result<Option<f64>, Failure> {
+    text.map(|t| {
+        let a = Quantity::<Angle>::parse(t)
+            .map_err(|e| bad_arg(flag, t, e))?
+            .si;
+        if (0.0..=std::f64::consts::FRAC_PI_2).contains(&a) {
+            Ok(a)
+        } else {
+            Err(bad_arg(flag, t, "contact angle must lie in [0, 90] deg"))
+        }
+    })
+    .transpose()
+}
+
+fn emit(text: &str) -> Result<(), Failure> {
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|_| out.flush())
+        .map_err(|e| Failure::Internal(format!("cannot write output: {e}")))
+}
+
+fn json<T: serde::Serialize>(value: &T) -> Result<(), Failure> {
+    let text = serde_json::to_string_pretty(value).map_err(|e| Failure::Internal(e.to_string()))?;
+    emit(&(text + "\n"))
+}
+
+fn run(cli: Cli) -> Result<(), Failure> {
+    match cli.command {
+        Command::Check {
+            case,
+            json: as_json,
+        } => {
+            let (source, case) = case.load()?;
+            let report = report::CheckReport::new(&source, &case).map_err(Failure::BadInput)?;
+            if as_json {
+                json(&report)
+            } else {
+                emit(&report.to_text())
+            }
+        }
+        Command::Frequencies {
+            case,
+            angle,
+            json: as_json,
+        } => {
+            let angle = parse_angle("--angle", angle.as_ref())?;
+            let (_, case) = case.load()?;
+            let report = report::FrequencyReport::new(&case, angle).map_err(Failure::BadInput)?;
+            if as_json {
+                json(&report)
+            } else {
+                emit(&report.to_text())
+            }
+        }
+        Command::Contact {
+            case,
+            load,
+            angle,
+            json: as_json,
+        } => {
+            let q = Quantity::<Force>::parse(&load)
+                .map_err(|e| bad_arg("--load", &load, e))?
+                .si;
+            if q < 0.0 {
+                return Err(bad_arg(
+                    "--load",
+                    &load,
+                    "a contact load cannot be negative",
+                ));
+            }
+            let angle = parse_angle("--angle", angle.as_ref())?;
+            let (_, case) = case.load()?;
+            let report = report::ContactReport::new(&case, q, angle).map_err(Failure::BadInput)?;
+            if as_json {
+                json(&report)
+            } else {
+                emit(&report.to_text())
+            }
+        }
+        Command::Presets { json: as_json } => {
+            let list: Vec<report::PresetEntry> = presets::PRESETS
+                .iter()
+                .map(report::PresetEntry::from)
+                .collect();
+            if as_json {
+                json(&list)
+            } else {
+                let mut text = String::new();
+                for p in &list {
+                    text.push_str(&format!("{:<15} {}\n", p.name, p.summary));
+                }
+                emit(&text)
+            }
+        }
+        Command::New { preset } => match presets::find(&preset) {
+            Some(p) => emit(p.text),
+            None => Err(bad_arg(
+                "--preset",
+                &preset,
+                format!("unknown preset; available: {}", presets::names()),
+            )),
+        },
+        Command::Schema => json(&rolldyn_case::json_schema()),
+    }
+}
+
+fn main() -> ExitCode {
+    match run(Cli::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::BadInput(msg)) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(2)
+        }
+        Err(Failure::Internal(msg)) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(1)
+        }
+    }
+}

@@ -94,6 +94,17 @@ impl NormalForceLaw {
         "viscous",
     ];
 
+    /// The case-file name of this law.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Hertz => "hertz",
+            Self::LankaraniNikravesh { .. } => "lankarani_nikravesh",
+            Self::HuntCrossley { .. } => "hunt_crossley",
+            Self::Flores { .. } => "flores",
+            Self::Viscous { .. } => "viscous",
+        }
+    }
+
     /// Checks the law's parameters; the error names the field.
     pub fn validate(&self) -> Result<(), InvalidParameter> {
         let restitution = |e: f64| {

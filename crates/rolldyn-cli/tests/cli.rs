@@ -1,0 +1,270 @@
+//! End-to-end tests of the `rolldyn` binary: acceptance checks of the
+//! foundation issue, exit codes, and the stable JSON keys.
+
+use rolldyn_case::presets::PRESETS;
+use serde_json::Value;
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn rolldyn(args: &[&str], stdin: Option<&str>) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("rolldyn starts");
+    {
+        let mut pipe = child.stdin.take().expect("stdin");
+        if let Some(text) = stdin {
+            pipe.write_all(text.as_bytes()).expect("write stdin");
+        }
+    }
+    child.wait_with_output().expect("rolldyn finishes")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn json(args: &[&str], stdin: Option<&str>) -> Value {
+    let o = rolldyn(args, stdin);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    serde_json::from_str(&stdout(&o)).expect("valid JSON")
+}
+
+fn keys(v: &Value) -> Vec<String> {
+    let mut k: Vec<String> = v.as_object().expect("object").keys().cloned().collect();
+    k.sort();
+    k
+}
+
+#[test]
+fn every_preset_round_trips_through_new_and_check() {
+    for p in PRESETS {
+        let new = rolldyn(&["new", "--preset", p.name], None);
+        assert!(new.status.success(), "{}: {}", p.name, stderr(&new));
+        let check = rolldyn(&["check", "-"], Some(&stdout(&new)));
+        assert!(check.status.success(), "{}: {}", p.name, stderr(&check));
+        assert!(stdout(&check).contains("valid"));
+    }
+}
+
+#[test]
+fn frequencies_reproduce_seed001_table3() {
+    // Acceptance: 7008C at 10 000 rpm within 0.5 % of seed 001 Table 3 "theoretical".
+    let new = stdout(&rolldyn(&["new", "--preset", "7008C"], None));
+    let f = json(
+        &["frequencies", "-", "--speed", "10000 rpm", "--json"],
+        Some(&new),
+    );
+    let rel =
+        |key: &str, reference: f64| ((f[key].as_f64().expect(key) - reference) / reference).abs();
+    assert!(rel("cage_hz", 73.96) < 0.005);
+    assert!(rel("shaft_hz", 166.7) < 0.005);
+    assert!(rel("ball_spin_hz", 699.7) < 0.005);
+    assert!(rel("bpfo_hz", 1627.2) < 0.005);
+    assert!(rel("bpfi_hz", 2040.3) < 0.005);
+    let lines = f["waviness"].as_array().expect("waviness");
+    let find = |part: &str, order: u64, motion: &str| {
+        lines
+            .iter()
+            .find(|l| l["part"] == part && l["order"] == order && l["motion"] == motion)
+            .and_then(|l| l["frequency_hz"].as_f64())
+            .expect("line")
+    };
+    for (order, hz) in [(21, 1873.6), (23, 2207.0)] {
+        assert!((find("inner_race", order, "radial") - hz).abs() / hz < 0.005);
+    }
+    assert!((find("ball", 4, "axial") - 2798.8).abs() / 2798.8 < 0.005);
+}
+
+#[test]
+fn json_keys_are_stable() {
+    let f = json(&["frequencies", "--json"], None);
+    assert_eq!(
+        keys(&f),
+        [
+            "ball_defect_hz",
+            "ball_spin_hz",
+            "bpfi_hz",
+            "bpfo_hz",
+            "cage_hz",
+            "cage_speed_rpm",
+            "contact_angle_deg",
+            "orders",
+            "shaft_hz",
+            "speed_rpm",
+            "waviness"
+        ]
+    );
+    let c = json(&["contact", "--load", "500 N", "--json"], None);
+    assert_eq!(
+        keys(&c),
+        [
+            "contact_stiffness_model",
+            "effective_modulus_pa",
+            "inner",
+            "load_n",
+            "outer"
+        ]
+    );
+    assert_eq!(
+        keys(&c["inner"]),
+        [
+            "approach_m",
+            "contact_angle_deg",
+            "curvature_difference",
+            "curvature_sum_per_m",
+            "elliptic_e",
+            "elliptic_k",
+            "ellipticity",
+            "load_n",
+            "max_pressure_pa",
+            "rolling_radius_m",
+            "semi_major_m",
+            "semi_minor_m",
+            "stiffness_n_per_m1_5",
+            "transverse_radius_m"
+        ]
+    );
+    let check = json(&["check", "--json"], None);
+    for k in [
+        "geometry",
+        "inner_contact",
+        "outer_contact",
+        "frequencies",
+        "assumptions",
+    ] {
+        assert!(check.get(k).is_some(), "check --json lacks {k}");
+    }
+}
+
+#[test]
+fn contact_is_consistent_hertz() {
+    // Q = K_c δ^1.5 and p₀ = 3Q/(2π a b) on both raceways.
+    let c = json(
+        &["contact", "--load", "1 kN", "--angle", "20 deg", "--json"],
+        None,
+    );
+    for ring in ["inner", "outer"] {
+        let r = &c[ring];
+        let f = |k: &str| r[k].as_f64().expect(k);
+        assert!((f("contact_angle_deg") - 20.0).abs() < 1e-12);
+        let q = f("stiffness_n_per_m1_5") * f("approach_m").powf(1.5);
+        assert!((q - 1000.0).abs() < 1e-6, "{ring}: {q}");
+        let p0 =
+            3.0 * 1000.0 / (2.0 * std::f64::consts::PI * f("semi_major_m") * f("semi_minor_m"));
+        assert!((p0 - f("max_pressure_pa")).abs() / p0 < 1e-12);
+    }
+}
+
+#[test]
+fn overrides_apply() {
+    let f = json(&["frequencies", "--speed", "60 rpm", "--json"], None);
+    assert!((f["shaft_hz"].as_f64().unwrap() - 1.0).abs() < 1e-12);
+    let c = json(
+        &[
+            "check",
+            "--axial-load",
+            "1 kN",
+            "--radial-load",
+            "0.5 kN",
+            "--json",
+        ],
+        None,
+    );
+    assert_eq!(c["force_x_n"].as_f64(), Some(1000.0));
+    assert_eq!(c["force_z_n"].as_f64(), Some(500.0));
+    let c = json(&["check", "--set", "bearing.ball_count=20", "--json"], None);
+    assert_eq!(c["geometry"]["ball_count"].as_u64(), Some(20));
+}
+
+#[test]
+fn bad_input_exits_2_with_a_located_message() {
+    let bad = "[bearing]\npreset = \"7008C\"\nball_diameter = \"6.35 mmm\"\n";
+    let o = rolldyn(&["check", "-"], Some(bad));
+    assert_eq!(o.status.code(), Some(2));
+    let e = stderr(&o);
+    assert!(
+        e.contains("<stdin>:3:17: bearing.ball_diameter = \"6.35 mmm\": unknown unit"),
+        "{e}"
+    );
+    assert!(o.stdout.is_empty(), "nothing written on bad input");
+
+    let o = rolldyn(
+        &["check", "--set", "bearing.free_contact_angle=75 deg"],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("--set bearing.free_contact_angle=75 deg"),
+        "{}",
+        stderr(&o)
+    );
+
+    let o = rolldyn(&["check", "/nonexistent/case.toml"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("cannot read case file"));
+
+    let o = rolldyn(&["contact", "--load", "500"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("--load 500: missing unit"),
+        "{}",
+        stderr(&o)
+    );
+
+    let o = rolldyn(&["new", "--preset", "nope"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("available: 7008C"));
+
+    let o = rolldyn(
+        &["frequencies", "-"],
+        Some("[bearing]\npreset = \"6205\"\n"),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("no speed"), "{}", stderr(&o));
+}
+
+#[test]
+fn schema_and_presets() {
+    let s = json(&["schema"], None);
+    assert!(s["properties"]["bearing"].is_object());
+    let list = json(&["presets", "--json"], None);
+    let names: Vec<&str> = list
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|p| p["name"].as_str())
+        .collect();
+    for n in [
+        "6304",
+        "7008C",
+        "7218B",
+        "ceramic_45x75",
+        "acbb_30x62",
+        "6205",
+        "6203",
+        "6206",
+    ] {
+        assert!(names.contains(&n), "{n}");
+    }
+    let text = stdout(&rolldyn(&["presets"], None));
+    assert!(text.contains("seed 001"));
+}
+
+#[test]
+fn check_lists_assumptions() {
+    let o = rolldyn(&["check", "-"], Some("[bearing]\npreset = \"7218B\"\n"));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(
+        out.contains("bearing.inner_groove_curvature") && out.contains("0.5232"),
+        "{out}"
+    );
+}
