@@ -32,8 +32,9 @@ pub enum Origin {
 pub struct CaseError {
     /// Name of the case source ("case.toml", "<stdin>", "built-in default").
     pub source_name: String,
-    /// Where in that source.
-    pub origin: Origin,
+    /// Where in that source (boxed: errors travel on the cold path and a
+    /// small `Result` keeps the happy path lean).
+    pub origin: Box<Origin>,
     /// The dotted key, when the error concerns one.
     pub key: Option<String>,
     /// The offending value as written, when there is one.
@@ -44,7 +45,7 @@ pub struct CaseError {
 
 impl fmt::Display for CaseError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match &self.origin {
+        match self.origin.as_ref() {
             Origin::File { line, column, .. } => {
                 write!(f, "{}:{line}:{column}: ", self.source_name)?
             }
@@ -62,7 +63,7 @@ impl fmt::Display for CaseError {
             line,
             column,
             line_text,
-        } = &self.origin
+        } = self.origin.as_ref()
         {
             let gutter = line.to_string().len();
             write!(

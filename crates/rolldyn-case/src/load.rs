@@ -29,7 +29,7 @@ impl Override {
         let Some((key, raw)) = arg.split_once('=') else {
             return Err(CaseError {
                 source_name: "command line".into(),
-                origin: Origin::Override(format!("--set {arg}")),
+                origin: Box::new(Origin::Override(format!("--set {arg}"))),
                 key: None,
                 value: None,
                 rule: "expected --set dotted.key=value, e.g. --set bearing.ball_count=22".into(),
@@ -210,7 +210,7 @@ impl Sources<'_> {
         };
         CaseError {
             source_name: self.name.to_string(),
-            origin,
+            origin: Box::new(origin),
             key,
             value: value.or(found),
             rule,
@@ -223,9 +223,7 @@ impl Sources<'_> {
 pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Result<Case, CaseError> {
     let document = toml::de::DeTable::parse(text).map_err(|e| CaseError {
         source_name: source_name.to_string(),
-        origin: e
-            .span()
-            .map_or(Origin::Unknown, |s| position(text, s.start)),
+        origin: Box::new(e.span().map_or(Origin::Unknown, |s| position(text, s.start))),
         key: None,
         value: None,
         rule: format!("TOML syntax error: {}", e.message().trim()),

@@ -24,7 +24,7 @@ pub trait Dimension {
     /// An example value for messages and the schema, e.g. "6.35 mm".
     const EXAMPLE: &'static str;
     /// Accepted units: (normalised symbol, factor to SI, offset to SI).
-    const UNITS: &'static [(&'static str, f64, f64)];
+    const UNITS: UnitTable;
 }
 
 macro_rules! dimension {
@@ -102,8 +102,11 @@ dimension!(/// Mass moment of inertia, SI kg·m².
     Inertia, "moment of inertia", "8.2e-7 kg.m^2",
     [("kg.m^2", 1.0), ("kg.mm^2", 1e-6), ("g.mm^2", 1e-9), ("g.cm^2", 1e-7)]);
 
+/// A dimension's unit table: (normalised symbol, factor to SI, offset to SI).
+type UnitTable = &'static [(&'static str, f64, f64)];
+
 /// Every dimension's name and units, for "that is a unit of X" messages.
-fn all_units() -> [(&'static str, &'static [(&'static str, f64, f64)]); 19] {
+fn all_units() -> [(&'static str, UnitTable); 18] {
     [
         (Length::NAME, Length::UNITS),
         (Angle::NAME, Angle::UNITS),
@@ -123,7 +126,6 @@ fn all_units() -> [(&'static str, &'static [(&'static str, f64, f64)]); 19] {
         (Velocity::NAME, Velocity::UNITS),
         (Mass::NAME, Mass::UNITS),
         (Inertia::NAME, Inertia::UNITS),
-        (Frequency::NAME, Frequency::UNITS),
     ]
 }
 

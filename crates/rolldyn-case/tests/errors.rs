@@ -1,6 +1,8 @@
 //! Every rejection rule of the case format: the message names the key,
 //! the value (where there is one) and the rule, and points at the line.
 
+#![allow(clippy::unwrap_used)]
+
 use rolldyn_case::{CaseError, Origin, Override, load_case, presets};
 
 /// A valid minimal case; tests break one thing at a time.
@@ -35,7 +37,7 @@ fn replace(from: &str, to: &str) -> String {
 fn check(e: &CaseError, key: &str, line: usize, fragments: &[&str]) {
     let msg = e.to_string();
     assert_eq!(e.key.as_deref(), Some(key), "{msg}");
-    match &e.origin {
+    match e.origin.as_ref() {
         Origin::File { line: l, .. } => assert_eq!(*l, line, "{msg}"),
         other => panic!("expected a file position, got {other:?}: {msg}"),
     }
@@ -316,7 +318,7 @@ fn speed_profile_rules() {
 #[test]
 fn syntax_error_points_at_the_line() {
     let e = err(&replace("ball_count = 22", "ball_count = = 22"));
-    assert!(matches!(e.origin, Origin::File { line: 4, .. }), "{e}");
+    assert!(matches!(*e.origin, Origin::File { line: 4, .. }), "{e}");
     assert!(e.to_string().contains("TOML syntax error"), "{e}");
 }
 
@@ -336,7 +338,7 @@ fn overrides_are_validated_like_the_file() {
         &[Override::flag("--speed", "operating.speed", "100 N")],
     )
     .unwrap_err();
-    assert_eq!(e.origin, Origin::Override("--speed 100 N".into()));
+    assert_eq!(*e.origin, Origin::Override("--speed 100 N".into()));
     assert!(e.to_string().contains("unit of force"), "{e}");
     let e = load_case(
         "case.toml",

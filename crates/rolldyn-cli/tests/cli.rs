@@ -1,6 +1,8 @@
 //! End-to-end tests of the `rolldyn` binary: acceptance checks of the
 //! foundation issue, exit codes, and the stable JSON keys.
 
+#![allow(clippy::unwrap_used)]
+
 use rolldyn_case::presets::PRESETS;
 use serde_json::Value;
 use std::io::Write;
