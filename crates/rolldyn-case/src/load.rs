@@ -223,7 +223,10 @@ impl Sources<'_> {
 pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Result<Case, CaseError> {
     let document = toml::de::DeTable::parse(text).map_err(|e| CaseError {
         source_name: source_name.to_string(),
-        origin: Box::new(e.span().map_or(Origin::Unknown, |s| position(text, s.start))),
+        origin: Box::new(
+            e.span()
+                .map_or(Origin::Unknown, |s| position(text, s.start)),
+        ),
         key: None,
         value: None,
         rule: format!("TOML syntax error: {}", e.message().trim()),
