@@ -30,7 +30,7 @@ pub enum Origin {
 /// followed by the offending line and a caret.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub struct CaseError {
-    /// Name of the case source ("case.toml", "<stdin>", "built-in default").
+    /// Name of the case source (`case.toml`, `<stdin>`, `built-in default`).
     pub source_name: String,
     /// Where in that source (boxed: errors travel on the cold path and a
     /// small `Result` keeps the happy path lean).

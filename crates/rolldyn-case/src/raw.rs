@@ -1,5 +1,5 @@
 //! The case file as written: TOML structure, key names, units. Everything
-//! here is syntax; [`crate::validate`] turns it into a checked
+//! here is syntax; [`crate::case`] turns it into a checked
 //! [`crate::Case`] in SI units. Unknown keys are errors (typos!).
 //!
 //! The doc comments of these types are the reference of the case format:

@@ -1,0 +1,60 @@
+//! `cargo bench -p rolldyn --bench contact`: cost of the contact building
+//! blocks the time loop will call (7008C, steel). Plain `Instant` timing
+//! of many repetitions (median of 7 runs), no extra dependency. Figures are
+//! recorded in docs/performance.md with the machine.
+
+use nalgebra::Vector3;
+use rolldyn::contact::table::{ContactTable, RacewayContactModel};
+use rolldyn::contact::{GrooveCircle, HertzModel, RingPose};
+use rolldyn::material::{Material, effective_modulus};
+use rolldyn::{BearingGeometry, Clearance, GeometrySpec, RingKind};
+use std::hint::black_box;
+use std::time::Instant;
+
+fn time_per_call(name: &str, calls: usize, mut f: impl FnMut(usize) -> f64) {
+    let mut runs: Vec<f64> = (0..7)
+        .map(|_| {
+            let start = Instant::now();
+            let mut acc = 0.0;
+            for i in 0..calls {
+                acc += f(i);
+            }
+            black_box(acc);
+            start.elapsed().as_secs_f64() / calls as f64
+        })
+        .collect();
+    runs.sort_by(f64::total_cmp);
+    println!("{name:<44} {:>10.1} ns/call", runs[3] * 1e9);
+}
+
+fn main() {
+    let g = BearingGeometry::new(&GeometrySpec {
+        ball_diameter: 6.35e-3,
+        ball_count: 22,
+        pitch_diameter: 54e-3,
+        inner_groove_curvature: 3.493 / 6.35,
+        outer_groove_curvature: 3.302 / 6.35,
+        clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
+        preload: false,
+    })
+    .expect("valid geometry");
+    let steel = Material::STEEL_52100;
+    let model = RacewayContactModel::new(&g, RingKind::Inner, effective_modulus(&steel, &steel), HertzModel::Exact);
+    let angle = |i: usize| 0.2 + 1e-4 * (i % 1000) as f64;
+
+    let start = Instant::now();
+    let table = ContactTable::new(model).expect("table builds");
+    println!("{:<44} {:>10.3} ms", "table build (1801 nodes, exact solve)", start.elapsed().as_secs_f64() * 1e3);
+
+    time_per_call("exact Hertz constants (ellipticity solve)", 20_000, |i| {
+        model.coefficients(angle(i)).map_or(0.0, |c| c.stiffness)
+    });
+    time_per_call("table lookup, all constants", 2_000_000, |i| table.at(angle(i)).stiffness);
+    time_per_call("table lookup, K_c only", 2_000_000, |i| table.stiffness(angle(i)));
+    let circle = GrooveCircle::of(&g.inner, &RingPose::default());
+    time_per_call("exact torus contact", 2_000_000, |i| {
+        let phi = 1e-3 * i as f64;
+        let q = Vector3::new(1e-6, 27e-3 * phi.cos(), 27e-3 * phi.sin());
+        circle.contact(&q, g.ball_diameter, 0.0).map_or(0.0, |c| c.penetration)
+    });
+}
