@@ -9,7 +9,10 @@ fn resolve<'a>(schema: &'a Value, defs: &'a Value) -> &'a Value {
         return &defs[r.rsplit('/').next().unwrap_or_default()];
     }
     if let Some(any) = schema.get("anyOf").and_then(Value::as_array) {
-        if let Some(non_null) = any.iter().find(|s| s.get("type").and_then(Value::as_str) != Some("null")) {
+        if let Some(non_null) = any
+            .iter()
+            .find(|s| s.get("type").and_then(Value::as_str) != Some("null"))
+        {
             return resolve(non_null, defs);
         }
     }
@@ -17,7 +20,10 @@ fn resolve<'a>(schema: &'a Value, defs: &'a Value) -> &'a Value {
 }
 
 fn keys(schema: &Value, defs: &Value, prefix: &str, out: &mut Vec<String>) {
-    let Some(props) = resolve(schema, defs).get("properties").and_then(Value::as_object) else {
+    let Some(props) = resolve(schema, defs)
+        .get("properties")
+        .and_then(Value::as_object)
+    else {
         return;
     };
     for (k, v) in props {
@@ -37,9 +43,21 @@ fn every_schema_key_is_documented() {
     let mut all = Vec::new();
     keys(&schema, &defs, "", &mut all);
     assert!(all.len() > 40, "schema walk found {} keys", all.len());
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/case-format.md"))
-        .expect("docs/case-format.md exists");
-    let sections = ["bearing", "cage", "materials", "lubricant", "operating", "model", "solver", "output"];
+    let doc = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../docs/case-format.md"
+    ))
+    .expect("docs/case-format.md exists");
+    let sections = [
+        "bearing",
+        "cage",
+        "materials",
+        "lubricant",
+        "operating",
+        "model",
+        "solver",
+        "output",
+    ];
     for key in all {
         let documented = if sections.contains(&key.as_str()) {
             doc.contains(&format!("[{key}]"))

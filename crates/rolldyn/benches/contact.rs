@@ -39,22 +39,37 @@ fn main() {
     })
     .expect("valid geometry");
     let steel = Material::STEEL_52100;
-    let model = RacewayContactModel::new(&g, RingKind::Inner, effective_modulus(&steel, &steel), HertzModel::Exact);
+    let model = RacewayContactModel::new(
+        &g,
+        RingKind::Inner,
+        effective_modulus(&steel, &steel),
+        HertzModel::Exact,
+    );
     let angle = |i: usize| 0.2 + 1e-4 * (i % 1000) as f64;
 
     let start = Instant::now();
     let table = ContactTable::new(model).expect("table builds");
-    println!("{:<44} {:>10.3} ms", "table build (1801 nodes, exact solve)", start.elapsed().as_secs_f64() * 1e3);
+    println!(
+        "{:<44} {:>10.3} ms",
+        "table build (1801 nodes, exact solve)",
+        start.elapsed().as_secs_f64() * 1e3
+    );
 
     time_per_call("exact Hertz constants (ellipticity solve)", 20_000, |i| {
         model.coefficients(angle(i)).map_or(0.0, |c| c.stiffness)
     });
-    time_per_call("table lookup, all constants", 2_000_000, |i| table.at(angle(i)).stiffness);
-    time_per_call("table lookup, K_c only", 2_000_000, |i| table.stiffness(angle(i)));
+    time_per_call("table lookup, all constants", 2_000_000, |i| {
+        table.at(angle(i)).stiffness
+    });
+    time_per_call("table lookup, K_c only", 2_000_000, |i| {
+        table.stiffness(angle(i))
+    });
     let circle = GrooveCircle::of(&g.inner, &RingPose::default());
     time_per_call("exact torus contact", 2_000_000, |i| {
         let phi = 1e-3 * i as f64;
         let q = Vector3::new(1e-6, 27e-3 * phi.cos(), 27e-3 * phi.sin());
-        circle.contact(&q, g.ball_diameter, 0.0).map_or(0.0, |c| c.penetration)
+        circle
+            .contact(&q, g.ball_diameter, 0.0)
+            .map_or(0.0, |c| c.penetration)
     });
 }
