@@ -7,7 +7,7 @@
 //! lists them with units and defaults.
 
 use crate::units::*;
-use rolldyn::contact::normal_law::{DEFAULT_IMPACT_SPEED_FLOOR, NormalForceLaw};
+use rolldyn::contact::normal_law::NormalForceLaw;
 use schemars::{JsonSchema, Schema, SchemaGenerator, json_schema};
 use serde::de::{self, MapAccess, Visitor};
 use serde::{Deserialize, Deserializer, Serialize};
@@ -162,43 +162,26 @@ pub struct RawMaterial {
     pub density: Quantity<Density>,
 }
 
-/// Deserializes "a string or a table" into one of two variants while
-/// keeping the inner table's own error messages (serde's untagged enums
-/// would replace them with "did not match any variant").
-macro_rules! string_or_table {
-    ($ty:ident, $named:ident, $table:ty, $what:literal) => {
-        impl<'de> Deserialize<'de> for $ty {
-            fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-                struct V;
-                impl<'de> Visitor<'de> for V {
-                    type Value = $ty;
-                    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                        f.write_str($what)
-                    }
-                    fn visit_str<E: de::Error>(self, v: &str) -> Result<$ty, E> {
-                        Ok($ty::$named(v.to_string()))
-                    }
-                    fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<$ty, A::Error> {
-                        <$table>::deserialize(de::value::MapAccessDeserializer::new(map))
-                            .map(Into::into)
-                    }
-                }
-                d.deserialize_any(V)
+/// Accepts a material name or a table while keeping the table's own error
+/// messages (serde's untagged enums would replace them with "did not match
+/// any variant").
+impl<'de> Deserialize<'de> for MaterialChoice {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = MaterialChoice;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a material name (\"steel_52100\", \"silicon_nitride\") or a table with elastic_modulus, poisson_ratio, density")
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<MaterialChoice, E> {
+                Ok(MaterialChoice::Named(v.to_string()))
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<MaterialChoice, A::Error> {
+                RawMaterial::deserialize(de::value::MapAccessDeserializer::new(map))
+                    .map(MaterialChoice::Custom)
             }
         }
-    };
-}
-
-string_or_table!(
-    MaterialChoice,
-    Named,
-    RawMaterial,
-    "a material name (\"steel_52100\", \"silicon_nitride\") or a table with elastic_modulus, poisson_ratio, density"
-);
-
-impl From<RawMaterial> for MaterialChoice {
-    fn from(m: RawMaterial) -> Self {
-        Self::Custom(m)
+        d.deserialize_any(V)
     }
 }
 
@@ -362,9 +345,4 @@ pub struct RawOutput {
     pub sample_rate: Option<Quantity<Frequency>>,
     /// Output directory.
     pub directory: Option<String>,
-}
-
-/// Default impact-speed floor as it appears in case files.
-pub fn default_impact_speed_floor_text() -> String {
-    format!("{} mm/s", DEFAULT_IMPACT_SPEED_FLOOR * 1e3)
 }
