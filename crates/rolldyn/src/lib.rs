@@ -8,6 +8,7 @@
 //! * [`contact`] — exact torus contact, Hertz point contact, precomputed
 //!   contact tables and normal force laws (MODEL §2.1–§2.3);
 //! * [`operating`] — speed profiles and applied loads (MODEL §8);
+//! * [`quasistatic`] — static load distribution and stiffness (MODEL §7);
 //! * [`kinematics`] — pure-rolling speeds, defect frequencies, waviness
 //!   excitation map (MODEL §7);
 //! * [`math`] — elliptic integrals, root finding, monotone interpolation.
@@ -22,6 +23,7 @@ pub mod kinematics;
 pub mod material;
 pub mod math;
 pub mod operating;
+pub mod quasistatic;
 
 pub use error::InvalidParameter;
 pub use geometry::{BearingGeometry, Clearance, GeometrySpec, RingKind};

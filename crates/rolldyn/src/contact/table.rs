@@ -155,6 +155,13 @@ impl ContactTable {
         }
     }
 
+    /// Interpolated K_c and its derivative dK_c/dα \[N/m^1.5 per rad\]
+    /// (for analytic Jacobians).
+    #[inline]
+    pub fn stiffness_with_derivative(&self, contact_angle: f64) -> (f64, f64) {
+        self.stiffness.eval_with_derivative(contact_angle)
+    }
+
     /// Interpolated K_c only (the time loop's most frequent lookup).
     #[inline]
     pub fn stiffness(&self, contact_angle: f64) -> f64 {

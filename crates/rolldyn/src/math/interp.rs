@@ -44,6 +44,30 @@ impl UniformPchip {
         Self { x0, h, y, slope }
     }
 
+    /// Interpolated value and its derivative d/dx at x; outside the grid
+    /// the value is clamped to the ends and the derivative is zero.
+    #[inline]
+    pub fn eval_with_derivative(&self, x: f64) -> (f64, f64) {
+        let last = self.y.len() - 1;
+        let raw = (x - self.x0) / self.h;
+        let s = raw.clamp(0.0, last as f64);
+        let i = (s as usize).min(last - 1);
+        let t = s - i as f64;
+        let (y0, y1) = (self.y[i], self.y[i + 1]);
+        let (m0, m1) = (self.slope[i] * self.h, self.slope[i + 1] * self.h);
+        let t2 = t * t;
+        let t3 = t2 * t;
+        let value = (2.0 * t3 - 3.0 * t2 + 1.0) * y0
+            + (t3 - 2.0 * t2 + t) * m0
+            + (-2.0 * t3 + 3.0 * t2) * y1
+            + (t3 - t2) * m1;
+        let dvalue_dt = (6.0 * t2 - 6.0 * t) * (y0 - y1)
+            + (3.0 * t2 - 4.0 * t + 1.0) * m0
+            + (3.0 * t2 - 2.0 * t) * m1;
+        let inside = (0.0..=last as f64).contains(&raw);
+        (value, if inside { dvalue_dt / self.h } else { 0.0 })
+    }
+
     /// Interpolated value at x; x outside the grid is clamped to its ends.
     #[inline]
     pub fn eval(&self, x: f64) -> f64 {
@@ -90,6 +114,22 @@ mod tests {
             let v = p.eval(k as f64 * 1e-3);
             assert!(v >= prev - 1e-15);
             prev = v;
+        }
+    }
+
+    #[test]
+    fn derivative_matches_finite_difference() {
+        let p = UniformPchip::new(
+            0.0,
+            0.05,
+            (0..=40).map(|i| (i as f64 * 0.05).sin() + 2.0).collect(),
+        );
+        for x in [0.013, 0.5, 0.77, 1.234, 1.9] {
+            let (v, d) = p.eval_with_derivative(x);
+            assert_eq!(v, p.eval(x));
+            let h = 1e-7;
+            let fd = (p.eval(x + h) - p.eval(x - h)) / (2.0 * h);
+            assert!((d - fd).abs() < 1e-6, "x = {x}: {d} vs {fd}");
         }
     }
 
