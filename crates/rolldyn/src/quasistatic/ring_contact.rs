@@ -75,6 +75,10 @@ pub struct RingContactEval {
     pub dforce_dball: Matrix3<f64>,
     /// ∂force/∂(t, θ) of the ring.
     pub dforce_dring: Matrix3x5,
+    /// ∂normal/∂q \[1/m\].
+    pub dnormal_dball: Matrix3<f64>,
+    /// ∂normal/∂(t, θ) of the ring.
+    pub dnormal_dring: Matrix3x5,
 }
 
 impl RingContactEval {
@@ -140,13 +144,19 @@ pub fn evaluate(
     let dforce_dball = rot * j_s * rt;
     let drot_dty = rz.into_inner() * cross_matrix(&Vector3::y()) * ry.into_inner();
     let drot_dtz = cross_matrix(&Vector3::z()) * rot;
+    let dnormal_dball = rot * dn_ds * rt;
     let mut dforce_dring = Matrix3x5::zeros();
+    let mut dnormal_dring = Matrix3x5::zeros();
     dforce_dring
         .fixed_view_mut::<3, 3>(0, 0)
         .copy_from(&(-dforce_dball));
+    dnormal_dring
+        .fixed_view_mut::<3, 3>(0, 0)
+        .copy_from(&(-dnormal_dball));
     for (col, drot) in [(3, drot_dty), (4, drot_dtz)] {
-        let column = drot * force_ring_frame + rot * j_s * (drot.transpose() * rel);
-        dforce_dring.set_column(col, &column);
+        let ds = drot.transpose() * rel;
+        dforce_dring.set_column(col, &(drot * force_ring_frame + rot * j_s * ds));
+        dnormal_dring.set_column(col, &(drot * n + rot * dn_ds * ds));
     }
     RingContactEval {
         penetration: delta,
@@ -156,6 +166,8 @@ pub fn evaluate(
         force: rot * force_ring_frame,
         dforce_dball,
         dforce_dring,
+        dnormal_dball,
+        dnormal_dring,
     }
 }
 
@@ -179,87 +191,65 @@ mod tests {
         })
         .unwrap();
         let ep = effective_modulus(&Material::STEEL_52100, &Material::STEEL_52100);
-        let table = ContactTable::new(RacewayContactModel::new(
-            &g,
-            RingKind::Inner,
-            ep,
-            HertzModel::Exact,
-        ))
-        .unwrap();
+        let model = RacewayContactModel::new(&g, RingKind::Inner, ep, HertzModel::Exact);
+        let table = ContactTable::new(model).unwrap();
         let phi: f64 = 0.7;
-        let q = Vector3::new(-4e-6, 27.003e-3 * phi.cos(), 27.003e-3 * phi.sin());
-        let u = [3e-6, -2e-6, 1.5e-6, 2e-4, -1e-4];
+        let q0 = Vector3::new(-4e-6, 27.003e-3 * phi.cos(), 27.003e-3 * phi.sin());
+        let u0 = [3e-6, -2e-6, 1.5e-6, 2e-4, -1e-4];
         for extend in [false, true] {
-            let base = evaluate(
-                &g.inner,
-                &table,
-                g.ball_diameter,
-                &q,
-                &RingDisplacement::from_array(u),
-                extend,
-            );
+            let eval = |q: &Vector3<f64>, u: [f64; 5]| {
+                evaluate(
+                    &g.inner,
+                    &table,
+                    g.ball_diameter,
+                    q,
+                    &RingDisplacement::from_array(u),
+                    extend,
+                )
+            };
+            let base = eval(&q0, u0);
             assert!(base.penetration > 0.0);
-            let scale = base.force.norm();
+            // Central difference of (force, normal) along one input.
+            let check = |name: &str,
+                         h: f64,
+                         plus: RingContactEval,
+                         minus: RingContactEval,
+                         df: Vector3<f64>,
+                         dn: Vector3<f64>| {
+                let fd_f = (plus.force - minus.force) / (2.0 * h);
+                let fd_n = (plus.normal - minus.normal) / (2.0 * h);
+                let f_scale = fd_f.norm().max(1e-3 * base.force.norm() / g.ball_diameter);
+                assert!(
+                    (fd_f - df).norm() < 1e-5 * f_scale,
+                    "dF/d{name}: {fd_f:?} vs {df:?}"
+                );
+                let n_scale = fd_n.norm().max(1e-3 / g.ball_diameter);
+                assert!(
+                    (fd_n - dn).norm() < 1e-5 * n_scale,
+                    "dn/d{name}: {fd_n:?} vs {dn:?}"
+                );
+            };
             for k in 0..3 {
                 let h = 1e-9;
-                let mut qp = q;
+                let (mut qp, mut qm) = (q0, q0);
                 qp[k] += h;
-                let mut qm = q;
                 qm[k] -= h;
-                let fp = evaluate(
-                    &g.inner,
-                    &table,
-                    g.ball_diameter,
-                    &qp,
-                    &RingDisplacement::from_array(u),
-                    extend,
-                )
-                .force;
-                let fm = evaluate(
-                    &g.inner,
-                    &table,
-                    g.ball_diameter,
-                    &qm,
-                    &RingDisplacement::from_array(u),
-                    extend,
-                )
-                .force;
-                let fd = (fp - fm) / (2.0 * h);
-                let err = (fd - base.dforce_dball.column(k)).norm() / (scale / 1e-6);
-                assert!(
-                    err < 1e-5,
-                    "dF/dq[{k}]: {fd:?} vs {:?}",
-                    base.dforce_dball.column(k)
+                let (df, dn) = (
+                    base.dforce_dball.column(k).into(),
+                    base.dnormal_dball.column(k).into(),
                 );
+                check(&format!("q{k}"), h, eval(&qp, u0), eval(&qm, u0), df, dn);
             }
             for k in 0..5 {
                 let h = if k < 3 { 1e-9 } else { 1e-8 };
-                let mut up = u;
+                let (mut up, mut um) = (u0, u0);
                 up[k] += h;
-                let mut um = u;
                 um[k] -= h;
-                let fp = evaluate(
-                    &g.inner,
-                    &table,
-                    g.ball_diameter,
-                    &q,
-                    &RingDisplacement::from_array(up),
-                    extend,
-                )
-                .force;
-                let fm = evaluate(
-                    &g.inner,
-                    &table,
-                    g.ball_diameter,
-                    &q,
-                    &RingDisplacement::from_array(um),
-                    extend,
-                )
-                .force;
-                let fd = (fp - fm) / (2.0 * h);
-                let col = base.dforce_dring.column(k);
-                let err = (fd - col).norm() / fd.norm().max(scale / 1e-6 * h.max(1e-9) * 1e3);
-                assert!(err < 1e-5, "dF/du[{k}]: {fd:?} vs {col:?}");
+                let (df, dn) = (
+                    base.dforce_dring.column(k).into(),
+                    base.dnormal_dring.column(k).into(),
+                );
+                check(&format!("u{k}"), h, eval(&q0, up), eval(&q0, um), df, dn);
             }
         }
     }
