@@ -14,4 +14,5 @@ mod a6_a8_kinematics;
 mod a7_seed000_geometry;
 mod b3_impact;
 mod common;
+mod quasistatic_high_speed;
 mod quasistatic_static;

@@ -159,9 +159,7 @@ fn b5_residual_and_stiffness_against_finite_differences() {
     let options = SolverOptions::default();
     let base = loads(400.0, 150.0, -250.0, 2.0, -1.5);
     let sol = s.solve_static(&base, &options).unwrap();
-    let scale = 400.0f64;
     assert!(sol.residual < 1e-8, "relative residual {}", sol.residual);
-    let _ = scale;
     // Compliance by re-solving with perturbed loads: du/dF ≈ K⁻¹.
     let k = nalgebra::SMatrix::<f64, 5, 5>::from_fn(|i, j| sol.stiffness[i][j]);
     let compliance = k.try_inverse().unwrap();
@@ -182,11 +180,6 @@ fn b5_residual_and_stiffness_against_finite_differences() {
             plus.moment[col - 3] += h;
             minus.moment[col - 3] -= h;
         }
-        let at = |l: Loads| Conditions {
-            loads: l,
-            inner_speed: 0.0,
-            control: RacewayControl::Outer,
-        };
         let up = s
             .solve_from(&sol, &at(plus), &options)
             .unwrap()

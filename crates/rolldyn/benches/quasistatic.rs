@@ -1,0 +1,100 @@
+//! `cargo bench -p rolldyn --bench quasistatic`: one Jones–Harris solve of
+//! the 7218B (16 balls) from the built-in start, and warm-started solves,
+//! on one core. Issue 3 target: ≤ 1 ms per solve. Figures in
+//! docs/performance.md.
+
+use rolldyn::contact::HertzModel;
+use rolldyn::material::Material;
+use rolldyn::operating::Loads;
+use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
+use std::hint::black_box;
+use std::time::Instant;
+
+fn median_time(runs: usize, mut f: impl FnMut()) -> f64 {
+    let mut t: Vec<f64> = (0..runs)
+        .map(|_| {
+            let start = Instant::now();
+            f();
+            start.elapsed().as_secs_f64()
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[runs / 2]
+}
+
+fn main() {
+    let g = BearingGeometry::new(&GeometrySpec {
+        ball_diameter: 22.23e-3,
+        ball_count: 16,
+        pitch_diameter: 125.26e-3,
+        inner_groove_curvature: 0.5232,
+        outer_groove_curvature: 0.5232,
+        clearance: Clearance::FreeContactAngle(40f64.to_radians()),
+        preload: false,
+    })
+    .expect("7218B geometry");
+    let steel = Material {
+        elastic_modulus: 206e9,
+        poisson_ratio: 0.3,
+        density: 7800.0,
+    };
+    let solver = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).expect("tables");
+    let options = SolverOptions::default();
+    let rpm = std::f64::consts::TAU / 60.0;
+    for (name, loads, speed) in [
+        (
+            "7218B static, F_x 10 kN",
+            Loads {
+                force: [10e3, 0.0, 0.0],
+                moment: [0.0; 2],
+            },
+            0.0,
+        ),
+        (
+            "7218B J-H 10 000 rpm, F_x 10 kN",
+            Loads {
+                force: [10e3, 0.0, 0.0],
+                moment: [0.0; 2],
+            },
+            10_000.0 * rpm,
+        ),
+        (
+            "7218B J-H 10 000 rpm, F_x 10 kN, F_z 5 kN",
+            Loads {
+                force: [10e3, 0.0, 5e3],
+                moment: [0.0; 2],
+            },
+            10_000.0 * rpm,
+        ),
+        (
+            "7218B J-H 14 000 rpm, F_x 40 kN, F_z 20 kN",
+            Loads {
+                force: [40e3, 0.0, 20e3],
+                moment: [0.0; 2],
+            },
+            14_000.0 * rpm,
+        ),
+    ] {
+        let conditions = Conditions {
+            loads,
+            inner_speed: speed,
+            control: RacewayControl::Outer,
+        };
+        let sol = solver.solve(&conditions, &options).expect("converges");
+        let cold = median_time(21, || {
+            black_box(solver.solve(&conditions, &options).ok());
+        });
+        let mut nearby = conditions;
+        nearby.loads.force[0] *= 1.01;
+        let warm = median_time(21, || {
+            black_box(solver.solve_from(&sol, &nearby, &options).ok());
+        });
+        println!(
+            "{name:<46} cold {:>8.3} ms ({} it)   warm (+1 % load) {:>8.3} ms",
+            cold * 1e3,
+            sol.iterations,
+            warm * 1e3
+        );
+    }
+}

@@ -1,0 +1,202 @@
+//! Jones–Harris high-speed equilibrium (MODEL §7.2), issue 3:
+//! * B4 at speed: pure axial load gives identical balls; centrifugal force
+//!   opens the outer contact angle less than the inner one (α_i > α_o);
+//! * under outer-raceway control the attitude angle satisfies
+//!   tan β = sin α_o/(cos α_o + D/d_m) (Harris & Kotzalas, *Advanced
+//!   Concepts*, eq. 3.39; exactly, with the ball's orbit radius r for
+//!   d_m/2) and the spin at the outer contact is zero;
+//! * cage speed near the pure-rolling value with the solved angles (§7);
+//! * B5 at speed: residual < 1e-8 of the load, stiffness = finite
+//!   differences of re-solves;
+//! * robustness: converges from the built-in start over 0–20 000 rpm ×
+//!   F_x = 10 N–50 kN for the 7008C and the 7218B, or reports why.
+
+use super::common::{bearing_7008c, bearing_7218b, rel};
+use rolldyn::BearingGeometry;
+use rolldyn::contact::HertzModel;
+use rolldyn::kinematics::cage_speed_ratio;
+use rolldyn::material::Material;
+use rolldyn::operating::Loads;
+use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+
+const RPM: f64 = std::f64::consts::TAU / 60.0;
+
+fn solver(g: &BearingGeometry) -> QuasiStaticSolver {
+    QuasiStaticSolver::new(
+        g,
+        &Material::STEEL_52100,
+        &Material::STEEL_52100,
+        HertzModel::Exact,
+    )
+    .unwrap()
+}
+
+fn axial(fa: f64, rpm: f64, control: RacewayControl) -> Conditions {
+    Conditions {
+        loads: Loads {
+            force: [fa, 0.0, 0.0],
+            moment: [0.0, 0.0],
+        },
+        inner_speed: rpm * RPM,
+        control,
+    }
+}
+
+#[test]
+fn b4_axial_load_at_speed_gives_identical_balls() {
+    let g = bearing_7008c();
+    let sol = solver(&g)
+        .solve(
+            &axial(200.0, 10_000.0, RacewayControl::Outer),
+            &SolverOptions::default(),
+        )
+        .unwrap();
+    let b0 = sol.balls[0];
+    for b in &sol.balls {
+        assert!(rel(b.inner.load, b0.inner.load) < 1e-9 && rel(b.outer.load, b0.outer.load) < 1e-9);
+        assert!((b.inner.contact_angle - b0.inner.contact_angle).abs() < 1e-9);
+        assert!(rel(b.orbital_speed, b0.orbital_speed) < 1e-9);
+    }
+    assert!(
+        b0.inner.contact_angle > b0.outer.contact_angle,
+        "centrifugal force lowers α_o"
+    );
+    assert!(b0.outer.load > b0.inner.load);
+    eprintln!(
+        "7008C 200 N 10 000 rpm: α_i {:.3}°, α_o {:.3}°, Q_i {:.2} N, Q_o {:.2} N, cage {:.1} rpm, ω_R {:.0} rpm, β {:.3}°",
+        b0.inner.contact_angle.to_degrees(),
+        b0.outer.contact_angle.to_degrees(),
+        b0.inner.load,
+        b0.outer.load,
+        sol.cage_speed() / RPM,
+        b0.spin_speed / RPM,
+        b0.attitude.to_degrees()
+    );
+}
+
+#[test]
+fn outer_control_kinematics() {
+    let g = bearing_7218b();
+    let sol = solver(&g)
+        .solve(
+            &axial(20_000.0, 10_000.0, RacewayControl::Outer),
+            &SolverOptions::default(),
+        )
+        .unwrap();
+    let b = sol.balls[0];
+    let ao = b.outer.contact_angle;
+    let beta = (ao.sin() / (ao.cos() + g.ball_diameter / (2.0 * b.radial_position))).atan();
+    let gamma = g.ball_diameter / g.pitch_diameter;
+    assert!(
+        (b.attitude - beta).abs() < 1e-9,
+        "β {} vs Harris {}",
+        b.attitude.to_degrees(),
+        beta.to_degrees()
+    );
+    assert!(
+        b.outer.spin_to_roll.abs() < 1e-9,
+        "no spin at the controlling contact"
+    );
+    assert!(
+        b.inner.spin_to_roll.abs() > 0.1,
+        "spin at the other contact"
+    );
+    let ratio = cage_speed_ratio(gamma, b.inner.contact_angle, ao, b.attitude);
+    assert!(
+        rel(b.orbital_speed, ratio * 10_000.0 * RPM) < 1e-3,
+        "ω_m {} vs formula {}",
+        b.orbital_speed,
+        ratio * 10_000.0 * RPM
+    );
+}
+
+#[test]
+fn b5_at_speed_residual_and_stiffness() {
+    let g = bearing_7008c();
+    let s = solver(&g);
+    let options = SolverOptions::default();
+    let base = Conditions {
+        loads: Loads {
+            force: [400.0, 150.0, -250.0],
+            moment: [2.0, -1.5],
+        },
+        inner_speed: 12_000.0 * RPM,
+        control: RacewayControl::Outer,
+    };
+    let sol = s.solve(&base, &options).unwrap();
+    assert!(sol.residual < 1e-8, "relative residual {}", sol.residual);
+    let k = nalgebra::SMatrix::<f64, 5, 5>::from_fn(|i, j| sol.stiffness[i][j]);
+    let compliance = k.try_inverse().unwrap();
+    let steps = [1.0, 1.0, 1.0, 0.01, 0.01];
+    for col in 0..5 {
+        let (mut plus, mut minus) = (base, base);
+        if col < 3 {
+            plus.loads.force[col] += steps[col];
+            minus.loads.force[col] -= steps[col];
+        } else {
+            plus.loads.moment[col - 3] += steps[col];
+            minus.loads.moment[col - 3] -= steps[col];
+        }
+        let up = s.solve_from(&sol, &plus, &options).unwrap().displacement;
+        let um = s.solve_from(&sol, &minus, &options).unwrap().displacement;
+        for row in 0..5 {
+            let fd = (up[row] - um[row]) / (2.0 * steps[col]);
+            let analytic = compliance[(row, col)];
+            assert!(
+                (fd - analytic).abs() < 1e-4 * compliance.column(col).amax(),
+                "({row},{col}): FD {fd:e} vs {analytic:e}"
+            );
+        }
+    }
+}
+
+#[test]
+fn converges_over_the_speed_load_range() {
+    for (name, g) in [("7008C", bearing_7008c()), ("7218B", bearing_7218b())] {
+        let s = solver(&g);
+        let mut worst_iterations = 0;
+        for rpm in [0.0, 1_000.0, 5_000.0, 10_000.0, 15_000.0, 20_000.0] {
+            for fa in [10.0, 100.0, 1_000.0, 10_000.0, 50_000.0] {
+                for control in [RacewayControl::Outer, RacewayControl::Harris] {
+                    match s.solve(&axial(fa, rpm, control), &SolverOptions::default()) {
+                        Ok(sol) => {
+                            assert!(
+                                sol.residual < 1e-8,
+                                "{name} {rpm} rpm {fa} N: residual {}",
+                                sol.residual
+                            );
+                            assert!(
+                                sol.balls.iter().all(
+                                    |b| b.inner.load.is_finite() && b.orbital_speed.is_finite()
+                                )
+                            );
+                            worst_iterations = worst_iterations.max(sol.iterations);
+                        }
+                        Err(e) => panic!("{name} {rpm} rpm {fa} N {control:?}: {e}"),
+                    }
+                }
+            }
+        }
+        eprintln!("{name}: worst iteration count over the range {worst_iterations}");
+    }
+}
+
+#[test]
+#[ignore = "diagnostic: prints iteration counts over the range"]
+fn iteration_map() {
+    let g = bearing_7218b();
+    let s = solver(&g);
+    for rpm in [0.0, 1_000.0, 5_000.0, 10_000.0, 15_000.0, 20_000.0] {
+        for fa in [10.0, 100.0, 1_000.0, 10_000.0, 50_000.0] {
+            for control in [RacewayControl::Outer, RacewayControl::Harris] {
+                let sol = s
+                    .solve(&axial(fa, rpm, control), &SolverOptions::default())
+                    .unwrap();
+                eprintln!(
+                    "{rpm:>7} rpm {fa:>7} N {control:?}: {} iterations",
+                    sol.iterations
+                );
+            }
+        }
+    }
+}
