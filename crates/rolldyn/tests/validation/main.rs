@@ -13,6 +13,7 @@ mod a5_torus;
 mod a6_a8_kinematics;
 mod a7_seed000_geometry;
 mod b3_impact;
+mod c5_seed002_table1;
 mod common;
 mod quasistatic_high_speed;
 mod quasistatic_static;
