@@ -6,7 +6,7 @@
 use rolldyn::contact::HertzModel;
 use rolldyn::material::Material;
 use rolldyn::operating::Loads;
-use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions, sweep};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 use std::hint::black_box;
 use std::time::Instant;
@@ -95,6 +95,30 @@ fn main() {
             cold * 1e3,
             sol.iterations,
             warm * 1e3
+        );
+    }
+
+    // 1000-point sweep: 25 speeds (0–20 000 rpm) × 40 axial loads (10 N–50 kN, log).
+    let points: Vec<Conditions> = (0..25)
+        .flat_map(|i| {
+            (0..40).map(move |k| Conditions {
+                loads: Loads {
+                    force: [10.0 * 5000f64.powf(k as f64 / 39.0), 0.0, 0.0],
+                    moment: [0.0; 2],
+                },
+                inner_speed: 20_000.0 * rpm * i as f64 / 24.0,
+                control: RacewayControl::Outer,
+            })
+        })
+        .collect();
+    for (label, parallel) in [("serial", false), ("parallel (all cores)", true)] {
+        let start = Instant::now();
+        let results = sweep(&solver, &points, &options, parallel);
+        let elapsed = start.elapsed().as_secs_f64();
+        let ok = results.iter().filter(|r| r.is_ok()).count();
+        println!(
+            "7218B 1000-point speed × load sweep, {label:<21} {:>8.3} s ({ok}/1000 converged)",
+            elapsed
         );
     }
 }

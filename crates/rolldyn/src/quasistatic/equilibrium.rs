@@ -784,7 +784,9 @@ impl QuasiStaticSolver {
             gap + 2.0 * (per_ball / k).powf(2.0 / 3.0)
         };
         state.ring = self.along_load(&direction, s);
-        self.equilibrate_balls(&mut state, options);
+        if search {
+            self.equilibrate_balls(&mut state, options);
+        }
         state
     }
 

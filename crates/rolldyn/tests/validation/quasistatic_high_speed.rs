@@ -200,3 +200,43 @@ fn iteration_map() {
         }
     }
 }
+
+/// Speed × axial-load grid, speed-major.
+fn grid(speeds: &[f64], loads: &[f64]) -> Vec<Conditions> {
+    speeds
+        .iter()
+        .flat_map(|&rpm| {
+            loads
+                .iter()
+                .map(move |&fa| axial(fa, rpm, RacewayControl::Outer))
+        })
+        .collect()
+}
+
+#[test]
+fn b7_sweep_is_deterministic_across_thread_counts() {
+    use rolldyn::quasistatic::sweep;
+    let g = bearing_7008c();
+    let s = solver(&g);
+    let speeds: Vec<f64> = (0..8).map(|i| 2500.0 * i as f64).collect();
+    let loads: Vec<f64> = (0..9).map(|i| 10.0 * 2f64.powi(i)).collect();
+    let points = grid(&speeds, &loads);
+    let options = SolverOptions::default();
+    let serial = sweep(&s, &points, &options, false);
+    for threads in [1, 2] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let parallel = pool.install(|| sweep(&s, &points, &options, true));
+        assert_eq!(
+            parallel, serial,
+            "{threads} threads differ from the serial run"
+        );
+    }
+    assert!(serial.iter().all(|r| r.is_ok()));
+    // Input order: each result is at its own speed.
+    for (p, r) in points.iter().zip(&serial) {
+        assert_eq!(r.as_ref().unwrap().inner_speed, p.inner_speed);
+    }
+}
