@@ -55,6 +55,8 @@ pub struct Case {
     pub contact_stiffness: HertzModel,
     /// Impact-speed floor v_floor \[m/s\].
     pub impact_speed_floor: f64,
+    /// Raceway control of the quasi-static model.
+    pub raceway_control: rolldyn::quasistatic::RacewayControl,
     /// Simulated time \[s\], if given.
     pub duration: Option<f64>,
     /// Relative tolerance of adaptive integrators.
@@ -272,6 +274,7 @@ impl Case {
             normal_law,
             contact_stiffness: raw.model.contact_stiffness.unwrap_or_default(),
             impact_speed_floor,
+            raceway_control: raw.model.raceway_control.unwrap_or_default(),
             duration,
             relative_tolerance,
             max_step,

@@ -267,6 +267,9 @@ pub struct RawModel {
     /// Lower bound v_floor of the recorded impact speed of the hysteresis
     /// laws (default 1 mm/s).
     pub impact_speed_floor: Option<Quantity<Velocity>>,
+    /// Raceway control of the Jones–Harris quasi-static model: "outer"
+    /// (default), "inner" or "harris" (per ball, by Harris's criterion).
+    pub raceway_control: Option<rolldyn::quasistatic::RacewayControl>,
 }
 
 /// A normal law given by name ("hertz") or as a table with parameters,

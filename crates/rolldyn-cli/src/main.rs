@@ -3,6 +3,7 @@
 //! Exit codes: 0 success, 1 internal failure (e.g. cannot write output),
 //! 2 bad input (case file, override or argument).
 
+mod quasistatic;
 mod report;
 
 use clap::{Args, Parser, Subcommand};
@@ -70,6 +71,28 @@ enum Command {
         /// Contact angle, e.g. "20 deg" (default: nominal angle).
         #[arg(long, value_name = "ANGLE")]
         angle: Option<String>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Quasi-static equilibrium: static load distribution (no speed) or the
+    /// Jones–Harris model at the case speed; per-ball table, ring
+    /// displacement, cage speed, stiffness. With --sweep: a sweep written
+    /// as CSV and JSON.
+    Quasistatic {
+        #[command(flatten)]
+        case: CaseArgs,
+        /// Raceway control: outer, inner or harris (default: the case's
+        /// model.raceway_control, else outer).
+        #[arg(long, value_name = "CONTROL")]
+        control: Option<String>,
+        /// Sweep a variable: speed=0rpm..20000rpm/11 (linear range) or
+        /// axial=10N,100N,1kN (list); also radial=... Repeat for a grid.
+        #[arg(long, value_name = "NAME=VALUES")]
+        sweep: Vec<String>,
+        /// Output directory of a sweep (sweep.csv, sweep.json).
+        #[arg(short, long, value_name = "DIR", default_value = "quasistatic-sweep")]
+        output: String,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
@@ -229,6 +252,65 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 json(&report)
             } else {
                 emit(&report.to_text())
+            }
+        }
+        Command::Quasistatic {
+            case,
+            control,
+            sweep,
+            output,
+            json: as_json,
+        } => {
+            let control = control
+                .map(|c| match c.as_str() {
+                    "outer" => Ok(rolldyn::quasistatic::RacewayControl::Outer),
+                    "inner" => Ok(rolldyn::quasistatic::RacewayControl::Inner),
+                    "harris" => Ok(rolldyn::quasistatic::RacewayControl::Harris),
+                    _ => Err(bad_arg("--control", &c, "expected outer, inner or harris")),
+                })
+                .transpose()?;
+            let sweeps = sweep
+                .iter()
+                .map(|s| quasistatic::parse_sweep(s).map_err(|e| bad_arg("--sweep", s, e)))
+                .collect::<Result<Vec<_>, _>>()?;
+            let (_, case) = case.load()?;
+            if sweeps.is_empty() {
+                let solver = quasistatic::solver(&case).map_err(Failure::BadInput)?;
+                let conditions = quasistatic::conditions(&case, control);
+                let sol = solver
+                    .solve(&conditions, &rolldyn::quasistatic::SolverOptions::default())
+                    .map_err(|e| Failure::BadInput(e.to_string()))?;
+                let report = quasistatic::QuasiStaticReport::new(&sol, &conditions);
+                if as_json {
+                    json(&report)
+                } else {
+                    emit(&report.to_text())
+                }
+            } else {
+                let rows =
+                    quasistatic::run_sweep(&case, control, &sweeps).map_err(Failure::BadInput)?;
+                let dir = std::path::Path::new(&output);
+                std::fs::create_dir_all(dir)
+                    .map_err(|e| Failure::Internal(format!("cannot create {output}: {e}")))?;
+                let json_text = serde_json::to_string_pretty(&rows)
+                    .map_err(|e| Failure::Internal(e.to_string()))?;
+                quasistatic::write_atomic(&dir.join("sweep.csv"), &quasistatic::sweep_csv(&rows))
+                    .map_err(Failure::Internal)?;
+                quasistatic::write_atomic(&dir.join("sweep.json"), &json_text)
+                    .map_err(Failure::Internal)?;
+                let failed = rows.iter().filter(|r| !r.converged).count();
+                let summary = format!(
+                    "{} points solved ({} failed; reasons in the error column); wrote {}/sweep.csv and {}/sweep.json\n",
+                    rows.len(),
+                    failed,
+                    output,
+                    output
+                );
+                if as_json {
+                    emit(&(json_text + "\n"))
+                } else {
+                    emit(&summary)
+                }
             }
         }
         Command::Presets { json: as_json } => {

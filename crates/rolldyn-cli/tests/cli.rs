@@ -270,3 +270,97 @@ fn check_lists_assumptions() {
         "{out}"
     );
 }
+
+#[test]
+fn quasistatic_single_point_and_json_keys() {
+    let q = json(&["quasistatic", "--json"], None);
+    for k in [
+        "speed_rpm",
+        "cage_speed_rpm",
+        "axial_displacement_m",
+        "radial_displacement_y_m",
+        "radial_displacement_z_m",
+        "tilt_y_rad",
+        "tilt_z_rad",
+        "stiffness_n_per_m",
+        "tilt_stiffness_n_m_per_rad",
+        "stiffness_matrix",
+        "balls",
+    ] {
+        assert!(q.get(k).is_some(), "quasistatic --json lacks {k}");
+    }
+    let ball = &q["balls"][0];
+    for k in [
+        "contact_angle_inner_deg",
+        "contact_angle_outer_deg",
+        "load_inner_n",
+        "load_outer_n",
+        "orbital_speed_rpm",
+        "spin_speed_rpm",
+        "attitude_deg",
+        "spin_to_roll_inner",
+        "spin_to_roll_outer",
+        "semi_major_inner_m",
+        "max_pressure_outer_pa",
+    ] {
+        assert!(ball.get(k).is_some(), "ball lacks {k}");
+    }
+    assert_eq!(q["balls"].as_array().unwrap().len(), 22);
+    assert_eq!(q["speed_rpm"].as_f64(), Some(10_000.0));
+    // Axial equilibrium: Σ Q_i sin α_i = F_x (pure axial load, all balls alike).
+    let sum: f64 = q["balls"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|b| {
+            b["load_inner_n"].as_f64().unwrap()
+                * b["contact_angle_inner_deg"]
+                    .as_f64()
+                    .unwrap()
+                    .to_radians()
+                    .sin()
+        })
+        .sum();
+    assert!((sum - 200.0).abs() < 1e-6, "{sum}");
+    let text = stdout(&rolldyn(&["quasistatic", "--speed", "0 rpm"], None));
+    assert!(text.contains("Static load distribution"), "{text}");
+}
+
+#[test]
+fn quasistatic_sweep_writes_csv_and_json() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-sweep-test-{}", std::process::id()));
+    let dir_s = dir.to_string_lossy().into_owned();
+    let o = rolldyn(
+        &[
+            "quasistatic",
+            "--sweep",
+            "speed=0rpm..10000rpm/3",
+            "--sweep",
+            "axial=100N,1kN",
+            "-o",
+            &dir_s,
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 6);
+    assert!(csv.starts_with("speed_rpm,force_x_n"));
+    let rows: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
+    assert_eq!(rows.as_array().unwrap().len(), 6);
+    assert!(
+        rows.as_array()
+            .unwrap()
+            .iter()
+            .all(|r| r["converged"] == true)
+    );
+    assert_eq!(rows[5]["speed_rpm"].as_f64(), Some(10_000.0));
+    assert_eq!(rows[5]["force_x_n"].as_f64(), Some(1000.0));
+    std::fs::remove_dir_all(&dir).ok();
+    let o = rolldyn(&["quasistatic", "--sweep", "speed=0rpm..1rpm"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("point count"), "{}", stderr(&o));
+    let o = rolldyn(&["quasistatic", "--control", "sideways"], None);
+    assert_eq!(o.status.code(), Some(2));
+}

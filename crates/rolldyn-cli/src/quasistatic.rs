@@ -1,0 +1,426 @@
+//! `rolldyn quasistatic`: the static load distribution or Jones–Harris
+//! equilibrium of a case, and sweeps over speed and axial load written as
+//! CSV and JSON. Keys are documented in docs/cli.md.
+
+use rolldyn::material::Material;
+use rolldyn::operating::Loads;
+use rolldyn::quasistatic::{
+    BallSolution, Conditions, Equilibrium, QuasiStaticSolver, RacewayControl, SolverOptions, sweep,
+};
+use rolldyn_case::Case;
+use rolldyn_case::units::{AngularSpeed, Force, Quantity};
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::Path;
+
+const RPM: f64 = std::f64::consts::TAU / 60.0;
+
+/// The solver for a case.
+pub fn solver(case: &Case) -> Result<QuasiStaticSolver, String> {
+    let m: &Material = &case.materials.ball.material;
+    QuasiStaticSolver::new(
+        &case.bearing.geometry,
+        m,
+        &case.materials.rings.material,
+        case.contact_stiffness,
+    )
+    .map_err(|e| e.to_string())
+}
+
+/// Operating point of a case: its final speed (0 without one) and loads.
+pub fn conditions(case: &Case, control: Option<RacewayControl>) -> Conditions {
+    Conditions {
+        loads: case.loads,
+        inner_speed: case.speed.as_ref().map_or(0.0, |s| s.final_speed()),
+        control: control.unwrap_or(case.raceway_control),
+    }
+}
+
+/// One ball in the JSON output.
+#[derive(Serialize)]
+pub struct BallRow {
+    pub azimuth_deg: f64,
+    pub load_inner_n: f64,
+    pub load_outer_n: f64,
+    pub contact_angle_inner_deg: f64,
+    pub contact_angle_outer_deg: f64,
+    pub orbital_speed_rpm: f64,
+    pub spin_speed_rpm: f64,
+    pub attitude_deg: f64,
+    pub yaw_deg: f64,
+    pub spin_to_roll_inner: f64,
+    pub spin_to_roll_outer: f64,
+    pub semi_major_inner_m: f64,
+    pub semi_minor_inner_m: f64,
+    pub max_pressure_inner_pa: f64,
+    pub semi_major_outer_m: f64,
+    pub semi_minor_outer_m: f64,
+    pub max_pressure_outer_pa: f64,
+    pub control: &'static str,
+}
+
+impl From<&BallSolution> for BallRow {
+    fn from(b: &BallSolution) -> Self {
+        Self {
+            azimuth_deg: b.azimuth.to_degrees(),
+            load_inner_n: b.inner.load,
+            load_outer_n: b.outer.load,
+            contact_angle_inner_deg: b.inner.contact_angle.to_degrees(),
+            contact_angle_outer_deg: b.outer.contact_angle.to_degrees(),
+            orbital_speed_rpm: b.orbital_speed / RPM,
+            spin_speed_rpm: b.spin_speed / RPM,
+            attitude_deg: b.attitude.to_degrees(),
+            yaw_deg: 0.0,
+            spin_to_roll_inner: b.inner.spin_to_roll,
+            spin_to_roll_outer: b.outer.spin_to_roll,
+            semi_major_inner_m: b.inner.hertz.semi_major,
+            semi_minor_inner_m: b.inner.hertz.semi_minor,
+            max_pressure_inner_pa: b.inner.hertz.max_pressure,
+            semi_major_outer_m: b.outer.hertz.semi_major,
+            semi_minor_outer_m: b.outer.hertz.semi_minor,
+            max_pressure_outer_pa: b.outer.hertz.max_pressure,
+            control: b.control.name(),
+        }
+    }
+}
+
+/// Axial and radial stiffness.
+#[derive(Serialize)]
+pub struct Stiffness {
+    pub axial: f64,
+    pub radial_y: f64,
+    pub radial_z: f64,
+}
+
+/// Tilt stiffness.
+#[derive(Serialize)]
+pub struct TiltStiffness {
+    pub y: f64,
+    pub z: f64,
+}
+
+/// `rolldyn quasistatic --json` output for one operating point.
+#[derive(Serialize)]
+pub struct QuasiStaticReport {
+    pub speed_rpm: f64,
+    pub raceway_control: RacewayControl,
+    pub force_x_n: f64,
+    pub force_y_n: f64,
+    pub force_z_n: f64,
+    pub moment_y_n_m: f64,
+    pub moment_z_n_m: f64,
+    pub cage_speed_rpm: f64,
+    pub cage_speed_ratio: f64,
+    pub axial_displacement_m: f64,
+    pub radial_displacement_y_m: f64,
+    pub radial_displacement_z_m: f64,
+    pub tilt_y_rad: f64,
+    pub tilt_z_rad: f64,
+    pub stiffness_n_per_m: Stiffness,
+    pub tilt_stiffness_n_m_per_rad: TiltStiffness,
+    pub stiffness_matrix: [[f64; 5]; 5],
+    pub iterations: usize,
+    pub relative_residual: f64,
+    pub balls: Vec<BallRow>,
+}
+
+impl QuasiStaticReport {
+    pub fn new(sol: &Equilibrium, conditions: &Conditions) -> Self {
+        let u = sol.displacement;
+        let k = sol.stiffness;
+        Self {
+            speed_rpm: conditions.inner_speed / RPM,
+            raceway_control: conditions.control,
+            force_x_n: conditions.loads.force[0],
+            force_y_n: conditions.loads.force[1],
+            force_z_n: conditions.loads.force[2],
+            moment_y_n_m: conditions.loads.moment[0],
+            moment_z_n_m: conditions.loads.moment[1],
+            cage_speed_rpm: sol.cage_speed() / RPM,
+            cage_speed_ratio: if conditions.inner_speed != 0.0 {
+                sol.cage_speed() / conditions.inner_speed
+            } else {
+                0.0
+            },
+            axial_displacement_m: u[0],
+            radial_displacement_y_m: u[1],
+            radial_displacement_z_m: u[2],
+            tilt_y_rad: u[3],
+            tilt_z_rad: u[4],
+            stiffness_n_per_m: Stiffness {
+                axial: k[0][0],
+                radial_y: k[1][1],
+                radial_z: k[2][2],
+            },
+            tilt_stiffness_n_m_per_rad: TiltStiffness {
+                y: k[3][3],
+                z: k[4][4],
+            },
+            stiffness_matrix: k,
+            iterations: sol.iterations,
+            relative_residual: sol.residual,
+            balls: sol.balls.iter().map(BallRow::from).collect(),
+        }
+    }
+
+    pub fn to_text(&self) -> String {
+        let mut out = String::new();
+        let kind = if self.speed_rpm == 0.0 {
+            "Static load distribution".to_string()
+        } else {
+            format!(
+                "Jones–Harris equilibrium at {:.0} rpm ({:?} raceway control)",
+                self.speed_rpm, self.raceway_control
+            )
+        };
+        let _ = writeln!(out, "{kind}");
+        let _ = writeln!(
+            out,
+            "  loads: F_x {} N, F_y {} N, F_z {} N, M_y {} N·m, M_z {} N·m",
+            self.force_x_n, self.force_y_n, self.force_z_n, self.moment_y_n_m, self.moment_z_n_m
+        );
+        let _ = writeln!(
+            out,
+            "  inner ring: x {:.3} µm, y {:.3} µm, z {:.3} µm, θ_y {:.3e} rad, θ_z {:.3e} rad",
+            self.axial_displacement_m * 1e6,
+            self.radial_displacement_y_m * 1e6,
+            self.radial_displacement_z_m * 1e6,
+            self.tilt_y_rad,
+            self.tilt_z_rad
+        );
+        if self.speed_rpm != 0.0 {
+            let _ = writeln!(
+                out,
+                "  cage speed: {:.1} rpm (ω_c/ω_i = {:.5})",
+                self.cage_speed_rpm, self.cage_speed_ratio
+            );
+        }
+        let _ = writeln!(
+            out,
+            "  stiffness: axial {:.4e} N/m, radial y {:.4e} N/m, radial z {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
+            self.stiffness_n_per_m.axial,
+            self.stiffness_n_per_m.radial_y,
+            self.stiffness_n_per_m.radial_z,
+            self.tilt_stiffness_n_m_per_rad.y,
+            self.tilt_stiffness_n_m_per_rad.z
+        );
+        let _ = writeln!(
+            out,
+            "\n  {:>7} {:>10} {:>10} {:>8} {:>8} {:>9} {:>9} {:>7} {:>8} {:>8} {:>8} {:>8}",
+            "φ deg",
+            "Q_i N",
+            "Q_o N",
+            "α_i °",
+            "α_o °",
+            "ω_m rpm",
+            "ω_R rpm",
+            "β °",
+            "s/r i",
+            "s/r o",
+            "p0_i MPa",
+            "p0_o MPa"
+        );
+        for b in &self.balls {
+            let _ = writeln!(
+                out,
+                "  {:>7.1} {:>10.2} {:>10.2} {:>8.3} {:>8.3} {:>9.1} {:>9.1} {:>7.3} {:>8.4} {:>8.4} {:>8.0} {:>8.0}",
+                b.azimuth_deg,
+                b.load_inner_n,
+                b.load_outer_n,
+                b.contact_angle_inner_deg,
+                b.contact_angle_outer_deg,
+                b.orbital_speed_rpm,
+                b.spin_speed_rpm,
+                b.attitude_deg,
+                b.spin_to_roll_inner,
+                b.spin_to_roll_outer,
+                b.max_pressure_inner_pa * 1e-6,
+                b.max_pressure_outer_pa * 1e-6
+            );
+        }
+        let _ = writeln!(
+            out,
+            "\n  converged in {} Newton iterations, relative residual {:.2e}",
+            self.iterations, self.relative_residual
+        );
+        out
+    }
+}
+
+/// A swept quantity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Swept {
+    Speed,
+    Axial,
+    Radial,
+}
+
+/// Parses `speed=0rpm..20000rpm/11` (linear, inclusive) or
+/// `axial=10N,100N,1kN` (list). Values carry units as in case files.
+pub fn parse_sweep(arg: &str) -> Result<(Swept, Vec<f64>), String> {
+    let (name, spec) = arg
+        .split_once('=')
+        .ok_or("expected NAME=VALUES, e.g. speed=0rpm..20000rpm/11 or axial=10N,100N")?;
+    let swept = match name.trim() {
+        "speed" => Swept::Speed,
+        "axial" => Swept::Axial,
+        "radial" => Swept::Radial,
+        other => {
+            return Err(format!(
+                "unknown sweep variable \"{other}\"; expected speed, axial or radial"
+            ));
+        }
+    };
+    let parse = |t: &str| -> Result<f64, String> {
+        match swept {
+            Swept::Speed => Quantity::<AngularSpeed>::parse(t).map(|q| q.si),
+            _ => Quantity::<Force>::parse(t).map(|q| q.si),
+        }
+    };
+    if spec.contains("..") && !spec.contains('/') {
+        return Err("a range needs a point count: FROM..TO/COUNT, e.g. 0rpm..20000rpm/11".into());
+    }
+    let values = if let Some((range, count)) = spec.split_once('/') {
+        let (from, to) = range.split_once("..").ok_or("a range is FROM..TO/COUNT")?;
+        let n: usize = count
+            .trim()
+            .parse()
+            .map_err(|_| format!("\"{count}\" is not a point count"))?;
+        if !(2..=100_000).contains(&n) {
+            return Err(format!("point count {n} must lie in [2, 100000]"));
+        }
+        let (a, b) = (parse(from)?, parse(to)?);
+        (0..n)
+            .map(|i| a + (b - a) * i as f64 / (n - 1) as f64)
+            .collect()
+    } else {
+        spec.split(',').map(parse).collect::<Result<Vec<_>, _>>()?
+    };
+    if values.is_empty() {
+        return Err("no values".into());
+    }
+    Ok((swept, values))
+}
+
+/// One row of a sweep result.
+#[derive(Serialize)]
+pub struct SweepRow {
+    pub speed_rpm: f64,
+    pub force_x_n: f64,
+    pub force_z_n: f64,
+    pub converged: bool,
+    pub error: Option<String>,
+    pub cage_speed_rpm: Option<f64>,
+    pub axial_displacement_m: Option<f64>,
+    pub radial_displacement_z_m: Option<f64>,
+    pub max_load_inner_n: Option<f64>,
+    pub max_load_outer_n: Option<f64>,
+    pub contact_angle_inner_deg: Option<f64>,
+    pub contact_angle_outer_deg: Option<f64>,
+    pub stiffness_axial_n_per_m: Option<f64>,
+    pub stiffness_radial_z_n_per_m: Option<f64>,
+}
+
+/// Builds the grid (first sweep outermost) and solves it.
+pub fn run_sweep(
+    case: &Case,
+    control: Option<RacewayControl>,
+    sweeps: &[(Swept, Vec<f64>)],
+) -> Result<Vec<SweepRow>, String> {
+    let solver = solver(case)?;
+    let base = conditions(case, control);
+    let mut points = vec![base];
+    for (swept, values) in sweeps {
+        points = points
+            .iter()
+            .flat_map(|p| {
+                values.iter().map(move |&v| {
+                    let mut c = *p;
+                    match swept {
+                        Swept::Speed => c.inner_speed = v,
+                        Swept::Axial => c.loads.force[0] = v,
+                        Swept::Radial => c.loads.force[2] = v,
+                    }
+                    c
+                })
+            })
+            .collect();
+    }
+    let results = sweep(&solver, &points, &SolverOptions::default(), true);
+    Ok(points
+        .iter()
+        .zip(results)
+        .map(|(p, r)| {
+            let Loads { force, .. } = p.loads;
+            let mut row = SweepRow {
+                speed_rpm: p.inner_speed / RPM,
+                force_x_n: force[0],
+                force_z_n: force[2],
+                converged: r.is_ok(),
+                error: r.as_ref().err().map(|e| e.to_string()),
+                cage_speed_rpm: None,
+                axial_displacement_m: None,
+                radial_displacement_z_m: None,
+                max_load_inner_n: None,
+                max_load_outer_n: None,
+                contact_angle_inner_deg: None,
+                contact_angle_outer_deg: None,
+                stiffness_axial_n_per_m: None,
+                stiffness_radial_z_n_per_m: None,
+            };
+            if let Ok(sol) = r {
+                let top = sol
+                    .balls
+                    .iter()
+                    .max_by(|a, b| a.inner.load.total_cmp(&b.inner.load));
+                row.cage_speed_rpm = Some(sol.cage_speed() / RPM);
+                row.axial_displacement_m = Some(sol.displacement[0]);
+                row.radial_displacement_z_m = Some(sol.displacement[2]);
+                row.max_load_inner_n = top.map(|b| b.inner.load);
+                row.max_load_outer_n = sol.balls.iter().map(|b| b.outer.load).reduce(f64::max);
+                row.contact_angle_inner_deg = top.map(|b| b.inner.contact_angle.to_degrees());
+                row.contact_angle_outer_deg = top.map(|b| b.outer.contact_angle.to_degrees());
+                row.stiffness_axial_n_per_m = Some(sol.stiffness[0][0]);
+                row.stiffness_radial_z_n_per_m = Some(sol.stiffness[2][2]);
+            }
+            row
+        })
+        .collect())
+}
+
+/// CSV text of sweep rows (header + one line per point).
+pub fn sweep_csv(rows: &[SweepRow]) -> String {
+    let mut out = String::from(
+        "speed_rpm,force_x_n,force_z_n,converged,cage_speed_rpm,axial_displacement_m,radial_displacement_z_m,max_load_inner_n,max_load_outer_n,contact_angle_inner_deg,contact_angle_outer_deg,stiffness_axial_n_per_m,stiffness_radial_z_n_per_m,error\n",
+    );
+    let f = |v: Option<f64>| v.map(|x| format!("{x:e}")).unwrap_or_default();
+    for r in rows {
+        let _ = writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
+            r.speed_rpm,
+            r.force_x_n,
+            r.force_z_n,
+            r.converged,
+            f(r.cage_speed_rpm),
+            f(r.axial_displacement_m),
+            f(r.radial_displacement_z_m),
+            f(r.max_load_inner_n),
+            f(r.max_load_outer_n),
+            f(r.contact_angle_inner_deg),
+            f(r.contact_angle_outer_deg),
+            f(r.stiffness_axial_n_per_m),
+            f(r.stiffness_radial_z_n_per_m),
+            r.error.as_deref().unwrap_or("").replace('"', "'")
+        );
+    }
+    out
+}
+
+/// Writes `text` to `path` atomically (temporary file, then rename).
+pub fn write_atomic(path: &Path, text: &str) -> Result<(), String> {
+    let tmp = path.with_extension("tmp");
+    std::fs::write(&tmp, text).map_err(|e| format!("cannot write {}: {e}", tmp.display()))?;
+    std::fs::rename(&tmp, path)
+        .map_err(|e| format!("cannot move {} to {}: {e}", tmp.display(), path.display()))
+}
