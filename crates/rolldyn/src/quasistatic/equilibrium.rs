@@ -41,9 +41,11 @@
 //! **Unloaded balls.** A ball with no contact has no defined position at
 //! zero speed; its force equations use the signed extension of the Hertz
 //! law (weight 1 at zero speed), which keeps it where its two gaps balance.
-//! At speed the extension keeps a weight of 1e-6, enough to keep the
-//! equations regular and far below the 1e-8 residual tolerance. Forces on
-//! the ring always use the physical law.
+//! At speed centrifugal force seats such a ball on the outer raceway and
+//! the extension keeps only a weight of [`SPEED_EXTENSION`] = 1e-9: the
+//! pull of an open inner contact on its ball is at most 1e-9 of the Hertz
+//! force at its gap (~3e-7 N for a 10 µm gap on a 7008C), far below the
+//! ball's centrifugal load. Forces on the ring always use the physical law.
 //!
 //! # Solution
 //! Newton's method with the analytic Jacobian, bordered block-diagonal (a
@@ -78,9 +80,13 @@ type Vector5 = SVector<f64, 5>;
 type Row3 = SMatrix<f64, 1, 3>;
 type Row5 = SMatrix<f64, 1, 5>;
 
-/// A solve whose line search stalls (round-off) below this relative
-/// residual is accepted as converged.
-const STAGNATION_ACCEPT: f64 = 1e-9;
+/// Weight of the signed Hertz extension in the ball equations at speed.
+pub const SPEED_EXTENSION: f64 = 1e-9;
+
+/// A solve whose line search stalls (round-off) at or below this relative
+/// residual, the 1e-8 requirement of VALIDATION B5, is accepted; the
+/// residual reached is reported with the solution.
+const STAGNATION_ACCEPT: f64 = 1e-8;
 
 /// Which raceway controls the ball spin (Jones–Harris).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -135,7 +141,7 @@ impl Default for SolverOptions {
 pub enum QuasiStaticError {
     /// Newton did not reach the tolerance.
     #[error(
-        "no equilibrium found at {speed_rpm:.0} rpm: Newton stopped after {iterations} iterations with a residual of {residual:.3e} (relative); the load may exceed what the bearing can carry"
+        "no equilibrium found at {speed_rpm:.0} rpm: Newton stopped after {iterations} iterations with a relative residual of {residual:.3e} (from the static solution, by continuation in load and speed); try another raceway control, or reach this point by a sweep from a nearby solved one"
     )]
     NoConvergence {
         /// Iterations done.
@@ -833,7 +839,7 @@ impl QuasiStaticSolver {
         let extension = if conditions.inner_speed == 0.0 {
             1.0
         } else {
-            1e-6
+            SPEED_EXTENSION
         };
         let setup = Setup {
             conditions,
@@ -893,10 +899,69 @@ impl QuasiStaticSolver {
                 options,
             ));
         }
-        let static_solution = self.solve_at(start, &at_rest, options).or_else(|_| {
-            self.solve_at(self.initial_state(&loads, options, true), &at_rest, options)
-        })?;
+        let static_solution = self
+            .solve_at(start, &at_rest, options)
+            .or_else(|_| {
+                self.solve_at(self.initial_state(&loads, options, true), &at_rest, options)
+            })
+            .or_else(|_| self.continue_in_load(&at_rest, options))?;
         self.continue_in_speed(static_solution, conditions, options)
+    }
+
+    /// Static fallback: from a pure axial load of the same magnitude (all
+    /// balls loaded, an easy solve) to the target loads along
+    /// F(λ) = (1 − λ) F_axial + λ F_target, halving λ's step on failure.
+    fn continue_in_load(
+        &self,
+        at_rest: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<(State, Matrix5, usize, f64, Vec<RingKind>), QuasiStaticError> {
+        let target = at_rest.loads;
+        let magnitude = self.scaled_ring(&Self::applied(&target)).norm();
+        let axial = Loads {
+            force: [magnitude, 0.0, 0.0],
+            moment: [0.0, 0.0],
+        };
+        let blend = |lambda: f64| Loads {
+            force: std::array::from_fn(|i| {
+                (1.0 - lambda) * axial.force[i] + lambda * target.force[i]
+            }),
+            moment: std::array::from_fn(|i| lambda * target.moment[i]),
+        };
+        let mut current = self.solve_at(
+            self.initial_state(&axial, options, false),
+            &Conditions {
+                loads: axial,
+                ..*at_rest
+            },
+            options,
+        )?;
+        let (mut lambda, mut step) = (0.0f64, 1.0f64);
+        while lambda < 1.0 {
+            let next = (lambda + step).min(1.0);
+            let conditions = Conditions {
+                loads: blend(next),
+                ..*at_rest
+            };
+            match self.solve_at(current.0.clone(), &conditions, options) {
+                Ok(solution) => {
+                    let easy = solution.2 <= 8;
+                    current.2 += solution.2;
+                    current = (solution.0, solution.1, current.2, solution.3, solution.4);
+                    lambda = next;
+                    if easy {
+                        step *= 2.0;
+                    }
+                }
+                Err(e) => {
+                    step *= 0.5;
+                    if step < 1e-4 {
+                        return Err(e);
+                    }
+                }
+            }
+        }
+        Ok(current)
     }
 
     fn any_contact(&self, state: &State, options: &SolverOptions) -> bool {
@@ -931,7 +996,8 @@ impl QuasiStaticSolver {
                 ..*conditions
             };
             let guess = if current == 0.0 {
-                self.with_kinematic_speeds(&state, &controls, next, options)
+                let seated = self.seat_free_balls(&state, next, options);
+                self.with_kinematic_speeds(&seated, &controls, next, options)
             } else {
                 let setup = Setup {
                     conditions: &Conditions {
@@ -939,7 +1005,7 @@ impl QuasiStaticSolver {
                         ..*conditions
                     },
                     options,
-                    extension: 1e-6,
+                    extension: SPEED_EXTENSION,
                 };
                 match self.speed_tangent(&state, &controls, setup) {
                     Some(t) => State {
@@ -1009,6 +1075,30 @@ impl QuasiStaticSolver {
             balls: dy,
             ring: du,
         })
+    }
+
+    /// First guess at speed for balls that carry no inner load at rest:
+    /// centrifugal force seats them at the bottom of the outer groove,
+    /// compressed by δ_o = (m r ω_m²/K_o)^{2/3} with the pure-rolling ω_m.
+    fn seat_free_balls(&self, state: &State, omega_i: f64, options: &SolverOptions) -> State {
+        let g = &self.geometry;
+        let ring = RingDisplacement::from_array(state.ring.into());
+        let k_o = self.outer_table.stiffness(0.0);
+        let mut out = state.clone();
+        for (j, y) in out.balls.iter_mut().enumerate() {
+            let (_, inner, _) = self.contacts(y, self.azimuth(j, options), &ring);
+            if inner.in_contact() {
+                continue;
+            }
+            let r = g.pitch_diameter / 2.0;
+            let omega_m = 0.5 * omega_i * (1.0 - g.ball_diameter / g.pitch_diameter);
+            let centrifugal = self.ball_mass * r * omega_m * omega_m;
+            let approach = (centrifugal / k_o).powf(2.0 / 3.0);
+            y[0] = g.outer.groove_centre_axial;
+            y[1] = g.outer.groove_centre_radius + g.outer.groove_radius - 0.5 * g.ball_diameter
+                + approach;
+        }
+        out
     }
 
     /// `state` with every ball's speeds (ω_m, ω_x, ω_r) replaced by the
