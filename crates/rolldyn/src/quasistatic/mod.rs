@@ -5,7 +5,7 @@
 //! Every ball contact comes from the exact torus geometry of MODEL §2.1
 //! ([`ring_contact`]), with analytic derivatives, so Newton's method and
 //! the stiffness matrix (implicit-function theorem) use an exact Jacobian.
-//! [`sweep`] solves lists and grids of operating points in parallel,
+//! [`sweep()`](sweep::sweep) solves lists and grids of operating points in parallel,
 //! warm-started, deterministically.
 
 pub mod equilibrium;
