@@ -181,26 +181,6 @@ fn converges_over_the_speed_load_range() {
     }
 }
 
-#[test]
-#[ignore = "diagnostic: prints iteration counts over the range"]
-fn iteration_map() {
-    let g = bearing_7218b();
-    let s = solver(&g);
-    for rpm in [0.0, 1_000.0, 5_000.0, 10_000.0, 15_000.0, 20_000.0] {
-        for fa in [10.0, 100.0, 1_000.0, 10_000.0, 50_000.0] {
-            for control in [RacewayControl::Outer, RacewayControl::Harris] {
-                let sol = s
-                    .solve(&axial(fa, rpm, control), &SolverOptions::default())
-                    .unwrap();
-                eprintln!(
-                    "{rpm:>7} rpm {fa:>7} N {control:?}: {} iterations",
-                    sol.iterations
-                );
-            }
-        }
-    }
-}
-
 /// Speed × axial-load grid, speed-major.
 fn grid(speeds: &[f64], loads: &[f64]) -> Vec<Conditions> {
     speeds
