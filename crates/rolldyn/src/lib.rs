@@ -11,6 +11,7 @@
 //! * [`quasistatic`] — static load distribution and stiffness (MODEL §7);
 //! * [`kinematics`] — pure-rolling speeds, defect frequencies, waviness
 //!   excitation map (MODEL §7);
+//! * [`integrate`] — explicit Runge–Kutta integrators (RK4, Dormand–Prince 5(4));
 //! * [`math`] — elliptic integrals, root finding, monotone interpolation.
 //!
 //! Equation numbers refer to `../shared/spec/MODEL.md` and the seed papers;
@@ -19,6 +20,7 @@
 pub mod contact;
 pub mod error;
 pub mod geometry;
+pub mod integrate;
 pub mod kinematics;
 pub mod material;
 pub mod math;

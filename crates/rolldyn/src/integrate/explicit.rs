@@ -1,0 +1,578 @@
+//! Explicit Runge–Kutta integration with fixed or adaptive steps and dense
+//! output (Hairer, Nørsett & Wanner, *Solving Ordinary Differential
+//! Equations I*, 2nd ed., §II.4 step-size control, §II.6 dense output).
+
+use super::OdeSystem;
+use super::tableau::Tableau;
+
+/// How the step size is chosen.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum StepControl {
+    /// Constant step h \[s\] (the last step shortened to land on the end).
+    Fixed {
+        /// Step \[s\], > 0.
+        step: f64,
+    },
+    /// Error-controlled step (needs a tableau with an error estimate).
+    Adaptive {
+        /// Relative tolerance (absolute tolerances come from the system).
+        relative_tolerance: f64,
+        /// Largest step \[s\].
+        max_step: f64,
+        /// First step \[s\]; `None`: Hairer's starting-step estimate.
+        initial_step: Option<f64>,
+    },
+}
+
+/// Counters of an integration.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+pub struct IntegrationStats {
+    /// Accepted steps.
+    pub steps: u64,
+    /// Rejected steps.
+    pub rejected_steps: u64,
+    /// Right-hand-side evaluations.
+    pub rhs_evaluations: u64,
+}
+
+/// Why integration stopped early.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum IntegrationError {
+    /// The error control asked for a step below the resolution of t.
+    #[error(
+        "step size {step:.3e} s at t = {t:.6e} s fell below the smallest step the time resolution allows"
+    )]
+    StepTooSmall {
+        /// Time reached \[s\].
+        t: f64,
+        /// Step asked for \[s\].
+        step: f64,
+    },
+    /// The state or its derivative became NaN or infinite.
+    #[error("the solution became non-finite at t = {t:.6e} s")]
+    NonFinite {
+        /// Time reached \[s\].
+        t: f64,
+    },
+    /// Bad settings.
+    #[error("invalid integrator setting: {0}")]
+    Setting(String),
+}
+
+/// An explicit Runge–Kutta integrator with its work space.
+#[derive(Debug, Clone)]
+pub struct ExplicitRk {
+    tableau: &'static Tableau,
+    control: StepControl,
+    t: f64,
+    y: Vec<f64>,
+    /// f(t, y) at the current point (k_1 of the next step).
+    f: Vec<f64>,
+    h: f64,
+    k: Vec<Vec<f64>>,
+    stage: Vec<f64>,
+    y_new: Vec<f64>,
+    atol: Vec<f64>,
+    // Last accepted step, for dense output.
+    t_prev: f64,
+    h_prev: f64,
+    y_prev: Vec<f64>,
+    f_prev: Vec<f64>,
+    dense: Vec<f64>,
+    stats: IntegrationStats,
+}
+
+impl ExplicitRk {
+    /// Sets up an integration of `system` from (t0, y0).
+    pub fn new(
+        tableau: &'static Tableau,
+        control: StepControl,
+        system: &impl OdeSystem,
+        t0: f64,
+        y0: &[f64],
+    ) -> Result<Self, IntegrationError> {
+        let n = system.dimension();
+        if y0.len() != n {
+            return Err(IntegrationError::Setting(format!(
+                "initial state has {} values, the system {n}",
+                y0.len()
+            )));
+        }
+        match control {
+            StepControl::Fixed { step } if !(step > 0.0 && step.is_finite()) => {
+                return Err(IntegrationError::Setting(format!(
+                    "fixed step {step} must be positive"
+                )));
+            }
+            StepControl::Adaptive {
+                relative_tolerance,
+                max_step,
+                ..
+            } => {
+                if tableau.error.is_empty() {
+                    return Err(IntegrationError::Setting(format!(
+                        "{} has no error estimate; use a fixed step",
+                        tableau.name
+                    )));
+                }
+                if !(relative_tolerance > 0.0 && relative_tolerance < 1.0) {
+                    return Err(IntegrationError::Setting(format!(
+                        "relative tolerance {relative_tolerance} must lie in (0, 1)"
+                    )));
+                }
+                if max_step.is_nan() || max_step <= 0.0 {
+                    return Err(IntegrationError::Setting(format!(
+                        "max step {max_step} must be positive"
+                    )));
+                }
+            }
+            _ => {}
+        }
+        let mut atol = vec![0.0; n];
+        system.absolute_tolerance(&mut atol);
+        let mut f = vec![0.0; n];
+        system.rhs(t0, y0, &mut f);
+        let mut me = Self {
+            tableau,
+            control,
+            t: t0,
+            y: y0.to_vec(),
+            f,
+            h: 0.0,
+            k: vec![vec![0.0; n]; tableau.c.len()],
+            stage: vec![0.0; n],
+            y_new: vec![0.0; n],
+            atol,
+            t_prev: t0,
+            h_prev: 0.0,
+            y_prev: y0.to_vec(),
+            f_prev: vec![0.0; n],
+            dense: vec![0.0; n],
+            stats: IntegrationStats {
+                rhs_evaluations: 1,
+                ..Default::default()
+            },
+        };
+        if me.f.iter().any(|v| !v.is_finite()) {
+            return Err(IntegrationError::NonFinite { t: t0 });
+        }
+        me.h = match control {
+            StepControl::Fixed { step } => step,
+            StepControl::Adaptive {
+                initial_step: Some(h),
+                max_step,
+                ..
+            } => h.min(max_step),
+            StepControl::Adaptive {
+                relative_tolerance,
+                max_step,
+                ..
+            } => me.starting_step(system, relative_tolerance).min(max_step),
+        };
+        Ok(me)
+    }
+
+    /// Hairer's starting-step estimate (Solving ODEs I, §II.4).
+    fn starting_step(&mut self, system: &impl OdeSystem, rtol: f64) -> f64 {
+        let n = self.y.len() as f64;
+        let scale = |i: usize, y: &[f64]| self.atol[i] + rtol * y[i].abs();
+        let d0 = (self
+            .y
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (v / scale(i, &self.y)).powi(2))
+            .sum::<f64>()
+            / n)
+            .sqrt();
+        let d1 = (self
+            .f
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (v / scale(i, &self.y)).powi(2))
+            .sum::<f64>()
+            / n)
+            .sqrt();
+        let h0 = if d0 < 1e-5 || d1 < 1e-5 {
+            1e-6
+        } else {
+            0.01 * d0 / d1
+        };
+        for i in 0..self.y.len() {
+            self.stage[i] = self.y[i] + h0 * self.f[i];
+        }
+        system.rhs(self.t + h0, &self.stage, &mut self.y_new);
+        self.stats.rhs_evaluations += 1;
+        let d2 = (self
+            .y_new
+            .iter()
+            .zip(&self.f)
+            .enumerate()
+            .map(|(i, (a, b))| ((a - b) / scale(i, &self.y)).powi(2))
+            .sum::<f64>()
+            / n)
+            .sqrt()
+            / h0;
+        let order = self.tableau.order as f64;
+        let h1 = if d1.max(d2) <= 1e-15 {
+            (h0 * 1e-3).max(1e-6)
+        } else {
+            (0.01 / d1.max(d2)).powf(1.0 / order)
+        };
+        (100.0 * h0).min(h1)
+    }
+
+    /// Current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// Current state.
+    pub fn y(&self) -> &[f64] {
+        &self.y
+    }
+
+    /// Step size the next step will try.
+    pub fn step_size(&self) -> f64 {
+        self.h
+    }
+
+    /// Counters so far.
+    pub fn stats(&self) -> IntegrationStats {
+        self.stats
+    }
+
+    /// Computes the stages and the candidate y_new for step h; returns the
+    /// scaled error norm (0 for methods without an estimate).
+    fn attempt(&mut self, system: &impl OdeSystem, h: f64, rtol: Option<f64>) -> f64 {
+        let tab = self.tableau;
+        let n = self.y.len();
+        self.k[0].copy_from_slice(&self.f);
+        for s in 1..tab.c.len() {
+            let row = tab.a[s];
+            for i in 0..n {
+                let mut acc = 0.0;
+                for (j, a) in row.iter().enumerate() {
+                    acc += a * self.k[j][i];
+                }
+                self.stage[i] = self.y[i] + h * acc;
+            }
+            system.rhs(self.t + tab.c[s] * h, &self.stage, &mut self.k[s]);
+            self.stats.rhs_evaluations += 1;
+        }
+        for i in 0..n {
+            let mut acc = 0.0;
+            for (j, b) in tab.b.iter().enumerate() {
+                acc += b * self.k[j][i];
+            }
+            self.y_new[i] = self.y[i] + h * acc;
+        }
+        let Some(rtol) = rtol.filter(|_| !tab.error.is_empty()) else {
+            return if self.y_new.iter().all(|v| v.is_finite()) {
+                0.0
+            } else {
+                f64::INFINITY
+            };
+        };
+        let mut sum = 0.0;
+        for i in 0..n {
+            let mut e = 0.0;
+            for (j, w) in tab.error.iter().enumerate() {
+                e += w * self.k[j][i];
+            }
+            let scale = self.atol[i] + rtol * self.y[i].abs().max(self.y_new[i].abs());
+            sum += (h * e / scale).powi(2);
+        }
+        let err = (sum / n as f64).sqrt();
+        if err.is_finite() { err } else { f64::INFINITY }
+    }
+
+    /// Takes one accepted step, not beyond `t_limit`. Calls the system's
+    /// `accept_step` hook once, after acceptance.
+    pub fn step(
+        &mut self,
+        system: &mut impl OdeSystem,
+        t_limit: f64,
+    ) -> Result<(), IntegrationError> {
+        let remaining = t_limit - self.t;
+        if remaining <= 0.0 {
+            return Ok(());
+        }
+        let min_step = 16.0 * f64::EPSILON * self.t.abs().max(remaining);
+        let (rtol, max_step) = match self.control {
+            StepControl::Adaptive {
+                relative_tolerance,
+                max_step,
+                ..
+            } => (Some(relative_tolerance), max_step),
+            StepControl::Fixed { .. } => (None, f64::INFINITY),
+        };
+        loop {
+            let natural = self.h.min(max_step);
+            // Land on t_limit without a sliver step.
+            let h = if natural >= remaining || (remaining - natural) < 0.01 * natural {
+                remaining
+            } else {
+                natural
+            };
+            let err = self.attempt(system, h, rtol);
+            let fixed = matches!(self.control, StepControl::Fixed { .. });
+            if err <= 1.0 {
+                let order = self.tableau.order as f64;
+                if !fixed {
+                    let factor = if err == 0.0 {
+                        5.0
+                    } else {
+                        (0.9 * err.powf(-1.0 / order)).clamp(0.2, 5.0)
+                    };
+                    self.h = natural * factor;
+                }
+                self.finish_step(system, h);
+                return Ok(());
+            }
+            if fixed {
+                return Err(IntegrationError::NonFinite { t: self.t });
+            }
+            self.stats.rejected_steps += 1;
+            let order = self.tableau.order as f64;
+            let factor = if err.is_finite() {
+                (0.9 * err.powf(-1.0 / order)).clamp(0.2, 1.0)
+            } else {
+                0.2
+            };
+            self.h = h * factor;
+            if self.h < min_step {
+                return Err(if err.is_finite() {
+                    IntegrationError::StepTooSmall {
+                        t: self.t,
+                        step: self.h,
+                    }
+                } else {
+                    IntegrationError::NonFinite { t: self.t }
+                });
+            }
+        }
+    }
+
+    fn finish_step(&mut self, system: &mut impl OdeSystem, h: f64) {
+        let n = self.y.len();
+        let tab = self.tableau;
+        self.t_prev = self.t;
+        self.h_prev = h;
+        self.y_prev.copy_from_slice(&self.y);
+        self.f_prev.copy_from_slice(&self.f);
+        // Dense-output weights (DOPRI5): h Σ d_i k_i.
+        if !tab.dense.is_empty() {
+            for i in 0..n {
+                let mut acc = 0.0;
+                for (j, d) in tab.dense.iter().enumerate() {
+                    acc += d * self.k[j][i];
+                }
+                self.dense[i] = h * acc;
+            }
+        }
+        self.t += h;
+        self.y.copy_from_slice(&self.y_new);
+        if tab.fsal {
+            let last = tab.c.len() - 1;
+            self.f.copy_from_slice(&self.k[last]);
+        } else {
+            system.rhs(self.t, &self.y, &mut self.f);
+            self.stats.rhs_evaluations += 1;
+        }
+        self.stats.steps += 1;
+        if system.accept_step(self.t, &self.y) {
+            system.rhs(self.t, &self.y, &mut self.f);
+            self.stats.rhs_evaluations += 1;
+        }
+    }
+
+    /// Dense output: the state at time `t` within the last accepted step
+    /// (clamped to it), written into `out`. DOPRI5 uses its 4th-order
+    /// continuous extension; other methods a cubic Hermite interpolant.
+    pub fn interpolate(&self, t: f64, out: &mut [f64]) {
+        if self.h_prev == 0.0 {
+            out.copy_from_slice(&self.y);
+            return;
+        }
+        let h = self.h_prev;
+        let theta = ((t - self.t_prev) / h).clamp(0.0, 1.0);
+        let t1 = 1.0 - theta;
+        if !self.tableau.dense.is_empty() {
+            for (i, o) in out.iter_mut().enumerate() {
+                let r2 = self.y[i] - self.y_prev[i];
+                let r3 = h * self.f_prev[i] - r2;
+                let r4 = r2 - h * self.f[i] - r3;
+                *o = self.y_prev[i] + theta * (r2 + t1 * (r3 + theta * (r4 + t1 * self.dense[i])));
+            }
+        } else {
+            let (t2, t3) = (theta * theta, theta * theta * theta);
+            let h00 = 2.0 * t3 - 3.0 * t2 + 1.0;
+            let h10 = t3 - 2.0 * t2 + theta;
+            let h01 = -2.0 * t3 + 3.0 * t2;
+            let h11 = t3 - t2;
+            for (i, o) in out.iter_mut().enumerate() {
+                *o = h00 * self.y_prev[i]
+                    + h10 * h * self.f_prev[i]
+                    + h01 * self.y[i]
+                    + h11 * h * self.f[i];
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::integrate::tableau::{DOPRI5, RK4};
+
+    /// Harmonic oscillator x'' = −x.
+    struct Oscillator {
+        accepted: u64,
+    }
+
+    impl OdeSystem for Oscillator {
+        fn dimension(&self) -> usize {
+            2
+        }
+        fn rhs(&self, _t: f64, y: &[f64], dydt: &mut [f64]) {
+            dydt[0] = y[1];
+            dydt[1] = -y[0];
+        }
+        fn absolute_tolerance(&self, atol: &mut [f64]) {
+            atol.fill(1e-12);
+        }
+        fn accept_step(&mut self, _t: f64, _y: &[f64]) -> bool {
+            self.accepted += 1;
+            false
+        }
+    }
+
+    fn run(
+        tab: &'static crate::integrate::tableau::Tableau,
+        control: StepControl,
+        t_end: f64,
+    ) -> (f64, IntegrationStats, u64) {
+        let mut sys = Oscillator { accepted: 0 };
+        let mut rk = ExplicitRk::new(tab, control, &sys, 0.0, &[1.0, 0.0]).unwrap();
+        while rk.t() < t_end {
+            rk.step(&mut sys, t_end).unwrap();
+        }
+        assert_eq!(rk.t(), t_end);
+        let err = (rk.y()[0] - t_end.cos())
+            .abs()
+            .max((rk.y()[1] + t_end.sin()).abs());
+        (err, rk.stats(), sys.accepted)
+    }
+
+    #[test]
+    fn rk4_converges_at_fourth_order() {
+        let (e1, s1, accepted) = run(&RK4, StepControl::Fixed { step: 0.1 }, 10.0);
+        let (e2, _, _) = run(&RK4, StepControl::Fixed { step: 0.05 }, 10.0);
+        let ratio = e1 / e2;
+        assert!((14.0..18.0).contains(&ratio), "ratio {ratio}");
+        assert_eq!(s1.steps, 100);
+        assert_eq!(accepted, s1.steps, "hook once per accepted step");
+        assert_eq!(s1.rhs_evaluations, 1 + 4 * 100);
+    }
+
+    #[test]
+    fn dopri5_meets_its_tolerance_and_scales() {
+        let control = |rtol| StepControl::Adaptive {
+            relative_tolerance: rtol,
+            max_step: 1.0,
+            initial_step: None,
+        };
+        let (e1, s1, _) = run(&DOPRI5, control(1e-6), 20.0);
+        let (e2, s2, _) = run(&DOPRI5, control(1e-9), 20.0);
+        assert!(e1 < 1e-4 && e2 < 1e-7, "{e1} {e2}");
+        assert!(e2 < e1 / 100.0);
+        assert!(s2.steps > s1.steps);
+        // FSAL: 6 new evaluations per attempted step after the first.
+        let attempts = s1.steps + s1.rejected_steps;
+        assert!(s1.rhs_evaluations <= 2 + 6 * attempts, "{s1:?}");
+    }
+
+    #[test]
+    fn dense_output_is_fourth_order() {
+        let err = |rtol: f64| {
+            let mut sys = Oscillator { accepted: 0 };
+            let mut rk = ExplicitRk::new(
+                &DOPRI5,
+                StepControl::Fixed { step: rtol },
+                &sys,
+                0.0,
+                &[1.0, 0.0],
+            )
+            .unwrap();
+            let mut worst = 0.0f64;
+            let mut out = [0.0; 2];
+            while rk.t() < 5.0 {
+                let t0 = rk.t();
+                rk.step(&mut sys, 5.0).unwrap();
+                for k in 1..4 {
+                    let t = t0 + (rk.t() - t0) * k as f64 / 4.0;
+                    rk.interpolate(t, &mut out);
+                    worst = worst.max((out[0] - t.cos()).abs());
+                }
+            }
+            worst
+        };
+        // Dense output of DOPRI5 has local error O(h⁵).
+        let ratio = err(0.2) / err(0.1);
+        assert!(ratio > 20.0, "ratio {ratio}");
+        // RK4 Hermite output, O(h⁴) locally.
+        let mut sys = Oscillator { accepted: 0 };
+        let mut rk = ExplicitRk::new(
+            &RK4,
+            StepControl::Fixed { step: 0.01 },
+            &sys,
+            0.0,
+            &[1.0, 0.0],
+        )
+        .unwrap();
+        rk.step(&mut sys, 1.0).unwrap();
+        let mut out = [0.0; 2];
+        rk.interpolate(0.005, &mut out);
+        assert!((out[0] - 0.005f64.cos()).abs() < 1e-10);
+    }
+
+    /// y' = y², y(0) = 1 blows up at t = 1.
+    struct BlowUp;
+    impl OdeSystem for BlowUp {
+        fn dimension(&self) -> usize {
+            1
+        }
+        fn rhs(&self, _t: f64, y: &[f64], dydt: &mut [f64]) {
+            dydt[0] = y[0] * y[0];
+        }
+    }
+
+    #[test]
+    fn reports_failure_instead_of_nan() {
+        let mut sys = BlowUp;
+        let control = StepControl::Adaptive {
+            relative_tolerance: 1e-8,
+            max_step: 0.1,
+            initial_step: None,
+        };
+        let mut rk = ExplicitRk::new(&DOPRI5, control, &sys, 0.0, &[1.0]).unwrap();
+        let mut result = Ok(());
+        while rk.t() < 2.0 && result.is_ok() {
+            result = rk.step(&mut sys, 2.0);
+        }
+        // Relative error control can step just past the pole while |y| is
+        // huge; what matters is an error, not NaN, and a finite last state.
+        assert!(result.is_err(), "integrated through a singularity");
+        assert!(
+            rk.t() < 1.01 && rk.y()[0].is_finite(),
+            "t {} y {} {:?}",
+            rk.t(),
+            rk.y()[0],
+            result
+        );
+        assert!(
+            ExplicitRk::new(&RK4, control, &sys, 0.0, &[1.0]).is_err(),
+            "RK4 has no error estimate"
+        );
+    }
+}

@@ -1,0 +1,40 @@
+//! Time integration of ODE systems y' = f(t, y). Knows nothing of bearings
+//! (CODE.md: the bearing model implements [`OdeSystem`], the integrator
+//! advances it, observers receive samples).
+//!
+//! * [`OdeSystem`]: in-place right-hand side, per-component absolute
+//!   tolerances, and a hook called after every **accepted** step (where the
+//!   bearing model updates its contact-episode memory, MODEL §2.3).
+//! * [`ExplicitRk`]: explicit Runge–Kutta methods from tableaus given as
+//!   data ([`tableau`]): classical RK4 with a fixed step, and Dormand–Prince
+//!   5(4) with error control and 4th-order dense output. All work vectors
+//!   are allocated once; a step allocates nothing.
+//! * [`IntegrationStats`]: steps, rejected steps, RHS evaluations.
+
+pub mod explicit;
+pub mod tableau;
+
+pub use explicit::{ExplicitRk, IntegrationError, IntegrationStats, StepControl};
+
+/// A system of first-order ODEs y' = f(t, y).
+pub trait OdeSystem {
+    /// Number of states.
+    fn dimension(&self) -> usize;
+
+    /// Writes f(t, y) into `dydt` (same length as `y`). Must not allocate.
+    fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]);
+
+    /// Absolute error tolerance of each state, written into `atol`.
+    /// Default: 1e-9 for every state.
+    fn absolute_tolerance(&self, atol: &mut [f64]) {
+        atol.fill(1e-9);
+    }
+
+    /// Called once after every accepted step with the new state (never
+    /// inside Runge–Kutta stages). Returns true when this changed the
+    /// right-hand side (e.g. a contact episode was recorded), so that the
+    /// integrator re-evaluates f at the new point. Default: nothing.
+    fn accept_step(&mut self, _t: f64, _y: &[f64]) -> bool {
+        false
+    }
+}
