@@ -12,12 +12,14 @@
 //! * [`kinematics`] — pure-rolling speeds, defect frequencies, waviness
 //!   excitation map (MODEL §7);
 //! * [`integrate`] — explicit Runge–Kutta integrators (RK4, Dormand–Prince 5(4));
+//! * [`dynamics`] — the dynamic bearing model (MODEL §1, §2.3, §3, §5);
 //! * [`math`] — elliptic integrals, root finding, monotone interpolation.
 //!
 //! Equation numbers refer to `../shared/spec/MODEL.md` and the seed papers;
 //! every model's doc comment names its source and any correction.
 
 pub mod contact;
+pub mod dynamics;
 pub mod error;
 pub mod geometry;
 pub mod integrate;
@@ -26,6 +28,7 @@ pub mod material;
 pub mod math;
 pub mod operating;
 pub mod quasistatic;
+pub mod traction;
 
 pub use error::InvalidParameter;
 pub use geometry::{BearingGeometry, Clearance, GeometrySpec, RingKind};

@@ -2,8 +2,7 @@
 //! (CODE.md: the bearing model implements [`OdeSystem`], the integrator
 //! advances it, observers receive samples).
 //!
-//! * [`OdeSystem`]: in-place right-hand side, per-component absolute
-//!   tolerances, and a hook called after every **accepted** step (where the
+//! * [`OdeSystem`]: in-place right-hand side, per-state error scales, and a hook called after every **accepted** step (where the
 //!   bearing model updates its contact-episode memory, MODEL §2.3).
 //! * [`ExplicitRk`]: explicit Runge–Kutta methods from tableaus given as
 //!   data ([`tableau`]): classical RK4 with a fixed step, and Dormand–Prince
@@ -24,10 +23,12 @@ pub trait OdeSystem {
     /// Writes f(t, y) into `dydt` (same length as `y`). Must not allocate.
     fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]);
 
-    /// Absolute error tolerance of each state, written into `atol`.
-    /// Default: 1e-9 for every state.
-    fn absolute_tolerance(&self, atol: &mut [f64]) {
-        atol.fill(1e-9);
+    /// Characteristic magnitude of each state, written into `scale`: the
+    /// size below which its error is judged absolutely. The absolute
+    /// tolerance is `relative tolerance × scale`, so one relative tolerance
+    /// controls every state consistently. Default: 1 for every state.
+    fn error_scale(&self, scale: &mut [f64]) {
+        scale.fill(1.0);
     }
 
     /// Called once after every accepted step with the new state (never

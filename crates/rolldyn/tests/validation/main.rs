@@ -12,6 +12,7 @@ mod a4_tables;
 mod a5_torus;
 mod a6_a8_kinematics;
 mod a7_seed000_geometry;
+mod b1_energy;
 mod b3_impact;
 mod c5_seed002_table1;
 mod common;

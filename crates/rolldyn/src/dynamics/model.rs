@@ -1,0 +1,624 @@
+//! State, equations of motion and contact forces of the dynamic model.
+//!
+//! # State (MODEL §1)
+//! Ball j (9 states): axial x, radial r, azimuth φ, their rates, and the
+//! angular velocity (ω_x, ω_r, ω_t) in the ball's azimuth frame
+//! (e_x, e_r, e_t), e_r = cos φ e_y + sin φ e_z, e_t = e_x × e_r. Inner ring
+//! (10): translation (x, y, z), tilts (θ_y, θ_z) and their rates; its spin
+//! ω_i(t) is prescribed (MODEL §8). Cage (6): whirl (y_c, z_c), rotation θ_c
+//! and their rates. The outer ring is fixed.
+//!
+//! # Equations
+//! ```text
+//! m ẍ = F_x,   m (r̈ − r φ̇²) = F_r,   m (r φ̈ + 2 ṙ φ̇) = F_t
+//! ω̇_x = M_x/I,  ω̇_r = M_r/I + φ̇ ω_t,  ω̇_t = M_t/I − φ̇ ω_r,      I = m D²/10
+//! inner ring: m_i ẗ = ΣF + F_applied,  I_t θ̈ = ΣM + M_applied      (ring gyroscopics neglected)
+//! cage: m_c (ÿ_c, z̈_c) = ΣF,  I_c θ̈_c = ΣM_x                     (seed 001 eq 39)
+//! ```
+//! Centrifugal and Coriolis terms come from the rotating azimuth frame.
+//!
+//! # Contacts
+//! Ball–raceway: the exact torus contact of MODEL §2.1 (δ, n, contact
+//! point P, α). The normal law gives Q from δ, δ̇ = (q̇ − ṗ)·n (p: the
+//! groove-centre point, moving with the ring) and the episode's impact
+//! speed. Traction acts at P on the tangential slip of ball material
+//! relative to ring material, v_b = q̇ + ω_b × (P − q) and
+//! v_g = ṫ + ω_ring × (P − t), with ω_ring = ω_i a + the tilt rates. Force
+//! on the ball: −Q n + F_T; the ring takes the reaction at P.
+//!
+//! Ball–pocket (MODEL §5, `linear`, seed 002 eq 6): cylindrical pockets
+//! with radial axes at the cage pitch radius. The gap is measured
+//! perpendicular to the pocket axis; beyond C_p/2 the force is k δ + c δ̇
+//! (≥ 0), with modified-Coulomb friction on the slip at the contact point.
+//!
+//! Gravity (optional) acts along −z.
+//!
+//! # Energy (MODEL §10)
+//! [`BearingModel::energy`] gives kinetic energy (balls, ring translation
+//! and tilt, cage), elastic energy (Σ (2/5) K_c δ^{5/2} + ½ k δ_p²) and the
+//! potential of constant applied loads and gravity. With no dissipation and
+//! a fixed contact angle (planar mode) their sum is conserved (VALIDATION
+//! B1). Where α varies, K_c(α) δ^{3/2} is not the exact gradient of
+//! (2/5) K_c δ^{5/2}; the K_c tables vary by ~1e-3 per degree.
+
+use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
+use crate::contact::{
+    ContactTable, GrooveCircle, HertzModel, NormalForceLaw, RacewayContactModel, RingPose,
+    TorusContact,
+};
+use crate::error::InvalidParameter;
+use crate::geometry::{BearingGeometry, RingKind};
+use crate::integrate::OdeSystem;
+use crate::kinematics::cage_speed_ratio;
+use crate::material::{Material, effective_modulus};
+use crate::operating::{Loads, SpeedProfile};
+use crate::quasistatic::Equilibrium;
+use crate::traction::{ModifiedCoulomb, TractionLaw, TractionModel};
+use nalgebra::{Rotation3, Vector3};
+
+/// Cage data of the dynamic model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CageParameters {
+    /// Mass m_c \[kg\].
+    pub mass: f64,
+    /// Polar moment of inertia I_c \[kg·m²\].
+    pub inertia: f64,
+    /// Pocket-centre radius r_cp \[m\] (usually d_m/2).
+    pub pitch_radius: f64,
+    /// Diametral pocket clearance C_p \[m\].
+    pub pocket_clearance: f64,
+    /// Pocket contact stiffness k \[N/m\].
+    pub pocket_stiffness: f64,
+    /// Pocket contact damping c \[N·s/m\].
+    pub pocket_damping: f64,
+    /// Pocket friction.
+    pub pocket_friction: ModifiedCoulomb,
+    /// Whether the cage centre may whirl (false: rotation only, seed 002).
+    pub whirl: bool,
+}
+
+/// Everything the dynamic model needs besides geometry and materials.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DynamicsParameters {
+    /// Inner-ring (with shaft) mass m_i \[kg\].
+    pub inner_ring_mass: f64,
+    /// Inner-ring transverse moment of inertia I_t \[kg·m²\].
+    pub inner_ring_tilt_inertia: f64,
+    /// Cage.
+    pub cage: CageParameters,
+    /// Normal force law of the ball–raceway contacts.
+    pub normal_law: NormalForceLaw,
+    /// Impact-speed floor v_floor \[m/s\].
+    pub impact_speed_floor: f64,
+    /// Traction model of the ball–raceway contacts.
+    pub traction: TractionModel,
+    /// Inner-ring speed profile.
+    pub speed: SpeedProfile,
+    /// Constant loads on the inner ring.
+    pub loads: Loads,
+    /// Gravitational acceleration along −z \[m/s²\] (0: off).
+    pub gravity: f64,
+    /// Planar mode (seed 000): axial coordinates, tilts and the ball spin
+    /// components other than ω_x frozen.
+    pub planar: bool,
+}
+
+/// Offsets of the parts of the state vector.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StateLayout {
+    /// Number of balls.
+    pub balls: usize,
+}
+
+impl StateLayout {
+    /// States per ball.
+    pub const BALL: usize = 9;
+    /// Inner-ring states.
+    pub const RING: usize = 10;
+    /// Cage states.
+    pub const CAGE: usize = 6;
+    /// First state of ball j.
+    pub fn ball(&self, j: usize) -> usize {
+        Self::BALL * j
+    }
+    /// First inner-ring state.
+    pub fn ring(&self) -> usize {
+        Self::BALL * self.balls
+    }
+    /// First cage state.
+    pub fn cage(&self) -> usize {
+        self.ring() + Self::RING
+    }
+    /// Total number of states.
+    pub fn len(&self) -> usize {
+        self.cage() + Self::CAGE
+    }
+    /// Whether there are no states (never, for a valid bearing).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// Energy of a state \[J\].
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Energy {
+    /// Kinetic energy (balls, ring translation and tilt, cage).
+    pub kinetic: f64,
+    /// Elastic energy of the contacts.
+    pub elastic: f64,
+    /// Potential of constant applied loads and gravity.
+    pub potential: f64,
+}
+
+impl Energy {
+    /// Sum.
+    pub fn total(&self) -> f64 {
+        self.kinetic + self.elastic + self.potential
+    }
+}
+
+/// One evaluated ball–raceway contact.
+struct RaceContact {
+    geometry: TorusContact,
+    penetration_rate: f64,
+    /// Force on the ball (normal and traction) \[N\].
+    force: Vector3<f64>,
+    /// Moment on the ball about its centre \[N·m\].
+    moment: Vector3<f64>,
+}
+
+/// Kinematic state of a ring for contact evaluation.
+struct RingMotion {
+    circle: GrooveCircle,
+    centre: Vector3<f64>,
+    velocity: Vector3<f64>,
+    /// Angular velocity of the ring material (spin + tilt rates).
+    omega: Vector3<f64>,
+    /// Angular velocity of the ring's frame (tilt rates only).
+    omega_frame: Vector3<f64>,
+}
+
+/// The dynamic bearing model.
+#[derive(Debug, Clone)]
+pub struct BearingModel {
+    geometry: BearingGeometry,
+    inner_table: ContactTable,
+    outer_table: ContactTable,
+    ball_mass: f64,
+    ball_inertia: f64,
+    params: DynamicsParameters,
+    layout: StateLayout,
+    /// Episode memory: inner and outer contact of each ball.
+    episodes: Vec<[ContactEpisode; 2]>,
+}
+
+fn positive(field: &'static str, v: f64) -> Result<(), InvalidParameter> {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        Err(InvalidParameter::new(field, v, "must be positive"))
+    }
+}
+
+impl BearingModel {
+    /// Builds the model: contact tables, ball mass and inertia, checks.
+    pub fn new(
+        geometry: &BearingGeometry,
+        ball: &Material,
+        rings: &Material,
+        hertz: HertzModel,
+        params: DynamicsParameters,
+    ) -> Result<Self, InvalidParameter> {
+        positive("inner_ring_mass", params.inner_ring_mass)?;
+        positive("inner_ring_tilt_inertia", params.inner_ring_tilt_inertia)?;
+        positive("cage_mass", params.cage.mass)?;
+        positive("cage_inertia", params.cage.inertia)?;
+        positive("cage_pitch_radius", params.cage.pitch_radius)?;
+        positive("pocket_clearance", params.cage.pocket_clearance)?;
+        positive("pocket_stiffness", params.cage.pocket_stiffness)?;
+        params.cage.pocket_friction.validate()?;
+        params.normal_law.validate()?;
+        positive("impact_speed_floor", params.impact_speed_floor)?;
+        if let TractionModel::ModifiedCoulomb(m) = params.traction {
+            m.validate()?;
+        }
+        let ep = effective_modulus(ball, rings);
+        let ball_mass = geometry.ball_mass(ball.density);
+        Ok(Self {
+            inner_table: ContactTable::new(RacewayContactModel::new(
+                geometry,
+                RingKind::Inner,
+                ep,
+                hertz,
+            ))?,
+            outer_table: ContactTable::new(RacewayContactModel::new(
+                geometry,
+                RingKind::Outer,
+                ep,
+                hertz,
+            ))?,
+            ball_mass,
+            ball_inertia: ball_mass * geometry.ball_diameter.powi(2) / 10.0,
+            layout: StateLayout {
+                balls: geometry.ball_count,
+            },
+            episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
+            geometry: geometry.clone(),
+            params,
+        })
+    }
+
+    /// State layout.
+    pub fn layout(&self) -> StateLayout {
+        self.layout
+    }
+
+    /// Parameters.
+    pub fn parameters(&self) -> &DynamicsParameters {
+        &self.params
+    }
+
+    /// Ball mass \[kg\].
+    pub fn ball_mass(&self) -> f64 {
+        self.ball_mass
+    }
+
+    /// Pure-rolling start: balls at the pitch circle with the pure-rolling
+    /// orbital and spin speeds at the nominal contact angle, the cage turning
+    /// with them, the inner ring at `ring_displacement` and at rest.
+    pub fn pure_rolling_state(&self, ring_displacement: [f64; 5]) -> Vec<f64> {
+        let g = &self.geometry;
+        let l = self.layout;
+        let mut y = vec![0.0; l.len()];
+        let omega_i = self.params.speed.speed_at(0.0);
+        let alpha = g.nominal_contact_angle();
+        let gamma = g.ball_diameter / g.pitch_diameter;
+        let omega_c = cage_speed_ratio(gamma, alpha, alpha, alpha) * omega_i;
+        // Spin relative to the cage about the axis at β = α: no slip at the
+        // outer contact gives ω_R = ω_c (d_m/D)(1 + γ cos α), directed along
+        // (−cos α, +sin α) in (e_x, e_r).
+        let spin_rel = -omega_c * g.pitch_diameter * (1.0 + gamma * alpha.cos()) / g.ball_diameter;
+        for j in 0..l.balls {
+            let b = l.ball(j);
+            y[b + 1] = g.pitch_diameter / 2.0;
+            y[b + 2] = std::f64::consts::TAU * j as f64 / l.balls as f64;
+            y[b + 5] = omega_c;
+            y[b + 6] = omega_c + spin_rel * alpha.cos();
+            if !self.params.planar {
+                y[b + 7] = -spin_rel * alpha.sin();
+            }
+        }
+        let r = l.ring();
+        y[r..r + 5].copy_from_slice(&ring_displacement);
+        let c = l.cage();
+        y[c + 5] = omega_c;
+        y
+    }
+
+    /// Start from a quasi-static (Jones–Harris) solution (seed 002 §3.1):
+    /// ball positions and speeds, ring displacement; cage at the mean ball
+    /// orbital speed.
+    pub fn state_from_equilibrium(&self, eq: &Equilibrium) -> Vec<f64> {
+        let l = self.layout;
+        let mut y = vec![0.0; l.len()];
+        for (j, b) in eq.balls.iter().enumerate().take(l.balls) {
+            let o = l.ball(j);
+            y[o] = b.axial_position;
+            y[o + 1] = b.radial_position;
+            y[o + 2] = b.azimuth;
+            y[o + 5] = b.orbital_speed;
+            y[o + 6] = b.spin_axial;
+            y[o + 7] = b.spin_radial;
+        }
+        let r = l.ring();
+        y[r..r + 5].copy_from_slice(&eq.displacement);
+        let c = l.cage();
+        y[c + 5] = eq.cage_speed();
+        y
+    }
+
+    fn ring_motion(&self, t: f64, y: &[f64]) -> (RingMotion, RingMotion) {
+        let r = self.layout.ring();
+        let pose = RingPose {
+            translation: Vector3::new(y[r], y[r + 1], y[r + 2]),
+            tilt_y: y[r + 3],
+            tilt_z: y[r + 4],
+        };
+        let rz = Rotation3::from_axis_angle(&Vector3::z_axis(), pose.tilt_z);
+        let omega_frame = y[r + 9] * Vector3::z() + y[r + 8] * (rz * Vector3::y());
+        let axis = pose.rotation() * Vector3::x();
+        let inner = RingMotion {
+            circle: GrooveCircle::of(&self.geometry.inner, &pose),
+            centre: pose.translation,
+            velocity: Vector3::new(y[r + 5], y[r + 6], y[r + 7]),
+            omega: self.params.speed.speed_at(t) * axis + omega_frame,
+            omega_frame,
+        };
+        let outer = RingMotion {
+            circle: GrooveCircle::of(&self.geometry.outer, &RingPose::default()),
+            centre: Vector3::zeros(),
+            velocity: Vector3::zeros(),
+            omega: Vector3::zeros(),
+            omega_frame: Vector3::zeros(),
+        };
+        (inner, outer)
+    }
+
+    /// Ball centre, velocity and angular velocity (global), and its frame.
+    #[allow(clippy::type_complexity)]
+    fn ball_kinematics(
+        &self,
+        j: usize,
+        y: &[f64],
+    ) -> (Vector3<f64>, Vector3<f64>, Vector3<f64>, [Vector3<f64>; 3]) {
+        let b = self.layout.ball(j);
+        let (s, c) = y[b + 2].sin_cos();
+        let ex = Vector3::x();
+        let er = Vector3::new(0.0, c, s);
+        let et = Vector3::new(0.0, -s, c);
+        let q = y[b] * ex + y[b + 1] * er;
+        let v = y[b + 3] * ex + y[b + 4] * er + y[b + 1] * y[b + 5] * et;
+        let w = y[b + 6] * ex + y[b + 7] * er + y[b + 8] * et;
+        (q, v, w, [ex, er, et])
+    }
+
+    fn race_contact(
+        &self,
+        ring: &RingMotion,
+        table: &ContactTable,
+        episode: &ContactEpisode,
+        q: &Vector3<f64>,
+        v: &Vector3<f64>,
+        w: &Vector3<f64>,
+    ) -> Option<RaceContact> {
+        let d = self.geometry.ball_diameter;
+        let geometry = ring.circle.contact(q, d, 0.0)?;
+        if geometry.penetration <= 0.0 {
+            return None;
+        }
+        let n = geometry.normal;
+        let groove_velocity = ring.velocity
+            + ring
+                .omega_frame
+                .cross(&(geometry.groove_centre - ring.centre));
+        let penetration_rate = (v - groove_velocity).dot(&n);
+        let stiffness = table.stiffness(geometry.contact_angle);
+        let state = ContactState {
+            stiffness,
+            penetration: geometry.penetration,
+            penetration_rate,
+            impact_speed: episode.impact_speed(penetration_rate, self.params.impact_speed_floor),
+            effective_mass: self.ball_mass,
+        };
+        let load = self.params.normal_law.force(&state);
+        let arm = geometry.contact_point - q;
+        let ball_surface = v + w.cross(&arm);
+        let ring_surface =
+            ring.velocity + ring.omega.cross(&(geometry.contact_point - ring.centre));
+        let slip = ball_surface - ring_surface;
+        let slip_t = slip - slip.dot(&n) * n;
+        let traction = self.params.traction.force(load, &slip_t);
+        Some(RaceContact {
+            geometry,
+            penetration_rate,
+            force: -load * n + traction,
+            moment: arm.cross(&traction),
+        })
+    }
+
+    /// Pocket contact of ball j: (force on the ball, moment on the ball,
+    /// contact point, penetration).
+    #[allow(clippy::type_complexity)]
+    fn pocket_contact(
+        &self,
+        j: usize,
+        y: &[f64],
+        q: &Vector3<f64>,
+        v: &Vector3<f64>,
+        w: &Vector3<f64>,
+    ) -> Option<(Vector3<f64>, Vector3<f64>, Vector3<f64>, f64)> {
+        let cage = &self.params.cage;
+        let c = self.layout.cage();
+        let centre = Vector3::new(0.0, y[c], y[c + 1]);
+        let velocity = Vector3::new(0.0, y[c + 3], y[c + 4]);
+        let spin = y[c + 5] * Vector3::x();
+        let angle = y[c + 2] + std::f64::consts::TAU * j as f64 / self.layout.balls as f64;
+        let axis = Vector3::new(0.0, angle.cos(), angle.sin());
+        let pocket = centre + cage.pitch_radius * axis;
+        let rel = q - pocket;
+        let perp = rel - rel.dot(&axis) * axis;
+        let dist = perp.norm();
+        let penetration = dist - 0.5 * cage.pocket_clearance;
+        if penetration <= 0.0 || dist == 0.0 {
+            return None;
+        }
+        let n = perp / dist;
+        let point = q + 0.5 * self.geometry.ball_diameter * n;
+        let pocket_point_velocity = velocity + spin.cross(&(q - centre));
+        let rate = (v - pocket_point_velocity).dot(&n);
+        let normal = (cage.pocket_stiffness * penetration + cage.pocket_damping * rate).max(0.0);
+        let arm = point - q;
+        let slip = (v + w.cross(&arm)) - (velocity + spin.cross(&(point - centre)));
+        let slip_t = slip - slip.dot(&n) * n;
+        let friction = cage.pocket_friction.force(normal, &slip_t);
+        Some((
+            -normal * n + friction,
+            arm.cross(&friction),
+            point,
+            penetration,
+        ))
+    }
+
+    /// Total energy of state `y` at time `t` (MODEL §10).
+    pub fn energy(&self, t: f64, y: &[f64]) -> Energy {
+        let l = self.layout;
+        let (inner, outer) = self.ring_motion(t, y);
+        let g = self.params.gravity;
+        let mut e = Energy::default();
+        for j in 0..l.balls {
+            let (q, v, w, _) = self.ball_kinematics(j, y);
+            e.kinetic += 0.5 * self.ball_mass * v.norm_squared()
+                + 0.5 * self.ball_inertia * w.norm_squared();
+            e.potential += self.ball_mass * g * q.z;
+            for (ring, table) in [(&inner, &self.inner_table), (&outer, &self.outer_table)] {
+                if let Some(c) = ring.circle.contact(&q, self.geometry.ball_diameter, 0.0) {
+                    if c.penetration > 0.0 {
+                        e.elastic +=
+                            0.4 * table.stiffness(c.contact_angle) * c.penetration.powf(2.5);
+                    }
+                }
+            }
+            if let Some((_, _, _, pen)) = self.pocket_contact(j, y, &q, &v, &w) {
+                e.elastic += 0.5 * self.params.cage.pocket_stiffness * pen * pen;
+            }
+        }
+        let r = l.ring();
+        let p = &self.params;
+        e.kinetic +=
+            0.5 * p.inner_ring_mass * (y[r + 5].powi(2) + y[r + 6].powi(2) + y[r + 7].powi(2))
+                + 0.5 * p.inner_ring_tilt_inertia * (y[r + 8].powi(2) + y[r + 9].powi(2));
+        e.potential -= p.loads.force[0] * y[r]
+            + p.loads.force[1] * y[r + 1]
+            + p.loads.force[2] * y[r + 2]
+            + p.loads.moment[0] * y[r + 3]
+            + p.loads.moment[1] * y[r + 4];
+        e.potential += p.inner_ring_mass * g * y[r + 2];
+        let c = l.cage();
+        e.kinetic += 0.5 * p.cage.mass * (y[c + 3].powi(2) + y[c + 4].powi(2))
+            + 0.5 * p.cage.inertia * y[c + 5].powi(2);
+        e.potential += p.cage.mass * g * y[c + 1];
+        e
+    }
+}
+
+impl OdeSystem for BearingModel {
+    fn dimension(&self) -> usize {
+        self.layout.len()
+    }
+
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        let l = self.layout;
+        let p = &self.params;
+        let (inner, outer) = self.ring_motion(t, y);
+        let g = p.gravity;
+        let mut ring_force = Vector3::zeros();
+        let mut ring_moment = Vector3::zeros();
+        let mut cage_force = Vector3::zeros();
+        let mut cage_torque = 0.0;
+        let c = l.cage();
+        let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
+        for j in 0..l.balls {
+            let (q, v, w, [ex, er, et]) = self.ball_kinematics(j, y);
+            let mut force = Vector3::new(0.0, 0.0, -self.ball_mass * g);
+            let mut moment = Vector3::zeros();
+            let episodes = &self.episodes[j];
+            if let Some(cn) = self.race_contact(&inner, &self.inner_table, &episodes[0], &q, &v, &w)
+            {
+                force += cn.force;
+                moment += cn.moment;
+                ring_force -= cn.force;
+                ring_moment += (cn.geometry.contact_point - inner.centre).cross(&(-cn.force));
+            }
+            if let Some(cn) = self.race_contact(&outer, &self.outer_table, &episodes[1], &q, &v, &w)
+            {
+                force += cn.force;
+                moment += cn.moment;
+            }
+            if let Some((f, m, point, _)) = self.pocket_contact(j, y, &q, &v, &w) {
+                force += f;
+                moment += m;
+                cage_force -= f;
+                cage_torque += (point - cage_centre).cross(&(-f)).x;
+            }
+            let b = l.ball(j);
+            let (r, phi_dot, vr) = (y[b + 1], y[b + 5], y[b + 4]);
+            let (wr, wt) = (y[b + 7], y[b + 8]);
+            let m = self.ball_mass;
+            let inertia = self.ball_inertia;
+            dy[b] = y[b + 3];
+            dy[b + 1] = vr;
+            dy[b + 2] = phi_dot;
+            dy[b + 3] = force.dot(&ex) / m;
+            dy[b + 4] = force.dot(&er) / m + r * phi_dot * phi_dot;
+            dy[b + 5] = (force.dot(&et) / m - 2.0 * vr * phi_dot) / r;
+            dy[b + 6] = moment.dot(&ex) / inertia;
+            dy[b + 7] = moment.dot(&er) / inertia + phi_dot * wt;
+            dy[b + 8] = moment.dot(&et) / inertia - phi_dot * wr;
+            if p.planar {
+                dy[b] = 0.0;
+                dy[b + 3] = 0.0;
+                dy[b + 7] = 0.0;
+                dy[b + 8] = 0.0;
+            }
+        }
+        let r = l.ring();
+        dy[r..r + 5].copy_from_slice(&y[r + 5..r + 10]);
+        let mi = p.inner_ring_mass;
+        dy[r + 5] = (ring_force.x + p.loads.force[0]) / mi;
+        dy[r + 6] = (ring_force.y + p.loads.force[1]) / mi;
+        dy[r + 7] = (ring_force.z + p.loads.force[2]) / mi - g;
+        dy[r + 8] = (ring_moment.y + p.loads.moment[0]) / p.inner_ring_tilt_inertia;
+        dy[r + 9] = (ring_moment.z + p.loads.moment[1]) / p.inner_ring_tilt_inertia;
+        if p.planar {
+            for k in [0, 3, 4, 5, 8, 9] {
+                dy[r + k] = 0.0;
+            }
+        }
+        dy[c..c + 3].copy_from_slice(&y[c + 3..c + 6]);
+        if p.cage.whirl {
+            dy[c + 3] = cage_force.y / p.cage.mass;
+            dy[c + 4] = cage_force.z / p.cage.mass - g;
+        } else {
+            dy[c] = 0.0;
+            dy[c + 1] = 0.0;
+            dy[c + 3] = 0.0;
+            dy[c + 4] = 0.0;
+        }
+        dy[c + 5] = cage_torque / p.cage.inertia;
+    }
+
+    /// Characteristic scales: positions 1 µm (contact deflections), speeds
+    /// 1 mm/s (contact vibration), angles 1 µrad, angular speeds 1 rad/s.
+    fn error_scale(&self, scale: &mut [f64]) {
+        let l = self.layout;
+        for j in 0..l.balls {
+            let b = l.ball(j);
+            scale[b..b + 3].fill(1e-6);
+            scale[b + 3..b + 5].fill(1e-3);
+            scale[b + 5..b + 9].fill(1.0);
+        }
+        let r = l.ring();
+        scale[r..r + 5].fill(1e-6);
+        scale[r + 5..r + 10].fill(1e-3);
+        let c = l.cage();
+        scale[c..c + 3].fill(1e-6);
+        scale[c + 3..c + 5].fill(1e-3);
+        scale[c + 5] = 1.0;
+    }
+
+    fn accept_step(&mut self, t: f64, y: &[f64]) -> bool {
+        let (inner, outer) = self.ring_motion(t, y);
+        let floor = self.params.impact_speed_floor;
+        let mut changed = false;
+        for j in 0..self.layout.balls {
+            let (q, v, w, _) = self.ball_kinematics(j, y);
+            for (k, (ring, table)) in [(&inner, &self.inner_table), (&outer, &self.outer_table)]
+                .into_iter()
+                .enumerate()
+            {
+                let before = self.episodes[j][k];
+                let contact = self.race_contact(ring, table, &before, &q, &v, &w);
+                let mut episode = before;
+                match contact {
+                    Some(cn) => episode.accept(cn.geometry.penetration, cn.penetration_rate, floor),
+                    None => episode.accept(-1.0, 0.0, floor),
+                }
+                if episode != before {
+                    changed = true;
+                    self.episodes[j][k] = episode;
+                }
+            }
+        }
+        changed && self.params.normal_law.hysteresis_factor().is_some()
+    }
+}

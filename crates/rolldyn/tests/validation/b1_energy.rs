@@ -1,0 +1,118 @@
+//! B1: with all dissipation off (Hertz law, no traction, no pocket damping
+//! or friction, no drag), total energy (kinetic + Σ (2/5) K_c δ^{5/2} +
+//! pocket springs + potential of the constant load) is conserved to
+//! integrator tolerance, and the RK4 energy error shrinks at the method's
+//! order when the step halves.
+//!
+//! Configuration: seed 000's 6304 in planar mode (fixed contact angle, so
+//! K_c is constant and the force is the exact gradient of the elastic
+//! energy), with a preload (P_d = −20 µm, 5 µm per contact) so that every contact stays
+//! closed and the motion is smooth, a constant radial load of 100 N on a
+//! free inner ring, balls and cage launched at the pure-rolling speeds of
+//! 8000 rpm.
+
+use rolldyn::contact::{HertzModel, NormalForceLaw};
+use rolldyn::dynamics::{BearingModel, CageParameters, DynamicsParameters};
+use rolldyn::integrate::tableau::{DOPRI5, RK4};
+use rolldyn::integrate::{ExplicitRk, StepControl};
+use rolldyn::material::Material;
+use rolldyn::operating::{Loads, SpeedProfile};
+use rolldyn::traction::{ModifiedCoulomb, TractionModel};
+use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
+
+fn model() -> BearingModel {
+    let g = BearingGeometry::new(&GeometrySpec {
+        ball_diameter: 9.52e-3,
+        ball_count: 7,
+        pitch_diameter: 36.01e-3,
+        inner_groove_curvature: 0.52,
+        outer_groove_curvature: 0.52,
+        clearance: Clearance::Diametral(-20e-6),
+        preload: true,
+    })
+    .unwrap();
+    let steel = Material {
+        elastic_modulus: 210e9,
+        poisson_ratio: 0.3,
+        density: 7800.0,
+    };
+    let params = DynamicsParameters {
+        inner_ring_mass: 0.1,
+        inner_ring_tilt_inertia: 1e-5,
+        cage: CageParameters {
+            mass: 0.01,
+            inertia: 8.2e-7,
+            pitch_radius: 18.005e-3,
+            pocket_clearance: 2e-3,
+            pocket_stiffness: 1e6,
+            pocket_damping: 0.0,
+            pocket_friction: ModifiedCoulomb {
+                friction: 0.0,
+                stick_speed: 0.0,
+                full_speed: 1e-3,
+            },
+            whirl: true,
+        },
+        normal_law: NormalForceLaw::Hertz,
+        impact_speed_floor: 1e-3,
+        traction: TractionModel::None,
+        speed: SpeedProfile::Constant(8000.0 * std::f64::consts::TAU / 60.0),
+        loads: Loads {
+            force: [0.0, 0.0, 100.0],
+            moment: [0.0, 0.0],
+        },
+        gravity: 0.0,
+        planar: true,
+    };
+    BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap()
+}
+
+fn energy_error(control: StepControl, t_end: f64) -> (f64, f64, u64) {
+    let mut m = model();
+    let y0 = m.pure_rolling_state([0.0; 5]);
+    let e0 = m.energy(0.0, &y0);
+    let mut rk = ExplicitRk::new(
+        if matches!(control, StepControl::Fixed { .. }) {
+            &RK4
+        } else {
+            &DOPRI5
+        },
+        control,
+        &m,
+        0.0,
+        &y0,
+    )
+    .unwrap();
+    let mut worst = 0.0f64;
+    while rk.t() < t_end {
+        rk.step(&mut m, t_end).unwrap();
+        worst = worst.max((m.energy(rk.t(), rk.y()).total() - e0.total()).abs());
+    }
+    (worst / e0.kinetic, e0.kinetic, rk.stats().steps)
+}
+
+#[test]
+fn b1_energy_conserved_without_dissipation() {
+    let control = StepControl::Adaptive {
+        relative_tolerance: 1e-8,
+        max_step: 1e-5,
+        initial_step: None,
+    };
+    // 20 ms: each ball passes the loaded zone ~6 times and its two contacts
+    // see ~2000 cycles of the radial vibration.
+    let (rel, ke, steps) = energy_error(control, 0.02);
+    eprintln!("B1 DOPRI5 rtol 1e-8: max |ΔE|/KE = {rel:.2e} over {steps} steps (KE {ke:.4} J)");
+    assert!(rel < 1e-8, "energy drift {rel}");
+}
+
+#[test]
+fn b1_rk4_energy_error_at_fourth_order() {
+    let (e1, _, _) = energy_error(StepControl::Fixed { step: 2e-7 }, 2e-3);
+    let (e2, _, _) = energy_error(StepControl::Fixed { step: 1e-7 }, 2e-3);
+    eprintln!(
+        "B1 RK4: max |ΔE|/KE = {e1:.3e} (h = 0.2 µs), {e2:.3e} (h = 0.1 µs), ratio {:.1}",
+        e1 / e2
+    );
+    // Local error O(h⁵) per step: the ratio is 2⁴ to 2⁵ over a short run.
+    assert!((14.0..40.0).contains(&(e1 / e2)), "ratio {}", e1 / e2);
+}
