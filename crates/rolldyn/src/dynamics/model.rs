@@ -1,7 +1,8 @@
 //! State, equations of motion and contact forces of the dynamic model.
 //!
 //! # State (MODEL §1)
-//! Ball j (9 states): axial x, radial r, azimuth φ, their rates, and the
+//! Two more states integrate the drive work and the dissipated energy
+//! (MODEL §10 bookkeeping). Ball j (9 states): axial x, radial r, azimuth φ, their rates, and the
 //! angular velocity (ω_x, ω_r, ω_t) in the ball's azimuth frame
 //! (e_x, e_r, e_t), e_r = cos φ e_y + sin φ e_z, e_t = e_x × e_r. Inner ring
 //! (10): translation (x, y, z), tilts (θ_y, θ_z) and their rates; its spin
@@ -129,9 +130,13 @@ impl StateLayout {
     pub fn cage(&self) -> usize {
         self.ring() + Self::RING
     }
+    /// The two energy accumulators: drive work and dissipated energy \[J\].
+    pub fn work(&self) -> usize {
+        self.cage() + Self::CAGE
+    }
     /// Total number of states.
     pub fn len(&self) -> usize {
-        self.cage() + Self::CAGE
+        self.work() + 2
     }
     /// Whether there are no states (never, for a valid bearing).
     pub fn is_empty(&self) -> bool {
@@ -161,10 +166,26 @@ impl Energy {
 struct RaceContact {
     geometry: TorusContact,
     penetration_rate: f64,
+    /// Dissipated power: normal damping and traction \[W\].
+    dissipation: f64,
     /// Force on the ball (normal and traction) \[N\].
     force: Vector3<f64>,
     /// Moment on the ball about its centre \[N·m\].
     moment: Vector3<f64>,
+}
+
+/// One evaluated ball–pocket contact.
+struct PocketContact {
+    /// Force on the ball \[N\].
+    force: Vector3<f64>,
+    /// Moment on the ball about its centre \[N·m\].
+    moment: Vector3<f64>,
+    /// Contact point on the ball \[m\].
+    point: Vector3<f64>,
+    /// Penetration beyond the clearance \[m\].
+    penetration: f64,
+    /// Dissipated power: damping and friction \[W\].
+    dissipation: f64,
 }
 
 /// Kinematic state of a ring for contact evaluation.
@@ -398,17 +419,18 @@ impl BearingModel {
         let slip = ball_surface - ring_surface;
         let slip_t = slip - slip.dot(&n) * n;
         let traction = self.params.traction.force(load, &slip_t);
+        let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
+        let dissipation = (load - elastic) * penetration_rate - traction.dot(&slip_t);
         Some(RaceContact {
             geometry,
             penetration_rate,
+            dissipation,
             force: -load * n + traction,
             moment: arm.cross(&traction),
         })
     }
 
-    /// Pocket contact of ball j: (force on the ball, moment on the ball,
-    /// contact point, penetration).
-    #[allow(clippy::type_complexity)]
+    /// Pocket contact of ball j, if closed.
     fn pocket_contact(
         &self,
         j: usize,
@@ -416,7 +438,7 @@ impl BearingModel {
         q: &Vector3<f64>,
         v: &Vector3<f64>,
         w: &Vector3<f64>,
-    ) -> Option<(Vector3<f64>, Vector3<f64>, Vector3<f64>, f64)> {
+    ) -> Option<PocketContact> {
         let cage = &self.params.cage;
         let c = self.layout.cage();
         let centre = Vector3::new(0.0, y[c], y[c + 1]);
@@ -441,15 +463,24 @@ impl BearingModel {
         let slip = (v + w.cross(&arm)) - (velocity + spin.cross(&(point - centre)));
         let slip_t = slip - slip.dot(&n) * n;
         let friction = cage.pocket_friction.force(normal, &slip_t);
-        Some((
-            -normal * n + friction,
-            arm.cross(&friction),
+        Some(PocketContact {
+            force: -normal * n + friction,
+            moment: arm.cross(&friction),
             point,
             penetration,
-        ))
+            dissipation: (normal - cage.pocket_stiffness * penetration) * rate
+                - friction.dot(&slip_t),
+        })
     }
 
-    /// Total energy of state `y` at time `t` (MODEL §10).
+    /// Drive work and dissipated energy accumulated in state `y` \[J\].
+    pub fn work(&self, y: &[f64]) -> (f64, f64) {
+        let w = self.layout.work();
+        (y[w], y[w + 1])
+    }
+
+    /// Mechanical energy of state `y` at time `t` (MODEL §10); its change
+    /// equals the drive work minus the dissipated energy.
     pub fn energy(&self, t: f64, y: &[f64]) -> Energy {
         let l = self.layout;
         let (inner, outer) = self.ring_motion(t, y);
@@ -468,8 +499,8 @@ impl BearingModel {
                     }
                 }
             }
-            if let Some((_, _, _, pen)) = self.pocket_contact(j, y, &q, &v, &w) {
-                e.elastic += 0.5 * self.params.cage.pocket_stiffness * pen * pen;
+            if let Some(pc) = self.pocket_contact(j, y, &q, &v, &w) {
+                e.elastic += 0.5 * self.params.cage.pocket_stiffness * pc.penetration.powi(2);
             }
         }
         let r = l.ring();
@@ -505,6 +536,7 @@ impl OdeSystem for BearingModel {
         let mut ring_moment = Vector3::zeros();
         let mut cage_force = Vector3::zeros();
         let mut cage_torque = 0.0;
+        let mut dissipation = 0.0;
         let c = l.cage();
         let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
         for j in 0..l.balls {
@@ -518,17 +550,20 @@ impl OdeSystem for BearingModel {
                 moment += cn.moment;
                 ring_force -= cn.force;
                 ring_moment += (cn.geometry.contact_point - inner.centre).cross(&(-cn.force));
+                dissipation += cn.dissipation;
             }
             if let Some(cn) = self.race_contact(&outer, &self.outer_table, &episodes[1], &q, &v, &w)
             {
                 force += cn.force;
                 moment += cn.moment;
+                dissipation += cn.dissipation;
             }
-            if let Some((f, m, point, _)) = self.pocket_contact(j, y, &q, &v, &w) {
-                force += f;
-                moment += m;
-                cage_force -= f;
-                cage_torque += (point - cage_centre).cross(&(-f)).x;
+            if let Some(pc) = self.pocket_contact(j, y, &q, &v, &w) {
+                force += pc.force;
+                moment += pc.moment;
+                cage_force -= pc.force;
+                cage_torque += (pc.point - cage_centre).cross(&(-pc.force)).x;
+                dissipation += pc.dissipation;
             }
             let b = l.ball(j);
             let (r, phi_dot, vr) = (y[b + 1], y[b + 5], y[b + 4]);
@@ -575,6 +610,12 @@ impl OdeSystem for BearingModel {
             dy[c + 4] = 0.0;
         }
         dy[c + 5] = cage_torque / p.cage.inertia;
+        // Drive power: the prescribed spin must supply −ω_i (moment of the
+        // contact forces on the ring about its spin axis).
+        let spin_axis = inner.omega - inner.omega_frame;
+        let w = l.work();
+        dy[w] = -ring_moment.dot(&spin_axis);
+        dy[w + 1] = dissipation;
     }
 
     /// Characteristic scales: positions 1 µm (contact deflections), speeds
@@ -594,6 +635,8 @@ impl OdeSystem for BearingModel {
         scale[c..c + 3].fill(1e-6);
         scale[c + 3..c + 5].fill(1e-3);
         scale[c + 5] = 1.0;
+        let w = l.work();
+        scale[w..w + 2].fill(1e-6);
     }
 
     fn accept_step(&mut self, t: f64, y: &[f64]) -> bool {

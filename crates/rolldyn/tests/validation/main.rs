@@ -13,6 +13,7 @@ mod a5_torus;
 mod a6_a8_kinematics;
 mod a7_seed000_geometry;
 mod b1_energy;
+mod b2_energy_balance;
 mod b3_impact;
 mod c5_seed002_table1;
 mod common;
