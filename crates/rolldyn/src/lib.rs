@@ -13,6 +13,8 @@
 //!   excitation map (MODEL §7);
 //! * [`integrate`] — explicit Runge–Kutta integrators (RK4, Dormand–Prince 5(4));
 //! * [`dynamics`] — the dynamic bearing model (MODEL §1, §2.3, §3, §5);
+//! * [`lubrication`] — Hamrock–Dowson films, pressure–viscosity (MODEL §4);
+//! * [`traction`] — traction stress laws and their integration over the contact ellipse (MODEL §3);
 //! * [`math`] — elliptic integrals, root finding, monotone interpolation.
 //!
 //! Equation numbers refer to `../shared/spec/MODEL.md` and the seed papers;
@@ -24,6 +26,7 @@ pub mod error;
 pub mod geometry;
 pub mod integrate;
 pub mod kinematics;
+pub mod lubrication;
 pub mod material;
 pub mod math;
 pub mod operating;

@@ -42,19 +42,23 @@
 //! B1). Where α varies, K_c(α) δ^{3/2} is not the exact gradient of
 //! (2/5) K_c δ^{5/2}; the K_c tables vary by ~1e-3 per degree.
 
+use crate::contact::Curvature;
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{
     ContactTable, GrooveCircle, HertzModel, NormalForceLaw, RacewayContactModel, RingPose,
     TorusContact,
 };
 use crate::error::InvalidParameter;
+use crate::geometry::Raceway;
 use crate::geometry::{BearingGeometry, RingKind};
 use crate::integrate::OdeSystem;
 use crate::kinematics::cage_speed_ratio;
+use crate::lubrication::hamrock_dowson;
 use crate::material::{Material, effective_modulus};
 use crate::operating::{Loads, SpeedProfile};
 use crate::quasistatic::Equilibrium;
-use crate::traction::{ModifiedCoulomb, TractionLaw, TractionModel};
+use crate::traction::ellipse::{self, ContactPatch, TractionIntegration};
+use crate::traction::{ModifiedCoulomb, TractionModel};
 use nalgebra::{Rotation3, Vector3};
 
 /// Cage data of the dynamic model.
@@ -93,6 +97,8 @@ pub struct DynamicsParameters {
     pub impact_speed_floor: f64,
     /// Traction model of the ball–raceway contacts.
     pub traction: TractionModel,
+    /// How traction is integrated over each contact ellipse.
+    pub traction_integration: TractionIntegration,
     /// Inner-ring speed profile.
     pub speed: SpeedProfile,
     /// Constant loads on the inner ring.
@@ -190,6 +196,7 @@ struct PocketContact {
 
 /// Kinematic state of a ring for contact evaluation.
 struct RingMotion {
+    raceway: Raceway,
     circle: GrooveCircle,
     centre: Vector3<f64>,
     velocity: Vector3<f64>,
@@ -207,6 +214,7 @@ pub struct BearingModel {
     outer_table: ContactTable,
     ball_mass: f64,
     ball_inertia: f64,
+    effective_modulus: f64,
     params: DynamicsParameters,
     layout: StateLayout,
     /// Episode memory: inner and outer contact of each ball.
@@ -240,8 +248,10 @@ impl BearingModel {
         params.cage.pocket_friction.validate()?;
         params.normal_law.validate()?;
         positive("impact_speed_floor", params.impact_speed_floor)?;
-        if let TractionModel::ModifiedCoulomb(m) = params.traction {
-            m.validate()?;
+        match params.traction {
+            TractionModel::ModifiedCoulomb(m) => m.validate()?,
+            TractionModel::Ehl(e) => e.validate()?,
+            TractionModel::None => {}
         }
         let ep = effective_modulus(ball, rings);
         let ball_mass = geometry.ball_mass(ball.density);
@@ -260,6 +270,7 @@ impl BearingModel {
             ))?,
             ball_mass,
             ball_inertia: ball_mass * geometry.ball_diameter.powi(2) / 10.0,
+            effective_modulus: ep,
             layout: StateLayout {
                 balls: geometry.ball_count,
             },
@@ -349,6 +360,7 @@ impl BearingModel {
         let omega_frame = y[r + 9] * Vector3::z() + y[r + 8] * (rz * Vector3::y());
         let axis = pose.rotation() * Vector3::x();
         let inner = RingMotion {
+            raceway: self.geometry.inner,
             circle: GrooveCircle::of(&self.geometry.inner, &pose),
             centre: pose.translation,
             velocity: Vector3::new(y[r + 5], y[r + 6], y[r + 7]),
@@ -356,6 +368,7 @@ impl BearingModel {
             omega_frame,
         };
         let outer = RingMotion {
+            raceway: self.geometry.outer,
             circle: GrooveCircle::of(&self.geometry.outer, &RingPose::default()),
             centre: Vector3::zeros(),
             velocity: Vector3::zeros(),
@@ -412,21 +425,70 @@ impl BearingModel {
             effective_mass: self.ball_mass,
         };
         let load = self.params.normal_law.force(&state);
-        let arm = geometry.contact_point - q;
-        let ball_surface = v + w.cross(&arm);
-        let ring_surface =
-            ring.velocity + ring.omega.cross(&(geometry.contact_point - ring.centre));
+        let point = geometry.contact_point;
+        let ball_surface = v + w.cross(&(point - q));
+        let ring_surface = ring.velocity + ring.omega.cross(&(point - ring.centre));
         let slip = ball_surface - ring_surface;
-        let slip_t = slip - slip.dot(&n) * n;
-        let traction = self.params.traction.force(load, &slip_t);
+        let hertz = table.at(geometry.contact_angle);
+        let ellipse = hertz.at_load(load);
+        // Rolling direction: the azimuthal direction at P, tangent to the contact.
+        let azimuthal = Vector3::new(0.0, -point.z, point.y);
+        let along = azimuthal - azimuthal.dot(&n) * n;
+        let rolling_direction = if along.norm() > 0.0 {
+            along.normalize()
+        } else {
+            n.cross(&Vector3::x()).normalize()
+        };
+        let film = match &self.params.traction {
+            TractionModel::Ehl(ehl) => {
+                let entrainment = 0.5 * ((ball_surface - v) + (ring_surface - v));
+                let u = (entrainment - entrainment.dot(&n) * n).norm();
+                let curvature = Curvature::of_raceway(
+                    &ring.raceway,
+                    self.geometry.ball_diameter,
+                    self.geometry.pitch_diameter,
+                    geometry.contact_angle,
+                );
+                hamrock_dowson(
+                    &ehl.lubricant,
+                    u,
+                    load,
+                    curvature.rolling_radius,
+                    self.effective_modulus,
+                    hertz.ellipticity,
+                )
+                .central
+            }
+            _ => 0.0,
+        };
+        let rg = ring.raceway.groove_radius;
+        let rb = 0.5 * self.geometry.ball_diameter;
+        let patch = ContactPatch {
+            point,
+            normal: n,
+            rolling_direction,
+            semi_major: ellipse.semi_major,
+            semi_minor: ellipse.semi_minor,
+            load,
+            deformed_radius: 2.0 * rg * rb / (rg + rb),
+        };
+        let traction = ellipse::integrate(
+            &self.params.traction,
+            self.params.traction_integration,
+            &patch,
+            q,
+            &slip,
+            &(w - ring.omega),
+            film,
+        );
         let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
-        let dissipation = (load - elastic) * penetration_rate - traction.dot(&slip_t);
+        let dissipation = (load - elastic) * penetration_rate + traction.dissipation;
         Some(RaceContact {
             geometry,
             penetration_rate,
             dissipation,
-            force: -load * n + traction,
-            moment: arm.cross(&traction),
+            force: -load * n + traction.force,
+            moment: traction.moment,
         })
     }
 

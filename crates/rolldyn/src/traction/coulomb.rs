@@ -1,6 +1,8 @@
-//! Modified Coulomb friction (seed 000 eqs 14–15; MODEL §3, model 1):
+//! Modified Coulomb friction (seed 000 eqs 14–15; MODEL §3, model 1), as a
+//! stress and, integrated at uniform slip, as a force:
 //! ```text
-//! F_T = −c_d(|v|) μ Q v/|v|,   c_d = 0 for |v| ≤ v₀,  (|v| − v₀)/(v₁ − v₀) for v₀ < |v| < v₁,  1 for |v| ≥ v₁
+//! τ = −c_d(|v|) μ p v/|v|,   F_T = −c_d(|v|) μ Q v/|v|,
+//! c_d = 0 for |v| ≤ v₀,  (|v| − v₀)/(v₁ − v₀) for v₀ < |v| < v₁,  1 for |v| ≥ v₁
 //! ```
 //! The ramp regularises the sign function (the force is continuous in the
 //! slip, as stiff integrators need). Seed 000 does not print v₀, v₁; the
@@ -60,14 +62,22 @@ impl ModifiedCoulomb {
     }
 }
 
+impl ModifiedCoulomb {
+    /// The friction force for a normal force Q at uniform slip (pockets).
+    #[inline]
+    pub fn force(&self, normal_load: f64, slip: &Vector3<f64>) -> Vector3<f64> {
+        self.shear_stress(normal_load, slip, 0.0)
+    }
+}
+
 impl TractionLaw for ModifiedCoulomb {
     #[inline]
-    fn force(&self, normal_load: f64, slip: &Vector3<f64>) -> Vector3<f64> {
+    fn shear_stress(&self, pressure: f64, slip: &Vector3<f64>, _film: f64) -> Vector3<f64> {
         let speed = slip.norm();
-        if speed <= self.stick_speed || normal_load <= 0.0 {
+        if speed <= self.stick_speed || pressure <= 0.0 {
             return Vector3::zeros();
         }
-        -(self.correction(speed) * self.friction * normal_load / speed) * slip
+        -(self.correction(speed) * self.friction * pressure / speed) * slip
     }
 }
 

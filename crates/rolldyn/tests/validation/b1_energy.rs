@@ -17,7 +17,7 @@ use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::material::Material;
 use rolldyn::operating::{Loads, SpeedProfile};
-use rolldyn::traction::{ModifiedCoulomb, TractionModel};
+use rolldyn::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
 fn model() -> BearingModel {
@@ -56,6 +56,7 @@ fn model() -> BearingModel {
         normal_law: NormalForceLaw::Hertz,
         impact_speed_floor: 1e-3,
         traction: TractionModel::None,
+        traction_integration: TractionIntegration::Centre,
         speed: SpeedProfile::Constant(8000.0 * std::f64::consts::TAU / 60.0),
         loads: Loads {
             force: [0.0, 0.0, 100.0],

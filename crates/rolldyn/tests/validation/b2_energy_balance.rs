@@ -15,7 +15,7 @@ use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::material::Material;
 use rolldyn::operating::{Loads, SpeedProfile};
-use rolldyn::traction::{ModifiedCoulomb, TractionModel};
+use rolldyn::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
 #[test]
@@ -59,6 +59,7 @@ fn b2_drive_work_balances_energy_and_dissipation() {
         normal_law: NormalForceLaw::LankaraniNikravesh { restitution: 0.9 },
         impact_speed_floor: 1e-3,
         traction: TractionModel::ModifiedCoulomb(friction),
+        traction_integration: TractionIntegration::Centre,
         speed: SpeedProfile::Constant(8000.0 * std::f64::consts::TAU / 60.0),
         loads: Loads {
             force: [0.0, 0.0, 100.0],

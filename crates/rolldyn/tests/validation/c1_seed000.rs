@@ -23,7 +23,7 @@ use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::material::Material;
 use rolldyn::operating::{Loads, SpeedProfile};
-use rolldyn::traction::{ModifiedCoulomb, TractionModel};
+use rolldyn::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
@@ -70,6 +70,7 @@ fn cage_speed(load: f64, t_end: f64, window: f64, from_rest: bool) -> (f64, u64)
         normal_law: NormalForceLaw::LankaraniNikravesh { restitution: 0.9 },
         impact_speed_floor: 1e-3,
         traction: TractionModel::ModifiedCoulomb(friction),
+        traction_integration: TractionIntegration::Centre,
         speed: SpeedProfile::Constant(8000.0 * RPM),
         loads: Loads {
             force: [0.0, 0.0, -load],

@@ -1,0 +1,105 @@
+//! EHL traction rheology (seed 001 eqs 13–15; MODEL §3, model 3):
+//! ```text
+//! τ = −min( τ₀ asinh( η(p) |v| / (h τ₀) ),  Λ_L p ) v/|v|,     η(p) = η₀ exp(α_p p)   (Barus)
+//! ```
+//! Eyring's shear-thinning with a limiting shear stress Λ_L p (K. L.
+//! Johnson & J. L. Tevaarwerk, Proc. R. Soc. A 356 (1977) 215; seed 001).
+//! At small slip the law is Newtonian, τ ≈ η v/h; at large slip it
+//! saturates at Λ_L p. The film h is the Hamrock–Dowson central film of the
+//! contact (MODEL §4). The stress is continuous in the slip (asinh is odd
+//! and smooth), so no regularisation is needed.
+
+use super::TractionLaw;
+use crate::error::InvalidParameter;
+use crate::lubrication::Lubricant;
+use nalgebra::Vector3;
+use serde::{Deserialize, Serialize};
+
+/// Parameters of the EHL traction rheology.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EhlRheology {
+    /// Eyring stress τ₀ \[Pa\] (typically 2–10 MPa for mineral oils).
+    pub eyring_stress: f64,
+    /// Limiting shear-stress coefficient Λ_L \[-\] (typically 0.05–0.1).
+    pub limiting_shear_coefficient: f64,
+    /// The lubricant (η₀, α_p).
+    pub lubricant: Lubricant,
+}
+
+impl EhlRheology {
+    /// Checks the parameters.
+    pub fn validate(&self) -> Result<(), InvalidParameter> {
+        if !(self.eyring_stress.is_finite() && self.eyring_stress > 0.0) {
+            return Err(InvalidParameter::new(
+                "eyring_stress",
+                self.eyring_stress,
+                "must be positive",
+            ));
+        }
+        if !(self.limiting_shear_coefficient.is_finite() && self.limiting_shear_coefficient > 0.0) {
+            return Err(InvalidParameter::new(
+                "limiting_shear_coefficient",
+                self.limiting_shear_coefficient,
+                "must be positive",
+            ));
+        }
+        self.lubricant.validate()
+    }
+}
+
+impl TractionLaw for EhlRheology {
+    #[inline]
+    fn shear_stress(&self, pressure: f64, slip: &Vector3<f64>, film: f64) -> Vector3<f64> {
+        let speed = slip.norm();
+        if speed == 0.0 || pressure <= 0.0 || film <= 0.0 {
+            return Vector3::zeros();
+        }
+        let tau0 = self.eyring_stress;
+        let eta = self.lubricant.viscosity_at(pressure);
+        // asinh(x) for huge x: ln(2x) without overflow.
+        let x = eta * speed / (film * tau0);
+        let eyring = tau0 * if x > 1e8 { (2.0 * x).ln() } else { x.asinh() };
+        let tau = eyring.min(self.limiting_shear_coefficient * pressure);
+        -(tau / speed) * slip
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn law() -> EhlRheology {
+        EhlRheology {
+            eyring_stress: 5e6,
+            limiting_shear_coefficient: 0.08,
+            lubricant: Lubricant {
+                viscosity: 0.0467,
+                pressure_viscosity: 2.2e-8,
+            },
+        }
+    }
+
+    #[test]
+    fn newtonian_at_small_slip_and_limited_at_large() {
+        let l = law();
+        let (p, h) = (0.2e9, 0.5e-6);
+        let eta = l.lubricant.viscosity_at(p);
+        let v = 1e-9;
+        let tau = l.shear_stress(p, &Vector3::new(v, 0.0, 0.0), h);
+        assert!(
+            ((-tau.x) / (eta * v / h) - 1.0).abs() < 1e-6,
+            "Newtonian limit"
+        );
+        let big = l.shear_stress(1.5e9, &Vector3::new(0.0, 5.0, 0.0), h);
+        assert!((big.y + 0.08 * 1.5e9).abs() < 1e-3, "limiting shear");
+        // Monotone in the slip.
+        let mut prev = 0.0;
+        for k in 0..40 {
+            let s = 1e-6 * 1.5f64.powi(k);
+            let t = -l.shear_stress(p, &Vector3::new(s, 0.0, 0.0), h).x;
+            assert!(t >= prev);
+            prev = t;
+        }
+    }
+}
