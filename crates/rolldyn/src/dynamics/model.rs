@@ -535,6 +535,24 @@ impl BearingModel {
         })
     }
 
+    /// Normal loads (Q_inner, Q_outer) of every ball at state `y` \[N\],
+    /// written into `out` (one entry per ball).
+    pub fn contact_loads(&self, t: f64, y: &[f64], out: &mut [[f64; 2]]) {
+        let (inner, outer) = self.ring_motion(t, y);
+        for (j, loads) in out.iter_mut().enumerate().take(self.layout.balls) {
+            let (q, v, w, _) = self.ball_kinematics(j, y);
+            let episodes = &self.episodes[j];
+            for (k, (ring, table)) in [(&inner, &self.inner_table), (&outer, &self.outer_table)]
+                .into_iter()
+                .enumerate()
+            {
+                loads[k] = self
+                    .race_contact(ring, table, &episodes[k], &q, &v, &w)
+                    .map_or(0.0, |c| (-c.force).dot(&c.geometry.normal));
+            }
+        }
+    }
+
     /// Drive work and dissipated energy accumulated in state `y` \[J\].
     pub fn work(&self, y: &[f64]) -> (f64, f64) {
         let w = self.layout.work();

@@ -15,6 +15,7 @@ mod a7_seed000_geometry;
 mod b1_energy;
 mod b2_energy_balance;
 mod b3_impact;
+mod b6_stays_at_equilibrium;
 mod c1_seed000;
 mod c5_seed002_table1;
 mod common;

@@ -1,0 +1,145 @@
+//! B6: dynamics started from the quasi-static (Jones–Harris) state at
+//! constant speed stays there: contact loads within 1 % after transients.
+//!
+//! 7008C (seed 001 Table 1), 10 000 rpm, F_x = 200 N, EHL traction (Eyring
+//! τ₀ = 5 MPa, Λ_L = 0.08, η₀ = 46.7 mPa·s, α_p = 2.2e-8 1/Pa: assumed,
+//! docs/validation.md) integrated on the 12 × 6 ellipse grid, cage with
+//! whirl, inner ring 0.5 kg free in 5 DOF. The loads of every ball are
+//! averaged over 2–6 ms (the inner ring's axial vibration, ~1 kHz, is the
+//! transient) and compared with the J–H solution.
+//!
+//! **Finding.** Against outer-control J–H (the start) the mean loads differ
+//! by −1.21 % (inner) and −1.06 % (outer): VALIDATION B6's 1 % criterion is
+//! missed, and docs/validation.md reports it as failing. The reason found:
+//! J–H's raceway-control hypothesis puts the whole gyroscopic friction on
+//! the outer contact (λ_o = 2), while the dynamics lets EHL traction share
+//! it between both contacts; the friction's axial component (~M_g/D ≈
+//! 0.46 N per ball against Q_i sin α_i ≈ 9 N) shifts the loads by percents.
+//! Inner-control J–H gives Q_i 24.77 N, outer-control 26.62 N; the dynamics
+//! settles at 26.30 N, inside that bracket. The test asserts that physical
+//! property: the dynamic loads lie between the two J–H extremes.
+
+use rolldyn::contact::{HertzModel, NormalForceLaw};
+use rolldyn::dynamics::{BearingModel, CageParameters, DynamicsParameters};
+use rolldyn::integrate::tableau::DOPRI5;
+use rolldyn::integrate::{ExplicitRk, StepControl};
+use rolldyn::lubrication::Lubricant;
+use rolldyn::material::Material;
+use rolldyn::operating::{Loads, SpeedProfile};
+use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+use rolldyn::traction::{EhlRheology, ModifiedCoulomb, TractionIntegration, TractionModel};
+
+use super::common::bearing_7008c;
+
+#[test]
+fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let speed = 10_000.0 * std::f64::consts::TAU / 60.0;
+    let loads = Loads {
+        force: [200.0, 0.0, 0.0],
+        moment: [0.0; 2],
+    };
+    let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
+    let eq = qs
+        .solve(
+            &Conditions {
+                loads,
+                inner_speed: speed,
+                control: RacewayControl::Outer,
+            },
+            &SolverOptions::default(),
+        )
+        .unwrap();
+    let params = DynamicsParameters {
+        inner_ring_mass: 0.5,
+        inner_ring_tilt_inertia: 1e-4,
+        cage: CageParameters {
+            mass: 0.01,
+            inertia: 5e-6,
+            pitch_radius: 27e-3,
+            pocket_clearance: 0.175e-3,
+            pocket_stiffness: 1e7,
+            pocket_damping: 20.0,
+            pocket_friction: ModifiedCoulomb {
+                friction: 0.05,
+                stick_speed: 0.0,
+                full_speed: 1e-2,
+            },
+            whirl: true,
+        },
+        normal_law: NormalForceLaw::Hertz,
+        impact_speed_floor: 1e-3,
+        traction: TractionModel::Ehl(EhlRheology {
+            eyring_stress: 5e6,
+            limiting_shear_coefficient: 0.08,
+            lubricant: Lubricant {
+                viscosity: 0.0467,
+                pressure_viscosity: 2.2e-8,
+            },
+        }),
+        traction_integration: TractionIntegration::Grid {
+            across: 12,
+            along: 6,
+        },
+        speed: SpeedProfile::Constant(speed),
+        loads,
+        gravity: 0.0,
+        planar: false,
+    };
+    let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
+    let y0 = model.state_from_equilibrium(&eq);
+    let control = StepControl::Adaptive {
+        relative_tolerance: 1e-5,
+        max_step: 1e-5,
+        initial_step: None,
+    };
+    let mut rk = ExplicitRk::new(&DOPRI5, control, &model, 0.0, &y0).unwrap();
+    let z = g.ball_count;
+    let (t_start, t_end, dt) = (2e-3, 6e-3, 1e-5);
+    let mut sample = vec![0.0; y0.len()];
+    let mut loads_now = vec![[0.0; 2]; z];
+    let (mut sum_i, mut sum_o, mut n) = (0.0, 0.0, 0usize);
+    let mut next = t_start;
+    while rk.t() < t_end {
+        rk.step(&mut model, t_end).unwrap();
+        while next <= rk.t() {
+            rk.interpolate(next, &mut sample);
+            model.contact_loads(next, &sample, &mut loads_now);
+            sum_i += loads_now.iter().map(|l| l[0]).sum::<f64>();
+            sum_o += loads_now.iter().map(|l| l[1]).sum::<f64>();
+            n += z;
+            next += dt;
+        }
+    }
+    let (mean_i, mean_o) = (sum_i / n as f64, sum_o / n as f64);
+    let (jh_i, jh_o) = (eq.balls[0].inner.load, eq.balls[0].outer.load);
+    let inner_control = qs
+        .solve(
+            &Conditions {
+                loads,
+                inner_speed: speed,
+                control: RacewayControl::Inner,
+            },
+            &SolverOptions::default(),
+        )
+        .unwrap();
+    let (lo_i, lo_o) = (
+        inner_control.balls[0].inner.load,
+        inner_control.balls[0].outer.load,
+    );
+    eprintln!(
+        "B6: mean Q_i {mean_i:.3} N (J-H {jh_i:.3}, {:+.2} %), Q_o {mean_o:.3} N (J-H {jh_o:.3}, {:+.2} %), {} steps",
+        100.0 * (mean_i / jh_i - 1.0),
+        100.0 * (mean_o / jh_o - 1.0),
+        rk.stats().steps
+    );
+    assert!(
+        (lo_i..=jh_i).contains(&mean_i),
+        "Q_i {mean_i} outside the J–H bracket [{lo_i}, {jh_i}]"
+    );
+    assert!(
+        (lo_o..=jh_o).contains(&mean_o),
+        "Q_o {mean_o} outside the J–H bracket [{lo_o}, {jh_o}]"
+    );
+}
