@@ -9,10 +9,14 @@
 //!   5(4) with error control and 4th-order dense output. All work vectors
 //!   are allocated once; a step allocates nothing.
 //! * [`IntegrationStats`]: steps, rejected steps, RHS evaluations.
+//! * [`run`]: to an end time with samples at a fixed rate (dense output),
+//!   a stop flag and progress callbacks.
 
+pub mod driver;
 pub mod explicit;
 pub mod tableau;
 
+pub use driver::{RunEnd, RunReport, run};
 pub use explicit::{ExplicitRk, IntegrationError, IntegrationStats, StepControl};
 
 /// A system of first-order ODEs y' = f(t, y).

@@ -1,0 +1,156 @@
+//! Drives an integrator to an end time, sampling the solution at a fixed
+//! rate by dense output (independent of the steps), honouring a stop flag
+//! (Ctrl-C) and reporting progress. Knows nothing of files or terminals:
+//! samples and progress go to callbacks (CODE.md: observers).
+
+use super::OdeSystem;
+use super::explicit::{ExplicitRk, IntegrationError, IntegrationStats};
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// How a run ended.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RunEnd {
+    /// Reached the end time.
+    Completed,
+    /// The stop flag was raised; the samples so far are valid.
+    Interrupted {
+        /// Time reached \[s\].
+        t: f64,
+    },
+    /// The integrator failed; the samples so far are valid.
+    Failed {
+        /// Why.
+        error: IntegrationError,
+    },
+}
+
+/// Result of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunReport {
+    /// How it ended.
+    pub end: RunEnd,
+    /// Integrator counters.
+    pub stats: IntegrationStats,
+    /// Samples delivered.
+    pub samples: usize,
+}
+
+/// Integrates `system` with `integrator` to `t_end`, calling `on_sample(t, y)`
+/// at t0, t0 + Δ, … (Δ = 1/`sample_rate`, the last sample at or before
+/// t_end) and `on_progress(t)` after each step. Stops early, cleanly, when
+/// `stop` is raised.
+pub fn run<S: OdeSystem>(
+    system: &mut S,
+    integrator: &mut ExplicitRk,
+    t_end: f64,
+    sample_rate: f64,
+    stop: &AtomicBool,
+    mut on_sample: impl FnMut(f64, &[f64]),
+    mut on_progress: impl FnMut(f64),
+) -> RunReport {
+    let t0 = integrator.t();
+    let dt = 1.0 / sample_rate;
+    let mut buffer = vec![0.0; system.dimension()];
+    let mut index = 0u64;
+    let mut samples = 0usize;
+    let sample_time = |i: u64| t0 + i as f64 * dt;
+    on_sample(t0, integrator.y());
+    samples += 1;
+    index += 1;
+    let end = loop {
+        if integrator.t() >= t_end {
+            break RunEnd::Completed;
+        }
+        if stop.load(Ordering::Relaxed) {
+            break RunEnd::Interrupted { t: integrator.t() };
+        }
+        if let Err(error) = integrator.step(system, t_end) {
+            break RunEnd::Failed { error };
+        }
+        while sample_time(index) <= integrator.t() * (1.0 + 1e-15)
+            && sample_time(index) <= t_end * (1.0 + 1e-12)
+        {
+            integrator.interpolate(sample_time(index), &mut buffer);
+            on_sample(sample_time(index), &buffer);
+            samples += 1;
+            index += 1;
+        }
+        on_progress(integrator.t());
+    };
+    RunReport {
+        end,
+        stats: integrator.stats(),
+        samples,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::integrate::StepControl;
+    use crate::integrate::tableau::DOPRI5;
+
+    struct Decay;
+    impl OdeSystem for Decay {
+        fn dimension(&self) -> usize {
+            1
+        }
+        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+            dy[0] = -y[0];
+        }
+    }
+
+    #[test]
+    fn samples_on_the_grid_independent_of_steps() {
+        let mut sys = Decay;
+        let control = StepControl::Adaptive {
+            relative_tolerance: 1e-9,
+            max_step: 0.37,
+            initial_step: None,
+        };
+        let mut rk = ExplicitRk::new(&DOPRI5, control, &sys, 0.0, &[1.0]).unwrap();
+        let mut got = Vec::new();
+        let stop = AtomicBool::new(false);
+        let report = run(
+            &mut sys,
+            &mut rk,
+            2.0,
+            10.0,
+            &stop,
+            |t, y| got.push((t, y[0])),
+            |_| {},
+        );
+        assert_eq!(report.end, RunEnd::Completed);
+        assert_eq!(got.len(), 21);
+        for (i, (t, y)) in got.iter().enumerate() {
+            assert!((t - 0.1 * i as f64).abs() < 1e-12);
+            assert!((y - (-t).exp()).abs() < 1e-8, "t {t}: {y}");
+        }
+    }
+
+    #[test]
+    fn stop_flag_ends_cleanly() {
+        let mut sys = Decay;
+        let control = StepControl::Fixed { step: 0.01 };
+        let mut rk =
+            ExplicitRk::new(&crate::integrate::tableau::RK4, control, &sys, 0.0, &[1.0]).unwrap();
+        let stop = AtomicBool::new(false);
+        let mut n = 0;
+        let report = run(
+            &mut sys,
+            &mut rk,
+            10.0,
+            100.0,
+            &stop,
+            |_, _| n += 1,
+            |t| {
+                if t > 1.0 {
+                    stop.store(true, Ordering::Relaxed);
+                }
+            },
+        );
+        assert!(matches!(report.end, RunEnd::Interrupted { t } if t > 1.0 && t < 1.1));
+        assert_eq!(n, report.samples);
+        assert!(report.samples >= 100);
+    }
+}
