@@ -1,0 +1,160 @@
+//! # rolldyn-io — result files
+//!
+//! * [`TimeSeries`]: named channels of f64 samples, each with its unit.
+//! * [`write_parquet`]: a time series as a Parquet file (zstd). Each column
+//!   carries its unit in the field metadata (`unit`), and the file carries
+//!   key–value metadata (rolldyn version, case). pandas, polars and
+//!   pyarrow read it.
+//! * [`write_atomic`]: any bytes, written to a temporary file in the same
+//!   directory and renamed, so a reader never sees a half-written result.
+
+use arrow_array::{ArrayRef, Float64Array, RecordBatch};
+use arrow_schema::{DataType, Field, Schema};
+use parquet::arrow::ArrowWriter;
+use parquet::basic::{Compression, ZstdLevel};
+use parquet::file::properties::WriterProperties;
+use parquet::file::metadata::KeyValue;
+use std::collections::HashMap;
+use std::path::Path;
+use std::sync::Arc;
+
+/// Errors of result writing.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// File system.
+    #[error("cannot write {path}: {source}")]
+    Io {
+        /// File.
+        path: String,
+        /// Cause.
+        source: std::io::Error,
+    },
+    /// Parquet/Arrow encoding.
+    #[error("cannot encode {path}: {message}")]
+    Encode {
+        /// File.
+        path: String,
+        /// Cause.
+        message: String,
+    },
+}
+
+/// Named channels of samples, all of the same length.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct TimeSeries {
+    names: Vec<String>,
+    units: Vec<String>,
+    columns: Vec<Vec<f64>>,
+}
+
+impl TimeSeries {
+    /// Adds a channel (before any sample is pushed); returns its index.
+    pub fn channel(&mut self, name: impl Into<String>, unit: impl Into<String>) -> usize {
+        self.names.push(name.into());
+        self.units.push(unit.into());
+        self.columns.push(Vec::new());
+        self.names.len() - 1
+    }
+
+    /// Number of channels.
+    pub fn width(&self) -> usize {
+        self.names.len()
+    }
+
+    /// Number of samples.
+    pub fn len(&self) -> usize {
+        self.columns.first().map_or(0, Vec::len)
+    }
+
+    /// Whether there are no samples.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Appends one sample: one value per channel, in channel order.
+    pub fn push(&mut self, row: &[f64]) {
+        for (c, v) in self.columns.iter_mut().zip(row) {
+            c.push(*v);
+        }
+    }
+
+    /// Channel names.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The samples of a channel by name.
+    pub fn column(&self, name: &str) -> Option<&[f64]> {
+        self.names.iter().position(|n| n == name).map(|i| self.columns[i].as_slice())
+    }
+}
+
+/// Writes `bytes` to `path` atomically (temporary file + rename).
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+    let io = |source| OutputError::Io { path: path.display().to_string(), source };
+    let tmp = path.with_file_name(format!(
+        ".{}.tmp",
+        path.file_name().map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned())
+    ));
+    std::fs::write(&tmp, bytes).map_err(io)?;
+    std::fs::rename(&tmp, path).map_err(io)
+}
+
+/// Writes `series` as Parquet to `path` atomically, with file metadata.
+pub fn write_parquet(path: &Path, series: &TimeSeries, metadata: &[(&str, String)]) -> Result<(), OutputError> {
+    let encode = |message: String| OutputError::Encode { path: path.display().to_string(), message };
+    let fields: Vec<Field> = series
+        .names
+        .iter()
+        .zip(&series.units)
+        .map(|(n, u)| Field::new(n, DataType::Float64, false).with_metadata(HashMap::from([("unit".to_string(), u.clone())])))
+        .collect();
+    let schema = Arc::new(Schema::new(fields));
+    let columns: Vec<ArrayRef> = series.columns.iter().map(|c| Arc::new(Float64Array::from(c.clone())) as ArrayRef).collect();
+    let batch = RecordBatch::try_new(schema.clone(), columns).map_err(|e| encode(e.to_string()))?;
+    let kv: Vec<KeyValue> = metadata.iter().map(|(k, v)| KeyValue::new(k.to_string(), v.clone())).collect();
+    let props = WriterProperties::builder()
+        .set_compression(Compression::ZSTD(ZstdLevel::default()))
+        .set_key_value_metadata(Some(kv))
+        .build();
+    let mut bytes = Vec::new();
+    {
+        let mut writer = ArrowWriter::try_new(&mut bytes, schema, Some(props)).map_err(|e| encode(e.to_string()))?;
+        writer.write(&batch).map_err(|e| encode(e.to_string()))?;
+        writer.close().map_err(|e| encode(e.to_string()))?;
+    }
+    write_atomic(path, &bytes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
+
+    #[test]
+    fn parquet_round_trip_with_units() {
+        let mut ts = TimeSeries::default();
+        ts.channel("time_s", "s");
+        ts.channel("cage_speed_rpm", "rpm");
+        for i in 0..100 {
+            ts.push(&[i as f64 * 1e-3, 4400.0 + i as f64]);
+        }
+        let dir = std::env::temp_dir().join(format!("rolldyn-io-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("series.parquet");
+        write_parquet(&path, &ts, &[("case", "test".into())]).unwrap();
+        let file = std::fs::File::open(&path).unwrap();
+        let builder = ParquetRecordBatchReaderBuilder::try_new(file).unwrap();
+        let schema = builder.schema().clone();
+        assert_eq!(schema.field(1).name(), "cage_speed_rpm");
+        assert_eq!(schema.field(1).metadata().get("unit").map(String::as_str), Some("rpm"));
+        let kv = builder.metadata().file_metadata().key_value_metadata().cloned().unwrap_or_default();
+        assert!(kv.iter().any(|k| k.key == "case" && k.value.as_deref() == Some("test")));
+        let batch = builder.build().unwrap().next().unwrap().unwrap();
+        assert_eq!(batch.num_rows(), 100);
+        let col = batch.column(1).as_any().downcast_ref::<Float64Array>().unwrap();
+        assert_eq!(col.value(99), 4499.0);
+        assert!(!dir.join(".series.parquet.tmp").exists());
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}
