@@ -5,7 +5,9 @@ use crate::raw::*;
 use crate::units::{Dimension, Quantity};
 use rolldyn::contact::normal_law::DEFAULT_IMPACT_SPEED_FLOOR;
 use rolldyn::contact::{HertzModel, NormalForceLaw};
+use rolldyn::dynamics::{CageParameters, DynamicsParameters};
 use rolldyn::operating::{Loads, SpeedProfile};
+use rolldyn::traction::{EhlRheology, ModifiedCoulomb, TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, Material};
 
 /// A rule broken by one key: the raw material of a [`crate::CaseError`].
@@ -57,6 +59,24 @@ pub struct Case {
     pub impact_speed_floor: f64,
     /// Raceway control of the quasi-static model.
     pub raceway_control: rolldyn::quasistatic::RacewayControl,
+    /// Traction model of the dynamic engine (EHL with the case's lubricant).
+    pub traction: TractionModel,
+    /// Traction integration over the contact ellipse.
+    pub traction_integration: TractionIntegration,
+    /// Planar mode.
+    pub planar: bool,
+    /// Gravity along −z.
+    pub gravity: bool,
+    /// Inner-ring mass \[kg\], if given.
+    pub inner_ring_mass: Option<f64>,
+    /// Inner-ring tilt inertia \[kg·m²\], if given.
+    pub inner_ring_tilt_inertia: Option<f64>,
+    /// Time integrator.
+    pub integrator: IntegratorChoice,
+    /// Fixed step of rk4 \[s\].
+    pub time_step: Option<f64>,
+    /// Initial state of a dynamic run.
+    pub start: StartChoice,
     /// Simulated time \[s\], if given.
     pub duration: Option<f64>,
     /// Relative tolerance of adaptive integrators.
@@ -107,6 +127,14 @@ pub struct Cage {
     pub mass: Option<f64>,
     /// Polar moment of inertia \[kg·m²\].
     pub inertia: Option<f64>,
+    /// Pocket contact stiffness \[N/m\].
+    pub pocket_stiffness: Option<f64>,
+    /// Pocket contact damping \[N·s/m\].
+    pub pocket_damping: Option<f64>,
+    /// Pocket friction coefficient.
+    pub pocket_friction: f64,
+    /// Whether the cage whirls.
+    pub whirl: bool,
 }
 
 /// A material with a display name.
@@ -259,6 +287,22 @@ impl Case {
             "must lie in (0, 1)",
         )?;
         let sample_rate = checked("output.sample_rate", &raw.output.sample_rate, positive)?;
+        let time_step = checked("solver.time_step", &s.time_step, positive)?;
+        let integrator = s.integrator.unwrap_or(IntegratorChoice::Dopri5);
+        if integrator == IntegratorChoice::Rk4 && time_step.is_none() {
+            return Err(Invalid::missing(
+                "solver.time_step",
+                "the rk4 integrator needs a fixed step, e.g. \"0.5 us\"",
+            ));
+        }
+        let lubricant = raw.lubricant.as_ref().map(lubricant).transpose()?;
+        let traction = traction(raw.model.traction.as_ref(), lubricant.as_ref())?;
+        let inner_ring_mass = checked("inner_ring.mass", &raw.inner_ring.mass, positive)?;
+        let inner_ring_tilt_inertia = checked(
+            "inner_ring.tilt_inertia",
+            &raw.inner_ring.tilt_inertia,
+            positive,
+        )?;
 
         Ok(Self {
             title: raw.title.clone(),
@@ -268,13 +312,22 @@ impl Case {
                 ball: material("materials.ball", raw.materials.ball.as_ref())?,
                 rings: material("materials.rings", raw.materials.rings.as_ref())?,
             },
-            lubricant: raw.lubricant.as_ref().map(lubricant).transpose()?,
+            lubricant,
             speed,
             loads,
             normal_law,
             contact_stiffness: raw.model.contact_stiffness.unwrap_or_default(),
             impact_speed_floor,
             raceway_control: raw.model.raceway_control.unwrap_or_default(),
+            traction,
+            traction_integration: raw.model.traction_integration.unwrap_or_default(),
+            planar: raw.model.planar.unwrap_or(false),
+            gravity: raw.model.gravity.unwrap_or(false),
+            inner_ring_mass,
+            inner_ring_tilt_inertia,
+            integrator,
+            time_step,
+            start: s.start.unwrap_or(StartChoice::JonesHarris),
             duration,
             relative_tolerance,
             max_step,
@@ -487,6 +540,16 @@ fn cage(c: &RawCage) -> Result<Cage, Invalid> {
         guide_clearance: checked("cage.guide_clearance", &c.guide_clearance, positive)?,
         mass: checked("cage.mass", &c.mass, positive)?,
         inertia: checked("cage.inertia", &c.inertia, positive)?,
+        pocket_stiffness: checked("cage.pocket_stiffness", &c.pocket_stiffness, positive)?,
+        pocket_damping: checked("cage.pocket_damping", &c.pocket_damping, non_negative)?,
+        pocket_friction: positive_number(
+            "cage.pocket_friction",
+            c.pocket_friction,
+            |v| v >= 0.0,
+            "must not be negative",
+        )?
+        .unwrap_or(DEFAULT_POCKET_FRICTION),
+        whirl: c.whirl.unwrap_or(true),
     };
     if let (Some(i), Some(o)) = (cage.inner_diameter, cage.outer_diameter) {
         if o <= i {
@@ -574,3 +637,136 @@ fn lubricant(l: &RawLubricant) -> Result<Lubricant, Invalid> {
         })?,
     })
 }
+
+/// Default ball–pocket friction coefficient (lubricated steel on cage
+/// material; seeds 001 and 002 use 0.01–0.1).
+pub const DEFAULT_POCKET_FRICTION: f64 = 0.05;
+
+fn traction(
+    choice: Option<&TractionChoice>,
+    lubricant: Option<&Lubricant>,
+) -> Result<TractionModel, Invalid> {
+    let key = "model.traction";
+    Ok(match choice {
+        None | Some(TractionChoice::Named(_)) | Some(TractionChoice::Table(RawTraction::None)) => {
+            TractionModel::None
+        }
+        Some(TractionChoice::Table(RawTraction::ModifiedCoulomb {
+            friction,
+            stick_speed,
+            full_speed,
+        })) => {
+            let law = ModifiedCoulomb {
+                friction: *friction,
+                stick_speed: stick_speed.as_ref().map_or(0.0, |q| q.si),
+                full_speed: full_speed.as_ref().map_or(1e-3, |q| q.si),
+            };
+            law.validate()
+                .map_err(|e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule))?;
+            TractionModel::ModifiedCoulomb(law)
+        }
+        Some(TractionChoice::Table(RawTraction::Ehl {
+            eyring_stress,
+            limiting_shear_coefficient,
+        })) => {
+            let lub = lubricant.ok_or_else(|| {
+                Invalid::new(key, None, "the ehl traction law needs a [lubricant] section (viscosity, pressure_viscosity)")
+            })?;
+            let law = EhlRheology {
+                eyring_stress: eyring_stress.si,
+                limiting_shear_coefficient: *limiting_shear_coefficient,
+                lubricant: rolldyn::lubrication::Lubricant {
+                    viscosity: lub.viscosity,
+                    pressure_viscosity: lub.pressure_viscosity,
+                },
+            };
+            law.validate()
+                .map_err(|e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule))?;
+            TractionModel::Ehl(law)
+        }
+    })
+}
+
+impl Case {
+    /// The parameters of the dynamic model, with defaults applied. A value
+    /// a dynamic run needs but the case lacks is an error naming its key.
+    pub fn dynamics_parameters(&self) -> Result<DynamicsParameters, Invalid> {
+        let g = &self.bearing.geometry;
+        let speed = self.speed.clone().ok_or_else(|| {
+            Invalid::missing(
+                "operating.speed",
+                "a dynamic run needs the inner-ring speed (or operating.speed_profile)",
+            )
+        })?;
+        let need =
+            |v: Option<f64>, key: &str, what: &str| v.ok_or_else(|| Invalid::missing(key, what));
+        // Inner ring alone, as a steel annulus from bore to raceway, if not given.
+        let ring_density = self.materials.rings.material.density;
+        let annulus = match (self.bearing.bore, self.bearing.width) {
+            (Some(bore), Some(width)) => {
+                let (ro, ri) = (g.inner.groove_bottom_diameter / 2.0, bore / 2.0);
+                let mass = ring_density * std::f64::consts::PI * (ro * ro - ri * ri) * width;
+                Some((
+                    mass,
+                    mass * (3.0 * (ro * ro + ri * ri) + width * width) / 12.0,
+                ))
+            }
+            _ => None,
+        };
+        let inner_ring_mass = self.inner_ring_mass.or(annulus.map(|a| a.0)).ok_or_else(|| {
+            Invalid::missing("inner_ring.mass", "a dynamic run needs the inner-ring mass (or bearing.bore and bearing.width to estimate the ring alone)")
+        })?;
+        let inner_ring_tilt_inertia = self
+            .inner_ring_tilt_inertia
+            .or(annulus.map(|a| a.1 * inner_ring_mass / a.0))
+            .ok_or_else(|| {
+                Invalid::missing(
+                    "inner_ring.tilt_inertia",
+                    "a dynamic run needs the inner-ring tilt inertia",
+                )
+            })?;
+        let c = &self.cage;
+        let cage = CageParameters {
+            mass: need(c.mass, "cage.mass", "a dynamic run needs the cage mass")?,
+            inertia: need(
+                c.inertia,
+                "cage.inertia",
+                "a dynamic run needs the cage moment of inertia",
+            )?,
+            pitch_radius: g.pitch_diameter / 2.0,
+            pocket_clearance: need(
+                c.pocket_clearance,
+                "cage.pocket_clearance",
+                "a dynamic run needs the pocket clearance",
+            )?,
+            pocket_stiffness: need(
+                c.pocket_stiffness,
+                "cage.pocket_stiffness",
+                "a dynamic run needs the ball–pocket contact stiffness, e.g. \"1e7 N/m\"",
+            )?,
+            pocket_damping: c.pocket_damping.unwrap_or(0.0),
+            pocket_friction: ModifiedCoulomb {
+                friction: c.pocket_friction,
+                stick_speed: 0.0,
+                full_speed: 1e-3,
+            },
+            whirl: c.whirl,
+        };
+        Ok(DynamicsParameters {
+            inner_ring_mass,
+            inner_ring_tilt_inertia,
+            cage,
+            normal_law: self.normal_law,
+            impact_speed_floor: self.impact_speed_floor,
+            traction: self.traction,
+            traction_integration: self.traction_integration,
+            speed,
+            loads: self.loads,
+            gravity: if self.gravity { STANDARD_GRAVITY } else { 0.0 },
+            planar: self.planar,
+        })
+    }
+}
+
+/// Standard gravity g₀ = 9.80665 m/s² (CGPM 1901).
+pub const STANDARD_GRAVITY: f64 = 9.80665;

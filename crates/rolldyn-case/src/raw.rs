@@ -26,6 +26,9 @@ pub struct RawCase {
     /// Cage geometry and inertia (used by the dynamic engine).
     #[serde(default)]
     pub cage: RawCage,
+    /// Inner ring (with what turns with it) for the dynamic engine.
+    #[serde(default)]
+    pub inner_ring: RawInnerRing,
     /// Materials of balls and rings.
     #[serde(default)]
     pub materials: RawMaterials,
@@ -114,6 +117,25 @@ pub struct RawCage {
     pub mass: Option<Quantity<Mass>>,
     /// Cage polar moment of inertia about the bearing axis.
     pub inertia: Option<Quantity<Inertia>>,
+    /// Ball–pocket contact stiffness k (linear law, seed 002 eq 6).
+    pub pocket_stiffness: Option<Quantity<Stiffness>>,
+    /// Ball–pocket contact damping c.
+    pub pocket_damping: Option<Quantity<Damping>>,
+    /// Ball–pocket friction coefficient μ_p (default 0.05).
+    pub pocket_friction: Option<f64>,
+    /// Whether the cage centre may whirl (default true; false: rotation only).
+    pub whirl: Option<bool>,
+}
+
+/// The inner ring as the dynamic engine sees it (ring plus shaft).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawInnerRing {
+    /// Mass of everything that moves with the inner ring. Default: the
+    /// ring alone, from bore, raceway diameter, width and ring density.
+    pub mass: Option<Quantity<Mass>>,
+    /// Transverse (tilt) moment of inertia. Default: that of the ring annulus.
+    pub tilt_inertia: Option<Quantity<Inertia>>,
 }
 
 /// Cage guidance.
@@ -270,6 +292,85 @@ pub struct RawModel {
     /// Raceway control of the Jones–Harris quasi-static model: "outer"
     /// (default), "inner" or "harris" (per ball, by Harris's criterion).
     pub raceway_control: Option<rolldyn::quasistatic::RacewayControl>,
+    /// Traction model of the ball–raceway contacts (dynamic engine):
+    /// "none" (default), `{ law = "modified_coulomb", friction = 0.1 }`
+    /// (optional stick_speed, full_speed) or `{ law = "ehl", eyring_stress =
+    /// "5 MPa", limiting_shear_coefficient = 0.08 }` (needs [lubricant]).
+    pub traction: Option<TractionChoice>,
+    /// Traction integration: `{ method = "grid", across = 12, along = 6 }`
+    /// (default) or `{ method = "centre" }`.
+    pub traction_integration: Option<rolldyn::traction::TractionIntegration>,
+    /// Planar mode (seed 000): axial motion and tilts frozen (default false).
+    pub planar: Option<bool>,
+    /// Gravity along −z (default false).
+    pub gravity: Option<bool>,
+}
+
+/// A traction model as written in the case file.
+#[derive(Debug, Clone, Serialize, JsonSchema)]
+#[serde(untagged)]
+pub enum TractionChoice {
+    /// "none".
+    Named(String),
+    /// A law with parameters.
+    Table(RawTraction),
+}
+
+/// Traction laws with their parameters.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
+pub enum RawTraction {
+    /// No traction.
+    None,
+    /// Modified Coulomb (seed 000 eqs 14–15).
+    ModifiedCoulomb {
+        /// Friction coefficient μ ≥ 0.
+        friction: f64,
+        /// Slip speed below which there is no friction v₀ (default 0).
+        stick_speed: Option<Quantity<Velocity>>,
+        /// Slip speed from which full friction acts v₁ (default 1 mm/s).
+        full_speed: Option<Quantity<Velocity>>,
+    },
+    /// EHL rheology (seed 001 eqs 13–15; lubricant from [lubricant]).
+    Ehl {
+        /// Eyring stress τ₀.
+        eyring_stress: Quantity<Pressure>,
+        /// Limiting shear-stress coefficient Λ_L.
+        limiting_shear_coefficient: f64,
+    },
+}
+
+impl<'de> Deserialize<'de> for TractionChoice {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = TractionChoice;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("\"none\" or a table { law = \"modified_coulomb\" | \"ehl\", ... }")
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<TractionChoice, E> {
+                match v {
+                    "none" => Ok(TractionChoice::Named(v.to_string())),
+                    "modified_coulomb" | "ehl" => Err(E::custom(format!(
+                        "the traction law \"{v}\" needs parameters: write a table, e.g. {}",
+                        if v == "ehl" {
+                            "{ law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }"
+                        } else {
+                            "{ law = \"modified_coulomb\", friction = 0.1 }"
+                        }
+                    ))),
+                    other => Err(E::custom(format!(
+                        "unknown traction law \"{other}\"; expected none, modified_coulomb or ehl"
+                    ))),
+                }
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<TractionChoice, A::Error> {
+                RawTraction::deserialize(de::value::MapAccessDeserializer::new(map))
+                    .map(TractionChoice::Table)
+            }
+        }
+        d.deserialize_any(V)
+    }
 }
 
 /// A normal law given by name ("hertz") or as a table with parameters,
@@ -338,6 +439,32 @@ pub struct RawSolver {
     pub relative_tolerance: Option<f64>,
     /// Largest step the integrator may take.
     pub max_step: Option<Quantity<Time>>,
+    /// "dopri5" (adaptive Dormand–Prince 5(4), default) or "rk4" (fixed step).
+    pub integrator: Option<IntegratorChoice>,
+    /// Step of the fixed-step integrator (rk4).
+    pub time_step: Option<Quantity<Time>>,
+    /// Initial state: "jones_harris" (default; seed 002 §3.1) or "pure_rolling".
+    pub start: Option<StartChoice>,
+}
+
+/// Time integrator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum IntegratorChoice {
+    /// Adaptive Dormand–Prince 5(4) with dense output.
+    Dopri5,
+    /// Classical Runge–Kutta 4 with a fixed step (`solver.time_step`).
+    Rk4,
+}
+
+/// Initial state of a dynamic run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum StartChoice {
+    /// The Jones–Harris quasi-static solution at the start speed.
+    JonesHarris,
+    /// Balls at the pitch circle with pure-rolling speeds.
+    PureRolling,
 }
 
 /// Output settings (read by `rolldyn run`).

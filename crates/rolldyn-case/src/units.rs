@@ -105,8 +105,15 @@ dimension!(/// Mass moment of inertia, SI kg·m².
 /// A dimension's unit table: (normalised symbol, factor to SI, offset to SI).
 type UnitTable = &'static [(&'static str, f64, f64)];
 
+dimension!(/// Contact stiffness (linear), SI N/m.
+    Stiffness, "stiffness", "1e7 N/m",
+    [("n/m", 1.0), ("n/mm", 1e3), ("n/um", 1e6), ("kn/mm", 1e6)]);
+dimension!(/// Viscous damping coefficient, SI N·s/m.
+    Damping, "damping coefficient", "20 N.s/m",
+    [("n.s/m", 1.0), ("n.s/mm", 1e3), ("kg/s", 1.0)]);
+
 /// Every dimension's name and units, for "that is a unit of X" messages.
-fn all_units() -> [(&'static str, UnitTable); 18] {
+fn all_units() -> [(&'static str, UnitTable); 20] {
     [
         (Length::NAME, Length::UNITS),
         (Angle::NAME, Angle::UNITS),
@@ -126,6 +133,8 @@ fn all_units() -> [(&'static str, UnitTable); 18] {
         (Velocity::NAME, Velocity::UNITS),
         (Mass::NAME, Mass::UNITS),
         (Inertia::NAME, Inertia::UNITS),
+        (Stiffness::NAME, Stiffness::UNITS),
+        (Damping::NAME, Damping::UNITS),
     ]
 }
 

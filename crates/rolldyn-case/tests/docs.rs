@@ -51,6 +51,7 @@ fn every_schema_key_is_documented() {
     let sections = [
         "bearing",
         "cage",
+        "inner_ring",
         "materials",
         "lubricant",
         "operating",

@@ -412,3 +412,62 @@ fn every_preset_is_a_valid_case() {
         assert_eq!(by_ref.bearing.geometry, case.bearing.geometry, "{}", p.name);
     }
 }
+
+#[test]
+fn dynamic_model_rules() {
+    let e = err(&format!(
+        "{BASE}\n[model]\ntraction = {{ law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }}\n"
+    ));
+    check(&e, "model.traction", 15, &["needs a [lubricant] section"]);
+    let e = err(&format!("{BASE}\n[model]\ntraction = \"coulomb\"\n"));
+    check(
+        &e,
+        "model.traction",
+        15,
+        &["unknown traction law", "modified_coulomb"],
+    );
+    let e = err(&format!(
+        "{BASE}\n[model]\ntraction = {{ law = \"modified_coulomb\", friction = -0.1 }}\n"
+    ));
+    check(&e, "model.traction.friction", 15, &["≥ 0"]);
+    let e = err(&format!("{BASE}\n[solver]\nintegrator = \"rk4\"\n"));
+    assert_eq!(e.key.as_deref(), Some("solver.time_step"), "{e}");
+    assert!(e.to_string().contains("fixed step"), "{e}");
+    let e = err(&format!("{BASE}\n[cage]\npocket_stiffness = \"-1 N/m\"\n"));
+    check(&e, "cage.pocket_stiffness", 15, &["must be positive"]);
+}
+
+#[test]
+fn dynamics_parameters_defaults_and_missing_values() {
+    // The default case has everything a run needs.
+    let case = rolldyn_case::load_default(&[]).unwrap();
+    let p = case.dynamics_parameters().unwrap();
+    assert_eq!(p.inner_ring_mass, 0.5);
+    assert!(matches!(
+        p.traction,
+        rolldyn::traction::TractionModel::Ehl(_)
+    ));
+    // A catalogue preset without cage data: the missing key is named.
+    let case = load_case(
+        "case.toml",
+        "[bearing]\npreset = \"6205\"\n[operating]\nspeed = \"1797 rpm\"\n",
+        &[],
+    )
+    .unwrap();
+    let e = case.dynamics_parameters().unwrap_err();
+    assert_eq!(e.key, "cage.mass");
+    // The inner-ring mass defaults to the ring annulus from bore and width.
+    let case = load_case(
+        "case.toml",
+        "[bearing]\npreset = \"6205\"\n[operating]\nspeed = \"1797 rpm\"\n[cage]\nmass = \"5 g\"\ninertia = \"1e-6 kg.m^2\"\npocket_clearance = \"0.2 mm\"\npocket_stiffness = \"1e7 N/m\"\n",
+        &[],
+    )
+    .unwrap();
+    let p = case.dynamics_parameters().unwrap();
+    // 6205: bore 25 mm, inner raceway ≈ 31.1 mm, width 15 mm, 7830 kg/m³ → ≈ 0.033 kg.
+    assert!(
+        p.inner_ring_mass > 0.02 && p.inner_ring_mass < 0.05,
+        "{}",
+        p.inner_ring_mass
+    );
+}

@@ -12,8 +12,8 @@ use arrow_array::{ArrayRef, Float64Array, RecordBatch};
 use arrow_schema::{DataType, Field, Schema};
 use parquet::arrow::ArrowWriter;
 use parquet::basic::{Compression, ZstdLevel};
-use parquet::file::properties::WriterProperties;
 use parquet::file::metadata::KeyValue;
+use parquet::file::properties::WriterProperties;
 use std::collections::HashMap;
 use std::path::Path;
 use std::sync::Arc;
@@ -85,41 +85,66 @@ impl TimeSeries {
 
     /// The samples of a channel by name.
     pub fn column(&self, name: &str) -> Option<&[f64]> {
-        self.names.iter().position(|n| n == name).map(|i| self.columns[i].as_slice())
+        self.names
+            .iter()
+            .position(|n| n == name)
+            .map(|i| self.columns[i].as_slice())
     }
 }
 
 /// Writes `bytes` to `path` atomically (temporary file + rename).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
-    let io = |source| OutputError::Io { path: path.display().to_string(), source };
+    let io = |source| OutputError::Io {
+        path: path.display().to_string(),
+        source,
+    };
     let tmp = path.with_file_name(format!(
         ".{}.tmp",
-        path.file_name().map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned())
+        path.file_name()
+            .map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned())
     ));
     std::fs::write(&tmp, bytes).map_err(io)?;
     std::fs::rename(&tmp, path).map_err(io)
 }
 
 /// Writes `series` as Parquet to `path` atomically, with file metadata.
-pub fn write_parquet(path: &Path, series: &TimeSeries, metadata: &[(&str, String)]) -> Result<(), OutputError> {
-    let encode = |message: String| OutputError::Encode { path: path.display().to_string(), message };
+pub fn write_parquet(
+    path: &Path,
+    series: &TimeSeries,
+    metadata: &[(&str, String)],
+) -> Result<(), OutputError> {
+    let encode = |message: String| OutputError::Encode {
+        path: path.display().to_string(),
+        message,
+    };
     let fields: Vec<Field> = series
         .names
         .iter()
         .zip(&series.units)
-        .map(|(n, u)| Field::new(n, DataType::Float64, false).with_metadata(HashMap::from([("unit".to_string(), u.clone())])))
+        .map(|(n, u)| {
+            Field::new(n, DataType::Float64, false)
+                .with_metadata(HashMap::from([("unit".to_string(), u.clone())]))
+        })
         .collect();
     let schema = Arc::new(Schema::new(fields));
-    let columns: Vec<ArrayRef> = series.columns.iter().map(|c| Arc::new(Float64Array::from(c.clone())) as ArrayRef).collect();
+    let columns: Vec<ArrayRef> = series
+        .columns
+        .iter()
+        .map(|c| Arc::new(Float64Array::from(c.clone())) as ArrayRef)
+        .collect();
     let batch = RecordBatch::try_new(schema.clone(), columns).map_err(|e| encode(e.to_string()))?;
-    let kv: Vec<KeyValue> = metadata.iter().map(|(k, v)| KeyValue::new(k.to_string(), v.clone())).collect();
+    let kv: Vec<KeyValue> = metadata
+        .iter()
+        .map(|(k, v)| KeyValue::new(k.to_string(), v.clone()))
+        .collect();
     let props = WriterProperties::builder()
         .set_compression(Compression::ZSTD(ZstdLevel::default()))
         .set_key_value_metadata(Some(kv))
         .build();
     let mut bytes = Vec::new();
     {
-        let mut writer = ArrowWriter::try_new(&mut bytes, schema, Some(props)).map_err(|e| encode(e.to_string()))?;
+        let mut writer = ArrowWriter::try_new(&mut bytes, schema, Some(props))
+            .map_err(|e| encode(e.to_string()))?;
         writer.write(&batch).map_err(|e| encode(e.to_string()))?;
         writer.close().map_err(|e| encode(e.to_string()))?;
     }
@@ -147,12 +172,27 @@ mod tests {
         let builder = ParquetRecordBatchReaderBuilder::try_new(file).unwrap();
         let schema = builder.schema().clone();
         assert_eq!(schema.field(1).name(), "cage_speed_rpm");
-        assert_eq!(schema.field(1).metadata().get("unit").map(String::as_str), Some("rpm"));
-        let kv = builder.metadata().file_metadata().key_value_metadata().cloned().unwrap_or_default();
-        assert!(kv.iter().any(|k| k.key == "case" && k.value.as_deref() == Some("test")));
+        assert_eq!(
+            schema.field(1).metadata().get("unit").map(String::as_str),
+            Some("rpm")
+        );
+        let kv = builder
+            .metadata()
+            .file_metadata()
+            .key_value_metadata()
+            .cloned()
+            .unwrap_or_default();
+        assert!(
+            kv.iter()
+                .any(|k| k.key == "case" && k.value.as_deref() == Some("test"))
+        );
         let batch = builder.build().unwrap().next().unwrap().unwrap();
         assert_eq!(batch.num_rows(), 100);
-        let col = batch.column(1).as_any().downcast_ref::<Float64Array>().unwrap();
+        let col = batch
+            .column(1)
+            .as_any()
+            .downcast_ref::<Float64Array>()
+            .unwrap();
         assert_eq!(col.value(99), 4499.0);
         assert!(!dir.join(".series.parquet.tmp").exists());
         std::fs::remove_dir_all(&dir).ok();

@@ -30,6 +30,7 @@ use serde::{Deserialize, Serialize};
 
 /// How traction is integrated over a contact (case file: `model.traction_integration`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(tag = "method", rename_all = "snake_case", deny_unknown_fields)]
 pub enum TractionIntegration {
     /// One point at the contact centre (seed 000, cheap).
