@@ -5,6 +5,7 @@
 
 mod quasistatic;
 mod report;
+mod run;
 
 use clap::{Args, Parser, Subcommand};
 use rolldyn_case::units::{Angle, Force, Quantity};
@@ -96,6 +97,19 @@ enum Command {
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
+    },
+    /// Dynamic simulation: writes DIR/timeseries.parquet and DIR/summary.json
+    /// (also after Ctrl-C). Without CASE: the built-in default (7008C,
+    /// 10 000 rpm, F_x = 200 N, EHL traction, 0.05 s).
+    Run {
+        #[command(flatten)]
+        case: CaseArgs,
+        /// Output directory.
+        #[arg(short, long, value_name = "DIR", default_value = "rolldyn-run")]
+        output: String,
+        /// Simulated time, e.g. "0.01 s" (overrides solver.duration).
+        #[arg(long, value_name = "TIME")]
+        duration: Option<String>,
     },
     /// List the built-in bearings.
     Presets {
@@ -311,6 +325,40 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 } else {
                     emit(&summary)
                 }
+            }
+        }
+        Command::Run {
+            mut case,
+            output,
+            duration,
+        } => {
+            if let Some(d) = duration {
+                case.set.push(format!("solver.duration={d}"));
+            }
+            let (source, case) = case.load()?;
+            let dir = std::path::Path::new(&output);
+            let summary = run::run_case(&source, &case, dir).map_err(Failure::BadInput)?;
+            let text = format!(
+                "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({} steps, {} rejected, {} RHS)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e}\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
+                summary.status,
+                summary.simulated_time_s,
+                summary.requested_duration_s,
+                summary.wall_time_s,
+                summary.steps,
+                summary.rejected_steps,
+                summary.rhs_evaluations,
+                summary.mean_cage_speed_rpm,
+                summary.pure_rolling_cage_speed_rpm,
+                summary.cage_sliding_rate,
+                summary.energy_balance_relative_error,
+                output,
+                summary.samples,
+                output
+            );
+            emit(&text)?;
+            match summary.status {
+                "failed" => Err(Failure::Internal(summary.error.unwrap_or_default())),
+                _ => Ok(()),
             }
         }
         Command::Presets { json: as_json } => {

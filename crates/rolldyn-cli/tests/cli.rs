@@ -364,3 +364,123 @@ fn quasistatic_sweep_writes_csv_and_json() {
     let o = rolldyn(&["quasistatic", "--control", "sideways"], None);
     assert_eq!(o.status.code(), Some(2));
 }
+
+fn temp_dir(tag: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("rolldyn-{tag}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    dir
+}
+
+#[test]
+fn run_writes_parquet_and_summary() {
+    use arrow_array::Float64Array;
+    use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
+    let dir = temp_dir("run");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(&["run", "--duration", "1 ms", "-o", &d], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["status"], "completed");
+    assert_eq!(summary["simulated_time_s"].as_f64(), Some(0.001));
+    for k in [
+        "mean_cage_speed_rpm",
+        "pure_rolling_cage_speed_rpm",
+        "cage_speed_ratio",
+        "cage_sliding_rate",
+        "mean_load_inner_n",
+        "max_load_outer_n",
+        "energy_balance_relative_error",
+        "steps",
+        "rejected_steps",
+        "rhs_evaluations",
+        "wall_time_s",
+    ] {
+        assert!(summary.get(k).is_some(), "summary lacks {k}");
+    }
+    assert!(
+        summary["energy_balance_relative_error"]
+            .as_f64()
+            .unwrap()
+            .abs()
+            < 1e-3
+    );
+    let file = std::fs::File::open(dir.join("timeseries.parquet")).unwrap();
+    let builder = ParquetRecordBatchReaderBuilder::try_new(file).unwrap();
+    let schema = builder.schema().clone();
+    let cage = schema.index_of("cage_speed_rpm").unwrap();
+    assert_eq!(
+        schema
+            .field(cage)
+            .metadata()
+            .get("unit")
+            .map(String::as_str),
+        Some("rpm")
+    );
+    assert!(
+        schema.index_of("ball21_load_inner_n").is_ok(),
+        "22 balls recorded"
+    );
+    let batch = builder.build().unwrap().next().unwrap().unwrap();
+    // 20 kHz over 1 ms: samples at 0, 50 µs, …, 1 ms.
+    assert_eq!(batch.num_rows(), 21);
+    let t = batch
+        .column(0)
+        .as_any()
+        .downcast_ref::<Float64Array>()
+        .unwrap();
+    assert!((t.value(20) - 1e-3).abs() < 1e-15);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn run_reports_missing_dynamic_data() {
+    let dir = temp_dir("run-bad");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(
+        &["run", "-", "--duration", "1 ms", "-o", &d],
+        Some("[bearing]\npreset = \"6205\"\n[operating]\nspeed = \"1797 rpm\"\n"),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("cage.mass"), "{}", stderr(&o));
+    assert!(
+        !dir.join("summary.json").exists(),
+        "nothing written on bad input"
+    );
+}
+
+#[test]
+fn run_interrupted_keeps_valid_files() {
+    let dir = temp_dir("run-int");
+    let d = dir.to_string_lossy().into_owned();
+    let child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .args(["run", "--duration", "10 s", "-o", &d])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let status = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let out = child.wait_with_output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["status"], "interrupted");
+    let t = summary["simulated_time_s"].as_f64().unwrap();
+    assert!(t > 0.0 && t < 10.0);
+    assert!(
+        std::fs::metadata(dir.join("timeseries.parquet"))
+            .unwrap()
+            .len()
+            > 0
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

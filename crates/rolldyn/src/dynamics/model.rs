@@ -178,6 +178,9 @@ struct RaceContact {
     force: Vector3<f64>,
     /// Moment on the ball about its centre \[N·m\].
     moment: Vector3<f64>,
+    /// Traction couple about the contact point \[N·m\]; the ring takes
+    /// −force at P and −couple.
+    couple: Vector3<f64>,
 }
 
 /// One evaluated ball–pocket contact.
@@ -489,6 +492,7 @@ impl BearingModel {
             dissipation,
             force: -load * n + traction.force,
             moment: traction.moment,
+            couple: traction.couple,
         })
     }
 
@@ -629,7 +633,8 @@ impl OdeSystem for BearingModel {
                 force += cn.force;
                 moment += cn.moment;
                 ring_force -= cn.force;
-                ring_moment += (cn.geometry.contact_point - inner.centre).cross(&(-cn.force));
+                ring_moment +=
+                    (cn.geometry.contact_point - inner.centre).cross(&(-cn.force)) - cn.couple;
                 dissipation += cn.dissipation;
             }
             if let Some(cn) = self.race_contact(&outer, &self.outer_table, &episodes[1], &q, &v, &w)

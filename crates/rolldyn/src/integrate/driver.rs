@@ -35,7 +35,8 @@ pub struct RunReport {
     pub samples: usize,
 }
 
-/// Integrates `system` with `integrator` to `t_end`, calling `on_sample(t, y)`
+/// Integrates `system` with `integrator` to `t_end`, calling
+/// `on_sample(system, t, y)`
 /// at t0, t0 + Δ, … (Δ = 1/`sample_rate`, the last sample at or before
 /// t_end) and `on_progress(t)` after each step. Stops early, cleanly, when
 /// `stop` is raised.
@@ -45,7 +46,7 @@ pub fn run<S: OdeSystem>(
     t_end: f64,
     sample_rate: f64,
     stop: &AtomicBool,
-    mut on_sample: impl FnMut(f64, &[f64]),
+    mut on_sample: impl FnMut(&S, f64, &[f64]),
     mut on_progress: impl FnMut(f64),
 ) -> RunReport {
     let t0 = integrator.t();
@@ -54,7 +55,7 @@ pub fn run<S: OdeSystem>(
     let mut index = 0u64;
     let mut samples = 0usize;
     let sample_time = |i: u64| t0 + i as f64 * dt;
-    on_sample(t0, integrator.y());
+    on_sample(system, t0, integrator.y());
     samples += 1;
     index += 1;
     let end = loop {
@@ -71,7 +72,7 @@ pub fn run<S: OdeSystem>(
             && sample_time(index) <= t_end * (1.0 + 1e-12)
         {
             integrator.interpolate(sample_time(index), &mut buffer);
-            on_sample(sample_time(index), &buffer);
+            on_sample(system, sample_time(index), &buffer);
             samples += 1;
             index += 1;
         }
@@ -117,7 +118,7 @@ mod tests {
             2.0,
             10.0,
             &stop,
-            |t, y| got.push((t, y[0])),
+            |_, t, y| got.push((t, y[0])),
             |_| {},
         );
         assert_eq!(report.end, RunEnd::Completed);
@@ -142,7 +143,7 @@ mod tests {
             10.0,
             100.0,
             &stop,
-            |_, _| n += 1,
+            |_, _, _| n += 1,
             |t| {
                 if t > 1.0 {
                     stop.store(true, Ordering::Relaxed);

@@ -81,6 +81,10 @@ pub struct TractionResult {
     pub force: Vector3<f64>,
     /// Moment of the traction on the ball about its centre \[N·m\].
     pub moment: Vector3<f64>,
+    /// Couple of the traction about the contact point, Σ (X − P) × dF
+    /// \[N·m\] (spin friction): the other body takes −force at P and
+    /// −couple.
+    pub couple: Vector3<f64>,
     /// Dissipated power −Σ dF·s \[W\], ≥ 0 for dissipative laws.
     pub dissipation: f64,
 }
@@ -112,6 +116,7 @@ pub fn integrate(
         let df = law.shear_stress(pressure, &s_t, film) * area;
         out.force += df;
         out.moment += (x - ball_centre).cross(&df);
+        out.couple += (x - patch.point).cross(&df);
         out.dissipation -= df.dot(&s_t);
     };
     match method {

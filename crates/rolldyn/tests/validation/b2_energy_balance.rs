@@ -109,3 +109,90 @@ fn b2_drive_work_balances_energy_and_dissipation() {
         "energy balance off by {imbalance} J"
     );
 }
+
+/// B2 in 3-D with EHL traction integrated on the ellipse grid (spin
+/// friction couples on balls and rings): 7008C, 10 000 rpm, 200 N, 1 ms
+/// from the Jones–Harris state. Guards the traction couple's reaction on
+/// the ring (missing it broke the balance by ~50 %).
+#[test]
+fn b2_energy_balance_with_ehl_grid_traction() {
+    use rolldyn::lubrication::Lubricant;
+    use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+    use rolldyn::traction::EhlRheology;
+    let g = super::common::bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let speed = 10_000.0 * std::f64::consts::TAU / 60.0;
+    let loads = Loads {
+        force: [200.0, 0.0, 0.0],
+        moment: [0.0; 2],
+    };
+    let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
+    let eq = qs
+        .solve(
+            &Conditions {
+                loads,
+                inner_speed: speed,
+                control: RacewayControl::Outer,
+            },
+            &SolverOptions::default(),
+        )
+        .unwrap();
+    let params = DynamicsParameters {
+        inner_ring_mass: 0.5,
+        inner_ring_tilt_inertia: 1e-4,
+        cage: CageParameters {
+            mass: 0.0031,
+            inertia: 2.4e-6,
+            pitch_radius: 27e-3,
+            pocket_clearance: 0.175e-3,
+            pocket_stiffness: 1e7,
+            pocket_damping: 20.0,
+            pocket_friction: ModifiedCoulomb {
+                friction: 0.05,
+                stick_speed: 0.0,
+                full_speed: 1e-3,
+            },
+            whirl: true,
+        },
+        normal_law: NormalForceLaw::Hertz,
+        impact_speed_floor: 1e-3,
+        traction: TractionModel::Ehl(EhlRheology {
+            eyring_stress: 5e6,
+            limiting_shear_coefficient: 0.08,
+            lubricant: Lubricant {
+                viscosity: 0.0467,
+                pressure_viscosity: 2.2e-8,
+            },
+        }),
+        traction_integration: TractionIntegration::Grid {
+            across: 12,
+            along: 6,
+        },
+        speed: SpeedProfile::Constant(speed),
+        loads,
+        gravity: 0.0,
+        planar: false,
+    };
+    let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
+    let y0 = model.state_from_equilibrium(&eq);
+    let e0 = model.energy(0.0, &y0).total();
+    let control = StepControl::Adaptive {
+        relative_tolerance: 1e-6,
+        max_step: 1e-5,
+        initial_step: None,
+    };
+    let mut rk = ExplicitRk::new(&DOPRI5, control, &model, 0.0, &y0).unwrap();
+    while rk.t() < 1e-3 {
+        rk.step(&mut model, 1e-3).unwrap();
+    }
+    let (drive, dissipated) = model.work(rk.y());
+    let delta = model.energy(rk.t(), rk.y()).total() - e0;
+    let imbalance = drive - delta - dissipated;
+    let scale = drive.abs().max(dissipated.abs());
+    eprintln!(
+        "B2 (3-D, EHL grid): drive {drive:.4e} J, ΔE {delta:.4e} J, dissipated {dissipated:.4e} J, imbalance {:.1e} of the larger",
+        imbalance / scale
+    );
+    assert!(dissipated > 0.0);
+    assert!((imbalance / scale).abs() < 1e-3, "imbalance {imbalance}");
+}

@@ -1,0 +1,357 @@
+//! `rolldyn run`: a dynamic simulation of a case. Writes
+//! `DIR/timeseries.parquet` (one row per sample; units in the column
+//! metadata) and `DIR/summary.json`, atomically, also after Ctrl-C or an
+//! integration failure (with what was computed). A progress bar shows on a
+//! terminal. Keys are documented in docs/cli.md.
+
+use indicatif::{ProgressBar, ProgressStyle};
+use rolldyn::dynamics::BearingModel;
+use rolldyn::integrate::tableau::{DOPRI5, RK4};
+use rolldyn::integrate::{ExplicitRk, IntegrationStats, RunEnd, StepControl, run};
+use rolldyn::kinematics::cage_speed_ratio;
+use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
+use rolldyn_case::Case;
+use rolldyn_case::raw::{IntegratorChoice, StartChoice};
+use rolldyn_io::{TimeSeries, write_atomic, write_parquet};
+use serde::Serialize;
+use std::io::IsTerminal;
+use std::path::Path;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
+
+const RPM: f64 = std::f64::consts::TAU / 60.0;
+/// Default recorder rate when the case gives none \[Hz\].
+pub const DEFAULT_SAMPLE_RATE: f64 = 10_000.0;
+/// Default largest step of the adaptive integrator \[s\].
+pub const DEFAULT_MAX_STEP: f64 = 1e-5;
+/// Default relative tolerance of the adaptive integrator.
+pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-6;
+
+/// `summary.json`.
+#[derive(Serialize)]
+pub struct Summary {
+    pub source: String,
+    pub title: Option<String>,
+    pub status: &'static str,
+    pub error: Option<String>,
+    pub requested_duration_s: f64,
+    pub simulated_time_s: f64,
+    pub wall_time_s: f64,
+    pub integrator: &'static str,
+    pub steps: u64,
+    pub rejected_steps: u64,
+    pub rhs_evaluations: u64,
+    pub samples: usize,
+    pub averaging_window_s: [f64; 2],
+    pub inner_ring_speed_rpm: f64,
+    pub mean_cage_speed_rpm: f64,
+    pub pure_rolling_cage_speed_rpm: f64,
+    pub cage_speed_ratio: f64,
+    pub pure_rolling_cage_speed_ratio: f64,
+    pub cage_sliding_rate: f64,
+    pub mean_load_inner_n: f64,
+    pub max_load_inner_n: f64,
+    pub mean_load_outer_n: f64,
+    pub max_load_outer_n: f64,
+    pub drive_work_j: f64,
+    pub dissipated_energy_j: f64,
+    pub mechanical_energy_change_j: f64,
+    pub energy_balance_error_j: f64,
+    pub energy_balance_relative_error: f64,
+}
+
+/// Channel layout of the recorder.
+struct Channels {
+    series: TimeSeries,
+    balls: usize,
+}
+
+impl Channels {
+    fn new(balls: usize) -> Self {
+        let mut series = TimeSeries::default();
+        for (name, unit) in [
+            ("time_s", "s"),
+            ("inner_ring_speed_rpm", "rpm"),
+            ("cage_angle_rad", "rad"),
+            ("cage_speed_rpm", "rpm"),
+            ("cage_y_m", "m"),
+            ("cage_z_m", "m"),
+            ("inner_ring_x_m", "m"),
+            ("inner_ring_y_m", "m"),
+            ("inner_ring_z_m", "m"),
+            ("inner_ring_tilt_y_rad", "rad"),
+            ("inner_ring_tilt_z_rad", "rad"),
+            ("drive_work_j", "J"),
+            ("dissipated_energy_j", "J"),
+            ("mechanical_energy_j", "J"),
+        ] {
+            series.channel(name, unit);
+        }
+        for j in 0..balls {
+            series.channel(format!("ball{j}_azimuth_rad"), "rad");
+            series.channel(format!("ball{j}_orbital_speed_rpm"), "rpm");
+            series.channel(format!("ball{j}_load_inner_n"), "N");
+            series.channel(format!("ball{j}_load_outer_n"), "N");
+        }
+        Self { series, balls }
+    }
+
+    fn record(
+        &mut self,
+        model: &BearingModel,
+        t: f64,
+        y: &[f64],
+        row: &mut Vec<f64>,
+        loads: &mut [[f64; 2]],
+    ) {
+        let l = model.layout();
+        let (c, r) = (l.cage(), l.ring());
+        let (drive, dissipated) = model.work(y);
+        row.clear();
+        row.extend_from_slice(&[
+            t,
+            model.parameters().speed.speed_at(t) / RPM,
+            y[c + 2],
+            y[c + 5] / RPM,
+            y[c],
+            y[c + 1],
+            y[r],
+            y[r + 1],
+            y[r + 2],
+            y[r + 3],
+            y[r + 4],
+            drive,
+            dissipated,
+            model.energy(t, y).total(),
+        ]);
+        model.contact_loads(t, y, loads);
+        for (j, load) in loads.iter().enumerate().take(self.balls) {
+            let b = l.ball(j);
+            row.extend_from_slice(&[y[b + 2], y[b + 5] / RPM, load[0], load[1]]);
+        }
+        self.series.push(row);
+    }
+}
+
+fn mean(values: &[f64]) -> f64 {
+    if values.is_empty() {
+        0.0
+    } else {
+        values.iter().sum::<f64>() / values.len() as f64
+    }
+}
+
+/// Runs the case and writes the results into `dir`. Returns the summary;
+/// `Err` is bad input (no files written).
+pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String> {
+    let params = case
+        .dynamics_parameters()
+        .map_err(|e| format!("{}: {}", e.key, e.rule))?;
+    let duration = case
+        .duration
+        .ok_or("solver.duration: missing: give the simulated time (or --duration, e.g. --duration \"0.05 s\")")?;
+    let g = &case.bearing.geometry;
+    let (ball, rings) = (
+        &case.materials.ball.material,
+        &case.materials.rings.material,
+    );
+    let mut model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
+        .map_err(|e| e.to_string())?;
+    let y0 = match case.start {
+        StartChoice::PureRolling => model.pure_rolling_state([0.0; 5]),
+        StartChoice::JonesHarris => {
+            let qs = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
+                .map_err(|e| e.to_string())?;
+            let conditions = Conditions {
+                loads: params.loads,
+                inner_speed: params.speed.speed_at(0.0),
+                control: case.raceway_control,
+            };
+            let eq = qs
+                .solve(&conditions, &SolverOptions::default())
+                .map_err(|e| {
+                    format!("solver.start = \"jones_harris\": {e}; try start = \"pure_rolling\"")
+                })?;
+            model.state_from_equilibrium(&eq)
+        }
+    };
+    let (tableau, control, integrator) = match case.integrator {
+        IntegratorChoice::Rk4 => (
+            &RK4,
+            StepControl::Fixed {
+                step: case.time_step.unwrap_or(1e-7),
+            },
+            "rk4",
+        ),
+        IntegratorChoice::Dopri5 => (
+            &DOPRI5,
+            StepControl::Adaptive {
+                relative_tolerance: case
+                    .relative_tolerance
+                    .unwrap_or(DEFAULT_RELATIVE_TOLERANCE),
+                max_step: case.max_step.unwrap_or(DEFAULT_MAX_STEP),
+                initial_step: None,
+            },
+            "dopri5",
+        ),
+    };
+    let mut rk = ExplicitRk::new(tableau, control, &model, 0.0, &y0).map_err(|e| e.to_string())?;
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+
+    let stop = Arc::new(AtomicBool::new(false));
+    {
+        let stop = stop.clone();
+        // A second handler cannot be installed in the same process; ignore.
+        let _ = ctrlc::set_handler(move || stop.store(true, Ordering::Relaxed));
+    }
+    let bar = if std::io::stderr().is_terminal() {
+        let bar = ProgressBar::new(1000);
+        bar.set_style(
+            ProgressStyle::with_template(
+                "{spinner} [{elapsed_precise}] {wide_bar} {msg} ETA {eta}",
+            )
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+        );
+        Some(bar)
+    } else {
+        None
+    };
+
+    let mut channels = Channels::new(g.ball_count);
+    let mut row = Vec::with_capacity(channels.series.width());
+    let mut loads = vec![[0.0; 2]; g.ball_count];
+    let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
+    let start = Instant::now();
+    let mut last_draw = 0.0;
+    let report = run(
+        &mut model,
+        &mut rk,
+        duration,
+        sample_rate,
+        &stop,
+        |m, t, y| channels.record(m, t, y, &mut row, &mut loads),
+        |t| {
+            if let Some(bar) = &bar {
+                if t - last_draw >= duration / 1000.0 {
+                    last_draw = t;
+                    bar.set_position((1000.0 * t / duration) as u64);
+                    bar.set_message(format!("t = {:.4} s", t));
+                }
+            }
+        },
+    );
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    let wall = start.elapsed().as_secs_f64();
+    let summary = summarise(
+        source,
+        case,
+        &channels.series,
+        duration,
+        wall,
+        integrator,
+        report.stats,
+        &report.end,
+    );
+    let metadata = [
+        ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
+        ("case", source.to_string()),
+        ("title", case.title.clone().unwrap_or_default()),
+        ("status", summary.status.to_string()),
+    ];
+    write_parquet(&dir.join("timeseries.parquet"), &channels.series, &metadata)
+        .map_err(|e| e.to_string())?;
+    let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
+    write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes()).map_err(|e| e.to_string())?;
+    Ok(summary)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn summarise(
+    source: &str,
+    case: &Case,
+    series: &TimeSeries,
+    duration: f64,
+    wall: f64,
+    integrator: &'static str,
+    stats: IntegrationStats,
+    end: &RunEnd,
+) -> Summary {
+    let column = |name: &str| series.column(name).unwrap_or(&[]);
+    let time = column("time_s");
+    let t_end = time.last().copied().unwrap_or(0.0);
+    // Means over the second half of the run (the first half is transient).
+    let from = time.iter().position(|&t| t >= 0.5 * t_end).unwrap_or(0);
+    let window = |name: &str| column(name).get(from..).unwrap_or(&[]).to_vec();
+    let inner_speed = mean(&window("inner_ring_speed_rpm"));
+    let cage_speed = mean(&window("cage_speed_rpm"));
+    let g = &case.bearing.geometry;
+    let alpha = g.nominal_contact_angle();
+    let rolling_ratio = cage_speed_ratio(g.ball_diameter / g.pitch_diameter, alpha, alpha, alpha);
+    let balls = g.ball_count;
+    let mut inner_loads = Vec::new();
+    let mut outer_loads = Vec::new();
+    for j in 0..balls {
+        inner_loads.extend(window(&format!("ball{j}_load_inner_n")));
+        outer_loads.extend(window(&format!("ball{j}_load_outer_n")));
+    }
+    let last = |name: &str| column(name).last().copied().unwrap_or(0.0);
+    let first = |name: &str| column(name).first().copied().unwrap_or(0.0);
+    let drive = last("drive_work_j");
+    let dissipated = last("dissipated_energy_j");
+    let delta_e = last("mechanical_energy_j") - first("mechanical_energy_j");
+    let imbalance = drive - delta_e - dissipated;
+    let (status, error) = match end {
+        RunEnd::Completed => ("completed", None),
+        RunEnd::Interrupted { .. } => (
+            "interrupted",
+            Some("stopped by the user (Ctrl-C); the files hold what was computed".to_string()),
+        ),
+        RunEnd::Failed { error } => ("failed", Some(error.to_string())),
+    };
+    let csr = if inner_speed != 0.0 {
+        cage_speed / inner_speed
+    } else {
+        0.0
+    };
+    Summary {
+        source: source.to_string(),
+        title: case.title.clone(),
+        status,
+        error,
+        requested_duration_s: duration,
+        simulated_time_s: t_end,
+        wall_time_s: wall,
+        integrator,
+        steps: stats.steps,
+        rejected_steps: stats.rejected_steps,
+        rhs_evaluations: stats.rhs_evaluations,
+        samples: series.len(),
+        averaging_window_s: [time.get(from).copied().unwrap_or(0.0), t_end],
+        inner_ring_speed_rpm: inner_speed,
+        mean_cage_speed_rpm: cage_speed,
+        pure_rolling_cage_speed_rpm: rolling_ratio * inner_speed,
+        cage_speed_ratio: csr,
+        pure_rolling_cage_speed_ratio: rolling_ratio,
+        cage_sliding_rate: if rolling_ratio > 0.0 && inner_speed != 0.0 {
+            1.0 - csr / rolling_ratio
+        } else {
+            0.0
+        },
+        mean_load_inner_n: mean(&inner_loads),
+        max_load_inner_n: inner_loads.iter().copied().fold(0.0, f64::max),
+        mean_load_outer_n: mean(&outer_loads),
+        max_load_outer_n: outer_loads.iter().copied().fold(0.0, f64::max),
+        drive_work_j: drive,
+        dissipated_energy_j: dissipated,
+        mechanical_energy_change_j: delta_e,
+        energy_balance_error_j: imbalance,
+        energy_balance_relative_error: if drive.abs() + dissipated.abs() > 0.0 {
+            imbalance / drive.abs().max(dissipated.abs())
+        } else {
+            0.0
+        },
+    }
+}
