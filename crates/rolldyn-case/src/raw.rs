@@ -295,7 +295,7 @@ pub struct RawModel {
     /// Traction model of the ball–raceway contacts (dynamic engine):
     /// "none" (default), `{ law = "modified_coulomb", friction = 0.1 }`
     /// (optional stick_speed, full_speed) or `{ law = "ehl", eyring_stress =
-    /// "5 MPa", limiting_shear_coefficient = 0.08 }` (needs [lubricant]).
+    /// "5 MPa", limiting_shear_coefficient = 0.08 }` (needs the `[lubricant]` section).
     pub traction: Option<TractionChoice>,
     /// Traction integration: `{ method = "grid", across = 12, along = 6 }`
     /// (default) or `{ method = "centre" }`.
@@ -331,7 +331,7 @@ pub enum RawTraction {
         /// Slip speed from which full friction acts v₁ (default 1 mm/s).
         full_speed: Option<Quantity<Velocity>>,
     },
-    /// EHL rheology (seed 001 eqs 13–15; lubricant from [lubricant]).
+    /// EHL rheology (seed 001 eqs 13–15; lubricant from the `[lubricant]` section).
     Ehl {
         /// Eyring stress τ₀.
         eyring_stress: Quantity<Pressure>,
