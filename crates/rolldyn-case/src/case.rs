@@ -5,7 +5,7 @@ use crate::raw::*;
 use crate::units::{Dimension, Quantity};
 use rolldyn::contact::normal_law::DEFAULT_IMPACT_SPEED_FLOOR;
 use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{CageParameters, DynamicsParameters};
+use rolldyn::dynamics::{CageParameters, DragParameters, DynamicsParameters};
 use rolldyn::operating::{Loads, SpeedProfile};
 use rolldyn::traction::{EhlRheology, ModifiedCoulomb, TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, Material};
@@ -77,6 +77,8 @@ pub struct Case {
     pub time_step: Option<f64>,
     /// Initial state of a dynamic run.
     pub start: StartChoice,
+    /// Drag of the air–oil mixture.
+    pub drag: DragParameters,
     /// Simulated time \[s\], if given.
     pub duration: Option<f64>,
     /// Relative tolerance of adaptive integrators.
@@ -303,6 +305,30 @@ impl Case {
             &raw.inner_ring.tilt_inertia,
             positive,
         )?;
+        let d = &raw.drag;
+        let coefficient = |key: &str, v: Option<f64>| {
+            positive_number(key, v, |x| x >= 0.0, "must not be negative").map(|v| v.unwrap_or(0.0))
+        };
+        let drag = DragParameters {
+            effective_density: checked(
+                "drag.effective_density",
+                &d.effective_density,
+                non_negative,
+            )?
+            .unwrap_or(0.0),
+            ball_drag_coefficient: coefficient(
+                "drag.ball_drag_coefficient",
+                d.ball_drag_coefficient,
+            )?,
+            ball_spin_drag_coefficient: coefficient(
+                "drag.ball_spin_drag_coefficient",
+                d.ball_spin_drag_coefficient,
+            )?,
+            cage_viscous: checked("drag.cage_viscous", &d.cage_viscous, non_negative)?
+                .unwrap_or(0.0),
+            cage_windage: checked("drag.cage_windage", &d.cage_windage, non_negative)?
+                .unwrap_or(0.0),
+        };
 
         Ok(Self {
             title: raw.title.clone(),
@@ -328,6 +354,7 @@ impl Case {
             integrator,
             time_step,
             start: s.start.unwrap_or(StartChoice::JonesHarris),
+            drag,
             duration,
             relative_tolerance,
             max_step,
@@ -764,6 +791,7 @@ impl Case {
             loads: self.loads,
             gravity: if self.gravity { STANDARD_GRAVITY } else { 0.0 },
             planar: self.planar,
+            drag: self.drag,
         })
     }
 }

@@ -29,6 +29,9 @@ pub struct RawCase {
     /// Inner ring (with what turns with it) for the dynamic engine.
     #[serde(default)]
     pub inner_ring: RawInnerRing,
+    /// Drag of the air–oil mixture on balls and cage (dynamic engine).
+    #[serde(default)]
+    pub drag: RawDrag,
     /// Materials of balls and rings.
     #[serde(default)]
     pub materials: RawMaterials,
@@ -125,6 +128,23 @@ pub struct RawCage {
     pub pocket_friction: Option<f64>,
     /// Whether the cage centre may whirl (default true; false: rotation only).
     pub whirl: Option<bool>,
+}
+
+/// Drag of the air–oil mixture (seed 001 eqs 10–12, 24, 36, corrected;
+/// docs/dynamics.md). All off by default.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawDrag {
+    /// Effective density of the air–oil mixture ρ_e.
+    pub effective_density: Option<Quantity<Density>>,
+    /// Ball drag coefficient C_D (orbital motion).
+    pub ball_drag_coefficient: Option<f64>,
+    /// Ball spin drag coefficient C_n.
+    pub ball_spin_drag_coefficient: Option<f64>,
+    /// Cage viscous drag c₁ (torque per angular speed).
+    pub cage_viscous: Option<Quantity<RotationalDamping>>,
+    /// Cage windage drag c₂ (torque per squared angular speed).
+    pub cage_windage: Option<Quantity<WindageCoefficient>>,
 }
 
 /// The inner ring as the dynamic engine sees it (ring plus shaft).

@@ -112,8 +112,15 @@ dimension!(/// Viscous damping coefficient, SI N·s/m.
     Damping, "damping coefficient", "20 N.s/m",
     [("n.s/m", 1.0), ("n.s/mm", 1e3), ("kg/s", 1.0)]);
 
+dimension!(/// Rotational viscous damping, SI N·m·s.
+    RotationalDamping, "rotational damping", "1e-6 N.m.s",
+    [("n.m.s", 1.0), ("n.mm.s", 1e-3)]);
+dimension!(/// Windage (quadratic rotational drag) coefficient, SI N·m·s².
+    WindageCoefficient, "windage coefficient", "1e-9 N.m.s^2",
+    [("n.m.s^2", 1.0), ("n.mm.s^2", 1e-3)]);
+
 /// Every dimension's name and units, for "that is a unit of X" messages.
-fn all_units() -> [(&'static str, UnitTable); 20] {
+fn all_units() -> [(&'static str, UnitTable); 22] {
     [
         (Length::NAME, Length::UNITS),
         (Angle::NAME, Angle::UNITS),
@@ -135,6 +142,8 @@ fn all_units() -> [(&'static str, UnitTable); 20] {
         (Inertia::NAME, Inertia::UNITS),
         (Stiffness::NAME, Stiffness::UNITS),
         (Damping::NAME, Damping::UNITS),
+        (RotationalDamping::NAME, RotationalDamping::UNITS),
+        (WindageCoefficient::NAME, WindageCoefficient::UNITS),
     ]
 }
 

@@ -52,6 +52,7 @@ fn every_schema_key_is_documented() {
         "bearing",
         "cage",
         "inner_ring",
+        "drag",
         "materials",
         "lubricant",
         "operating",

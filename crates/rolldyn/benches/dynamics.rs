@@ -8,7 +8,7 @@
 //! Targets of issue 4: (a) ≤ 20 s, (b) ≤ 60 s. Figures in docs/performance.md.
 
 use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{BearingModel, CageParameters, DynamicsParameters};
+use rolldyn::dynamics::{BearingModel, CageParameters, DragParameters, DynamicsParameters};
 use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::lubrication::Lubricant;
@@ -94,6 +94,7 @@ fn main() {
         },
         gravity: 9.81,
         planar: true,
+        drag: DragParameters::default(),
     };
     let model =
         BearingModel::new(&g, &steel, &steel, HertzModel::HertzCircular, params).expect("model");
@@ -169,6 +170,7 @@ fn main() {
         loads,
         gravity: 0.0,
         planar: false,
+        drag: DragParameters::default(),
     };
     let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).expect("model");
     let y0 = model.state_from_equilibrium(&eq);

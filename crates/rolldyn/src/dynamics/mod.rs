@@ -5,10 +5,13 @@
 //! This release: exact torus contacts with any normal force law and
 //! contact-episode memory, traction at the contact centre (modified
 //! Coulomb), cylindrical cage pockets with a linear law and Coulomb
-//! friction, gravity, planar mode, and the energy bookkeeping of MODEL §10.
+//! friction, ball and cage drag, gravity, planar mode, and the energy
+//! bookkeeping of MODEL §10.
 //! Traction integrated over the ellipse, EHL, guide lands, drag and output
 //! recording are the next steps of issue 4 (docs/dynamics.md).
 
 pub mod model;
 
-pub use model::{BearingModel, CageParameters, DynamicsParameters, Energy, StateLayout};
+pub use model::{
+    BearingModel, CageParameters, DragParameters, DynamicsParameters, Energy, StateLayout,
+};

@@ -12,7 +12,7 @@
 //! 8000 rpm.
 
 use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{BearingModel, CageParameters, DynamicsParameters};
+use rolldyn::dynamics::{BearingModel, CageParameters, DragParameters, DynamicsParameters};
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::material::Material;
@@ -64,6 +64,7 @@ fn model() -> BearingModel {
         },
         gravity: 0.0,
         planar: true,
+        drag: DragParameters::default(),
     };
     BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap()
 }

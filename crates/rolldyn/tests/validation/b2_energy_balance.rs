@@ -10,7 +10,7 @@
 //! rolling: contacts open and close, balls skid and impact.
 
 use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{BearingModel, CageParameters, DynamicsParameters};
+use rolldyn::dynamics::{BearingModel, CageParameters, DragParameters, DynamicsParameters};
 use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::material::Material;
@@ -67,6 +67,7 @@ fn b2_drive_work_balances_energy_and_dissipation() {
         },
         gravity: 9.81,
         planar: true,
+        drag: DragParameters::default(),
     };
     let mut model =
         BearingModel::new(&g, &steel, &steel, HertzModel::HertzCircular, params).unwrap();
@@ -111,9 +112,10 @@ fn b2_drive_work_balances_energy_and_dissipation() {
 }
 
 /// B2 in 3-D with EHL traction integrated on the ellipse grid (spin
-/// friction couples on balls and rings): 7008C, 10 000 rpm, 200 N, 1 ms
-/// from the Jones–Harris state. Guards the traction couple's reaction on
-/// the ring (missing it broke the balance by ~50 %).
+/// friction couples on balls and rings) and ball and cage drag on: 7008C,
+/// 10 000 rpm, 200 N, 1 ms from the Jones–Harris state. Guards the traction
+/// couple's reaction on the ring (missing it broke the balance by ~50 %)
+/// and the drag power.
 #[test]
 fn b2_energy_balance_with_ehl_grid_traction() {
     use rolldyn::lubrication::Lubricant;
@@ -172,6 +174,13 @@ fn b2_energy_balance_with_ehl_grid_traction() {
         loads,
         gravity: 0.0,
         planar: false,
+        drag: DragParameters {
+            effective_density: 860.0,
+            ball_drag_coefficient: 0.5,
+            ball_spin_drag_coefficient: 0.05,
+            cage_viscous: 1e-6,
+            cage_windage: 1e-9,
+        },
     };
     let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
     let y0 = model.state_from_equilibrium(&eq);

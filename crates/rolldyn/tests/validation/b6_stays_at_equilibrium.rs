@@ -20,7 +20,7 @@
 //! property: the dynamic loads lie between the two J–H extremes.
 
 use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{BearingModel, CageParameters, DynamicsParameters};
+use rolldyn::dynamics::{BearingModel, CageParameters, DragParameters, DynamicsParameters};
 use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::lubrication::Lubricant;
@@ -86,6 +86,7 @@ fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
         loads,
         gravity: 0.0,
         planar: false,
+        drag: DragParameters::default(),
     };
     let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
     let y0 = model.state_from_equilibrium(&eq);

@@ -18,7 +18,7 @@
 //! established.
 
 use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{BearingModel, CageParameters, DynamicsParameters};
+use rolldyn::dynamics::{BearingModel, CageParameters, DragParameters, DynamicsParameters};
 use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::material::Material;
@@ -78,6 +78,7 @@ fn cage_speed(load: f64, t_end: f64, window: f64, from_rest: bool) -> (f64, u64)
         },
         gravity: 9.81,
         planar: true,
+        drag: DragParameters::default(),
     };
     let mut model =
         BearingModel::new(&g, &steel, &steel, HertzModel::HertzCircular, params).unwrap();
