@@ -5,10 +5,9 @@
 //! terminal. Keys are documented in docs/cli.md.
 
 use indicatif::{ProgressBar, ProgressStyle};
-use rolldyn::dynamics::BearingModel;
+use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{ExplicitRk, IntegrationStats, RunEnd, StepControl, run};
-use rolldyn::kinematics::cage_speed_ratio;
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
 use rolldyn_case::Case;
 use rolldyn_case::raw::{IntegratorChoice, StartChoice};
@@ -85,6 +84,7 @@ impl Channels {
             ("drive_work_j", "J"),
             ("dissipated_energy_j", "J"),
             ("mechanical_energy_j", "J"),
+            ("pure_rolling_cage_speed_ratio", "1"),
         ] {
             series.channel(name, unit);
         }
@@ -93,6 +93,8 @@ impl Channels {
             series.channel(format!("ball{j}_orbital_speed_rpm"), "rpm");
             series.channel(format!("ball{j}_load_inner_n"), "N");
             series.channel(format!("ball{j}_load_outer_n"), "N");
+            series.channel(format!("ball{j}_contact_angle_inner_deg"), "deg");
+            series.channel(format!("ball{j}_contact_angle_outer_deg"), "deg");
         }
         Self { series, balls }
     }
@@ -103,7 +105,7 @@ impl Channels {
         t: f64,
         y: &[f64],
         row: &mut Vec<f64>,
-        loads: &mut [[f64; 2]],
+        contacts: &mut [ContactSample],
     ) {
         let l = model.layout();
         let (c, r) = (l.cage(), l.ring());
@@ -125,10 +127,18 @@ impl Channels {
             dissipated,
             model.energy(t, y).total(),
         ]);
-        model.contact_loads(t, y, loads);
-        for (j, load) in loads.iter().enumerate().take(self.balls) {
+        model.contact_samples(t, y, contacts);
+        row.push(model.pure_rolling_ratio(contacts, y));
+        for (j, c) in contacts.iter().enumerate().take(self.balls) {
             let b = l.ball(j);
-            row.extend_from_slice(&[y[b + 2], y[b + 5] / RPM, load[0], load[1]]);
+            row.extend_from_slice(&[
+                y[b + 2],
+                y[b + 5] / RPM,
+                c.load_inner,
+                c.load_outer,
+                c.angle_inner.to_degrees(),
+                c.angle_outer.to_degrees(),
+            ]);
         }
         self.series.push(row);
     }
@@ -220,7 +230,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
 
     let mut channels = Channels::new(g.ball_count);
     let mut row = Vec::with_capacity(channels.series.width());
-    let mut loads = vec![[0.0; 2]; g.ball_count];
+    let mut loads = vec![ContactSample::default(); g.ball_count];
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
     let start = Instant::now();
     let mut last_draw = 0.0;
@@ -288,8 +298,7 @@ fn summarise(
     let inner_speed = mean(&window("inner_ring_speed_rpm"));
     let cage_speed = mean(&window("cage_speed_rpm"));
     let g = &case.bearing.geometry;
-    let alpha = g.nominal_contact_angle();
-    let rolling_ratio = cage_speed_ratio(g.ball_diameter / g.pitch_diameter, alpha, alpha, alpha);
+    let rolling_ratio = mean(&window("pure_rolling_cage_speed_ratio"));
     let balls = g.ball_count;
     let mut inner_loads = Vec::new();
     let mut outer_loads = Vec::new();

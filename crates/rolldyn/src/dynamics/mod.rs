@@ -13,5 +13,6 @@
 pub mod model;
 
 pub use model::{
-    BearingModel, CageParameters, DragParameters, DynamicsParameters, Energy, StateLayout,
+    BearingModel, CageParameters, ContactSample, DragParameters, DynamicsParameters, Energy,
+    StateLayout,
 };

@@ -181,6 +181,19 @@ impl StateLayout {
     }
 }
 
+/// Contact state of one ball for output.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactSample {
+    /// Inner normal load Q_i \[N\].
+    pub load_inner: f64,
+    /// Outer normal load Q_o \[N\].
+    pub load_outer: f64,
+    /// Inner contact angle α_i \[rad\] (0 when open).
+    pub angle_inner: f64,
+    /// Outer contact angle α_o \[rad\] (0 when open).
+    pub angle_outer: f64,
+}
+
 /// Energy of a state \[J\].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Energy {
@@ -570,22 +583,51 @@ impl BearingModel {
         })
     }
 
-    /// Normal loads (Q_inner, Q_outer) of every ball at state `y` \[N\],
-    /// written into `out` (one entry per ball).
-    pub fn contact_loads(&self, t: f64, y: &[f64], out: &mut [[f64; 2]]) {
+    /// Contact loads and angles of every ball at state `y`, written into
+    /// `out` (one entry per ball).
+    pub fn contact_samples(&self, t: f64, y: &[f64], out: &mut [ContactSample]) {
         let (inner, outer) = self.ring_motion(t, y);
-        for (j, loads) in out.iter_mut().enumerate().take(self.layout.balls) {
+        for (j, sample) in out.iter_mut().enumerate().take(self.layout.balls) {
             let (q, v, w, _) = self.ball_kinematics(j, y);
             let episodes = &self.episodes[j];
-            for (k, (ring, table)) in [(&inner, &self.inner_table), (&outer, &self.outer_table)]
-                .into_iter()
-                .enumerate()
+            *sample = ContactSample::default();
+            if let Some(c) = self.race_contact(&inner, &self.inner_table, &episodes[0], &q, &v, &w)
             {
-                loads[k] = self
-                    .race_contact(ring, table, &episodes[k], &q, &v, &w)
-                    .map_or(0.0, |c| (-c.force).dot(&c.geometry.normal));
+                sample.load_inner = (-c.force).dot(&c.geometry.normal);
+                sample.angle_inner = c.geometry.contact_angle;
+            }
+            if let Some(c) = self.race_contact(&outer, &self.outer_table, &episodes[1], &q, &v, &w)
+            {
+                sample.load_outer = (-c.force).dot(&c.geometry.normal);
+                sample.angle_outer = c.geometry.contact_angle;
             }
         }
+    }
+
+    /// Pure-rolling cage-speed ratio ω_c/ω_i of MODEL §7 for the current
+    /// state: the mean contact angles of the loaded contacts and the mean
+    /// ball attitude angle β (spin axis relative to the cage, as in Harris)
+    /// in the formula with different inner and outer angles. The reference
+    /// of the cage speed ratio (CSR) of seed 002 §4.2.
+    pub fn pure_rolling_ratio(&self, samples: &[ContactSample], y: &[f64]) -> f64 {
+        let l = self.layout;
+        let (mut ai, mut ao, mut beta, mut n) = (0.0, 0.0, 0.0, 0.0);
+        for (j, s) in samples.iter().enumerate().take(l.balls) {
+            if s.load_inner > 0.0 && s.load_outer > 0.0 {
+                let b = l.ball(j);
+                ai += s.angle_inner;
+                ao += s.angle_outer;
+                beta += y[b + 7].atan2(-(y[b + 6] - y[b + 5]));
+                n += 1.0;
+            }
+        }
+        let g = &self.geometry;
+        let gamma = g.ball_diameter / g.pitch_diameter;
+        if n == 0.0 {
+            let a = g.nominal_contact_angle();
+            return cage_speed_ratio(gamma, a, a, a);
+        }
+        cage_speed_ratio(gamma, ai / n, ao / n, beta / n)
     }
 
     /// Drive work and dissipated energy accumulated in state `y` \[J\].

@@ -99,16 +99,16 @@ fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
     let z = g.ball_count;
     let (t_start, t_end, dt) = (2e-3, 6e-3, 1e-5);
     let mut sample = vec![0.0; y0.len()];
-    let mut loads_now = vec![[0.0; 2]; z];
+    let mut loads_now = vec![rolldyn::dynamics::ContactSample::default(); z];
     let (mut sum_i, mut sum_o, mut n) = (0.0, 0.0, 0usize);
     let mut next = t_start;
     while rk.t() < t_end {
         rk.step(&mut model, t_end).unwrap();
         while next <= rk.t() {
             rk.interpolate(next, &mut sample);
-            model.contact_loads(next, &sample, &mut loads_now);
-            sum_i += loads_now.iter().map(|l| l[0]).sum::<f64>();
-            sum_o += loads_now.iter().map(|l| l[1]).sum::<f64>();
+            model.contact_samples(next, &sample, &mut loads_now);
+            sum_i += loads_now.iter().map(|l| l.load_inner).sum::<f64>();
+            sum_o += loads_now.iter().map(|l| l.load_outer).sum::<f64>();
             n += z;
             next += dt;
         }
