@@ -308,10 +308,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     .map_err(|e| Failure::Internal(format!("cannot create {output}: {e}")))?;
                 let json_text = serde_json::to_string_pretty(&rows)
                     .map_err(|e| Failure::Internal(e.to_string()))?;
-                quasistatic::write_atomic(&dir.join("sweep.csv"), &quasistatic::sweep_csv(&rows))
-                    .map_err(Failure::Internal)?;
-                quasistatic::write_atomic(&dir.join("sweep.json"), &json_text)
-                    .map_err(Failure::Internal)?;
+                let write = |name: &str, text: &str| {
+                    rolldyn_io::write_atomic(&dir.join(name), text.as_bytes())
+                        .map_err(|e| Failure::Internal(e.to_string()))
+                };
+                write("sweep.csv", &quasistatic::sweep_csv(&rows))?;
+                write("sweep.json", &json_text)?;
                 let failed = rows.iter().filter(|r| !r.converged).count();
                 let summary = format!(
                     "{} points solved ({} failed; reasons in the error column); wrote {}/sweep.csv and {}/sweep.json\n",

@@ -11,7 +11,6 @@ use rolldyn_case::Case;
 use rolldyn_case::units::{AngularSpeed, Force, Quantity};
 use serde::Serialize;
 use std::fmt::Write as _;
-use std::path::Path;
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
 
@@ -415,12 +414,4 @@ pub fn sweep_csv(rows: &[SweepRow]) -> String {
         );
     }
     out
-}
-
-/// Writes `text` to `path` atomically (temporary file, then rename).
-pub fn write_atomic(path: &Path, text: &str) -> Result<(), String> {
-    let tmp = path.with_extension("tmp");
-    std::fs::write(&tmp, text).map_err(|e| format!("cannot write {}: {e}", tmp.display()))?;
-    std::fs::rename(&tmp, path)
-        .map_err(|e| format!("cannot move {} to {}: {e}", tmp.display(), path.display()))
 }
