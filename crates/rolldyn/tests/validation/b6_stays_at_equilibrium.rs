@@ -19,75 +19,21 @@
 //! settles at 26.30 N, inside that bracket. The test asserts that physical
 //! property: the dynamic loads lie between the two J–H extremes.
 
-use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{BearingModel, CageParameters, DragParameters, DynamicsParameters};
+use super::common::{bearing_7008c, dynamics_7008c};
+use rolldyn::contact::HertzModel;
+use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
-use rolldyn::lubrication::Lubricant;
 use rolldyn::material::Material;
-use rolldyn::operating::{Loads, SpeedProfile};
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
-use rolldyn::traction::{EhlRheology, ModifiedCoulomb, TractionIntegration, TractionModel};
-
-use super::common::bearing_7008c;
 
 #[test]
 fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
     let g = bearing_7008c();
     let steel = Material::STEEL_52100;
-    let speed = 10_000.0 * std::f64::consts::TAU / 60.0;
-    let loads = Loads {
-        force: [200.0, 0.0, 0.0],
-        moment: [0.0; 2],
-    };
+    let (params, eq) = dynamics_7008c(DragParameters::default());
+    let (loads, speed) = (params.loads, params.speed.speed_at(0.0));
     let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
-    let eq = qs
-        .solve(
-            &Conditions {
-                loads,
-                inner_speed: speed,
-                control: RacewayControl::Outer,
-            },
-            &SolverOptions::default(),
-        )
-        .unwrap();
-    let params = DynamicsParameters {
-        inner_ring_mass: 0.5,
-        inner_ring_tilt_inertia: 1e-4,
-        cage: CageParameters {
-            mass: 0.01,
-            inertia: 5e-6,
-            pitch_radius: 27e-3,
-            pocket_clearance: 0.175e-3,
-            pocket_stiffness: 1e7,
-            pocket_damping: 20.0,
-            pocket_friction: ModifiedCoulomb {
-                friction: 0.05,
-                stick_speed: 0.0,
-                full_speed: 1e-2,
-            },
-            whirl: true,
-        },
-        normal_law: NormalForceLaw::Hertz,
-        impact_speed_floor: 1e-3,
-        traction: TractionModel::Ehl(EhlRheology {
-            eyring_stress: 5e6,
-            limiting_shear_coefficient: 0.08,
-            lubricant: Lubricant {
-                viscosity: 0.0467,
-                pressure_viscosity: 2.2e-8,
-            },
-        }),
-        traction_integration: TractionIntegration::Grid {
-            across: 12,
-            along: 6,
-        },
-        speed: SpeedProfile::Constant(speed),
-        loads,
-        gravity: 0.0,
-        planar: false,
-        drag: DragParameters::default(),
-    };
     let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
     let y0 = model.state_from_equilibrium(&eq);
     let control = StepControl::Adaptive {

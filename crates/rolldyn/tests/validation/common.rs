@@ -54,3 +54,124 @@ pub fn bearing_7218b() -> BearingGeometry {
     })
     .expect("7218B geometry is valid")
 }
+
+use rolldyn::contact::{HertzModel, NormalForceLaw};
+use rolldyn::dynamics::{CageParameters, DragParameters, DynamicsParameters};
+use rolldyn::lubrication::Lubricant;
+use rolldyn::material::Material;
+use rolldyn::operating::{Loads, SpeedProfile};
+use rolldyn::quasistatic::{
+    Conditions, Equilibrium, QuasiStaticSolver, RacewayControl, SolverOptions,
+};
+use rolldyn::traction::{EhlRheology, ModifiedCoulomb, TractionIntegration, TractionModel};
+
+/// Seed 000's steel (Table 1).
+pub fn steel_seed000() -> Material {
+    Material {
+        elastic_modulus: 210e9,
+        poisson_ratio: 0.3,
+        density: 7800.0,
+    }
+}
+
+/// Seed 000's dynamic configuration (planar, L–N e = 0.9, modified
+/// Coulomb at the contact centre, damped pockets with friction, 8000 rpm,
+/// gravity), with the assumed values of the 6304 preset: μ = 0.1,
+/// v₁ = 10 mm/s, inner ring + shaft 0.5 kg, cage 5 g, pocket clearance
+/// 0.2 mm. `radial_load` acts on the inner ring along z.
+pub fn seed000_dynamics(radial_load: f64) -> DynamicsParameters {
+    let friction = ModifiedCoulomb {
+        friction: 0.1,
+        stick_speed: 0.0,
+        full_speed: 1e-2,
+    };
+    DynamicsParameters {
+        inner_ring_mass: 0.5,
+        inner_ring_tilt_inertia: 1e-4,
+        cage: CageParameters {
+            mass: 0.005,
+            inertia: 8.2e-7,
+            pitch_radius: 18.005e-3,
+            pocket_clearance: 0.2e-3,
+            pocket_stiffness: 1e7,
+            pocket_damping: 20.0,
+            pocket_friction: friction,
+            whirl: true,
+        },
+        normal_law: NormalForceLaw::LankaraniNikravesh { restitution: 0.9 },
+        impact_speed_floor: 1e-3,
+        traction: TractionModel::ModifiedCoulomb(friction),
+        traction_integration: TractionIntegration::Centre,
+        speed: SpeedProfile::Constant(8000.0 * std::f64::consts::TAU / 60.0),
+        loads: Loads {
+            force: [0.0, 0.0, radial_load],
+            moment: [0.0, 0.0],
+        },
+        gravity: 9.81,
+        planar: true,
+        drag: DragParameters::default(),
+    }
+}
+
+/// The default case's dynamic configuration (7008C, 10 000 rpm,
+/// F_x = 200 N, EHL traction τ₀ 5 MPa, Λ_L 0.08 on the 12 × 6 grid, cage
+/// with whirl, inner ring 0.5 kg) with `drag`, and its Jones–Harris start
+/// (outer control).
+pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium) {
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let speed = 10_000.0 * std::f64::consts::TAU / 60.0;
+    let loads = Loads {
+        force: [200.0, 0.0, 0.0],
+        moment: [0.0; 2],
+    };
+    let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
+    let eq = qs
+        .solve(
+            &Conditions {
+                loads,
+                inner_speed: speed,
+                control: RacewayControl::Outer,
+            },
+            &SolverOptions::default(),
+        )
+        .unwrap();
+    let params = DynamicsParameters {
+        inner_ring_mass: 0.5,
+        inner_ring_tilt_inertia: 1e-4,
+        cage: CageParameters {
+            mass: 0.0031,
+            inertia: 2.4e-6,
+            pitch_radius: 27e-3,
+            pocket_clearance: 0.175e-3,
+            pocket_stiffness: 1e7,
+            pocket_damping: 20.0,
+            pocket_friction: ModifiedCoulomb {
+                friction: 0.05,
+                stick_speed: 0.0,
+                full_speed: 1e-3,
+            },
+            whirl: true,
+        },
+        normal_law: NormalForceLaw::Hertz,
+        impact_speed_floor: 1e-3,
+        traction: TractionModel::Ehl(EhlRheology {
+            eyring_stress: 5e6,
+            limiting_shear_coefficient: 0.08,
+            lubricant: Lubricant {
+                viscosity: 0.0467,
+                pressure_viscosity: 2.2e-8,
+            },
+        }),
+        traction_integration: TractionIntegration::Grid {
+            across: 12,
+            along: 6,
+        },
+        speed: SpeedProfile::Constant(speed),
+        loads,
+        gravity: 0.0,
+        planar: false,
+        drag,
+    };
+    (params, eq)
+}
