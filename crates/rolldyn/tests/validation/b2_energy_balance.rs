@@ -3,13 +3,12 @@
 //! work and the dissipation are integrated as states of the model, so the
 //! balance closes to integrator accuracy.
 
-use super::common::{bearing_7008c, dynamics_7008c, seed000_dynamics, steel_seed000};
+use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, seed000_dynamics, steel_seed000};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::material::Material;
-use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
 /// Integrates `model` from `y0` to `t_end`; returns (drive, ΔE, dissipated).
 fn balance(mut model: BearingModel, y0: &[f64], t_end: f64, rtol: f64) -> (f64, f64, f64) {
@@ -33,19 +32,7 @@ fn balance(mut model: BearingModel, y0: &[f64], t_end: f64, rtol: f64) -> (f64, 
 /// cage started at rest: contacts open and close, balls skid and impact.
 #[test]
 fn b2_drive_work_balances_energy_and_dissipation() {
-    let g = BearingGeometry::new(&GeometrySpec {
-        ball_diameter: 9.52e-3,
-        ball_count: 7,
-        pitch_diameter: 0.0,
-        inner_groove_curvature: 0.52,
-        outer_groove_curvature: 0.52,
-        clearance: Clearance::RacewayDiameters {
-            inner: 26.48e-3,
-            outer: 45.54e-3,
-        },
-        preload: false,
-    })
-    .unwrap();
+    let g = bearing_6304();
     let mut params = seed000_dynamics(100.0);
     params.inner_ring_mass = 0.1;
     params.inner_ring_tilt_inertia = 1e-5;

@@ -17,31 +17,18 @@
 //! the paper's 4.24 %, and at W = 0 (only the ring and shaft weight, 4.9 N)
 //! the cage must be markedly slower (sliding).
 
-use super::common::{seed000_dynamics, steel_seed000};
+use super::common::{bearing_6304, seed000_dynamics, steel_seed000};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
-use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
 
 /// Mean cage speed \[rpm\] over the last `window` s of `t_end` s, started
 /// at rest (`from_rest`) or at pure rolling.
 fn cage_speed(load: f64, t_end: f64, window: f64, from_rest: bool) -> (f64, u64) {
-    let g = BearingGeometry::new(&GeometrySpec {
-        ball_diameter: 9.52e-3,
-        ball_count: 7,
-        pitch_diameter: 0.0,
-        inner_groove_curvature: 0.52,
-        outer_groove_curvature: 0.52,
-        clearance: Clearance::RacewayDiameters {
-            inner: 26.48e-3,
-            outer: 45.54e-3,
-        },
-        preload: false,
-    })
-    .unwrap();
+    let g = bearing_6304();
     let steel = steel_seed000();
     let mut params = seed000_dynamics(-load);
     params.cage.whirl = false;
