@@ -3,9 +3,10 @@
 
 use crate::raw::*;
 use crate::units::{Dimension, Quantity};
+use rolldyn::RingKind;
 use rolldyn::contact::normal_law::DEFAULT_IMPACT_SPEED_FLOOR;
 use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{CageParameters, DragParameters, DynamicsParameters};
+use rolldyn::dynamics::{CageParameters, DragParameters, DynamicsParameters, GuideLand};
 use rolldyn::operating::{Loads, SpeedProfile};
 use rolldyn::traction::{EhlRheology, ModifiedCoulomb, TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, Material};
@@ -778,6 +779,7 @@ impl Case {
                 full_speed: 1e-3,
             },
             whirl: c.whirl,
+            guide: self.guide_land()?,
         };
         Ok(DynamicsParameters {
             inner_ring_mass,
@@ -795,6 +797,67 @@ impl Case {
         })
     }
 }
+
+impl Case {
+    /// The cage guide land, when the cage is ring-guided and whirls: land
+    /// radius from the cage outer (outer-ring guidance) or inner diameter,
+    /// width G, radial clearance C_g/2, η₀ from the lubricant.
+    fn guide_land(&self) -> Result<Option<GuideLand>, Invalid> {
+        let c = &self.cage;
+        let ring = match c.guidance {
+            Some(CageGuidance::OuterRing) => RingKind::Outer,
+            Some(CageGuidance::InnerRing) => RingKind::Inner,
+            _ => return Ok(None),
+        };
+        if !c.whirl {
+            return Ok(None);
+        }
+        let need =
+            |v: Option<f64>, key: &str, what: &str| v.ok_or_else(|| Invalid::missing(key, what));
+        let diameter = match ring {
+            RingKind::Outer => need(
+                c.outer_diameter,
+                "cage.outer_diameter",
+                "a ring-guided cage needs its guiding diameter",
+            )?,
+            RingKind::Inner => need(
+                c.inner_diameter,
+                "cage.inner_diameter",
+                "a ring-guided cage needs its guiding diameter",
+            )?,
+        };
+        let lubricant = self.lubricant.as_ref().ok_or_else(|| {
+            Invalid::new(
+                "cage.guidance",
+                None,
+                "a ring-guided cage needs a [lubricant] section (the guide land is hydrodynamic)",
+            )
+        })?;
+        Ok(Some(GuideLand {
+            ring,
+            land_radius: diameter / 2.0,
+            width: need(
+                c.guide_land_width,
+                "cage.guide_land_width",
+                "a ring-guided cage needs the guide-land width",
+            )?,
+            radial_clearance: need(
+                c.guide_clearance,
+                "cage.guide_clearance",
+                "a ring-guided cage needs the guide clearance",
+            )? / 2.0,
+            viscosity: lubricant.viscosity,
+            max_eccentricity: GUIDE_MAX_ECCENTRICITY,
+            stop_stiffness: GUIDE_STOP_STIFFNESS,
+        }))
+    }
+}
+
+/// Largest eccentricity ratio of the short-bearing guide-land law (MODEL §5).
+pub const GUIDE_MAX_ECCENTRICITY: f64 = 0.95;
+/// Stiffness of the guide-land stop beyond ε_max \[N/m\]: a stiff contact
+/// (of the order of a cage-material line contact), not from a source.
+pub const GUIDE_STOP_STIFFNESS: f64 = 1e8;
 
 /// Standard gravity g₀ = 9.80665 m/s² (CGPM 1901).
 pub const STANDARD_GRAVITY: f64 = 9.80665;

@@ -14,5 +14,5 @@ pub mod model;
 
 pub use model::{
     BearingModel, CageParameters, ContactSample, DragParameters, DynamicsParameters, Energy,
-    StateLayout,
+    GuideLand, StateLayout,
 };

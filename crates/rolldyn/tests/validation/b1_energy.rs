@@ -52,6 +52,7 @@ fn model() -> BearingModel {
                 full_speed: 1e-3,
             },
             whirl: true,
+            guide: None,
         },
         normal_law: NormalForceLaw::Hertz,
         impact_speed_floor: 1e-3,

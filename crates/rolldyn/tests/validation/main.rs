@@ -18,6 +18,7 @@ mod b3_impact;
 mod b6_stays_at_equilibrium;
 mod c1_seed000;
 mod c5_seed002_table1;
+mod cage_guide;
 mod common;
 mod quasistatic_high_speed;
 mod quasistatic_static;
