@@ -539,7 +539,8 @@ impl BearingModel {
                 .omega_frame
                 .cross(&(geometry.groove_centre - ring.centre));
         let penetration_rate = (v - groove_velocity).dot(&n);
-        let stiffness = table.stiffness(geometry.contact_angle);
+        let hertz = table.at(geometry.contact_angle);
+        let stiffness = hertz.stiffness;
         let state = ContactState {
             stiffness,
             penetration: geometry.penetration,
@@ -552,7 +553,6 @@ impl BearingModel {
         let ball_surface = v + w.cross(&(point - q));
         let ring_surface = ring.velocity + ring.omega.cross(&(point - ring.centre));
         let slip = ball_surface - ring_surface;
-        let hertz = table.at(geometry.contact_angle);
         let ellipse = hertz.at_load(load);
         // Rolling direction: the azimuthal direction at P, tangent to the contact.
         let azimuthal = Vector3::new(0.0, -point.z, point.y);

@@ -180,24 +180,17 @@ impl ExplicitRk {
 
     /// Hairer's starting-step estimate (Solving ODEs I, §II.4).
     fn starting_step(&mut self, system: &impl OdeSystem, rtol: f64) -> f64 {
-        let n = self.y.len() as f64;
-        let scale = |i: usize, y: &[f64]| self.atol[i] + rtol * y[i].abs();
-        let d0 = (self
-            .y
-            .iter()
-            .enumerate()
-            .map(|(i, v)| (v / scale(i, &self.y)).powi(2))
-            .sum::<f64>()
-            / n)
-            .sqrt();
-        let d1 = (self
-            .f
-            .iter()
-            .enumerate()
-            .map(|(i, v)| (v / scale(i, &self.y)).powi(2))
-            .sum::<f64>()
-            / n)
-            .sqrt();
+        // Weighted RMS norm of a vector, scaled at the current state.
+        let norm = |v: &mut dyn Iterator<Item = f64>| {
+            let (mut sum, mut n) = (0.0, 0.0);
+            for (i, x) in v.enumerate() {
+                sum += (x / (self.atol[i] + rtol * self.y[i].abs())).powi(2);
+                n += 1.0;
+            }
+            (sum / n).sqrt()
+        };
+        let d0 = norm(&mut self.y.iter().copied());
+        let d1 = norm(&mut self.f.iter().copied());
         let h0 = if d0 < 1e-5 || d1 < 1e-5 {
             1e-6
         } else {
@@ -208,16 +201,7 @@ impl ExplicitRk {
         }
         system.rhs(self.t + h0, &self.stage, &mut self.y_new);
         self.stats.rhs_evaluations += 1;
-        let d2 = (self
-            .y_new
-            .iter()
-            .zip(&self.f)
-            .enumerate()
-            .map(|(i, (a, b))| ((a - b) / scale(i, &self.y)).powi(2))
-            .sum::<f64>()
-            / n)
-            .sqrt()
-            / h0;
+        let d2 = norm(&mut self.y_new.iter().zip(&self.f).map(|(a, b)| a - b)) / h0;
         let order = self.tableau.order as f64;
         let h1 = if d1.max(d2) <= 1e-15 {
             (h0 * 1e-3).max(1e-6)
