@@ -4,11 +4,17 @@
 use crate::raw::*;
 use crate::units::{Dimension, Quantity};
 use rolldyn::RingKind;
+use rolldyn::cage::pocket::hertz_pocket_stiffness;
+use rolldyn::cage::{PocketLaw, PocketShape};
 use rolldyn::contact::normal_law::DEFAULT_IMPACT_SPEED_FLOOR;
 use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{CageParameters, DragParameters, DynamicsParameters, GuideLand};
-use rolldyn::operating::{Loads, SpeedProfile};
-use rolldyn::traction::{EhlRheology, ModifiedCoulomb, TractionIntegration, TractionModel};
+use rolldyn::dynamics::{
+    CageParameters, DragParameters, DynamicsParameters, GuideLand, OuterRing, Support,
+};
+use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
+use rolldyn::traction::{
+    EhlRheology, ModifiedCoulomb, TractionCurve, TractionIntegration, TractionModel,
+};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, Material};
 
 /// A rule broken by one key: the raw material of a [`crate::CaseError`].
@@ -50,8 +56,17 @@ pub struct Case {
     pub lubricant: Option<Lubricant>,
     /// Inner-ring speed, if given.
     pub speed: Option<SpeedProfile>,
-    /// Loads on the inner ring.
+    /// Constant loads on the inner ring (the quasi-static solvers; the
+    /// start of a load table).
     pub loads: Loads,
+    /// Load table of a dynamic run, if given.
+    pub load_profile: Option<LoadProfile>,
+    /// Spring–damper between inner ring and ground.
+    pub inner_support: Support,
+    /// Outer ring on a housing spring–damper, if given.
+    pub outer_ring: Option<OuterRing>,
+    /// Elastic-hysteresis coefficient α_h of the rolling resistance.
+    pub rolling_hysteresis: f64,
     /// Normal force law.
     pub normal_law: NormalForceLaw,
     /// Hertz contact-stiffness model.
@@ -112,7 +127,7 @@ pub struct Bearing {
 }
 
 /// Cage data in SI.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Cage {
     /// Guidance.
     pub guidance: Option<CageGuidance>,
@@ -138,6 +153,16 @@ pub struct Cage {
     pub pocket_friction: f64,
     /// Whether the cage whirls.
     pub whirl: bool,
+    /// Pocket shape.
+    pub pocket_shape: PocketShape,
+    /// Pocket law.
+    pub pocket_law: PocketLawChoice,
+    /// Film force at the pocket wall (gupta_film) \[N\].
+    pub pocket_wall_force: f64,
+    /// Cage material, if given.
+    pub material: Option<NamedMaterial>,
+    /// Unbalance m_u e \[kg·m\].
+    pub unbalance: f64,
 }
 
 /// A material with a display name.
@@ -175,6 +200,8 @@ pub struct Lubricant {
     pub specific_heat: Option<f64>,
     /// Reference temperature \[K\].
     pub temperature: Option<f64>,
+    /// Pressure–viscosity law.
+    pub pressure_viscosity_model: rolldyn::lubrication::PressureViscosity,
 }
 
 /// Built-in material names and properties.
@@ -264,6 +291,51 @@ impl Case {
             force: [force(&op.force_x), force(&op.force_y), force(&op.force_z)],
             moment: [moment(&op.moment_y), moment(&op.moment_z)],
         };
+        let load_profile = match &op.load_profile {
+            None => None,
+            Some(points) => {
+                if let Some(key) = [
+                    ("force_x", &op.force_x),
+                    ("force_y", &op.force_y),
+                    ("force_z", &op.force_z),
+                ]
+                .iter()
+                .find(|(_, q)| q.is_some())
+                .map(|(k, _)| *k)
+                .or_else(|| {
+                    [("moment_y", &op.moment_y), ("moment_z", &op.moment_z)]
+                        .iter()
+                        .find(|(_, q)| q.is_some())
+                        .map(|(k, _)| *k)
+                }) {
+                    return Err(Invalid::new(
+                        "operating.load_profile",
+                        None,
+                        format!(
+                            "give either constant loads (operating.{key}, ...) or operating.load_profile, not both"
+                        ),
+                    ));
+                }
+                let table = points
+                    .iter()
+                    .map(|p| {
+                        (
+                            p.time.si,
+                            Loads {
+                                force: [force(&p.force_x), force(&p.force_y), force(&p.force_z)],
+                                moment: [moment(&p.moment_y), moment(&p.moment_z)],
+                            },
+                        )
+                    })
+                    .collect();
+                Some(LoadProfile::piecewise_linear(table).map_err(|(i, e)| {
+                    let v = points.get(i).map(|p| p.time.to_string());
+                    Invalid::new(format!("operating.load_profile[{i}].time"), v, e.rule)
+                })?)
+            }
+        };
+        // The quasi-static solvers (and a dynamic run's start) see the loads at t = 0.
+        let loads = load_profile.as_ref().map_or(loads, |p| p.at(0.0));
 
         let normal_law = raw.model.normal_law.map_or(NormalForceLaw::Hertz, |c| c.0);
         normal_law.validate().map_err(|e| {
@@ -306,6 +378,69 @@ impl Case {
             &raw.inner_ring.tilt_inertia,
             positive,
         )?;
+        let ir = &raw.inner_ring;
+        let zero = |v: Option<f64>| v.unwrap_or(0.0);
+        let radial_k = zero(checked(
+            "inner_ring.support_radial_stiffness",
+            &ir.support_radial_stiffness,
+            non_negative,
+        )?);
+        let radial_c = zero(checked(
+            "inner_ring.support_radial_damping",
+            &ir.support_radial_damping,
+            non_negative,
+        )?);
+        let inner_support = Support {
+            stiffness: [
+                zero(checked(
+                    "inner_ring.support_axial_stiffness",
+                    &ir.support_axial_stiffness,
+                    non_negative,
+                )?),
+                radial_k,
+                radial_k,
+            ],
+            damping: [
+                zero(checked(
+                    "inner_ring.support_axial_damping",
+                    &ir.support_axial_damping,
+                    non_negative,
+                )?),
+                radial_c,
+                radial_c,
+            ],
+        };
+        let outer_ring = match &raw.outer_ring {
+            None => None,
+            Some(o) => {
+                let k = checked(
+                    "outer_ring.housing_stiffness",
+                    &Some(o.housing_stiffness.clone()),
+                    non_negative,
+                )?
+                .unwrap_or(0.0);
+                let c = zero(checked(
+                    "outer_ring.housing_damping",
+                    &o.housing_damping,
+                    non_negative,
+                )?);
+                Some(OuterRing {
+                    mass: checked("outer_ring.mass", &Some(o.mass.clone()), positive)?
+                        .unwrap_or(0.0),
+                    housing: Support {
+                        stiffness: [0.0, k, k],
+                        damping: [0.0, c, c],
+                    },
+                })
+            }
+        };
+        let rolling_hysteresis = positive_number(
+            "model.rolling_hysteresis",
+            raw.model.rolling_hysteresis,
+            |v| (0.0..1.0).contains(&v),
+            "the hysteresis coefficient must lie in [0, 1) (steel: 0.007)",
+        )?
+        .unwrap_or(0.0);
         let d = &raw.drag;
         let coefficient = |key: &str, v: Option<f64>| {
             positive_number(key, v, |x| x >= 0.0, "must not be negative").map(|v| v.unwrap_or(0.0))
@@ -342,6 +477,10 @@ impl Case {
             lubricant,
             speed,
             loads,
+            load_profile,
+            inner_support,
+            outer_ring,
+            rolling_hysteresis,
             normal_law,
             contact_stiffness: raw.model.contact_stiffness.unwrap_or_default(),
             impact_speed_floor,
@@ -578,6 +717,16 @@ fn cage(c: &RawCage) -> Result<Cage, Invalid> {
         )?
         .unwrap_or(DEFAULT_POCKET_FRICTION),
         whirl: c.whirl.unwrap_or(true),
+        pocket_shape: c.pocket_shape.unwrap_or_default(),
+        pocket_law: c.pocket_law.unwrap_or(PocketLawChoice::Linear),
+        pocket_wall_force: checked("cage.pocket_wall_force", &c.pocket_wall_force, non_negative)?
+            .unwrap_or(GUPTA_WALL_FORCE),
+        material: c
+            .material
+            .as_ref()
+            .map(|m| material("cage.material", Some(m)))
+            .transpose()?,
+        unbalance: checked("cage.unbalance", &c.unbalance, non_negative)?.unwrap_or(0.0),
     };
     if let (Some(i), Some(o)) = (cage.inner_diameter, cage.outer_diameter) {
         if o <= i {
@@ -663,8 +812,13 @@ fn lubricant(l: &RawLubricant) -> Result<Lubricant, Invalid> {
                 Err("must be above absolute zero".into())
             }
         })?,
+        pressure_viscosity_model: l.pressure_viscosity_model.unwrap_or_default(),
     })
 }
+
+/// Film force at the pocket wall of the gupta_film law \[N\] (seed 001
+/// eq 28: K'_c = 11/C_p with C_p the per-side clearance).
+pub const GUPTA_WALL_FORCE: f64 = 11.0;
 
 /// Default ball–pocket friction coefficient (lubricated steel on cage
 /// material; seeds 001 and 002 use 0.01–0.1).
@@ -693,6 +847,26 @@ fn traction(
                 .map_err(|e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule))?;
             TractionModel::ModifiedCoulomb(law)
         }
+        Some(TractionChoice::Table(RawTraction::TractionCurve {
+            a,
+            b,
+            c,
+            d,
+            slip,
+            full_speed,
+        })) => {
+            let law = TractionCurve {
+                a: *a,
+                b: *b,
+                c: *c,
+                d: *d,
+                slip: slip.unwrap_or_default(),
+                full_speed: full_speed.as_ref().map_or(1e-3, |q| q.si),
+            };
+            law.validate()
+                .map_err(|e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule))?;
+            TractionModel::TractionCurve(law)
+        }
         Some(TractionChoice::Table(RawTraction::Ehl {
             eyring_stress,
             limiting_shear_coefficient,
@@ -706,6 +880,7 @@ fn traction(
                 lubricant: rolldyn::lubrication::Lubricant {
                     viscosity: lub.viscosity,
                     pressure_viscosity: lub.pressure_viscosity,
+                    pressure_model: lub.pressure_viscosity_model,
                 },
             };
             law.validate()
@@ -767,12 +942,9 @@ impl Case {
                 "cage.pocket_clearance",
                 "a dynamic run needs the pocket clearance",
             )?,
-            pocket_stiffness: need(
-                c.pocket_stiffness,
-                "cage.pocket_stiffness",
-                "a dynamic run needs the ball–pocket contact stiffness, e.g. \"1e7 N/m\"",
-            )?,
-            pocket_damping: c.pocket_damping.unwrap_or(0.0),
+            pocket_shape: c.pocket_shape,
+            pocket_law: self.pocket_law()?,
+            unbalance: c.unbalance,
             pocket_friction: ModifiedCoulomb {
                 friction: c.pocket_friction,
                 stick_speed: 0.0,
@@ -790,7 +962,13 @@ impl Case {
             traction: self.traction,
             traction_integration: self.traction_integration,
             speed,
-            loads: self.loads,
+            loads: self
+                .load_profile
+                .clone()
+                .unwrap_or(LoadProfile::Constant(self.loads)),
+            inner_support: self.inner_support,
+            outer_ring: self.outer_ring,
+            rolling_hysteresis: self.rolling_hysteresis,
             gravity: if self.gravity { STANDARD_GRAVITY } else { 0.0 },
             planar: self.planar,
             drag: self.drag,
@@ -799,6 +977,56 @@ impl Case {
 }
 
 impl Case {
+    /// The ball–pocket law with its constants: K_bc of the hertz laws from
+    /// the ball and pocket curvatures and the ball and cage materials.
+    fn pocket_law(&self) -> Result<PocketLaw, Invalid> {
+        let c = &self.cage;
+        let damping = c.pocket_damping.unwrap_or(0.0);
+        let hertz = || -> Result<f64, Invalid> {
+            let cage = c.material.as_ref().ok_or_else(|| {
+                Invalid::missing(
+                    "cage.material",
+                    "the hertz and gupta_film pocket laws need the cage material (e.g. a table with elastic_modulus, poisson_ratio, density)",
+                )
+            })?;
+            let clearance = c.pocket_clearance.ok_or_else(|| {
+                Invalid::missing(
+                    "cage.pocket_clearance",
+                    "a dynamic run needs the pocket clearance",
+                )
+            })?;
+            let ep =
+                rolldyn::material::effective_modulus(&self.materials.ball.material, &cage.material);
+            hertz_pocket_stiffness(
+                c.pocket_shape,
+                self.bearing.geometry.ball_diameter,
+                clearance,
+                ep,
+            )
+            .map_err(|e| Invalid::new("cage.pocket_clearance", Some(e.value), e.rule))
+        };
+        Ok(match c.pocket_law {
+            PocketLawChoice::Linear => PocketLaw::Linear {
+                stiffness: c.pocket_stiffness.ok_or_else(|| {
+                    Invalid::missing(
+                        "cage.pocket_stiffness",
+                        "the linear pocket law needs the ball–pocket contact stiffness, e.g. \"1e7 N/m\"",
+                    )
+                })?,
+                damping,
+            },
+            PocketLawChoice::Hertz => PocketLaw::Hertz {
+                stiffness: hertz()?,
+                damping,
+            },
+            PocketLawChoice::GuptaFilm => PocketLaw::GuptaFilm {
+                wall_force: c.pocket_wall_force,
+                stiffness: hertz()?,
+                damping,
+            },
+        })
+    }
+
     /// The cage guide land, when the cage is ring-guided and whirls: land
     /// radius from the cage outer (outer-ring guidance) or inner diameter,
     /// width G, radial clearance C_g/2, η₀ from the lubricant.

@@ -29,6 +29,8 @@ pub struct RawCase {
     /// Inner ring (with what turns with it) for the dynamic engine.
     #[serde(default)]
     pub inner_ring: RawInnerRing,
+    /// Outer ring on a housing spring–damper (dynamic engine; absent: fixed).
+    pub outer_ring: Option<RawOuterRing>,
     /// Drag of the air–oil mixture on balls and cage (dynamic engine).
     #[serde(default)]
     pub drag: RawDrag,
@@ -120,10 +122,24 @@ pub struct RawCage {
     pub mass: Option<Quantity<Mass>>,
     /// Cage polar moment of inertia about the bearing axis.
     pub inertia: Option<Quantity<Inertia>>,
+    /// Pocket shape: "cylindrical" (default; no radial guidance by the
+    /// balls) or "spherical".
+    pub pocket_shape: Option<rolldyn::cage::PocketShape>,
+    /// Ball–pocket normal force law: "linear" (default; seed 002 eq 6),
+    /// "hertz" (seed 001 eq 29; K_bc from the ball and pocket curvatures and
+    /// `cage.material`) or "gupta_film" (seed 001 eqs 26–28).
+    pub pocket_law: Option<PocketLawChoice>,
     /// Ball–pocket contact stiffness k (linear law, seed 002 eq 6).
     pub pocket_stiffness: Option<Quantity<Stiffness>>,
     /// Ball–pocket contact damping c.
     pub pocket_damping: Option<Quantity<Damping>>,
+    /// Film force at the pocket wall F_w of the gupta_film law (default
+    /// 11 N, seed 001 eq 28).
+    pub pocket_wall_force: Option<Quantity<Force>>,
+    /// Cage material (needed by the hertz and gupta_film pocket laws).
+    pub material: Option<MaterialChoice>,
+    /// Unbalance m_u e of the cage (mass × radius), at the cage angle.
+    pub unbalance: Option<Quantity<Unbalance>>,
     /// Ball–pocket friction coefficient μ_p (default 0.05).
     pub pocket_friction: Option<f64>,
     /// Whether the cage centre may whirl (default true; false: rotation only).
@@ -156,6 +172,40 @@ pub struct RawInnerRing {
     pub mass: Option<Quantity<Mass>>,
     /// Transverse (tilt) moment of inertia. Default: that of the ring annulus.
     pub tilt_inertia: Option<Quantity<Inertia>>,
+    /// Radial (y, z) stiffness of a support between ring and ground (seed
+    /// 002 eqs 11–13; default 0: free).
+    pub support_radial_stiffness: Option<Quantity<Stiffness>>,
+    /// Axial (x) support stiffness (default 0).
+    pub support_axial_stiffness: Option<Quantity<Stiffness>>,
+    /// Radial support damping (default 0).
+    pub support_radial_damping: Option<Quantity<Damping>>,
+    /// Axial support damping (default 0).
+    pub support_axial_damping: Option<Quantity<Damping>>,
+}
+
+/// The outer ring on a housing spring–damper (seed 002 eqs 14–15): radial
+/// translation (y_o, z_o).
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawOuterRing {
+    /// Mass of the outer ring (with what moves with it).
+    pub mass: Quantity<Mass>,
+    /// Radial housing stiffness.
+    pub housing_stiffness: Quantity<Stiffness>,
+    /// Radial housing damping (default 0).
+    pub housing_damping: Option<Quantity<Damping>>,
+}
+
+/// Ball–pocket normal force law (MODEL §5).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum PocketLawChoice {
+    /// k δ + c δ̇ beyond the clearance (seed 002 eq 6).
+    Linear,
+    /// K_bc δ^{3/2} + c δ̇ beyond the clearance (seed 001 eq 29).
+    Hertz,
+    /// F_w d/c inside the clearance, F_w + Hertz beyond (seed 001 eqs 26–28).
+    GuptaFilm,
 }
 
 /// Cage guidance.
@@ -260,6 +310,9 @@ pub struct RawLubricant {
     pub specific_heat: Option<Quantity<SpecificHeat>>,
     /// Temperature at which `viscosity` holds.
     pub temperature: Option<Quantity<Temperature>>,
+    /// Pressure–viscosity law of the EHL traction: "barus" (default) or
+    /// "roelands".
+    pub pressure_viscosity_model: Option<rolldyn::lubrication::PressureViscosity>,
 }
 
 /// Operating conditions: inner-ring speed and loads on the inner ring
@@ -281,6 +334,28 @@ pub struct RawOperating {
     /// Moment M_y on the inner ring.
     pub moment_y: Option<Quantity<Moment>>,
     /// Moment M_z on the inner ring.
+    pub moment_z: Option<Quantity<Moment>>,
+    /// Piecewise-linear load table (alternative to the constant loads;
+    /// dynamic runs): `[{ time = "0 s", force_x = "200 N" }, ...]`, times
+    /// increasing, missing components 0.
+    pub load_profile: Option<Vec<RawLoadPoint>>,
+}
+
+/// One point of a load table.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawLoadPoint {
+    /// Time of the point.
+    pub time: Quantity<Time>,
+    /// Axial force F_x.
+    pub force_x: Option<Quantity<Force>>,
+    /// Radial force F_y.
+    pub force_y: Option<Quantity<Force>>,
+    /// Radial force F_z.
+    pub force_z: Option<Quantity<Force>>,
+    /// Moment M_y.
+    pub moment_y: Option<Quantity<Moment>>,
+    /// Moment M_z.
     pub moment_z: Option<Quantity<Moment>>,
 }
 
@@ -314,12 +389,17 @@ pub struct RawModel {
     pub raceway_control: Option<rolldyn::quasistatic::RacewayControl>,
     /// Traction model of the ball–raceway contacts (dynamic engine):
     /// "none" (default), `{ law = "modified_coulomb", friction = 0.1 }`
-    /// (optional stick_speed, full_speed) or `{ law = "ehl", eyring_stress =
-    /// "5 MPa", limiting_shear_coefficient = 0.08 }` (needs the `[lubricant]` section).
+    /// (optional stick_speed, full_speed), `{ law = "traction_curve", a = -0.06,
+    /// b = 8, c = 60, d = 0.06 }` (optional slip, full_speed) or `{ law = "ehl",
+    /// eyring_stress = "5 MPa", limiting_shear_coefficient = 0.08 }` (needs the
+    /// `[lubricant]` section).
     pub traction: Option<TractionChoice>,
     /// Traction integration: `{ method = "grid", across = 12, along = 6 }`
     /// (default) or `{ method = "centre" }`.
     pub traction_integration: Option<rolldyn::traction::TractionIntegration>,
+    /// Elastic-hysteresis coefficient α_h of the rolling resistance
+    /// (MODEL §3; seed 004 eq 21: 0.007 for steel). Default 0 (off).
+    pub rolling_hysteresis: Option<f64>,
     /// Planar mode (seed 000): axial motion and tilts frozen (default false).
     pub planar: Option<bool>,
     /// Gravity along −z (default false).
@@ -351,6 +431,21 @@ pub enum RawTraction {
         /// Slip speed from which full friction acts v₁ (default 1 mm/s).
         full_speed: Option<Quantity<Velocity>>,
     },
+    /// Traction curve μ(S) = (A + B S) e^{−C S} + D (seed 004 eq 18).
+    TractionCurve {
+        /// A.
+        a: f64,
+        /// B (per unit of S).
+        b: f64,
+        /// C ≥ 0 (per unit of S).
+        c: f64,
+        /// D.
+        d: f64,
+        /// What S is: "slide_to_roll" (default, |Δv|/|u|) or "slip_speed" (m/s).
+        slip: Option<rolldyn::traction::SlipMeasure>,
+        /// Slip speed of full traction (regularisation; default 1 mm/s).
+        full_speed: Option<Quantity<Velocity>>,
+    },
     /// EHL rheology (seed 001 eqs 13–15; lubricant from the `[lubricant]` section).
     Ehl {
         /// Eyring stress τ₀.
@@ -366,21 +461,23 @@ impl<'de> Deserialize<'de> for TractionChoice {
         impl<'de> Visitor<'de> for V {
             type Value = TractionChoice;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("\"none\" or a table { law = \"modified_coulomb\" | \"ehl\", ... }")
+                f.write_str("\"none\" or a table { law = \"modified_coulomb\" | \"traction_curve\" | \"ehl\", ... }")
             }
             fn visit_str<E: de::Error>(self, v: &str) -> Result<TractionChoice, E> {
                 match v {
                     "none" => Ok(TractionChoice::Named(v.to_string())),
-                    "modified_coulomb" | "ehl" => Err(E::custom(format!(
+                    "modified_coulomb" | "traction_curve" | "ehl" => Err(E::custom(format!(
                         "the traction law \"{v}\" needs parameters: write a table, e.g. {}",
-                        if v == "ehl" {
-                            "{ law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }"
-                        } else {
-                            "{ law = \"modified_coulomb\", friction = 0.1 }"
+                        match v {
+                            "ehl" =>
+                                "{ law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }",
+                            "traction_curve" =>
+                                "{ law = \"traction_curve\", a = -0.06, b = 8, c = 60, d = 0.06 }",
+                            _ => "{ law = \"modified_coulomb\", friction = 0.1 }",
                         }
                     ))),
                     other => Err(E::custom(format!(
-                        "unknown traction law \"{other}\"; expected none, modified_coulomb or ehl"
+                        "unknown traction law \"{other}\"; expected none, modified_coulomb, traction_curve or ehl"
                     ))),
                 }
             }

@@ -119,8 +119,12 @@ dimension!(/// Windage (quadratic rotational drag) coefficient, SI N·m·s².
     WindageCoefficient, "windage coefficient", "1e-9 N.m.s^2",
     [("n.m.s^2", 1.0), ("n.mm.s^2", 1e-3)]);
 
+dimension!(/// Unbalance (mass × radius), SI kg·m.
+    Unbalance, "unbalance", "50 g.mm",
+    [("kg.m", 1.0), ("g.mm", 1e-6), ("g.cm", 1e-5), ("kg.mm", 1e-3)]);
+
 /// Every dimension's name and units, for "that is a unit of X" messages.
-fn all_units() -> [(&'static str, UnitTable); 22] {
+fn all_units() -> [(&'static str, UnitTable); 23] {
     [
         (Length::NAME, Length::UNITS),
         (Angle::NAME, Angle::UNITS),
@@ -144,6 +148,7 @@ fn all_units() -> [(&'static str, UnitTable); 22] {
         (Damping::NAME, Damping::UNITS),
         (RotationalDamping::NAME, RotationalDamping::UNITS),
         (WindageCoefficient::NAME, WindageCoefficient::UNITS),
+        (Unbalance::NAME, Unbalance::UNITS),
     ]
 }
 

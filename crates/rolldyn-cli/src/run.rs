@@ -53,12 +53,37 @@ pub struct Summary {
     pub max_load_inner_n: f64,
     pub mean_load_outer_n: f64,
     pub max_load_outer_n: f64,
+    pub mean_slide_to_roll_inner: f64,
+    pub mean_slide_to_roll_outer: f64,
+    pub mean_spin_to_roll_inner: f64,
+    pub mean_spin_to_roll_outer: f64,
+    pub mean_attitude_deg: f64,
+    pub mean_yaw_deg: f64,
+    pub max_abs_yaw_deg: f64,
     pub drive_work_j: f64,
     pub dissipated_energy_j: f64,
     pub mechanical_energy_change_j: f64,
     pub energy_balance_error_j: f64,
     pub energy_balance_relative_error: f64,
 }
+
+/// Per-ball channels (name suffix, unit), in the order `record` writes them.
+const BALL_CHANNELS: [(&str, &str); 14] = [
+    ("azimuth_rad", "rad"),
+    ("orbital_speed_rpm", "rpm"),
+    ("load_inner_n", "N"),
+    ("load_outer_n", "N"),
+    ("contact_angle_inner_deg", "deg"),
+    ("contact_angle_outer_deg", "deg"),
+    ("slide_to_roll_inner", "1"),
+    ("slide_to_roll_outer", "1"),
+    ("spin_to_roll_inner", "1"),
+    ("spin_to_roll_outer", "1"),
+    ("film_inner_m", "m"),
+    ("film_outer_m", "m"),
+    ("attitude_deg", "deg"),
+    ("yaw_deg", "deg"),
+];
 
 /// Channel layout of the recorder.
 struct Channels {
@@ -81,6 +106,10 @@ impl Channels {
             ("inner_ring_z_m", "m"),
             ("inner_ring_tilt_y_rad", "rad"),
             ("inner_ring_tilt_z_rad", "rad"),
+            ("inner_ring_velocity_y_m_s", "m/s"),
+            ("inner_ring_velocity_z_m_s", "m/s"),
+            ("outer_ring_y_m", "m"),
+            ("outer_ring_z_m", "m"),
             ("drive_work_j", "J"),
             ("dissipated_energy_j", "J"),
             ("mechanical_energy_j", "J"),
@@ -89,12 +118,9 @@ impl Channels {
             series.channel(name, unit);
         }
         for j in 0..balls {
-            series.channel(format!("ball{j}_azimuth_rad"), "rad");
-            series.channel(format!("ball{j}_orbital_speed_rpm"), "rpm");
-            series.channel(format!("ball{j}_load_inner_n"), "N");
-            series.channel(format!("ball{j}_load_outer_n"), "N");
-            series.channel(format!("ball{j}_contact_angle_inner_deg"), "deg");
-            series.channel(format!("ball{j}_contact_angle_outer_deg"), "deg");
+            for (name, unit) in BALL_CHANNELS {
+                series.channel(format!("ball{j}_{name}"), unit);
+            }
         }
         Self { series, balls }
     }
@@ -123,6 +149,10 @@ impl Channels {
             y[r + 2],
             y[r + 3],
             y[r + 4],
+            y[r + 6],
+            y[r + 7],
+            y[l.outer()],
+            y[l.outer() + 1],
             drive,
             dissipated,
             model.energy(t, y).total(),
@@ -131,13 +161,22 @@ impl Channels {
         row.push(model.pure_rolling_ratio(contacts, y));
         for (j, c) in contacts.iter().enumerate().take(self.balls) {
             let b = l.ball(j);
+            let (attitude, yaw) = model.ball_attitude(j, y);
             row.extend_from_slice(&[
                 y[b + 2],
                 y[b + 5] / RPM,
-                c.load_inner,
-                c.load_outer,
-                c.angle_inner.to_degrees(),
-                c.angle_outer.to_degrees(),
+                c.inner.load,
+                c.outer.load,
+                c.inner.angle.to_degrees(),
+                c.outer.angle.to_degrees(),
+                c.inner.slide_to_roll,
+                c.outer.slide_to_roll,
+                c.inner.spin_to_roll,
+                c.outer.spin_to_roll,
+                c.inner.film,
+                c.outer.film,
+                attitude.to_degrees(),
+                yaw.to_degrees(),
             ]);
         }
         self.series.push(row);
@@ -174,7 +213,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
             let qs = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
                 .map_err(|e| e.to_string())?;
             let conditions = Conditions {
-                loads: params.loads,
+                loads: params.loads.at(0.0),
                 inner_speed: params.speed.speed_at(0.0),
                 control: case.raceway_control,
             };
@@ -300,12 +339,25 @@ fn summarise(
     let g = &case.bearing.geometry;
     let rolling_ratio = mean(&window("pure_rolling_cage_speed_ratio"));
     let balls = g.ball_count;
-    let mut inner_loads = Vec::new();
-    let mut outer_loads = Vec::new();
-    for j in 0..balls {
-        inner_loads.extend(window(&format!("ball{j}_load_inner_n")));
-        outer_loads.extend(window(&format!("ball{j}_load_outer_n")));
-    }
+    // All balls' samples of one per-ball channel over the window.
+    let pooled = |suffix: &str| -> Vec<f64> {
+        (0..balls)
+            .flat_map(|j| window(&format!("ball{j}_{suffix}")))
+            .collect()
+    };
+    let inner_loads = pooled("load_inner_n");
+    let outer_loads = pooled("load_outer_n");
+    // Ratios over loaded contacts only (an open contact has none).
+    let loaded_mean = |ratio: &str, load: &[f64]| {
+        let values: Vec<f64> = pooled(ratio)
+            .into_iter()
+            .zip(load)
+            .filter(|(_, q)| **q > 0.0)
+            .map(|(v, _)| v)
+            .collect();
+        mean(&values)
+    };
+    let yaw = pooled("yaw_deg");
     let last = |name: &str| column(name).last().copied().unwrap_or(0.0);
     let first = |name: &str| column(name).first().copied().unwrap_or(0.0);
     let drive = last("drive_work_j");
@@ -353,6 +405,13 @@ fn summarise(
         max_load_inner_n: inner_loads.iter().copied().fold(0.0, f64::max),
         mean_load_outer_n: mean(&outer_loads),
         max_load_outer_n: outer_loads.iter().copied().fold(0.0, f64::max),
+        mean_slide_to_roll_inner: loaded_mean("slide_to_roll_inner", &inner_loads),
+        mean_slide_to_roll_outer: loaded_mean("slide_to_roll_outer", &outer_loads),
+        mean_spin_to_roll_inner: loaded_mean("spin_to_roll_inner", &inner_loads),
+        mean_spin_to_roll_outer: loaded_mean("spin_to_roll_outer", &outer_loads),
+        mean_attitude_deg: mean(&pooled("attitude_deg")),
+        mean_yaw_deg: mean(&yaw),
+        max_abs_yaw_deg: yaw.iter().fold(0.0, |m, v| v.abs().max(m)),
         drive_work_j: drive,
         dissipated_energy_j: dissipated,
         mechanical_energy_change_j: delta_e,

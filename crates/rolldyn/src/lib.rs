@@ -13,6 +13,7 @@
 //!   excitation map (MODEL §7);
 //! * [`integrate`] — explicit Runge–Kutta integrators (RK4, Dormand–Prince 5(4));
 //! * [`dynamics`] — the dynamic bearing model (MODEL §1, §2.3, §3, §5);
+//! * [`cage`] — pocket laws and shapes, guide land, unbalance (MODEL §5);
 //! * [`lubrication`] — Hamrock–Dowson films, pressure–viscosity (MODEL §4);
 //! * [`traction`] — traction stress laws and their integration over the contact ellipse (MODEL §3);
 //! * [`math`] — elliptic integrals, root finding, monotone interpolation.
@@ -20,6 +21,7 @@
 //! Equation numbers refer to `../shared/spec/MODEL.md` and the seed papers;
 //! every model's doc comment names its source and any correction.
 
+pub mod cage;
 pub mod contact;
 pub mod dynamics;
 pub mod error;

@@ -1,5 +1,5 @@
 //! Operating conditions (MODEL §8): the inner-ring speed profile and the
-//! loads applied to the inner ring, in SI units.
+//! loads applied to the inner ring (constant or tabulated), in SI units.
 
 use crate::error::InvalidParameter;
 
@@ -84,6 +84,81 @@ pub struct Loads {
     pub moment: [f64; 2],
 }
 
+impl Loads {
+    /// Sum of `self` and `other` scaled by `factor`.
+    fn add_scaled(&self, other: &Loads, factor: f64) -> Loads {
+        let mut out = *self;
+        for k in 0..3 {
+            out.force[k] += factor * other.force[k];
+        }
+        for k in 0..2 {
+            out.moment[k] += factor * other.moment[k];
+        }
+        out
+    }
+
+    /// Difference `self − other`.
+    fn minus(&self, other: &Loads) -> Loads {
+        self.add_scaled(other, -1.0)
+    }
+}
+
+/// Loads on the inner ring as a function of time (MODEL §8).
+#[derive(Debug, Clone, PartialEq)]
+pub enum LoadProfile {
+    /// Constant loads.
+    Constant(Loads),
+    /// Piecewise-linear table of (time \[s\], loads), times strictly
+    /// increasing; held constant outside the table.
+    PiecewiseLinear(Vec<(f64, Loads)>),
+}
+
+impl Default for LoadProfile {
+    fn default() -> Self {
+        Self::Constant(Loads::default())
+    }
+}
+
+impl LoadProfile {
+    /// Builds a piecewise-linear profile, checking the times (the error
+    /// carries the index of the offending point).
+    pub fn piecewise_linear(points: Vec<(f64, Loads)>) -> Result<Self, (usize, InvalidParameter)> {
+        let times: Vec<(f64, f64)> = points.iter().map(|p| (p.0, 0.0)).collect();
+        SpeedProfile::piecewise_linear(times)?;
+        Ok(Self::PiecewiseLinear(points))
+    }
+
+    /// The interval of the table holding t: (loads at t, d loads/dt).
+    fn segment(&self, t: f64) -> (Loads, Loads) {
+        match self {
+            Self::Constant(l) => (*l, Loads::default()),
+            Self::PiecewiseLinear(points) => {
+                let i = points.partition_point(|p| p.0 <= t);
+                match i {
+                    0 => (points[0].1, Loads::default()),
+                    i if i == points.len() => (points[i - 1].1, Loads::default()),
+                    i => {
+                        let (t0, l0) = points[i - 1];
+                        let (t1, l1) = points[i];
+                        let rate = Loads::default().add_scaled(&l1.minus(&l0), 1.0 / (t1 - t0));
+                        (l0.add_scaled(&rate, t - t0), rate)
+                    }
+                }
+            }
+        }
+    }
+
+    /// Loads at time t.
+    pub fn at(&self, t: f64) -> Loads {
+        self.segment(t).0
+    }
+
+    /// Time derivative of the loads at t (zero outside ramps) \[N/s, N·m/s\].
+    pub fn rate(&self, t: f64) -> Loads {
+        self.segment(t).1
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -101,6 +176,20 @@ mod tests {
         assert!((p.speed_at(0.6) - 2000.0 * rpm).abs() < 1e-9);
         assert_eq!(p.speed_at(3.0), 10_000.0 * rpm);
         assert_eq!(p.final_speed(), 10_000.0 * rpm);
+    }
+
+    #[test]
+    fn load_table_interpolates_with_its_rate() {
+        let at = |fx: f64| Loads {
+            force: [fx, 0.0, 0.0],
+            moment: [0.0, 0.0],
+        };
+        let p = LoadProfile::piecewise_linear(vec![(0.0, at(100.0)), (0.1, at(300.0))]).unwrap();
+        assert!((p.at(0.05).force[0] - 200.0).abs() < 1e-9);
+        assert!((p.rate(0.05).force[0] - 2000.0).abs() < 1e-9);
+        assert_eq!(p.at(1.0).force[0], 300.0);
+        assert_eq!(p.rate(1.0).force[0], 0.0);
+        assert!(LoadProfile::piecewise_linear(vec![(0.1, at(1.0)), (0.1, at(2.0))]).is_err());
     }
 
     #[test]

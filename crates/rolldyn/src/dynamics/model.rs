@@ -6,15 +6,18 @@
 //! angular velocity (ω_x, ω_r, ω_t) in the ball's azimuth frame
 //! (e_x, e_r, e_t), e_r = cos φ e_y + sin φ e_z, e_t = e_x × e_r. Inner ring
 //! (10): translation (x, y, z), tilts (θ_y, θ_z) and their rates; its spin
-//! ω_i(t) is prescribed (MODEL §8). Cage (6): whirl (y_c, z_c), rotation θ_c
-//! and their rates. The outer ring is fixed.
+//! ω_i(t) is prescribed (MODEL §8). Outer ring (4): radial translation
+//! (y_o, z_o) and rates, frozen at zero unless the ring sits on a housing
+//! spring–damper (seed 002 eqs 14–15). Cage (6): whirl (y_c, z_c),
+//! rotation θ_c and their rates.
 //!
 //! # Equations
 //! ```text
 //! m ẍ = F_x,   m (r̈ − r φ̇²) = F_r,   m (r φ̈ + 2 ṙ φ̇) = F_t
 //! ω̇_x = M_x/I,  ω̇_r = M_r/I + φ̇ ω_t,  ω̇_t = M_t/I − φ̇ ω_r,      I = m D²/10
-//! inner ring: m_i ẗ = ΣF + F_applied,  I_t θ̈ = ΣM + M_applied      (ring gyroscopics neglected)
-//! cage: m_c (ÿ_c, z̈_c) = ΣF,  I_c θ̈_c = ΣM_x                     (seed 001 eq 39)
+//! inner ring: m_i ẗ = ΣF + F_applied(t) − k t − c ṫ,  I_t θ̈ = ΣM + M_applied(t)   (ring gyroscopics neglected)
+//! outer ring: m_o (ÿ_o, z̈_o) = ΣF − k_h (y_o, z_o) − c_h (ẏ_o, ż_o)             (seed 002 eqs 14–15)
+//! cage: m_c (ÿ_c, z̈_c) = ΣF + m_u e ω_c² (cos θ_c, sin θ_c),  I_c θ̈_c = ΣM_x    (seed 001 eqs 37–39)
 //! ```
 //! Centrifugal and Coriolis terms come from the rotating azimuth frame.
 //!
@@ -27,10 +30,17 @@
 //! v_g = ṫ + ω_ring × (P − t), with ω_ring = ω_i a + the tilt rates. Force
 //! on the ball: −Q n + F_T; the ring takes the reaction at P.
 //!
-//! Ball–pocket (MODEL §5, `linear`, seed 002 eq 6): cylindrical pockets
-//! with radial axes at the cage pitch radius. The gap is measured
-//! perpendicular to the pocket axis; beyond C_p/2 the force is k δ + c δ̇
-//! (≥ 0), with modified-Coulomb friction on the slip at the contact point.
+//! Rolling resistance by elastic hysteresis (MODEL §3; seed 004 eq 21,
+//! Harris): F_h = α_h (3/16)(b/(D/2)) Q opposing the rolling, applied as
+//! the equivalent couple M_h = (D/2) F_h = (3/16) α_h b Q about the rolling
+//! axis e_a = n × û on the ball, the reaction couple on the ring; its power
+//! M_h |ω_roll| is dissipated. A ramp over 1 mm/s of rolling speed makes it
+//! continuous at rest.
+//!
+//! Ball–pocket (MODEL §5; [`crate::cage::pocket`]): cylindrical or
+//! spherical pockets at the cage pitch radius, `linear`, `hertz` or
+//! `gupta_film` normal law, modified-Coulomb friction on the slip at the
+//! contact point.
 //!
 //! Gravity (optional) acts along −z.
 //!
@@ -42,6 +52,7 @@
 //! B1). Where α varies, K_c(α) δ^{3/2} is not the exact gradient of
 //! (2/5) K_c δ^{5/2}; the K_c tables vary by ~1e-3 per degree.
 
+use crate::cage::{CageParameters, GuideLand, PocketShape};
 use crate::contact::Curvature;
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{
@@ -55,108 +66,11 @@ use crate::integrate::OdeSystem;
 use crate::kinematics::cage_speed_ratio;
 use crate::lubrication::hamrock_dowson;
 use crate::material::{Material, effective_modulus};
-use crate::operating::{Loads, SpeedProfile};
+use crate::operating::{LoadProfile, SpeedProfile};
 use crate::quasistatic::Equilibrium;
 use crate::traction::ellipse::{self, ContactPatch, TractionIntegration};
-use crate::traction::{ModifiedCoulomb, TractionModel};
+use crate::traction::{ContactConditions, TractionModel};
 use nalgebra::{Rotation3, Vector3};
-
-/// Cage data of the dynamic model.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CageParameters {
-    /// Mass m_c \[kg\].
-    pub mass: f64,
-    /// Polar moment of inertia I_c \[kg·m²\].
-    pub inertia: f64,
-    /// Pocket-centre radius r_cp \[m\] (usually d_m/2).
-    pub pitch_radius: f64,
-    /// Diametral pocket clearance C_p \[m\].
-    pub pocket_clearance: f64,
-    /// Pocket contact stiffness k \[N/m\].
-    pub pocket_stiffness: f64,
-    /// Pocket contact damping c \[N·s/m\].
-    pub pocket_damping: f64,
-    /// Pocket friction.
-    pub pocket_friction: ModifiedCoulomb,
-    /// Whether the cage centre may whirl (false: rotation only, seed 002).
-    pub whirl: bool,
-    /// Guide land, if the cage is ring-guided.
-    pub guide: Option<GuideLand>,
-}
-
-/// A cage guide land (MODEL §5; seed 001 eqs 30–35, short-bearing theory):
-/// with eccentricity e of the cage centre from the guiding ring's centre,
-/// ε = e/c, land radius R_d, width G, u₁ = R_d (ω_land + ω_c):
-/// ```text
-/// F_ζ = −η₀ |u₁| G³ ε² / (c² (1 − ε²)²)           along the eccentricity (restoring)
-/// F_φ =  π η₀ u₁ G³ ε / (4 c² (1 − ε²)^{3/2})      perpendicular, with the rotation
-/// M   =  2π η₀ R_d³ G (ω_land − ω_c) / (c √(1 − ε²))   drag torque on the cage
-/// ```
-/// Seed 001 eq 32 prints R_d to the first power; R_d³ makes it a torque
-/// (MODEL §5). ε is capped at ε_max in these formulas; beyond ε_max c a
-/// stiff stop k_s (e − ε_max c) acts (MODEL: "a stiff contact beyond
-/// ε_max"). The guiding ring takes the reactions. c is the **radial**
-/// clearance, half of the diametral guide clearance C_g of the case file.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct GuideLand {
-    /// Guiding ring (outer: fixed land; inner: land turning with ω_i).
-    pub ring: RingKind,
-    /// Land radius R_d \[m\].
-    pub land_radius: f64,
-    /// Land width G \[m\].
-    pub width: f64,
-    /// Radial clearance c \[m\].
-    pub radial_clearance: f64,
-    /// Lubricant viscosity η₀ \[Pa·s\].
-    pub viscosity: f64,
-    /// Largest eccentricity ratio of the hydrodynamic law ε_max (e.g. 0.95).
-    pub max_eccentricity: f64,
-    /// Stop stiffness beyond ε_max c \[N/m\].
-    pub stop_stiffness: f64,
-}
-
-/// Forces of a guide land on the cage.
-struct GuideForces {
-    /// Force on the cage (radial plane) \[N\].
-    force: Vector3<f64>,
-    /// Torque on the cage about x \[N·m\].
-    torque: f64,
-    /// Penetration of the stop \[m\] (for the elastic energy).
-    stop: f64,
-}
-
-impl GuideLand {
-    /// Forces for cage centre offset `rel` from the ring centre (radial plane),
-    /// cage speed ω_c and land speed ω_land.
-    fn forces(&self, rel: &Vector3<f64>, cage_speed: f64, land_speed: f64) -> GuideForces {
-        let c = self.radial_clearance;
-        let e = rel.norm();
-        let (g, eta, rd) = (self.width, self.viscosity, self.land_radius);
-        let eps = (e / c).min(self.max_eccentricity);
-        let u1 = rd * (land_speed + cage_speed);
-        let torque = 2.0 * std::f64::consts::PI * eta * rd.powi(3) * g * (land_speed - cage_speed)
-            / (c * (1.0 - eps * eps).sqrt());
-        if e == 0.0 {
-            return GuideForces {
-                force: Vector3::zeros(),
-                torque,
-                stop: 0.0,
-            };
-        }
-        let zeta = rel / e;
-        let phi = Vector3::x().cross(&zeta);
-        let one = 1.0 - eps * eps;
-        let f_zeta = -eta * u1.abs() * g.powi(3) * eps * eps / (c * c * one * one);
-        let f_phi =
-            std::f64::consts::PI * eta * u1 * g.powi(3) * eps / (4.0 * c * c * one.powf(1.5));
-        let stop = (e - self.max_eccentricity * c).max(0.0);
-        GuideForces {
-            force: (f_zeta - self.stop_stiffness * stop) * zeta + f_phi * phi,
-            torque,
-            stop,
-        }
-    }
-}
 
 /// Drag of the air–oil mixture on balls and cage (seed 001 eqs 10–12, 24,
 /// 36; MODEL §3, §5), with the seed's misprints corrected:
@@ -187,6 +101,10 @@ pub struct DragParameters {
     pub cage_windage: f64,
 }
 
+/// Rolling speed over which the hysteresis couple ramps up from zero
+/// (regularisation, MODEL §3) \[m/s\].
+pub const HYSTERESIS_RAMP_SPEED: f64 = 1e-3;
+
 /// Everything the dynamic model needs besides geometry and materials.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DynamicsParameters {
@@ -206,8 +124,15 @@ pub struct DynamicsParameters {
     pub traction_integration: TractionIntegration,
     /// Inner-ring speed profile.
     pub speed: SpeedProfile,
-    /// Constant loads on the inner ring.
-    pub loads: Loads,
+    /// Loads on the inner ring (constant or tabulated in time).
+    pub loads: LoadProfile,
+    /// Spring–damper between the inner ring and ground (zero: free).
+    pub inner_support: Support,
+    /// Outer ring on a housing spring–damper (None: fixed).
+    pub outer_ring: Option<OuterRing>,
+    /// Elastic-hysteresis coefficient α_h of the rolling resistance
+    /// (0: off; ≈ 0.007 for steel, seed 004 eq 21).
+    pub rolling_hysteresis: f64,
     /// Gravitational acceleration along −z \[m/s²\] (0: off).
     pub gravity: f64,
     /// Planar mode (seed 000): axial coordinates, tilts and the ball spin
@@ -215,6 +140,52 @@ pub struct DynamicsParameters {
     pub planar: bool,
     /// Drag of the air–oil mixture.
     pub drag: DragParameters,
+}
+
+/// A spring–damper between a ring and ground, per axis (x, y, z).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Support {
+    /// Stiffness per axis \[N/m\].
+    pub stiffness: [f64; 3],
+    /// Damping per axis \[N·s/m\].
+    pub damping: [f64; 3],
+}
+
+impl Support {
+    /// Force on the ring for displacement `x` and velocity `v`.
+    fn force(&self, x: &Vector3<f64>, v: &Vector3<f64>) -> Vector3<f64> {
+        -Vector3::from(self.stiffness).component_mul(x)
+            - Vector3::from(self.damping).component_mul(v)
+    }
+
+    /// Elastic energy ½ Σ k x².
+    fn energy(&self, x: &Vector3<f64>) -> f64 {
+        0.5 * Vector3::from(self.stiffness).dot(&x.component_mul(x))
+    }
+
+    /// Dissipated power Σ c v².
+    fn dissipation(&self, v: &Vector3<f64>) -> f64 {
+        Vector3::from(self.damping).dot(&v.component_mul(v))
+    }
+
+    fn validate(&self, field: &'static str) -> Result<(), InvalidParameter> {
+        for v in self.stiffness.iter().chain(&self.damping) {
+            if !(v.is_finite() && *v >= 0.0) {
+                return Err(InvalidParameter::new(field, v, "must not be negative"));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The outer ring on a housing spring–damper (seed 002 eqs 14–15): radial
+/// translation (y_o, z_o) only.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OuterRing {
+    /// Mass of the outer ring (with what moves with it) \[kg\].
+    pub mass: f64,
+    /// Radial housing stiffness and damping (the x entries are unused).
+    pub housing: Support,
 }
 
 /// Offsets of the parts of the state vector.
@@ -229,6 +200,8 @@ impl StateLayout {
     pub const BALL: usize = 9;
     /// Inner-ring states.
     pub const RING: usize = 10;
+    /// Outer-ring states (y_o, z_o and rates).
+    pub const OUTER: usize = 4;
     /// Cage states.
     pub const CAGE: usize = 6;
     /// First state of ball j.
@@ -239,9 +212,22 @@ impl StateLayout {
     pub fn ring(&self) -> usize {
         Self::BALL * self.balls
     }
+    /// First outer-ring state.
+    pub fn outer(&self) -> usize {
+        self.ring() + Self::RING
+    }
     /// First cage state.
     pub fn cage(&self) -> usize {
-        self.ring() + Self::RING
+        self.outer() + Self::OUTER
+    }
+    /// The states that the contacts of ball j touch (read or write): its
+    /// own block, both rings and the cage. Nothing else couples the balls,
+    /// so the Jacobian is bordered block-diagonal (MODEL §8).
+    pub fn ball_coupling(&self, j: usize) -> [std::ops::Range<usize>; 2] {
+        [
+            self.ball(j)..self.ball(j) + Self::BALL,
+            self.ring()..self.cage() + Self::CAGE,
+        ]
     }
     /// The two energy accumulators: drive work and dissipated energy \[J\].
     pub fn work(&self) -> usize {
@@ -257,17 +243,33 @@ impl StateLayout {
     }
 }
 
+/// State of one ball–raceway contact for output (MODEL §9); all zero
+/// when the contact is open.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactOutput {
+    /// Normal load Q \[N\].
+    pub load: f64,
+    /// Contact angle α \[rad\].
+    pub angle: f64,
+    /// Sliding speed |Δv| at the contact centre \[m/s\].
+    pub slip_speed: f64,
+    /// Entrainment (rolling) speed |u| \[m/s\].
+    pub entrainment_speed: f64,
+    /// Slide-to-roll ratio |Δv|/|u| at the contact centre \[-\].
+    pub slide_to_roll: f64,
+    /// Spin-to-roll ratio ω_s/|ω_roll| \[-\] (Harris).
+    pub spin_to_roll: f64,
+    /// Central film thickness h_c \[m\] (0 without a film model).
+    pub film: f64,
+}
+
 /// Contact state of one ball for output.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ContactSample {
-    /// Inner normal load Q_i \[N\].
-    pub load_inner: f64,
-    /// Outer normal load Q_o \[N\].
-    pub load_outer: f64,
-    /// Inner contact angle α_i \[rad\] (0 when open).
-    pub angle_inner: f64,
-    /// Outer contact angle α_o \[rad\] (0 when open).
-    pub angle_outer: f64,
+    /// Inner contact.
+    pub inner: ContactOutput,
+    /// Outer contact.
+    pub outer: ContactOutput,
 }
 
 /// Energy of a state \[J\].
@@ -301,18 +303,20 @@ struct RaceContact {
     /// Traction couple about the contact point \[N·m\]; the ring takes
     /// −force at P and −couple.
     couple: Vector3<f64>,
+    /// Output quantities.
+    output: ContactOutput,
 }
 
 /// One evaluated ball–pocket contact.
 struct PocketContact {
+    /// Ball-centre offset from the pocket centre \[m\].
+    offset: f64,
     /// Force on the ball \[N\].
     force: Vector3<f64>,
     /// Moment on the ball about its centre \[N·m\].
     moment: Vector3<f64>,
     /// Contact point on the ball \[m\].
     point: Vector3<f64>,
-    /// Penetration beyond the clearance \[m\].
-    penetration: f64,
     /// Dissipated power: damping and friction \[W\].
     dissipation: f64,
 }
@@ -363,18 +367,21 @@ impl BearingModel {
     ) -> Result<Self, InvalidParameter> {
         positive("inner_ring_mass", params.inner_ring_mass)?;
         positive("inner_ring_tilt_inertia", params.inner_ring_tilt_inertia)?;
-        positive("cage_mass", params.cage.mass)?;
-        positive("cage_inertia", params.cage.inertia)?;
-        positive("cage_pitch_radius", params.cage.pitch_radius)?;
-        positive("pocket_clearance", params.cage.pocket_clearance)?;
-        positive("pocket_stiffness", params.cage.pocket_stiffness)?;
-        params.cage.pocket_friction.validate()?;
+        params.cage.validate()?;
         params.normal_law.validate()?;
         positive("impact_speed_floor", params.impact_speed_floor)?;
-        match params.traction {
-            TractionModel::ModifiedCoulomb(m) => m.validate()?,
-            TractionModel::Ehl(e) => e.validate()?,
-            TractionModel::None => {}
+        params.traction.validate()?;
+        params.inner_support.validate("inner_ring_support")?;
+        if let Some(outer) = &params.outer_ring {
+            positive("outer_ring_mass", outer.mass)?;
+            outer.housing.validate("outer_ring_housing")?;
+        }
+        if !(params.rolling_hysteresis.is_finite() && params.rolling_hysteresis >= 0.0) {
+            return Err(InvalidParameter::new(
+                "rolling_hysteresis",
+                params.rolling_hysteresis,
+                "must not be negative",
+            ));
         }
         let ep = effective_modulus(ball, rings);
         let ball_mass = geometry.ball_mass(ball.density);
@@ -490,11 +497,16 @@ impl BearingModel {
             omega: self.params.speed.speed_at(t) * axis + omega_frame,
             omega_frame,
         };
+        let o = self.layout.outer();
+        let outer_pose = RingPose {
+            translation: Vector3::new(0.0, y[o], y[o + 1]),
+            ..RingPose::default()
+        };
         let outer = RingMotion {
             raceway: self.geometry.outer,
-            circle: GrooveCircle::of(&self.geometry.outer, &RingPose::default()),
-            centre: Vector3::zeros(),
-            velocity: Vector3::zeros(),
+            circle: GrooveCircle::of(&self.geometry.outer, &outer_pose),
+            centre: outer_pose.translation,
+            velocity: Vector3::new(0.0, y[o + 2], y[o + 3]),
             omega: Vector3::zeros(),
             omega_frame: Vector3::zeros(),
         };
@@ -527,6 +539,7 @@ impl BearingModel {
         q: &Vector3<f64>,
         v: &Vector3<f64>,
         w: &Vector3<f64>,
+        orbital_rate: f64,
     ) -> Option<RaceContact> {
         let d = self.geometry.ball_diameter;
         let geometry = ring.circle.contact(q, d, 0.0)?;
@@ -562,10 +575,17 @@ impl BearingModel {
         } else {
             n.cross(&Vector3::x()).normalize()
         };
+        // The contact point moves with the ball's azimuth frame:
+        // v_P = q̇ + φ̇ e_x × (P − q). Entrainment is the mean surface speed
+        // relative to it (MODEL §3 writes q̇ for v_P, which misses φ̇ e_x ×
+        // (P − q): a factor 1/(1 ± γ cos α) on |u|, 12 % on the 7008C).
+        let contact_velocity = v + orbital_rate * Vector3::x().cross(&(point - q));
+        let entrainment =
+            0.5 * ((ball_surface - contact_velocity) + (ring_surface - contact_velocity));
+        let entrainment = entrainment - entrainment.dot(&n) * n;
+        let u = entrainment.norm();
         let film = match &self.params.traction {
             TractionModel::Ehl(ehl) => {
-                let entrainment = 0.5 * ((ball_surface - v) + (ring_surface - v));
-                let u = (entrainment - entrainment.dot(&n) * n).norm();
                 let curvature = Curvature::of_raceway(
                     &ring.raceway,
                     self.geometry.ball_diameter,
@@ -595,24 +615,62 @@ impl BearingModel {
             load,
             deformed_radius: 2.0 * rg * rb / (rg + rb),
         };
+        let relative_spin = w - ring.omega;
         let traction = ellipse::integrate(
             &self.params.traction,
             self.params.traction_integration,
             &patch,
             q,
             &slip,
-            &(w - ring.omega),
-            film,
+            &relative_spin,
+            &ContactConditions {
+                film,
+                entrainment_speed: u,
+            },
         );
+        // Rolling axis e_a = n × û and the rolling rate about it.
+        let rolling_axis = if u > 0.0 {
+            n.cross(&(entrainment / u))
+        } else {
+            Vector3::zeros()
+        };
+        let rolling_rate = relative_spin.dot(&rolling_axis);
+        let mut moment = traction.moment;
+        let mut couple = traction.couple;
+        let mut dissipation = traction.dissipation;
+        if self.params.rolling_hysteresis > 0.0 {
+            let rolling_speed = 0.5 * self.geometry.ball_diameter * rolling_rate;
+            let ramp = (rolling_speed / HYSTERESIS_RAMP_SPEED).clamp(-1.0, 1.0);
+            let m_h = -(0.1875 * self.params.rolling_hysteresis * ellipse.semi_minor * load * ramp)
+                * rolling_axis;
+            moment += m_h;
+            couple += m_h;
+            dissipation -= m_h.dot(&relative_spin);
+        }
         let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
-        let dissipation = (load - elastic) * penetration_rate + traction.dissipation;
+        dissipation += (load - elastic) * penetration_rate;
+        let slip_t = slip - slip.dot(&n) * n;
+        let output = ContactOutput {
+            load,
+            angle: geometry.contact_angle,
+            slip_speed: slip_t.norm(),
+            entrainment_speed: u,
+            slide_to_roll: if u > 0.0 { slip_t.norm() / u } else { 0.0 },
+            spin_to_roll: if rolling_rate != 0.0 {
+                relative_spin.dot(&n) / rolling_rate.abs()
+            } else {
+                0.0
+            },
+            film,
+        };
         Some(RaceContact {
             geometry,
             penetration_rate,
             dissipation,
             force: -load * n + traction.force,
-            moment: traction.moment,
-            couple: traction.couple,
+            moment,
+            couple,
+            output,
         })
     }
 
@@ -634,17 +692,21 @@ impl BearingModel {
         let axis = Vector3::new(0.0, angle.cos(), angle.sin());
         let pocket = centre + cage.pitch_radius * axis;
         let rel = q - pocket;
-        let perp = rel - rel.dot(&axis) * axis;
-        let dist = perp.norm();
-        let penetration = dist - 0.5 * cage.pocket_clearance;
-        if penetration <= 0.0 || dist == 0.0 {
+        let perp = match cage.pocket_shape {
+            PocketShape::Cylindrical => rel - rel.dot(&axis) * axis,
+            PocketShape::Spherical => rel,
+        };
+        let offset = perp.norm();
+        let half_clearance = 0.5 * cage.pocket_clearance;
+        if !cage.pocket_law.acts(offset, half_clearance) {
             return None;
         }
-        let n = perp / dist;
+        let n = perp / offset;
         let point = q + 0.5 * self.geometry.ball_diameter * n;
         let pocket_point_velocity = velocity + spin.cross(&(q - centre));
         let rate = (v - pocket_point_velocity).dot(&n);
-        let normal = (cage.pocket_stiffness * penetration + cage.pocket_damping * rate).max(0.0);
+        let law = cage.pocket_law.force(offset, half_clearance, rate);
+        let normal = law.total;
         let arm = point - q;
         let slip = (v + w.cross(&arm)) - (velocity + spin.cross(&(point - centre)));
         let slip_t = slip - slip.dot(&n) * n;
@@ -653,9 +715,8 @@ impl BearingModel {
             force: -normal * n + friction,
             moment: arm.cross(&friction),
             point,
-            penetration,
-            dissipation: (normal - cage.pocket_stiffness * penetration) * rate
-                - friction.dot(&slip_t),
+            offset,
+            dissipation: (normal - law.elastic) * rate - friction.dot(&slip_t),
         })
     }
 
@@ -665,17 +726,18 @@ impl BearingModel {
         let (inner, outer) = self.ring_motion(t, y);
         for (j, sample) in out.iter_mut().enumerate().take(self.layout.balls) {
             let (q, v, w, _) = self.ball_kinematics(j, y);
+            let orbital = y[self.layout.ball(j) + 5];
             let episodes = &self.episodes[j];
             *sample = ContactSample::default();
-            if let Some(c) = self.race_contact(&inner, &self.inner_table, &episodes[0], &q, &v, &w)
+            if let Some(c) =
+                self.race_contact(&inner, &self.inner_table, &episodes[0], &q, &v, &w, orbital)
             {
-                sample.load_inner = (-c.force).dot(&c.geometry.normal);
-                sample.angle_inner = c.geometry.contact_angle;
+                sample.inner = c.output;
             }
-            if let Some(c) = self.race_contact(&outer, &self.outer_table, &episodes[1], &q, &v, &w)
+            if let Some(c) =
+                self.race_contact(&outer, &self.outer_table, &episodes[1], &q, &v, &w, orbital)
             {
-                sample.load_outer = (-c.force).dot(&c.geometry.normal);
-                sample.angle_outer = c.geometry.contact_angle;
+                sample.outer = c.output;
             }
         }
     }
@@ -689,11 +751,10 @@ impl BearingModel {
         let l = self.layout;
         let (mut ai, mut ao, mut beta, mut n) = (0.0, 0.0, 0.0, 0.0);
         for (j, s) in samples.iter().enumerate().take(l.balls) {
-            if s.load_inner > 0.0 && s.load_outer > 0.0 {
-                let b = l.ball(j);
-                ai += s.angle_inner;
-                ao += s.angle_outer;
-                beta += y[b + 7].atan2(-(y[b + 6] - y[b + 5]));
+            if s.inner.load > 0.0 && s.outer.load > 0.0 {
+                ai += s.inner.angle;
+                ao += s.outer.angle;
+                beta += self.ball_attitude(j, y).0;
                 n += 1.0;
             }
         }
@@ -706,6 +767,20 @@ impl BearingModel {
         cage_speed_ratio(gamma, ai / n, ao / n, beta / n)
     }
 
+    /// Attitude β and yaw β' of ball j \[rad\] (seed 002 §4.1; Harris): the
+    /// direction of its spin relative to the cage frame, ω' = ω_b − φ̇ e_x,
+    /// with ω'_x = −ω' cos β cos β', ω'_t = ω' cos β sin β', ω'_r = ω' sin β.
+    /// A ball rolling on the contact line at angle α has β = α, β' = 0.
+    pub fn ball_attitude(&self, j: usize, y: &[f64]) -> (f64, f64) {
+        let b = self.layout.ball(j);
+        let axial = -(y[b + 6] - y[b + 5]);
+        let (radial, tangential) = (y[b + 7], y[b + 8]);
+        (
+            radial.atan2(axial.hypot(tangential)),
+            tangential.atan2(axial),
+        )
+    }
+
     /// Centre (radial plane), centre velocity and land speed of the guiding ring.
     fn guide_ring(
         &self,
@@ -714,7 +789,14 @@ impl BearingModel {
         y: &[f64],
     ) -> (Vector3<f64>, Vector3<f64>, f64) {
         match guide.ring {
-            RingKind::Outer => (Vector3::zeros(), Vector3::zeros(), 0.0),
+            RingKind::Outer => {
+                let o = self.layout.outer();
+                (
+                    Vector3::new(0.0, y[o], y[o + 1]),
+                    Vector3::new(0.0, y[o + 2], y[o + 3]),
+                    0.0,
+                )
+            }
             RingKind::Inner => {
                 let r = self.layout.ring();
                 (
@@ -726,7 +808,8 @@ impl BearingModel {
         }
     }
 
-    /// Drive work and dissipated energy accumulated in state `y` \[J\].
+    /// Work of the drive and the external forces (time-varying loads, cage
+    /// unbalance), and the dissipated energy, accumulated in state `y` \[J\].
     pub fn work(&self, y: &[f64]) -> (f64, f64) {
         let w = self.layout.work();
         (y[w], y[w + 1])
@@ -753,7 +836,10 @@ impl BearingModel {
                 }
             }
             if let Some(pc) = self.pocket_contact(j, y, &q, &v, &w) {
-                e.elastic += 0.5 * self.params.cage.pocket_stiffness * pc.penetration.powi(2);
+                let cage = &self.params.cage;
+                e.elastic += cage
+                    .pocket_law
+                    .energy(pc.offset, 0.5 * cage.pocket_clearance);
             }
         }
         let r = l.ring();
@@ -761,12 +847,22 @@ impl BearingModel {
         e.kinetic +=
             0.5 * p.inner_ring_mass * (y[r + 5].powi(2) + y[r + 6].powi(2) + y[r + 7].powi(2))
                 + 0.5 * p.inner_ring_tilt_inertia * (y[r + 8].powi(2) + y[r + 9].powi(2));
-        e.potential -= p.loads.force[0] * y[r]
-            + p.loads.force[1] * y[r + 1]
-            + p.loads.force[2] * y[r + 2]
-            + p.loads.moment[0] * y[r + 3]
-            + p.loads.moment[1] * y[r + 4];
+        let loads = p.loads.at(t);
+        e.potential -= loads.force[0] * y[r]
+            + loads.force[1] * y[r + 1]
+            + loads.force[2] * y[r + 2]
+            + loads.moment[0] * y[r + 3]
+            + loads.moment[1] * y[r + 4];
         e.potential += p.inner_ring_mass * g * y[r + 2];
+        e.elastic += p
+            .inner_support
+            .energy(&Vector3::new(y[r], y[r + 1], y[r + 2]));
+        if let Some(outer) = &p.outer_ring {
+            let o = l.outer();
+            e.kinetic += 0.5 * outer.mass * (y[o + 2].powi(2) + y[o + 3].powi(2));
+            e.elastic += outer.housing.energy(&Vector3::new(0.0, y[o], y[o + 1]));
+            e.potential += outer.mass * g * y[o + 1];
+        }
         let c = l.cage();
         e.kinetic += 0.5 * p.cage.mass * (y[c + 3].powi(2) + y[c + 4].powi(2))
             + 0.5 * p.cage.inertia * y[c + 5].powi(2);
@@ -787,6 +883,8 @@ impl OdeSystem for BearingModel {
         let g = p.gravity;
         let mut ring_force = Vector3::zeros();
         let mut ring_moment = Vector3::zeros();
+        let mut outer_force = Vector3::zeros();
+        let mut external_power = 0.0;
         let mut cage_force = Vector3::zeros();
         let mut cage_torque = 0.0;
         let mut dissipation = 0.0;
@@ -794,10 +892,12 @@ impl OdeSystem for BearingModel {
         let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
         for j in 0..l.balls {
             let (q, v, w, [ex, er, et]) = self.ball_kinematics(j, y);
+            let orbital = y[l.ball(j) + 5];
             let mut force = Vector3::new(0.0, 0.0, -self.ball_mass * g);
             let mut moment = Vector3::zeros();
             let episodes = &self.episodes[j];
-            if let Some(cn) = self.race_contact(&inner, &self.inner_table, &episodes[0], &q, &v, &w)
+            if let Some(cn) =
+                self.race_contact(&inner, &self.inner_table, &episodes[0], &q, &v, &w, orbital)
             {
                 force += cn.force;
                 moment += cn.moment;
@@ -806,10 +906,12 @@ impl OdeSystem for BearingModel {
                     (cn.geometry.contact_point - inner.centre).cross(&(-cn.force)) - cn.couple;
                 dissipation += cn.dissipation;
             }
-            if let Some(cn) = self.race_contact(&outer, &self.outer_table, &episodes[1], &q, &v, &w)
+            if let Some(cn) =
+                self.race_contact(&outer, &self.outer_table, &episodes[1], &q, &v, &w, orbital)
             {
                 force += cn.force;
                 moment += cn.moment;
+                outer_force -= cn.force;
                 dissipation += cn.dissipation;
             }
             if let Some(pc) = self.pocket_contact(j, y, &q, &v, &w) {
@@ -879,28 +981,60 @@ impl OdeSystem for BearingModel {
                 };
             dissipation -=
                 fluid.dot(&(cage_velocity - centre_velocity)) + gf.torque * (y[c + 5] - land_speed);
-            if guide.ring == RingKind::Inner {
-                ring_force -= gf.force;
-                ring_moment -= gf.torque * Vector3::x();
+            match guide.ring {
+                RingKind::Inner => {
+                    ring_force -= gf.force;
+                    ring_moment -= gf.torque * Vector3::x();
+                }
+                RingKind::Outer => outer_force -= gf.force,
             }
         }
         let r = l.ring();
         dy[r..r + 5].copy_from_slice(&y[r + 5..r + 10]);
         let mi = p.inner_ring_mass;
-        dy[r + 5] = (ring_force.x + p.loads.force[0]) / mi;
-        dy[r + 6] = (ring_force.y + p.loads.force[1]) / mi;
-        dy[r + 7] = (ring_force.z + p.loads.force[2]) / mi - g;
-        dy[r + 8] = (ring_moment.y + p.loads.moment[0]) / p.inner_ring_tilt_inertia;
-        dy[r + 9] = (ring_moment.z + p.loads.moment[1]) / p.inner_ring_tilt_inertia;
+        let loads = p.loads.at(t);
+        let (ring_position, ring_velocity) = (
+            Vector3::new(y[r], y[r + 1], y[r + 2]),
+            Vector3::new(y[r + 5], y[r + 6], y[r + 7]),
+        );
+        ring_force += p.inner_support.force(&ring_position, &ring_velocity);
+        dissipation += p.inner_support.dissipation(&ring_velocity);
+        dy[r + 5] = (ring_force.x + loads.force[0]) / mi;
+        dy[r + 6] = (ring_force.y + loads.force[1]) / mi;
+        dy[r + 7] = (ring_force.z + loads.force[2]) / mi - g;
+        dy[r + 8] = (ring_moment.y + loads.moment[0]) / p.inner_ring_tilt_inertia;
+        dy[r + 9] = (ring_moment.z + loads.moment[1]) / p.inner_ring_tilt_inertia;
         if p.planar {
             for k in [0, 3, 4, 5, 8, 9] {
                 dy[r + k] = 0.0;
             }
         }
+        // Tabulated loads: the load potential −F(t)·x changes explicitly
+        // with time; that change is work of the external loads.
+        let load_rate = p.loads.rate(t);
+        external_power -= load_rate.force[0] * y[r]
+            + load_rate.force[1] * y[r + 1]
+            + load_rate.force[2] * y[r + 2]
+            + load_rate.moment[0] * y[r + 3]
+            + load_rate.moment[1] * y[r + 4];
+        let o = l.outer();
+        dy[o..o + 4].fill(0.0);
+        if let Some(ring) = &p.outer_ring {
+            let position = Vector3::new(0.0, y[o], y[o + 1]);
+            let velocity = Vector3::new(0.0, y[o + 2], y[o + 3]);
+            outer_force += ring.housing.force(&position, &velocity);
+            dissipation += ring.housing.dissipation(&velocity);
+            dy[o] = y[o + 2];
+            dy[o + 1] = y[o + 3];
+            dy[o + 2] = outer_force.y / ring.mass;
+            dy[o + 3] = outer_force.z / ring.mass - g;
+        }
         dy[c..c + 3].copy_from_slice(&y[c + 3..c + 6]);
         if p.cage.whirl {
-            dy[c + 3] = cage_force.y / p.cage.mass;
-            dy[c + 4] = cage_force.z / p.cage.mass - g;
+            let [fy, fz] = p.cage.unbalance_force(y[c + 2], y[c + 5]);
+            external_power += fy * y[c + 3] + fz * y[c + 4];
+            dy[c + 3] = (cage_force.y + fy) / p.cage.mass;
+            dy[c + 4] = (cage_force.z + fz) / p.cage.mass - g;
         } else {
             dy[c] = 0.0;
             dy[c + 1] = 0.0;
@@ -916,7 +1050,7 @@ impl OdeSystem for BearingModel {
         // contact forces on the ring about its spin axis).
         let spin_axis = inner.omega - inner.omega_frame;
         let w = l.work();
-        dy[w] = -ring_moment.dot(&spin_axis);
+        dy[w] = -ring_moment.dot(&spin_axis) + external_power;
         dy[w + 1] = dissipation;
     }
 
@@ -933,6 +1067,9 @@ impl OdeSystem for BearingModel {
         let r = l.ring();
         scale[r..r + 5].fill(1e-6);
         scale[r + 5..r + 10].fill(1e-3);
+        let o = l.outer();
+        scale[o..o + 2].fill(1e-6);
+        scale[o + 2..o + 4].fill(1e-3);
         let c = l.cage();
         scale[c..c + 3].fill(1e-6);
         scale[c + 3..c + 5].fill(1e-3);
@@ -947,12 +1084,13 @@ impl OdeSystem for BearingModel {
         let mut changed = false;
         for j in 0..self.layout.balls {
             let (q, v, w, _) = self.ball_kinematics(j, y);
+            let orbital = y[self.layout.ball(j) + 5];
             for (k, (ring, table)) in [(&inner, &self.inner_table), (&outer, &self.outer_table)]
                 .into_iter()
                 .enumerate()
             {
                 let before = self.episodes[j][k];
-                let contact = self.race_contact(ring, table, &before, &q, &v, &w);
+                let contact = self.race_contact(ring, table, &before, &q, &v, &w, orbital);
                 let mut episode = before;
                 match contact {
                     Some(cn) => episode.accept(cn.geometry.penetration, cn.penetration_rate, floor),

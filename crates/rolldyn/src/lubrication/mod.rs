@@ -18,6 +18,21 @@
 use crate::error::InvalidParameter;
 use serde::{Deserialize, Serialize};
 
+/// Pressure dependence of the viscosity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum PressureViscosity {
+    /// Barus: η = η₀ exp(α_p p).
+    #[default]
+    Barus,
+    /// Roelands: η = η₀ exp[(ln η₀ + 9.67)((1 + p/p_r)^z − 1)],
+    /// p_r = 1.96e8 Pa, z = α_p / (5.1e-9 (ln η₀ + 9.67)) (η₀ in Pa·s;
+    /// Hamrock, *Fundamentals of Fluid Film Lubrication*, eqs 4.11–4.14),
+    /// so that both laws have the same initial slope α_p.
+    Roelands,
+}
+
 /// Lubricant properties the film and traction models need.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Lubricant {
@@ -25,7 +40,13 @@ pub struct Lubricant {
     pub viscosity: f64,
     /// Pressure–viscosity coefficient α_p \[1/Pa\], ≥ 0.
     pub pressure_viscosity: f64,
+    /// Pressure–viscosity law.
+    #[serde(default)]
+    pub pressure_model: PressureViscosity,
 }
+
+/// Roelands' reference pressure p_r \[Pa\].
+pub const ROELANDS_PRESSURE: f64 = 1.96e8;
 
 impl Lubricant {
     /// Checks the properties.
@@ -47,10 +68,18 @@ impl Lubricant {
         Ok(())
     }
 
-    /// Barus viscosity η(p) = η₀ exp(α_p p) \[Pa·s\].
+    /// Viscosity η(p) \[Pa·s\] by the chosen pressure–viscosity law.
     #[inline]
     pub fn viscosity_at(&self, pressure: f64) -> f64 {
-        self.viscosity * (self.pressure_viscosity * pressure).exp()
+        match self.pressure_model {
+            PressureViscosity::Barus => self.viscosity * (self.pressure_viscosity * pressure).exp(),
+            PressureViscosity::Roelands => {
+                let ln_ratio = self.viscosity.ln() + 9.67;
+                let z = self.pressure_viscosity / (5.1e-9 * ln_ratio);
+                self.viscosity
+                    * (ln_ratio * ((1.0 + pressure / ROELANDS_PRESSURE).powf(z) - 1.0)).exp()
+            }
+        }
     }
 }
 
@@ -107,6 +136,7 @@ mod tests {
         let oil = Lubricant {
             viscosity: 0.0467,
             pressure_viscosity: 2.2e-8,
+            pressure_model: PressureViscosity::Barus,
         };
         let base = hamrock_dowson(&oil, 10.0, 50.0, 2.8e-3, 2.29e11, 5.1);
         let fast = hamrock_dowson(&oil, 20.0, 50.0, 2.8e-3, 2.29e11, 5.1);
@@ -121,5 +151,25 @@ mod tests {
             hamrock_dowson(&oil, 0.0, 50.0, 2.8e-3, 2.29e11, 5.1),
             Film::default()
         );
+    }
+
+    #[test]
+    fn roelands_has_the_barus_slope_and_grows_slower() {
+        let barus = Lubricant {
+            viscosity: 0.0467,
+            pressure_viscosity: 2.2e-8,
+            pressure_model: PressureViscosity::Barus,
+        };
+        let roelands = Lubricant {
+            pressure_model: PressureViscosity::Roelands,
+            ..barus
+        };
+        // d ln η/dp at p = 0 is α_p for both (Hamrock eq 4.14 defines z so).
+        let h = 1e3;
+        let slope = (roelands.viscosity_at(h) / roelands.viscosity).ln() / h;
+        assert!((slope / 2.2e-8 - 1.0).abs() < 1e-3, "{slope}");
+        // At 1 GPa Roelands is far below the exponential Barus law.
+        assert!(roelands.viscosity_at(1e9) < 0.1 * barus.viscosity_at(1e9));
+        assert_eq!(roelands.viscosity_at(0.0), roelands.viscosity);
     }
 }

@@ -8,7 +8,7 @@
 //! slip, as stiff integrators need). Seed 000 does not print v₀, v₁; the
 //! defaults (v₀ = 0, v₁ = 1 mm/s) are documented in docs/dynamics.md.
 
-use super::TractionLaw;
+use super::{ContactConditions, TractionLaw};
 use crate::error::InvalidParameter;
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
@@ -66,13 +66,18 @@ impl ModifiedCoulomb {
     /// The friction force for a normal force Q at uniform slip (pockets).
     #[inline]
     pub fn force(&self, normal_load: f64, slip: &Vector3<f64>) -> Vector3<f64> {
-        self.shear_stress(normal_load, slip, 0.0)
+        self.shear_stress(normal_load, slip, &ContactConditions::default())
     }
 }
 
 impl TractionLaw for ModifiedCoulomb {
     #[inline]
-    fn shear_stress(&self, pressure: f64, slip: &Vector3<f64>, _film: f64) -> Vector3<f64> {
+    fn shear_stress(
+        &self,
+        pressure: f64,
+        slip: &Vector3<f64>,
+        _conditions: &ContactConditions,
+    ) -> Vector3<f64> {
         let speed = slip.norm();
         if speed <= self.stick_speed || pressure <= 0.0 {
             return Vector3::zeros();

@@ -9,7 +9,7 @@
 //! contact (MODEL §4). The stress is continuous in the slip (asinh is odd
 //! and smooth), so no regularisation is needed.
 
-use super::TractionLaw;
+use super::{ContactConditions, TractionLaw};
 use crate::error::InvalidParameter;
 use crate::lubrication::Lubricant;
 use nalgebra::Vector3;
@@ -50,7 +50,13 @@ impl EhlRheology {
 
 impl TractionLaw for EhlRheology {
     #[inline]
-    fn shear_stress(&self, pressure: f64, slip: &Vector3<f64>, film: f64) -> Vector3<f64> {
+    fn shear_stress(
+        &self,
+        pressure: f64,
+        slip: &Vector3<f64>,
+        conditions: &ContactConditions,
+    ) -> Vector3<f64> {
+        let film = conditions.film;
         let speed = slip.norm();
         if speed == 0.0 || pressure <= 0.0 || film <= 0.0 {
             return Vector3::zeros();
@@ -76,6 +82,7 @@ mod tests {
             lubricant: Lubricant {
                 viscosity: 0.0467,
                 pressure_viscosity: 2.2e-8,
+                pressure_model: Default::default(),
             },
         }
     }
@@ -86,18 +93,22 @@ mod tests {
         let (p, h) = (0.2e9, 0.5e-6);
         let eta = l.lubricant.viscosity_at(p);
         let v = 1e-9;
-        let tau = l.shear_stress(p, &Vector3::new(v, 0.0, 0.0), h);
+        let h = ContactConditions {
+            film: h,
+            entrainment_speed: 1.0,
+        };
+        let tau = l.shear_stress(p, &Vector3::new(v, 0.0, 0.0), &h);
         assert!(
-            ((-tau.x) / (eta * v / h) - 1.0).abs() < 1e-6,
+            ((-tau.x) / (eta * v / h.film) - 1.0).abs() < 1e-6,
             "Newtonian limit"
         );
-        let big = l.shear_stress(1.5e9, &Vector3::new(0.0, 5.0, 0.0), h);
+        let big = l.shear_stress(1.5e9, &Vector3::new(0.0, 5.0, 0.0), &h);
         assert!((big.y + 0.08 * 1.5e9).abs() < 1e-3, "limiting shear");
         // Monotone in the slip.
         let mut prev = 0.0;
         for k in 0..40 {
             let s = 1e-6 * 1.5f64.powi(k);
-            let t = -l.shear_stress(p, &Vector3::new(s, 0.0, 0.0), h).x;
+            let t = -l.shear_stress(p, &Vector3::new(s, 0.0, 0.0), &h).x;
             assert!(t >= prev);
             prev = t;
         }

@@ -24,7 +24,7 @@
 //! area πab. It is exact for Coulomb friction at uniform slip; it ignores
 //! spin and differential slip.
 
-use super::{TractionLaw, TractionModel};
+use super::{ContactConditions, TractionLaw, TractionModel};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
@@ -91,8 +91,8 @@ pub struct TractionResult {
 
 /// Integrates `law` over `patch` for ball centre `ball_centre`, sliding
 /// velocity at P `slip_at_point` (ball relative to ring, full vector) and
-/// relative angular velocity `relative_spin` (ω_b − ω_ring), with film
-/// thickness `film`. Allocation-free.
+/// relative angular velocity `relative_spin` (ω_b − ω_ring), under the
+/// contact's `conditions` (film, entrainment). Allocation-free.
 pub fn integrate(
     law: &TractionModel,
     method: TractionIntegration,
@@ -100,7 +100,7 @@ pub fn integrate(
     ball_centre: &Vector3<f64>,
     slip_at_point: &Vector3<f64>,
     relative_spin: &Vector3<f64>,
-    film: f64,
+    conditions: &ContactConditions,
 ) -> TractionResult {
     let mut out = TractionResult::default();
     if patch.load <= 0.0 || matches!(law, TractionModel::None) {
@@ -113,7 +113,7 @@ pub fn integrate(
     let mut add = |x: Vector3<f64>, normal: Vector3<f64>, pressure: f64, area: f64| {
         let s = slip_at_point + relative_spin.cross(&(x - patch.point));
         let s_t = s - s.dot(&normal) * normal;
-        let df = law.shear_stress(pressure, &s_t, film) * area;
+        let df = law.shear_stress(pressure, &s_t, conditions) * area;
         out.force += df;
         out.moment += (x - ball_centre).cross(&df);
         out.couple += (x - patch.point).cross(&df);
@@ -202,7 +202,15 @@ mod tests {
                 along: 6,
             },
         ] {
-            let r = integrate(&coulomb(), method, &p, &q, &slip, &Vector3::zeros(), 0.0);
+            let r = integrate(
+                &coulomb(),
+                method,
+                &p,
+                &q,
+                &slip,
+                &Vector3::zeros(),
+                &ContactConditions::default(),
+            );
             assert!(
                 (r.force - Vector3::new(0.0, -20.0, 0.0)).norm() < 1e-9,
                 "{method:?}: {:?}",
@@ -228,7 +236,7 @@ mod tests {
                 &p.point,
                 &Vector3::zeros(),
                 &spin,
-                0.0,
+                &ContactConditions::default(),
             );
             assert!(r.force.norm() < 1e-9 * p.load, "symmetric: no net force");
             -r.moment.dot(&p.normal)
@@ -266,7 +274,7 @@ mod tests {
             &Vector3::zeros(),
             &Vector3::zeros(),
             &spin,
-            0.0,
+            &ContactConditions::default(),
         );
         let curved = integrate(
             &coulomb(),
@@ -278,7 +286,7 @@ mod tests {
             &Vector3::zeros(),
             &Vector3::zeros(),
             &spin,
-            0.0,
+            &ContactConditions::default(),
         );
         assert!(
             (flat.force - curved.force).norm() > 1e-6,

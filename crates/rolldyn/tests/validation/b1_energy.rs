@@ -12,15 +12,18 @@
 //! 8000 rpm.
 
 use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{BearingModel, CageParameters, DragParameters, DynamicsParameters};
+use rolldyn::dynamics::{
+    BearingModel, CageParameters, DragParameters, DynamicsParameters, OuterRing, PocketLaw,
+    PocketShape, Support,
+};
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::material::Material;
-use rolldyn::operating::{Loads, SpeedProfile};
+use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
 use rolldyn::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
-fn model() -> BearingModel {
+fn model(configure: impl Fn(&mut DynamicsParameters)) -> BearingModel {
     let g = BearingGeometry::new(&GeometrySpec {
         ball_diameter: 9.52e-3,
         ball_count: 7,
@@ -36,7 +39,7 @@ fn model() -> BearingModel {
         poisson_ratio: 0.3,
         density: 7800.0,
     };
-    let params = DynamicsParameters {
+    let mut params = DynamicsParameters {
         inner_ring_mass: 0.1,
         inner_ring_tilt_inertia: 1e-5,
         cage: CageParameters {
@@ -44,8 +47,12 @@ fn model() -> BearingModel {
             inertia: 8.2e-7,
             pitch_radius: 18.005e-3,
             pocket_clearance: 2e-3,
-            pocket_stiffness: 1e6,
-            pocket_damping: 0.0,
+            pocket_shape: PocketShape::Cylindrical,
+            pocket_law: PocketLaw::Linear {
+                stiffness: 1e6,
+                damping: 0.0,
+            },
+            unbalance: 0.0,
             pocket_friction: ModifiedCoulomb {
                 friction: 0.0,
                 stick_speed: 0.0,
@@ -59,19 +66,27 @@ fn model() -> BearingModel {
         traction: TractionModel::None,
         traction_integration: TractionIntegration::Centre,
         speed: SpeedProfile::Constant(8000.0 * std::f64::consts::TAU / 60.0),
-        loads: Loads {
+        loads: LoadProfile::Constant(Loads {
             force: [0.0, 0.0, 100.0],
             moment: [0.0, 0.0],
-        },
+        }),
         gravity: 0.0,
         planar: true,
         drag: DragParameters::default(),
+        inner_support: Support::default(),
+        outer_ring: None,
+        rolling_hysteresis: 0.0,
     };
+    configure(&mut params);
     BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap()
 }
 
-fn energy_error(control: StepControl, t_end: f64) -> (f64, f64, u64) {
-    let mut m = model();
+fn energy_error(
+    control: StepControl,
+    t_end: f64,
+    configure: impl Fn(&mut DynamicsParameters),
+) -> (f64, f64, u64) {
+    let mut m = model(configure);
     let y0 = m.pure_rolling_state([0.0; 5]);
     let e0 = m.energy(0.0, &y0);
     let mut rk = ExplicitRk::new(
@@ -103,19 +118,55 @@ fn b1_energy_conserved_without_dissipation() {
     };
     // 20 ms: each ball passes the loaded zone ~6 times and its two contacts
     // see ~2000 cycles of the radial vibration.
-    let (rel, ke, steps) = energy_error(control, 0.02);
+    let (rel, ke, steps) = energy_error(control, 0.02, |_| {});
     eprintln!("B1 DOPRI5 rtol 1e-8: max |ΔE|/KE = {rel:.2e} over {steps} steps (KE {ke:.4} J)");
     assert!(rel < 1e-8, "energy drift {rel}");
 }
 
 #[test]
 fn b1_rk4_energy_error_at_fourth_order() {
-    let (e1, _, _) = energy_error(StepControl::Fixed { step: 2e-7 }, 2e-3);
-    let (e2, _, _) = energy_error(StepControl::Fixed { step: 1e-7 }, 2e-3);
+    let (e1, _, _) = energy_error(StepControl::Fixed { step: 2e-7 }, 2e-3, |_| {});
+    let (e2, _, _) = energy_error(StepControl::Fixed { step: 1e-7 }, 2e-3, |_| {});
     eprintln!(
         "B1 RK4: max |ΔE|/KE = {e1:.3e} (h = 0.2 µs), {e2:.3e} (h = 0.1 µs), ratio {:.1}",
         e1 / e2
     );
     // Local error O(h⁵) per step: the ratio is 2⁴ to 2⁵ over a short run.
     assert!((14.0..40.0).contains(&(e1 / e2)), "ratio {}", e1 / e2);
+}
+
+/// B1 with every other conservative element: the outer ring on an
+/// undamped housing spring, an inner-ring support spring, spherical pockets
+/// with the gupta_film law (film spring inside the clearance, Hertz
+/// beyond), cage whirl on. The pockets' film spring acts on every ball.
+#[test]
+fn b1_energy_conserved_with_housing_supports_and_film_pockets() {
+    let control = StepControl::Adaptive {
+        relative_tolerance: 1e-8,
+        max_step: 1e-5,
+        initial_step: None,
+    };
+    let (rel, ke, steps) = energy_error(control, 0.005, |p| {
+        p.outer_ring = Some(OuterRing {
+            mass: 0.2,
+            housing: Support {
+                stiffness: [0.0, 2e7, 2e7],
+                damping: [0.0; 3],
+            },
+        });
+        p.inner_support = Support {
+            stiffness: [0.0, 1e6, 1e6],
+            damping: [0.0; 3],
+        };
+        p.cage.pocket_shape = PocketShape::Spherical;
+        p.cage.pocket_law = PocketLaw::GuptaFilm {
+            wall_force: 11.0,
+            stiffness: 5e8,
+            damping: 0.0,
+        };
+    });
+    eprintln!(
+        "B1 (housing, supports, film pockets): max |ΔE|/KE = {rel:.2e} over {steps} steps (KE {ke:.4} J)"
+    );
+    assert!(rel < 1e-8, "energy drift {rel}");
 }

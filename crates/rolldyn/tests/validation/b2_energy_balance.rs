@@ -5,10 +5,15 @@
 
 use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, seed000_dynamics, steel_seed000};
 use rolldyn::contact::HertzModel;
-use rolldyn::dynamics::{BearingModel, DragParameters};
+use rolldyn::dynamics::{
+    BearingModel, DragParameters, DynamicsParameters, OuterRing, PocketLaw, PocketShape, Support,
+};
 use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
+use rolldyn::lubrication::PressureViscosity;
 use rolldyn::material::Material;
+use rolldyn::operating::{LoadProfile, Loads};
+use rolldyn::traction::{SlipMeasure, TractionCurve, TractionModel};
 
 /// Integrates `model` from `y0` to `t_end`; returns (drive, ΔE, dissipated).
 fn balance(mut model: BearingModel, y0: &[f64], t_end: f64, rtol: f64) -> (f64, f64, f64) {
@@ -32,10 +37,59 @@ fn balance(mut model: BearingModel, y0: &[f64], t_end: f64, rtol: f64) -> (f64, 
 /// cage started at rest: contacts open and close, balls skid and impact.
 #[test]
 fn b2_drive_work_balances_energy_and_dissipation() {
+    b2_seed000(|_| {});
+}
+
+/// B2 with the other dissipative and external elements on the same run:
+/// the traction curve (seed 004 eq 18, slide-to-roll) instead of Coulomb,
+/// hysteresis rolling resistance (α_h = 0.007), the outer ring on a damped
+/// housing, a damped inner-ring support, spherical Hertz pockets with
+/// damping and friction, a cage unbalance on a whirling cage, and a load
+/// ramp 100 → 300 N over the run (its explicit time dependence is external
+/// work).
+#[test]
+fn b2_balance_with_curve_hysteresis_housing_pockets_unbalance_and_load_ramp() {
+    b2_seed000(|p| {
+        p.traction = TractionModel::TractionCurve(TractionCurve {
+            a: -0.06,
+            b: 8.0,
+            c: 60.0,
+            d: 0.06,
+            slip: SlipMeasure::SlideToRoll,
+            full_speed: 1e-2,
+        });
+        p.rolling_hysteresis = 0.007;
+        p.outer_ring = Some(OuterRing {
+            mass: 0.2,
+            housing: Support {
+                stiffness: [0.0, 5e7, 5e7],
+                damping: [0.0, 200.0, 200.0],
+            },
+        });
+        p.inner_support = Support {
+            stiffness: [0.0, 1e6, 1e6],
+            damping: [0.0, 50.0, 50.0],
+        };
+        p.cage.pocket_shape = PocketShape::Spherical;
+        p.cage.pocket_law = PocketLaw::Hertz {
+            stiffness: 5e8,
+            damping: 20.0,
+        };
+        p.cage.unbalance = 2e-6;
+        let at = |fz: f64| Loads {
+            force: [0.0, 0.0, fz],
+            moment: [0.0; 2],
+        };
+        p.loads = LoadProfile::piecewise_linear(vec![(0.0, at(100.0)), (0.01, at(300.0))]).unwrap();
+    });
+}
+
+fn b2_seed000(configure: impl Fn(&mut DynamicsParameters)) {
     let g = bearing_6304();
     let mut params = seed000_dynamics(100.0);
     params.inner_ring_mass = 0.1;
     params.inner_ring_tilt_inertia = 1e-5;
+    configure(&mut params);
     let steel = steel_seed000();
     let model = BearingModel::new(&g, &steel, &steel, HertzModel::HertzCircular, params).unwrap();
     let mut y0 = model.pure_rolling_state([0.0; 5]);
@@ -61,8 +115,9 @@ fn b2_drive_work_balances_energy_and_dissipation() {
     );
 }
 
-/// B2 in 3-D with EHL traction integrated on the ellipse grid (spin
-/// friction couples on balls and rings) and ball and cage drag on: 7008C,
+/// B2 in 3-D with EHL traction (Roelands viscosity) integrated on the
+/// ellipse grid (spin friction couples on balls and rings), hysteresis
+/// rolling resistance and ball and cage drag on: 7008C,
 /// 10 000 rpm, 200 N, 1 ms from the Jones–Harris state. Guards the traction
 /// couple's reaction on the ring (missing it broke the balance by ~50 %)
 /// and the drag power.
@@ -75,7 +130,11 @@ fn b2_energy_balance_with_ehl_grid_traction() {
         cage_viscous: 1e-6,
         cage_windage: 1e-9,
     };
-    let (params, eq) = dynamics_7008c(drag);
+    let (mut params, eq) = dynamics_7008c(drag);
+    if let TractionModel::Ehl(ehl) = &mut params.traction {
+        ehl.lubricant.pressure_model = PressureViscosity::Roelands;
+    }
+    params.rolling_hysteresis = 0.007;
     let steel = Material::STEEL_52100;
     let model =
         BearingModel::new(&bearing_7008c(), &steel, &steel, HertzModel::Exact, params).unwrap();

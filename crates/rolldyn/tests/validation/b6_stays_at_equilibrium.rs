@@ -32,7 +32,7 @@ fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
     let g = bearing_7008c();
     let steel = Material::STEEL_52100;
     let (params, eq) = dynamics_7008c(DragParameters::default());
-    let (loads, speed) = (params.loads, params.speed.speed_at(0.0));
+    let (loads, speed) = (params.loads.at(0.0), params.speed.speed_at(0.0));
     let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
     let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
     let y0 = model.state_from_equilibrium(&eq);
@@ -53,8 +53,8 @@ fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
         while next <= rk.t() {
             rk.interpolate(next, &mut sample);
             model.contact_samples(next, &sample, &mut loads_now);
-            sum_i += loads_now.iter().map(|l| l.load_inner).sum::<f64>();
-            sum_o += loads_now.iter().map(|l| l.load_outer).sum::<f64>();
+            sum_i += loads_now.iter().map(|l| l.inner.load).sum::<f64>();
+            sum_o += loads_now.iter().map(|l| l.outer.load).sum::<f64>();
             n += z;
             next += dt;
         }

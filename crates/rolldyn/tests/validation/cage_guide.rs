@@ -12,6 +12,7 @@ use rolldyn::dynamics::{BearingModel, DragParameters, GuideLand};
 use rolldyn::integrate::tableau::DOPRI5;
 use rolldyn::integrate::{ExplicitRk, StepControl};
 use rolldyn::material::Material;
+use rolldyn::operating::{LoadProfile, Loads};
 
 #[test]
 fn guided_cage_stays_within_its_clearance() {
@@ -26,7 +27,10 @@ fn guided_cage_stays_within_its_clearance() {
         max_eccentricity: 0.95,
         stop_stiffness: 1e8,
     });
-    params.loads.force[2] = 100.0;
+    params.loads = LoadProfile::Constant(Loads {
+        force: [200.0, 0.0, 100.0],
+        moment: [0.0; 2],
+    });
     let steel = Material::STEEL_52100;
     let mut model =
         BearingModel::new(&bearing_7008c(), &steel, &steel, HertzModel::Exact, params).unwrap();

@@ -56,10 +56,12 @@ pub fn bearing_7218b() -> BearingGeometry {
 }
 
 use rolldyn::contact::{HertzModel, NormalForceLaw};
-use rolldyn::dynamics::{CageParameters, DragParameters, DynamicsParameters};
+use rolldyn::dynamics::{
+    CageParameters, DragParameters, DynamicsParameters, PocketLaw, PocketShape, Support,
+};
 use rolldyn::lubrication::Lubricant;
 use rolldyn::material::Material;
-use rolldyn::operating::{Loads, SpeedProfile};
+use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
 use rolldyn::quasistatic::{
     Conditions, Equilibrium, QuasiStaticSolver, RacewayControl, SolverOptions,
 };
@@ -93,8 +95,12 @@ pub fn seed000_dynamics(radial_load: f64) -> DynamicsParameters {
             inertia: 8.2e-7,
             pitch_radius: 18.005e-3,
             pocket_clearance: 0.2e-3,
-            pocket_stiffness: 1e7,
-            pocket_damping: 20.0,
+            pocket_shape: PocketShape::Cylindrical,
+            pocket_law: PocketLaw::Linear {
+                stiffness: 1e7,
+                damping: 20.0,
+            },
+            unbalance: 0.0,
             pocket_friction: friction,
             whirl: true,
             guide: None,
@@ -104,13 +110,16 @@ pub fn seed000_dynamics(radial_load: f64) -> DynamicsParameters {
         traction: TractionModel::ModifiedCoulomb(friction),
         traction_integration: TractionIntegration::Centre,
         speed: SpeedProfile::Constant(8000.0 * std::f64::consts::TAU / 60.0),
-        loads: Loads {
+        loads: LoadProfile::Constant(Loads {
             force: [0.0, 0.0, radial_load],
             moment: [0.0, 0.0],
-        },
+        }),
         gravity: 9.81,
         planar: true,
         drag: DragParameters::default(),
+        inner_support: Support::default(),
+        outer_ring: None,
+        rolling_hysteresis: 0.0,
     }
 }
 
@@ -145,8 +154,12 @@ pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium)
             inertia: 2.4e-6,
             pitch_radius: 27e-3,
             pocket_clearance: 0.175e-3,
-            pocket_stiffness: 1e7,
-            pocket_damping: 20.0,
+            pocket_shape: PocketShape::Cylindrical,
+            pocket_law: PocketLaw::Linear {
+                stiffness: 1e7,
+                damping: 20.0,
+            },
+            unbalance: 0.0,
             pocket_friction: ModifiedCoulomb {
                 friction: 0.05,
                 stick_speed: 0.0,
@@ -163,6 +176,7 @@ pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium)
             lubricant: Lubricant {
                 viscosity: 0.0467,
                 pressure_viscosity: 2.2e-8,
+                pressure_model: Default::default(),
             },
         }),
         traction_integration: TractionIntegration::Grid {
@@ -170,10 +184,13 @@ pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium)
             along: 6,
         },
         speed: SpeedProfile::Constant(speed),
-        loads,
+        loads: LoadProfile::Constant(loads),
         gravity: 0.0,
         planar: false,
         drag,
+        inner_support: Support::default(),
+        outer_ring: None,
+        rolling_hysteresis: 0.0,
     };
     (params, eq)
 }

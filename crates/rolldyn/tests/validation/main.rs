@@ -22,3 +22,4 @@ mod cage_guide;
 mod common;
 mod quasistatic_high_speed;
 mod quasistatic_static;
+mod rolling_resistance;
