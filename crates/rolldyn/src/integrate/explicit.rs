@@ -80,7 +80,16 @@ pub struct ExplicitRk {
     f_prev: Vec<f64>,
     dense: Vec<f64>,
     stats: IntegrationStats,
+    /// Error norm of the last accepted step (PI control).
+    err_prev: f64,
 }
+
+/// Weight β of the previous error in the PI step-size controller
+/// (Gustafsson; Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4, and
+/// their DOPRI5 code, which allows β ≤ 0.1 and uses 0.04). The larger
+/// value damps the step-size oscillation at the stability boundary, where
+/// the bearing's stiff traction keeps explicit methods.
+const PI_BETA: f64 = 0.08;
 
 impl ExplicitRk {
     /// Sets up an integration of `system` from (t0, y0).
@@ -158,6 +167,7 @@ impl ExplicitRk {
                 rhs_evaluations: 1,
                 ..Default::default()
             },
+            err_prev: 1e-4,
         };
         if me.f.iter().any(|v| !v.is_finite()) {
             return Err(IntegrationError::NonFinite { t: t0 });
@@ -296,6 +306,7 @@ impl ExplicitRk {
             } => (Some(relative_tolerance), max_step),
             StepControl::Fixed { .. } => (None, f64::INFINITY),
         };
+        let mut rejected = false;
         loop {
             let natural = self.h.min(max_step);
             // Land on t_limit without a sliver step.
@@ -309,12 +320,14 @@ impl ExplicitRk {
             if err <= 1.0 {
                 let order = self.tableau.order as f64;
                 if !fixed {
-                    let factor = if err == 0.0 {
-                        5.0
-                    } else {
-                        (0.9 * err.powf(-1.0 / order)).clamp(0.2, 5.0)
-                    };
-                    self.h = natural * factor;
+                    // PI controller: h_new = h · 0.9 err^{−(1/q − 0.75β)} err_prev^{β};
+                    // no growth right after a rejection.
+                    let err = err.max(1e-10);
+                    let factor = 0.9
+                        * err.powf(-(1.0 / order - 0.75 * PI_BETA))
+                        * self.err_prev.powf(PI_BETA);
+                    self.h = natural * factor.clamp(0.2, if rejected { 1.0 } else { 5.0 });
+                    self.err_prev = err.max(1e-4);
                 }
                 self.finish_step(system, h);
                 return Ok(());
@@ -323,6 +336,7 @@ impl ExplicitRk {
                 return Err(IntegrationError::NonFinite { t: self.t });
             }
             self.stats.rejected_steps += 1;
+            rejected = true;
             let order = self.tableau.order as f64;
             let factor = if err.is_finite() {
                 (0.9 * err.powf(-1.0 / order)).clamp(0.2, 1.0)

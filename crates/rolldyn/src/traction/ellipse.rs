@@ -115,7 +115,6 @@ pub fn integrate(
         let s_t = s - s.dot(&normal) * normal;
         let df = law.shear_stress(pressure, &s_t, conditions) * area;
         out.force += df;
-        out.moment += (x - ball_centre).cross(&df);
         out.couple += (x - patch.point).cross(&df);
         out.dissipation -= df.dot(&s_t);
     };
@@ -161,6 +160,8 @@ pub fn integrate(
             }
         }
     }
+    // Σ (X − q) × dF = Σ (X − P) × dF + (P − q) × Σ dF.
+    out.moment = out.couple + (patch.point - ball_centre).cross(&out.force);
     out
 }
 
