@@ -471,3 +471,68 @@ fn dynamics_parameters_defaults_and_missing_values() {
         p.inner_ring_mass
     );
 }
+
+#[test]
+fn pocket_laws_supports_and_load_tables() {
+    const CAGE: &str = "\n[inner_ring]\nmass = \"0.5 kg\"\ntilt_inertia = \"1e-4 kg.m^2\"\n\n[cage]\nmass = \"3 g\"\ninertia = \"2e-6 kg.m^2\"\npocket_clearance = \"0.175 mm\"\n";
+    // The Hertz pocket laws need the cage material; the linear law its stiffness.
+    let case = load_case(
+        "case.toml",
+        &format!("{BASE}{CAGE}pocket_law = \"hertz\"\n"),
+        &[],
+    )
+    .unwrap();
+    assert_eq!(case.dynamics_parameters().unwrap_err().key, "cage.material");
+    let case = load_case("case.toml", &format!("{BASE}{CAGE}"), &[]).unwrap();
+    let e = case.dynamics_parameters().unwrap_err();
+    assert_eq!(e.key, "cage.pocket_stiffness");
+    assert!(e.rule.contains("linear pocket law"), "{}", e.rule);
+    // gupta_film: 11 N at the wall by default, K_bc from the materials.
+    let case = load_case(
+        "case.toml",
+        &format!("{BASE}{CAGE}pocket_law = \"gupta_film\"\npocket_shape = \"spherical\"\nmaterial = \"steel_52100\"\nunbalance = \"50 g.mm\"\n"),
+        &[],
+    )
+    .unwrap();
+    let p = case.dynamics_parameters().unwrap();
+    match p.cage.pocket_law {
+        rolldyn::cage::PocketLaw::GuptaFilm {
+            wall_force,
+            stiffness,
+            ..
+        } => {
+            assert_eq!(wall_force, 11.0);
+            assert!(stiffness > 1e9, "{stiffness}");
+        }
+        other => panic!("{other:?}"),
+    }
+    assert!((p.cage.unbalance - 5e-5).abs() < 1e-18);
+    let e = err(&format!(
+        "{BASE}{CAGE}pocket_law = \"gupta_film\"\npocket_wall_force = \"-1 N\"\n"
+    ));
+    check(&e, "cage.pocket_wall_force", 23, &["must not be negative"]);
+    // Constant loads and a load table exclude each other.
+    let e = err(&format!(
+        "{BASE}load_profile = [{{ time = \"0 s\", force_x = \"100 N\" }}]\n"
+    ));
+    assert_eq!(e.key.as_deref(), Some("operating.load_profile"), "{e}");
+    assert!(e.to_string().contains("not both"), "{e}");
+    let table = BASE.replace(
+        "force_x = \"200 N\"",
+        "load_profile = [{ time = \"0 s\", force_x = \"100 N\" }, { time = \"0 s\", force_x = \"300 N\" }]",
+    );
+    let e = err(&table);
+    assert_eq!(e.key.as_deref(), Some("operating.load_profile[1].time"), "{e}");
+    assert!(e.to_string().contains("increase"), "{e}");
+    // Outer ring on a housing; bad hysteresis coefficient.
+    let e = err(&format!(
+        "{BASE}\n[outer_ring]\nmass = \"0 kg\"\nhousing_stiffness = \"1e8 N/m\"\n"
+    ));
+    check(&e, "outer_ring.mass", 15, &["must be positive"]);
+    let e = err(&format!("{BASE}\n[model]\nrolling_hysteresis = 1.5\n"));
+    check(&e, "model.rolling_hysteresis", 15, &["[0, 1)"]);
+    let e = err(&format!(
+        "{BASE}\n[model]\ntraction = {{ law = \"traction_curve\", a = 0.0, b = 1.0, c = -1.0, d = 0.05 }}\n"
+    ));
+    check(&e, "model.traction.c", 15, &["must not be negative"]);
+}

@@ -391,6 +391,11 @@ fn run_writes_parquet_and_summary() {
         "mean_load_inner_n",
         "max_load_outer_n",
         "energy_balance_relative_error",
+        "mean_slide_to_roll_inner",
+        "mean_spin_to_roll_outer",
+        "mean_attitude_deg",
+        "mean_yaw_deg",
+        "max_abs_yaw_deg",
         "steps",
         "rejected_steps",
         "rhs_evaluations",
@@ -398,6 +403,13 @@ fn run_writes_parquet_and_summary() {
     ] {
         assert!(summary.get(k).is_some(), "summary lacks {k}");
     }
+    // Outer-raceway control start: the outer contacts roll with little
+    // spin, the inner ones spin (Jones–Harris); the ball axis lies near the
+    // contact angles (7008C at 200 N: 13–18°) with no yaw under pure axial load.
+    let f = |k: &str| summary[k].as_f64().unwrap();
+    assert!(f("mean_spin_to_roll_inner") > 5.0 * f("mean_spin_to_roll_outer").abs());
+    assert!((10.0..20.0).contains(&f("mean_attitude_deg")));
+    assert!(f("max_abs_yaw_deg") < 1.0);
     assert!(
         summary["energy_balance_relative_error"]
             .as_f64()
@@ -417,10 +429,17 @@ fn run_writes_parquet_and_summary() {
             .map(String::as_str),
         Some("rpm")
     );
-    assert!(
-        schema.index_of("ball21_load_inner_n").is_ok(),
-        "22 balls recorded"
-    );
+    for channel in [
+        "ball21_load_inner_n",
+        "ball21_slide_to_roll_outer",
+        "ball21_spin_to_roll_inner",
+        "ball21_film_inner_m",
+        "ball21_attitude_deg",
+        "ball21_yaw_deg",
+        "outer_ring_y_m",
+    ] {
+        assert!(schema.index_of(channel).is_ok(), "no channel {channel}");
+    }
     let batch = builder.build().unwrap().next().unwrap().unwrap();
     // 20 kHz over 1 ms: samples at 0, 50 µs, …, 1 ms.
     assert_eq!(batch.num_rows(), 21);
@@ -431,6 +450,30 @@ fn run_writes_parquet_and_summary() {
         .unwrap();
     assert!((t.value(20) - 1e-3).abs() < 1e-15);
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// VALIDATION B7 for dynamic runs: the same case gives bit-identical
+/// time series (and summaries, but for the wall time).
+#[test]
+fn run_is_deterministic() {
+    let runs: Vec<(Vec<u8>, Value)> = ["det-a", "det-b"]
+        .iter()
+        .map(|name| {
+            let dir = temp_dir(name);
+            let d = dir.to_string_lossy().into_owned();
+            let o = rolldyn(&["run", "--duration", "0.5 ms", "-o", &d], None);
+            assert!(o.status.success(), "{}", stderr(&o));
+            let parquet = std::fs::read(dir.join("timeseries.parquet")).unwrap();
+            let mut summary: Value =
+                serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
+                    .unwrap();
+            summary["wall_time_s"] = Value::Null;
+            std::fs::remove_dir_all(&dir).ok();
+            (parquet, summary)
+        })
+        .collect();
+    assert!(runs[0].0 == runs[1].0, "time series differ");
+    assert_eq!(runs[0].1, runs[1].1);
 }
 
 #[test]
