@@ -20,6 +20,7 @@ mod c1_seed000;
 mod c5_seed002_table1;
 mod cage_guide;
 mod common;
+mod convergence;
 mod quasistatic_high_speed;
 mod quasistatic_static;
 mod rolling_resistance;
