@@ -522,7 +522,11 @@ fn pocket_laws_supports_and_load_tables() {
         "load_profile = [{ time = \"0 s\", force_x = \"100 N\" }, { time = \"0 s\", force_x = \"300 N\" }]",
     );
     let e = err(&table);
-    assert_eq!(e.key.as_deref(), Some("operating.load_profile[1].time"), "{e}");
+    assert_eq!(
+        e.key.as_deref(),
+        Some("operating.load_profile[1].time"),
+        "{e}"
+    );
     assert!(e.to_string().contains("increase"), "{e}");
     // Outer ring on a housing; bad hysteresis coefficient.
     let e = err(&format!(

@@ -321,6 +321,15 @@ struct PocketContact {
     dissipation: f64,
 }
 
+/// Kinematic state of a ball (global frame).
+struct BallMotion {
+    centre: Vector3<f64>,
+    velocity: Vector3<f64>,
+    omega: Vector3<f64>,
+    /// Orbital rate φ̇ of its azimuth frame \[rad/s\].
+    orbital_rate: f64,
+}
+
 /// Kinematic state of a ring for contact evaluation.
 struct RingMotion {
     raceway: Raceway,
@@ -515,11 +524,7 @@ impl BearingModel {
 
     /// Ball centre, velocity and angular velocity (global), and its frame.
     #[allow(clippy::type_complexity)]
-    fn ball_kinematics(
-        &self,
-        j: usize,
-        y: &[f64],
-    ) -> (Vector3<f64>, Vector3<f64>, Vector3<f64>, [Vector3<f64>; 3]) {
+    fn ball_kinematics(&self, j: usize, y: &[f64]) -> (BallMotion, [Vector3<f64>; 3]) {
         let b = self.layout.ball(j);
         let (s, c) = y[b + 2].sin_cos();
         let ex = Vector3::x();
@@ -528,7 +533,15 @@ impl BearingModel {
         let q = y[b] * ex + y[b + 1] * er;
         let v = y[b + 3] * ex + y[b + 4] * er + y[b + 1] * y[b + 5] * et;
         let w = y[b + 6] * ex + y[b + 7] * er + y[b + 8] * et;
-        (q, v, w, [ex, er, et])
+        (
+            BallMotion {
+                centre: q,
+                velocity: v,
+                omega: w,
+                orbital_rate: y[b + 5],
+            },
+            [ex, er, et],
+        )
     }
 
     fn race_contact(
@@ -536,11 +549,10 @@ impl BearingModel {
         ring: &RingMotion,
         table: &ContactTable,
         episode: &ContactEpisode,
-        q: &Vector3<f64>,
-        v: &Vector3<f64>,
-        w: &Vector3<f64>,
-        orbital_rate: f64,
+        ball: &BallMotion,
     ) -> Option<RaceContact> {
+        let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
+        let orbital_rate = ball.orbital_rate;
         let d = self.geometry.ball_diameter;
         let geometry = ring.circle.contact(q, d, 0.0)?;
         if geometry.penetration <= 0.0 {
@@ -675,14 +687,8 @@ impl BearingModel {
     }
 
     /// Pocket contact of ball j, if closed.
-    fn pocket_contact(
-        &self,
-        j: usize,
-        y: &[f64],
-        q: &Vector3<f64>,
-        v: &Vector3<f64>,
-        w: &Vector3<f64>,
-    ) -> Option<PocketContact> {
+    fn pocket_contact(&self, j: usize, y: &[f64], ball: &BallMotion) -> Option<PocketContact> {
+        let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
         let cage = &self.params.cage;
         let c = self.layout.cage();
         let centre = Vector3::new(0.0, y[c], y[c + 1]);
@@ -725,18 +731,13 @@ impl BearingModel {
     pub fn contact_samples(&self, t: f64, y: &[f64], out: &mut [ContactSample]) {
         let (inner, outer) = self.ring_motion(t, y);
         for (j, sample) in out.iter_mut().enumerate().take(self.layout.balls) {
-            let (q, v, w, _) = self.ball_kinematics(j, y);
-            let orbital = y[self.layout.ball(j) + 5];
+            let (ball, _) = self.ball_kinematics(j, y);
             let episodes = &self.episodes[j];
             *sample = ContactSample::default();
-            if let Some(c) =
-                self.race_contact(&inner, &self.inner_table, &episodes[0], &q, &v, &w, orbital)
-            {
+            if let Some(c) = self.race_contact(&inner, &self.inner_table, &episodes[0], &ball) {
                 sample.inner = c.output;
             }
-            if let Some(c) =
-                self.race_contact(&outer, &self.outer_table, &episodes[1], &q, &v, &w, orbital)
-            {
+            if let Some(c) = self.race_contact(&outer, &self.outer_table, &episodes[1], &ball) {
                 sample.outer = c.output;
             }
         }
@@ -823,7 +824,8 @@ impl BearingModel {
         let g = self.params.gravity;
         let mut e = Energy::default();
         for j in 0..l.balls {
-            let (q, v, w, _) = self.ball_kinematics(j, y);
+            let (ball, _) = self.ball_kinematics(j, y);
+            let (q, v, w) = (ball.centre, ball.velocity, ball.omega);
             e.kinetic += 0.5 * self.ball_mass * v.norm_squared()
                 + 0.5 * self.ball_inertia * w.norm_squared();
             e.potential += self.ball_mass * g * q.z;
@@ -835,7 +837,7 @@ impl BearingModel {
                     }
                 }
             }
-            if let Some(pc) = self.pocket_contact(j, y, &q, &v, &w) {
+            if let Some(pc) = self.pocket_contact(j, y, &ball) {
                 let cage = &self.params.cage;
                 e.elastic += cage
                     .pocket_law
@@ -891,14 +893,12 @@ impl OdeSystem for BearingModel {
         let c = l.cage();
         let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
         for j in 0..l.balls {
-            let (q, v, w, [ex, er, et]) = self.ball_kinematics(j, y);
-            let orbital = y[l.ball(j) + 5];
+            let (ball, [ex, er, et]) = self.ball_kinematics(j, y);
+            let w = ball.omega;
             let mut force = Vector3::new(0.0, 0.0, -self.ball_mass * g);
             let mut moment = Vector3::zeros();
             let episodes = &self.episodes[j];
-            if let Some(cn) =
-                self.race_contact(&inner, &self.inner_table, &episodes[0], &q, &v, &w, orbital)
-            {
+            if let Some(cn) = self.race_contact(&inner, &self.inner_table, &episodes[0], &ball) {
                 force += cn.force;
                 moment += cn.moment;
                 ring_force -= cn.force;
@@ -906,15 +906,13 @@ impl OdeSystem for BearingModel {
                     (cn.geometry.contact_point - inner.centre).cross(&(-cn.force)) - cn.couple;
                 dissipation += cn.dissipation;
             }
-            if let Some(cn) =
-                self.race_contact(&outer, &self.outer_table, &episodes[1], &q, &v, &w, orbital)
-            {
+            if let Some(cn) = self.race_contact(&outer, &self.outer_table, &episodes[1], &ball) {
                 force += cn.force;
                 moment += cn.moment;
                 outer_force -= cn.force;
                 dissipation += cn.dissipation;
             }
-            if let Some(pc) = self.pocket_contact(j, y, &q, &v, &w) {
+            if let Some(pc) = self.pocket_contact(j, y, &ball) {
                 force += pc.force;
                 moment += pc.moment;
                 cage_force -= pc.force;
@@ -1083,14 +1081,13 @@ impl OdeSystem for BearingModel {
         let floor = self.params.impact_speed_floor;
         let mut changed = false;
         for j in 0..self.layout.balls {
-            let (q, v, w, _) = self.ball_kinematics(j, y);
-            let orbital = y[self.layout.ball(j) + 5];
+            let (ball, _) = self.ball_kinematics(j, y);
             for (k, (ring, table)) in [(&inner, &self.inner_table), (&outer, &self.outer_table)]
                 .into_iter()
                 .enumerate()
             {
                 let before = self.episodes[j][k];
-                let contact = self.race_contact(ring, table, &before, &q, &v, &w, orbital);
+                let contact = self.race_contact(ring, table, &before, &ball);
                 let mut episode = before;
                 match contact {
                     Some(cn) => episode.accept(cn.geometry.penetration, cn.penetration_rate, floor),

@@ -40,7 +40,8 @@ fn mean_cage_speed_converges_with_the_tolerance() {
         let steel = steel_seed000();
         let mut params = seed000_dynamics(-100.0);
         params.cage.whirl = false;
-        let mut m = BearingModel::new(&g, &steel, &steel, HertzModel::HertzCircular, params).unwrap();
+        let mut m =
+            BearingModel::new(&g, &steel, &steel, HertzModel::HertzCircular, params).unwrap();
         let y0 = m.pure_rolling_state([0.0; 5]);
         let mut rk = ExplicitRk::new(&DOPRI5, adaptive(rtol), &m, 0.0, &y0).unwrap();
         let c = m.layout().cage() + 2;
