@@ -550,6 +550,7 @@ impl BearingModel {
         table: &ContactTable,
         episode: &ContactEpisode,
         ball: &BallMotion,
+        with_output: bool,
     ) -> Option<RaceContact> {
         let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
         let orbital_rate = ball.orbital_rate;
@@ -591,11 +592,18 @@ impl BearingModel {
         // v_P = q̇ + φ̇ e_x × (P − q). Entrainment is the mean surface speed
         // relative to it (MODEL §3 writes q̇ for v_P, which misses φ̇ e_x ×
         // (P − q): a factor 1/(1 ± γ cos α) on |u|, 12 % on the 7008C).
-        let contact_velocity = v + orbital_rate * Vector3::x().cross(&(point - q));
-        let entrainment =
-            0.5 * ((ball_surface - contact_velocity) + (ring_surface - contact_velocity));
-        let entrainment = entrainment - entrainment.dot(&n) * n;
-        let u = entrainment.norm();
+        // Computed only where used (film, traction curve, hysteresis, output).
+        let hysteresis = self.params.rolling_hysteresis > 0.0;
+        let (entrainment, u) =
+            if with_output || hysteresis || self.params.traction.needs_entrainment() {
+                let contact_velocity = v + orbital_rate * Vector3::x().cross(&(point - q));
+                let e =
+                    0.5 * ((ball_surface - contact_velocity) + (ring_surface - contact_velocity));
+                let e = e - e.dot(&n) * n;
+                (e, e.norm())
+            } else {
+                (Vector3::zeros(), 0.0)
+            };
         let film = match &self.params.traction {
             TractionModel::Ehl(ehl) => {
                 let curvature = Curvature::of_raceway(
@@ -650,7 +658,7 @@ impl BearingModel {
         let mut moment = traction.moment;
         let mut couple = traction.couple;
         let mut dissipation = traction.dissipation;
-        if self.params.rolling_hysteresis > 0.0 {
+        if hysteresis {
             let rolling_speed = 0.5 * self.geometry.ball_diameter * rolling_rate;
             let ramp = (rolling_speed / HYSTERESIS_RAMP_SPEED).clamp(-1.0, 1.0);
             let m_h = -(0.1875 * self.params.rolling_hysteresis * ellipse.semi_minor * load * ramp)
@@ -661,19 +669,23 @@ impl BearingModel {
         }
         let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
         dissipation += (load - elastic) * penetration_rate;
-        let slip_t = slip - slip.dot(&n) * n;
-        let output = ContactOutput {
-            load,
-            angle: geometry.contact_angle,
-            slip_speed: slip_t.norm(),
-            entrainment_speed: u,
-            slide_to_roll: if u > 0.0 { slip_t.norm() / u } else { 0.0 },
-            spin_to_roll: if rolling_rate != 0.0 {
-                relative_spin.dot(&n) / rolling_rate.abs()
-            } else {
-                0.0
-            },
-            film,
+        let output = if with_output {
+            let slip_speed = (slip - slip.dot(&n) * n).norm();
+            ContactOutput {
+                load,
+                angle: geometry.contact_angle,
+                slip_speed,
+                entrainment_speed: u,
+                slide_to_roll: if u > 0.0 { slip_speed / u } else { 0.0 },
+                spin_to_roll: if rolling_rate != 0.0 {
+                    relative_spin.dot(&n) / rolling_rate.abs()
+                } else {
+                    0.0
+                },
+                film,
+            }
+        } else {
+            ContactOutput::default()
         };
         Some(RaceContact {
             geometry,
@@ -734,10 +746,12 @@ impl BearingModel {
             let (ball, _) = self.ball_kinematics(j, y);
             let episodes = &self.episodes[j];
             *sample = ContactSample::default();
-            if let Some(c) = self.race_contact(&inner, &self.inner_table, &episodes[0], &ball) {
+            if let Some(c) = self.race_contact(&inner, &self.inner_table, &episodes[0], &ball, true)
+            {
                 sample.inner = c.output;
             }
-            if let Some(c) = self.race_contact(&outer, &self.outer_table, &episodes[1], &ball) {
+            if let Some(c) = self.race_contact(&outer, &self.outer_table, &episodes[1], &ball, true)
+            {
                 sample.outer = c.output;
             }
         }
@@ -898,7 +912,9 @@ impl OdeSystem for BearingModel {
             let mut force = Vector3::new(0.0, 0.0, -self.ball_mass * g);
             let mut moment = Vector3::zeros();
             let episodes = &self.episodes[j];
-            if let Some(cn) = self.race_contact(&inner, &self.inner_table, &episodes[0], &ball) {
+            if let Some(cn) =
+                self.race_contact(&inner, &self.inner_table, &episodes[0], &ball, false)
+            {
                 force += cn.force;
                 moment += cn.moment;
                 ring_force -= cn.force;
@@ -906,7 +922,9 @@ impl OdeSystem for BearingModel {
                     (cn.geometry.contact_point - inner.centre).cross(&(-cn.force)) - cn.couple;
                 dissipation += cn.dissipation;
             }
-            if let Some(cn) = self.race_contact(&outer, &self.outer_table, &episodes[1], &ball) {
+            if let Some(cn) =
+                self.race_contact(&outer, &self.outer_table, &episodes[1], &ball, false)
+            {
                 force += cn.force;
                 moment += cn.moment;
                 outer_force -= cn.force;
@@ -1087,7 +1105,7 @@ impl OdeSystem for BearingModel {
                 .enumerate()
             {
                 let before = self.episodes[j][k];
-                let contact = self.race_contact(ring, table, &before, &ball);
+                let contact = self.race_contact(ring, table, &before, &ball, false);
                 let mut episode = before;
                 match contact {
                     Some(cn) => episode.accept(cn.geometry.penetration, cn.penetration_rate, floor),

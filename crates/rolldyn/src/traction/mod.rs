@@ -65,6 +65,11 @@ impl TractionModel {
         matches!(self, Self::Ehl(_))
     }
 
+    /// Whether the stress law uses the entrainment speed.
+    pub fn needs_entrainment(&self) -> bool {
+        matches!(self, Self::Ehl(_) | Self::TractionCurve(_))
+    }
+
     /// Checks the parameters.
     pub fn validate(&self) -> Result<(), crate::InvalidParameter> {
         match self {
