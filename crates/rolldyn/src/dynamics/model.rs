@@ -883,6 +883,13 @@ impl BearingModel {
         e.kinetic += 0.5 * p.cage.mass * (y[c + 3].powi(2) + y[c + 4].powi(2))
             + 0.5 * p.cage.inertia * y[c + 5].powi(2);
         e.potential += p.cage.mass * g * y[c + 1];
+        if let Some(guide) = &p.cage.guide {
+            // The stop beyond ε_max is a spring.
+            let (centre, _, _) = self.guide_ring(guide, t, y);
+            let offset = (Vector3::new(0.0, y[c], y[c + 1]) - centre).norm();
+            let stop = (offset - guide.max_eccentricity * guide.radial_clearance).max(0.0);
+            e.elastic += 0.5 * guide.stop_stiffness * stop * stop;
+        }
         e
     }
 }
