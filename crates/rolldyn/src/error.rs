@@ -27,3 +27,21 @@ impl InvalidParameter {
         }
     }
 }
+
+/// `Ok` when `value` is finite and > 0, else the error "must be positive".
+pub fn require_positive(field: &'static str, value: f64) -> Result<(), InvalidParameter> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(InvalidParameter::new(field, value, "must be positive"))
+    }
+}
+
+/// `Ok` when `value` is finite and ≥ 0, else the error "must not be negative".
+pub fn require_non_negative(field: &'static str, value: f64) -> Result<(), InvalidParameter> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(())
+    } else {
+        Err(InvalidParameter::new(field, value, "must not be negative"))
+    }
+}

@@ -11,7 +11,7 @@ pub mod pocket;
 pub use guide::{GuideForces, GuideLand};
 pub use pocket::{PocketLaw, PocketShape};
 
-use crate::error::InvalidParameter;
+use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use crate::traction::ModifiedCoulomb;
 
 /// Cage data of the dynamic model.
@@ -43,27 +43,13 @@ pub struct CageParameters {
 impl CageParameters {
     /// Checks the cage data.
     pub fn validate(&self) -> Result<(), InvalidParameter> {
-        let positive = |field, v: f64| {
-            if v.is_finite() && v > 0.0 {
-                Ok(())
-            } else {
-                Err(InvalidParameter::new(field, v, "must be positive"))
-            }
-        };
-        positive("cage_mass", self.mass)?;
-        positive("cage_inertia", self.inertia)?;
-        positive("cage_pitch_radius", self.pitch_radius)?;
-        positive("pocket_clearance", self.pocket_clearance)?;
+        require_positive("cage_mass", self.mass)?;
+        require_positive("cage_inertia", self.inertia)?;
+        require_positive("cage_pitch_radius", self.pitch_radius)?;
+        require_positive("pocket_clearance", self.pocket_clearance)?;
         self.pocket_law.validate()?;
         self.pocket_friction.validate()?;
-        if !(self.unbalance.is_finite() && self.unbalance >= 0.0) {
-            return Err(InvalidParameter::new(
-                "unbalance",
-                self.unbalance,
-                "must not be negative",
-            ));
-        }
-        Ok(())
+        require_non_negative("unbalance", self.unbalance)
     }
 
     /// Unbalance force on the cage (y, z) \[N\] at cage angle θ_c and speed

@@ -26,7 +26,7 @@
 //! pocket: R_ξ in both directions).
 
 use crate::contact::{Curvature, HertzCoefficients};
-use crate::error::InvalidParameter;
+use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use serde::{Deserialize, Serialize};
 
 /// Shape of the cage pockets.
@@ -91,31 +91,12 @@ impl PocketLaw {
                 stiffness,
                 damping,
             } => {
-                if !(wall_force.is_finite() && wall_force >= 0.0) {
-                    return Err(InvalidParameter::new(
-                        "pocket_wall_force",
-                        wall_force,
-                        "must not be negative",
-                    ));
-                }
+                require_non_negative("pocket_wall_force", wall_force)?;
                 (stiffness, damping)
             }
         };
-        if !(stiffness.is_finite() && stiffness > 0.0) {
-            return Err(InvalidParameter::new(
-                "pocket_stiffness",
-                stiffness,
-                "must be positive",
-            ));
-        }
-        if !(damping.is_finite() && damping >= 0.0) {
-            return Err(InvalidParameter::new(
-                "pocket_damping",
-                damping,
-                "must not be negative",
-            ));
-        }
-        Ok(())
+        require_positive("pocket_stiffness", stiffness)?;
+        require_non_negative("pocket_damping", damping)
     }
 
     /// Whether the law acts at offset d for per-side clearance c (the film

@@ -59,7 +59,7 @@ use crate::contact::{
     ContactTable, GrooveCircle, HertzModel, NormalForceLaw, RacewayContactModel, RingPose,
     TorusContact,
 };
-use crate::error::InvalidParameter;
+use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use crate::geometry::Raceway;
 use crate::geometry::{BearingGeometry, RingKind};
 use crate::integrate::OdeSystem;
@@ -170,9 +170,7 @@ impl Support {
 
     fn validate(&self, field: &'static str) -> Result<(), InvalidParameter> {
         for v in self.stiffness.iter().chain(&self.damping) {
-            if !(v.is_finite() && *v >= 0.0) {
-                return Err(InvalidParameter::new(field, v, "must not be negative"));
-            }
+            require_non_negative(field, *v)?;
         }
         Ok(())
     }
@@ -357,14 +355,6 @@ pub struct BearingModel {
     episodes: Vec<[ContactEpisode; 2]>,
 }
 
-fn positive(field: &'static str, v: f64) -> Result<(), InvalidParameter> {
-    if v.is_finite() && v > 0.0 {
-        Ok(())
-    } else {
-        Err(InvalidParameter::new(field, v, "must be positive"))
-    }
-}
-
 impl BearingModel {
     /// Builds the model: contact tables, ball mass and inertia, checks.
     pub fn new(
@@ -374,24 +364,18 @@ impl BearingModel {
         hertz: HertzModel,
         params: DynamicsParameters,
     ) -> Result<Self, InvalidParameter> {
-        positive("inner_ring_mass", params.inner_ring_mass)?;
-        positive("inner_ring_tilt_inertia", params.inner_ring_tilt_inertia)?;
+        require_positive("inner_ring_mass", params.inner_ring_mass)?;
+        require_positive("inner_ring_tilt_inertia", params.inner_ring_tilt_inertia)?;
         params.cage.validate()?;
         params.normal_law.validate()?;
-        positive("impact_speed_floor", params.impact_speed_floor)?;
+        require_positive("impact_speed_floor", params.impact_speed_floor)?;
         params.traction.validate()?;
         params.inner_support.validate("inner_ring_support")?;
         if let Some(outer) = &params.outer_ring {
-            positive("outer_ring_mass", outer.mass)?;
+            require_positive("outer_ring_mass", outer.mass)?;
             outer.housing.validate("outer_ring_housing")?;
         }
-        if !(params.rolling_hysteresis.is_finite() && params.rolling_hysteresis >= 0.0) {
-            return Err(InvalidParameter::new(
-                "rolling_hysteresis",
-                params.rolling_hysteresis,
-                "must not be negative",
-            ));
-        }
+        require_non_negative("rolling_hysteresis", params.rolling_hysteresis)?;
         let ep = effective_modulus(ball, rings);
         let ball_mass = geometry.ball_mass(ball.density);
         Ok(Self {

@@ -17,7 +17,7 @@
 //! define; rolldyn ships no preset from it (MODEL §3).
 
 use super::{ContactConditions, TractionLaw};
-use crate::error::InvalidParameter;
+use crate::error::{InvalidParameter, require_positive};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
@@ -66,13 +66,7 @@ impl TractionCurve {
                 "must not be negative (the curve must stay bounded)",
             ));
         }
-        if !(self.full_speed.is_finite() && self.full_speed > 0.0) {
-            return Err(InvalidParameter::new(
-                "full_speed",
-                self.full_speed,
-                "must be positive",
-            ));
-        }
+        require_positive("full_speed", self.full_speed)?;
         Ok(())
     }
 

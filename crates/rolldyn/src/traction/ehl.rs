@@ -10,7 +10,7 @@
 //! and smooth), so no regularisation is needed.
 
 use super::{ContactConditions, TractionLaw};
-use crate::error::InvalidParameter;
+use crate::error::{InvalidParameter, require_positive};
 use crate::lubrication::Lubricant;
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
@@ -30,20 +30,11 @@ pub struct EhlRheology {
 impl EhlRheology {
     /// Checks the parameters.
     pub fn validate(&self) -> Result<(), InvalidParameter> {
-        if !(self.eyring_stress.is_finite() && self.eyring_stress > 0.0) {
-            return Err(InvalidParameter::new(
-                "eyring_stress",
-                self.eyring_stress,
-                "must be positive",
-            ));
-        }
-        if !(self.limiting_shear_coefficient.is_finite() && self.limiting_shear_coefficient > 0.0) {
-            return Err(InvalidParameter::new(
-                "limiting_shear_coefficient",
-                self.limiting_shear_coefficient,
-                "must be positive",
-            ));
-        }
+        require_positive("eyring_stress", self.eyring_stress)?;
+        require_positive(
+            "limiting_shear_coefficient",
+            self.limiting_shear_coefficient,
+        )?;
         self.lubricant.validate()
     }
 }
