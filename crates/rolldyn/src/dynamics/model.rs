@@ -62,7 +62,8 @@ use crate::contact::{
 use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use crate::geometry::Raceway;
 use crate::geometry::{BearingGeometry, RingKind};
-use crate::integrate::OdeSystem;
+use crate::integrate::linear::BlockLayout;
+use crate::integrate::{BlockSplit, OdeSystem};
 use crate::kinematics::cage_speed_ratio;
 use crate::lubrication::hamrock_dowson;
 use crate::material::{Material, effective_modulus};
@@ -878,100 +879,174 @@ impl BearingModel {
     }
 }
 
-impl OdeSystem for BearingModel {
-    fn dimension(&self) -> usize {
-        self.layout.len()
+/// What one ball's contacts do to the border: forces and moments on the
+/// rings and the cage, and dissipated power (the coupling vector of the
+/// block split, MODEL §8).
+#[derive(Debug, Clone, Copy, Default)]
+struct BallCoupling {
+    ring_force: Vector3<f64>,
+    ring_moment: Vector3<f64>,
+    outer_force: Vector3<f64>,
+    cage_force: Vector3<f64>,
+    cage_torque: f64,
+    dissipation: f64,
+}
+
+impl BallCoupling {
+    const LEN: usize = 14;
+
+    fn add(&mut self, other: &Self) {
+        self.ring_force += other.ring_force;
+        self.ring_moment += other.ring_moment;
+        self.outer_force += other.outer_force;
+        self.cage_force += other.cage_force;
+        self.cage_torque += other.cage_torque;
+        self.dissipation += other.dissipation;
     }
 
-    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+    fn write(&self, out: &mut [f64]) {
+        out[0..3].copy_from_slice(self.ring_force.as_slice());
+        out[3..6].copy_from_slice(self.ring_moment.as_slice());
+        out[6..9].copy_from_slice(self.outer_force.as_slice());
+        out[9..12].copy_from_slice(self.cage_force.as_slice());
+        out[12] = self.cage_torque;
+        out[13] = self.dissipation;
+    }
+
+    fn read(c: &[f64]) -> Self {
+        Self {
+            ring_force: Vector3::from_column_slice(&c[0..3]),
+            ring_moment: Vector3::from_column_slice(&c[3..6]),
+            outer_force: Vector3::from_column_slice(&c[6..9]),
+            cage_force: Vector3::from_column_slice(&c[9..12]),
+            cage_torque: c[12],
+            dissipation: c[13],
+        }
+    }
+}
+
+impl BearingModel {
+    /// Derivatives of ball j's states (into `dy`, its 9 entries) and what
+    /// its contacts do to the rings and cage.
+    fn ball_rhs(
+        &self,
+        j: usize,
+        y: &[f64],
+        inner: &RingMotion,
+        outer: &RingMotion,
+        dy: &mut [f64],
+    ) -> BallCoupling {
         let l = self.layout;
         let p = &self.params;
-        let (inner, outer) = self.ring_motion(t, y);
         let g = p.gravity;
-        let mut ring_force = Vector3::zeros();
-        let mut ring_moment = Vector3::zeros();
-        let mut outer_force = Vector3::zeros();
-        let mut external_power = 0.0;
-        let mut cage_force = Vector3::zeros();
-        let mut cage_torque = 0.0;
-        let mut dissipation = 0.0;
+        let c = l.cage();
+        let (ball, [ex, er, et]) = self.ball_kinematics(j, y);
+        let w = ball.omega;
+        let mut force = Vector3::new(0.0, 0.0, -self.ball_mass * g);
+        let mut moment = Vector3::zeros();
+        let mut out = BallCoupling::default();
+        let episodes = &self.episodes[j];
+        if let Some(cn) = self.race_contact(inner, &self.inner_table, &episodes[0], &ball, false) {
+            force += cn.force;
+            moment += cn.moment;
+            out.ring_force -= cn.force;
+            out.ring_moment +=
+                (cn.geometry.contact_point - inner.centre).cross(&(-cn.force)) - cn.couple;
+            out.dissipation += cn.dissipation;
+        }
+        if let Some(cn) = self.race_contact(outer, &self.outer_table, &episodes[1], &ball, false) {
+            force += cn.force;
+            moment += cn.moment;
+            out.outer_force -= cn.force;
+            out.dissipation += cn.dissipation;
+        }
+        if let Some(pc) = self.pocket_contact(j, y, &ball) {
+            force += pc.force;
+            moment += pc.moment;
+            out.cage_force -= pc.force;
+            let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
+            out.cage_torque += (pc.point - cage_centre).cross(&(-pc.force)).x;
+            out.dissipation += pc.dissipation;
+        }
+        let b = l.ball(j);
+        let drag = &p.drag;
+        if drag.effective_density > 0.0 {
+            let d = self.geometry.ball_diameter;
+            let v_t = y[b + 1] * y[b + 5];
+            let f = -0.5
+                * drag.effective_density
+                * drag.ball_drag_coefficient
+                * std::f64::consts::FRAC_PI_4
+                * d
+                * d
+                * v_t
+                * v_t.abs();
+            force += f * et;
+            let w_rel = w - y[b + 5] * ex;
+            let m = -0.5
+                * drag.effective_density
+                * drag.ball_spin_drag_coefficient
+                * (0.5 * d).powi(5)
+                * w_rel.norm()
+                * w_rel;
+            moment += m;
+            out.dissipation -= f * v_t + m.dot(&w);
+        }
+        let (r, phi_dot, vr) = (y[b + 1], y[b + 5], y[b + 4]);
+        let (wr, wt) = (y[b + 7], y[b + 8]);
+        let m = self.ball_mass;
+        let inertia = self.ball_inertia;
+        dy[0] = y[b + 3];
+        dy[1] = vr;
+        dy[2] = phi_dot;
+        dy[3] = force.dot(&ex) / m;
+        dy[4] = force.dot(&er) / m + r * phi_dot * phi_dot;
+        dy[5] = (force.dot(&et) / m - 2.0 * vr * phi_dot) / r;
+        dy[6] = moment.dot(&ex) / inertia;
+        dy[7] = moment.dot(&er) / inertia + phi_dot * wt;
+        dy[8] = moment.dot(&et) / inertia - phi_dot * wr;
+        if p.planar {
+            dy[0] = 0.0;
+            dy[3] = 0.0;
+            dy[7] = 0.0;
+            dy[8] = 0.0;
+        }
+        out
+    }
+
+    /// Derivatives of the border states (rings, cage, energy accumulators;
+    /// into `dy`, which starts at the inner ring's first state) for the
+    /// summed ball couplings.
+    fn border_rhs_with(
+        &self,
+        t: f64,
+        y: &[f64],
+        inner: &RingMotion,
+        balls: &BallCoupling,
+        dy: &mut [f64],
+    ) {
+        let l = self.layout;
+        let p = &self.params;
+        let g = p.gravity;
         let c = l.cage();
         let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
-        for j in 0..l.balls {
-            let (ball, [ex, er, et]) = self.ball_kinematics(j, y);
-            let w = ball.omega;
-            let mut force = Vector3::new(0.0, 0.0, -self.ball_mass * g);
-            let mut moment = Vector3::zeros();
-            let episodes = &self.episodes[j];
-            if let Some(cn) =
-                self.race_contact(&inner, &self.inner_table, &episodes[0], &ball, false)
-            {
-                force += cn.force;
-                moment += cn.moment;
-                ring_force -= cn.force;
-                ring_moment +=
-                    (cn.geometry.contact_point - inner.centre).cross(&(-cn.force)) - cn.couple;
-                dissipation += cn.dissipation;
-            }
-            if let Some(cn) =
-                self.race_contact(&outer, &self.outer_table, &episodes[1], &ball, false)
-            {
-                force += cn.force;
-                moment += cn.moment;
-                outer_force -= cn.force;
-                dissipation += cn.dissipation;
-            }
-            if let Some(pc) = self.pocket_contact(j, y, &ball) {
-                force += pc.force;
-                moment += pc.moment;
-                cage_force -= pc.force;
-                cage_torque += (pc.point - cage_centre).cross(&(-pc.force)).x;
-                dissipation += pc.dissipation;
-            }
-            let b = l.ball(j);
-            let drag = &p.drag;
-            if drag.effective_density > 0.0 {
-                let d = self.geometry.ball_diameter;
-                let v_t = y[b + 1] * y[b + 5];
-                let f = -0.5
-                    * drag.effective_density
-                    * drag.ball_drag_coefficient
-                    * std::f64::consts::FRAC_PI_4
-                    * d
-                    * d
-                    * v_t
-                    * v_t.abs();
-                force += f * et;
-                let w_rel = w - y[b + 5] * ex;
-                let m = -0.5
-                    * drag.effective_density
-                    * drag.ball_spin_drag_coefficient
-                    * (0.5 * d).powi(5)
-                    * w_rel.norm()
-                    * w_rel;
-                moment += m;
-                dissipation -= f * v_t + m.dot(&w);
-            }
-            let (r, phi_dot, vr) = (y[b + 1], y[b + 5], y[b + 4]);
-            let (wr, wt) = (y[b + 7], y[b + 8]);
-            let m = self.ball_mass;
-            let inertia = self.ball_inertia;
-            dy[b] = y[b + 3];
-            dy[b + 1] = vr;
-            dy[b + 2] = phi_dot;
-            dy[b + 3] = force.dot(&ex) / m;
-            dy[b + 4] = force.dot(&er) / m + r * phi_dot * phi_dot;
-            dy[b + 5] = (force.dot(&et) / m - 2.0 * vr * phi_dot) / r;
-            dy[b + 6] = moment.dot(&ex) / inertia;
-            dy[b + 7] = moment.dot(&er) / inertia + phi_dot * wt;
-            dy[b + 8] = moment.dot(&et) / inertia - phi_dot * wr;
-            if p.planar {
-                dy[b] = 0.0;
-                dy[b + 3] = 0.0;
-                dy[b + 7] = 0.0;
-                dy[b + 8] = 0.0;
-            }
-        }
+        let BallCoupling {
+            mut ring_force,
+            mut ring_moment,
+            mut outer_force,
+            mut cage_force,
+            mut cage_torque,
+            mut dissipation,
+        } = *balls;
+        let mut external_power = 0.0;
+        // `dy` starts at the inner ring: ring, outer ring, cage and work
+        // offsets within it.
+        let (dr, dob, dc, dw) = (
+            0,
+            l.outer() - l.ring(),
+            l.cage() - l.ring(),
+            l.work() - l.ring(),
+        );
         if let Some(guide) = &p.cage.guide {
             let (centre, centre_velocity, land_speed) = self.guide_ring(guide, t, y);
             let cage_velocity = Vector3::new(0.0, y[c + 3], y[c + 4]);
@@ -997,7 +1072,7 @@ impl OdeSystem for BearingModel {
             }
         }
         let r = l.ring();
-        dy[r..r + 5].copy_from_slice(&y[r + 5..r + 10]);
+        dy[dr..dr + 5].copy_from_slice(&y[r + 5..r + 10]);
         let mi = p.inner_ring_mass;
         let loads = p.loads.at(t);
         let (ring_position, ring_velocity) = (
@@ -1006,14 +1081,14 @@ impl OdeSystem for BearingModel {
         );
         ring_force += p.inner_support.force(&ring_position, &ring_velocity);
         dissipation += p.inner_support.dissipation(&ring_velocity);
-        dy[r + 5] = (ring_force.x + loads.force[0]) / mi;
-        dy[r + 6] = (ring_force.y + loads.force[1]) / mi;
-        dy[r + 7] = (ring_force.z + loads.force[2]) / mi - g;
-        dy[r + 8] = (ring_moment.y + loads.moment[0]) / p.inner_ring_tilt_inertia;
-        dy[r + 9] = (ring_moment.z + loads.moment[1]) / p.inner_ring_tilt_inertia;
+        dy[dr + 5] = (ring_force.x + loads.force[0]) / mi;
+        dy[dr + 6] = (ring_force.y + loads.force[1]) / mi;
+        dy[dr + 7] = (ring_force.z + loads.force[2]) / mi - g;
+        dy[dr + 8] = (ring_moment.y + loads.moment[0]) / p.inner_ring_tilt_inertia;
+        dy[dr + 9] = (ring_moment.z + loads.moment[1]) / p.inner_ring_tilt_inertia;
         if p.planar {
             for k in [0, 3, 4, 5, 8, 9] {
-                dy[r + k] = 0.0;
+                dy[dr + k] = 0.0;
             }
         }
         // Tabulated loads: the load potential −F(t)·x changes explicitly
@@ -1025,40 +1100,115 @@ impl OdeSystem for BearingModel {
             + load_rate.moment[0] * y[r + 3]
             + load_rate.moment[1] * y[r + 4];
         let o = l.outer();
-        dy[o..o + 4].fill(0.0);
+        dy[dob..dob + 4].fill(0.0);
         if let Some(ring) = &p.outer_ring {
             let position = Vector3::new(0.0, y[o], y[o + 1]);
             let velocity = Vector3::new(0.0, y[o + 2], y[o + 3]);
             outer_force += ring.housing.force(&position, &velocity);
             dissipation += ring.housing.dissipation(&velocity);
-            dy[o] = y[o + 2];
-            dy[o + 1] = y[o + 3];
-            dy[o + 2] = outer_force.y / ring.mass;
-            dy[o + 3] = outer_force.z / ring.mass - g;
+            dy[dob] = y[o + 2];
+            dy[dob + 1] = y[o + 3];
+            dy[dob + 2] = outer_force.y / ring.mass;
+            dy[dob + 3] = outer_force.z / ring.mass - g;
         }
-        dy[c..c + 3].copy_from_slice(&y[c + 3..c + 6]);
+        dy[dc..dc + 3].copy_from_slice(&y[c + 3..c + 6]);
         if p.cage.whirl {
             let [fy, fz] = p.cage.unbalance_force(y[c + 2], y[c + 5]);
             external_power += fy * y[c + 3] + fz * y[c + 4];
-            dy[c + 3] = (cage_force.y + fy) / p.cage.mass;
-            dy[c + 4] = (cage_force.z + fz) / p.cage.mass - g;
+            dy[dc + 3] = (cage_force.y + fy) / p.cage.mass;
+            dy[dc + 4] = (cage_force.z + fz) / p.cage.mass - g;
         } else {
-            dy[c] = 0.0;
-            dy[c + 1] = 0.0;
-            dy[c + 3] = 0.0;
-            dy[c + 4] = 0.0;
+            dy[dc] = 0.0;
+            dy[dc + 1] = 0.0;
+            dy[dc + 3] = 0.0;
+            dy[dc + 4] = 0.0;
         }
         let cage_speed = y[c + 5];
         let cage_drag = -(p.drag.cage_viscous * cage_speed
             + p.drag.cage_windage * cage_speed * cage_speed.abs());
         dissipation -= cage_drag * cage_speed;
-        dy[c + 5] = (cage_torque + cage_drag) / p.cage.inertia;
+        dy[dc + 5] = (cage_torque + cage_drag) / p.cage.inertia;
         // Drive power: the prescribed spin must supply −ω_i (moment of the
         // contact forces on the ring about its spin axis).
         let spin_axis = inner.omega - inner.omega_frame;
-        let w = l.work();
-        dy[w] = -ring_moment.dot(&spin_axis) + external_power;
-        dy[w + 1] = dissipation;
+        dy[dw] = -ring_moment.dot(&spin_axis) + external_power;
+        dy[dw + 1] = dissipation;
+    }
+}
+
+impl BlockSplit for BearingModel {
+    fn block_layout(&self) -> BlockLayout {
+        BlockLayout {
+            blocks: self.layout.balls,
+            block_size: StateLayout::BALL,
+            border: self.layout.len() - self.layout.ring(),
+        }
+    }
+
+    fn coupling_len(&self) -> usize {
+        BallCoupling::LEN
+    }
+
+    fn block_rhs(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+    ) {
+        let (inner, outer) = self.ring_motion(t, y);
+        self.ball_rhs(block, y, &inner, &outer, dy_block)
+            .write(coupling);
+    }
+
+    fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
+        let (inner, _) = self.ring_motion(t, y);
+        self.border_rhs_with(t, y, &inner, &BallCoupling::read(coupling), dy_border);
+    }
+
+    /// Frozen states (planar motion, a locked cage whirl, a fixed outer
+    /// ring) never change, and nothing reads the energy accumulators.
+    fn inert(&self, state: usize) -> bool {
+        let l = self.layout;
+        let p = &self.params;
+        if state < l.ring() {
+            let k = state % StateLayout::BALL;
+            return p.planar && matches!(k, 0 | 3 | 7 | 8);
+        }
+        if state < l.outer() {
+            return p.planar && matches!(state - l.ring(), 0 | 3 | 4 | 5 | 8 | 9);
+        }
+        if state < l.cage() {
+            return p.outer_ring.is_none();
+        }
+        if state < l.work() {
+            return !p.cage.whirl && matches!(state - l.cage(), 0 | 1 | 3 | 4);
+        }
+        true
+    }
+}
+
+impl OdeSystem for BearingModel {
+    fn dimension(&self) -> usize {
+        self.layout.len()
+    }
+
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        let l = self.layout;
+        let (inner, outer) = self.ring_motion(t, y);
+        let mut balls = BallCoupling::default();
+        for j in 0..l.balls {
+            let b = l.ball(j);
+            let coupling = self.ball_rhs(j, y, &inner, &outer, &mut dy[b..b + StateLayout::BALL]);
+            balls.add(&coupling);
+        }
+        let (_, border) = dy.split_at_mut(l.ring());
+        self.border_rhs_with(t, y, &inner, &balls, border);
+    }
+
+    fn blocks(&self) -> Option<&dyn BlockSplit> {
+        Some(self)
     }
 
     /// Characteristic scales: positions 1 µm (contact deflections), speeds

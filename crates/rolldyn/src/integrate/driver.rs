@@ -3,8 +3,8 @@
 //! (Ctrl-C) and reporting progress. Knows nothing of files or terminals:
 //! samples and progress go to callbacks (CODE.md: observers).
 
-use super::OdeSystem;
-use super::explicit::{ExplicitRk, IntegrationError, IntegrationStats};
+use super::explicit::{IntegrationError, IntegrationStats};
+use super::{Integrator, OdeSystem};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// How a run ended.
@@ -40,9 +40,9 @@ pub struct RunReport {
 /// at t0, t0 + Δ, … (Δ = 1/`sample_rate`, the last sample at or before
 /// t_end) and `on_progress(t)` after each step. Stops early, cleanly, when
 /// `stop` is raised.
-pub fn run<S: OdeSystem>(
+pub fn run<S: OdeSystem, I: Integrator>(
     system: &mut S,
-    integrator: &mut ExplicitRk,
+    integrator: &mut I,
     t_end: f64,
     sample_rate: f64,
     stop: &AtomicBool,
@@ -88,8 +88,8 @@ pub fn run<S: OdeSystem>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::integrate::StepControl;
     use crate::integrate::tableau::DOPRI5;
+    use crate::integrate::{ExplicitRk, StepControl};
 
     struct Decay;
     impl OdeSystem for Decay {

@@ -31,8 +31,15 @@ pub struct IntegrationStats {
     pub steps: u64,
     /// Rejected steps.
     pub rejected_steps: u64,
-    /// Right-hand-side evaluations.
+    /// Right-hand-side evaluations by the stages (and dense output).
     pub rhs_evaluations: u64,
+    /// Jacobian evaluations (implicit methods).
+    pub jacobian_evaluations: u64,
+    /// Cost of the Jacobians in right-hand-side equivalents (one per
+    /// colour of the column grouping).
+    pub jacobian_rhs_evaluations: u64,
+    /// LU factorizations of the iteration matrix (implicit methods).
+    pub factorizations: u64,
 }
 
 /// Why integration stopped early.
@@ -89,7 +96,7 @@ pub struct ExplicitRk {
 /// their DOPRI5 code, which allows β ≤ 0.1 and uses 0.04). The larger
 /// value damps the step-size oscillation at the stability boundary, where
 /// the bearing's stiff traction keeps explicit methods.
-const PI_BETA: f64 = 0.08;
+pub(crate) const PI_BETA: f64 = 0.08;
 
 impl ExplicitRk {
     /// Sets up an integration of `system` from (t0, y0).
@@ -409,18 +416,45 @@ impl ExplicitRk {
                 *o = self.y_prev[i] + theta * (r2 + t1 * (r3 + theta * (r4 + t1 * self.dense[i])));
             }
         } else {
-            let (t2, t3) = (theta * theta, theta * theta * theta);
-            let h00 = 2.0 * t3 - 3.0 * t2 + 1.0;
-            let h10 = t3 - 2.0 * t2 + theta;
-            let h01 = -2.0 * t3 + 3.0 * t2;
-            let h11 = t3 - t2;
-            for (i, o) in out.iter_mut().enumerate() {
-                *o = h00 * self.y_prev[i]
-                    + h10 * h * self.f_prev[i]
-                    + h01 * self.y[i]
-                    + h11 * h * self.f[i];
-            }
+            hermite(
+                self.t_prev,
+                h,
+                &self.y_prev,
+                &self.f_prev,
+                &self.y,
+                &self.f,
+                t,
+                out,
+            );
         }
+    }
+}
+
+/// Cubic Hermite interpolation at t in the step [t0, t0 + h] from the
+/// values and derivatives at its ends (clamped to the step).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn hermite(
+    t0: f64,
+    h: f64,
+    y0: &[f64],
+    f0: &[f64],
+    y1: &[f64],
+    f1: &[f64],
+    t: f64,
+    out: &mut [f64],
+) {
+    if h == 0.0 {
+        out.copy_from_slice(y1);
+        return;
+    }
+    let theta = ((t - t0) / h).clamp(0.0, 1.0);
+    let (t2, t3) = (theta * theta, theta * theta * theta);
+    let h00 = 2.0 * t3 - 3.0 * t2 + 1.0;
+    let h10 = t3 - 2.0 * t2 + theta;
+    let h01 = -2.0 * t3 + 3.0 * t2;
+    let h11 = t3 - t2;
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = h00 * y0[i] + h10 * h * f0[i] + h01 * y1[i] + h11 * h * f1[i];
     }
 }
 

@@ -8,16 +8,28 @@
 //!   data ([`tableau`]): classical RK4 with a fixed step, and Dormand–Prince
 //!   5(4) with error control and 4th-order dense output. All work vectors
 //!   are allocated once; a step allocates nothing.
-//! * [`IntegrationStats`]: steps, rejected steps, RHS evaluations.
+//! * [`Rosenbrock`]: linearly implicit Rosenbrock–W methods for stiff
+//!   systems (ROS34PW2), with error control, dense output, and a Jacobian
+//!   that is evaluated rarely ([`jacobian`]: finite differences grouped
+//!   by the system's block structure) and factored by blocks ([`linear`]).
+//! * [`Integrator`]: what the driver needs from an integrator; [`Solver`]
+//!   is the choice among them.
+//! * [`IntegrationStats`]: steps, rejected steps, RHS evaluations,
+//!   Jacobian evaluations and factorizations.
 //! * [`run`]: to an end time with samples at a fixed rate (dense output),
 //!   a stop flag and progress callbacks.
 
 pub mod driver;
 pub mod explicit;
+pub mod jacobian;
+pub mod linear;
+pub mod rosenbrock;
 pub mod tableau;
 
 pub use driver::{RunEnd, RunReport, run};
 pub use explicit::{ExplicitRk, IntegrationError, IntegrationStats, StepControl};
+pub use jacobian::BlockSplit;
+pub use rosenbrock::{ROS34PW2, Rosenbrock, RosenbrockTableau};
 
 /// A system of first-order ODEs y' = f(t, y).
 pub trait OdeSystem {
@@ -41,5 +53,96 @@ pub trait OdeSystem {
     /// integrator re-evaluates f at the new point. Default: nothing.
     fn accept_step(&mut self, _t: f64, _y: &[f64]) -> bool {
         false
+    }
+
+    /// The block structure of the right-hand side, if it has one: implicit
+    /// methods then differentiate and factor by blocks. Default: none
+    /// (a dense Jacobian).
+    fn blocks(&self) -> Option<&dyn BlockSplit> {
+        None
+    }
+}
+
+/// What the driver needs from an integrator.
+pub trait Integrator {
+    /// Current time.
+    fn t(&self) -> f64;
+    /// Current state.
+    fn y(&self) -> &[f64];
+    /// Takes one accepted step, not beyond `t_limit`.
+    fn step<S: OdeSystem>(&mut self, system: &mut S, t_limit: f64) -> Result<(), IntegrationError>;
+    /// The state at `t` within the last accepted step.
+    fn interpolate(&self, t: f64, out: &mut [f64]);
+    /// Counters so far.
+    fn stats(&self) -> IntegrationStats;
+}
+
+macro_rules! integrator_by_delegation {
+    ($type:ty) => {
+        impl Integrator for $type {
+            fn t(&self) -> f64 {
+                <$type>::t(self)
+            }
+            fn y(&self) -> &[f64] {
+                <$type>::y(self)
+            }
+            fn step<S: OdeSystem>(
+                &mut self,
+                system: &mut S,
+                t_limit: f64,
+            ) -> Result<(), IntegrationError> {
+                <$type>::step(self, system, t_limit)
+            }
+            fn interpolate(&self, t: f64, out: &mut [f64]) {
+                <$type>::interpolate(self, t, out)
+            }
+            fn stats(&self) -> IntegrationStats {
+                <$type>::stats(self)
+            }
+        }
+    };
+}
+integrator_by_delegation!(ExplicitRk);
+integrator_by_delegation!(Rosenbrock);
+
+/// An integrator chosen at run time (e.g. from a case file).
+#[derive(Debug, Clone)]
+pub enum Solver {
+    /// Explicit Runge–Kutta.
+    Explicit(ExplicitRk),
+    /// Linearly implicit Rosenbrock–W.
+    Rosenbrock(Box<Rosenbrock>),
+}
+
+impl Integrator for Solver {
+    fn t(&self) -> f64 {
+        match self {
+            Self::Explicit(i) => i.t(),
+            Self::Rosenbrock(i) => i.t(),
+        }
+    }
+    fn y(&self) -> &[f64] {
+        match self {
+            Self::Explicit(i) => i.y(),
+            Self::Rosenbrock(i) => i.y(),
+        }
+    }
+    fn step<S: OdeSystem>(&mut self, system: &mut S, t_limit: f64) -> Result<(), IntegrationError> {
+        match self {
+            Self::Explicit(i) => i.step(system, t_limit),
+            Self::Rosenbrock(i) => i.step(system, t_limit),
+        }
+    }
+    fn interpolate(&self, t: f64, out: &mut [f64]) {
+        match self {
+            Self::Explicit(i) => i.interpolate(t, out),
+            Self::Rosenbrock(i) => i.interpolate(t, out),
+        }
+    }
+    fn stats(&self) -> IntegrationStats {
+        match self {
+            Self::Explicit(i) => i.stats(),
+            Self::Rosenbrock(i) => i.stats(),
+        }
     }
 }

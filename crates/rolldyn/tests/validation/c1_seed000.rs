@@ -88,11 +88,19 @@ fn run(
 /// cage centre stays within the pocket clearance (C_p/2 = 0.1 mm, plus the
 /// ball excursions of the clearance c = 5 µm). Cylindrical pockets let the
 /// same cage drift (docs/validation.md).
+///
+/// The pockets are frictionless here: with μ = 0.1 the system has a second
+/// attractor, **dry whip** (the cage rolls around the balls at e ≈ 160 µm,
+/// pressing 60 µm into the pockets, cage speed −4.4 %), and whether a run
+/// reaches it depends on round-off (rtol 1.0e-6 and 1.1e-6 differ).
+/// Without pocket friction nothing drives the whip; tolerances 3e-7…1.1e-6
+/// all stay centred (2929–2950 rpm, e ≤ 101 µm).
 #[test]
 fn c1_ball_guided_cage_with_spherical_pockets() {
     let (speed, _, eccentricity) = run(100.0, 0.1, 0.04, true, |p| {
         p.cage.whirl = true;
         p.cage.pocket_shape = PocketShape::Spherical;
+        p.cage.pocket_friction.friction = 0.0;
     });
     eprintln!(
         "C1, whirling cage in spherical pockets: {speed:.1} rpm, max eccentricity {:.1} µm",

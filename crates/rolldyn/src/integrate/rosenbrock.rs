@@ -1,0 +1,598 @@
+//! Linearly implicit Rosenbrock–W integration for stiff systems (Hairer &
+//! Wanner, *Solving ODEs II*, 2nd ed., §IV.7 Rosenbrock methods and
+//! W-methods; Rang & Angermann, *BIT Numer. Math.* 45 (2005) 761–787,
+//! method ROS34PW2).
+//!
+//! One step with s stages solves, for i = 1…s, with the same matrix
+//!
+//! (I/(hγ) − A) Uᵢ = f(t + αᵢh, y + Σⱼ aᵢⱼUⱼ) + Σⱼ (cᵢⱼ/h) Uⱼ,
+//!
+//! y₁ = y + Σ mᵢUᵢ, error estimate Σ (mᵢ − m̂ᵢ)Uᵢ, in the transformed
+//! variables Uᵢ = Σⱼ γᵢⱼkⱼ (HW IV.7.3: a = αΓ⁻¹, c = diag(1/γ) − Γ⁻¹,
+//! m = bΓ⁻¹). A is **any** approximation of ∂f/∂y: a W-method keeps its
+//! order with it, so A is re-evaluated only when a step is rejected with
+//! an old A or A has served [`MAX_JACOBIAN_AGE`] steps, and the time
+//! derivative ∂f/∂t is left out (allowed for a W-method; it is the
+//! autonomized system's Jacobian with one column approximated by zero).
+//! Each new step size needs a new factorization of I/(hγ) − A, which the
+//! bordered block structure makes cheap ([`super::linear`]).
+//!
+//! ROS34PW2: 4 stages, order 3 with an embedded order-2 estimate,
+//! L-stable, stiffly accurate, W-order 3. The first stage reuses f at the
+//! start of the step, which an accepted step evaluates anyway for the
+//! dense output (cubic Hermite, order 3), so a step costs 4 right-hand
+//! sides and one factorization.
+
+use super::OdeSystem;
+use super::explicit::{IntegrationError, IntegrationStats, PI_BETA};
+use super::jacobian::{JacobianWork, finite_difference};
+use super::linear::{BlockJacobian, BlockLayout, BlockLu};
+
+/// Largest number of stages of a Rosenbrock tableau.
+const MAX_STAGES: usize = 6;
+
+/// Accepted steps one Jacobian may serve before it is re-evaluated.
+/// Measured on the bearing benchmarks (docs/performance.md): fewer
+/// re-evaluations lose more to rejected steps than they save.
+pub const MAX_JACOBIAN_AGE: u32 = 50;
+
+/// A Rosenbrock tableau in the original form of HW IV.7 (stage
+/// coefficients αᵢⱼ, γᵢⱼ with common diagonal γ, weights b and b̂).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RosenbrockTableau {
+    /// Name for statistics and case files.
+    pub name: &'static str,
+    /// Order of the solution.
+    pub order: u32,
+    /// Diagonal γ.
+    pub gamma: f64,
+    /// αᵢⱼ, row i has i entries.
+    pub alpha: &'static [&'static [f64]],
+    /// γᵢⱼ below the diagonal, row i has i entries.
+    pub gamma_below: &'static [&'static [f64]],
+    /// Weights b.
+    pub b: &'static [f64],
+    /// Embedded weights b̂ (one order lower).
+    pub b_embedded: &'static [f64],
+}
+
+/// ROS34PW2 of Rang & Angermann (2005), Table 4.
+pub const ROS34PW2: RosenbrockTableau = RosenbrockTableau {
+    name: "ros34pw2",
+    order: 3,
+    gamma: 4.358_665_215_084_590e-1,
+    alpha: &[
+        &[],
+        &[8.717_330_430_169_180e-1],
+        &[8.445_706_001_536_942e-1, -1.129_906_423_648_418e-1],
+        &[0.0, 0.0, 1.0],
+    ],
+    gamma_below: &[
+        &[],
+        &[-8.717_330_430_169_180e-1],
+        &[-9.033_805_701_304_408e-1, 5.418_067_238_809_533e-2],
+        &[
+            2.421_238_070_609_535e-1,
+            -1.223_250_583_904_515,
+            5.452_602_553_351_021e-1,
+        ],
+    ],
+    b: &[
+        2.421_238_070_609_535e-1,
+        -1.223_250_583_904_515,
+        1.545_260_255_335_102,
+        4.358_665_215_084_590e-1,
+    ],
+    b_embedded: &[
+        3.781_090_314_581_937e-1,
+        -9.604_229_221_242_318e-2,
+        0.5,
+        2.179_332_607_542_295e-1,
+    ],
+};
+
+/// The tableau in transformed variables.
+#[derive(Debug, Clone, Copy)]
+struct Transformed {
+    stages: usize,
+    gamma: f64,
+    /// Stage time fractions αᵢ = Σⱼ αᵢⱼ.
+    node: [f64; MAX_STAGES],
+    a: [[f64; MAX_STAGES]; MAX_STAGES],
+    c: [[f64; MAX_STAGES]; MAX_STAGES],
+    m: [f64; MAX_STAGES],
+    error: [f64; MAX_STAGES],
+}
+
+impl Transformed {
+    fn of(tab: &RosenbrockTableau) -> Self {
+        let s = tab.b.len();
+        assert!(s <= MAX_STAGES && tab.alpha.len() == s && tab.gamma_below.len() == s);
+        // Γ (lower triangular, diagonal γ) and its inverse by substitution.
+        let mut g = [[0.0; MAX_STAGES]; MAX_STAGES];
+        for i in 0..s {
+            g[i][..i].copy_from_slice(tab.gamma_below[i]);
+            g[i][i] = tab.gamma;
+        }
+        let mut inv = [[0.0; MAX_STAGES]; MAX_STAGES];
+        for col in 0..s {
+            for i in col..s {
+                let rhs = if i == col { 1.0 } else { 0.0 };
+                let sum: f64 = (col..i).map(|k| g[i][k] * inv[k][col]).sum();
+                inv[i][col] = (rhs - sum) / g[i][i];
+            }
+        }
+        let mut me = Self {
+            stages: s,
+            gamma: tab.gamma,
+            node: [0.0; MAX_STAGES],
+            a: [[0.0; MAX_STAGES]; MAX_STAGES],
+            c: [[0.0; MAX_STAGES]; MAX_STAGES],
+            m: [0.0; MAX_STAGES],
+            error: [0.0; MAX_STAGES],
+        };
+        for i in 0..s {
+            me.node[i] = tab.alpha[i].iter().sum();
+            for j in 0..i {
+                me.a[i][j] = (0..i).map(|k| tab.alpha[i][k] * inv[k][j]).sum();
+                me.c[i][j] = -inv[i][j];
+            }
+        }
+        for j in 0..s {
+            let m: f64 = (0..s).map(|i| tab.b[i] * inv[i][j]).sum();
+            let m_hat: f64 = (0..s).map(|i| tab.b_embedded[i] * inv[i][j]).sum();
+            me.m[j] = m;
+            me.error[j] = m - m_hat;
+        }
+        me
+    }
+}
+
+/// A Rosenbrock–W integrator with its work space.
+#[derive(Debug, Clone)]
+pub struct Rosenbrock {
+    tableau: &'static RosenbrockTableau,
+    coefficients: Transformed,
+    relative_tolerance: f64,
+    max_step: f64,
+    t: f64,
+    y: Vec<f64>,
+    /// f(t, y) at the current point (the first stage of the next step).
+    f: Vec<f64>,
+    h: f64,
+    stages: Vec<Vec<f64>>,
+    stage_y: Vec<f64>,
+    y_new: Vec<f64>,
+    error: Vec<f64>,
+    atol: Vec<f64>,
+    jacobian: BlockJacobian,
+    lu: BlockLu,
+    work: JacobianWork,
+    /// Accepted steps since the Jacobian was evaluated; None: none yet.
+    jacobian_age: Option<u32>,
+    /// Step size of the current factorization.
+    factored_step: Option<f64>,
+    t_prev: f64,
+    h_prev: f64,
+    y_prev: Vec<f64>,
+    f_prev: Vec<f64>,
+    stats: IntegrationStats,
+    err_prev: f64,
+}
+
+impl Rosenbrock {
+    /// Sets up an integration of `system` from (t0, y0) with error control.
+    pub fn new(
+        tableau: &'static RosenbrockTableau,
+        relative_tolerance: f64,
+        max_step: f64,
+        initial_step: Option<f64>,
+        system: &impl OdeSystem,
+        t0: f64,
+        y0: &[f64],
+    ) -> Result<Self, IntegrationError> {
+        let n = system.dimension();
+        if y0.len() != n {
+            return Err(IntegrationError::Setting(format!(
+                "initial state has {} values, the system {n}",
+                y0.len()
+            )));
+        }
+        if !(relative_tolerance > 0.0 && relative_tolerance < 1.0) {
+            return Err(IntegrationError::Setting(format!(
+                "relative tolerance {relative_tolerance} must lie in (0, 1)"
+            )));
+        }
+        if max_step.is_nan() || max_step <= 0.0 {
+            return Err(IntegrationError::Setting(format!(
+                "max step {max_step} must be positive"
+            )));
+        }
+        let layout = system
+            .blocks()
+            .map(|s| s.block_layout())
+            .unwrap_or(BlockLayout::dense(n));
+        if layout.dimension() != n {
+            return Err(IntegrationError::Setting(format!(
+                "block layout covers {} states, the system has {n}",
+                layout.dimension()
+            )));
+        }
+        let mut atol = vec![0.0; n];
+        system.error_scale(&mut atol);
+        atol.iter_mut().for_each(|a| *a *= relative_tolerance);
+        let mut f = vec![0.0; n];
+        system.rhs(t0, y0, &mut f);
+        if f.iter().any(|v| !v.is_finite()) {
+            return Err(IntegrationError::NonFinite { t: t0 });
+        }
+        let coefficients = Transformed::of(tableau);
+        let mut me = Self {
+            tableau,
+            coefficients,
+            relative_tolerance,
+            max_step,
+            t: t0,
+            y: y0.to_vec(),
+            f,
+            h: 0.0,
+            stages: vec![vec![0.0; n]; coefficients.stages],
+            stage_y: vec![0.0; n],
+            y_new: vec![0.0; n],
+            error: vec![0.0; n],
+            atol,
+            jacobian: BlockJacobian::zeros(layout),
+            lu: BlockLu::new(layout),
+            work: JacobianWork::new(system),
+            jacobian_age: None,
+            factored_step: None,
+            t_prev: t0,
+            h_prev: 0.0,
+            y_prev: y0.to_vec(),
+            f_prev: vec![0.0; n],
+            stats: IntegrationStats {
+                rhs_evaluations: 1,
+                ..Default::default()
+            },
+            err_prev: 1e-4,
+        };
+        me.h = initial_step
+            .unwrap_or_else(|| me.starting_step())
+            .min(max_step);
+        Ok(me)
+    }
+
+    /// A first step from the size of f relative to the tolerance: the
+    /// explicit estimate of HW I §II.4 without its second evaluation
+    /// (stiff components make that one meaningless); the controller
+    /// corrects it within a few steps.
+    fn starting_step(&self) -> f64 {
+        let rtol = self.relative_tolerance;
+        let mut sum = 0.0;
+        for i in 0..self.y.len() {
+            sum += (self.f[i] / (self.atol[i] + rtol * self.y[i].abs())).powi(2);
+        }
+        let d1 = (sum / self.y.len() as f64).sqrt();
+        if d1 < 1e-5 {
+            1e-6
+        } else {
+            (0.01 / d1).clamp(1e-12, 1e-3)
+        }
+    }
+
+    /// Current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// Current state.
+    pub fn y(&self) -> &[f64] {
+        &self.y
+    }
+
+    /// Step size the next step will try.
+    pub fn step_size(&self) -> f64 {
+        self.h
+    }
+
+    /// Counters so far.
+    pub fn stats(&self) -> IntegrationStats {
+        self.stats
+    }
+
+    /// The tableau's name.
+    pub fn name(&self) -> &'static str {
+        self.tableau.name
+    }
+
+    fn evaluate_jacobian(&mut self, system: &impl OdeSystem) {
+        let cost = finite_difference(
+            system,
+            self.t,
+            &self.y,
+            &self.f,
+            &mut self.jacobian,
+            &mut self.work,
+        );
+        self.stats.jacobian_evaluations += 1;
+        self.stats.jacobian_rhs_evaluations += cost;
+        self.jacobian_age = Some(0);
+        self.factored_step = None;
+    }
+
+    /// Stages and candidate for step h; the scaled error norm (∞ when the
+    /// matrix is singular or the stages are not finite).
+    fn attempt(&mut self, system: &impl OdeSystem, h: f64) -> f64 {
+        let co = self.coefficients;
+        let n = self.y.len();
+        if self.factored_step != Some(h) {
+            self.stats.factorizations += 1;
+            if self
+                .lu
+                .factor(&self.jacobian, 1.0 / (h * co.gamma))
+                .is_err()
+            {
+                self.factored_step = None;
+                return f64::INFINITY;
+            }
+            self.factored_step = Some(h);
+        }
+        for i in 0..co.stages {
+            let (done, rest) = self.stages.split_at_mut(i);
+            let u = &mut rest[0];
+            if i == 0 {
+                u.copy_from_slice(&self.f);
+            } else {
+                for k in 0..n {
+                    let mut acc = self.y[k];
+                    for (j, d) in done.iter().enumerate() {
+                        acc += co.a[i][j] * d[k];
+                    }
+                    self.stage_y[k] = acc;
+                }
+                system.rhs(self.t + co.node[i] * h, &self.stage_y, u);
+                self.stats.rhs_evaluations += 1;
+                for k in 0..n {
+                    let mut acc = 0.0;
+                    for (j, d) in done.iter().enumerate() {
+                        acc += co.c[i][j] * d[k];
+                    }
+                    u[k] += acc / h;
+                }
+            }
+            self.lu.solve(u);
+        }
+        let rtol = self.relative_tolerance;
+        let mut sum = 0.0;
+        for k in 0..n {
+            let (mut step, mut err) = (0.0, 0.0);
+            for i in 0..co.stages {
+                step += co.m[i] * self.stages[i][k];
+                err += co.error[i] * self.stages[i][k];
+            }
+            self.y_new[k] = self.y[k] + step;
+            self.error[k] = err;
+            let scale = self.atol[k] + rtol * self.y[k].abs().max(self.y_new[k].abs());
+            sum += (err / scale).powi(2);
+        }
+        let err = (sum / n as f64).sqrt();
+        if err.is_finite() { err } else { f64::INFINITY }
+    }
+
+    /// Takes one accepted step, not beyond `t_limit`. Calls the system's
+    /// `accept_step` hook once, after acceptance.
+    pub fn step(
+        &mut self,
+        system: &mut impl OdeSystem,
+        t_limit: f64,
+    ) -> Result<(), IntegrationError> {
+        let remaining = t_limit - self.t;
+        if remaining <= 0.0 {
+            return Ok(());
+        }
+        let min_step = 16.0 * f64::EPSILON * self.t.abs().max(remaining);
+        // The embedded solution has order q − 1: the error scales as h^q.
+        let q = self.tableau.order as f64;
+        let mut rejected = false;
+        loop {
+            if self.jacobian_age.is_none_or(|age| age >= MAX_JACOBIAN_AGE) {
+                self.evaluate_jacobian(system);
+            }
+            let natural = self.h.min(self.max_step);
+            let h = if natural >= remaining || (remaining - natural) < 0.01 * natural {
+                remaining
+            } else {
+                natural
+            };
+            let err = self.attempt(system, h);
+            if err <= 1.0 {
+                let err = err.max(1e-10);
+                let factor =
+                    0.9 * err.powf(-(1.0 / q - 0.75 * PI_BETA)) * self.err_prev.powf(PI_BETA);
+                self.h = natural * factor.clamp(0.2, if rejected { 1.0 } else { 5.0 });
+                self.err_prev = err.max(1e-4);
+                self.finish_step(system, h);
+                return Ok(());
+            }
+            self.stats.rejected_steps += 1;
+            rejected = true;
+            // A rejection with an old Jacobian: refresh it first.
+            if self.jacobian_age != Some(0) {
+                self.jacobian_age = None;
+            }
+            let factor = if err.is_finite() {
+                (0.9 * err.powf(-1.0 / q)).clamp(0.2, 1.0)
+            } else {
+                0.25
+            };
+            self.h = h * factor;
+            if self.h < min_step {
+                return Err(if err.is_finite() {
+                    IntegrationError::StepTooSmall {
+                        t: self.t,
+                        step: self.h,
+                    }
+                } else {
+                    IntegrationError::NonFinite { t: self.t }
+                });
+            }
+        }
+    }
+
+    fn finish_step(&mut self, system: &mut impl OdeSystem, h: f64) {
+        self.t_prev = self.t;
+        self.h_prev = h;
+        self.y_prev.copy_from_slice(&self.y);
+        self.f_prev.copy_from_slice(&self.f);
+        self.t += h;
+        self.y.copy_from_slice(&self.y_new);
+        system.accept_step(self.t, &self.y);
+        system.rhs(self.t, &self.y, &mut self.f);
+        self.stats.rhs_evaluations += 1;
+        self.stats.steps += 1;
+        if let Some(age) = &mut self.jacobian_age {
+            *age += 1;
+        }
+    }
+
+    /// Dense output: cubic Hermite interpolation in the last accepted step
+    /// (clamped to it), order 3 like the method.
+    pub fn interpolate(&self, t: f64, out: &mut [f64]) {
+        super::explicit::hermite(
+            self.t_prev,
+            self.h_prev,
+            &self.y_prev,
+            &self.f_prev,
+            &self.y,
+            &self.f,
+            t,
+            out,
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Van der Pol, μ large: the classical stiff test (HW II §IV.1).
+    struct VanDerPol {
+        mu: f64,
+    }
+    impl OdeSystem for VanDerPol {
+        fn dimension(&self) -> usize {
+            2
+        }
+        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+            dy[0] = y[1];
+            dy[1] = self.mu * ((1.0 - y[0] * y[0]) * y[1]) - y[0];
+        }
+        fn error_scale(&self, scale: &mut [f64]) {
+            scale.fill(1e-3);
+        }
+    }
+
+    #[test]
+    fn order_conditions_up_to_three() {
+        // HW II Table IV.7.1 with βᵢⱼ = αᵢⱼ + γᵢⱼ, β'ᵢ = Σⱼ βᵢⱼ; for a
+        // W-method the α and γ sums separately (Σ bᵢαᵢ = 1/2, Σ bᵢγ'ᵢ = −γ).
+        let t = &ROS34PW2;
+        let s = t.b.len();
+        let alpha_sum: Vec<f64> = t.alpha.iter().map(|r| r.iter().sum()).collect();
+        let gamma_sum: Vec<f64> = t.gamma_below.iter().map(|r| r.iter().sum()).collect();
+        let beta = |i: usize, j: usize| t.alpha[i][j] + t.gamma_below[i][j];
+        let beta_sum: Vec<f64> = (0..s).map(|i| (0..i).map(|j| beta(i, j)).sum()).collect();
+        let g = t.gamma;
+        let dot = |w: &[f64], v: &[f64]| w.iter().zip(v).map(|(a, b)| a * b).sum::<f64>();
+        for (weights, order) in [(t.b, 3), (t.b_embedded, 2)] {
+            assert!((weights.iter().sum::<f64>() - 1.0).abs() < 1e-14);
+            assert!((dot(weights, &beta_sum) - (0.5 - g)).abs() < 1e-14);
+            assert!((dot(weights, &alpha_sum) - 0.5).abs() < 1e-14);
+            assert!((dot(weights, &gamma_sum) + g).abs() < 1e-14);
+            if order == 3 {
+                let a2: Vec<f64> = alpha_sum.iter().map(|a| a * a).collect();
+                assert!((dot(weights, &a2) - 1.0 / 3.0).abs() < 1e-14);
+                let nested: f64 = (0..s)
+                    .map(|i| weights[i] * (0..i).map(|k| beta(i, k) * beta_sum[k]).sum::<f64>())
+                    .sum();
+                assert!((nested - (1.0 / 6.0 - g + g * g)).abs() < 1e-14);
+            }
+        }
+    }
+
+    /// Fixed steps on a smooth problem, with the exact and with a crude
+    /// (zero) Jacobian: the global error falls as h³ either way — the W
+    /// property that lets a step reuse an old Jacobian.
+    #[test]
+    fn third_order_with_exact_and_with_wrong_jacobian() {
+        struct Rotating;
+        impl OdeSystem for Rotating {
+            fn dimension(&self) -> usize {
+                2
+            }
+            fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+                dy[0] = -y[1] + 0.1 * t.cos();
+                dy[1] = y[0] - 0.2 * y[1] * y[1];
+            }
+        }
+        let reference = {
+            let mut r =
+                Rosenbrock::new(&ROS34PW2, 1e-12, 1e-3, None, &Rotating, 0.0, &[1.0, 0.0]).unwrap();
+            while r.t() < 1.0 {
+                r.step(&mut Rotating, 1.0).unwrap();
+            }
+            r.y().to_vec()
+        };
+        for zero_jacobian in [false, true] {
+            let errors: Vec<f64> = [0.1, 0.05]
+                .iter()
+                .map(|&h| {
+                    let mut r =
+                        Rosenbrock::new(&ROS34PW2, 0.5, h, Some(h), &Rotating, 0.0, &[1.0, 0.0])
+                            .unwrap();
+                    r.evaluate_jacobian(&Rotating);
+                    if zero_jacobian {
+                        r.jacobian = BlockJacobian::zeros(BlockLayout::dense(2));
+                    }
+                    r.jacobian_age = Some(0);
+                    while r.t() < 1.0 - 1e-12 {
+                        // Keep the chosen Jacobian and step: attempt directly.
+                        let h = h.min(1.0 - r.t());
+                        r.attempt(&Rotating, h);
+                        r.finish_step(&mut Rotating, h);
+                    }
+                    (r.y()[0] - reference[0]).hypot(r.y()[1] - reference[1])
+                })
+                .collect();
+            let ratio = errors[0] / errors[1];
+            assert!(
+                (6.5..10.0).contains(&ratio),
+                "zero Jacobian {zero_jacobian}: errors {errors:?}, ratio {ratio}"
+            );
+        }
+    }
+
+    #[test]
+    fn stiff_van_der_pol_in_few_steps() {
+        // μ = 1000 to t = 2, on the slow manifold (the first fast
+        // transition is near t ≈ 800): an explicit method would be held to
+        // h ≲ 2/μ by stability (≥ 1000 steps); the Rosenbrock–W method
+        // takes few steps and matches a tight-tolerance run of itself.
+        let sys = VanDerPol { mu: 1000.0 };
+        let run = |rtol: f64| {
+            let mut s = VanDerPol { mu: 1000.0 };
+            let mut r =
+                Rosenbrock::new(&ROS34PW2, rtol, 1.0, None, &sys, 0.0, &[2.0, 0.0]).unwrap();
+            while r.t() < 2.0 {
+                r.step(&mut s, 2.0).unwrap();
+            }
+            (r.y().to_vec(), r.stats())
+        };
+        let (tight, _) = run(1e-10);
+        let (y, stats) = run(1e-5);
+        assert!((y[0] - tight[0]).abs() < 1e-5 * 2.0, "{y:?} vs {tight:?}");
+        assert!(stats.steps < 200, "{stats:?}");
+        assert!(stats.jacobian_evaluations >= 1);
+        assert!(stats.factorizations >= stats.jacobian_evaluations);
+    }
+}
