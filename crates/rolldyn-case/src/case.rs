@@ -363,7 +363,7 @@ impl Case {
         )?;
         let sample_rate = checked("output.sample_rate", &raw.output.sample_rate, positive)?;
         let time_step = checked("solver.time_step", &s.time_step, positive)?;
-        let integrator = s.integrator.unwrap_or(IntegratorChoice::Dopri5);
+        let integrator = s.integrator.unwrap_or(IntegratorChoice::Auto);
         if integrator == IntegratorChoice::Rk4 && time_step.is_none() {
             return Err(Invalid::missing(
                 "solver.time_step",

@@ -552,11 +552,12 @@ impl JsonSchema for NormalLawChoice {
 pub struct RawSolver {
     /// Simulated time.
     pub duration: Option<Quantity<Time>>,
-    /// Relative error tolerance of adaptive integrators (default 1e-6).
+    /// Relative error tolerance of adaptive integrators (default 1e-3).
     pub relative_tolerance: Option<f64>,
     /// Largest step the integrator may take.
     pub max_step: Option<Quantity<Time>>,
-    /// "dopri5" (adaptive Dormand–Prince 5(4), default) or "rk4" (fixed step).
+    /// "auto" (default: the faster of ros34pw2 and dopri5 for the
+    /// tolerance), "ros34pw2" (stiff), "dopri5" (explicit) or "rk4" (fixed step).
     pub integrator: Option<IntegratorChoice>,
     /// Step of the fixed-step integrator (rk4).
     pub time_step: Option<Quantity<Time>>,
@@ -568,6 +569,12 @@ pub struct RawSolver {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum IntegratorChoice {
+    /// The fastest of ros34pw2 and dopri5 at the requested tolerance
+    /// (measured crossover, docs/performance.md).
+    Auto,
+    /// Linearly implicit Rosenbrock–W 3(2) (Rang & Angermann) for stiff
+    /// systems: block-structured Jacobian, reused across steps.
+    Ros34pw2,
     /// Adaptive Dormand–Prince 5(4) with dense output.
     Dopri5,
     /// Classical Runge–Kutta 4 with a fixed step (`solver.time_step`).

@@ -341,14 +341,18 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let dir = std::path::Path::new(&output);
             let summary = run::run_case(&source, &case, dir).map_err(Failure::BadInput)?;
             let text = format!(
-                "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({} steps, {} rejected, {} RHS)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e}\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
+                "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS, {} Jacobians costing {} RHS, {} factorizations)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e}\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
                 summary.status,
                 summary.simulated_time_s,
                 summary.requested_duration_s,
                 summary.wall_time_s,
+                summary.integrator,
                 summary.steps,
                 summary.rejected_steps,
                 summary.rhs_evaluations,
+                summary.jacobian_evaluations,
+                summary.jacobian_rhs_evaluations,
+                summary.factorizations,
                 summary.mean_cage_speed_rpm,
                 summary.pure_rolling_cage_speed_rpm,
                 summary.cage_sliding_rate,

@@ -7,7 +7,9 @@
 use indicatif::{ProgressBar, ProgressStyle};
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
-use rolldyn::integrate::{ExplicitRk, IntegrationStats, RunEnd, StepControl, run};
+use rolldyn::integrate::{
+    ExplicitRk, IntegrationStats, ROS34PW2, Rosenbrock, RunEnd, Solver, StepControl, run,
+};
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
 use rolldyn_case::Case;
 use rolldyn_case::raw::{IntegratorChoice, StartChoice};
@@ -22,10 +24,18 @@ use std::time::Instant;
 const RPM: f64 = std::f64::consts::TAU / 60.0;
 /// Default recorder rate when the case gives none \[Hz\].
 pub const DEFAULT_SAMPLE_RATE: f64 = 10_000.0;
-/// Default largest step of the adaptive integrator \[s\].
+/// Default largest step of the explicit adaptive integrator \[s\].
 pub const DEFAULT_MAX_STEP: f64 = 1e-5;
-/// Default relative tolerance of the adaptive integrator.
-pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-6;
+/// Default largest step of the stiff integrator \[s\]: a tenth of a
+/// millisecond, below the ball-pass periods of the presets (≥ 0.3 ms).
+pub const DEFAULT_STIFF_MAX_STEP: f64 = 1e-4;
+/// Default relative tolerance of the adaptive integrators.
+pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-3;
+/// `integrator = "auto"` takes ros34pw2 at relative tolerances from this
+/// value up and dopri5 below it: the measured crossover on the benchmark
+/// cases (docs/performance.md), where dopri5 is stability-bound and
+/// ros34pw2 accuracy-bound.
+pub const STIFF_FROM_TOLERANCE: f64 = 3e-4;
 
 /// `summary.json`.
 #[derive(Serialize)]
@@ -41,6 +51,9 @@ pub struct Summary {
     pub steps: u64,
     pub rejected_steps: u64,
     pub rhs_evaluations: u64,
+    pub jacobian_evaluations: u64,
+    pub jacobian_rhs_evaluations: u64,
+    pub factorizations: u64,
     pub samples: usize,
     pub averaging_window_s: [f64; 2],
     pub inner_ring_speed_rpm: f64,
@@ -225,27 +238,68 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
             model.state_from_equilibrium(&eq)
         }
     };
-    let (tableau, control, integrator) = match case.integrator {
+    let relative_tolerance = case
+        .relative_tolerance
+        .unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
+    let choice = match case.integrator {
+        IntegratorChoice::Auto if relative_tolerance >= STIFF_FROM_TOLERANCE => {
+            IntegratorChoice::Ros34pw2
+        }
+        IntegratorChoice::Auto => IntegratorChoice::Dopri5,
+        other => other,
+    };
+    let max_step = case
+        .max_step
+        .unwrap_or(if choice == IntegratorChoice::Ros34pw2 {
+            DEFAULT_STIFF_MAX_STEP
+        } else {
+            DEFAULT_MAX_STEP
+        });
+    let (solver, integrator) = match choice {
+        IntegratorChoice::Auto => unreachable!("resolved above"),
         IntegratorChoice::Rk4 => (
-            &RK4,
-            StepControl::Fixed {
-                step: case.time_step.unwrap_or(1e-7),
-            },
+            ExplicitRk::new(
+                &RK4,
+                StepControl::Fixed {
+                    step: case.time_step.unwrap_or(1e-7),
+                },
+                &model,
+                0.0,
+                &y0,
+            )
+            .map(Solver::Explicit),
             "rk4",
         ),
         IntegratorChoice::Dopri5 => (
-            &DOPRI5,
-            StepControl::Adaptive {
-                relative_tolerance: case
-                    .relative_tolerance
-                    .unwrap_or(DEFAULT_RELATIVE_TOLERANCE),
-                max_step: case.max_step.unwrap_or(DEFAULT_MAX_STEP),
-                initial_step: None,
-            },
+            ExplicitRk::new(
+                &DOPRI5,
+                StepControl::Adaptive {
+                    relative_tolerance,
+                    max_step,
+                    initial_step: None,
+                },
+                &model,
+                0.0,
+                &y0,
+            )
+            .map(Solver::Explicit),
             "dopri5",
         ),
+        IntegratorChoice::Ros34pw2 => (
+            Rosenbrock::new(
+                &ROS34PW2,
+                relative_tolerance,
+                max_step,
+                None,
+                &model,
+                0.0,
+                &y0,
+            )
+            .map(|r| Solver::Rosenbrock(Box::new(r))),
+            "ros34pw2",
+        ),
     };
-    let mut rk = ExplicitRk::new(tableau, control, &model, 0.0, &y0).map_err(|e| e.to_string())?;
+    let mut solver = solver.map_err(|e| e.to_string())?;
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
 
     let stop = Arc::new(AtomicBool::new(false));
@@ -275,7 +329,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
     let mut last_draw = 0.0;
     let report = run(
         &mut model,
-        &mut rk,
+        &mut solver,
         duration,
         sample_rate,
         &stop,
@@ -389,6 +443,9 @@ fn summarise(
         steps: stats.steps,
         rejected_steps: stats.rejected_steps,
         rhs_evaluations: stats.rhs_evaluations,
+        jacobian_evaluations: stats.jacobian_evaluations,
+        jacobian_rhs_evaluations: stats.jacobian_rhs_evaluations,
+        factorizations: stats.factorizations,
         samples: series.len(),
         averaging_window_s: [time.get(from).copied().unwrap_or(0.0), t_end],
         inner_ring_speed_rpm: inner_speed,

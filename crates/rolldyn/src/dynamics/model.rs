@@ -535,6 +535,7 @@ impl BearingModel {
         table: &ContactTable,
         episode: &ContactEpisode,
         ball: &BallMotion,
+        integration: TractionIntegration,
         with_output: bool,
     ) -> Option<RaceContact> {
         let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
@@ -623,7 +624,7 @@ impl BearingModel {
         let relative_spin = w - ring.omega;
         let traction = ellipse::integrate(
             &self.params.traction,
-            self.params.traction_integration,
+            integration,
             &patch,
             q,
             &slip,
@@ -731,12 +732,24 @@ impl BearingModel {
             let (ball, _) = self.ball_kinematics(j, y);
             let episodes = &self.episodes[j];
             *sample = ContactSample::default();
-            if let Some(c) = self.race_contact(&inner, &self.inner_table, &episodes[0], &ball, true)
-            {
+            if let Some(c) = self.race_contact(
+                &inner,
+                &self.inner_table,
+                &episodes[0],
+                &ball,
+                self.params.traction_integration,
+                true,
+            ) {
                 sample.inner = c.output;
             }
-            if let Some(c) = self.race_contact(&outer, &self.outer_table, &episodes[1], &ball, true)
-            {
+            if let Some(c) = self.race_contact(
+                &outer,
+                &self.outer_table,
+                &episodes[1],
+                &ball,
+                self.params.traction_integration,
+                true,
+            ) {
                 sample.outer = c.output;
             }
         }
@@ -934,6 +947,7 @@ impl BearingModel {
         y: &[f64],
         inner: &RingMotion,
         outer: &RingMotion,
+        integration: TractionIntegration,
         dy: &mut [f64],
     ) -> BallCoupling {
         let l = self.layout;
@@ -946,7 +960,14 @@ impl BearingModel {
         let mut moment = Vector3::zeros();
         let mut out = BallCoupling::default();
         let episodes = &self.episodes[j];
-        if let Some(cn) = self.race_contact(inner, &self.inner_table, &episodes[0], &ball, false) {
+        if let Some(cn) = self.race_contact(
+            inner,
+            &self.inner_table,
+            &episodes[0],
+            &ball,
+            integration,
+            false,
+        ) {
             force += cn.force;
             moment += cn.moment;
             out.ring_force -= cn.force;
@@ -954,7 +975,14 @@ impl BearingModel {
                 (cn.geometry.contact_point - inner.centre).cross(&(-cn.force)) - cn.couple;
             out.dissipation += cn.dissipation;
         }
-        if let Some(cn) = self.race_contact(outer, &self.outer_table, &episodes[1], &ball, false) {
+        if let Some(cn) = self.race_contact(
+            outer,
+            &self.outer_table,
+            &episodes[1],
+            &ball,
+            integration,
+            false,
+        ) {
             force += cn.force;
             moment += cn.moment;
             out.outer_force -= cn.force;
@@ -1158,8 +1186,15 @@ impl BlockSplit for BearingModel {
         coupling: &mut [f64],
     ) {
         let (inner, outer) = self.ring_motion(t, y);
-        self.ball_rhs(block, y, &inner, &outer, dy_block)
-            .write(coupling);
+        self.ball_rhs(
+            block,
+            y,
+            &inner,
+            &outer,
+            TractionIntegration::Centre,
+            dy_block,
+        )
+        .write(coupling);
     }
 
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
@@ -1200,7 +1235,14 @@ impl OdeSystem for BearingModel {
         let mut balls = BallCoupling::default();
         for j in 0..l.balls {
             let b = l.ball(j);
-            let coupling = self.ball_rhs(j, y, &inner, &outer, &mut dy[b..b + StateLayout::BALL]);
+            let coupling = self.ball_rhs(
+                j,
+                y,
+                &inner,
+                &outer,
+                self.params.traction_integration,
+                &mut dy[b..b + StateLayout::BALL],
+            );
             balls.add(&coupling);
         }
         let (_, border) = dy.split_at_mut(l.ring());
@@ -1246,7 +1288,15 @@ impl OdeSystem for BearingModel {
                 .enumerate()
             {
                 let before = self.episodes[j][k];
-                let contact = self.race_contact(ring, table, &before, &ball, false);
+                // Only the penetration matters here: the cheapest traction.
+                let contact = self.race_contact(
+                    ring,
+                    table,
+                    &before,
+                    &ball,
+                    TractionIntegration::Centre,
+                    false,
+                );
                 let mut episode = before;
                 match contact {
                     Some(cn) => episode.accept(cn.geometry.penetration, cn.penetration_rate, floor),

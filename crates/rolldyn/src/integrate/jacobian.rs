@@ -23,7 +23,11 @@ use super::linear::{BlockJacobian, BlockLayout};
 ///
 /// f_j = block_j(t, y_j, y_B) and f_B = border(t, y_B, Σ_j c_j(t, y_j, y_B)).
 ///
-/// [`OdeSystem::rhs`] must equal this composition.
+/// The Jacobian is taken of this composition. It should equal
+/// [`OdeSystem::rhs`], or approximate it where a cheaper model keeps the
+/// stiff terms (a Rosenbrock–W method keeps its order with any
+/// approximate Jacobian; e.g. the bearing evaluates traction at the
+/// contact centre instead of over the grid).
 pub trait BlockSplit {
     /// The shape: blocks first, then the border.
     fn block_layout(&self) -> BlockLayout;
@@ -107,7 +111,7 @@ pub fn finite_difference<S: OdeSystem + ?Sized>(
 ) -> u64 {
     work.y.copy_from_slice(y);
     match system.blocks() {
-        Some(split) => by_blocks(split, t, f, jacobian, work),
+        Some(split) => by_blocks(split, t, jacobian, work),
         None => dense(system, t, f, jacobian, work),
     }
 }
@@ -137,7 +141,6 @@ fn dense<S: OdeSystem + ?Sized>(
 fn by_blocks(
     split: &dyn BlockSplit,
     t: f64,
-    f: &[f64],
     jacobian: &mut BlockJacobian,
     work: &mut JacobianWork,
 ) -> u64 {
@@ -146,7 +149,8 @@ fn by_blocks(
     let (b, m, start) = (layout.block_size, layout.border, layout.border_start());
     let c = split.coupling_len();
     let mut cost = 1;
-    // Base couplings c_j and their sum at the unperturbed point.
+    // Base values f_j, c_j, f_B of the split at the unperturbed point (the
+    // split may be an approximation of the system's rhs).
     work.coupling_sum.fill(0.0);
     for j in 0..layout.blocks {
         let cj = &mut work.couplings[j * c..(j + 1) * c];
@@ -155,6 +159,8 @@ fn by_blocks(
             *s += v;
         }
     }
+    let (_, f_border) = work.f.split_at_mut(start);
+    split.border_rhs(t, &work.y, &work.coupling_sum, f_border);
     // Block columns: one sweep over all blocks per column index k.
     for k in 0..b {
         let mut swept = false;
@@ -189,7 +195,7 @@ fn by_blocks(
             }
             split.border_rhs(t, &work.y, &work.coupling_trial, &mut work.f_perturbed[..m]);
             for r in 0..m {
-                lower[r * b + k] = (work.f_perturbed[r] - f[start + r]) / delta;
+                lower[r * b + k] = (work.f_perturbed[r] - work.f[start + r]) / delta;
             }
         }
         cost += u64::from(swept);
@@ -228,7 +234,7 @@ fn by_blocks(
         split.border_rhs(t, &work.y, &work.coupling_trial, &mut work.f_perturbed[..m]);
         work.y[col] = saved;
         for r in 0..m {
-            jacobian.border[r * m + p] = (work.f_perturbed[r] - f[start + r]) / delta;
+            jacobian.border[r * m + p] = (work.f_perturbed[r] - work.f[start + r]) / delta;
         }
     }
     cost

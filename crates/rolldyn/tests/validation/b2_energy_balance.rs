@@ -3,27 +3,31 @@
 //! work and the dissipation are integrated as states of the model, so the
 //! balance closes to integrator accuracy.
 
-use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, seed000_dynamics, steel_seed000};
+use super::common::{
+    METHODS, Method, bearing_6304, bearing_7008c, dynamics_7008c, integrator, seed000_dynamics,
+    steel_seed000,
+};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{
     BearingModel, DragParameters, DynamicsParameters, OuterRing, PocketLaw, PocketShape, Support,
 };
-use rolldyn::integrate::tableau::DOPRI5;
-use rolldyn::integrate::{ExplicitRk, StepControl};
+use rolldyn::integrate::Integrator;
 use rolldyn::lubrication::PressureViscosity;
 use rolldyn::material::Material;
 use rolldyn::operating::{LoadProfile, Loads};
 use rolldyn::traction::{SlipMeasure, TractionCurve, TractionModel};
 
-/// Integrates `model` from `y0` to `t_end`; returns (drive, ΔE, dissipated).
-fn balance(mut model: BearingModel, y0: &[f64], t_end: f64, rtol: f64) -> (f64, f64, f64) {
+/// Integrates `model` from `y0` to `t_end` with `method`; returns (drive,
+/// ΔE, dissipated).
+fn balance(
+    method: Method,
+    mut model: BearingModel,
+    y0: &[f64],
+    t_end: f64,
+    rtol: f64,
+) -> (f64, f64, f64) {
     let e0 = model.energy(0.0, y0).total();
-    let control = StepControl::Adaptive {
-        relative_tolerance: rtol,
-        max_step: 1e-5,
-        initial_step: None,
-    };
-    let mut rk = ExplicitRk::new(&DOPRI5, control, &model, 0.0, y0).unwrap();
+    let mut rk = integrator(method, &model, y0, rtol, 1e-5);
     while rk.t() < t_end {
         rk.step(&mut model, t_end).unwrap();
     }
@@ -99,20 +103,22 @@ fn b2_seed000(configure: impl Fn(&mut DynamicsParameters)) {
         y0[l.ball(j) + 6] = 0.0;
     }
     y0[l.cage() + 5] = 0.0;
-    let (drive, delta, dissipated) = balance(model, &y0, 0.01, 1e-7);
-    let imbalance = drive - delta - dissipated;
-    eprintln!(
-        "B2: drive {drive:.6e} J, ΔE {delta:.6e} J, dissipated {dissipated:.6e} J, imbalance {:.1e} of the drive",
-        (imbalance / drive).abs()
-    );
-    assert!(
-        drive > 0.0 && dissipated > 0.0 && delta > 0.0,
-        "the ring accelerates the balls and friction dissipates"
-    );
-    assert!(
-        (imbalance / drive).abs() < 1e-3,
-        "energy balance off by {imbalance} J"
-    );
+    for method in METHODS {
+        let (drive, delta, dissipated) = balance(method, model.clone(), &y0, 0.01, 1e-7);
+        let imbalance = drive - delta - dissipated;
+        eprintln!(
+            "B2 ({method:?}): drive {drive:.6e} J, ΔE {delta:.6e} J, dissipated {dissipated:.6e} J, imbalance {:.1e} of the drive",
+            (imbalance / drive).abs()
+        );
+        assert!(
+            drive > 0.0 && dissipated > 0.0 && delta > 0.0,
+            "the ring accelerates the balls and friction dissipates"
+        );
+        assert!(
+            (imbalance / drive).abs() < 1e-3,
+            "{method:?}: energy balance off by {imbalance} J"
+        );
+    }
 }
 
 /// B2 in 3-D with EHL traction (Roelands viscosity) integrated on the
@@ -139,13 +145,18 @@ fn b2_energy_balance_with_ehl_grid_traction() {
     let model =
         BearingModel::new(&bearing_7008c(), &steel, &steel, HertzModel::Exact, params).unwrap();
     let y0 = model.state_from_equilibrium(&eq);
-    let (drive, delta, dissipated) = balance(model, &y0, 1e-3, 1e-6);
-    let imbalance = drive - delta - dissipated;
-    let scale = drive.abs().max(dissipated.abs());
-    eprintln!(
-        "B2 (3-D, EHL grid, drag): drive {drive:.4e} J, ΔE {delta:.4e} J, dissipated {dissipated:.4e} J, imbalance {:.1e} of the larger",
-        imbalance / scale
-    );
-    assert!(dissipated > 0.0);
-    assert!((imbalance / scale).abs() < 1e-3, "imbalance {imbalance}");
+    for method in METHODS {
+        let (drive, delta, dissipated) = balance(method, model.clone(), &y0, 1e-3, 1e-6);
+        let imbalance = drive - delta - dissipated;
+        let scale = drive.abs().max(dissipated.abs());
+        eprintln!(
+            "B2 (3-D, EHL grid, drag, {method:?}): drive {drive:.4e} J, ΔE {delta:.4e} J, dissipated {dissipated:.4e} J, imbalance {:.1e} of the larger",
+            imbalance / scale
+        );
+        assert!(dissipated > 0.0);
+        assert!(
+            (imbalance / scale).abs() < 1e-3,
+            "{method:?}: imbalance {imbalance}"
+        );
+    }
 }

@@ -194,3 +194,47 @@ pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium)
     };
     (params, eq)
 }
+
+/// The adaptive integrators the dynamic validation cases run with: the
+/// explicit DOPRI5 and the stiff ROS34PW2 (issue 5: both must pass).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// Dormand–Prince 5(4).
+    Dopri5,
+    /// Rosenbrock–W 3(2).
+    Ros34pw2,
+}
+
+/// Both methods, explicit first.
+pub const METHODS: [Method; 2] = [Method::Dopri5, Method::Ros34pw2];
+
+/// An adaptive integrator of `method` for `model` from (0, `y0`).
+pub fn integrator(
+    method: Method,
+    model: &rolldyn::dynamics::BearingModel,
+    y0: &[f64],
+    relative_tolerance: f64,
+    max_step: f64,
+) -> rolldyn::integrate::Solver {
+    use rolldyn::integrate::{ExplicitRk, ROS34PW2, Rosenbrock, Solver, StepControl};
+    match method {
+        Method::Dopri5 => Solver::Explicit(
+            ExplicitRk::new(
+                &rolldyn::integrate::tableau::DOPRI5,
+                StepControl::Adaptive {
+                    relative_tolerance,
+                    max_step,
+                    initial_step: None,
+                },
+                model,
+                0.0,
+                y0,
+            )
+            .unwrap(),
+        ),
+        Method::Ros34pw2 => Solver::Rosenbrock(Box::new(
+            Rosenbrock::new(&ROS34PW2, relative_tolerance, max_step, None, model, 0.0, y0)
+                .unwrap(),
+        )),
+    }
+}
