@@ -19,29 +19,21 @@
 //! settles at 26.30 N, inside that bracket. The test asserts that physical
 //! property: the dynamic loads lie between the two J–H extremes.
 
-use super::common::{bearing_7008c, dynamics_7008c};
+use super::common::{Method, bearing_7008c, dynamics_7008c, integrator};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
-use rolldyn::integrate::tableau::DOPRI5;
-use rolldyn::integrate::{ExplicitRk, StepControl};
+use rolldyn::integrate::Integrator;
 use rolldyn::material::Material;
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
 
-#[test]
-fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
+/// Mean inner and outer contact loads over 2–6 ms \[N\] and the steps.
+fn mean_loads(method: Method, relative_tolerance: f64, max_step: f64) -> (f64, f64, u64) {
     let g = bearing_7008c();
     let steel = Material::STEEL_52100;
     let (params, eq) = dynamics_7008c(DragParameters::default());
-    let (loads, speed) = (params.loads.at(0.0), params.speed.speed_at(0.0));
-    let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
     let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
     let y0 = model.state_from_equilibrium(&eq);
-    let control = StepControl::Adaptive {
-        relative_tolerance: 1e-5,
-        max_step: 1e-5,
-        initial_step: None,
-    };
-    let mut rk = ExplicitRk::new(&DOPRI5, control, &model, 0.0, &y0).unwrap();
+    let mut rk = integrator(method, &model, &y0, relative_tolerance, max_step);
     let z = g.ball_count;
     let (t_start, t_end, dt) = (2e-3, 6e-3, 1e-5);
     let mut sample = vec![0.0; y0.len()];
@@ -59,7 +51,18 @@ fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
             next += dt;
         }
     }
-    let (mean_i, mean_o) = (sum_i / n as f64, sum_o / n as f64);
+    (sum_i / n as f64, sum_o / n as f64, rk.stats().steps)
+}
+
+/// B6 with the explicit method at rtol 1e-5 and the stiff one at the
+/// CLI's default 1e-3; both lie in the bracket and agree to 1e-3.
+#[test]
+fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let (params, eq) = dynamics_7008c(DragParameters::default());
+    let (loads, speed) = (params.loads.at(0.0), params.speed.speed_at(0.0));
+    let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
     let (jh_i, jh_o) = (eq.balls[0].inner.load, eq.balls[0].outer.load);
     let inner_control = qs
         .solve(
@@ -75,18 +78,27 @@ fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
         inner_control.balls[0].inner.load,
         inner_control.balls[0].outer.load,
     );
-    eprintln!(
-        "B6: mean Q_i {mean_i:.3} N (J-H {jh_i:.3}, {:+.2} %), Q_o {mean_o:.3} N (J-H {jh_o:.3}, {:+.2} %), {} steps",
-        100.0 * (mean_i / jh_i - 1.0),
-        100.0 * (mean_o / jh_o - 1.0),
-        rk.stats().steps
-    );
+    let mut by_method = Vec::new();
+    for (method, rtol, max_step) in [(Method::Dopri5, 1e-5, 1e-5), (Method::Ros34pw2, 1e-3, 1e-4)] {
+        let (mean_i, mean_o, steps) = mean_loads(method, rtol, max_step);
+        eprintln!(
+            "B6 ({method:?}, rtol {rtol:e}): mean Q_i {mean_i:.4} N (J-H {jh_i:.3}, {:+.2} %), Q_o {mean_o:.4} N (J-H {jh_o:.3}, {:+.2} %), {steps} steps",
+            100.0 * (mean_i / jh_i - 1.0),
+            100.0 * (mean_o / jh_o - 1.0),
+        );
+        assert!(
+            (lo_i..=jh_i).contains(&mean_i),
+            "{method:?}: Q_i {mean_i} outside the J–H bracket [{lo_i}, {jh_i}]"
+        );
+        assert!(
+            (lo_o..=jh_o).contains(&mean_o),
+            "{method:?}: Q_o {mean_o} outside the J–H bracket [{lo_o}, {jh_o}]"
+        );
+        by_method.push((mean_i, mean_o));
+    }
+    let ((ei, eo), (si, so)) = (by_method[0], by_method[1]);
     assert!(
-        (lo_i..=jh_i).contains(&mean_i),
-        "Q_i {mean_i} outside the J–H bracket [{lo_i}, {jh_i}]"
-    );
-    assert!(
-        (lo_o..=jh_o).contains(&mean_o),
-        "Q_o {mean_o} outside the J–H bracket [{lo_o}, {jh_o}]"
+        ((si - ei) / ei).abs() < 1e-3 && ((so - eo) / eo).abs() < 1e-3,
+        "stiff ({si}, {so}) vs explicit ({ei}, {eo}) N"
     );
 }

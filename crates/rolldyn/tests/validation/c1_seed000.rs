@@ -17,24 +17,37 @@
 //! the paper's 4.24 %, and at W = 0 (only the ring and shaft weight, 4.9 N)
 //! the cage must be markedly slower (sliding).
 
-use super::common::{bearing_6304, seed000_dynamics, steel_seed000};
+use super::common::{METHODS, Method, bearing_6304, integrator, seed000_dynamics, steel_seed000};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DynamicsParameters, PocketShape};
-use rolldyn::integrate::tableau::DOPRI5;
-use rolldyn::integrate::{ExplicitRk, StepControl};
+use rolldyn::integrate::Integrator;
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
 
 /// Mean cage speed \[rpm\] over the last `window` s of `t_end` s, started
 /// at rest (`from_rest`) or at pure rolling, with the cage whirl locked.
 fn cage_speed(load: f64, t_end: f64, window: f64, from_rest: bool) -> (f64, u64) {
-    let (speed, steps, _) = run(load, t_end, window, from_rest, |p| p.cage.whirl = false);
+    cage_speed_with(Method::Dopri5, load, t_end, window, from_rest)
+}
+
+/// [`cage_speed`] with the given integrator.
+fn cage_speed_with(
+    method: Method,
+    load: f64,
+    t_end: f64,
+    window: f64,
+    from_rest: bool,
+) -> (f64, u64) {
+    let (speed, steps, _) = run(method, load, t_end, window, from_rest, |p| {
+        p.cage.whirl = false
+    });
     (speed, steps)
 }
 
 /// As [`cage_speed`] for any configuration; also the largest cage-centre
 /// eccentricity over the window \[m\].
 fn run(
+    method: Method,
     load: f64,
     t_end: f64,
     window: f64,
@@ -56,12 +69,7 @@ fn run(
         }
         y0[l.cage() + 5] = 0.0;
     }
-    let control = StepControl::Adaptive {
-        relative_tolerance: 1e-6,
-        max_step: 1e-5,
-        initial_step: None,
-    };
-    let mut rk = ExplicitRk::new(&DOPRI5, control, &model, 0.0, &y0).unwrap();
+    let mut rk = integrator(method, &model, &y0, 1e-6, 1e-5);
     let cage = l.cage();
     let mut angle_start = None;
     let mut eccentricity = 0.0f64;
@@ -97,7 +105,7 @@ fn run(
 /// all stay centred (2929–2950 rpm, e ≤ 101 µm).
 #[test]
 fn c1_ball_guided_cage_with_spherical_pockets() {
-    let (speed, _, eccentricity) = run(100.0, 0.1, 0.04, true, |p| {
+    let (speed, _, eccentricity) = run(Method::Dopri5, 100.0, 0.1, 0.04, true, |p| {
         p.cage.whirl = true;
         p.cage.pocket_shape = PocketShape::Spherical;
         p.cage.pocket_friction.friction = 0.0;
@@ -110,20 +118,32 @@ fn c1_ball_guided_cage_with_spherical_pockets() {
     assert!(eccentricity < 0.12e-3, "cage drifted: e = {eccentricity} m");
 }
 
+/// C1 with both integrators; they also agree with each other on the
+/// loaded cage speed to 0.2 % (the 40 ms mean of a cage that settles from
+/// rest through impacts; its run-to-run scatter at rtol 1e-6 is ~0.1 %).
 #[test]
 fn c1_cage_speed_and_low_load_sliding() {
-    let (loaded, _) = cage_speed(100.0, 0.1, 0.04, true);
-    let (unloaded, _) = cage_speed(0.0, 0.1, 0.04, true);
-    eprintln!(
-        "C1 from rest: W = 100 N → {loaded:.1} rpm (measured ≈ 2940), W = 0 → {unloaded:.1} rpm"
-    );
+    let mut loaded_by_method = Vec::new();
+    for method in METHODS {
+        let (loaded, steps) = cage_speed_with(method, 100.0, 0.1, 0.04, true);
+        let (unloaded, _) = cage_speed_with(method, 0.0, 0.1, 0.04, true);
+        eprintln!(
+            "C1 from rest ({method:?}, {steps} steps): W = 100 N → {loaded:.1} rpm (measured ≈ 2940), W = 0 → {unloaded:.1} rpm"
+        );
+        assert!(
+            ((loaded - 2940.0) / 2940.0).abs() < 0.0424,
+            "{method:?}, W = 100 N: {loaded} rpm"
+        );
+        assert!(
+            unloaded < 0.9 * loaded,
+            "{method:?}: low load must slide: {unloaded} vs {loaded} rpm"
+        );
+        loaded_by_method.push(loaded);
+    }
+    let (explicit, stiff) = (loaded_by_method[0], loaded_by_method[1]);
     assert!(
-        ((loaded - 2940.0) / 2940.0).abs() < 0.0424,
-        "W = 100 N: {loaded} rpm"
-    );
-    assert!(
-        unloaded < 0.9 * loaded,
-        "low load must slide: {unloaded} vs {loaded} rpm"
+        ((stiff - explicit) / explicit).abs() < 2e-3,
+        "ros34pw2 {stiff} rpm vs dopri5 {explicit} rpm"
     );
 }
 

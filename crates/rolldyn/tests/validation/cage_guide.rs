@@ -5,12 +5,11 @@
 //! radius 28.665 mm, G 10.1 mm, C_g 0.35 mm diametral) with F_z = 100 N
 //! added to F_x = 200 N, 2 ms from the Jones–Harris state (axial).
 
-use super::common::{bearing_7008c, dynamics_7008c};
+use super::common::{Method, bearing_7008c, dynamics_7008c, integrator};
 use rolldyn::RingKind;
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters, GuideLand};
-use rolldyn::integrate::tableau::DOPRI5;
-use rolldyn::integrate::{ExplicitRk, StepControl};
+use rolldyn::integrate::Integrator;
 use rolldyn::material::Material;
 use rolldyn::operating::{LoadProfile, Loads};
 
@@ -32,16 +31,25 @@ fn guided_cage_stays_within_its_clearance() {
         moment: [0.0; 2],
     });
     let steel = Material::STEEL_52100;
-    let mut model =
+    let model =
         BearingModel::new(&bearing_7008c(), &steel, &steel, HertzModel::Exact, params).unwrap();
-    let y0 = model.state_from_equilibrium(&eq);
+    // The stiff method at a looser tolerance (its third order makes 1e-6
+    // slow here); the energy balance still closes to 1e-3.
+    for (method, rtol) in [(Method::Dopri5, 1e-6), (Method::Ros34pw2, 1e-4)] {
+        guided_run(method, rtol, model.clone(), &eq, clearance);
+    }
+}
+
+fn guided_run(
+    method: Method,
+    relative_tolerance: f64,
+    mut model: BearingModel,
+    eq: &rolldyn::quasistatic::Equilibrium,
+    clearance: f64,
+) {
+    let y0 = model.state_from_equilibrium(eq);
     let e0 = model.energy(0.0, &y0).total();
-    let control = StepControl::Adaptive {
-        relative_tolerance: 1e-6,
-        max_step: 1e-5,
-        initial_step: None,
-    };
-    let mut rk = ExplicitRk::new(&DOPRI5, control, &model, 0.0, &y0).unwrap();
+    let mut rk = integrator(method, &model, &y0, relative_tolerance, 1e-5);
     let c = model.layout().cage();
     let mut worst = 0.0f64;
     while rk.t() < 2e-3 {
@@ -52,12 +60,15 @@ fn guided_cage_stays_within_its_clearance() {
     let delta = model.energy(rk.t(), rk.y()).total() - e0;
     let imbalance = (drive - delta - dissipated) / drive.abs().max(dissipated.abs());
     eprintln!(
-        "guided cage: max eccentricity {:.3e} m (radial clearance {clearance:.3e} m), energy imbalance {imbalance:.1e}",
+        "guided cage ({method:?}): max eccentricity {:.3e} m (radial clearance {clearance:.3e} m), energy imbalance {imbalance:.1e}",
         worst
     );
     assert!(
         worst > 0.0 && worst < clearance,
-        "cage left its guide clearance: {worst}"
+        "{method:?}: cage left its guide clearance: {worst}"
     );
-    assert!(imbalance.abs() < 1e-3, "energy balance {imbalance}");
+    assert!(
+        imbalance.abs() < 1e-3,
+        "{method:?}: energy balance {imbalance}"
+    );
 }

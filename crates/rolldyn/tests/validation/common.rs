@@ -233,8 +233,16 @@ pub fn integrator(
             .unwrap(),
         ),
         Method::Ros34pw2 => Solver::Rosenbrock(Box::new(
-            Rosenbrock::new(&ROS34PW2, relative_tolerance, max_step, None, model, 0.0, y0)
-                .unwrap(),
+            Rosenbrock::new(
+                &ROS34PW2,
+                relative_tolerance,
+                max_step,
+                None,
+                model,
+                0.0,
+                y0,
+            )
+            .unwrap(),
         )),
     }
 }

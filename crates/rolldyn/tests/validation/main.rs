@@ -21,6 +21,7 @@ mod c5_seed002_table1;
 mod cage_guide;
 mod common;
 mod convergence;
+mod efficiency;
 mod quasistatic_high_speed;
 mod quasistatic_static;
 mod rolling_resistance;
