@@ -947,7 +947,6 @@ impl BearingModel {
         y: &[f64],
         inner: &RingMotion,
         outer: &RingMotion,
-        integration: TractionIntegration,
         dy: &mut [f64],
     ) -> BallCoupling {
         let l = self.layout;
@@ -965,7 +964,7 @@ impl BearingModel {
             &self.inner_table,
             &episodes[0],
             &ball,
-            integration,
+            self.params.traction_integration,
             false,
         ) {
             force += cn.force;
@@ -980,7 +979,7 @@ impl BearingModel {
             &self.outer_table,
             &episodes[1],
             &ball,
-            integration,
+            self.params.traction_integration,
             false,
         ) {
             force += cn.force;
@@ -1186,15 +1185,8 @@ impl BlockSplit for BearingModel {
         coupling: &mut [f64],
     ) {
         let (inner, outer) = self.ring_motion(t, y);
-        self.ball_rhs(
-            block,
-            y,
-            &inner,
-            &outer,
-            TractionIntegration::Centre,
-            dy_block,
-        )
-        .write(coupling);
+        self.ball_rhs(block, y, &inner, &outer, dy_block)
+            .write(coupling);
     }
 
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
@@ -1235,14 +1227,7 @@ impl OdeSystem for BearingModel {
         let mut balls = BallCoupling::default();
         for j in 0..l.balls {
             let b = l.ball(j);
-            let coupling = self.ball_rhs(
-                j,
-                y,
-                &inner,
-                &outer,
-                self.params.traction_integration,
-                &mut dy[b..b + StateLayout::BALL],
-            );
+            let coupling = self.ball_rhs(j, y, &inner, &outer, &mut dy[b..b + StateLayout::BALL]);
             balls.add(&coupling);
         }
         let (_, border) = dy.split_at_mut(l.ring());

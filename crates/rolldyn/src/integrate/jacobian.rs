@@ -24,10 +24,12 @@ use super::linear::{BlockJacobian, BlockLayout};
 /// f_j = block_j(t, y_j, y_B) and f_B = border(t, y_B, Σ_j c_j(t, y_j, y_B)).
 ///
 /// The Jacobian is taken of this composition. It should equal
-/// [`OdeSystem::rhs`], or approximate it where a cheaper model keeps the
-/// stiff terms (a Rosenbrock–W method keeps its order with any
-/// approximate Jacobian; e.g. the bearing evaluates traction at the
-/// contact centre instead of over the grid).
+/// [`OdeSystem::rhs`]; a cheaper approximation is allowed (a Rosenbrock–W
+/// method keeps its order with any Jacobian) but must keep the stiff
+/// terms: the bearing's traction at the contact centre instead of over the
+/// grid lost the spin-friction stiffness and cut the steps of a whirling
+/// 7008C cage from ~20 µs to ~1 µs (docs/performance.md), so the bearing
+/// uses its full model.
 pub trait BlockSplit {
     /// The shape: blocks first, then the border.
     fn block_layout(&self) -> BlockLayout;
