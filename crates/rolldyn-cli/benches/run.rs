@@ -1,55 +1,68 @@
-//! `cargo bench -p rolldyn-cli --bench run`: the issue-4 benchmark cases,
-//! run exactly as users run them (`rolldyn run` on the presets), reporting
-//! the CLI's own timing from summary.json (wall time, steps, rejected
-//! steps, RHS evaluations):
+//! `cargo bench -p rolldyn-cli --bench run`: the issue-4 and issue-5
+//! benchmark cases, run exactly as users run them (`rolldyn run` on the
+//! presets), reporting the CLI's own timing from summary.json (wall time,
+//! integrator, steps, rejected steps, RHS evaluations, Jacobians and
+//! factorizations):
 //! (a) 6304 preset (seed 000: planar, L–N, modified Coulomb at the contact
 //!     centre, W = 100 N, 8000 rpm), 0.2 s simulated;
 //! (b) the built-in default case (7008C, 10 000 rpm, F_x = 200 N, EHL on
-//!     the 12 × 6 grid, from the Jones–Harris state), 0.05 s simulated.
-//! Targets of issue 4: (a) ≤ 20 s, (b) ≤ 60 s; figures in
+//!     the 12 × 6 grid, from the Jones–Harris state), 0.05 s simulated;
+//! (c) the 7218B preset on seed 002's speed ramp (1000 → 10 000 rpm,
+//!     Coulomb traction), the full 2.5 s.
+//! Targets of issue 5: (a) ≤ 1 s, (b) ≤ 2 s, (c) ≤ 5 min; figures in
 //! docs/performance.md. Build in release first (`cargo bench` does).
+//! `ROLLDYN_BENCH=a,b` runs a subset.
 
 use std::process::Command;
 
 fn main() {
     let exe = env!("CARGO_BIN_EXE_rolldyn");
     let dir = std::env::temp_dir().join(format!("rolldyn-bench-{}", std::process::id()));
-    let cases: [(&str, Vec<&str>); 2] = [
+    let only = std::env::var("ROLLDYN_BENCH").unwrap_or_else(|_| "a,b,c".into());
+    // (key, label, preset (None: built-in default case), extra arguments)
+    let cases: [(&str, &str, Option<&str>, &[&str]); 3] = [
         (
+            "a",
             "(a) 6304 preset, 0.2 s",
-            vec!["run", "-", "--duration", "0.2 s"],
+            Some("6304"),
+            &["--duration", "0.2 s"],
         ),
-        ("(b) default 7008C case, 0.05 s", vec!["run"]),
+        ("b", "(b) default 7008C case, 0.05 s", None, &[]),
+        ("c", "(c) 7218B seed-002 ramp, 2.5 s", Some("7218B"), &[]),
     ];
-    for (name, args) in cases {
-        let out = dir.join(
-            name.split_whitespace()
-                .next()
-                .unwrap_or("case")
-                .trim_matches(|c| c == '(' || c == ')'),
-        );
+    for (key, name, preset, extra) in cases {
+        if !only.split(',').any(|k| k.trim() == key) {
+            continue;
+        }
+        let out = dir.join(key);
         let mut cmd = Command::new(exe);
-        cmd.args(&args).arg("-o").arg(&out);
-        let output = if args.contains(&"-") {
-            use std::io::Write;
-            let mut child = cmd
-                .stdin(std::process::Stdio::piped())
-                .stdout(std::process::Stdio::null())
-                .spawn()
-                .expect("rolldyn starts");
-            let preset = Command::new(exe)
-                .args(["new", "--preset", "6304"])
-                .output()
-                .expect("rolldyn new");
-            child
-                .stdin
-                .take()
-                .expect("stdin")
-                .write_all(&preset.stdout)
-                .expect("write case");
-            child.wait_with_output().expect("rolldyn runs")
-        } else {
-            cmd.output().expect("rolldyn runs")
+        cmd.arg("run");
+        if preset.is_some() {
+            cmd.arg("-");
+        }
+        cmd.args(extra).arg("-o").arg(&out);
+        let output = match preset {
+            Some(preset) => {
+                use std::io::Write;
+                let mut child = cmd
+                    .stdin(std::process::Stdio::piped())
+                    .stdout(std::process::Stdio::piped())
+                    .stderr(std::process::Stdio::piped())
+                    .spawn()
+                    .expect("rolldyn starts");
+                let text = Command::new(exe)
+                    .args(["new", "--preset", preset])
+                    .output()
+                    .expect("rolldyn new");
+                child
+                    .stdin
+                    .take()
+                    .expect("stdin")
+                    .write_all(&text.stdout)
+                    .expect("write case");
+                child.wait_with_output().expect("rolldyn runs")
+            }
+            None => cmd.output().expect("rolldyn runs"),
         };
         if !output.status.success() {
             println!(
@@ -64,15 +77,19 @@ fn main() {
                 .lines()
                 .find(|l| l.trim_start().starts_with(&format!("\"{key}\"")))
                 .and_then(|l| l.split(':').nth(1))
-                .map(|v| v.trim().trim_end_matches(',').to_string())
+                .map(|v| v.trim().trim_end_matches(',').trim_matches('"').to_string())
                 .unwrap_or_default()
         };
         println!(
-            "{name:<34} {:>8} s wall: {} steps, {} rejected, {} RHS evaluations",
+            "{name:<34} {:>8} s wall ({}): {} steps, {} rejected, {} RHS, {} Jacobians ({} RHS), {} factorizations",
             field("wall_time_s"),
+            field("integrator"),
             field("steps"),
             field("rejected_steps"),
-            field("rhs_evaluations")
+            field("rhs_evaluations"),
+            field("jacobian_evaluations"),
+            field("jacobian_rhs_evaluations"),
+            field("factorizations"),
         );
     }
     std::fs::remove_dir_all(&dir).ok();

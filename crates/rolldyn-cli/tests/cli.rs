@@ -409,9 +409,7 @@ fn run_writes_parquet_and_summary() {
     // The default case picks the stiff solver, which reports its work.
     assert_eq!(summary["integrator"], "ros34pw2");
     assert!(summary["jacobian_evaluations"].as_u64().unwrap() >= 1);
-    assert!(
-        summary["factorizations"].as_u64().unwrap() >= summary["steps"].as_u64().unwrap() / 50
-    );
+    assert!(summary["factorizations"].as_u64().unwrap() >= summary["steps"].as_u64().unwrap() / 50);
     // Outer-raceway control start: the outer contacts roll with little
     // spin, the inner ones spin (Jones–Harris); the ball axis lies near the
     // contact angles (7008C at 200 N: 13–18°) with no yaw under pure axial load.

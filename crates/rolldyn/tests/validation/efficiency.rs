@@ -91,12 +91,12 @@ fn stiff_solver_work_on_the_6304() {
         "6304, 20 ms",
         got,
         IntegrationStats {
-            steps: 2599,
-            rejected_steps: 266,
-            rhs_evaluations: 11195,
-            jacobian_evaluations: 242,
-            jacobian_rhs_evaluations: 3872,
-            factorizations: 2768,
+            steps: 2463,
+            rejected_steps: 278,
+            rhs_evaluations: 10687,
+            jacobian_evaluations: 156,
+            jacobian_rhs_evaluations: 2496,
+            factorizations: 2659,
         },
     );
 }
@@ -115,12 +115,12 @@ fn stiff_solver_work_on_the_7008c() {
         "7008C, 10 ms",
         got,
         IntegrationStats {
-            steps: 137,
-            rejected_steps: 5,
-            rhs_evaluations: 564,
+            steps: 130,
+            rejected_steps: 3,
+            rhs_evaluations: 530,
             jacobian_evaluations: 7,
             jacobian_rhs_evaluations: 182,
-            factorizations: 48,
+            factorizations: 42,
         },
     );
 }
