@@ -267,7 +267,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
                 0.0,
                 &y0,
             )
-            .map(Solver::Explicit),
+            .map(|e| Solver::Explicit(Box::new(e))),
             "rk4",
         ),
         IntegratorChoice::Dopri5 => (
@@ -282,7 +282,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
                 0.0,
                 &y0,
             )
-            .map(Solver::Explicit),
+            .map(|e| Solver::Explicit(Box::new(e))),
             "dopri5",
         ),
         IntegratorChoice::Ros34pw2 => (

@@ -133,8 +133,8 @@ fn dense<S: OdeSystem + ?Sized>(
         work.y[col] += delta;
         system.rhs(t, &work.y, &mut work.f_perturbed);
         work.y[col] = saved;
-        for row in 0..n {
-            jacobian.border[row * n + col] = (work.f_perturbed[row] - f[row]) / delta;
+        for (row, (perturbed, base)) in work.f_perturbed.iter().zip(f).enumerate() {
+            jacobian.border[row * n + col] = (perturbed - base) / delta;
         }
     }
     n as u64
@@ -191,9 +191,13 @@ fn by_blocks(
                 diag[r * b + k] = (work.f_perturbed[r] - work.f[j * b + r]) / delta;
             }
             let cj = &work.couplings[j * c..(j + 1) * c];
-            for i in 0..c {
-                work.coupling_trial[i] =
-                    work.coupling_sum[i] + (work.coupling_perturbed[i] - cj[i]);
+            for (trial, ((sum, perturbed), base)) in work.coupling_trial.iter_mut().zip(
+                work.coupling_sum
+                    .iter()
+                    .zip(&work.coupling_perturbed)
+                    .zip(cj),
+            ) {
+                *trial = sum + (perturbed - base);
             }
             split.border_rhs(t, &work.y, &work.coupling_trial, &mut work.f_perturbed[..m]);
             for r in 0..m {

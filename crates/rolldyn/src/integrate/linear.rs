@@ -278,8 +278,8 @@ fn lu_factor(a: &mut [f64], n: usize, pivots: &mut [usize]) -> Result<(), Singul
 
 /// Solves with an LU from [`lu_factor`]; `x` holds the right-hand side.
 fn lu_solve(lu: &[f64], n: usize, pivots: &[usize], x: &mut [f64]) {
-    for k in 0..n {
-        x.swap(k, pivots[k]);
+    for (k, &p) in pivots.iter().enumerate().take(n) {
+        x.swap(k, p);
     }
     for i in 1..n {
         let s: f64 = (0..i).map(|c| lu[i * n + c] * x[c]).sum();
@@ -293,8 +293,7 @@ fn lu_solve(lu: &[f64], n: usize, pivots: &[usize], x: &mut [f64]) {
 
 /// Solves for a row-major n × w right-hand side matrix `x` at once.
 fn lu_solve_rows(lu: &[f64], n: usize, pivots: &[usize], x: &mut [f64], w: usize) {
-    for k in 0..n {
-        let p = pivots[k];
+    for (k, &p) in pivots.iter().enumerate().take(n) {
         if p != k {
             for c in 0..w {
                 x.swap(k * w + c, p * w + c);

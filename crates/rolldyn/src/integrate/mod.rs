@@ -109,7 +109,7 @@ integrator_by_delegation!(Rosenbrock);
 #[derive(Debug, Clone)]
 pub enum Solver {
     /// Explicit Runge–Kutta.
-    Explicit(ExplicitRk),
+    Explicit(Box<ExplicitRk>),
     /// Linearly implicit Rosenbrock–W.
     Rosenbrock(Box<Rosenbrock>),
 }

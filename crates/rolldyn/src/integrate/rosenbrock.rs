@@ -61,7 +61,8 @@ pub struct RosenbrockTableau {
     pub b_embedded: &'static [f64],
 }
 
-/// ROS34PW2 of Rang & Angermann (2005), Table 4.
+/// ROS34PW2 of Rang & Angermann (2005), Table 4 (the digits as printed).
+#[allow(clippy::excessive_precision)]
 pub const ROS34PW2: RosenbrockTableau = RosenbrockTableau {
     name: "ros34pw2",
     order: 3,
@@ -110,6 +111,8 @@ struct Transformed {
 }
 
 impl Transformed {
+    // Triangular-matrix index arithmetic reads clearest with indices.
+    #[allow(clippy::needless_range_loop)]
     fn of(tab: &RosenbrockTableau) -> Self {
         let s = tab.b.len();
         assert!(s <= MAX_STAGES && tab.alpha.len() == s && tab.gamma_below.len() == s);

@@ -218,7 +218,7 @@ pub fn integrator(
 ) -> rolldyn::integrate::Solver {
     use rolldyn::integrate::{ExplicitRk, ROS34PW2, Rosenbrock, Solver, StepControl};
     match method {
-        Method::Dopri5 => Solver::Explicit(
+        Method::Dopri5 => Solver::Explicit(Box::new(
             ExplicitRk::new(
                 &rolldyn::integrate::tableau::DOPRI5,
                 StepControl::Adaptive {
@@ -231,7 +231,7 @@ pub fn integrator(
                 y0,
             )
             .unwrap(),
-        ),
+        )),
         Method::Ros34pw2 => Solver::Rosenbrock(Box::new(
             Rosenbrock::new(
                 &ROS34PW2,
