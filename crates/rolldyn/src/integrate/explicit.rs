@@ -87,8 +87,7 @@ pub struct ExplicitRk {
     f_prev: Vec<f64>,
     dense: Vec<f64>,
     stats: IntegrationStats,
-    /// Error norm of the last accepted step (PI control).
-    err_prev: f64,
+    control_state: PiControl,
 }
 
 /// Weight β of the previous error in the PI step-size controller
@@ -96,7 +95,62 @@ pub struct ExplicitRk {
 /// their DOPRI5 code, which allows β ≤ 0.1 and uses 0.04). The larger
 /// value damps the step-size oscillation at the stability boundary, where
 /// the bearing's stiff traction keeps explicit methods.
-pub(crate) const PI_BETA: f64 = 0.08;
+const PI_BETA: f64 = 0.08;
+
+/// Step-size control shared by the adaptive integrators: landing on the
+/// end without a sliver step, the PI update after an accepted step and the
+/// cut after a rejected one (error norms scaled so that 1 is the tolerance,
+/// `order` the exponent q of err ∝ h^q).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PiControl {
+    /// Error norm of the last accepted step.
+    err_prev: f64,
+}
+
+impl PiControl {
+    pub(crate) fn new() -> Self {
+        Self { err_prev: 1e-4 }
+    }
+
+    /// The step to try: `natural`, or the rest of the way to the limit if
+    /// that is shorter or only slightly longer.
+    pub(crate) fn landing(natural: f64, remaining: f64) -> f64 {
+        if natural >= remaining || (remaining - natural) < 0.01 * natural {
+            remaining
+        } else {
+            natural
+        }
+    }
+
+    /// Next step after an accepted one of error `err` (natural size
+    /// `natural`): h · 0.9 err^{−(1/q − 0.75β)} err_prev^{β}, no growth
+    /// right after a rejection.
+    pub(crate) fn accepted(&mut self, natural: f64, err: f64, order: f64, rejected: bool) -> f64 {
+        let err = err.max(1e-10);
+        let factor = 0.9 * err.powf(-(1.0 / order - 0.75 * PI_BETA)) * self.err_prev.powf(PI_BETA);
+        self.err_prev = err.max(1e-4);
+        natural * factor.clamp(0.2, if rejected { 1.0 } else { 5.0 })
+    }
+
+    /// Next step after a rejected step h of error `err` (∞: not finite).
+    pub(crate) fn rejected(h: f64, err: f64, order: f64) -> f64 {
+        let factor = if err.is_finite() {
+            (0.9 * err.powf(-1.0 / order)).clamp(0.2, 1.0)
+        } else {
+            0.2
+        };
+        h * factor
+    }
+
+    /// The error for a step that fell below `min_step`.
+    pub(crate) fn too_small(t: f64, step: f64, err: f64) -> IntegrationError {
+        if err.is_finite() {
+            IntegrationError::StepTooSmall { t, step }
+        } else {
+            IntegrationError::NonFinite { t }
+        }
+    }
+}
 
 impl ExplicitRk {
     /// Sets up an integration of `system` from (t0, y0).
@@ -174,7 +228,7 @@ impl ExplicitRk {
                 rhs_evaluations: 1,
                 ..Default::default()
             },
-            err_prev: 1e-4,
+            control_state: PiControl::new(),
         };
         if me.f.iter().any(|v| !v.is_finite()) {
             return Err(IntegrationError::NonFinite { t: t0 });
@@ -316,25 +370,13 @@ impl ExplicitRk {
         let mut rejected = false;
         loop {
             let natural = self.h.min(max_step);
-            // Land on t_limit without a sliver step.
-            let h = if natural >= remaining || (remaining - natural) < 0.01 * natural {
-                remaining
-            } else {
-                natural
-            };
+            let h = PiControl::landing(natural, remaining);
             let err = self.attempt(system, h, rtol);
             let fixed = matches!(self.control, StepControl::Fixed { .. });
             if err <= 1.0 {
                 let order = self.tableau.order as f64;
                 if !fixed {
-                    // PI controller: h_new = h · 0.9 err^{−(1/q − 0.75β)} err_prev^{β};
-                    // no growth right after a rejection.
-                    let err = err.max(1e-10);
-                    let factor = 0.9
-                        * err.powf(-(1.0 / order - 0.75 * PI_BETA))
-                        * self.err_prev.powf(PI_BETA);
-                    self.h = natural * factor.clamp(0.2, if rejected { 1.0 } else { 5.0 });
-                    self.err_prev = err.max(1e-4);
+                    self.h = self.control_state.accepted(natural, err, order, rejected);
                 }
                 self.finish_step(system, h);
                 return Ok(());
@@ -344,22 +386,9 @@ impl ExplicitRk {
             }
             self.stats.rejected_steps += 1;
             rejected = true;
-            let order = self.tableau.order as f64;
-            let factor = if err.is_finite() {
-                (0.9 * err.powf(-1.0 / order)).clamp(0.2, 1.0)
-            } else {
-                0.2
-            };
-            self.h = h * factor;
+            self.h = PiControl::rejected(h, err, self.tableau.order as f64);
             if self.h < min_step {
-                return Err(if err.is_finite() {
-                    IntegrationError::StepTooSmall {
-                        t: self.t,
-                        step: self.h,
-                    }
-                } else {
-                    IntegrationError::NonFinite { t: self.t }
-                });
+                return Err(PiControl::too_small(self.t, self.h, err));
             }
         }
     }

@@ -25,7 +25,7 @@
 //! sides and one factorization.
 
 use super::OdeSystem;
-use super::explicit::{IntegrationError, IntegrationStats, PI_BETA};
+use super::explicit::{IntegrationError, IntegrationStats, PiControl};
 use super::jacobian::{JacobianWork, finite_difference};
 use super::linear::{BlockJacobian, BlockLayout, BlockLu};
 
@@ -185,7 +185,7 @@ pub struct Rosenbrock {
     y_prev: Vec<f64>,
     f_prev: Vec<f64>,
     stats: IntegrationStats,
-    err_prev: f64,
+    control_state: PiControl,
 }
 
 impl Rosenbrock {
@@ -262,7 +262,7 @@ impl Rosenbrock {
                 rhs_evaluations: 1,
                 ..Default::default()
             },
-            err_prev: 1e-4,
+            control_state: PiControl::new(),
         };
         me.h = initial_step
             .unwrap_or_else(|| me.starting_step())
@@ -407,18 +407,10 @@ impl Rosenbrock {
                 self.evaluate_jacobian(system);
             }
             let natural = self.h.min(self.max_step);
-            let h = if natural >= remaining || (remaining - natural) < 0.01 * natural {
-                remaining
-            } else {
-                natural
-            };
+            let h = PiControl::landing(natural, remaining);
             let err = self.attempt(system, h);
             if err <= 1.0 {
-                let err = err.max(1e-10);
-                let factor =
-                    0.9 * err.powf(-(1.0 / q - 0.75 * PI_BETA)) * self.err_prev.powf(PI_BETA);
-                self.h = natural * factor.clamp(0.2, if rejected { 1.0 } else { 5.0 });
-                self.err_prev = err.max(1e-4);
+                self.h = self.control_state.accepted(natural, err, q, rejected);
                 self.finish_step(system, h);
                 return Ok(());
             }
@@ -431,21 +423,9 @@ impl Rosenbrock {
             {
                 self.jacobian_age = None;
             }
-            let factor = if err.is_finite() {
-                (0.9 * err.powf(-1.0 / q)).clamp(0.2, 1.0)
-            } else {
-                0.25
-            };
-            self.h = h * factor;
+            self.h = PiControl::rejected(h, err, q);
             if self.h < min_step {
-                return Err(if err.is_finite() {
-                    IntegrationError::StepTooSmall {
-                        t: self.t,
-                        step: self.h,
-                    }
-                } else {
-                    IntegrationError::NonFinite { t: self.t }
-                });
+                return Err(PiControl::too_small(self.t, self.h, err));
             }
         }
     }
