@@ -2,8 +2,8 @@
 //! output (Hairer, Nørsett & Wanner, *Solving Ordinary Differential
 //! Equations I*, 2nd ed., §II.4 step-size control, §II.6 dense output).
 
-use super::OdeSystem;
 use super::tableau::Tableau;
+use super::{Integrator, OdeSystem};
 
 /// How the step size is chosen.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -282,24 +282,9 @@ impl ExplicitRk {
         (100.0 * h0).min(h1)
     }
 
-    /// Current time.
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// Current state.
-    pub fn y(&self) -> &[f64] {
-        &self.y
-    }
-
     /// Step size the next step will try.
     pub fn step_size(&self) -> f64 {
         self.h
-    }
-
-    /// Counters so far.
-    pub fn stats(&self) -> IntegrationStats {
-        self.stats
     }
 
     /// Computes the stages and the candidate y_new for step h; returns the
@@ -347,13 +332,54 @@ impl ExplicitRk {
         if err.is_finite() { err } else { f64::INFINITY }
     }
 
+    fn finish_step(&mut self, system: &mut impl OdeSystem, h: f64) {
+        let n = self.y.len();
+        let tab = self.tableau;
+        self.t_prev = self.t;
+        self.h_prev = h;
+        self.y_prev.copy_from_slice(&self.y);
+        self.f_prev.copy_from_slice(&self.f);
+        // Dense-output weights (DOPRI5): h Σ d_i k_i.
+        if !tab.dense.is_empty() {
+            for i in 0..n {
+                let mut acc = 0.0;
+                for (j, d) in tab.dense.iter().enumerate() {
+                    acc += d * self.k[j][i];
+                }
+                self.dense[i] = h * acc;
+            }
+        }
+        self.t += h;
+        self.y.copy_from_slice(&self.y_new);
+        if tab.fsal {
+            let last = tab.c.len() - 1;
+            self.f.copy_from_slice(&self.k[last]);
+        } else {
+            system.rhs(self.t, &self.y, &mut self.f);
+            self.stats.rhs_evaluations += 1;
+        }
+        self.stats.steps += 1;
+        if system.accept_step(self.t, &self.y) {
+            system.rhs(self.t, &self.y, &mut self.f);
+            self.stats.rhs_evaluations += 1;
+        }
+    }
+}
+
+impl Integrator for ExplicitRk {
+    /// Current time.
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// Current state.
+    fn y(&self) -> &[f64] {
+        &self.y
+    }
+
     /// Takes one accepted step, not beyond `t_limit`. Calls the system's
     /// `accept_step` hook once, after acceptance.
-    pub fn step(
-        &mut self,
-        system: &mut impl OdeSystem,
-        t_limit: f64,
-    ) -> Result<(), IntegrationError> {
+    fn step<S: OdeSystem>(&mut self, system: &mut S, t_limit: f64) -> Result<(), IntegrationError> {
         let remaining = t_limit - self.t;
         if remaining <= 0.0 {
             return Ok(());
@@ -393,43 +419,10 @@ impl ExplicitRk {
         }
     }
 
-    fn finish_step(&mut self, system: &mut impl OdeSystem, h: f64) {
-        let n = self.y.len();
-        let tab = self.tableau;
-        self.t_prev = self.t;
-        self.h_prev = h;
-        self.y_prev.copy_from_slice(&self.y);
-        self.f_prev.copy_from_slice(&self.f);
-        // Dense-output weights (DOPRI5): h Σ d_i k_i.
-        if !tab.dense.is_empty() {
-            for i in 0..n {
-                let mut acc = 0.0;
-                for (j, d) in tab.dense.iter().enumerate() {
-                    acc += d * self.k[j][i];
-                }
-                self.dense[i] = h * acc;
-            }
-        }
-        self.t += h;
-        self.y.copy_from_slice(&self.y_new);
-        if tab.fsal {
-            let last = tab.c.len() - 1;
-            self.f.copy_from_slice(&self.k[last]);
-        } else {
-            system.rhs(self.t, &self.y, &mut self.f);
-            self.stats.rhs_evaluations += 1;
-        }
-        self.stats.steps += 1;
-        if system.accept_step(self.t, &self.y) {
-            system.rhs(self.t, &self.y, &mut self.f);
-            self.stats.rhs_evaluations += 1;
-        }
-    }
-
     /// Dense output: the state at time `t` within the last accepted step
     /// (clamped to it), written into `out`. DOPRI5 uses its 4th-order
     /// continuous extension; other methods a cubic Hermite interpolant.
-    pub fn interpolate(&self, t: f64, out: &mut [f64]) {
+    fn interpolate(&self, t: f64, out: &mut [f64]) {
         if self.h_prev == 0.0 {
             out.copy_from_slice(&self.y);
             return;
@@ -456,6 +449,11 @@ impl ExplicitRk {
                 out,
             );
         }
+    }
+
+    /// Counters so far.
+    fn stats(&self) -> IntegrationStats {
+        self.stats
     }
 }
 

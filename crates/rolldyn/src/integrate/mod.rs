@@ -77,34 +77,6 @@ pub trait Integrator {
     fn stats(&self) -> IntegrationStats;
 }
 
-macro_rules! integrator_by_delegation {
-    ($type:ty) => {
-        impl Integrator for $type {
-            fn t(&self) -> f64 {
-                <$type>::t(self)
-            }
-            fn y(&self) -> &[f64] {
-                <$type>::y(self)
-            }
-            fn step<S: OdeSystem>(
-                &mut self,
-                system: &mut S,
-                t_limit: f64,
-            ) -> Result<(), IntegrationError> {
-                <$type>::step(self, system, t_limit)
-            }
-            fn interpolate(&self, t: f64, out: &mut [f64]) {
-                <$type>::interpolate(self, t, out)
-            }
-            fn stats(&self) -> IntegrationStats {
-                <$type>::stats(self)
-            }
-        }
-    };
-}
-integrator_by_delegation!(ExplicitRk);
-integrator_by_delegation!(Rosenbrock);
-
 /// An integrator chosen at run time (e.g. from a case file).
 #[derive(Debug, Clone)]
 pub enum Solver {

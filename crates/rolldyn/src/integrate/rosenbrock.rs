@@ -24,10 +24,10 @@
 //! dense output (cubic Hermite, order 3), so a step costs 4 right-hand
 //! sides and one factorization.
 
-use super::OdeSystem;
 use super::explicit::{IntegrationError, IntegrationStats, PiControl};
 use super::jacobian::{JacobianWork, finite_difference};
 use super::linear::{BlockJacobian, BlockLayout, BlockLu};
+use super::{Integrator, OdeSystem};
 
 /// Largest number of stages of a Rosenbrock tableau.
 const MAX_STAGES: usize = 6;
@@ -288,24 +288,9 @@ impl Rosenbrock {
         }
     }
 
-    /// Current time.
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// Current state.
-    pub fn y(&self) -> &[f64] {
-        &self.y
-    }
-
     /// Step size the next step will try.
     pub fn step_size(&self) -> f64 {
         self.h
-    }
-
-    /// Counters so far.
-    pub fn stats(&self) -> IntegrationStats {
-        self.stats
     }
 
     /// The tableau's name.
@@ -387,13 +372,37 @@ impl Rosenbrock {
         if err.is_finite() { err } else { f64::INFINITY }
     }
 
+    fn finish_step(&mut self, system: &mut impl OdeSystem, h: f64) {
+        self.t_prev = self.t;
+        self.h_prev = h;
+        self.y_prev.copy_from_slice(&self.y);
+        self.f_prev.copy_from_slice(&self.f);
+        self.t += h;
+        self.y.copy_from_slice(&self.y_new);
+        system.accept_step(self.t, &self.y);
+        system.rhs(self.t, &self.y, &mut self.f);
+        self.stats.rhs_evaluations += 1;
+        self.stats.steps += 1;
+        if let Some(age) = &mut self.jacobian_age {
+            *age += 1;
+        }
+    }
+}
+
+impl Integrator for Rosenbrock {
+    /// Current time.
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// Current state.
+    fn y(&self) -> &[f64] {
+        &self.y
+    }
+
     /// Takes one accepted step, not beyond `t_limit`. Calls the system's
     /// `accept_step` hook once, after acceptance.
-    pub fn step(
-        &mut self,
-        system: &mut impl OdeSystem,
-        t_limit: f64,
-    ) -> Result<(), IntegrationError> {
+    fn step<S: OdeSystem>(&mut self, system: &mut S, t_limit: f64) -> Result<(), IntegrationError> {
         let remaining = t_limit - self.t;
         if remaining <= 0.0 {
             return Ok(());
@@ -430,25 +439,9 @@ impl Rosenbrock {
         }
     }
 
-    fn finish_step(&mut self, system: &mut impl OdeSystem, h: f64) {
-        self.t_prev = self.t;
-        self.h_prev = h;
-        self.y_prev.copy_from_slice(&self.y);
-        self.f_prev.copy_from_slice(&self.f);
-        self.t += h;
-        self.y.copy_from_slice(&self.y_new);
-        system.accept_step(self.t, &self.y);
-        system.rhs(self.t, &self.y, &mut self.f);
-        self.stats.rhs_evaluations += 1;
-        self.stats.steps += 1;
-        if let Some(age) = &mut self.jacobian_age {
-            *age += 1;
-        }
-    }
-
     /// Dense output: cubic Hermite interpolation in the last accepted step
     /// (clamped to it), order 3 like the method.
-    pub fn interpolate(&self, t: f64, out: &mut [f64]) {
+    fn interpolate(&self, t: f64, out: &mut [f64]) {
         super::explicit::hermite(
             self.t_prev,
             self.h_prev,
@@ -459,6 +452,11 @@ impl Rosenbrock {
             t,
             out,
         );
+    }
+
+    /// Counters so far.
+    fn stats(&self) -> IntegrationStats {
+        self.stats
     }
 }
 

@@ -17,7 +17,7 @@ use rolldyn::dynamics::{
     PocketShape, Support,
 };
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
-use rolldyn::integrate::{ExplicitRk, ROS34PW2, Rosenbrock, StepControl};
+use rolldyn::integrate::{ExplicitRk, Integrator, ROS34PW2, Rosenbrock, StepControl};
 use rolldyn::material::Material;
 use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
 use rolldyn::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};

@@ -21,7 +21,7 @@ use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, seed000_dynamic
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::tableau::DOPRI5;
-use rolldyn::integrate::{ExplicitRk, StepControl};
+use rolldyn::integrate::{ExplicitRk, Integrator, StepControl};
 use rolldyn::material::Material;
 use rolldyn::traction::TractionIntegration;
 

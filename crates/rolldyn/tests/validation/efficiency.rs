@@ -13,7 +13,7 @@
 use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, seed000_dynamics, steel_seed000};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
-use rolldyn::integrate::{IntegrationStats, ROS34PW2, Rosenbrock};
+use rolldyn::integrate::{IntegrationStats, Integrator, ROS34PW2, Rosenbrock};
 use rolldyn::material::Material;
 
 /// Allowed growth of any counter over its snapshot (and shrinkage below
