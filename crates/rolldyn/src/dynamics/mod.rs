@@ -8,12 +8,32 @@
 //! ([`crate::traction`]); rolling resistance by hysteresis; cage pockets,
 //! guide land and unbalance ([`crate::cage`]); ball and cage drag; gravity;
 //! planar mode; the energy bookkeeping of MODEL §10. docs/dynamics.md is
-//! the user guide.
+//! the user guide. One file per force element or concern:
+//!
+//! | file | what |
+//! |---|---|
+//! | `model` | parameters, state → kinematics, equations of motion |
+//! | `layout` | offsets in the state vector |
+//! | `race_contact` | ball–raceway normal force, traction, hysteresis |
+//! | `pocket` | ball–pocket contact |
+//! | `drag` | air–oil drag on balls and cage |
+//! | `supports` | ring spring–dampers |
+//! | `energy` | mechanical energy, work and dissipation |
+//! | `outputs` | per-contact output samples, pure-rolling reference |
 
+pub mod drag;
+pub mod energy;
+pub mod layout;
 pub mod model;
+pub mod outputs;
+pub mod pocket;
+pub mod race_contact;
+pub mod supports;
 
 pub use crate::cage::{CageParameters, GuideLand, PocketLaw, PocketShape};
-pub use model::{
-    BearingModel, ContactOutput, ContactSample, DragParameters, DynamicsParameters, Energy,
-    OuterRing, StateLayout, Support,
-};
+pub use drag::DragParameters;
+pub use energy::Energy;
+pub use layout::StateLayout;
+pub use model::{BearingModel, DynamicsParameters};
+pub use race_contact::{ContactOutput, ContactSample, HYSTERESIS_RAMP_SPEED};
+pub use supports::{OuterRing, Support};

@@ -21,43 +21,21 @@
 //! ```
 //! Centrifugal and Coriolis terms come from the rotating azimuth frame.
 //!
-//! # Contacts
-//! Ball–raceway: the exact torus contact of MODEL §2.1 (δ, n, contact
-//! point P, α). The normal law gives Q from δ, δ̇ = (q̇ − ṗ)·n (p: the
-//! groove-centre point, moving with the ring) and the episode's impact
-//! speed. Traction acts at P on the tangential slip of ball material
-//! relative to ring material, v_b = q̇ + ω_b × (P − q) and
-//! v_g = ṫ + ω_ring × (P − t), with ω_ring = ω_i a + the tilt rates. Force
-//! on the ball: −Q n + F_T; the ring takes the reaction at P.
 //!
-//! Rolling resistance by elastic hysteresis (MODEL §3; seed 004 eq 21,
-//! Harris): F_h = α_h (3/16)(b/(D/2)) Q opposing the rolling, applied as
-//! the equivalent couple M_h = (D/2) F_h = (3/16) α_h b Q about the rolling
-//! axis e_a = n × û on the ball, the reaction couple on the ring; its power
-//! M_h |ω_roll| is dissipated. A ramp over 1 mm/s of rolling speed makes it
-//! continuous at rest.
-//!
-//! Ball–pocket (MODEL §5; [`crate::cage::pocket`]): cylindrical or
-//! spherical pockets at the cage pitch radius, `linear`, `hertz` or
-//! `gupta_film` normal law, modified-Coulomb friction on the slip at the
-//! contact point.
-//!
-//! Gravity (optional) acts along −z.
-//!
-//! # Energy (MODEL §10)
-//! [`BearingModel::energy`] gives kinetic energy (balls, ring translation
-//! and tilt, cage), elastic energy (Σ (2/5) K_c δ^{5/2} + ½ k δ_p²) and the
-//! potential of constant applied loads and gravity. With no dissipation and
-//! a fixed contact angle (planar mode) their sum is conserved (VALIDATION
-//! B1). Where α varies, K_c(α) δ^{3/2} is not the exact gradient of
-//! (2/5) K_c δ^{5/2}; the K_c tables vary by ~1e-3 per degree.
+//! # Force elements
+//! Each lives in its own file: ball–raceway contact and rolling resistance
+//! ([`super::race_contact`]), ball–pocket ([`super::pocket`]), drag
+//! ([`super::drag`]), ring supports ([`super::supports`]); the energy
+//! bookkeeping is in [`super::energy`], output quantities in
+//! [`super::outputs`]. Gravity (optional) acts along −z.
 
-use crate::cage::{CageParameters, GuideLand, PocketShape};
-use crate::contact::Curvature;
-use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
+use super::drag::DragParameters;
+use super::layout::StateLayout;
+use super::supports::{OuterRing, Support};
+use crate::cage::{CageParameters, GuideLand};
+use crate::contact::normal_law::ContactEpisode;
 use crate::contact::{
     ContactTable, GrooveCircle, HertzModel, NormalForceLaw, RacewayContactModel, RingPose,
-    TorusContact,
 };
 use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use crate::geometry::Raceway;
@@ -65,46 +43,12 @@ use crate::geometry::{BearingGeometry, RingKind};
 use crate::integrate::linear::BlockLayout;
 use crate::integrate::{BlockSplit, OdeSystem};
 use crate::kinematics::cage_speed_ratio;
-use crate::lubrication::hamrock_dowson;
 use crate::material::{Material, effective_modulus};
 use crate::operating::{LoadProfile, SpeedProfile};
 use crate::quasistatic::Equilibrium;
-use crate::traction::ellipse::{self, ContactPatch, TractionIntegration};
-use crate::traction::{ContactConditions, TractionModel};
+use crate::traction::TractionModel;
+use crate::traction::ellipse::TractionIntegration;
 use nalgebra::{Rotation3, Vector3};
-
-/// Drag of the air–oil mixture on balls and cage (seed 001 eqs 10–12, 24,
-/// 36; MODEL §3, §5), with the seed's misprints corrected:
-/// ```text
-/// ball, orbit:  F = −½ ρ_e C_D (π D²/4) v_t |v_t| e_t             (v_t = r φ̇)
-/// ball, spin:   M = −½ ρ_e C_n (D/2)⁵ |ω_rel| ω_rel              (ω_rel = ω_b − φ̇ e_x)
-/// cage:         M = −(c₁ θ̇_c + c₂ θ̇_c |θ̇_c|)
-/// ```
-/// Seed 001 eqs 10–12 print M = ½ ρ ω (D/2)⁵ C_n, which is not a torque
-/// (N·m·s); the quadratic form above is the rotating-sphere drag torque.
-/// Seed 001 eq 24, F = C_D π ρ D² (d_m ω_m)^1.95/(32 g), is Gupta's
-/// imperial-unit form (the g converts lbf); in SI with a constant C_D it is
-/// the quadratic drag above. Seed 001 eq 36 mixes terms of inconsistent
-/// dimensions; MODEL §5 asks for a churning/windage torque with user
-/// coefficients, which c₁ (viscous) and c₂ (windage) are. The mixture is
-/// taken at rest (outer ring fixed). All zero by default.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct DragParameters {
-    /// Effective density of the air–oil mixture ρ_e \[kg/m³\].
-    pub effective_density: f64,
-    /// Ball drag coefficient C_D \[-\].
-    pub ball_drag_coefficient: f64,
-    /// Ball spin drag coefficient C_n \[-\].
-    pub ball_spin_drag_coefficient: f64,
-    /// Cage viscous drag c₁ \[N·m·s\].
-    pub cage_viscous: f64,
-    /// Cage windage drag c₂ \[N·m·s²\].
-    pub cage_windage: f64,
-}
-
-/// Rolling speed over which the hysteresis couple ramps up from zero
-/// (regularisation, MODEL §3) \[m/s\].
-pub const HYSTERESIS_RAMP_SPEED: f64 = 1e-3;
 
 /// Everything the dynamic model needs besides geometry and materials.
 #[derive(Debug, Clone, PartialEq)]
@@ -143,217 +87,40 @@ pub struct DynamicsParameters {
     pub drag: DragParameters,
 }
 
-/// A spring–damper between a ring and ground, per axis (x, y, z).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Support {
-    /// Stiffness per axis \[N/m\].
-    pub stiffness: [f64; 3],
-    /// Damping per axis \[N·s/m\].
-    pub damping: [f64; 3],
-}
-
-impl Support {
-    /// Force on the ring for displacement `x` and velocity `v`.
-    fn force(&self, x: &Vector3<f64>, v: &Vector3<f64>) -> Vector3<f64> {
-        -Vector3::from(self.stiffness).component_mul(x)
-            - Vector3::from(self.damping).component_mul(v)
-    }
-
-    /// Elastic energy ½ Σ k x².
-    fn energy(&self, x: &Vector3<f64>) -> f64 {
-        0.5 * Vector3::from(self.stiffness).dot(&x.component_mul(x))
-    }
-
-    /// Dissipated power Σ c v².
-    fn dissipation(&self, v: &Vector3<f64>) -> f64 {
-        Vector3::from(self.damping).dot(&v.component_mul(v))
-    }
-
-    fn validate(&self, field: &'static str) -> Result<(), InvalidParameter> {
-        for v in self.stiffness.iter().chain(&self.damping) {
-            require_non_negative(field, *v)?;
-        }
-        Ok(())
-    }
-}
-
-/// The outer ring on a housing spring–damper (seed 002 eqs 14–15): radial
-/// translation (y_o, z_o) only.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct OuterRing {
-    /// Mass of the outer ring (with what moves with it) \[kg\].
-    pub mass: f64,
-    /// Radial housing stiffness and damping (the x entries are unused).
-    pub housing: Support,
-}
-
-/// Offsets of the parts of the state vector.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct StateLayout {
-    /// Number of balls.
-    pub balls: usize,
-}
-
-impl StateLayout {
-    /// States per ball.
-    pub const BALL: usize = 9;
-    /// Inner-ring states.
-    pub const RING: usize = 10;
-    /// Outer-ring states (y_o, z_o and rates).
-    pub const OUTER: usize = 4;
-    /// Cage states.
-    pub const CAGE: usize = 6;
-    /// First state of ball j.
-    pub fn ball(&self, j: usize) -> usize {
-        Self::BALL * j
-    }
-    /// First inner-ring state.
-    pub fn ring(&self) -> usize {
-        Self::BALL * self.balls
-    }
-    /// First outer-ring state.
-    pub fn outer(&self) -> usize {
-        self.ring() + Self::RING
-    }
-    /// First cage state.
-    pub fn cage(&self) -> usize {
-        self.outer() + Self::OUTER
-    }
-    /// The states that the contacts of ball j touch (read or write): its
-    /// own block, both rings and the cage. Nothing else couples the balls,
-    /// so the Jacobian is bordered block-diagonal (MODEL §8).
-    pub fn ball_coupling(&self, j: usize) -> [std::ops::Range<usize>; 2] {
-        [
-            self.ball(j)..self.ball(j) + Self::BALL,
-            self.ring()..self.cage() + Self::CAGE,
-        ]
-    }
-    /// The two energy accumulators: drive work and dissipated energy \[J\].
-    pub fn work(&self) -> usize {
-        self.cage() + Self::CAGE
-    }
-    /// Total number of states.
-    pub fn len(&self) -> usize {
-        self.work() + 2
-    }
-    /// Whether there are no states (never, for a valid bearing).
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-}
-
-/// State of one ball–raceway contact for output (MODEL §9); all zero
-/// when the contact is open.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct ContactOutput {
-    /// Normal load Q \[N\].
-    pub load: f64,
-    /// Contact angle α \[rad\].
-    pub angle: f64,
-    /// Sliding speed |Δv| at the contact centre \[m/s\].
-    pub slip_speed: f64,
-    /// Entrainment (rolling) speed |u| \[m/s\].
-    pub entrainment_speed: f64,
-    /// Slide-to-roll ratio |Δv|/|u| at the contact centre \[-\].
-    pub slide_to_roll: f64,
-    /// Spin-to-roll ratio ω_s/|ω_roll| \[-\] (Harris).
-    pub spin_to_roll: f64,
-    /// Central film thickness h_c \[m\] (0 without a film model).
-    pub film: f64,
-}
-
-/// Contact state of one ball for output.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct ContactSample {
-    /// Inner contact.
-    pub inner: ContactOutput,
-    /// Outer contact.
-    pub outer: ContactOutput,
-}
-
-/// Energy of a state \[J\].
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Energy {
-    /// Kinetic energy (balls, ring translation and tilt, cage).
-    pub kinetic: f64,
-    /// Elastic energy of the contacts.
-    pub elastic: f64,
-    /// Potential of constant applied loads and gravity.
-    pub potential: f64,
-}
-
-impl Energy {
-    /// Sum.
-    pub fn total(&self) -> f64 {
-        self.kinetic + self.elastic + self.potential
-    }
-}
-
-/// One evaluated ball–raceway contact.
-struct RaceContact {
-    geometry: TorusContact,
-    penetration_rate: f64,
-    /// Dissipated power: normal damping and traction \[W\].
-    dissipation: f64,
-    /// Force on the ball (normal and traction) \[N\].
-    force: Vector3<f64>,
-    /// Moment on the ball about its centre \[N·m\].
-    moment: Vector3<f64>,
-    /// Traction couple about the contact point \[N·m\]; the ring takes
-    /// −force at P and −couple.
-    couple: Vector3<f64>,
-    /// Output quantities.
-    output: ContactOutput,
-}
-
-/// One evaluated ball–pocket contact.
-struct PocketContact {
-    /// Ball-centre offset from the pocket centre \[m\].
-    offset: f64,
-    /// Force on the ball \[N\].
-    force: Vector3<f64>,
-    /// Moment on the ball about its centre \[N·m\].
-    moment: Vector3<f64>,
-    /// Contact point on the ball \[m\].
-    point: Vector3<f64>,
-    /// Dissipated power: damping and friction \[W\].
-    dissipation: f64,
-}
-
 /// Kinematic state of a ball (global frame).
-struct BallMotion {
-    centre: Vector3<f64>,
-    velocity: Vector3<f64>,
-    omega: Vector3<f64>,
+pub(super) struct BallMotion {
+    pub(super) centre: Vector3<f64>,
+    pub(super) velocity: Vector3<f64>,
+    pub(super) omega: Vector3<f64>,
     /// Orbital rate φ̇ of its azimuth frame \[rad/s\].
-    orbital_rate: f64,
+    pub(super) orbital_rate: f64,
 }
 
 /// Kinematic state of a ring for contact evaluation.
-struct RingMotion {
-    raceway: Raceway,
-    circle: GrooveCircle,
-    centre: Vector3<f64>,
-    velocity: Vector3<f64>,
+pub(super) struct RingMotion {
+    pub(super) raceway: Raceway,
+    pub(super) circle: GrooveCircle,
+    pub(super) centre: Vector3<f64>,
+    pub(super) velocity: Vector3<f64>,
     /// Angular velocity of the ring material (spin + tilt rates).
-    omega: Vector3<f64>,
+    pub(super) omega: Vector3<f64>,
     /// Angular velocity of the ring's frame (tilt rates only).
-    omega_frame: Vector3<f64>,
+    pub(super) omega_frame: Vector3<f64>,
 }
 
 /// The dynamic bearing model.
 #[derive(Debug, Clone)]
 pub struct BearingModel {
-    geometry: BearingGeometry,
-    inner_table: ContactTable,
-    outer_table: ContactTable,
-    ball_mass: f64,
-    ball_inertia: f64,
-    effective_modulus: f64,
-    params: DynamicsParameters,
-    layout: StateLayout,
+    pub(super) geometry: BearingGeometry,
+    pub(super) inner_table: ContactTable,
+    pub(super) outer_table: ContactTable,
+    pub(super) ball_mass: f64,
+    pub(super) ball_inertia: f64,
+    pub(super) effective_modulus: f64,
+    pub(super) params: DynamicsParameters,
+    pub(super) layout: StateLayout,
     /// Episode memory: inner and outer contact of each ball.
-    episodes: Vec<[ContactEpisode; 2]>,
+    pub(super) episodes: Vec<[ContactEpisode; 2]>,
 }
 
 impl BearingModel {
@@ -473,7 +240,7 @@ impl BearingModel {
         y
     }
 
-    fn ring_motion(&self, t: f64, y: &[f64]) -> (RingMotion, RingMotion) {
+    pub(super) fn ring_motion(&self, t: f64, y: &[f64]) -> (RingMotion, RingMotion) {
         let r = self.layout.ring();
         let pose = RingPose {
             translation: Vector3::new(y[r], y[r + 1], y[r + 2]),
@@ -509,7 +276,7 @@ impl BearingModel {
 
     /// Ball centre, velocity and angular velocity (global), and its frame.
     #[allow(clippy::type_complexity)]
-    fn ball_kinematics(&self, j: usize, y: &[f64]) -> (BallMotion, [Vector3<f64>; 3]) {
+    pub(super) fn ball_kinematics(&self, j: usize, y: &[f64]) -> (BallMotion, [Vector3<f64>; 3]) {
         let b = self.layout.ball(j);
         let (s, c) = y[b + 2].sin_cos();
         let ex = Vector3::x();
@@ -529,273 +296,8 @@ impl BearingModel {
         )
     }
 
-    fn race_contact(
-        &self,
-        ring: &RingMotion,
-        table: &ContactTable,
-        episode: &ContactEpisode,
-        ball: &BallMotion,
-        integration: TractionIntegration,
-        with_output: bool,
-    ) -> Option<RaceContact> {
-        let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
-        let orbital_rate = ball.orbital_rate;
-        let d = self.geometry.ball_diameter;
-        let geometry = ring.circle.contact(q, d, 0.0)?;
-        if geometry.penetration <= 0.0 {
-            return None;
-        }
-        let n = geometry.normal;
-        let groove_velocity = ring.velocity
-            + ring
-                .omega_frame
-                .cross(&(geometry.groove_centre - ring.centre));
-        let penetration_rate = (v - groove_velocity).dot(&n);
-        let hertz = table.at(geometry.contact_angle);
-        let stiffness = hertz.stiffness;
-        let state = ContactState {
-            stiffness,
-            penetration: geometry.penetration,
-            penetration_rate,
-            impact_speed: episode.impact_speed(penetration_rate, self.params.impact_speed_floor),
-            effective_mass: self.ball_mass,
-        };
-        let load = self.params.normal_law.force(&state);
-        let point = geometry.contact_point;
-        let ball_surface = v + w.cross(&(point - q));
-        let ring_surface = ring.velocity + ring.omega.cross(&(point - ring.centre));
-        let slip = ball_surface - ring_surface;
-        let ellipse = hertz.at_load(load);
-        // Rolling direction: the azimuthal direction at P, tangent to the contact.
-        let azimuthal = Vector3::new(0.0, -point.z, point.y);
-        let along = azimuthal - azimuthal.dot(&n) * n;
-        let rolling_direction = if along.norm() > 0.0 {
-            along.normalize()
-        } else {
-            n.cross(&Vector3::x()).normalize()
-        };
-        // The contact point moves with the ball's azimuth frame:
-        // v_P = q̇ + φ̇ e_x × (P − q). Entrainment is the mean surface speed
-        // relative to it (MODEL §3 writes q̇ for v_P, which misses φ̇ e_x ×
-        // (P − q): a factor 1/(1 ± γ cos α) on |u|, 12 % on the 7008C).
-        // Computed only where used (film, traction curve, hysteresis, output).
-        let hysteresis = self.params.rolling_hysteresis > 0.0;
-        let (entrainment, u) =
-            if with_output || hysteresis || self.params.traction.needs_entrainment() {
-                let contact_velocity = v + orbital_rate * Vector3::x().cross(&(point - q));
-                let e =
-                    0.5 * ((ball_surface - contact_velocity) + (ring_surface - contact_velocity));
-                let e = e - e.dot(&n) * n;
-                (e, e.norm())
-            } else {
-                (Vector3::zeros(), 0.0)
-            };
-        let film = match &self.params.traction {
-            TractionModel::Ehl(ehl) => {
-                let curvature = Curvature::of_raceway(
-                    &ring.raceway,
-                    self.geometry.ball_diameter,
-                    self.geometry.pitch_diameter,
-                    geometry.contact_angle,
-                );
-                hamrock_dowson(
-                    &ehl.lubricant,
-                    u,
-                    load,
-                    curvature.rolling_radius,
-                    self.effective_modulus,
-                    hertz.ellipticity,
-                )
-                .central
-            }
-            _ => 0.0,
-        };
-        let rg = ring.raceway.groove_radius;
-        let rb = 0.5 * self.geometry.ball_diameter;
-        let patch = ContactPatch {
-            point,
-            normal: n,
-            rolling_direction,
-            semi_major: ellipse.semi_major,
-            semi_minor: ellipse.semi_minor,
-            load,
-            deformed_radius: 2.0 * rg * rb / (rg + rb),
-        };
-        let relative_spin = w - ring.omega;
-        let traction = ellipse::integrate(
-            &self.params.traction,
-            integration,
-            &patch,
-            q,
-            &slip,
-            &relative_spin,
-            &ContactConditions {
-                film,
-                entrainment_speed: u,
-            },
-        );
-        // Rolling axis e_a = n × û and the rolling rate about it.
-        let rolling_axis = if u > 0.0 {
-            n.cross(&(entrainment / u))
-        } else {
-            Vector3::zeros()
-        };
-        let rolling_rate = relative_spin.dot(&rolling_axis);
-        let mut moment = traction.moment;
-        let mut couple = traction.couple;
-        let mut dissipation = traction.dissipation;
-        if hysteresis {
-            let rolling_speed = 0.5 * self.geometry.ball_diameter * rolling_rate;
-            let ramp = (rolling_speed / HYSTERESIS_RAMP_SPEED).clamp(-1.0, 1.0);
-            let m_h = -(0.1875 * self.params.rolling_hysteresis * ellipse.semi_minor * load * ramp)
-                * rolling_axis;
-            moment += m_h;
-            couple += m_h;
-            dissipation -= m_h.dot(&relative_spin);
-        }
-        let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
-        dissipation += (load - elastic) * penetration_rate;
-        let output = if with_output {
-            let slip_speed = (slip - slip.dot(&n) * n).norm();
-            ContactOutput {
-                load,
-                angle: geometry.contact_angle,
-                slip_speed,
-                entrainment_speed: u,
-                slide_to_roll: if u > 0.0 { slip_speed / u } else { 0.0 },
-                spin_to_roll: if rolling_rate != 0.0 {
-                    relative_spin.dot(&n) / rolling_rate.abs()
-                } else {
-                    0.0
-                },
-                film,
-            }
-        } else {
-            ContactOutput::default()
-        };
-        Some(RaceContact {
-            geometry,
-            penetration_rate,
-            dissipation,
-            force: -load * n + traction.force,
-            moment,
-            couple,
-            output,
-        })
-    }
-
-    /// Pocket contact of ball j, if closed.
-    fn pocket_contact(&self, j: usize, y: &[f64], ball: &BallMotion) -> Option<PocketContact> {
-        let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
-        let cage = &self.params.cage;
-        let c = self.layout.cage();
-        let centre = Vector3::new(0.0, y[c], y[c + 1]);
-        let velocity = Vector3::new(0.0, y[c + 3], y[c + 4]);
-        let spin = y[c + 5] * Vector3::x();
-        let angle = y[c + 2] + std::f64::consts::TAU * j as f64 / self.layout.balls as f64;
-        let axis = Vector3::new(0.0, angle.cos(), angle.sin());
-        let pocket = centre + cage.pitch_radius * axis;
-        let rel = q - pocket;
-        let perp = match cage.pocket_shape {
-            PocketShape::Cylindrical => rel - rel.dot(&axis) * axis,
-            PocketShape::Spherical => rel,
-        };
-        let offset = perp.norm();
-        let half_clearance = 0.5 * cage.pocket_clearance;
-        if !cage.pocket_law.acts(offset, half_clearance) {
-            return None;
-        }
-        let n = perp / offset;
-        let point = q + 0.5 * self.geometry.ball_diameter * n;
-        let pocket_point_velocity = velocity + spin.cross(&(q - centre));
-        let rate = (v - pocket_point_velocity).dot(&n);
-        let law = cage.pocket_law.force(offset, half_clearance, rate);
-        let normal = law.total;
-        let arm = point - q;
-        let slip = (v + w.cross(&arm)) - (velocity + spin.cross(&(point - centre)));
-        let slip_t = slip - slip.dot(&n) * n;
-        let friction = cage.pocket_friction.force(normal, &slip_t);
-        Some(PocketContact {
-            force: -normal * n + friction,
-            moment: arm.cross(&friction),
-            point,
-            offset,
-            dissipation: (normal - law.elastic) * rate - friction.dot(&slip_t),
-        })
-    }
-
-    /// Contact loads and angles of every ball at state `y`, written into
-    /// `out` (one entry per ball).
-    pub fn contact_samples(&self, t: f64, y: &[f64], out: &mut [ContactSample]) {
-        let (inner, outer) = self.ring_motion(t, y);
-        for (j, sample) in out.iter_mut().enumerate().take(self.layout.balls) {
-            let (ball, _) = self.ball_kinematics(j, y);
-            let episodes = &self.episodes[j];
-            *sample = ContactSample::default();
-            if let Some(c) = self.race_contact(
-                &inner,
-                &self.inner_table,
-                &episodes[0],
-                &ball,
-                self.params.traction_integration,
-                true,
-            ) {
-                sample.inner = c.output;
-            }
-            if let Some(c) = self.race_contact(
-                &outer,
-                &self.outer_table,
-                &episodes[1],
-                &ball,
-                self.params.traction_integration,
-                true,
-            ) {
-                sample.outer = c.output;
-            }
-        }
-    }
-
-    /// Pure-rolling cage-speed ratio ω_c/ω_i of MODEL §7 for the current
-    /// state: the mean contact angles of the loaded contacts and the mean
-    /// ball attitude angle β (spin axis relative to the cage, as in Harris)
-    /// in the formula with different inner and outer angles. The reference
-    /// of the cage speed ratio (CSR) of seed 002 §4.2.
-    pub fn pure_rolling_ratio(&self, samples: &[ContactSample], y: &[f64]) -> f64 {
-        let l = self.layout;
-        let (mut ai, mut ao, mut beta, mut n) = (0.0, 0.0, 0.0, 0.0);
-        for (j, s) in samples.iter().enumerate().take(l.balls) {
-            if s.inner.load > 0.0 && s.outer.load > 0.0 {
-                ai += s.inner.angle;
-                ao += s.outer.angle;
-                beta += self.ball_attitude(j, y).0;
-                n += 1.0;
-            }
-        }
-        let g = &self.geometry;
-        let gamma = g.ball_diameter / g.pitch_diameter;
-        if n == 0.0 {
-            let a = g.nominal_contact_angle();
-            return cage_speed_ratio(gamma, a, a, a);
-        }
-        cage_speed_ratio(gamma, ai / n, ao / n, beta / n)
-    }
-
-    /// Attitude β and yaw β' of ball j \[rad\] (seed 002 §4.1; Harris): the
-    /// direction of its spin relative to the cage frame, ω' = ω_b − φ̇ e_x,
-    /// with ω'_x = −ω' cos β cos β', ω'_t = ω' cos β sin β', ω'_r = ω' sin β.
-    /// A ball rolling on the contact line at angle α has β = α, β' = 0.
-    pub fn ball_attitude(&self, j: usize, y: &[f64]) -> (f64, f64) {
-        let b = self.layout.ball(j);
-        let axial = -(y[b + 6] - y[b + 5]);
-        let (radial, tangential) = (y[b + 7], y[b + 8]);
-        (
-            radial.atan2(axial.hypot(tangential)),
-            tangential.atan2(axial),
-        )
-    }
-
     /// Centre (radial plane), centre velocity and land speed of the guiding ring.
-    fn guide_ring(
+    pub(super) fn guide_ring(
         &self,
         guide: &GuideLand,
         t: f64,
@@ -819,76 +321,6 @@ impl BearingModel {
                 )
             }
         }
-    }
-
-    /// Work of the drive and the external forces (time-varying loads, cage
-    /// unbalance), and the dissipated energy, accumulated in state `y` \[J\].
-    pub fn work(&self, y: &[f64]) -> (f64, f64) {
-        let w = self.layout.work();
-        (y[w], y[w + 1])
-    }
-
-    /// Mechanical energy of state `y` at time `t` (MODEL §10); its change
-    /// equals the drive work minus the dissipated energy.
-    pub fn energy(&self, t: f64, y: &[f64]) -> Energy {
-        let l = self.layout;
-        let (inner, outer) = self.ring_motion(t, y);
-        let g = self.params.gravity;
-        let mut e = Energy::default();
-        for j in 0..l.balls {
-            let (ball, _) = self.ball_kinematics(j, y);
-            let (q, v, w) = (ball.centre, ball.velocity, ball.omega);
-            e.kinetic += 0.5 * self.ball_mass * v.norm_squared()
-                + 0.5 * self.ball_inertia * w.norm_squared();
-            e.potential += self.ball_mass * g * q.z;
-            for (ring, table) in [(&inner, &self.inner_table), (&outer, &self.outer_table)] {
-                if let Some(c) = ring.circle.contact(&q, self.geometry.ball_diameter, 0.0) {
-                    if c.penetration > 0.0 {
-                        e.elastic +=
-                            0.4 * table.stiffness(c.contact_angle) * c.penetration.powf(2.5);
-                    }
-                }
-            }
-            if let Some(pc) = self.pocket_contact(j, y, &ball) {
-                let cage = &self.params.cage;
-                e.elastic += cage
-                    .pocket_law
-                    .energy(pc.offset, 0.5 * cage.pocket_clearance);
-            }
-        }
-        let r = l.ring();
-        let p = &self.params;
-        e.kinetic +=
-            0.5 * p.inner_ring_mass * (y[r + 5].powi(2) + y[r + 6].powi(2) + y[r + 7].powi(2))
-                + 0.5 * p.inner_ring_tilt_inertia * (y[r + 8].powi(2) + y[r + 9].powi(2));
-        let loads = p.loads.at(t);
-        e.potential -= loads.force[0] * y[r]
-            + loads.force[1] * y[r + 1]
-            + loads.force[2] * y[r + 2]
-            + loads.moment[0] * y[r + 3]
-            + loads.moment[1] * y[r + 4];
-        e.potential += p.inner_ring_mass * g * y[r + 2];
-        e.elastic += p
-            .inner_support
-            .energy(&Vector3::new(y[r], y[r + 1], y[r + 2]));
-        if let Some(outer) = &p.outer_ring {
-            let o = l.outer();
-            e.kinetic += 0.5 * outer.mass * (y[o + 2].powi(2) + y[o + 3].powi(2));
-            e.elastic += outer.housing.energy(&Vector3::new(0.0, y[o], y[o + 1]));
-            e.potential += outer.mass * g * y[o + 1];
-        }
-        let c = l.cage();
-        e.kinetic += 0.5 * p.cage.mass * (y[c + 3].powi(2) + y[c + 4].powi(2))
-            + 0.5 * p.cage.inertia * y[c + 5].powi(2);
-        e.potential += p.cage.mass * g * y[c + 1];
-        if let Some(guide) = &p.cage.guide {
-            // The stop beyond ε_max is a spring.
-            let (centre, _, _) = self.guide_ring(guide, t, y);
-            let offset = (Vector3::new(0.0, y[c], y[c + 1]) - centre).norm();
-            let stop = (offset - guide.max_eccentricity * guide.radial_clearance).max(0.0);
-            e.elastic += 0.5 * guide.stop_stiffness * stop * stop;
-        }
-        e
     }
 }
 
@@ -998,24 +430,10 @@ impl BearingModel {
         let b = l.ball(j);
         let drag = &p.drag;
         if drag.effective_density > 0.0 {
-            let d = self.geometry.ball_diameter;
             let v_t = y[b + 1] * y[b + 5];
-            let f = -0.5
-                * drag.effective_density
-                * drag.ball_drag_coefficient
-                * std::f64::consts::FRAC_PI_4
-                * d
-                * d
-                * v_t
-                * v_t.abs();
-            force += f * et;
             let w_rel = w - y[b + 5] * ex;
-            let m = -0.5
-                * drag.effective_density
-                * drag.ball_spin_drag_coefficient
-                * (0.5 * d).powi(5)
-                * w_rel.norm()
-                * w_rel;
+            let (f, m) = drag.ball(self.geometry.ball_diameter, v_t, &w_rel);
+            force += f * et;
             moment += m;
             out.dissipation -= f * v_t + m.dot(&w);
         }

@@ -1,0 +1,101 @@
+//! Energy bookkeeping of the dynamic model (MODEL §10).
+//!
+//! [`BearingModel::energy`] gives kinetic energy (balls, ring translation
+//! and tilt, cage), elastic energy (Σ (2/5) K_c δ^{5/2} + ½ k δ_p²) and the
+//! potential of constant applied loads and gravity. With no dissipation and
+//! a fixed contact angle (planar mode) their sum is conserved (VALIDATION
+//! B1). Where α varies, K_c(α) δ^{3/2} is not the exact gradient of
+//! (2/5) K_c δ^{5/2}; the K_c tables vary by ~1e-3 per degree.
+
+use super::model::BearingModel;
+use nalgebra::Vector3;
+
+/// Energy of a state \[J\].
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Energy {
+    /// Kinetic energy (balls, ring translation and tilt, cage).
+    pub kinetic: f64,
+    /// Elastic energy of the contacts.
+    pub elastic: f64,
+    /// Potential of constant applied loads and gravity.
+    pub potential: f64,
+}
+
+impl Energy {
+    /// Sum.
+    pub fn total(&self) -> f64 {
+        self.kinetic + self.elastic + self.potential
+    }
+}
+
+impl BearingModel {
+    /// Work of the drive and the external forces (time-varying loads, cage
+    /// unbalance), and the dissipated energy, accumulated in state `y` \[J\].
+    pub fn work(&self, y: &[f64]) -> (f64, f64) {
+        let w = self.layout.work();
+        (y[w], y[w + 1])
+    }
+
+    /// Mechanical energy of state `y` at time `t` (MODEL §10); its change
+    /// equals the drive work minus the dissipated energy.
+    pub fn energy(&self, t: f64, y: &[f64]) -> Energy {
+        let l = self.layout;
+        let (inner, outer) = self.ring_motion(t, y);
+        let g = self.params.gravity;
+        let mut e = Energy::default();
+        for j in 0..l.balls {
+            let (ball, _) = self.ball_kinematics(j, y);
+            let (q, v, w) = (ball.centre, ball.velocity, ball.omega);
+            e.kinetic += 0.5 * self.ball_mass * v.norm_squared()
+                + 0.5 * self.ball_inertia * w.norm_squared();
+            e.potential += self.ball_mass * g * q.z;
+            for (ring, table) in [(&inner, &self.inner_table), (&outer, &self.outer_table)] {
+                if let Some(c) = ring.circle.contact(&q, self.geometry.ball_diameter, 0.0) {
+                    if c.penetration > 0.0 {
+                        e.elastic +=
+                            0.4 * table.stiffness(c.contact_angle) * c.penetration.powf(2.5);
+                    }
+                }
+            }
+            if let Some(pc) = self.pocket_contact(j, y, &ball) {
+                let cage = &self.params.cage;
+                e.elastic += cage
+                    .pocket_law
+                    .energy(pc.offset, 0.5 * cage.pocket_clearance);
+            }
+        }
+        let r = l.ring();
+        let p = &self.params;
+        e.kinetic +=
+            0.5 * p.inner_ring_mass * (y[r + 5].powi(2) + y[r + 6].powi(2) + y[r + 7].powi(2))
+                + 0.5 * p.inner_ring_tilt_inertia * (y[r + 8].powi(2) + y[r + 9].powi(2));
+        let loads = p.loads.at(t);
+        e.potential -= loads.force[0] * y[r]
+            + loads.force[1] * y[r + 1]
+            + loads.force[2] * y[r + 2]
+            + loads.moment[0] * y[r + 3]
+            + loads.moment[1] * y[r + 4];
+        e.potential += p.inner_ring_mass * g * y[r + 2];
+        e.elastic += p
+            .inner_support
+            .energy(&Vector3::new(y[r], y[r + 1], y[r + 2]));
+        if let Some(outer) = &p.outer_ring {
+            let o = l.outer();
+            e.kinetic += 0.5 * outer.mass * (y[o + 2].powi(2) + y[o + 3].powi(2));
+            e.elastic += outer.housing.energy(&Vector3::new(0.0, y[o], y[o + 1]));
+            e.potential += outer.mass * g * y[o + 1];
+        }
+        let c = l.cage();
+        e.kinetic += 0.5 * p.cage.mass * (y[c + 3].powi(2) + y[c + 4].powi(2))
+            + 0.5 * p.cage.inertia * y[c + 5].powi(2);
+        e.potential += p.cage.mass * g * y[c + 1];
+        if let Some(guide) = &p.cage.guide {
+            // The stop beyond ε_max is a spring.
+            let (centre, _, _) = self.guide_ring(guide, t, y);
+            let offset = (Vector3::new(0.0, y[c], y[c + 1]) - centre).norm();
+            let stop = (offset - guide.max_eccentricity * guide.radial_clearance).max(0.0);
+            e.elastic += 0.5 * guide.stop_stiffness * stop * stop;
+        }
+        e
+    }
+}

@@ -1,0 +1,78 @@
+//! Output quantities of a dynamic state: per-contact samples, the
+//! pure-rolling cage-speed reference and ball attitude (MODEL §9).
+
+use super::model::BearingModel;
+use super::race_contact::ContactSample;
+use crate::kinematics::cage_speed_ratio;
+
+impl BearingModel {
+    /// Contact loads and angles of every ball at state `y`, written into
+    /// `out` (one entry per ball).
+    pub fn contact_samples(&self, t: f64, y: &[f64], out: &mut [ContactSample]) {
+        let (inner, outer) = self.ring_motion(t, y);
+        for (j, sample) in out.iter_mut().enumerate().take(self.layout.balls) {
+            let (ball, _) = self.ball_kinematics(j, y);
+            let episodes = &self.episodes[j];
+            *sample = ContactSample::default();
+            if let Some(c) = self.race_contact(
+                &inner,
+                &self.inner_table,
+                &episodes[0],
+                &ball,
+                self.params.traction_integration,
+                true,
+            ) {
+                sample.inner = c.output;
+            }
+            if let Some(c) = self.race_contact(
+                &outer,
+                &self.outer_table,
+                &episodes[1],
+                &ball,
+                self.params.traction_integration,
+                true,
+            ) {
+                sample.outer = c.output;
+            }
+        }
+    }
+
+    /// Pure-rolling cage-speed ratio ω_c/ω_i of MODEL §7 for the current
+    /// state: the mean contact angles of the loaded contacts and the mean
+    /// ball attitude angle β (spin axis relative to the cage, as in Harris)
+    /// in the formula with different inner and outer angles. The reference
+    /// of the cage speed ratio (CSR) of seed 002 §4.2.
+    pub fn pure_rolling_ratio(&self, samples: &[ContactSample], y: &[f64]) -> f64 {
+        let l = self.layout;
+        let (mut ai, mut ao, mut beta, mut n) = (0.0, 0.0, 0.0, 0.0);
+        for (j, s) in samples.iter().enumerate().take(l.balls) {
+            if s.inner.load > 0.0 && s.outer.load > 0.0 {
+                ai += s.inner.angle;
+                ao += s.outer.angle;
+                beta += self.ball_attitude(j, y).0;
+                n += 1.0;
+            }
+        }
+        let g = &self.geometry;
+        let gamma = g.ball_diameter / g.pitch_diameter;
+        if n == 0.0 {
+            let a = g.nominal_contact_angle();
+            return cage_speed_ratio(gamma, a, a, a);
+        }
+        cage_speed_ratio(gamma, ai / n, ao / n, beta / n)
+    }
+
+    /// Attitude β and yaw β' of ball j \[rad\] (seed 002 §4.1; Harris): the
+    /// direction of its spin relative to the cage frame, ω' = ω_b − φ̇ e_x,
+    /// with ω'_x = −ω' cos β cos β', ω'_t = ω' cos β sin β', ω'_r = ω' sin β.
+    /// A ball rolling on the contact line at angle α has β = α, β' = 0.
+    pub fn ball_attitude(&self, j: usize, y: &[f64]) -> (f64, f64) {
+        let b = self.layout.ball(j);
+        let axial = -(y[b + 6] - y[b + 5]);
+        let (radial, tangential) = (y[b + 7], y[b + 8]);
+        (
+            radial.atan2(axial.hypot(tangential)),
+            tangential.atan2(axial),
+        )
+    }
+}

@@ -1,0 +1,71 @@
+//! Ball–pocket contact (MODEL §5).
+//!
+//! Ball–pocket (MODEL §5; [`crate::cage::pocket`]): cylindrical or
+//! spherical pockets at the cage pitch radius, `linear`, `hertz` or
+//! `gupta_film` normal law, modified-Coulomb friction on the slip at the
+//! contact point.
+
+use super::model::{BallMotion, BearingModel};
+use crate::cage::PocketShape;
+use nalgebra::Vector3;
+
+/// One evaluated ball–pocket contact.
+pub(super) struct PocketContact {
+    /// Ball-centre offset from the pocket centre \[m\].
+    pub(super) offset: f64,
+    /// Force on the ball \[N\].
+    pub(super) force: Vector3<f64>,
+    /// Moment on the ball about its centre \[N·m\].
+    pub(super) moment: Vector3<f64>,
+    /// Contact point on the ball \[m\].
+    pub(super) point: Vector3<f64>,
+    /// Dissipated power: damping and friction \[W\].
+    pub(super) dissipation: f64,
+}
+
+impl BearingModel {
+    /// Pocket contact of ball j, if closed.
+    pub(super) fn pocket_contact(
+        &self,
+        j: usize,
+        y: &[f64],
+        ball: &BallMotion,
+    ) -> Option<PocketContact> {
+        let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
+        let cage = &self.params.cage;
+        let c = self.layout.cage();
+        let centre = Vector3::new(0.0, y[c], y[c + 1]);
+        let velocity = Vector3::new(0.0, y[c + 3], y[c + 4]);
+        let spin = y[c + 5] * Vector3::x();
+        let angle = y[c + 2] + std::f64::consts::TAU * j as f64 / self.layout.balls as f64;
+        let axis = Vector3::new(0.0, angle.cos(), angle.sin());
+        let pocket = centre + cage.pitch_radius * axis;
+        let rel = q - pocket;
+        let perp = match cage.pocket_shape {
+            PocketShape::Cylindrical => rel - rel.dot(&axis) * axis,
+            PocketShape::Spherical => rel,
+        };
+        let offset = perp.norm();
+        let half_clearance = 0.5 * cage.pocket_clearance;
+        if !cage.pocket_law.acts(offset, half_clearance) {
+            return None;
+        }
+        let n = perp / offset;
+        let point = q + 0.5 * self.geometry.ball_diameter * n;
+        let pocket_point_velocity = velocity + spin.cross(&(q - centre));
+        let rate = (v - pocket_point_velocity).dot(&n);
+        let law = cage.pocket_law.force(offset, half_clearance, rate);
+        let normal = law.total;
+        let arm = point - q;
+        let slip = (v + w.cross(&arm)) - (velocity + spin.cross(&(point - centre)));
+        let slip_t = slip - slip.dot(&n) * n;
+        let friction = cage.pocket_friction.force(normal, &slip_t);
+        Some(PocketContact {
+            force: -normal * n + friction,
+            moment: arm.cross(&friction),
+            point,
+            offset,
+            dissipation: (normal - law.elastic) * rate - friction.dot(&slip_t),
+        })
+    }
+}

@@ -1,0 +1,232 @@
+//! Ball–raceway contact: normal force, traction and rolling resistance
+//! (MODEL §2.1, §3).
+//!
+//! Ball–raceway: the exact torus contact of MODEL §2.1 (δ, n, contact
+//! point P, α). The normal law gives Q from δ, δ̇ = (q̇ − ṗ)·n (p: the
+//! groove-centre point, moving with the ring) and the episode's impact
+//! speed. Traction acts at P on the tangential slip of ball material
+//! relative to ring material, v_b = q̇ + ω_b × (P − q) and
+//! v_g = ṫ + ω_ring × (P − t), with ω_ring = ω_i a + the tilt rates. Force
+//! on the ball: −Q n + F_T; the ring takes the reaction at P.
+//!
+//! Rolling resistance by elastic hysteresis (MODEL §3; seed 004 eq 21,
+//! Harris): F_h = α_h (3/16)(b/(D/2)) Q opposing the rolling, applied as
+//! the equivalent couple M_h = (D/2) F_h = (3/16) α_h b Q about the rolling
+//! axis e_a = n × û on the ball, the reaction couple on the ring; its power
+//! M_h |ω_roll| is dissipated. A ramp over 1 mm/s of rolling speed makes it
+//! continuous at rest.
+
+use super::model::{BallMotion, BearingModel, RingMotion};
+use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
+use crate::contact::{ContactTable, Curvature, TorusContact};
+use crate::lubrication::hamrock_dowson;
+use crate::traction::ellipse::{self, ContactPatch, TractionIntegration};
+use crate::traction::{ContactConditions, TractionModel};
+use nalgebra::Vector3;
+
+/// Rolling speed over which the hysteresis couple ramps up from zero
+/// (regularisation, MODEL §3) \[m/s\].
+pub const HYSTERESIS_RAMP_SPEED: f64 = 1e-3;
+
+/// State of one ball–raceway contact for output (MODEL §9); all zero
+/// when the contact is open.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactOutput {
+    /// Normal load Q \[N\].
+    pub load: f64,
+    /// Contact angle α \[rad\].
+    pub angle: f64,
+    /// Sliding speed |Δv| at the contact centre \[m/s\].
+    pub slip_speed: f64,
+    /// Entrainment (rolling) speed |u| \[m/s\].
+    pub entrainment_speed: f64,
+    /// Slide-to-roll ratio |Δv|/|u| at the contact centre \[-\].
+    pub slide_to_roll: f64,
+    /// Spin-to-roll ratio ω_s/|ω_roll| \[-\] (Harris).
+    pub spin_to_roll: f64,
+    /// Central film thickness h_c \[m\] (0 without a film model).
+    pub film: f64,
+}
+
+/// Contact state of one ball for output.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactSample {
+    /// Inner contact.
+    pub inner: ContactOutput,
+    /// Outer contact.
+    pub outer: ContactOutput,
+}
+
+/// One evaluated ball–raceway contact.
+pub(super) struct RaceContact {
+    pub(super) geometry: TorusContact,
+    pub(super) penetration_rate: f64,
+    /// Dissipated power: normal damping and traction \[W\].
+    pub(super) dissipation: f64,
+    /// Force on the ball (normal and traction) \[N\].
+    pub(super) force: Vector3<f64>,
+    /// Moment on the ball about its centre \[N·m\].
+    pub(super) moment: Vector3<f64>,
+    /// Traction couple about the contact point \[N·m\]; the ring takes
+    /// −force at P and −couple.
+    pub(super) couple: Vector3<f64>,
+    /// Output quantities.
+    pub(super) output: ContactOutput,
+}
+
+impl BearingModel {
+    pub(super) fn race_contact(
+        &self,
+        ring: &RingMotion,
+        table: &ContactTable,
+        episode: &ContactEpisode,
+        ball: &BallMotion,
+        integration: TractionIntegration,
+        with_output: bool,
+    ) -> Option<RaceContact> {
+        let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
+        let orbital_rate = ball.orbital_rate;
+        let d = self.geometry.ball_diameter;
+        let geometry = ring.circle.contact(q, d, 0.0)?;
+        if geometry.penetration <= 0.0 {
+            return None;
+        }
+        let n = geometry.normal;
+        let groove_velocity = ring.velocity
+            + ring
+                .omega_frame
+                .cross(&(geometry.groove_centre - ring.centre));
+        let penetration_rate = (v - groove_velocity).dot(&n);
+        let hertz = table.at(geometry.contact_angle);
+        let stiffness = hertz.stiffness;
+        let state = ContactState {
+            stiffness,
+            penetration: geometry.penetration,
+            penetration_rate,
+            impact_speed: episode.impact_speed(penetration_rate, self.params.impact_speed_floor),
+            effective_mass: self.ball_mass,
+        };
+        let load = self.params.normal_law.force(&state);
+        let point = geometry.contact_point;
+        let ball_surface = v + w.cross(&(point - q));
+        let ring_surface = ring.velocity + ring.omega.cross(&(point - ring.centre));
+        let slip = ball_surface - ring_surface;
+        let ellipse = hertz.at_load(load);
+        // Rolling direction: the azimuthal direction at P, tangent to the contact.
+        let azimuthal = Vector3::new(0.0, -point.z, point.y);
+        let along = azimuthal - azimuthal.dot(&n) * n;
+        let rolling_direction = if along.norm() > 0.0 {
+            along.normalize()
+        } else {
+            n.cross(&Vector3::x()).normalize()
+        };
+        // The contact point moves with the ball's azimuth frame:
+        // v_P = q̇ + φ̇ e_x × (P − q). Entrainment is the mean surface speed
+        // relative to it (MODEL §3 writes q̇ for v_P, which misses φ̇ e_x ×
+        // (P − q): a factor 1/(1 ± γ cos α) on |u|, 12 % on the 7008C).
+        // Computed only where used (film, traction curve, hysteresis, output).
+        let hysteresis = self.params.rolling_hysteresis > 0.0;
+        let (entrainment, u) =
+            if with_output || hysteresis || self.params.traction.needs_entrainment() {
+                let contact_velocity = v + orbital_rate * Vector3::x().cross(&(point - q));
+                let e =
+                    0.5 * ((ball_surface - contact_velocity) + (ring_surface - contact_velocity));
+                let e = e - e.dot(&n) * n;
+                (e, e.norm())
+            } else {
+                (Vector3::zeros(), 0.0)
+            };
+        let film = match &self.params.traction {
+            TractionModel::Ehl(ehl) => {
+                let curvature = Curvature::of_raceway(
+                    &ring.raceway,
+                    self.geometry.ball_diameter,
+                    self.geometry.pitch_diameter,
+                    geometry.contact_angle,
+                );
+                hamrock_dowson(
+                    &ehl.lubricant,
+                    u,
+                    load,
+                    curvature.rolling_radius,
+                    self.effective_modulus,
+                    hertz.ellipticity,
+                )
+                .central
+            }
+            _ => 0.0,
+        };
+        let rg = ring.raceway.groove_radius;
+        let rb = 0.5 * self.geometry.ball_diameter;
+        let patch = ContactPatch {
+            point,
+            normal: n,
+            rolling_direction,
+            semi_major: ellipse.semi_major,
+            semi_minor: ellipse.semi_minor,
+            load,
+            deformed_radius: 2.0 * rg * rb / (rg + rb),
+        };
+        let relative_spin = w - ring.omega;
+        let traction = ellipse::integrate(
+            &self.params.traction,
+            integration,
+            &patch,
+            q,
+            &slip,
+            &relative_spin,
+            &ContactConditions {
+                film,
+                entrainment_speed: u,
+            },
+        );
+        // Rolling axis e_a = n × û and the rolling rate about it.
+        let rolling_axis = if u > 0.0 {
+            n.cross(&(entrainment / u))
+        } else {
+            Vector3::zeros()
+        };
+        let rolling_rate = relative_spin.dot(&rolling_axis);
+        let mut moment = traction.moment;
+        let mut couple = traction.couple;
+        let mut dissipation = traction.dissipation;
+        if hysteresis {
+            let rolling_speed = 0.5 * self.geometry.ball_diameter * rolling_rate;
+            let ramp = (rolling_speed / HYSTERESIS_RAMP_SPEED).clamp(-1.0, 1.0);
+            let m_h = -(0.1875 * self.params.rolling_hysteresis * ellipse.semi_minor * load * ramp)
+                * rolling_axis;
+            moment += m_h;
+            couple += m_h;
+            dissipation -= m_h.dot(&relative_spin);
+        }
+        let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
+        dissipation += (load - elastic) * penetration_rate;
+        let output = if with_output {
+            let slip_speed = (slip - slip.dot(&n) * n).norm();
+            ContactOutput {
+                load,
+                angle: geometry.contact_angle,
+                slip_speed,
+                entrainment_speed: u,
+                slide_to_roll: if u > 0.0 { slip_speed / u } else { 0.0 },
+                spin_to_roll: if rolling_rate != 0.0 {
+                    relative_spin.dot(&n) / rolling_rate.abs()
+                } else {
+                    0.0
+                },
+                film,
+            }
+        } else {
+            ContactOutput::default()
+        };
+        Some(RaceContact {
+            geometry,
+            penetration_rate,
+            dissipation,
+            force: -load * n + traction.force,
+            moment,
+            couple,
+            output,
+        })
+    }
+}
