@@ -396,7 +396,7 @@ impl BearingModel {
             &self.inner_table,
             &episodes[0],
             &ball,
-            self.params.traction_integration,
+            Some(self.params.traction_integration),
             false,
         ) {
             force += cn.force;
@@ -411,7 +411,7 @@ impl BearingModel {
             &self.outer_table,
             &episodes[1],
             &ball,
-            self.params.traction_integration,
+            Some(self.params.traction_integration),
             false,
         ) {
             force += cn.force;
@@ -691,15 +691,8 @@ impl OdeSystem for BearingModel {
                 .enumerate()
             {
                 let before = self.episodes[j][k];
-                // Only the penetration matters here: the cheapest traction.
-                let contact = self.race_contact(
-                    ring,
-                    table,
-                    &before,
-                    &ball,
-                    TractionIntegration::Centre,
-                    false,
-                );
+                // Only the penetration matters here: no traction.
+                let contact = self.race_contact(ring, table, &before, &ball, None, false);
                 let mut episode = before;
                 match contact {
                     Some(cn) => episode.accept(cn.geometry.penetration, cn.penetration_rate, floor),

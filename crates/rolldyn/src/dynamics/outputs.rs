@@ -19,7 +19,7 @@ impl BearingModel {
                 &self.inner_table,
                 &episodes[0],
                 &ball,
-                self.params.traction_integration,
+                Some(self.params.traction_integration),
                 true,
             ) {
                 sample.inner = c.output;
@@ -29,7 +29,7 @@ impl BearingModel {
                 &self.outer_table,
                 &episodes[1],
                 &ball,
-                self.params.traction_integration,
+                Some(self.params.traction_integration),
                 true,
             ) {
                 sample.outer = c.output;

@@ -20,8 +20,9 @@ use super::model::{BallMotion, BearingModel, RingMotion};
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{ContactTable, Curvature, TorusContact};
 use crate::lubrication::hamrock_dowson;
-use crate::traction::ellipse::{self, ContactPatch, TractionIntegration};
-use crate::traction::{ContactConditions, TractionModel};
+use crate::traction::{
+    ContactConditions, ContactPatch, Creep, TractionIntegration, TractionModel, TractionResult,
+};
 use nalgebra::Vector3;
 
 /// Rolling speed over which the hysteresis couple ramps up from zero
@@ -46,6 +47,9 @@ pub struct ContactOutput {
     pub spin_to_roll: f64,
     /// Central film thickness h_c \[m\] (0 without a film model).
     pub film: f64,
+    /// FASTSIM creepages (ξ, η \[-\], φ \[1/m\]) and stick fraction
+    /// (None with the stress-law traction models).
+    pub creep: Option<Creep>,
 }
 
 /// Contact state of one ball for output.
@@ -81,7 +85,7 @@ impl BearingModel {
         table: &ContactTable,
         episode: &ContactEpisode,
         ball: &BallMotion,
-        integration: TractionIntegration,
+        integration: Option<TractionIntegration>,
         with_output: bool,
     ) -> Option<RaceContact> {
         let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
@@ -168,18 +172,22 @@ impl BearingModel {
             deformed_radius: 2.0 * rg * rb / (rg + rb),
         };
         let relative_spin = w - ring.omega;
-        let traction = ellipse::integrate(
-            &self.params.traction,
-            integration,
-            &patch,
-            q,
-            &slip,
-            &relative_spin,
-            &ContactConditions {
-                film,
-                entrainment_speed: u,
-            },
-        );
+        // `None`: only the penetration is wanted (episode bookkeeping).
+        let traction = match integration {
+            Some(integration) => self.params.traction.evaluate(
+                integration,
+                &patch,
+                q,
+                &slip,
+                &relative_spin,
+                &ContactConditions {
+                    film,
+                    entrainment_speed: u,
+                    rolling_velocity: entrainment.dot(&rolling_direction),
+                },
+            ),
+            None => TractionResult::default(),
+        };
         // Rolling axis e_a = n × û and the rolling rate about it.
         let rolling_axis = if u > 0.0 {
             n.cross(&(entrainment / u))
@@ -215,6 +223,7 @@ impl BearingModel {
                     0.0
                 },
                 film,
+                creep: traction.creep,
             }
         } else {
             ContactOutput::default()

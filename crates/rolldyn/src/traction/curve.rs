@@ -120,6 +120,7 @@ mod tests {
         let cond = ContactConditions {
             film: 0.0,
             entrainment_speed: 10.0,
+            ..Default::default()
         };
         // S = 0.2/10 = 0.02: μ = (−0.06 + 0.16) e^{−1.2} + 0.06.
         let tau = c.shear_stress(1e9, &Vector3::new(0.2, 0.0, 0.0), &cond);

@@ -116,6 +116,7 @@ mod tests {
         let h = ContactConditions {
             film: h,
             entrainment_speed: 1.0,
+            ..Default::default()
         };
         let tau = l.shear_stress(p, &Vector3::new(v, 0.0, 0.0), &h);
         assert!(

@@ -24,7 +24,7 @@
 //! area πab. It is exact for Coulomb friction at uniform slip; it ignores
 //! spin and differential slip.
 
-use super::{ContactConditions, TractionLaw, TractionModel};
+use super::{ContactConditions, Creep, TractionLaw};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
@@ -87,14 +87,16 @@ pub struct TractionResult {
     pub couple: Vector3<f64>,
     /// Dissipated power −Σ dF·s \[W\], ≥ 0 for dissipative laws.
     pub dissipation: f64,
+    /// Creepages and stick fraction (FASTSIM only).
+    pub creep: Option<Creep>,
 }
 
 /// Integrates `law` over `patch` for ball centre `ball_centre`, sliding
 /// velocity at P `slip_at_point` (ball relative to ring, full vector) and
 /// relative angular velocity `relative_spin` (ω_b − ω_ring), under the
 /// contact's `conditions` (film, entrainment). Allocation-free.
-pub fn integrate(
-    law: &TractionModel,
+pub fn integrate<L: TractionLaw>(
+    law: &L,
     method: TractionIntegration,
     patch: &ContactPatch,
     ball_centre: &Vector3<f64>,
@@ -103,7 +105,7 @@ pub fn integrate(
     conditions: &ContactConditions,
 ) -> TractionResult {
     let mut out = TractionResult::default();
-    if patch.load <= 0.0 || matches!(law, TractionModel::None) {
+    if patch.load <= 0.0 {
         return out;
     }
     let n = patch.normal;
@@ -183,12 +185,12 @@ mod tests {
         }
     }
 
-    fn coulomb() -> TractionModel {
-        TractionModel::ModifiedCoulomb(ModifiedCoulomb {
+    fn coulomb() -> ModifiedCoulomb {
+        ModifiedCoulomb {
             friction: 0.1,
             stick_speed: 0.0,
             full_speed: 1e-9,
-        })
+        }
     }
 
     #[test]

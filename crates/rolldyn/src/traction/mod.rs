@@ -1,23 +1,33 @@
 //! Tangential (traction) stresses at a ball–raceway contact and their
 //! integration over the Hertz ellipse (MODEL §3).
 //!
-//! A traction model is a **stress law** τ(p, slip, h): the shear stress on
-//! the ball at a point of the contact with Hertz pressure p, local sliding
-//! velocity `slip` (ball material relative to ring material) and film
-//! thickness h. [`ellipse`] integrates it over the contact ellipse on the
-//! deformed surface, or evaluates it once at the centre. Built-in laws are
-//! variants of [`TractionModel`], chosen from the case file; each lives in
-//! its own file behind [`TractionLaw`].
+//! Two kinds of traction model, variants of [`TractionModel`] chosen from
+//! the case file, each in its own file:
+//! - a **stress law** τ(p, slip, h) (behind [`TractionLaw`]): the shear
+//!   stress on the ball at a point of the contact with Hertz pressure p,
+//!   local sliding velocity `slip` (ball material relative to ring
+//!   material) and film thickness h. [`ellipse`] integrates it over the
+//!   contact ellipse on the deformed surface, or evaluates it once at the
+//!   centre (Coulomb, traction curve, EHL);
+//! - a **contact model** that integrates the ellipse itself: Kalker's
+//!   FASTSIM ([`fastsim`], with the creep coefficients of [`kalker`]),
+//!   whose tractions depend on the path of the material through the
+//!   contact, not on the local slip alone.
+//!
+//! [`TractionModel::evaluate`] dispatches one contact to either.
 
 pub mod coulomb;
 pub mod curve;
 pub mod ehl;
 pub mod ellipse;
+pub mod fastsim;
+pub mod kalker;
 
 pub use coulomb::ModifiedCoulomb;
 pub use curve::{SlipMeasure, TractionCurve};
 pub use ehl::EhlRheology;
 pub use ellipse::{ContactPatch, TractionIntegration, TractionResult};
+pub use fastsim::{Creep, Fastsim, TractionBound};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
@@ -29,6 +39,9 @@ pub struct ContactConditions {
     pub film: f64,
     /// Entrainment (rolling) speed |u| at the contact centre \[m/s\] (MODEL §3).
     pub entrainment_speed: f64,
+    /// Rolling velocity u·e_roll along the patch's rolling direction
+    /// \[m/s\], signed (FASTSIM's flow direction).
+    pub rolling_velocity: f64,
 }
 
 /// A traction stress law.
@@ -57,6 +70,8 @@ pub enum TractionModel {
     TractionCurve(TractionCurve),
     /// Seed 001 eqs 13–15: Eyring shear with limiting shear stress.
     Ehl(EhlRheology),
+    /// Seed 002 §2.2: Kalker's FASTSIM.
+    Fastsim(Fastsim),
 }
 
 impl TractionModel {
@@ -67,7 +82,58 @@ impl TractionModel {
 
     /// Whether the stress law uses the entrainment speed.
     pub fn needs_entrainment(&self) -> bool {
-        matches!(self, Self::Ehl(_) | Self::TractionCurve(_))
+        matches!(
+            self,
+            Self::Ehl(_) | Self::TractionCurve(_) | Self::Fastsim(_)
+        )
+    }
+
+    /// Traction of one contact: FASTSIM integrates the ellipse itself, the
+    /// stress laws are integrated by `integration` ([`ellipse::integrate`]).
+    /// `slip_at_point` is the sliding velocity of ball material relative to
+    /// ring material at P, `relative_spin` ω_b − ω_ring. Allocation-free.
+    pub fn evaluate(
+        &self,
+        integration: TractionIntegration,
+        patch: &ContactPatch,
+        ball_centre: &Vector3<f64>,
+        slip_at_point: &Vector3<f64>,
+        relative_spin: &Vector3<f64>,
+        conditions: &ContactConditions,
+    ) -> TractionResult {
+        match self {
+            Self::None => TractionResult::default(),
+            Self::ModifiedCoulomb(m) => ellipse::integrate(
+                m,
+                integration,
+                patch,
+                ball_centre,
+                slip_at_point,
+                relative_spin,
+                conditions,
+            ),
+            Self::TractionCurve(c) => ellipse::integrate(
+                c,
+                integration,
+                patch,
+                ball_centre,
+                slip_at_point,
+                relative_spin,
+                conditions,
+            ),
+            Self::Ehl(e) => ellipse::integrate(
+                e,
+                integration,
+                patch,
+                ball_centre,
+                slip_at_point,
+                relative_spin,
+                conditions,
+            ),
+            Self::Fastsim(f) => {
+                f.evaluate(patch, ball_centre, slip_at_point, relative_spin, conditions)
+            }
+        }
     }
 
     /// Checks the parameters.
@@ -77,23 +143,7 @@ impl TractionModel {
             Self::ModifiedCoulomb(m) => m.validate(),
             Self::TractionCurve(c) => c.validate(),
             Self::Ehl(e) => e.validate(),
-        }
-    }
-}
-
-impl TractionLaw for TractionModel {
-    #[inline]
-    fn shear_stress(
-        &self,
-        pressure: f64,
-        slip: &Vector3<f64>,
-        conditions: &ContactConditions,
-    ) -> Vector3<f64> {
-        match self {
-            Self::None => Vector3::zeros(),
-            Self::ModifiedCoulomb(m) => m.shear_stress(pressure, slip, conditions),
-            Self::TractionCurve(c) => c.shear_stress(pressure, slip, conditions),
-            Self::Ehl(e) => e.shear_stress(pressure, slip, conditions),
+            Self::Fastsim(f) => f.validate(),
         }
     }
 }
