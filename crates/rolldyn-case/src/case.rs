@@ -12,10 +12,11 @@ use rolldyn::dynamics::{
     CageParameters, DragParameters, DynamicsParameters, GuideLand, OuterRing, Support,
 };
 use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
-use rolldyn::traction::{
-    EhlRheology, ModifiedCoulomb, TractionCurve, TractionIntegration, TractionModel,
-};
+use rolldyn::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, Material};
+
+mod traction;
+use traction::traction;
 
 /// A rule broken by one key: the raw material of a [`crate::CaseError`].
 #[derive(Debug, Clone, PartialEq)]
@@ -371,7 +372,11 @@ impl Case {
             ));
         }
         let lubricant = raw.lubricant.as_ref().map(lubricant).transpose()?;
-        let traction = traction(raw.model.traction.as_ref(), lubricant.as_ref())?;
+        let materials = Materials {
+            ball: material("materials.ball", raw.materials.ball.as_ref())?,
+            rings: material("materials.rings", raw.materials.rings.as_ref())?,
+        };
+        let traction = traction(raw.model.traction.as_ref(), lubricant.as_ref(), &materials)?;
         let inner_ring_mass = checked("inner_ring.mass", &raw.inner_ring.mass, positive)?;
         let inner_ring_tilt_inertia = checked(
             "inner_ring.tilt_inertia",
@@ -470,10 +475,7 @@ impl Case {
             title: raw.title.clone(),
             bearing: bearing(&raw.bearing)?,
             cage: cage(&raw.cage)?,
-            materials: Materials {
-                ball: material("materials.ball", raw.materials.ball.as_ref())?,
-                rings: material("materials.rings", raw.materials.rings.as_ref())?,
-            },
+            materials,
             lubricant,
             speed,
             loads,
@@ -823,72 +825,6 @@ pub const GUPTA_WALL_FORCE: f64 = 11.0;
 /// Default ball–pocket friction coefficient (lubricated steel on cage
 /// material; seeds 001 and 002 use 0.01–0.1).
 pub const DEFAULT_POCKET_FRICTION: f64 = 0.05;
-
-fn traction(
-    choice: Option<&TractionChoice>,
-    lubricant: Option<&Lubricant>,
-) -> Result<TractionModel, Invalid> {
-    let key = "model.traction";
-    Ok(match choice {
-        None | Some(TractionChoice::Named(_)) | Some(TractionChoice::Table(RawTraction::None)) => {
-            TractionModel::None
-        }
-        Some(TractionChoice::Table(RawTraction::ModifiedCoulomb {
-            friction,
-            stick_speed,
-            full_speed,
-        })) => {
-            let law = ModifiedCoulomb {
-                friction: *friction,
-                stick_speed: stick_speed.as_ref().map_or(0.0, |q| q.si),
-                full_speed: full_speed.as_ref().map_or(1e-3, |q| q.si),
-            };
-            law.validate()
-                .map_err(|e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule))?;
-            TractionModel::ModifiedCoulomb(law)
-        }
-        Some(TractionChoice::Table(RawTraction::TractionCurve {
-            a,
-            b,
-            c,
-            d,
-            slip,
-            full_speed,
-        })) => {
-            let law = TractionCurve {
-                a: *a,
-                b: *b,
-                c: *c,
-                d: *d,
-                slip: slip.unwrap_or_default(),
-                full_speed: full_speed.as_ref().map_or(1e-3, |q| q.si),
-            };
-            law.validate()
-                .map_err(|e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule))?;
-            TractionModel::TractionCurve(law)
-        }
-        Some(TractionChoice::Table(RawTraction::Ehl {
-            eyring_stress,
-            limiting_shear_coefficient,
-        })) => {
-            let lub = lubricant.ok_or_else(|| {
-                Invalid::new(key, None, "the ehl traction law needs a [lubricant] section (viscosity, pressure_viscosity)")
-            })?;
-            let law = EhlRheology {
-                eyring_stress: eyring_stress.si,
-                limiting_shear_coefficient: *limiting_shear_coefficient,
-                lubricant: rolldyn::lubrication::Lubricant {
-                    viscosity: lub.viscosity,
-                    pressure_viscosity: lub.pressure_viscosity,
-                    pressure_model: lub.pressure_viscosity_model,
-                },
-            };
-            law.validate()
-                .map_err(|e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule))?;
-            TractionModel::Ehl(law)
-        }
-    })
-}
 
 impl Case {
     /// The parameters of the dynamic model, with defaults applied. A value

@@ -392,7 +392,8 @@ pub struct RawModel {
     /// (optional stick_speed, full_speed), `{ law = "traction_curve", a = -0.06,
     /// b = 8, c = 60, d = 0.06 }` (optional slip, full_speed) or `{ law = "ehl",
     /// eyring_stress = "5 MPa", limiting_shear_coefficient = 0.08 }` (needs the
-    /// `[lubricant]` section).
+    /// `[lubricant]` section) or `{ law = "fastsim", friction = 0.1 }`
+    /// (optional strips, elements, bound, regularisation_speed).
     pub traction: Option<TractionChoice>,
     /// Traction integration: `{ method = "grid", across = 12, along = 6 }`
     /// (default) or `{ method = "centre" }`.
@@ -453,6 +454,19 @@ pub enum RawTraction {
         /// Limiting shear-stress coefficient Λ_L.
         limiting_shear_coefficient: f64,
     },
+    /// Kalker's FASTSIM (seed 002 §2.2; G and ν from the materials).
+    Fastsim {
+        /// Friction coefficient μ ≥ 0.
+        friction: f64,
+        /// Strips across the rolling direction (default 20).
+        strips: Option<usize>,
+        /// Elements per strip (default 12).
+        elements: Option<usize>,
+        /// Traction bound: "parabolic" (default, Kalker's) or "elliptic" (Hertz).
+        bound: Option<rolldyn::traction::TractionBound>,
+        /// Rolling speed below which the creepages are regularised (default 1 mm/s).
+        regularisation_speed: Option<Quantity<Velocity>>,
+    },
 }
 
 impl<'de> Deserialize<'de> for TractionChoice {
@@ -461,23 +475,26 @@ impl<'de> Deserialize<'de> for TractionChoice {
         impl<'de> Visitor<'de> for V {
             type Value = TractionChoice;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("\"none\" or a table { law = \"modified_coulomb\" | \"traction_curve\" | \"ehl\", ... }")
+                f.write_str("\"none\" or a table { law = \"modified_coulomb\" | \"traction_curve\" | \"ehl\" | \"fastsim\", ... }")
             }
             fn visit_str<E: de::Error>(self, v: &str) -> Result<TractionChoice, E> {
                 match v {
                     "none" => Ok(TractionChoice::Named(v.to_string())),
-                    "modified_coulomb" | "traction_curve" | "ehl" => Err(E::custom(format!(
-                        "the traction law \"{v}\" needs parameters: write a table, e.g. {}",
-                        match v {
-                            "ehl" =>
-                                "{ law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }",
-                            "traction_curve" =>
-                                "{ law = \"traction_curve\", a = -0.06, b = 8, c = 60, d = 0.06 }",
-                            _ => "{ law = \"modified_coulomb\", friction = 0.1 }",
-                        }
-                    ))),
+                    "modified_coulomb" | "traction_curve" | "ehl" | "fastsim" => {
+                        Err(E::custom(format!(
+                            "the traction law \"{v}\" needs parameters: write a table, e.g. {}",
+                            match v {
+                                "ehl" =>
+                                    "{ law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }",
+                                "traction_curve" =>
+                                    "{ law = \"traction_curve\", a = -0.06, b = 8, c = 60, d = 0.06 }",
+                                "fastsim" => "{ law = \"fastsim\", friction = 0.1 }",
+                                _ => "{ law = \"modified_coulomb\", friction = 0.1 }",
+                            }
+                        )))
+                    }
                     other => Err(E::custom(format!(
-                        "unknown traction law \"{other}\"; expected none, modified_coulomb, traction_curve or ehl"
+                        "unknown traction law \"{other}\"; expected none, modified_coulomb, traction_curve, ehl or fastsim"
                     ))),
                 }
             }

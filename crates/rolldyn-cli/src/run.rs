@@ -11,6 +11,7 @@ use rolldyn::integrate::{
     ExplicitRk, IntegrationStats, ROS34PW2, Rosenbrock, RunEnd, Solver, StepControl, run,
 };
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
+use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
 use rolldyn_case::raw::{IntegratorChoice, StartChoice};
 use rolldyn_io::{TimeSeries, write_atomic, write_parquet};
@@ -70,6 +71,9 @@ pub struct Summary {
     pub mean_slide_to_roll_outer: f64,
     pub mean_spin_to_roll_inner: f64,
     pub mean_spin_to_roll_outer: f64,
+    /// FASTSIM creepage and stick means (absent with other traction models).
+    #[serde(flatten)]
+    pub creep: Option<CreepMeans>,
     pub mean_attitude_deg: f64,
     pub mean_yaw_deg: f64,
     pub max_abs_yaw_deg: f64,
@@ -78,6 +82,20 @@ pub struct Summary {
     pub mechanical_energy_change_j: f64,
     pub energy_balance_error_j: f64,
     pub energy_balance_relative_error: f64,
+}
+
+/// Means of the FASTSIM channels over loaded contacts in the averaging
+/// window (`summary.json`, FASTSIM runs only).
+#[derive(Serialize)]
+pub struct CreepMeans {
+    pub mean_creepage_longitudinal_inner: f64,
+    pub mean_creepage_longitudinal_outer: f64,
+    pub mean_creepage_lateral_inner: f64,
+    pub mean_creepage_lateral_outer: f64,
+    pub mean_creepage_spin_inner_1_m: f64,
+    pub mean_creepage_spin_outer_1_m: f64,
+    pub mean_stick_fraction_inner: f64,
+    pub mean_stick_fraction_outer: f64,
 }
 
 /// Per-ball channels (name suffix, unit), in the order `record` writes them.
@@ -98,14 +116,29 @@ const BALL_CHANNELS: [(&str, &str); 14] = [
     ("yaw_deg", "deg"),
 ];
 
+/// Per-ball FASTSIM channels (name suffix, unit), after [`BALL_CHANNELS`]
+/// when the traction model is FASTSIM.
+const CREEP_CHANNELS: [(&str, &str); 8] = [
+    ("creepage_longitudinal_inner", "1"),
+    ("creepage_longitudinal_outer", "1"),
+    ("creepage_lateral_inner", "1"),
+    ("creepage_lateral_outer", "1"),
+    ("creepage_spin_inner_1_m", "1/m"),
+    ("creepage_spin_outer_1_m", "1/m"),
+    ("stick_fraction_inner", "1"),
+    ("stick_fraction_outer", "1"),
+];
+
 /// Channel layout of the recorder.
 struct Channels {
     series: TimeSeries,
     balls: usize,
+    /// Whether the FASTSIM channels are recorded.
+    creep: bool,
 }
 
 impl Channels {
-    fn new(balls: usize) -> Self {
+    fn new(balls: usize, creep: bool) -> Self {
         let mut series = TimeSeries::default();
         for (name, unit) in [
             ("time_s", "s"),
@@ -134,8 +167,17 @@ impl Channels {
             for (name, unit) in BALL_CHANNELS {
                 series.channel(format!("ball{j}_{name}"), unit);
             }
+            if creep {
+                for (name, unit) in CREEP_CHANNELS {
+                    series.channel(format!("ball{j}_{name}"), unit);
+                }
+            }
         }
-        Self { series, balls }
+        Self {
+            series,
+            balls,
+            creep,
+        }
     }
 
     fn record(
@@ -191,6 +233,22 @@ impl Channels {
                 attitude.to_degrees(),
                 yaw.to_degrees(),
             ]);
+            if self.creep {
+                let (i, o) = (
+                    c.inner.creep.unwrap_or_default(),
+                    c.outer.creep.unwrap_or_default(),
+                );
+                row.extend_from_slice(&[
+                    i.longitudinal,
+                    o.longitudinal,
+                    i.lateral,
+                    o.lateral,
+                    i.spin,
+                    o.spin,
+                    i.stick_fraction,
+                    o.stick_fraction,
+                ]);
+            }
         }
         self.series.push(row);
     }
@@ -321,7 +379,10 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
         None
     };
 
-    let mut channels = Channels::new(g.ball_count);
+    let mut channels = Channels::new(
+        g.ball_count,
+        matches!(params.traction, TractionModel::Fastsim(_)),
+    );
     let mut row = Vec::with_capacity(channels.series.width());
     let mut loads = vec![ContactSample::default(); g.ball_count];
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
@@ -466,6 +527,25 @@ fn summarise(
         mean_slide_to_roll_outer: loaded_mean("slide_to_roll_outer", &outer_loads),
         mean_spin_to_roll_inner: loaded_mean("spin_to_roll_inner", &inner_loads),
         mean_spin_to_roll_outer: loaded_mean("spin_to_roll_outer", &outer_loads),
+        creep: series
+            .column("ball0_stick_fraction_inner")
+            .is_some()
+            .then(|| CreepMeans {
+                mean_creepage_longitudinal_inner: loaded_mean(
+                    "creepage_longitudinal_inner",
+                    &inner_loads,
+                ),
+                mean_creepage_longitudinal_outer: loaded_mean(
+                    "creepage_longitudinal_outer",
+                    &outer_loads,
+                ),
+                mean_creepage_lateral_inner: loaded_mean("creepage_lateral_inner", &inner_loads),
+                mean_creepage_lateral_outer: loaded_mean("creepage_lateral_outer", &outer_loads),
+                mean_creepage_spin_inner_1_m: loaded_mean("creepage_spin_inner_1_m", &inner_loads),
+                mean_creepage_spin_outer_1_m: loaded_mean("creepage_spin_outer_1_m", &outer_loads),
+                mean_stick_fraction_inner: loaded_mean("stick_fraction_inner", &inner_loads),
+                mean_stick_fraction_outer: loaded_mean("stick_fraction_outer", &outer_loads),
+            }),
         mean_attitude_deg: mean(&pooled("attitude_deg")),
         mean_yaw_deg: mean(&yaw),
         max_abs_yaw_deg: yaw.iter().fold(0.0, |m, v| v.abs().max(m)),

@@ -1,0 +1,105 @@
+//! The case's traction model (`[model] traction = …`, MODEL §3): the
+//! stress laws and Kalker's FASTSIM, whose elastic constants are combined
+//! from the ball and ring materials.
+
+use super::{Invalid, Lubricant, Materials};
+use crate::raw::{RawTraction, TractionChoice};
+use rolldyn::traction::fastsim::combined_elastic_constants;
+use rolldyn::traction::{EhlRheology, Fastsim, ModifiedCoulomb, TractionCurve, TractionModel};
+
+pub(super) fn traction(
+    choice: Option<&TractionChoice>,
+    lubricant: Option<&Lubricant>,
+    materials: &Materials,
+) -> Result<TractionModel, Invalid> {
+    let key = "model.traction";
+    Ok(match choice {
+        None | Some(TractionChoice::Named(_)) | Some(TractionChoice::Table(RawTraction::None)) => {
+            TractionModel::None
+        }
+        Some(TractionChoice::Table(RawTraction::ModifiedCoulomb {
+            friction,
+            stick_speed,
+            full_speed,
+        })) => {
+            let law = ModifiedCoulomb {
+                friction: *friction,
+                stick_speed: stick_speed.as_ref().map_or(0.0, |q| q.si),
+                full_speed: full_speed.as_ref().map_or(1e-3, |q| q.si),
+            };
+            law.validate()
+                .map_err(|e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule))?;
+            TractionModel::ModifiedCoulomb(law)
+        }
+        Some(TractionChoice::Table(RawTraction::TractionCurve {
+            a,
+            b,
+            c,
+            d,
+            slip,
+            full_speed,
+        })) => {
+            let law = TractionCurve {
+                a: *a,
+                b: *b,
+                c: *c,
+                d: *d,
+                slip: slip.unwrap_or_default(),
+                full_speed: full_speed.as_ref().map_or(1e-3, |q| q.si),
+            };
+            law.validate()
+                .map_err(|e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule))?;
+            TractionModel::TractionCurve(law)
+        }
+        Some(TractionChoice::Table(RawTraction::Ehl {
+            eyring_stress,
+            limiting_shear_coefficient,
+        })) => {
+            let lub = lubricant.ok_or_else(|| {
+                Invalid::new(key, None, "the ehl traction law needs a [lubricant] section (viscosity, pressure_viscosity)")
+            })?;
+            let law = EhlRheology {
+                eyring_stress: eyring_stress.si,
+                limiting_shear_coefficient: *limiting_shear_coefficient,
+                lubricant: rolldyn::lubrication::Lubricant {
+                    viscosity: lub.viscosity,
+                    pressure_viscosity: lub.pressure_viscosity,
+                    pressure_model: lub.pressure_viscosity_model,
+                },
+            };
+            law.validate()
+                .map_err(|e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule))?;
+            TractionModel::Ehl(law)
+        }
+        Some(TractionChoice::Table(RawTraction::Fastsim {
+            friction,
+            strips,
+            elements,
+            bound,
+            regularisation_speed,
+        })) => {
+            let (shear_modulus, poisson_ratio) =
+                combined_elastic_constants(&materials.ball.material, &materials.rings.material);
+            let mut law = Fastsim::new(*friction, shear_modulus, poisson_ratio);
+            law.strips = strips.unwrap_or(law.strips);
+            law.elements = elements.unwrap_or(law.elements);
+            law.bound = bound.unwrap_or_default();
+            if let Some(v) = regularisation_speed {
+                law.regularisation_speed = v.si;
+            }
+            law.validate().map_err(|e| {
+                let key = if e.field == "poisson_ratio" || e.field == "shear_modulus" {
+                    // Combined from the materials.
+                    format!(
+                        "materials (combined {} of ball and rings for {key})",
+                        e.field
+                    )
+                } else {
+                    format!("{key}.{}", e.field)
+                };
+                Invalid::new(key, Some(e.value), e.rule)
+            })?;
+            TractionModel::Fastsim(law)
+        }
+    })
+}
