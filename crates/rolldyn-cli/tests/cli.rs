@@ -534,3 +534,262 @@ fn run_interrupted_keeps_valid_files() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+const FASTSIM: &str = "model.traction={ law = \"fastsim\", friction = 0.1 }";
+
+/// `rolldyn traction`: stable keys; an explicit flat contact reproduces
+/// Kalker's linear theory (F_x = −G c² C₁₁ ξ, C₁₁ = 3.44 at g = 0.3,
+/// ν = 0.25, Kalker 1990 Table E.3) and saturates at μQ; every case
+/// traction law evaluates one contact; the map has one row per element.
+#[test]
+fn traction_evaluates_one_contact() {
+    let explicit = |creepages: &str| {
+        json(
+            &[
+                "traction",
+                "--semi-axes",
+                "0.3 mm,1 mm",
+                "--load",
+                "1 kN",
+                "--shear-modulus",
+                "80 GPa",
+                "--poisson-ratio",
+                "0.25",
+                "--friction",
+                "0.2",
+                "--rolling-speed",
+                "10 m/s",
+                "--creepages",
+                creepages,
+                "--json",
+            ],
+            None,
+        )
+    };
+    let small = explicit("1e-6,0,0");
+    assert_eq!(
+        keys(&small),
+        [
+            "contact_angle_deg",
+            "creepage_lateral",
+            "creepage_longitudinal",
+            "creepage_spin_1_m",
+            "force_n",
+            "force_x_n",
+            "force_y_n",
+            "load_n",
+            "map_cells",
+            "power_w",
+            "ring",
+            "rolling_speed_m_s",
+            "semi_axis_across_m",
+            "semi_axis_along_m",
+            "spin_moment_nm",
+            "stick_fraction",
+            "traction_coefficient",
+            "traction_law"
+        ]
+    );
+    let linear = -80e9 * 0.3e-3 * 1e-3 * 3.44 * 1e-6;
+    let fx = small["force_x_n"].as_f64().unwrap();
+    assert!((fx / linear - 1.0).abs() < 0.01, "{fx} vs {linear}");
+    assert_eq!(small["stick_fraction"].as_f64(), Some(1.0));
+    let slide = explicit("-1,0,0");
+    assert!((slide["force_x_n"].as_f64().unwrap() - 200.0).abs() < 1e-6);
+    assert!(slide["power_w"].as_f64().unwrap() > 0.0);
+
+    for law in [
+        FASTSIM,
+        "model.traction={ law = \"modified_coulomb\", friction = 0.1 }",
+        "model.traction={ law = \"traction_curve\", a = -0.06, b = 8, c = 60, d = 0.06 }",
+        "model.traction={ law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }",
+    ] {
+        let r = json(
+            &[
+                "traction",
+                "--set",
+                law,
+                "--ring",
+                "outer",
+                "--load",
+                "300 N",
+                "--rolling-speed",
+                "10 m/s",
+                "--slip",
+                "-0.1 m/s,0 m/s",
+                "--json",
+            ],
+            None,
+        );
+        // Sliding backwards: the traction drives the ball forwards, at most μQ.
+        let fx = r["force_x_n"].as_f64().unwrap();
+        assert!(fx > 0.0 && fx <= 0.1 * 300.0 + 1e-9, "{law}: {fx}");
+        assert!(r["power_w"].as_f64().unwrap() > 0.0, "{law}");
+        assert_eq!(r["ring"], "outer");
+    }
+
+    let dir = temp_dir("traction-map");
+    std::fs::create_dir_all(&dir).unwrap();
+    let map = dir.join("map.csv");
+    let r = json(
+        &[
+            "traction",
+            "--set",
+            FASTSIM,
+            "--approach",
+            "5 um",
+            "--rolling-speed",
+            "10 m/s",
+            "--creepages",
+            "2e-4,0,5",
+            "--map",
+            &map.to_string_lossy(),
+            "--json",
+        ],
+        None,
+    );
+    let text = std::fs::read_to_string(&map).unwrap();
+    let rows: Vec<&str> = text.lines().collect();
+    assert_eq!(
+        rows[0],
+        "x_m,y_m,traction_x_pa,traction_y_pa,bound_pa,state"
+    );
+    assert_eq!(rows.len() - 1, r["map_cells"].as_u64().unwrap() as usize);
+    assert_eq!(rows.len() - 1, 20 * 12);
+    let stuck = rows[1..].iter().filter(|l| l.ends_with(",stick")).count();
+    let fraction = r["stick_fraction"].as_f64().unwrap();
+    assert!(
+        stuck > 0 && fraction > 0.0 && fraction < 1.0,
+        "{stuck} {fraction}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn traction_bad_input_exits_2() {
+    for (args, needle) in [
+        (
+            vec!["traction", "--load", "1 kN", "--rolling-speed", "1 m/s"],
+            "--creepages",
+        ),
+        (
+            vec![
+                "traction",
+                "--load",
+                "1 kN",
+                "--rolling-speed",
+                "1 m/s",
+                "--creepages",
+                "1,2",
+            ],
+            "three finite numbers",
+        ),
+        (
+            vec![
+                "traction",
+                "--load",
+                "1 kN",
+                "--rolling-speed",
+                "1 m/s",
+                "--creepages",
+                "0,0,0",
+                "--map",
+                "x.csv",
+            ],
+            "needs the fastsim traction law",
+        ),
+        (
+            vec![
+                "traction",
+                "--semi-axes",
+                "3 mm,0.2 mm",
+                "--load",
+                "1 kN",
+                "--shear-modulus",
+                "80 GPa",
+                "--poisson-ratio",
+                "0.3",
+                "--friction",
+                "0.1",
+                "--rolling-speed",
+                "1 m/s",
+                "--creepages",
+                "0,0,0",
+            ],
+            "--semi-axes",
+        ),
+        (
+            vec![
+                "traction",
+                "--set",
+                "model.traction={ law = \"fastsim\", friction = 0.1, strips = 0 }",
+                "--load",
+                "1 kN",
+                "--rolling-speed",
+                "1 m/s",
+                "--creepages",
+                "0,0,0",
+            ],
+            "model.traction.strips",
+        ),
+    ] {
+        let o = rolldyn(&args, None);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(stderr(&o).contains(needle), "{args:?}: {}", stderr(&o));
+    }
+}
+
+/// A FASTSIM run records the creepage and stick channels and their means.
+#[test]
+fn fastsim_run_records_creepages() {
+    use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
+    let dir = temp_dir("fastsim-run");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(
+        &["run", "--set", FASTSIM, "--duration", "1 ms", "-o", &d],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    for k in [
+        "mean_creepage_longitudinal_inner",
+        "mean_creepage_longitudinal_outer",
+        "mean_creepage_lateral_inner",
+        "mean_creepage_lateral_outer",
+        "mean_creepage_spin_inner_1_m",
+        "mean_creepage_spin_outer_1_m",
+        "mean_stick_fraction_inner",
+        "mean_stick_fraction_outer",
+    ] {
+        assert!(summary.get(k).is_some(), "summary lacks {k}");
+    }
+    let stick = summary["mean_stick_fraction_outer"].as_f64().unwrap();
+    assert!((0.0..=1.0).contains(&stick));
+    let file = std::fs::File::open(dir.join("timeseries.parquet")).unwrap();
+    let schema = ParquetRecordBatchReaderBuilder::try_new(file)
+        .unwrap()
+        .schema()
+        .clone();
+    for channel in [
+        "ball0_creepage_longitudinal_inner",
+        "ball21_creepage_spin_outer_1_m",
+        "ball21_stick_fraction_inner",
+    ] {
+        assert!(schema.index_of(channel).is_ok(), "no channel {channel}");
+    }
+    // Without FASTSIM there are no creepage keys.
+    let plain = temp_dir("plain-run");
+    let p = plain.to_string_lossy().into_owned();
+    assert!(
+        rolldyn(&["run", "--duration", "0.2 ms", "-o", &p], None)
+            .status
+            .success()
+    );
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(plain.join("summary.json")).unwrap())
+            .unwrap();
+    assert!(s.get("mean_stick_fraction_inner").is_none());
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::remove_dir_all(&plain).ok();
+}

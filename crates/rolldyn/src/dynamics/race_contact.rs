@@ -19,9 +19,8 @@
 use super::model::{BallMotion, BearingModel, RingMotion};
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{ContactTable, Curvature, TorusContact};
-use crate::lubrication::hamrock_dowson;
 use crate::traction::{
-    ContactConditions, ContactPatch, Creep, TractionIntegration, TractionModel, TractionResult,
+    ContactConditions, ContactPatch, Creep, TractionIntegration, TractionResult,
 };
 use nalgebra::Vector3;
 
@@ -140,25 +139,22 @@ impl BearingModel {
             } else {
                 (Vector3::zeros(), 0.0)
             };
-        let film = match &self.params.traction {
-            TractionModel::Ehl(ehl) => {
-                let curvature = Curvature::of_raceway(
-                    &ring.raceway,
-                    self.geometry.ball_diameter,
-                    self.geometry.pitch_diameter,
-                    geometry.contact_angle,
-                );
-                hamrock_dowson(
-                    &ehl.lubricant,
-                    u,
-                    load,
-                    curvature.rolling_radius,
-                    self.effective_modulus,
-                    hertz.ellipticity,
-                )
-                .central
-            }
-            _ => 0.0,
+        let film = if self.params.traction.needs_film() {
+            let curvature = Curvature::of_raceway(
+                &ring.raceway,
+                self.geometry.ball_diameter,
+                self.geometry.pitch_diameter,
+                geometry.contact_angle,
+            );
+            self.params.traction.central_film(
+                u,
+                load,
+                curvature.rolling_radius,
+                self.effective_modulus,
+                hertz.ellipticity,
+            )
+        } else {
+            0.0
         };
         let rg = ring.raceway.groove_radius;
         let rb = 0.5 * self.geometry.ball_diameter;

@@ -80,6 +80,34 @@ impl TractionModel {
         matches!(self, Self::Ehl(_))
     }
 
+    /// Central film thickness h_c \[m\] of a contact for the models that
+    /// use one (EHL: Hamrock–Dowson, MODEL §4), else 0: entrainment speed
+    /// |u| \[m/s\], load Q \[N\], rolling radius R_x \[m\], effective
+    /// modulus E' \[Pa\], ellipticity κ.
+    pub fn central_film(
+        &self,
+        entrainment_speed: f64,
+        load: f64,
+        rolling_radius: f64,
+        effective_modulus: f64,
+        ellipticity: f64,
+    ) -> f64 {
+        match self {
+            Self::Ehl(ehl) => {
+                crate::lubrication::hamrock_dowson(
+                    &ehl.lubricant,
+                    entrainment_speed,
+                    load,
+                    rolling_radius,
+                    effective_modulus,
+                    ellipticity,
+                )
+                .central
+            }
+            _ => 0.0,
+        }
+    }
+
     /// Whether the stress law uses the entrainment speed.
     pub fn needs_entrainment(&self) -> bool {
         matches!(

@@ -1,0 +1,323 @@
+//! `rolldyn traction`: the traction of one ball–raceway contact with the
+//! case's traction model (FASTSIM, Coulomb, traction curve or EHL), or of
+//! an explicit elliptic contact with FASTSIM, for comparing models.
+//!
+//! Frame: x along the flow (rolling) direction, z = n the contact normal
+//! from the ball into the ring, y = n × x. The ball is given the creepages
+//! (ξ, η, φ) at rolling speed V (or the slip velocities and spin rate);
+//! with a bearing, the ball also rolls relative to the ring about y at
+//! V/R_x (R_x the rolling radius), which on the conforming groove adds the
+//! differential (Heathcote) slip. Outputs are on the ball. docs/cli.md
+//! lists the keys.
+
+use nalgebra::Vector3;
+use rolldyn::RingKind;
+use rolldyn::contact::RacewayContactModel;
+use rolldyn::material::effective_modulus;
+use rolldyn::traction::fastsim::MapCell;
+use rolldyn::traction::kalker::check_axes;
+use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim, TractionModel, TractionResult};
+use rolldyn_case::Case;
+use serde::Serialize;
+use std::fmt::Write;
+
+/// The contact and its kinematics, in SI units.
+pub struct Inputs {
+    /// Rolling (entrainment) speed V \[m/s\], signed along x.
+    pub rolling_speed: f64,
+    /// What slides.
+    pub motion: Motion,
+}
+
+/// Creepages or slip velocities.
+pub enum Motion {
+    /// ξ, η \[-\], φ \[1/m\].
+    Creepages([f64; 3]),
+    /// Slip velocities along x and y \[m/s\], spin rate about n \[rad/s\].
+    Slip([f64; 2], f64),
+}
+
+/// Where the contact comes from.
+pub enum Contact<'a> {
+    /// A ring of the case: load Q \[N\] (or approach) and contact angle.
+    Bearing {
+        case: &'a Case,
+        ring: RingKind,
+        load: Load,
+        angle: Option<f64>,
+    },
+    /// An explicit ellipse with FASTSIM.
+    Explicit {
+        /// Semi-axis along the rolling direction \[m\].
+        along: f64,
+        /// Semi-axis across \[m\].
+        across: f64,
+        load: f64,
+        shear_modulus: f64,
+        poisson_ratio: f64,
+        friction: f64,
+    },
+}
+
+/// The normal load or the approach that sets it.
+#[derive(Clone, Copy)]
+pub enum Load {
+    /// Q \[N\].
+    Force(f64),
+    /// δ \[m\].
+    Approach(f64),
+}
+
+/// `rolldyn traction` output.
+#[derive(Serialize)]
+pub struct TractionReport {
+    pub traction_law: &'static str,
+    pub ring: Option<&'static str>,
+    pub contact_angle_deg: Option<f64>,
+    pub load_n: f64,
+    pub semi_axis_along_m: f64,
+    pub semi_axis_across_m: f64,
+    pub rolling_speed_m_s: f64,
+    pub creepage_longitudinal: f64,
+    pub creepage_lateral: f64,
+    pub creepage_spin_1_m: f64,
+    pub force_x_n: f64,
+    pub force_y_n: f64,
+    pub force_n: f64,
+    pub traction_coefficient: f64,
+    pub spin_moment_nm: f64,
+    pub power_w: f64,
+    pub stick_fraction: Option<f64>,
+    pub map_cells: Option<usize>,
+}
+
+fn law_name(model: &TractionModel) -> &'static str {
+    match model {
+        TractionModel::None => "none",
+        TractionModel::ModifiedCoulomb(_) => "modified_coulomb",
+        TractionModel::TractionCurve(_) => "traction_curve",
+        TractionModel::Ehl(_) => "ehl",
+        TractionModel::Fastsim(_) => "fastsim",
+    }
+}
+
+/// Evaluates the contact; `map` (if given) receives the FASTSIM stick/slip
+/// map as CSV text.
+pub fn evaluate(
+    contact: &Contact,
+    inputs: &Inputs,
+    map: Option<&mut String>,
+) -> Result<TractionReport, String> {
+    let normal = Vector3::z();
+    let x = Vector3::x();
+    let y = normal.cross(&x);
+    let v = inputs.rolling_speed;
+    let (model, integration, along, across, load, deformed_radius, rolling_radius, film_of, ring) =
+        match contact {
+            Contact::Bearing {
+                case,
+                ring,
+                load,
+                angle,
+            } => {
+                let params = case
+                    .dynamics_parameters()
+                    .map_err(|e| format!("{}: {}", e.key, e.rule))?;
+                let g = &case.bearing.geometry;
+                let angle = angle.unwrap_or_else(|| g.nominal_contact_angle());
+                let (ball, rings) = (
+                    &case.materials.ball.material,
+                    &case.materials.rings.material,
+                );
+                let ep = effective_modulus(ball, rings);
+                let raceway = RacewayContactModel::new(g, *ring, ep, case.contact_stiffness);
+                let h = raceway
+                    .coefficients(angle)
+                    .map_err(|e| format!("{} raceway contact: {e}", ring.name()))?;
+                let q = match load {
+                    Load::Force(q) => *q,
+                    Load::Approach(d) => h.load(*d),
+                };
+                let at = h.at_load(q);
+                let rg = g.raceway(*ring).groove_radius;
+                let rb = 0.5 * g.ball_diameter;
+                let rx = raceway.curvature(angle).rolling_radius;
+                (
+                    params.traction,
+                    params.traction_integration,
+                    at.semi_minor,
+                    at.semi_major,
+                    q,
+                    2.0 * rg * rb / (rg + rb),
+                    Some(rx),
+                    Some((ep, h.ellipticity)),
+                    Some((ring.name(), angle)),
+                )
+            }
+            Contact::Explicit {
+                along,
+                across,
+                load,
+                shear_modulus,
+                poisson_ratio,
+                friction,
+            } => {
+                let flag = |field: &str| {
+                    if field.starts_with("semi_axis") {
+                        "--semi-axes".to_string()
+                    } else {
+                        format!("--{}", field.replace('_', "-"))
+                    }
+                };
+                check_axes(*along, *across, *poisson_ratio)
+                    .map_err(|e| format!("{}: {e}", flag(e.field)))?;
+                let m = Fastsim::new(*friction, *shear_modulus, *poisson_ratio);
+                m.validate()
+                    .map_err(|e| format!("{}: {e}", flag(e.field)))?;
+                (
+                    TractionModel::Fastsim(m),
+                    Default::default(),
+                    *along,
+                    *across,
+                    *load,
+                    f64::INFINITY,
+                    None,
+                    None,
+                    None,
+                )
+            }
+        };
+    if !(load.is_finite() && load >= 0.0) {
+        return Err(format!("normal load {load} N: must be ≥ 0"));
+    }
+    // The Hertz ellipse with its minor axis along the rolling direction x.
+    let patch = ContactPatch {
+        point: 0.5e-3 * normal,
+        normal,
+        rolling_direction: x,
+        semi_major: across,
+        semi_minor: along,
+        load,
+        deformed_radius,
+    };
+    let regularisation = match &model {
+        TractionModel::Fastsim(f) => f.regularisation_speed,
+        _ => 0.0,
+    };
+    let speed = v.hypot(regularisation);
+    let (slip, spin_n) = match inputs.motion {
+        Motion::Creepages([xi, eta, phi]) => (speed * (xi * x + eta * y), speed * phi),
+        Motion::Slip([sx, sy], spin) => (sx * x + sy * y, spin),
+    };
+    // Rolling of the ball relative to the ring about y: V/R_x.
+    let rolling_rate = rolling_radius.map_or(0.0, |r| v / r);
+    let relative_spin = spin_n * normal + rolling_rate * y;
+    let film = film_of.map_or(0.0, |(ep, kappa)| {
+        model.central_film(v.abs(), load, rolling_radius.unwrap_or(1.0), ep, kappa)
+    });
+    let conditions = ContactConditions {
+        film,
+        entrainment_speed: v.abs(),
+        rolling_velocity: v,
+    };
+    let mut cells = 0;
+    let result: TractionResult = match (&model, map) {
+        (TractionModel::Fastsim(f), Some(text)) => {
+            text.push_str("x_m,y_m,traction_x_pa,traction_y_pa,bound_pa,state\n");
+            f.evaluate_mapped(
+                &patch,
+                &Vector3::zeros(),
+                &slip,
+                &relative_spin,
+                &conditions,
+                |c: &MapCell| {
+                    cells += 1;
+                    let _ = writeln!(
+                        text,
+                        "{:e},{:e},{:e},{:e},{:e},{}",
+                        c.x,
+                        c.y,
+                        c.traction.x,
+                        c.traction.y,
+                        c.bound,
+                        if c.stick { "stick" } else { "slip" }
+                    );
+                },
+            )
+        }
+        (_, Some(_)) => {
+            return Err(format!(
+                "--map: the stick/slip map needs the fastsim traction law (the case has {})",
+                law_name(&model)
+            ));
+        }
+        (m, None) => m.evaluate(
+            integration,
+            &patch,
+            &Vector3::zeros(),
+            &slip,
+            &relative_spin,
+            &conditions,
+        ),
+    };
+    let (fx, fy) = (result.force.dot(&x), result.force.dot(&y));
+    Ok(TractionReport {
+        traction_law: law_name(&model),
+        ring: ring.map(|r| r.0),
+        contact_angle_deg: ring.map(|r| r.1.to_degrees()),
+        load_n: load,
+        semi_axis_along_m: along,
+        semi_axis_across_m: across,
+        rolling_speed_m_s: v,
+        creepage_longitudinal: slip.dot(&x) / speed,
+        creepage_lateral: slip.dot(&y) / speed,
+        creepage_spin_1_m: spin_n / speed,
+        force_x_n: fx,
+        force_y_n: fy,
+        force_n: fx.hypot(fy),
+        traction_coefficient: if load > 0.0 { fx.hypot(fy) / load } else { 0.0 },
+        spin_moment_nm: result.couple.dot(&normal),
+        power_w: result.dissipation,
+        stick_fraction: result.creep.map(|c| c.stick_fraction),
+        map_cells: (cells > 0).then_some(cells),
+    })
+}
+
+impl TractionReport {
+    pub fn to_text(&self) -> String {
+        let mut out = format!("Traction ({} law)", self.traction_law);
+        if let (Some(ring), Some(angle)) = (self.ring, self.contact_angle_deg) {
+            let _ = write!(out, ", {ring} raceway at α = {angle:.3}°");
+        }
+        out.push('\n');
+        let _ = writeln!(
+            out,
+            "  load Q                {:>12.4} N      semi-axes along/across {:.4} / {:.4} mm",
+            self.load_n,
+            self.semi_axis_along_m * 1e3,
+            self.semi_axis_across_m * 1e3
+        );
+        let _ = writeln!(
+            out,
+            "  rolling speed V       {:>12.4} m/s    creepages ξ {:.4e}, η {:.4e}, φ {:.4e} 1/m",
+            self.rolling_speed_m_s,
+            self.creepage_longitudinal,
+            self.creepage_lateral,
+            self.creepage_spin_1_m
+        );
+        let _ = writeln!(
+            out,
+            "  F_x {:.6e} N   F_y {:.6e} N   |F| {:.6e} N (|F|/Q = {:.5})",
+            self.force_x_n, self.force_y_n, self.force_n, self.traction_coefficient
+        );
+        let _ = writeln!(
+            out,
+            "  spin moment M_z {:.6e} N·m   power {:.6e} W",
+            self.spin_moment_nm, self.power_w
+        );
+        if let Some(s) = self.stick_fraction {
+            let _ = writeln!(out, "  stick area fraction {s:.4}");
+        }
+        out
+    }
+}
