@@ -88,6 +88,18 @@ fn b2_balance_with_curve_hysteresis_housing_pockets_unbalance_and_load_ramp() {
     });
 }
 
+/// B2 with Kalker's FASTSIM at the raceway contacts (issue 10): its
+/// dissipation is the power of the element forces on the rigid slip at
+/// their points, so the balance closes as for the stress laws.
+#[test]
+fn b2_balance_with_fastsim() {
+    b2_seed000(|p| {
+        let steel = steel_seed000();
+        let (g, nu) = rolldyn::traction::fastsim::combined_elastic_constants(&steel, &steel);
+        p.traction = TractionModel::Fastsim(rolldyn::traction::Fastsim::new(0.1, g, nu));
+    });
+}
+
 fn b2_seed000(configure: impl Fn(&mut DynamicsParameters)) {
     let g = bearing_6304();
     let mut params = seed000_dynamics(100.0);

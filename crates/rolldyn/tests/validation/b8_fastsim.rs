@@ -11,11 +11,18 @@
 //!   to rounding) and, for pure spin, the Coulomb spin moment
 //!   μ ∫ p_n r dA of the parabolic pressure;
 //! - symmetry of pure spin (no F_x), signs, monotone force in creepage,
-//!   and dissipation ≥ 0 over a sweep of creepages and geometries.
+//!   and dissipation ≥ 0 over a sweep of creepages and geometries;
+//! - in the dynamic model, the explicit (DOPRI5) and stiff (ROS34PW2)
+//!   integrators agree on a FASTSIM run (B2 with FASTSIM is in
+//!   `b2_energy_balance`).
 
-use super::common::rel;
+use super::common::{METHODS, bearing_7008c, dynamics_7008c, integrator, rel};
 use nalgebra::Vector3;
+use rolldyn::contact::HertzModel;
+use rolldyn::dynamics::{BearingModel, DragParameters};
+use rolldyn::integrate::Integrator;
 use rolldyn::material::Material;
+use rolldyn::traction::TractionModel;
 use rolldyn::traction::fastsim::combined_elastic_constants;
 use rolldyn::traction::kalker::creep_coefficients;
 use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim, TractionResult};
@@ -214,4 +221,47 @@ fn b8_dissipation_is_never_negative() {
     }
     eprintln!("B8 dissipation over {count} cases: worst relative {worst:.2e}");
     assert!(worst >= -1e-12);
+}
+
+/// The 7008C default configuration with FASTSIM (μ = 0.1) from the
+/// Jones–Harris state, 3 ms: DOPRI5 and ROS34PW2 at rtol 1e-6 give the
+/// same cage angle (to 1e-4 of its advance), drive work and dissipated
+/// energy (to 1e-3) and closing energy balances.
+#[test]
+fn b8_integrators_agree_on_a_fastsim_run() {
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let (mut params, eq) = dynamics_7008c(DragParameters::default());
+    let (shear, nu) = combined_elastic_constants(&steel, &steel);
+    params.traction = TractionModel::Fastsim(Fastsim::new(0.1, shear, nu));
+    let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
+    let y0 = model.state_from_equilibrium(&eq);
+    let t_end = 3e-3;
+    let c = model.layout().cage() + 2;
+    let results: Vec<(f64, f64, f64, f64)> = METHODS
+        .iter()
+        .map(|&method| {
+            let mut m = model.clone();
+            let e0 = m.energy(0.0, &y0).total();
+            let mut rk = integrator(method, &m, &y0, 1e-6, 1e-5);
+            while rk.t() < t_end {
+                rk.step(&mut m, t_end).unwrap();
+            }
+            let (drive, dissipated) = m.work(rk.y());
+            let delta = m.energy(rk.t(), rk.y()).total() - e0;
+            eprintln!(
+                "B8 FASTSIM run ({method:?}): cage angle {:.6} rad, drive {drive:.5e} J, dissipated {dissipated:.5e} J, balance {:.1e}, {} steps",
+                rk.y()[c] - y0[c],
+                (drive - delta - dissipated) / drive,
+                rk.stats().steps
+            );
+            (rk.y()[c] - y0[c], drive, dissipated, (drive - delta - dissipated) / drive)
+        })
+        .collect();
+    let (a, b) = (results[0], results[1]);
+    assert!(rel(a.0, b.0) < 1e-4, "cage angle {} vs {}", a.0, b.0);
+    assert!(rel(a.1, b.1) < 1e-3, "drive work {} vs {}", a.1, b.1);
+    assert!(rel(a.2, b.2) < 1e-3, "dissipation {} vs {}", a.2, b.2);
+    assert!(a.3.abs() < 1e-3 && b.3.abs() < 1e-3);
+    assert!(a.1 > 0.0 && a.2 > 0.0);
 }
