@@ -458,9 +458,9 @@ pub enum RawTraction {
     Fastsim {
         /// Friction coefficient μ ≥ 0.
         friction: f64,
-        /// Strips across the rolling direction (default 20).
+        /// Strips across the rolling direction (default 16).
         strips: Option<usize>,
-        /// Elements per strip (default 12).
+        /// Elements per strip (default 10).
         elements: Option<usize>,
         /// Traction bound: "parabolic" (default, Kalker's) or "elliptic" (Hertz).
         bound: Option<rolldyn::traction::TractionBound>,

@@ -10,6 +10,8 @@
 //! differential (Heathcote) slip. Outputs are on the ball. docs/cli.md
 //! lists the keys.
 
+use crate::{CaseArgs, Failure, bad_arg, emit, json, parse_angle};
+use clap::Args;
 use nalgebra::Vector3;
 use rolldyn::RingKind;
 use rolldyn::contact::RacewayContactModel;
@@ -18,8 +20,245 @@ use rolldyn::traction::fastsim::MapCell;
 use rolldyn::traction::kalker::check_axes;
 use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim, TractionModel, TractionResult};
 use rolldyn_case::Case;
+use rolldyn_case::units::{AngularSpeed, Force, Length, Pressure, Quantity, Velocity};
 use serde::Serialize;
 use std::fmt::Write;
+
+/// Arguments of `rolldyn traction`.
+#[derive(Args, Debug)]
+pub struct TractionArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Raceway: inner or outer.
+    #[arg(long, value_name = "RING", default_value = "inner")]
+    pub ring: String,
+    /// Normal load, e.g. "2 kN".
+    #[arg(long, value_name = "FORCE")]
+    pub load: Option<String>,
+    /// Elastic approach instead of the load, e.g. "10 um" (with a case).
+    #[arg(long, value_name = "LENGTH")]
+    pub approach: Option<String>,
+    /// Contact angle, e.g. "40 deg" (default: nominal angle).
+    #[arg(long, value_name = "ANGLE")]
+    pub angle: Option<String>,
+    /// Rolling speed V along the rolling direction, e.g. "10 m/s".
+    #[arg(long, value_name = "SPEED", allow_hyphen_values = true)]
+    pub rolling_speed: String,
+    /// Creepages ξ,η,φ (φ in 1/m), e.g. "1e-3,0,2".
+    #[arg(long, value_name = "XI,ETA,PHI", allow_hyphen_values = true)]
+    pub creepages: Option<String>,
+    /// Slip velocities of the ball along and across the rolling
+    /// direction instead of creepages, e.g. "5 mm/s,0 mm/s".
+    #[arg(long, value_name = "VX,VY", allow_hyphen_values = true)]
+    pub slip: Option<String>,
+    /// Spin rate of the ball relative to the ring about the normal, with
+    /// --slip, e.g. "20 rad/s" (default 0).
+    #[arg(long, value_name = "RATE", allow_hyphen_values = true)]
+    pub spin: Option<String>,
+    /// Explicit contact without a bearing: semi-axes along and across
+    /// the rolling direction, e.g. "0.3 mm,2 mm" (FASTSIM; needs --load,
+    /// --shear-modulus, --poisson-ratio, --friction).
+    #[arg(long, value_name = "ALONG,ACROSS")]
+    pub semi_axes: Option<String>,
+    /// Combined shear modulus G of the explicit contact, e.g. "80 GPa".
+    #[arg(long, value_name = "MODULUS")]
+    pub shear_modulus: Option<String>,
+    /// Combined Poisson ratio ν of the explicit contact (0 … 0.5).
+    #[arg(long, value_name = "NU")]
+    pub poisson_ratio: Option<f64>,
+    /// Friction coefficient μ of the explicit contact.
+    #[arg(long, value_name = "MU")]
+    pub friction: Option<f64>,
+    /// Write the FASTSIM stick/slip map (one row per element) to FILE as CSV.
+    #[arg(long, value_name = "FILE")]
+    pub map: Option<String>,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Runs `rolldyn traction`.
+pub fn command(args: TractionArgs) -> Result<(), Failure> {
+    let TractionArgs {
+        case,
+        ring,
+        load,
+        approach,
+        angle,
+        rolling_speed,
+        creepages,
+        slip,
+        spin,
+        semi_axes,
+        shear_modulus,
+        poisson_ratio,
+        friction,
+        map,
+        json: as_json,
+    } = args;
+    let speed = |flag: &str, t: &str| {
+        Quantity::<Velocity>::parse(t.trim())
+            .map(|q| q.si)
+            .map_err(|e| bad_arg(flag, t, e))
+    };
+    let v = speed("--rolling-speed", &rolling_speed)?;
+    let motion = match (&creepages, &slip) {
+        (Some(c), None) => {
+            let parts: Vec<f64> = c
+                .split(',')
+                .map(|p| p.trim().parse::<f64>())
+                .collect::<Result<_, _>>()
+                .map_err(|e| bad_arg("--creepages", c, e))?;
+            match parts[..] {
+                [xi, eta, phi] if parts.iter().all(|p| p.is_finite()) => {
+                    Motion::Creepages([xi, eta, phi])
+                }
+                _ => {
+                    return Err(bad_arg(
+                        "--creepages",
+                        c,
+                        "expected three finite numbers ξ,η,φ (φ in 1/m)",
+                    ));
+                }
+            }
+        }
+        (None, Some(s)) => {
+            let parts: Vec<&str> = s.split(',').collect();
+            let [sx, sy] = parts[..] else {
+                return Err(bad_arg("--slip", s, "expected two speeds VX,VY"));
+            };
+            let rate = spin
+                .as_deref()
+                .map(|t| {
+                    Quantity::<AngularSpeed>::parse(t)
+                        .map(|q| q.si)
+                        .map_err(|e| bad_arg("--spin", t, e))
+                })
+                .transpose()?
+                .unwrap_or(0.0);
+            Motion::Slip([speed("--slip", sx)?, speed("--slip", sy)?], rate)
+        }
+        _ => {
+            return Err(Failure::BadInput(
+                        "give the creepages (--creepages XI,ETA,PHI) or the slip velocities (--slip VX,VY), not both".into(),
+                    ));
+        }
+    };
+    if spin.is_some() && slip.is_none() {
+        return Err(bad_arg(
+            "--spin",
+            spin.as_deref().unwrap_or_default(),
+            "goes with --slip; with --creepages give φ",
+        ));
+    }
+    let force = |flag: &str, t: &str| {
+        Quantity::<Force>::parse(t)
+            .map(|q| q.si)
+            .map_err(|e| bad_arg(flag, t, e))
+    };
+    let inputs = Inputs {
+        rolling_speed: v,
+        motion,
+    };
+    let loaded;
+    let contact = if let Some(axes) = &semi_axes {
+        if case.case.is_some() {
+            return Err(bad_arg(
+                "--semi-axes",
+                axes,
+                "an explicit contact takes no case file",
+            ));
+        }
+        let parts: Vec<&str> = axes.split(',').collect();
+        let [along, across] = parts[..] else {
+            return Err(bad_arg(
+                "--semi-axes",
+                axes,
+                "expected ALONG,ACROSS, e.g. \"0.3 mm,2 mm\"",
+            ));
+        };
+        let length = |t: &str| {
+            Quantity::<Length>::parse(t.trim())
+                .map(|q| q.si)
+                .map_err(|e| bad_arg("--semi-axes", axes, e))
+        };
+        let need = |flag: &str, v: Option<f64>| {
+            v.ok_or_else(|| Failure::BadInput(format!("{flag} is needed with --semi-axes")))
+        };
+        let load = need(
+            "--load",
+            load.as_deref().map(|t| force("--load", t)).transpose()?,
+        )?;
+        let g = need(
+            "--shear-modulus",
+            shear_modulus
+                .as_deref()
+                .map(|t| {
+                    Quantity::<Pressure>::parse(t)
+                        .map(|q| q.si)
+                        .map_err(|e| bad_arg("--shear-modulus", t, e))
+                })
+                .transpose()?,
+        )?;
+        Contact::Explicit {
+            along: length(along)?,
+            across: length(across)?,
+            load,
+            shear_modulus: g,
+            poisson_ratio: need("--poisson-ratio", poisson_ratio)?,
+            friction: need("--friction", friction)?,
+        }
+    } else {
+        for (flag, given) in [
+            ("--shear-modulus", shear_modulus.is_some()),
+            ("--poisson-ratio", poisson_ratio.is_some()),
+            ("--friction", friction.is_some()),
+        ] {
+            if given {
+                return Err(Failure::BadInput(format!(
+                    "{flag} goes with --semi-axes; with a case the materials and model.traction set it (e.g. --set 'model.traction={{ law = \"fastsim\", friction = 0.1 }}')"
+                )));
+            }
+        }
+        let ring = match ring.as_str() {
+            "inner" => rolldyn::RingKind::Inner,
+            "outer" => rolldyn::RingKind::Outer,
+            _ => return Err(bad_arg("--ring", &ring, "expected inner or outer")),
+        };
+        let load = match (&load, &approach) {
+            (Some(t), None) => Load::Force(force("--load", t)?),
+            (None, Some(t)) => Load::Approach(
+                Quantity::<Length>::parse(t)
+                    .map_err(|e| bad_arg("--approach", t, e))?
+                    .si,
+            ),
+            _ => {
+                return Err(Failure::BadInput(
+                    "give the normal load (--load) or the approach (--approach), not both".into(),
+                ));
+            }
+        };
+        let angle = parse_angle("--angle", angle.as_ref())?;
+        loaded = case.load()?.1;
+        Contact::Bearing {
+            case: &loaded,
+            ring,
+            load,
+            angle,
+        }
+    };
+    let mut map_text = map.as_ref().map(|_| String::new());
+    let report = evaluate(&contact, &inputs, map_text.as_mut()).map_err(Failure::BadInput)?;
+    if let (Some(path), Some(text)) = (&map, &map_text) {
+        rolldyn_io::write_atomic(std::path::Path::new(path), text.as_bytes())
+            .map_err(|e| Failure::Internal(format!("cannot write {path}: {e}")))?;
+    }
+    if as_json {
+        json(&report)
+    } else {
+        emit(&report.to_text())
+    }
+}
 
 /// The contact and its kinematics, in SI units.
 pub struct Inputs {

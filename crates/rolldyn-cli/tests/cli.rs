@@ -655,7 +655,7 @@ fn traction_evaluates_one_contact() {
         "x_m,y_m,traction_x_pa,traction_y_pa,bound_pa,state"
     );
     assert_eq!(rows.len() - 1, r["map_cells"].as_u64().unwrap() as usize);
-    assert_eq!(rows.len() - 1, 20 * 12);
+    assert_eq!(rows.len() - 1, 16 * 10);
     let stuck = rows[1..].iter().filter(|l| l.ends_with(",stick")).count();
     let fraction = r["stick_fraction"].as_f64().unwrap();
     assert!(

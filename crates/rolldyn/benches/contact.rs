@@ -1,5 +1,6 @@
 //! `cargo bench -p rolldyn --bench contact`: cost of the contact building
-//! blocks the time loop will call (7008C, steel). Plain `Instant` timing
+//! blocks the time loop calls (7008C, steel): Hertz tables, torus
+//! geometry, and one contact's traction (FASTSIM, a stress law). Plain `Instant` timing
 //! of many repetitions (median of 7 runs), no extra dependency. Figures are
 //! recorded in docs/performance.md with the machine.
 
@@ -7,6 +8,10 @@ use nalgebra::Vector3;
 use rolldyn::contact::table::{ContactTable, RacewayContactModel};
 use rolldyn::contact::{GrooveCircle, HertzModel, RingPose};
 use rolldyn::material::{Material, effective_modulus};
+use rolldyn::traction::fastsim::combined_elastic_constants;
+use rolldyn::traction::{
+    ContactConditions, ContactPatch, Fastsim, ModifiedCoulomb, TractionIntegration, TractionModel,
+};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, RingKind};
 use std::hint::black_box;
 use std::time::Instant;
@@ -71,5 +76,60 @@ fn main() {
         circle
             .contact(&q, g.ball_diameter, 0.0)
             .map_or(0.0, |c| c.penetration)
+    });
+
+    // Traction of one contact: a 7008C inner contact at 25 N (b 0.12 mm,
+    // a 0.62 mm), 10 m/s rolling, partial slip with creep and spin.
+    let patch = ContactPatch {
+        point: Vector3::new(0.0, 0.0, -3.175e-3),
+        normal: Vector3::new(0.0, 0.0, -1.0),
+        rolling_direction: Vector3::new(0.0, 1.0, 0.0),
+        semi_major: 0.62e-3,
+        semi_minor: 0.12e-3,
+        load: 25.0,
+        deformed_radius: 3.3e-3,
+    };
+    let conditions = ContactConditions {
+        film: 0.0,
+        entrainment_speed: 10.0,
+        rolling_velocity: 10.0,
+    };
+    let (shear, nu) = combined_elastic_constants(&steel, &steel);
+    let slip = |i: usize| Vector3::new(1e-3 * (i % 7) as f64, 2e-3, 0.0);
+    let spin = |i: usize| Vector3::new(0.0, 3000.0, -20.0 - (i % 5) as f64);
+    let fastsim = Fastsim::new(0.1, shear, nu);
+    for (strips, elements) in [(16, 10), (20, 12), (8, 6), (32, 20)] {
+        let m = Fastsim {
+            strips,
+            elements,
+            ..fastsim
+        };
+        time_per_call(
+            &format!("FASTSIM contact, {strips} × {elements}"),
+            200_000,
+            |i| {
+                m.evaluate(&patch, &Vector3::zeros(), &slip(i), &spin(i), &conditions)
+                    .force
+                    .x
+            },
+        );
+    }
+    let coulomb = TractionModel::ModifiedCoulomb(ModifiedCoulomb {
+        friction: 0.1,
+        stick_speed: 0.0,
+        full_speed: 1e-3,
+    });
+    time_per_call("Coulomb stress law on the 12 × 6 grid", 200_000, |i| {
+        coulomb
+            .evaluate(
+                TractionIntegration::default(),
+                &patch,
+                &Vector3::zeros(),
+                &slip(i),
+                &spin(i),
+                &conditions,
+            )
+            .force
+            .x
     });
 }

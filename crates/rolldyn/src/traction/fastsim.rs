@@ -80,6 +80,32 @@ use nalgebra::{Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
+/// Strips marched together (instruction-level parallelism).
+const LANES: usize = 8;
+
+/// One strip's constants during the march.
+#[derive(Debug, Clone, Copy, Default)]
+struct Strip {
+    /// A real strip (padding lanes are not).
+    active: bool,
+    /// Strip centre y \[m\].
+    y: f64,
+    /// Half chord a_i \[m\].
+    half: f64,
+    /// Element length Δx \[m\] (0 for padding).
+    dx: f64,
+    /// Depth of the deformed surface d_i \[m\].
+    depth: f64,
+    /// Δx/(L V) \[Pa·s/m\]: traction per unit rigid slip.
+    gain: f64,
+    /// Rigid slip along x̂, w_x \[m/s\] (constant along the strip).
+    rate_x: f64,
+    /// Translational rigid slip along ŷ \[m/s\] (spin part apart).
+    slip_y: f64,
+    /// μ p_n scale of the strip \[Pa\] (times the element shape).
+    limit: f64,
+}
+
 /// Largest accepted number of strips or elements per strip.
 pub const MAX_DIVISIONS: usize = 1000;
 
@@ -117,9 +143,9 @@ pub struct Fastsim {
 }
 
 /// Default strips across the ellipse.
-pub const DEFAULT_STRIPS: usize = 20;
+pub const DEFAULT_STRIPS: usize = 16;
 /// Default elements per strip.
-pub const DEFAULT_ELEMENTS: usize = 12;
+pub const DEFAULT_ELEMENTS: usize = 10;
 /// Default regularisation speed v_r \[m/s\].
 pub const DEFAULT_REGULARISATION_SPEED: f64 = 1e-3;
 
@@ -319,25 +345,23 @@ impl Fastsim {
         let dy = 2.0 * across / strips as f64;
         let dt = 2.0 / elements as f64;
         let strip_y = |i: usize| -across + (i as f64 + 0.5) * dy;
-        let chord = |y: f64| (1.0 - (y / across).powi(2)).max(0.0);
-        // Discrete Σ shape·dA with unit peak, to scale the bound to Q.
-        let shape = |chord2: f64, t: f64| {
-            let s = chord2 * (1.0 - t * t).max(0.0);
-            match self.bound {
-                TractionBound::Parabolic => s,
-                TractionBound::Elliptic => s.sqrt(),
-            }
+        // The bound's shape separates: (1 − x²/a_r² − y²/b_r²) = k (1 − t²)
+        // with k = 1 − y²/b_r² and t = x/a_i; elliptic takes the root.
+        let separable = |v: f64| match self.bound {
+            TractionBound::Parabolic => v.max(0.0),
+            TractionBound::Elliptic => v.max(0.0).sqrt(),
         };
-        let mut raw = 0.0;
-        let mut area = 0.0;
+        let element_shape = |e: usize| {
+            let t = -1.0 + (e as f64 + 0.5) * dt;
+            separable(1.0 - t * t)
+        };
+        // Discrete Σ shape·dA with unit peak, to scale the bound to Q.
+        let along_sum: f64 = (0..elements).map(element_shape).sum();
+        let (mut raw, mut area) = (0.0, 0.0);
         for i in 0..strips {
-            let k = chord(strip_y(i));
+            let k = (1.0 - (strip_y(i) / across).powi(2)).max(0.0);
             let half = along * k.sqrt();
-            let mut sum = 0.0;
-            for e in 0..elements {
-                sum += shape(k, -1.0 + (e as f64 + 0.5) * dt);
-            }
-            raw += sum * half * dt * dy;
+            raw += separable(k) * along_sum * half * dt * dy;
             area += 2.0 * half * dy;
         }
         let bound_scale = if raw > 0.0 {
@@ -348,71 +372,104 @@ impl Fastsim {
         let curved = patch.deformed_radius.is_finite();
         let (mut fx, mut fy, mut mx, mut my, mut mn) = (0.0, 0.0, 0.0, 0.0, 0.0);
         let (mut power, mut stuck) = (0.0, 0.0);
-        for i in 0..strips {
-            let y = strip_y(i);
-            let k = chord(y);
-            let half = along * k.sqrt();
-            let dx = half * dt;
-            let depth = if curved {
-                let r = patch.deformed_radius;
-                r - (r * r - y * y).max(0.0).sqrt()
-            } else {
-                0.0
-            };
-            // The strip's translational slip (spin terms apart).
-            let strip_x = s_x - depth * w_y;
-            let strip_lat = s_y + depth * w_x;
-            let (xi, eta) = (strip_x / speed, strip_lat / speed);
-            let norm = (xi * xi + eta * eta + cc * cc * phi * phi).sqrt();
-            let flexibility = if norm > 0.0 {
-                (l1 * xi.abs() + l2 * eta.abs() + l3 * cc * phi.abs()) / norm
-            } else {
-                l1
-            };
-            let gain = dx / (flexibility * speed);
-            let rate_x = strip_x - w_n * y;
-            let mut p = Vector2::zeros();
-            let (mut sfx, mut sfy) = (0.0, 0.0);
+        // Strips are independent: march LANES of them together so that their
+        // (sequential) element recurrences overlap in the pipeline. Lanes
+        // past the last strip have zero width and contribute nothing.
+        for first in (0..strips).step_by(LANES) {
+            let mut lane = [Strip::default(); LANES];
+            for (l, st) in lane.iter_mut().enumerate() {
+                let i = first + l;
+                if i >= strips {
+                    continue;
+                }
+                let y = strip_y(i);
+                let k = (1.0 - (y / across).powi(2)).max(0.0);
+                let half = along * k.sqrt();
+                let depth = if curved {
+                    let r = patch.deformed_radius;
+                    r - (r * r - y * y).max(0.0).sqrt()
+                } else {
+                    0.0
+                };
+                // The strip's translational slip (spin terms apart).
+                let slip_x = s_x - depth * w_y;
+                let slip_y = s_y + depth * w_x;
+                let (xi, eta) = (slip_x / speed, slip_y / speed);
+                let norm = (xi * xi + eta * eta + cc * cc * phi * phi).sqrt();
+                let flexibility = if norm > 0.0 {
+                    (l1 * xi.abs() + l2 * eta.abs() + l3 * cc * phi.abs()) / norm
+                } else {
+                    l1
+                };
+                *st = Strip {
+                    active: true,
+                    y,
+                    half,
+                    dx: half * dt,
+                    depth,
+                    gain: half * dt / (flexibility * speed),
+                    rate_x: slip_x - w_n * y,
+                    slip_y,
+                    limit: bound_scale * separable(k),
+                };
+            }
+            let mut px = [0.0; LANES];
+            let mut py = [0.0; LANES];
+            // Per-lane sums keep the additions out of one serial chain.
+            let mut sfx = [0.0; LANES];
+            let mut sfy = [0.0; LANES];
+            let mut smn = [0.0; LANES];
+            let mut spower = [0.0; LANES];
+            let mut sstuck = [0.0; LANES];
             for e in 0..elements {
                 let t = -1.0 + (e as f64 + 0.5) * dt;
-                let x = half * t;
+                let shape = element_shape(e);
                 // Rigid slip integrated exactly (it is linear in x) from the
                 // previous element centre, or from the leading edge.
-                let (step, x_between) = if e == 0 {
-                    (0.5 * gain, x - 0.25 * dx)
-                } else {
-                    (gain, x - 0.5 * dx)
-                };
-                let trial = p - step * Vector2::new(rate_x, strip_lat + w_n * x_between);
-                let limit = bound_scale * shape(k, t);
-                let size2 = trial.norm_squared();
-                let stick = size2 <= limit * limit;
-                p = if stick {
-                    trial
-                } else {
-                    trial * (limit / size2.sqrt())
-                };
-                let df = p * (dx * dy);
-                sfx += df.x;
-                sfy += df.y;
-                mn += x * df.y - y * df.x;
-                power -= df.x * rate_x + df.y * (strip_lat + w_n * x);
-                if stick {
-                    stuck += dx * dy;
+                let (step, back) = if e == 0 { (0.5, 0.25) } else { (1.0, 0.5) };
+                for l in 0..LANES {
+                    let st = &lane[l];
+                    let x = st.half * t;
+                    let x_between = x - back * st.dx;
+                    let gain = step * st.gain;
+                    let tx = px[l] - gain * st.rate_x;
+                    let ty = py[l] - gain * (st.slip_y + w_n * x_between);
+                    let limit = st.limit * shape;
+                    let size2 = tx * tx + ty * ty;
+                    let stick = size2 <= limit * limit;
+                    let scale = if stick { 1.0 } else { limit / size2.sqrt() };
+                    px[l] = tx * scale;
+                    py[l] = ty * scale;
+                    let cell = st.dx * dy;
+                    let (dfx, dfy) = (px[l] * cell, py[l] * cell);
+                    sfx[l] += dfx;
+                    sfy[l] += dfy;
+                    smn[l] += x * dfy - st.y * dfx;
+                    spower[l] -= dfx * st.rate_x + dfy * (st.slip_y + w_n * x);
+                    if stick {
+                        sstuck[l] += cell;
+                    }
+                    if st.active {
+                        map(&MapCell {
+                            x,
+                            y: st.y,
+                            traction: Vector2::new(px[l], py[l]),
+                            bound: limit,
+                            stick,
+                        });
+                    }
                 }
-                map(&MapCell {
-                    x,
-                    y,
-                    traction: p,
-                    bound: limit,
-                    stick,
-                });
             }
-            fx += sfx;
-            fy += sfy;
-            // (x x̂ + y ŷ − d n) × (f_x x̂ + f_y ŷ): the −d n part.
-            mx += depth * sfy;
-            my -= depth * sfx;
+            for (l, st) in lane.iter().enumerate() {
+                fx += sfx[l];
+                fy += sfy[l];
+                mn += smn[l];
+                power += spower[l];
+                stuck += sstuck[l];
+                // (x x̂ + y ŷ − d n) × (f_x x̂ + f_y ŷ): the −d n part.
+                mx += st.depth * sfy[l];
+                my -= st.depth * sfx[l];
+            }
         }
         let result = TractionResult {
             force: fx * ex + fy * ey,

@@ -27,6 +27,8 @@ use std::f64::consts::PI;
 
 /// Tabulated g = 0.1, 0.2, …, 1.0; per g the rows ν = 0, 0.25, 0.5 of
 /// (C₁₁, C₂₂, C₂₃). Case a ≤ b (short axis along the rolling direction).
+// Kalker's printed values (3.14 is a table entry, not π).
+#[allow(clippy::approx_constant)]
 const SHORT_ALONG: [[[f64; 3]; 3]; 10] = [
     [
         [2.51, 2.51, 0.334],

@@ -6,7 +6,7 @@
 //!   n from the ball into the ring; Kalker's frame flips the φ sign).
 //!   FASTSIM's flexibilities are built so that this holds exactly in the
 //!   continuum; the discretisation error is O(1/strips²) + O(1/elements²):
-//!   1 % at the default 20 × 12 grid;
+//!   below 1 % at the default 16 × 10 grid;
 //! - full sliding: |F| = μQ (the bound is normalised to Q on the grid, so
 //!   to rounding) and, for pure spin, the Coulomb spin moment
 //!   μ ∫ p_n r dA of the parabolic pressure;
@@ -23,7 +23,7 @@ use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::Integrator;
 use rolldyn::material::Material;
 use rolldyn::traction::TractionModel;
-use rolldyn::traction::fastsim::combined_elastic_constants;
+use rolldyn::traction::fastsim::{DEFAULT_ELEMENTS, DEFAULT_STRIPS, combined_elastic_constants};
 use rolldyn::traction::kalker::creep_coefficients;
 use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim, TractionResult};
 
@@ -87,7 +87,7 @@ fn components(p: &ContactPatch, r: &TractionResult) -> (f64, f64) {
 #[test]
 fn b8_linear_limit_one_creepage_at_a_time() {
     let p = patch();
-    let m = model(20, 12);
+    let m = model(DEFAULT_STRIPS, DEFAULT_ELEMENTS);
     for (name, xi, eta, phi, component) in [
         ("ξ", 1e-6, 0.0, 0.0, 0),
         ("η", 0.0, 1e-6, 0.0, 1),
@@ -127,7 +127,7 @@ fn b8_discretisation_error_falls_with_the_grid() {
 #[test]
 fn b8_full_slip_gives_mu_q() {
     let p = patch();
-    let m = model(20, 12);
+    let m = model(DEFAULT_STRIPS, DEFAULT_ELEMENTS);
     let mu_q = m.friction * p.load;
     for (xi, eta) in [(1.0, 0.0), (0.0, -1.0), (0.6, 0.8), (-50.0, 20.0)] {
         let r = at(&m, &p, xi, eta, 0.0);
@@ -185,7 +185,7 @@ fn b8_pure_spin_symmetry_signs_and_sliding_moment() {
 #[test]
 fn b8_force_grows_monotonically_to_saturation() {
     let p = patch();
-    let m = model(20, 12);
+    let m = model(DEFAULT_STRIPS, DEFAULT_ELEMENTS);
     let mut last = (0.0, 1.0);
     for k in 0..60 {
         let xi = 1e-6 * 10f64.powf(k as f64 / 10.0);
@@ -201,7 +201,7 @@ fn b8_force_grows_monotonically_to_saturation() {
 
 #[test]
 fn b8_dissipation_is_never_negative() {
-    let m = model(20, 12);
+    let m = model(DEFAULT_STRIPS, DEFAULT_ELEMENTS);
     let mut curved = patch();
     curved.deformed_radius = 12e-3;
     let mut worst: f64 = 0.0;
