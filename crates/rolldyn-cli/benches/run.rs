@@ -8,7 +8,7 @@
 //! (b) the built-in default case (7008C, 10 000 rpm, F_x = 200 N, EHL on
 //!     the 12 × 6 grid, from the Jones–Harris state), 0.05 s simulated;
 //! (c) the 7218B preset on seed 002's speed ramp (1000 → 10 000 rpm,
-//!     Coulomb traction), the full 2.5 s.
+//!     FASTSIM traction, μ = 0.1), the full 2.5 s.
 //! Targets of issue 5: (a) ≤ 1 s, (b) ≤ 2 s, (c) ≤ 5 min; figures in
 //! docs/performance.md. Build in release first (`cargo bench` does).
 //! `ROLLDYN_BENCH=a,b` runs a subset.

@@ -31,6 +31,7 @@
 
 use super::drag::DragParameters;
 use super::layout::StateLayout;
+use super::race_contact::Want;
 use super::supports::{OuterRing, Support};
 use crate::cage::{CageParameters, GuideLand};
 use crate::contact::normal_law::ContactEpisode;
@@ -391,14 +392,9 @@ impl BearingModel {
         let mut moment = Vector3::zeros();
         let mut out = BallCoupling::default();
         let episodes = &self.episodes[j];
-        if let Some(cn) = self.race_contact(
-            inner,
-            &self.inner_table,
-            &episodes[0],
-            &ball,
-            Some(self.params.traction_integration),
-            false,
-        ) {
+        if let Some(cn) =
+            self.race_contact(inner, &self.inner_table, &episodes[0], &ball, Want::Forces)
+        {
             force += cn.force;
             moment += cn.moment;
             out.ring_force -= cn.force;
@@ -406,14 +402,9 @@ impl BearingModel {
                 (cn.geometry.contact_point - inner.centre).cross(&(-cn.force)) - cn.couple;
             out.dissipation += cn.dissipation;
         }
-        if let Some(cn) = self.race_contact(
-            outer,
-            &self.outer_table,
-            &episodes[1],
-            &ball,
-            Some(self.params.traction_integration),
-            false,
-        ) {
+        if let Some(cn) =
+            self.race_contact(outer, &self.outer_table, &episodes[1], &ball, Want::Forces)
+        {
             force += cn.force;
             moment += cn.moment;
             out.outer_force -= cn.force;
@@ -692,7 +683,7 @@ impl OdeSystem for BearingModel {
             {
                 let before = self.episodes[j][k];
                 // Only the penetration matters here: no traction.
-                let contact = self.race_contact(ring, table, &before, &ball, None, false);
+                let contact = self.race_contact(ring, table, &before, &ball, Want::Penetration);
                 let mut episode = before;
                 match contact {
                     Some(cn) => episode.accept(cn.geometry.penetration, cn.penetration_rate, floor),

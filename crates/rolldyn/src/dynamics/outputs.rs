@@ -1,9 +1,12 @@
-//! Output quantities of a dynamic state: per-contact samples, the
-//! pure-rolling cage-speed reference and ball attitude (MODEL §9).
+//! Output quantities of a dynamic state: per-contact samples, FASTSIM
+//! stick/slip maps, the pure-rolling cage-speed reference and ball
+//! attitude (MODEL §9).
 
 use super::model::BearingModel;
-use super::race_contact::ContactSample;
+use super::race_contact::{ContactOutput, ContactSample, Want};
+use crate::geometry::RingKind;
 use crate::kinematics::cage_speed_ratio;
+use crate::traction::fastsim::MapCell;
 
 impl BearingModel {
     /// Contact loads and angles of every ball at state `y`, written into
@@ -14,27 +17,45 @@ impl BearingModel {
             let (ball, _) = self.ball_kinematics(j, y);
             let episodes = &self.episodes[j];
             *sample = ContactSample::default();
-            if let Some(c) = self.race_contact(
-                &inner,
-                &self.inner_table,
-                &episodes[0],
-                &ball,
-                Some(self.params.traction_integration),
-                true,
-            ) {
+            if let Some(c) =
+                self.race_contact(&inner, &self.inner_table, &episodes[0], &ball, Want::Output)
+            {
                 sample.inner = c.output;
             }
-            if let Some(c) = self.race_contact(
-                &outer,
-                &self.outer_table,
-                &episodes[1],
-                &ball,
-                Some(self.params.traction_integration),
-                true,
-            ) {
+            if let Some(c) =
+                self.race_contact(&outer, &self.outer_table, &episodes[1], &ball, Want::Output)
+            {
                 sample.outer = c.output;
             }
         }
+    }
+
+    /// The FASTSIM stick/slip map of ball j's contact with `ring` at state
+    /// `y`: `map` receives every element (seed 002 Fig. 11); returns the
+    /// contact's output, or None when the contact is open. Other traction
+    /// models call `map` never.
+    pub fn traction_map(
+        &self,
+        t: f64,
+        y: &[f64],
+        j: usize,
+        ring: RingKind,
+        mut map: impl FnMut(&MapCell),
+    ) -> Option<ContactOutput> {
+        let (inner, outer) = self.ring_motion(t, y);
+        let (ball, _) = self.ball_kinematics(j, y);
+        let (motion, table, k) = match ring {
+            RingKind::Inner => (&inner, &self.inner_table, 0),
+            RingKind::Outer => (&outer, &self.outer_table, 1),
+        };
+        self.race_contact(
+            motion,
+            table,
+            &self.episodes[j][k],
+            &ball,
+            Want::Map(&mut map),
+        )
+        .map(|c| c.output)
     }
 
     /// Pure-rolling cage-speed ratio ω_c/ω_i of MODEL §7 for the current

@@ -19,9 +19,8 @@
 use super::model::{BallMotion, BearingModel, RingMotion};
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{ContactTable, Curvature, TorusContact};
-use crate::traction::{
-    ContactConditions, ContactPatch, Creep, TractionIntegration, TractionResult,
-};
+use crate::traction::fastsim::MapCell;
+use crate::traction::{ContactConditions, ContactPatch, Creep, TractionModel, TractionResult};
 use nalgebra::Vector3;
 
 /// Rolling speed over which the hysteresis couple ramps up from zero
@@ -60,6 +59,18 @@ pub struct ContactSample {
     pub outer: ContactOutput,
 }
 
+/// What a contact evaluation must deliver.
+pub(super) enum Want<'a> {
+    /// Only the penetration and its rate (episode bookkeeping): no traction.
+    Penetration,
+    /// Forces and moments for the equations of motion.
+    Forces,
+    /// Forces and the output quantities.
+    Output,
+    /// Output, and the FASTSIM stick/slip map into the callback.
+    Map(&'a mut dyn FnMut(&MapCell)),
+}
+
 /// One evaluated ball–raceway contact.
 pub(super) struct RaceContact {
     pub(super) geometry: TorusContact,
@@ -84,9 +95,9 @@ impl BearingModel {
         table: &ContactTable,
         episode: &ContactEpisode,
         ball: &BallMotion,
-        integration: Option<TractionIntegration>,
-        with_output: bool,
+        want: Want,
     ) -> Option<RaceContact> {
+        let with_output = matches!(want, Want::Output | Want::Map(_));
         let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
         let orbital_rate = ball.orbital_rate;
         let d = self.geometry.ball_diameter;
@@ -169,20 +180,25 @@ impl BearingModel {
         };
         let relative_spin = w - ring.omega;
         // `None`: only the penetration is wanted (episode bookkeeping).
-        let traction = match integration {
-            Some(integration) => self.params.traction.evaluate(
-                integration,
+        let conditions = ContactConditions {
+            film,
+            entrainment_speed: u,
+            rolling_velocity: entrainment.dot(&rolling_direction),
+        };
+        let model = &self.params.traction;
+        let traction = match (want, model) {
+            (Want::Penetration, _) => TractionResult::default(),
+            (Want::Map(map), TractionModel::Fastsim(f)) => {
+                f.evaluate_mapped(&patch, q, &slip, &relative_spin, &conditions, map)
+            }
+            _ => model.evaluate(
+                self.params.traction_integration,
                 &patch,
                 q,
                 &slip,
                 &relative_spin,
-                &ContactConditions {
-                    film,
-                    entrainment_speed: u,
-                    rolling_velocity: entrainment.dot(&rolling_direction),
-                },
+                &conditions,
             ),
-            None => TractionResult::default(),
         };
         // Rolling axis e_a = n × û and the rolling rate about it.
         let rolling_axis = if u > 0.0 {

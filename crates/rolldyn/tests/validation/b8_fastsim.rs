@@ -265,3 +265,42 @@ fn b8_integrators_agree_on_a_fastsim_run() {
     assert!(a.3.abs() < 1e-3 && b.3.abs() < 1e-3);
     assert!(a.1 > 0.0 && a.2 > 0.0);
 }
+
+/// The stick/slip map of a contact in the dynamic model (seed 002 Fig. 11)
+/// is the same evaluation as the run outputs: one cell per element, the
+/// same contact output, and its stuck cells where the output reports a
+/// stuck area.
+#[test]
+fn b8_traction_map_of_a_running_contact() {
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let (mut params, eq) = dynamics_7008c(DragParameters::default());
+    let (shear, nu) = combined_elastic_constants(&steel, &steel);
+    let fastsim = Fastsim::new(0.1, shear, nu);
+    params.traction = TractionModel::Fastsim(fastsim);
+    let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
+    let y = model.state_from_equilibrium(&eq);
+    let mut samples = vec![rolldyn::dynamics::ContactSample::default(); g.ball_count];
+    model.contact_samples(0.0, &y, &mut samples);
+    for ring in [rolldyn::RingKind::Inner, rolldyn::RingKind::Outer] {
+        let (mut cells, mut stuck) = (0, 0);
+        let output = model
+            .traction_map(0.0, &y, 0, ring, |c| {
+                cells += 1;
+                if c.stick {
+                    stuck += 1;
+                }
+                assert!(c.traction.norm() <= c.bound * (1.0 + 1e-12));
+            })
+            .unwrap();
+        let expected = match ring {
+            rolldyn::RingKind::Inner => samples[0].inner,
+            rolldyn::RingKind::Outer => samples[0].outer,
+        };
+        assert_eq!(output, expected);
+        assert_eq!(cells, fastsim.strips * fastsim.elements);
+        let stick = output.creep.unwrap().stick_fraction;
+        eprintln!("B8 map ({ring:?}): {stuck}/{cells} cells stuck, stick fraction {stick:.3}");
+        assert_eq!(stuck == 0, stick == 0.0);
+    }
+}
