@@ -20,7 +20,7 @@ use rolldyn::traction::fastsim::MapCell;
 use rolldyn::traction::kalker::check_axes;
 use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim, TractionModel, TractionResult};
 use rolldyn_case::Case;
-use rolldyn_case::units::{AngularSpeed, Force, Length, Pressure, Quantity, Velocity};
+use rolldyn_case::units::{AngularSpeed, Dimension, Force, Length, Pressure, Quantity, Velocity};
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -77,32 +77,23 @@ pub struct TractionArgs {
     pub json: bool,
 }
 
-/// Runs `rolldyn traction`.
-pub fn command(args: TractionArgs) -> Result<(), Failure> {
-    let TractionArgs {
-        case,
-        ring,
-        load,
-        approach,
-        angle,
-        rolling_speed,
-        creepages,
-        slip,
-        spin,
-        semi_axes,
-        shear_modulus,
-        poisson_ratio,
-        friction,
-        map,
-        json: as_json,
-    } = args;
-    let speed = |flag: &str, t: &str| {
-        Quantity::<Velocity>::parse(t.trim())
-            .map(|q| q.si)
-            .map_err(|e| bad_arg(flag, t, e))
-    };
-    let v = speed("--rolling-speed", &rolling_speed)?;
-    let motion = match (&creepages, &slip) {
+/// A quantity given on the command line, in SI units.
+fn quantity<D: Dimension>(flag: &str, text: &str) -> Result<f64, Failure> {
+    Quantity::<D>::parse(text.trim())
+        .map(|q| q.si)
+        .map_err(|e| bad_arg(flag, text, e))
+}
+
+/// The sliding motion: `--creepages` or `--slip` (with `--spin`).
+fn motion(args: &TractionArgs) -> Result<Motion, Failure> {
+    if args.spin.is_some() && args.slip.is_none() {
+        return Err(bad_arg(
+            "--spin",
+            args.spin.as_deref().unwrap_or_default(),
+            "goes with --slip; with --creepages give φ",
+        ));
+    }
+    match (&args.creepages, &args.slip) {
         (Some(c), None) => {
             let parts: Vec<f64> = c
                 .split(',')
@@ -111,15 +102,13 @@ pub fn command(args: TractionArgs) -> Result<(), Failure> {
                 .map_err(|e| bad_arg("--creepages", c, e))?;
             match parts[..] {
                 [xi, eta, phi] if parts.iter().all(|p| p.is_finite()) => {
-                    Motion::Creepages([xi, eta, phi])
+                    Ok(Motion::Creepages([xi, eta, phi]))
                 }
-                _ => {
-                    return Err(bad_arg(
-                        "--creepages",
-                        c,
-                        "expected three finite numbers ξ,η,φ (φ in 1/m)",
-                    ));
-                }
+                _ => Err(bad_arg(
+                    "--creepages",
+                    c,
+                    "expected three finite numbers ξ,η,φ (φ in 1/m)",
+                )),
             }
         }
         (None, Some(s)) => {
@@ -127,133 +116,112 @@ pub fn command(args: TractionArgs) -> Result<(), Failure> {
             let [sx, sy] = parts[..] else {
                 return Err(bad_arg("--slip", s, "expected two speeds VX,VY"));
             };
-            let rate = spin
-                .as_deref()
-                .map(|t| {
-                    Quantity::<AngularSpeed>::parse(t)
-                        .map(|q| q.si)
-                        .map_err(|e| bad_arg("--spin", t, e))
-                })
-                .transpose()?
-                .unwrap_or(0.0);
-            Motion::Slip([speed("--slip", sx)?, speed("--slip", sy)?], rate)
+            let rate = match &args.spin {
+                Some(t) => quantity::<AngularSpeed>("--spin", t)?,
+                None => 0.0,
+            };
+            Ok(Motion::Slip(
+                [
+                    quantity::<Velocity>("--slip", sx)?,
+                    quantity::<Velocity>("--slip", sy)?,
+                ],
+                rate,
+            ))
         }
-        _ => {
-            return Err(Failure::BadInput(
-                        "give the creepages (--creepages XI,ETA,PHI) or the slip velocities (--slip VX,VY), not both".into(),
-                    ));
-        }
-    };
-    if spin.is_some() && slip.is_none() {
+        _ => Err(Failure::BadInput(
+            "give the creepages (--creepages XI,ETA,PHI) or the slip velocities (--slip VX,VY), not both".into(),
+        )),
+    }
+}
+
+/// An explicit flat contact from `--semi-axes` and the elastic constants.
+fn explicit_contact(args: &TractionArgs, axes: &str) -> Result<Contact<'static>, Failure> {
+    if args.case.case.is_some() {
         return Err(bad_arg(
-            "--spin",
-            spin.as_deref().unwrap_or_default(),
-            "goes with --slip; with --creepages give φ",
+            "--semi-axes",
+            axes,
+            "an explicit contact takes no case file",
         ));
     }
-    let force = |flag: &str, t: &str| {
-        Quantity::<Force>::parse(t)
-            .map(|q| q.si)
-            .map_err(|e| bad_arg(flag, t, e))
+    let parts: Vec<&str> = axes.split(',').collect();
+    let [along, across] = parts[..] else {
+        return Err(bad_arg(
+            "--semi-axes",
+            axes,
+            "expected ALONG,ACROSS, e.g. \"0.3 mm,2 mm\"",
+        ));
     };
+    let need = |flag: &str| Failure::BadInput(format!("{flag} is needed with --semi-axes"));
+    let load = args.load.as_deref().ok_or_else(|| need("--load"))?;
+    let shear = args
+        .shear_modulus
+        .as_deref()
+        .ok_or_else(|| need("--shear-modulus"))?;
+    Ok(Contact::Explicit {
+        along: quantity::<Length>("--semi-axes", along)?,
+        across: quantity::<Length>("--semi-axes", across)?,
+        load: quantity::<Force>("--load", load)?,
+        shear_modulus: quantity::<Pressure>("--shear-modulus", shear)?,
+        poisson_ratio: args.poisson_ratio.ok_or_else(|| need("--poisson-ratio"))?,
+        friction: args.friction.ok_or_else(|| need("--friction"))?,
+    })
+}
+
+/// The normal load of a bearing contact: `--load` or `--approach`.
+fn bearing_load(args: &TractionArgs) -> Result<Load, Failure> {
+    for (flag, given) in [
+        ("--shear-modulus", args.shear_modulus.is_some()),
+        ("--poisson-ratio", args.poisson_ratio.is_some()),
+        ("--friction", args.friction.is_some()),
+    ] {
+        if given {
+            return Err(Failure::BadInput(format!(
+                "{flag} goes with --semi-axes; with a case the materials and model.traction set it (e.g. --set 'model.traction={{ law = \"fastsim\", friction = 0.1 }}')"
+            )));
+        }
+    }
+    match (&args.load, &args.approach) {
+        (Some(t), None) => Ok(Load::Force(quantity::<Force>("--load", t)?)),
+        (None, Some(t)) => Ok(Load::Approach(quantity::<Length>("--approach", t)?)),
+        _ => Err(Failure::BadInput(
+            "give the normal load (--load) or the approach (--approach), not both".into(),
+        )),
+    }
+}
+
+/// Runs `rolldyn traction`.
+pub fn command(args: TractionArgs) -> Result<(), Failure> {
     let inputs = Inputs {
-        rolling_speed: v,
-        motion,
+        rolling_speed: quantity::<Velocity>("--rolling-speed", &args.rolling_speed)?,
+        motion: motion(&args)?,
     };
-    let loaded;
-    let contact = if let Some(axes) = &semi_axes {
-        if case.case.is_some() {
-            return Err(bad_arg(
-                "--semi-axes",
-                axes,
-                "an explicit contact takes no case file",
-            ));
-        }
-        let parts: Vec<&str> = axes.split(',').collect();
-        let [along, across] = parts[..] else {
-            return Err(bad_arg(
-                "--semi-axes",
-                axes,
-                "expected ALONG,ACROSS, e.g. \"0.3 mm,2 mm\"",
-            ));
-        };
-        let length = |t: &str| {
-            Quantity::<Length>::parse(t.trim())
-                .map(|q| q.si)
-                .map_err(|e| bad_arg("--semi-axes", axes, e))
-        };
-        let need = |flag: &str, v: Option<f64>| {
-            v.ok_or_else(|| Failure::BadInput(format!("{flag} is needed with --semi-axes")))
-        };
-        let load = need(
-            "--load",
-            load.as_deref().map(|t| force("--load", t)).transpose()?,
-        )?;
-        let g = need(
-            "--shear-modulus",
-            shear_modulus
-                .as_deref()
-                .map(|t| {
-                    Quantity::<Pressure>::parse(t)
-                        .map(|q| q.si)
-                        .map_err(|e| bad_arg("--shear-modulus", t, e))
-                })
-                .transpose()?,
-        )?;
-        Contact::Explicit {
-            along: length(along)?,
-            across: length(across)?,
-            load,
-            shear_modulus: g,
-            poisson_ratio: need("--poisson-ratio", poisson_ratio)?,
-            friction: need("--friction", friction)?,
-        }
-    } else {
-        for (flag, given) in [
-            ("--shear-modulus", shear_modulus.is_some()),
-            ("--poisson-ratio", poisson_ratio.is_some()),
-            ("--friction", friction.is_some()),
-        ] {
-            if given {
-                return Err(Failure::BadInput(format!(
-                    "{flag} goes with --semi-axes; with a case the materials and model.traction set it (e.g. --set 'model.traction={{ law = \"fastsim\", friction = 0.1 }}')"
-                )));
+    let case;
+    let contact = match &args.semi_axes {
+        Some(axes) => explicit_contact(&args, axes)?,
+        None => {
+            let load = bearing_load(&args)?;
+            let ring = match args.ring.as_str() {
+                "inner" => RingKind::Inner,
+                "outer" => RingKind::Outer,
+                _ => return Err(bad_arg("--ring", &args.ring, "expected inner or outer")),
+            };
+            let angle = parse_angle("--angle", args.angle.as_ref())?;
+            case = args.case.load()?.1;
+            Contact::Bearing {
+                case: &case,
+                ring,
+                load,
+                angle,
             }
         }
-        let ring = match ring.as_str() {
-            "inner" => rolldyn::RingKind::Inner,
-            "outer" => rolldyn::RingKind::Outer,
-            _ => return Err(bad_arg("--ring", &ring, "expected inner or outer")),
-        };
-        let load = match (&load, &approach) {
-            (Some(t), None) => Load::Force(force("--load", t)?),
-            (None, Some(t)) => Load::Approach(
-                Quantity::<Length>::parse(t)
-                    .map_err(|e| bad_arg("--approach", t, e))?
-                    .si,
-            ),
-            _ => {
-                return Err(Failure::BadInput(
-                    "give the normal load (--load) or the approach (--approach), not both".into(),
-                ));
-            }
-        };
-        let angle = parse_angle("--angle", angle.as_ref())?;
-        loaded = case.load()?.1;
-        Contact::Bearing {
-            case: &loaded,
-            ring,
-            load,
-            angle,
-        }
     };
-    let mut map_text = map.as_ref().map(|_| String::new());
+    let mut map_text = args.map.as_ref().map(|_| String::new());
     let report = evaluate(&contact, &inputs, map_text.as_mut()).map_err(Failure::BadInput)?;
-    if let (Some(path), Some(text)) = (&map, &map_text) {
+    if let (Some(path), Some(text)) = (&args.map, &map_text) {
         rolldyn_io::write_atomic(std::path::Path::new(path), text.as_bytes())
             .map_err(|e| Failure::Internal(format!("cannot write {path}: {e}")))?;
     }
-    if as_json {
+    if args.json {
         json(&report)
     } else {
         emit(&report.to_text())
