@@ -182,6 +182,11 @@ impl BearingModel {
         &self.params
     }
 
+    /// Bearing geometry.
+    pub fn geometry(&self) -> &BearingGeometry {
+        &self.geometry
+    }
+
     /// Ball mass \[kg\].
     pub fn ball_mass(&self) -> f64 {
         self.ball_mass

@@ -1,6 +1,8 @@
 //! Quasi-static solvers (MODEL §7): the static load distribution of a
 //! bearing under combined loads and the high-speed Jones–Harris
-//! equilibrium, one set of equations ([`equilibrium`]).
+//! equilibrium, one set of equations ([`equilibrium`]); and the
+//! traction-consistent equilibrium of the dynamic model's force elements,
+//! without raceway control ([`traction_control`]).
 //!
 //! Every ball contact comes from the exact torus geometry of MODEL §2.1
 //! ([`ring_contact`]), with analytic derivatives, so Newton's method and
@@ -11,9 +13,11 @@
 pub mod equilibrium;
 pub mod ring_contact;
 pub mod sweep;
+pub mod traction_control;
 
 pub use equilibrium::{
     BallSolution, Conditions, ContactSolution, Equilibrium, QuasiStaticError, QuasiStaticSolver,
     RacewayControl, SolverOptions,
 };
 pub use sweep::sweep;
+pub use traction_control::{TractionEquilibrium, TractionSolveOptions, solve_traction_consistent};

@@ -24,15 +24,30 @@ use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::Integrator;
 use rolldyn::material::Material;
-use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+use rolldyn::quasistatic::{
+    Conditions, QuasiStaticSolver, RacewayControl, SolverOptions, TractionSolveOptions,
+    solve_traction_consistent,
+};
 
-/// Mean inner and outer contact loads over 2–6 ms \[N\] and the steps.
-fn mean_loads(method: Method, relative_tolerance: f64, max_step: f64) -> (f64, f64, u64) {
+/// Mean inner and outer contact loads over 2–6 ms \[N\] and the steps,
+/// from the Jones–Harris start or, with `traction_start`, from the
+/// traction-consistent quasi-static state.
+fn mean_loads(
+    method: Method,
+    relative_tolerance: f64,
+    max_step: f64,
+    traction_start: bool,
+) -> (f64, f64, u64) {
     let g = bearing_7008c();
     let steel = Material::STEEL_52100;
     let (params, eq) = dynamics_7008c(DragParameters::default());
     let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
-    let y0 = model.state_from_equilibrium(&eq);
+    let mut y0 = model.state_from_equilibrium(&eq);
+    if traction_start {
+        y0 = solve_traction_consistent(&model, &y0, 0.0, &TractionSolveOptions::default())
+            .unwrap()
+            .state;
+    }
     let mut rk = integrator(method, &model, &y0, relative_tolerance, max_step);
     let z = g.ball_count;
     let (t_start, t_end, dt) = (2e-3, 6e-3, 1e-5);
@@ -80,7 +95,7 @@ fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
     );
     let mut by_method = Vec::new();
     for (method, rtol, max_step) in [(Method::Dopri5, 1e-5, 1e-5), (Method::Ros34pw2, 1e-3, 1e-4)] {
-        let (mean_i, mean_o, steps) = mean_loads(method, rtol, max_step);
+        let (mean_i, mean_o, steps) = mean_loads(method, rtol, max_step, false);
         eprintln!(
             "B6 ({method:?}, rtol {rtol:e}): mean Q_i {mean_i:.4} N (J-H {jh_i:.3}, {:+.2} %), Q_o {mean_o:.4} N (J-H {jh_o:.3}, {:+.2} %), {steps} steps",
             100.0 * (mean_i / jh_i - 1.0),
@@ -101,4 +116,49 @@ fn b6_dynamics_from_jones_harris_stays_within_the_raceway_control_bracket() {
         ((si - ei) / ei).abs() < 1e-3 && ((so - eo) / eo).abs() < 1e-3,
         "stiff ({si}, {so}) vs explicit ({ei}, {eo}) N"
     );
+}
+
+/// B6 closed: started from the traction-consistent quasi-static state
+/// (no raceway control; the EHL traction shares the gyroscopic moment
+/// between the contacts as the dynamics does), the dynamic loads stay at
+/// the quasi-static ones within 1 % (VALIDATION B6), with both methods.
+#[test]
+fn b6_dynamics_from_the_traction_consistent_state_stays_there() {
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let (params, eq) = dynamics_7008c(DragParameters::default());
+    let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
+    let y0 = model.state_from_equilibrium(&eq);
+    let started = std::time::Instant::now();
+    let solved =
+        solve_traction_consistent(&model, &y0, 0.0, &TractionSolveOptions::default()).unwrap();
+    let mut samples = vec![rolldyn::dynamics::ContactSample::default(); g.ball_count];
+    model.contact_samples(0.0, &solved.state, &mut samples);
+    let qs_i = samples.iter().map(|s| s.inner.load).sum::<f64>() / g.ball_count as f64;
+    let qs_o = samples.iter().map(|s| s.outer.load).sum::<f64>() / g.ball_count as f64;
+    eprintln!(
+        "B6 traction-consistent start: Q_i {qs_i:.4} N, Q_o {qs_o:.4} N (J-H outer control {:.4}, {:.4}); {} ring and {} ball iterations, residual {:.1e}, {:.1} ms",
+        eq.balls[0].inner.load,
+        eq.balls[0].outer.load,
+        solved.ring_iterations,
+        solved.ball_iterations,
+        solved.residual,
+        started.elapsed().as_secs_f64() * 1e3
+    );
+    for (method, rtol, max_step) in [(Method::Dopri5, 1e-5, 1e-5), (Method::Ros34pw2, 1e-3, 1e-4)] {
+        let (mean_i, mean_o, _) = mean_loads(method, rtol, max_step, true);
+        eprintln!(
+            "B6 from the traction state ({method:?}): mean Q_i {mean_i:.4} N ({:+.3} %), Q_o {mean_o:.4} N ({:+.3} %)",
+            100.0 * (mean_i / qs_i - 1.0),
+            100.0 * (mean_o / qs_o - 1.0),
+        );
+        assert!(
+            (mean_i / qs_i - 1.0).abs() < 0.01,
+            "{method:?}: Q_i {mean_i} vs {qs_i}"
+        );
+        assert!(
+            (mean_o / qs_o - 1.0).abs() < 0.01,
+            "{method:?}: Q_o {mean_o} vs {qs_o}"
+        );
+    }
 }

@@ -1,0 +1,339 @@
+//! Traction-consistent quasi-static equilibrium: the "quasi-static
+//! tribological model" seed 002 §3.1 starts its dynamics from, with no
+//! raceway-control hypothesis (issue 10 item 4).
+//!
+//! Jones–Harris ([`super::equilibrium`]) fixes the ball spin by raceway
+//! control: the whole gyroscopic moment is carried by the controlling
+//! contact. Here the ball angular velocity and orbital speed follow from
+//! the force and moment balance of the balls with the case's traction
+//! model (any of them: Coulomb, curve, EHL, FASTSIM), exactly as the
+//! dynamic model evaluates the contacts:
+//!
+//! * per ball j, unknowns (x, r, φ̇, ω_x, ω_r, ω_t) with ẋ = ṙ = 0, and
+//!   equations: the ball's accelerations of the dynamic model vanish,
+//!   m ẍ = F_x = 0, m(r̈ − rφ̇²) = 0, m r φ̈ = F_t = 0, ω̇ = 0 in the
+//!   azimuth frame (MODEL §1: centrifugal and gyroscopic terms included).
+//!   In planar mode the unknowns are (r, φ̇, ω_x).
+//! * the inner ring (5 DOF, planar: y, z) and an outer ring on a housing
+//!   are in equilibrium with the balls: their accelerations vanish.
+//!
+//! The ball azimuths stay those of the start (Jones–Harris) state and the
+//! cage is centred on them, turning at the mean orbital speed, so the
+//! pockets carry nothing; a whirling cage stays at its start position.
+//! Each ball is solved by damped Newton with a finite-difference Jacobian
+//! (6 × 6), the rings by an outer Newton on their displacements whose
+//! Jacobian re-solves the balls (warm-started). The residuals are scaled
+//! to forces (moments over D/2) and converge to `relative_tolerance` of
+//! the largest contact load.
+
+use super::QuasiStaticError;
+use crate::dynamics::{BearingModel, StateLayout};
+use crate::integrate::{BlockSplit, OdeSystem};
+use nalgebra::{DMatrix, DVector};
+
+/// Settings of the traction-consistent solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TractionSolveOptions {
+    /// Newton iteration limit, per ball and for the rings.
+    pub max_iterations: usize,
+    /// Converged when every residual force is below this fraction of the
+    /// largest contact load.
+    pub relative_tolerance: f64,
+}
+
+impl Default for TractionSolveOptions {
+    fn default() -> Self {
+        Self {
+            max_iterations: 60,
+            relative_tolerance: 1e-9,
+        }
+    }
+}
+
+/// A converged traction-consistent state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TractionEquilibrium {
+    /// The dynamic model's state vector at equilibrium (velocities of the
+    /// rings zero, cage turning at the mean orbital speed).
+    pub state: Vec<f64>,
+    /// Newton iterations of the ring loop.
+    pub ring_iterations: usize,
+    /// Newton iterations of all ball solves.
+    pub ball_iterations: usize,
+    /// Largest residual force relative to the largest contact load.
+    pub residual: f64,
+}
+
+/// The unknowns of ball j (offsets within its block) and their scales
+/// (used for the finite-difference steps).
+fn ball_unknowns(planar: bool) -> &'static [usize] {
+    if planar {
+        &[1, 5, 6]
+    } else {
+        &[0, 1, 5, 6, 7, 8]
+    }
+}
+
+struct Solver<'a> {
+    model: &'a BearingModel,
+    t: f64,
+    layout: StateLayout,
+    planar: bool,
+    /// Ball mass and inertia/(D/2) to turn accelerations into forces.
+    mass: f64,
+    inertia_over_radius: f64,
+    /// Finite-difference steps: position, angular speed.
+    step_position: f64,
+    step_speed: f64,
+    tolerance: f64,
+    max_iterations: usize,
+    ball_iterations: usize,
+}
+
+impl Solver<'_> {
+    /// Scaled residual of ball j: forces \[N\] (moments over D/2).
+    fn ball_residual(&self, y: &[f64], j: usize, out: &mut Vec<f64>) {
+        let mut dy = [0.0; StateLayout::BALL];
+        let mut coupling = vec![0.0; self.model.coupling_len()];
+        self.model.block_rhs(self.t, y, j, &mut dy, &mut coupling);
+        let r = y[self.layout.ball(j) + 1];
+        out.clear();
+        for &k in ball_unknowns(self.planar) {
+            // Unknown k pairs with the acceleration of its state: x → ẍ,
+            // r → r̈, φ̇ → φ̈ (times r: a force), ω → ω̇.
+            let acc = match k {
+                0 => dy[3] * self.mass,
+                1 => dy[4] * self.mass,
+                5 => dy[5] * self.mass * r,
+                _ => dy[k] * self.inertia_over_radius,
+            };
+            out.push(acc);
+        }
+    }
+
+    fn step_of(&self, k: usize) -> f64 {
+        if k <= 1 {
+            self.step_position
+        } else {
+            self.step_speed
+        }
+    }
+
+    /// Solves ball j in place; returns the final scaled residual norm.
+    fn solve_ball(&mut self, y: &mut [f64], j: usize, load_scale: f64) -> Result<f64, f64> {
+        let b = self.layout.ball(j);
+        let unknowns = ball_unknowns(self.planar);
+        let n = unknowns.len();
+        let mut res = Vec::with_capacity(n);
+        let mut trial = Vec::with_capacity(n);
+        self.ball_residual(y, j, &mut res);
+        let norm = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let mut current = norm(&res);
+        for _ in 0..self.max_iterations {
+            if current <= self.tolerance * load_scale {
+                return Ok(current);
+            }
+            self.ball_iterations += 1;
+            let mut jac = DMatrix::zeros(n, n);
+            for (col, &k) in unknowns.iter().enumerate() {
+                let h = self.step_of(k);
+                let keep = y[b + k];
+                y[b + k] = keep + h;
+                self.ball_residual(y, j, &mut trial);
+                y[b + k] = keep;
+                for row in 0..n {
+                    jac[(row, col)] = (trial[row] - res[row]) / h;
+                }
+            }
+            let Some(delta) = jac.lu().solve(&(-DVector::from_column_slice(&res))) else {
+                return Err(current);
+            };
+            let start: Vec<f64> = unknowns.iter().map(|&k| y[b + k]).collect();
+            let mut lambda = 1.0;
+            loop {
+                for (i, &k) in unknowns.iter().enumerate() {
+                    y[b + k] = start[i] + lambda * delta[i];
+                }
+                self.ball_residual(y, j, &mut trial);
+                let next = norm(&trial);
+                if next < current || lambda < 1e-3 {
+                    current = next;
+                    std::mem::swap(&mut res, &mut trial);
+                    break;
+                }
+                lambda *= 0.5;
+            }
+        }
+        if current <= self.tolerance * load_scale {
+            Ok(current)
+        } else {
+            Err(current)
+        }
+    }
+
+    /// Solves every ball; returns the largest residual.
+    fn solve_balls(&mut self, y: &mut [f64], load_scale: f64) -> Result<f64, f64> {
+        let mut worst: f64 = 0.0;
+        for j in 0..self.layout.balls {
+            worst = worst.max(self.solve_ball(y, j, load_scale)?);
+        }
+        Ok(worst)
+    }
+
+    /// Ring unknowns (state indices) with the acceleration they pair with
+    /// and the mass that turns it into a force.
+    fn ring_unknowns(&self) -> Vec<(usize, usize, f64)> {
+        let p = self.model.parameters();
+        let r = self.layout.ring();
+        let arm = 0.5 * self.model.geometry().pitch_diameter;
+        let mut list = Vec::new();
+        let translations: &[usize] = if self.planar { &[1, 2] } else { &[0, 1, 2] };
+        for &k in translations {
+            list.push((r + k, r + 5 + k, p.inner_ring_mass));
+        }
+        if !self.planar {
+            for k in [3, 4] {
+                list.push((r + k, r + 5 + k, p.inner_ring_tilt_inertia / arm));
+            }
+        }
+        if let Some(outer) = &p.outer_ring {
+            let o = self.layout.outer();
+            for k in [0, 1] {
+                list.push((o + k, o + 2 + k, outer.mass));
+            }
+        }
+        list
+    }
+
+    fn ring_residual(&self, y: &[f64], unknowns: &[(usize, usize, f64)]) -> Vec<f64> {
+        let mut dy = vec![0.0; y.len()];
+        self.model.rhs(self.t, y, &mut dy);
+        unknowns.iter().map(|&(_, acc, m)| dy[acc] * m).collect()
+    }
+}
+
+/// Largest contact load of state `y` (at least 1 N).
+fn largest_load(model: &BearingModel, t: f64, y: &[f64]) -> f64 {
+    let mut samples = vec![crate::dynamics::ContactSample::default(); model.layout().balls];
+    model.contact_samples(t, y, &mut samples);
+    samples
+        .iter()
+        .map(|s| s.inner.load.max(s.outer.load))
+        .fold(1.0, f64::max)
+}
+
+/// The traction-consistent equilibrium of `model` at time `t` (speed and
+/// loads of that instant), starting from `start` (e.g. the Jones–Harris
+/// state, [`BearingModel::state_from_equilibrium`]).
+pub fn solve_traction_consistent(
+    model: &BearingModel,
+    start: &[f64],
+    t: f64,
+    options: &TractionSolveOptions,
+) -> Result<TractionEquilibrium, QuasiStaticError> {
+    let layout = model.layout();
+    let g = model.geometry();
+    let mut y = start.to_vec();
+    // Rings and balls at rest in their frames; cage centred on the balls.
+    for j in 0..layout.balls {
+        let b = layout.ball(j);
+        y[b + 3] = 0.0;
+        y[b + 4] = 0.0;
+    }
+    let r = layout.ring();
+    y[r + 5..r + 10].fill(0.0);
+    let o = layout.outer();
+    y[o + 2..o + 4].fill(0.0);
+    let c = layout.cage();
+    y[c + 2] = y[layout.ball(0) + 2];
+    y[c + 3] = 0.0;
+    y[c + 4] = 0.0;
+    let omega_i = model.parameters().speed.speed_at(t);
+    let mass = model.ball_mass();
+    let mut solver = Solver {
+        model,
+        t,
+        layout,
+        planar: model.parameters().planar,
+        mass,
+        inertia_over_radius: mass * g.ball_diameter * g.ball_diameter
+            / 10.0
+            / (0.5 * g.ball_diameter),
+        step_position: 1e-6 * g.ball_diameter * 1e-3,
+        step_speed: 1e-8 * (omega_i.abs() * g.pitch_diameter / g.ball_diameter).max(1.0),
+        tolerance: options.relative_tolerance,
+        max_iterations: options.max_iterations,
+        ball_iterations: 0,
+    };
+    let failed = |residual: f64, iterations: usize| QuasiStaticError::NoConvergence {
+        iterations,
+        residual,
+        speed_rpm: omega_i * 60.0 / std::f64::consts::TAU,
+    };
+    let load_scale = largest_load(model, t, &y);
+    solver
+        .solve_balls(&mut y, load_scale)
+        .map_err(|res| failed(res / load_scale, solver.ball_iterations))?;
+    let unknowns = solver.ring_unknowns();
+    let n = unknowns.len();
+    let norm = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let mut res = solver.ring_residual(&y, &unknowns);
+    let mut ring_iterations = 0;
+    let tolerance = options.relative_tolerance * load_scale;
+    while norm(&res) > tolerance {
+        if ring_iterations >= options.max_iterations {
+            return Err(failed(norm(&res) / load_scale, ring_iterations));
+        }
+        ring_iterations += 1;
+        let mut jac = DMatrix::zeros(n, n);
+        for (col, &(k, _, _)) in unknowns.iter().enumerate() {
+            let tilt = k == r + 3 || k == r + 4;
+            let h = if tilt {
+                solver.step_position / (0.5 * g.pitch_diameter)
+            } else {
+                solver.step_position
+            };
+            let mut yp = y.clone();
+            yp[k] += h;
+            solver
+                .solve_balls(&mut yp, load_scale)
+                .map_err(|res| failed(res / load_scale, solver.ball_iterations))?;
+            let rp = solver.ring_residual(&yp, &unknowns);
+            for row in 0..n {
+                jac[(row, col)] = (rp[row] - res[row]) / h;
+            }
+        }
+        let Some(delta) = jac.lu().solve(&(-DVector::from_column_slice(&res))) else {
+            return Err(failed(norm(&res) / load_scale, ring_iterations));
+        };
+        let base = y.clone();
+        let mut lambda = 1.0;
+        loop {
+            y.copy_from_slice(&base);
+            for (i, &(k, _, _)) in unknowns.iter().enumerate() {
+                y[k] += lambda * delta[i];
+            }
+            let solved = solver.solve_balls(&mut y, load_scale);
+            let next = solver.ring_residual(&y, &unknowns);
+            if solved.is_ok() && norm(&next) < norm(&res) {
+                res = next;
+                break;
+            }
+            if lambda < 1e-3 {
+                return Err(failed(norm(&res) / load_scale, ring_iterations));
+            }
+            lambda *= 0.5;
+        }
+    }
+    let mean_orbit = (0..layout.balls)
+        .map(|j| y[layout.ball(j) + 5])
+        .sum::<f64>()
+        / layout.balls as f64;
+    y[c + 5] = mean_orbit;
+    Ok(TractionEquilibrium {
+        state: y,
+        ring_iterations,
+        ball_iterations: solver.ball_iterations,
+        residual: norm(&res) / load_scale,
+    })
+}
