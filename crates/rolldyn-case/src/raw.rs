@@ -578,7 +578,8 @@ pub struct RawSolver {
     pub integrator: Option<IntegratorChoice>,
     /// Step of the fixed-step integrator (rk4).
     pub time_step: Option<Quantity<Time>>,
-    /// Initial state: "jones_harris" (default; seed 002 §3.1) or "pure_rolling".
+    /// Initial state: "jones_harris" (default), "quasistatic_traction"
+    /// (seed 002 §3.1) or "pure_rolling".
     pub start: Option<StartChoice>,
 }
 
@@ -606,6 +607,10 @@ pub enum StartChoice {
     JonesHarris,
     /// Balls at the pitch circle with pure-rolling speeds.
     PureRolling,
+    /// The traction-consistent quasi-static state: ball speeds from the
+    /// force and moment balance with the case's traction model (seed 002
+    /// §3.1's tribological start), from the Jones–Harris solution.
+    QuasistaticTraction,
 }
 
 /// Output settings (read by `rolldyn run`).

@@ -7,6 +7,7 @@ mod quasistatic;
 mod report;
 mod run;
 mod traction;
+mod traction_equilibrium;
 
 use clap::{Args, Parser, Subcommand};
 use rolldyn_case::units::{Angle, Force, Quantity};
@@ -85,7 +86,8 @@ enum Command {
         #[command(flatten)]
         case: CaseArgs,
         /// Raceway control: outer, inner or harris (default: the case's
-        /// model.raceway_control, else outer).
+        /// model.raceway_control, else outer); or traction: ball speeds from
+        /// the force and moment balance with the case's traction model.
         #[arg(long, value_name = "CONTROL")]
         control: Option<String>,
         /// Sweep a variable: speed=0rpm..20000rpm/11 (linear range) or
@@ -281,12 +283,18 @@ fn run(cli: Cli) -> Result<(), Failure> {
             output,
             json: as_json,
         } => {
+            let traction_control = control.as_deref() == Some("traction");
             let control = control
+                .filter(|_| !traction_control)
                 .map(|c| match c.as_str() {
                     "outer" => Ok(rolldyn::quasistatic::RacewayControl::Outer),
                     "inner" => Ok(rolldyn::quasistatic::RacewayControl::Inner),
                     "harris" => Ok(rolldyn::quasistatic::RacewayControl::Harris),
-                    _ => Err(bad_arg("--control", &c, "expected outer, inner or harris")),
+                    _ => Err(bad_arg(
+                        "--control",
+                        &c,
+                        "expected outer, inner, harris or traction",
+                    )),
                 })
                 .transpose()?;
             let sweeps = sweep
@@ -294,6 +302,22 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 .map(|s| quasistatic::parse_sweep(s).map_err(|e| bad_arg("--sweep", s, e)))
                 .collect::<Result<Vec<_>, _>>()?;
             let (_, case) = case.load()?;
+            if traction_control {
+                if !sweeps.is_empty() {
+                    return Err(bad_arg(
+                        "--control",
+                        "traction",
+                        "not with --sweep (solve the points one by one)",
+                    ));
+                }
+                let report = traction_equilibrium::TractionEquilibriumReport::new(&case)
+                    .map_err(Failure::BadInput)?;
+                return if as_json {
+                    json(&report)
+                } else {
+                    emit(&report.to_text())
+                };
+            }
             if sweeps.is_empty() {
                 let solver = quasistatic::solver(&case).map_err(Failure::BadInput)?;
                 let conditions = quasistatic::conditions(&case, control);

@@ -295,6 +295,10 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
                 })?;
             model.state_from_equilibrium(&eq)
         }
+        StartChoice::QuasistaticTraction => {
+            crate::traction_equilibrium::traction_state(case, &model, 0.0)
+                .map_err(|e| format!("solver.start = \"quasistatic_traction\": {e}"))?
+        }
     };
     let relative_tolerance = case
         .relative_tolerance

@@ -1,0 +1,65 @@
+//! `cargo bench -p rolldyn-cli --bench traction_quasistatic`: the
+//! traction-consistent quasi-static solve (no raceway control) of the
+//! 7218B preset (16 balls, FASTSIM μ = 0.1, F_x 10 kN) from its
+//! Jones–Harris solution, on one core; median of 7 solves. Issue 10
+//! target: ≤ 5 ms. Figures in docs/performance.md.
+
+use rolldyn::dynamics::BearingModel;
+use rolldyn::operating::SpeedProfile;
+use rolldyn::quasistatic::{
+    Conditions, QuasiStaticSolver, SolverOptions, TractionSolveOptions, solve_traction_consistent,
+};
+use rolldyn_case::{load_case, presets};
+use std::time::Instant;
+
+fn main() {
+    let preset = presets::find("7218B").expect("7218B preset");
+    let case = load_case("7218B", preset.text, &[]).expect("preset loads");
+    let g = &case.bearing.geometry;
+    let (ball, rings) = (
+        &case.materials.ball.material,
+        &case.materials.rings.material,
+    );
+    let qs = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness).expect("tables");
+    for rpm in [1000.0, 10_000.0] {
+        let speed = rpm * std::f64::consts::TAU / 60.0;
+        let mut params = case.dynamics_parameters().expect("dynamic case");
+        params.speed = SpeedProfile::Constant(speed);
+        let model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
+            .expect("model");
+        let eq = qs
+            .solve(
+                &Conditions {
+                    loads: params.loads.at(0.0),
+                    inner_speed: speed,
+                    control: case.raceway_control,
+                },
+                &SolverOptions::default(),
+            )
+            .expect("Jones–Harris");
+        let start = model.state_from_equilibrium(&eq);
+        let mut times: Vec<(f64, usize, usize)> = (0..7)
+            .map(|_| {
+                let t = Instant::now();
+                let s = solve_traction_consistent(
+                    &model,
+                    &start,
+                    0.0,
+                    &TractionSolveOptions::default(),
+                )
+                .expect("converges");
+                (
+                    t.elapsed().as_secs_f64(),
+                    s.ring_iterations,
+                    s.ball_iterations,
+                )
+            })
+            .collect();
+        times.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let (t, ring, balls) = times[3];
+        println!(
+            "7218B traction-consistent, {rpm:>6.0} rpm, F_x 10 kN: {:>8.2} ms ({ring} ring, {balls} ball Newton iterations)",
+            t * 1e3
+        );
+    }
+}
