@@ -3,6 +3,10 @@
 //! 10 000 rpm/s to 10 000 rpm (1.4 s), held to 2.5 s, with Kalker's
 //! FASTSIM at every ball–raceway contact, friction μ = 0.001 and 0.1.
 //!
+//! Start: the traction-consistent quasi-static state at 1000 rpm (seed
+//! 002 §3.1's tribological start) where it exists (μ = 0.1), else
+//! Jones–Harris (μ = 0.001: the balls have no rolling equilibrium).
+//!
 //! `cargo run --release --example seed002 [-- DURATION_S [OUT_DIR]]`
 //! (default 2.5 s, `examples/seed002/out`). Writes per μ a time series CSV
 //! (cage speed ratio against its pure-rolling value, creepages, stick
@@ -12,7 +16,9 @@
 use rolldyn::RingKind;
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::{ROS34PW2, Rosenbrock, RunEnd, run};
-use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
+use rolldyn::quasistatic::{
+    Conditions, QuasiStaticSolver, SolverOptions, TractionSolveOptions, solve_traction_consistent,
+};
 use rolldyn_case::{Override, load_case, presets};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -86,7 +92,20 @@ fn simulate(mu: f64, duration: f64, out: &Path) -> Result<Vec<Row>, String> {
             &SolverOptions::default(),
         )
         .map_err(|e| e.to_string())?;
-    let y0 = model.state_from_equilibrium(&eq);
+    // Seed 002's tribological start: the traction-consistent state; with
+    // μ = 0.001 the balls have none (the gyroscopic moment exceeds the
+    // friction), and the run starts from Jones–Harris.
+    let jones_harris = model.state_from_equilibrium(&eq);
+    let (y0, start) = match solve_traction_consistent(
+        &model,
+        &jones_harris,
+        0.0,
+        &TractionSolveOptions::default(),
+    ) {
+        Ok(s) => (s.state, "traction-consistent quasi-static".to_string()),
+        Err(e) => (jones_harris, format!("Jones–Harris ({e})")),
+    };
+    eprintln!("μ = {mu}: start from the {start}");
     let mut solver = Rosenbrock::new(&ROS34PW2, 1e-3, 1e-4, None, &model, 0.0, &y0)
         .map_err(|e| e.to_string())?;
     let balls = g.ball_count;

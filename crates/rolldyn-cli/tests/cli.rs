@@ -793,3 +793,119 @@ fn fastsim_run_records_creepages() {
     std::fs::remove_dir_all(&dir).ok();
     std::fs::remove_dir_all(&plain).ok();
 }
+
+/// `quasistatic --control traction` (no raceway control): stable keys, a
+/// cage speed between the inner- and outer-control Jones–Harris values,
+/// FASTSIM stick fractions; refused with --sweep; a clear error where the
+/// balls have no rolling equilibrium; and the run start from it.
+#[test]
+fn traction_consistent_quasistatic() {
+    let r = json(&["quasistatic", "--control", "traction", "--json"], None);
+    assert_eq!(
+        keys(&r),
+        [
+            "axial_displacement_m",
+            "balls",
+            "cage_speed_ratio",
+            "cage_speed_rpm",
+            "force_x_n",
+            "force_y_n",
+            "force_z_n",
+            "raceway_control",
+            "radial_displacement_y_m",
+            "radial_displacement_z_m",
+            "speed_rpm",
+            "tilt_y_rad",
+            "tilt_z_rad",
+            "traction_law"
+        ]
+    );
+    assert_eq!(
+        keys(&r["balls"][0]),
+        [
+            "attitude_deg",
+            "azimuth_deg",
+            "contact_angle_inner_deg",
+            "contact_angle_outer_deg",
+            "load_inner_n",
+            "load_outer_n",
+            "orbital_speed_rpm",
+            "slide_to_roll_inner",
+            "slide_to_roll_outer",
+            "spin_to_roll_inner",
+            "spin_to_roll_outer",
+            "stick_fraction_inner",
+            "stick_fraction_outer",
+            "yaw_deg"
+        ]
+    );
+    let csr = r["cage_speed_ratio"].as_f64().unwrap();
+    let jh = |control: &str| {
+        json(&["quasistatic", "--control", control, "--json"], None)["cage_speed_ratio"]
+            .as_f64()
+            .unwrap()
+    };
+    let (inner, outer) = (jh("inner"), jh("outer"));
+    assert!(
+        csr > inner.min(outer) && csr < inner.max(outer),
+        "{csr} outside [{inner}, {outer}]"
+    );
+    let f = json(
+        &[
+            "quasistatic",
+            "--control",
+            "traction",
+            "--set",
+            FASTSIM,
+            "--json",
+        ],
+        None,
+    );
+    assert_eq!(f["traction_law"], "fastsim");
+    assert!(f["balls"][0]["stick_fraction_outer"].as_f64().is_some());
+
+    let o = rolldyn(
+        &[
+            "quasistatic",
+            "--control",
+            "traction",
+            "--sweep",
+            "speed=1000rpm,2000rpm",
+        ],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("not with --sweep"), "{}", stderr(&o));
+    let low = "[bearing]\npreset = \"7218B\"\n[operating]\nspeed = \"1000 rpm\"\nforce_x = \"10 kN\"\n[model]\ntraction = { law = \"fastsim\", friction = 0.001 }\n";
+    let o = rolldyn(&["quasistatic", "-", "--control", "traction"], Some(low));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("no traction-consistent equilibrium"),
+        "{}",
+        stderr(&o)
+    );
+
+    let dir = temp_dir("traction-start");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(
+        &[
+            "run",
+            "--set",
+            "solver.start=quasistatic_traction",
+            "--duration",
+            "1 ms",
+            "-o",
+            &d,
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    // Started at equilibrium, the loads stay (the cage's guide-land drag,
+    // which the quasi-static state leaves out, slows the cage by ~0.05 %).
+    let mean = summary["mean_load_inner_n"].as_f64().unwrap();
+    let qs = r["balls"][0]["load_inner_n"].as_f64().unwrap();
+    assert!((mean / qs - 1.0).abs() < 1e-3, "{mean} vs {qs}");
+    std::fs::remove_dir_all(&dir).ok();
+}
