@@ -28,6 +28,7 @@
 //! L₁ = 8a_r/(3 G C₁₁),  L₂ = 8a_r/(3 G C₂₂),  L₃ = π a_r √(a_r/b_r)/(4 G C₂₃)
 //! L  = (L₁|ξ| + L₂|η| + L₃ c|φ|) / √(ξ² + η² + c²φ²),   c = √(a_r b_r)
 //! ```
+//! (weights smoothed by [`WEIGHT_SMOOTHING`] so that L is differentiable)
 //! with Kalker's C_ij ([`super::kalker`]) and the combined shear modulus G
 //! and Poisson ratio ν of the two bodies. The ellipse is cut into `strips`
 //! across the rolling direction (midpoints y_i), each into `elements` of
@@ -79,6 +80,13 @@ use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use nalgebra::{Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
+
+/// Relative smoothing of the weights of Kalker's L: |ξ| → √(ξ² + ε²)
+/// (η and cφ alike) with ε = 1e-4 √(ξ² + η² + c²φ²), so that the
+/// tractions are differentiable where one creepage changes sign while
+/// others do not (the stiff integrator's and the quasi-static solver's
+/// Jacobians; a kink there stalls Newton). It changes L by < 0.03 %.
+pub const WEIGHT_SMOOTHING: f64 = 1e-4;
 
 /// Strips marched together (instruction-level parallelism).
 const LANES: usize = 8;
@@ -395,9 +403,14 @@ impl Fastsim {
                 let slip_x = s_x - depth * w_y;
                 let slip_y = s_y + depth * w_x;
                 let (xi, eta) = (slip_x / speed, slip_y / speed);
+                // Kalker's weights |ξ|, |η|, c|φ|, smoothed over
+                // WEIGHT_SMOOTHING of their norm so that L is
+                // differentiable where one creepage changes sign.
                 let norm = (xi * xi + eta * eta + cc * cc * phi * phi).sqrt();
                 let flexibility = if norm > 0.0 {
-                    (l1 * xi.abs() + l2 * eta.abs() + l3 * cc * phi.abs()) / norm
+                    let eps = WEIGHT_SMOOTHING * norm;
+                    let (wx, wy, ws) = (xi.hypot(eps), eta.hypot(eps), (cc * phi).hypot(eps));
+                    (l1 * wx + l2 * wy + l3 * ws) / (wx * wx + wy * wy + ws * ws).sqrt()
                 } else {
                     l1
                 };
