@@ -1,11 +1,11 @@
 //! `cargo bench -p rolldyn-cli --bench traction_quasistatic`: the
 //! traction-consistent quasi-static solve (no raceway control) of the
-//! 7218B preset (16 balls, FASTSIM μ = 0.1, F_x 10 kN) from its
+//! 7218B preset (16 balls, FASTSIM μ = 0.1, F_x 10 kN, and with F_z 5 kN) from its
 //! Jones–Harris solution, on one core; median of 7 solves. Issue 10
 //! target: ≤ 5 ms. Figures in docs/performance.md.
 
 use rolldyn::dynamics::BearingModel;
-use rolldyn::operating::SpeedProfile;
+use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
 use rolldyn::quasistatic::{
     Conditions, QuasiStaticSolver, SolverOptions, TractionSolveOptions, solve_traction_consistent,
 };
@@ -21,10 +21,14 @@ fn main() {
         &case.materials.rings.material,
     );
     let qs = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness).expect("tables");
-    for rpm in [1000.0, 10_000.0] {
+    for (rpm, radial) in [(1000.0, 0.0), (10_000.0, 0.0), (10_000.0, 5e3)] {
         let speed = rpm * std::f64::consts::TAU / 60.0;
         let mut params = case.dynamics_parameters().expect("dynamic case");
         params.speed = SpeedProfile::Constant(speed);
+        params.loads = LoadProfile::Constant(Loads {
+            force: [10e3, 0.0, radial],
+            moment: [0.0; 2],
+        });
         let model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
             .expect("model");
         let eq = qs
@@ -58,7 +62,8 @@ fn main() {
         times.sort_by(|a, b| a.0.total_cmp(&b.0));
         let (t, ring, balls) = times[3];
         println!(
-            "7218B traction-consistent, {rpm:>6.0} rpm, F_x 10 kN: {:>8.2} ms ({ring} ring, {balls} ball Newton iterations)",
+            "7218B traction-consistent, {rpm:>6.0} rpm, F_x 10 kN, F_z {:.0} kN: {:>8.2} ms ({ring} ring, {balls} ball Newton iterations)",
+            radial * 1e-3,
             t * 1e3
         );
     }

@@ -318,9 +318,31 @@ pub fn solve_traction_consistent(
         speed_rpm: omega_i * 60.0 / std::f64::consts::TAU,
     };
     let load_scale = largest_load(model, t, &y);
-    solver
-        .solve_balls(&mut y, load_scale)
-        .map_err(|res| failed(res / load_scale, solver.ball_iterations))?;
+    // First solve: each ball starts from its Jones–Harris state moved by
+    // the correction its neighbour needed, with the neighbour's Jacobian
+    // (the balls' states vary smoothly around the bearing); if that fails,
+    // from the Jones–Harris state itself.
+    let unknowns_ball = ball_unknowns(solver.planar);
+    for j in 0..layout.balls {
+        let b = layout.ball(j);
+        if j > 0 {
+            let prev = layout.ball(j - 1);
+            for &k in unknowns_ball {
+                y[b + k] += y[prev + k] - start[prev + k];
+            }
+            solver.jacobians[j] = solver.jacobians[j - 1].clone();
+            if solver.solve_ball(&mut y, j, load_scale).is_ok() {
+                continue;
+            }
+            for &k in unknowns_ball {
+                y[b + k] = start[b + k];
+            }
+            solver.jacobians[j] = None;
+        }
+        solver
+            .solve_ball(&mut y, j, load_scale)
+            .map_err(|res| failed(res / load_scale, solver.ball_iterations))?;
+    }
     let unknowns = solver.ring_unknowns();
     let n = unknowns.len();
     let norm = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
