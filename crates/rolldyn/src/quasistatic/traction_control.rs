@@ -23,9 +23,9 @@
 //! Each ball is solved by damped Newton with a finite-difference Jacobian
 //! (6 × 6), the rings by an outer Newton on their displacements whose
 //! Jacobian re-solves the balls (warm-started); both Jacobians are reused
-//! (chord steps) while they keep the residual falling fast. The residuals are scaled
-//! to forces (moments over D/2) and converge to `relative_tolerance` of
-//! the largest contact load.
+//! (chord steps) while they keep the residual falling fast. The residuals
+//! are scaled to forces (moments over D/2) and converge to
+//! `relative_tolerance` of the largest contact load.
 
 use super::QuasiStaticError;
 use crate::dynamics::{BearingModel, StateLayout};
@@ -65,8 +65,7 @@ pub struct TractionEquilibrium {
     pub residual: f64,
 }
 
-/// The unknowns of ball j (offsets within its block) and their scales
-/// (used for the finite-difference steps).
+/// The unknowns of a ball: offsets within its state block.
 fn ball_unknowns(planar: bool) -> &'static [usize] {
     if planar {
         &[1, 5, 6]
@@ -301,10 +300,9 @@ pub fn solve_traction_consistent(
         layout,
         planar: model.parameters().planar,
         mass,
-        inertia_over_radius: mass * g.ball_diameter * g.ball_diameter
-            / 10.0
-            / (0.5 * g.ball_diameter),
-        step_position: 1e-6 * g.ball_diameter * 1e-3,
+        // I/(D/2) with I = m D²/10.
+        inertia_over_radius: mass * g.ball_diameter / 5.0,
+        step_position: 1e-9 * g.ball_diameter,
         step_speed: 1e-8 * (omega_i.abs() * g.pitch_diameter / g.ball_diameter).max(1.0),
         // The ring sums the balls' residual forces: solve each ball tighter.
         tolerance: options.relative_tolerance / layout.balls as f64,
