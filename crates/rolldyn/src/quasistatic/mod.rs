@@ -11,6 +11,7 @@
 //! warm-started, deterministically.
 
 pub mod equilibrium;
+pub mod error;
 pub mod ring_contact;
 pub mod sweep;
 pub mod traction_control;
