@@ -430,3 +430,121 @@ pub fn solve_traction_consistent(
         residual: norm(&res) / load_scale,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cage::{CageParameters, PocketLaw, PocketShape};
+    use crate::contact::{HertzModel, NormalForceLaw};
+    use crate::dynamics::{DragParameters, DynamicsParameters, Support};
+    use crate::material::Material;
+    use crate::operating::{LoadProfile, Loads, SpeedProfile};
+    use crate::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+    use crate::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};
+    use crate::{BearingGeometry, Clearance, GeometrySpec};
+
+    /// An angular-contact bearing (D 7.94 mm, 18 balls, 15°), 10 000 rpm,
+    /// F_x 200 N, Coulomb traction μ 0.1 on the 12 × 6 grid.
+    #[test]
+    fn solution_is_a_fixed_point_of_the_dynamics() {
+        let g = BearingGeometry::new(&GeometrySpec {
+            ball_diameter: 7.938e-3,
+            ball_count: 18,
+            pitch_diameter: 54e-3,
+            inner_groove_curvature: 0.56,
+            outer_groove_curvature: 0.53,
+            clearance: Clearance::FreeContactAngle(15f64.to_radians()),
+            preload: false,
+        })
+        .unwrap();
+        let steel = Material::STEEL_52100;
+        let speed = 10_000.0 * std::f64::consts::TAU / 60.0;
+        let loads = Loads {
+            force: [200.0, 0.0, 0.0],
+            moment: [0.0; 2],
+        };
+        let friction = ModifiedCoulomb {
+            friction: 0.1,
+            stick_speed: 0.0,
+            full_speed: 1e-3,
+        };
+        let params = DynamicsParameters {
+            inner_ring_mass: 0.5,
+            inner_ring_tilt_inertia: 1e-4,
+            cage: CageParameters {
+                mass: 0.003,
+                inertia: 2e-6,
+                pitch_radius: 27e-3,
+                pocket_clearance: 0.2e-3,
+                pocket_shape: PocketShape::Cylindrical,
+                pocket_law: PocketLaw::Linear {
+                    stiffness: 1e7,
+                    damping: 20.0,
+                },
+                unbalance: 0.0,
+                pocket_friction: friction,
+                whirl: false,
+                guide: None,
+            },
+            normal_law: NormalForceLaw::Hertz,
+            impact_speed_floor: 1e-3,
+            traction: TractionModel::ModifiedCoulomb(friction),
+            traction_integration: TractionIntegration::default(),
+            speed: SpeedProfile::Constant(speed),
+            loads: LoadProfile::Constant(loads),
+            gravity: 0.0,
+            planar: false,
+            drag: DragParameters::default(),
+            inner_support: Support::default(),
+            outer_ring: None,
+            rolling_hysteresis: 0.0,
+        };
+        let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
+        let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
+        let jh = |control| {
+            qs.solve(
+                &Conditions {
+                    loads,
+                    inner_speed: speed,
+                    control,
+                },
+                &SolverOptions::default(),
+            )
+            .unwrap()
+        };
+        let (outer, inner) = (jh(RacewayControl::Outer), jh(RacewayControl::Inner));
+        let start = model.state_from_equilibrium(&outer);
+        let solved =
+            solve_traction_consistent(&model, &start, 0.0, &TractionSolveOptions::default())
+                .unwrap();
+        let y = &solved.state;
+        let mut dy = vec![0.0; y.len()];
+        model.rhs(0.0, y, &mut dy);
+        let l = model.layout();
+        // Every ball and the ring at rest in their frames: accelerations
+        // times mass below 1e-7 of the ~30 N contact loads.
+        let m = model.ball_mass();
+        for j in 0..l.balls {
+            let b = l.ball(j);
+            for k in 3..9 {
+                assert!(
+                    dy[b + k].abs() * m < 3e-6,
+                    "ball {j} state {k}: {}",
+                    dy[b + k]
+                );
+            }
+        }
+        assert!(dy[l.ring() + 5].abs() * 0.5 < 3e-6);
+        // Pure axial load: every ball alike; the cage between the two
+        // raceway-control hypotheses.
+        for j in 1..l.balls {
+            assert!((y[l.ball(j) + 5] - y[l.ball(0) + 5]).abs() < 1e-9 * speed);
+        }
+        let cage = y[l.cage() + 5];
+        let (lo, hi) = (
+            inner.cage_speed().min(outer.cage_speed()),
+            inner.cage_speed().max(outer.cage_speed()),
+        );
+        assert!(cage > lo && cage < hi, "{cage} outside [{lo}, {hi}]");
+    }
+}
