@@ -19,6 +19,7 @@ use rolldyn::integrate::{ROS34PW2, Rosenbrock, RunEnd, run};
 use rolldyn::quasistatic::{
     Conditions, QuasiStaticSolver, SolverOptions, TractionSolveOptions, solve_traction_consistent,
 };
+use rolldyn::traction::fastsim::MapCell;
 use rolldyn_case::{Override, load_case, presets};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -153,19 +154,9 @@ fn simulate(mu: f64, duration: f64, out: &Path) -> Result<Vec<Row>, String> {
             });
             if next_map < MAP_TIMES.len() && t >= MAP_TIMES[next_map] {
                 for ring in [RingKind::Inner, RingKind::Outer] {
-                    let mut text =
-                        String::from("x_m,y_m,traction_x_pa,traction_y_pa,bound_pa,state\n");
+                    let mut text = format!("{}\n", MapCell::CSV_HEADER);
                     m.traction_map(t, y, 0, ring, |c| {
-                        let _ = writeln!(
-                            text,
-                            "{:e},{:e},{:e},{:e},{:e},{}",
-                            c.x,
-                            c.y,
-                            c.traction.x,
-                            c.traction.y,
-                            c.bound,
-                            if c.stick { "stick" } else { "slip" }
-                        );
+                        let _ = writeln!(text, "{}", c.csv_row());
                     });
                     maps.push((format!("map_mu{mu}_t{t:.2}_{}.csv", ring.name()), text));
                 }

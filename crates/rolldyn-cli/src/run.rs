@@ -4,13 +4,13 @@
 //! integration failure (with what was computed). A progress bar shows on a
 //! terminal. Keys are documented in docs/cli.md.
 
+use crate::traction_equilibrium::{jones_harris_state, traction_state};
 use indicatif::{ProgressBar, ProgressStyle};
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{
     ExplicitRk, IntegrationStats, ROS34PW2, Rosenbrock, RunEnd, Solver, StepControl, run,
 };
-use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
 use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
 use rolldyn_case::raw::{IntegratorChoice, StartChoice};
@@ -280,25 +280,11 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
         .map_err(|e| e.to_string())?;
     let y0 = match case.start {
         StartChoice::PureRolling => model.pure_rolling_state([0.0; 5]),
-        StartChoice::JonesHarris => {
-            let qs = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
-                .map_err(|e| e.to_string())?;
-            let conditions = Conditions {
-                loads: params.loads.at(0.0),
-                inner_speed: params.speed.speed_at(0.0),
-                control: case.raceway_control,
-            };
-            let eq = qs
-                .solve(&conditions, &SolverOptions::default())
-                .map_err(|e| {
-                    format!("solver.start = \"jones_harris\": {e}; try start = \"pure_rolling\"")
-                })?;
-            model.state_from_equilibrium(&eq)
-        }
-        StartChoice::QuasistaticTraction => {
-            crate::traction_equilibrium::traction_state(case, &model, 0.0)
-                .map_err(|e| format!("solver.start = \"quasistatic_traction\": {e}"))?
-        }
+        StartChoice::JonesHarris => jones_harris_state(case, &model, 0.0).map_err(|e| {
+            format!("solver.start = \"jones_harris\": {e}; try start = \"pure_rolling\"")
+        })?,
+        StartChoice::QuasistaticTraction => traction_state(case, &model, 0.0)
+            .map_err(|e| format!("solver.start = \"quasistatic_traction\": {e}"))?,
     };
     let relative_tolerance = case
         .relative_tolerance

@@ -430,7 +430,8 @@ pub fn evaluate(
     let mut cells = 0;
     let result: TractionResult = match (&model, map) {
         (TractionModel::Fastsim(f), Some(text)) => {
-            text.push_str("x_m,y_m,traction_x_pa,traction_y_pa,bound_pa,state\n");
+            text.push_str(MapCell::CSV_HEADER);
+            text.push('\n');
             f.evaluate_mapped(
                 &patch,
                 &Vector3::zeros(),
@@ -439,16 +440,7 @@ pub fn evaluate(
                 &conditions,
                 |c: &MapCell| {
                     cells += 1;
-                    let _ = writeln!(
-                        text,
-                        "{:e},{:e},{:e},{:e},{:e},{}",
-                        c.x,
-                        c.y,
-                        c.traction.x,
-                        c.traction.y,
-                        c.bound,
-                        if c.stick { "stick" } else { "slip" }
-                    );
+                    let _ = writeln!(text, "{}", c.csv_row());
                 },
             )
         }

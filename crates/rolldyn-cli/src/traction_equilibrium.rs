@@ -14,17 +14,17 @@ use std::fmt::Write as _;
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
 
-/// The traction-consistent state of `model` at time `t`, from the
-/// Jones–Harris solution of the case at that instant's speed and loads.
-pub fn traction_state(case: &Case, model: &BearingModel, t: f64) -> Result<Vec<f64>, String> {
-    let g = &case.bearing.geometry;
-    let (ball, rings) = (
+/// The Jones–Harris state of `model` at time `t` (that instant's speed and
+/// loads, the case's raceway control).
+pub fn jones_harris_state(case: &Case, model: &BearingModel, t: f64) -> Result<Vec<f64>, String> {
+    let p = model.parameters();
+    let qs = QuasiStaticSolver::new(
+        &case.bearing.geometry,
         &case.materials.ball.material,
         &case.materials.rings.material,
-    );
-    let p = model.parameters();
-    let qs = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
-        .map_err(|e| e.to_string())?;
+        case.contact_stiffness,
+    )
+    .map_err(|e| e.to_string())?;
     let eq = qs
         .solve(
             &Conditions {
@@ -34,8 +34,15 @@ pub fn traction_state(case: &Case, model: &BearingModel, t: f64) -> Result<Vec<f
             },
             &SolverOptions::default(),
         )
+        .map_err(|e| e.to_string())?;
+    Ok(model.state_from_equilibrium(&eq))
+}
+
+/// The traction-consistent state of `model` at time `t`, from the
+/// Jones–Harris solution of the case at that instant's speed and loads.
+pub fn traction_state(case: &Case, model: &BearingModel, t: f64) -> Result<Vec<f64>, String> {
+    let start = jones_harris_state(case, model, t)
         .map_err(|e| format!("the Jones–Harris start of the traction-consistent solve: {e}"))?;
-    let start = model.state_from_equilibrium(&eq);
     solve_traction_consistent(model, &start, t, &TractionSolveOptions::default())
         .map(|s| s.state)
         .map_err(|e| format!("{e}; the jones_harris start does not need one"))

@@ -185,6 +185,24 @@ pub struct MapCell {
     pub stick: bool,
 }
 
+impl MapCell {
+    /// Header of the stick/slip map CSV (`rolldyn traction --map`).
+    pub const CSV_HEADER: &'static str = "x_m,y_m,traction_x_pa,traction_y_pa,bound_pa,state";
+
+    /// This cell as a CSV row (no newline), columns as [`Self::CSV_HEADER`].
+    pub fn csv_row(&self) -> String {
+        format!(
+            "{:e},{:e},{:e},{:e},{:e},{}",
+            self.x,
+            self.y,
+            self.traction.x,
+            self.traction.y,
+            self.bound,
+            if self.stick { "stick" } else { "slip" }
+        )
+    }
+}
+
 /// Creepages and stick fraction of a FASTSIM contact.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Creep {
