@@ -15,6 +15,7 @@ use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
 use rolldyn::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, Material};
 
+mod surface;
 mod traction;
 use traction::traction;
 
@@ -96,6 +97,8 @@ pub struct Case {
     pub start: StartChoice,
     /// Drag of the air–oil mixture.
     pub drag: DragParameters,
+    /// Raceway and ball surfaces (waviness, spalls).
+    pub surface: rolldyn::surface::SurfaceModel,
     /// Simulated time \[s\], if given.
     pub duration: Option<f64>,
     /// Relative tolerance of adaptive integrators.
@@ -471,9 +474,11 @@ impl Case {
                 .unwrap_or(0.0),
         };
 
+        let bearing = bearing(&raw.bearing)?;
+        let surface = surface::surface(&raw.surface, bearing.geometry.ball_count)?;
         Ok(Self {
             title: raw.title.clone(),
-            bearing: bearing(&raw.bearing)?,
+            bearing,
             cage: cage(&raw.cage)?,
             materials,
             lubricant,
@@ -497,6 +502,7 @@ impl Case {
             time_step,
             start: s.start.unwrap_or(StartChoice::JonesHarris),
             drag,
+            surface,
             duration,
             relative_tolerance,
             max_step,
@@ -908,6 +914,7 @@ impl Case {
             gravity: if self.gravity { STANDARD_GRAVITY } else { 0.0 },
             planar: self.planar,
             drag: self.drag,
+            surface: self.surface.clone(),
         })
     }
 }

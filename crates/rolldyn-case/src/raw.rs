@@ -14,6 +14,9 @@ use serde::{Deserialize, Deserializer, Serialize};
 use std::collections::BTreeMap;
 use std::fmt;
 
+mod surface;
+pub use surface::*;
+
 /// A rolldyn case file.
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -45,6 +48,9 @@ pub struct RawCase {
     /// Model choices.
     #[serde(default)]
     pub model: RawModel,
+    /// Raceway and ball waviness and spalls (dynamic engine).
+    #[serde(default)]
+    pub surface: RawSurface,
     /// Time-integration settings (used by `rolldyn run`).
     #[serde(default)]
     pub solver: RawSolver,

@@ -16,6 +16,7 @@
 //! * [`cage`] — pocket laws and shapes, guide land, unbalance (MODEL §5);
 //! * [`lubrication`] — Hamrock–Dowson films, pressure–viscosity (MODEL §4);
 //! * [`traction`] — traction stress laws and their integration over the contact ellipse (MODEL §3);
+//! * [`surface`] — raceway and ball waviness, spalls (MODEL §6);
 //! * [`math`] — elliptic integrals, root finding, monotone interpolation.
 //!
 //! Equation numbers refer to `../shared/spec/MODEL.md` and the seed papers;
@@ -33,6 +34,7 @@ pub mod material;
 pub mod math;
 pub mod operating;
 pub mod quasistatic;
+pub mod surface;
 pub mod traction;
 
 pub use error::InvalidParameter;

@@ -66,6 +66,28 @@ impl SpeedProfile {
         }
     }
 
+    /// Angle turned since t = 0, ∫₀ᵗ ω dt \[rad\] (exact for both profiles;
+    /// carries the inner ring's surface, MODEL §6).
+    pub fn angle_at(&self, t: f64) -> f64 {
+        match self {
+            Self::Constant(w) => w * t,
+            Self::PiecewiseLinear(points) => {
+                // Speed held at the first point from t = 0 (and before it).
+                let mut angle = 0.0;
+                let mut t_prev = 0.0;
+                let mut w_prev = self.speed_at(0.0);
+                for &(tp, wp) in points.iter().filter(|p| p.0 > 0.0) {
+                    if tp >= t {
+                        break;
+                    }
+                    angle += 0.5 * (w_prev + wp) * (tp - t_prev);
+                    (t_prev, w_prev) = (tp, wp);
+                }
+                angle + 0.5 * (w_prev + self.speed_at(t)) * (t - t_prev)
+            }
+        }
+    }
+
     /// The speed the profile ends at (the constant speed, or the last point).
     pub fn final_speed(&self) -> f64 {
         match self {
@@ -162,6 +184,24 @@ impl LoadProfile {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn angle_is_the_integral_of_the_speed() {
+        assert_eq!(SpeedProfile::Constant(3.0).angle_at(2.0), 6.0);
+        let ramp = SpeedProfile::piecewise_linear(vec![(0.5, 100.0), (1.5, 1100.0), (2.0, 1100.0)])
+            .unwrap();
+        // 0.5 s at 100, then a ramp to 1100 over 1 s, then 1100.
+        assert!((ramp.angle_at(0.25) - 25.0).abs() < 1e-12);
+        assert!((ramp.angle_at(1.0) - (50.0 + 0.5 * (100.0 + 600.0) * 0.5)).abs() < 1e-12);
+        assert!((ramp.angle_at(3.0) - (50.0 + 600.0 + 1100.0 * 1.5)).abs() < 1e-9);
+        // Against a fine trapezoid rule.
+        let n = 100_000;
+        let h = 1.7 / n as f64;
+        let numeric: f64 = (0..n)
+            .map(|k| 0.5 * h * (ramp.speed_at(k as f64 * h) + ramp.speed_at((k + 1) as f64 * h)))
+            .sum();
+        assert!((ramp.angle_at(1.7) - numeric).abs() < 1e-6);
+    }
 
     #[test]
     fn seed002_ramp() {

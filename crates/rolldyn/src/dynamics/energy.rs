@@ -50,11 +50,8 @@ impl BearingModel {
                 + 0.5 * self.ball_inertia * w.norm_squared();
             e.potential += self.ball_mass * g * q.z;
             for (ring, table) in [(&inner, &self.inner_table), (&outer, &self.outer_table)] {
-                if let Some(c) = ring.circle.contact(&q, self.geometry.ball_diameter, 0.0) {
-                    if c.penetration > 0.0 {
-                        e.elastic +=
-                            0.4 * table.stiffness(c.contact_angle) * c.penetration.powf(2.5);
-                    }
+                if let Some((c, _)) = self.race_geometry(ring, &ball) {
+                    e.elastic += 0.4 * table.stiffness(c.contact_angle) * c.penetration.powf(2.5);
                 }
             }
             if let Some(pc) = self.pocket_contact(j, y, &ball) {

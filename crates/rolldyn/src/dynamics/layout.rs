@@ -5,24 +5,33 @@
 pub struct StateLayout {
     /// Number of balls.
     pub balls: usize,
+    /// Whether each ball carries its spin angle ψ (10th ball state, MODEL
+    /// §1): only when the balls have surfaces (waviness, spalls).
+    pub ball_spin_angle: bool,
 }
 
 impl StateLayout {
-    /// States per ball.
+    /// Mechanical states per ball (x, r, φ, their rates, ω_x, ω_r, ω_t).
     pub const BALL: usize = 9;
+    /// Offset of the spin angle ψ in a ball's block, when present.
+    pub const SPIN_ANGLE: usize = 9;
     /// Inner-ring states.
     pub const RING: usize = 10;
     /// Outer-ring states (y_o, z_o and rates).
     pub const OUTER: usize = 4;
     /// Cage states.
     pub const CAGE: usize = 6;
+    /// States per ball: 9, or 10 with the spin angle.
+    pub fn ball_len(&self) -> usize {
+        Self::BALL + usize::from(self.ball_spin_angle)
+    }
     /// First state of ball j.
     pub fn ball(&self, j: usize) -> usize {
-        Self::BALL * j
+        self.ball_len() * j
     }
     /// First inner-ring state.
     pub fn ring(&self) -> usize {
-        Self::BALL * self.balls
+        self.ball_len() * self.balls
     }
     /// First outer-ring state.
     pub fn outer(&self) -> usize {
@@ -37,7 +46,7 @@ impl StateLayout {
     /// so the Jacobian is bordered block-diagonal (MODEL §8).
     pub fn ball_coupling(&self, j: usize) -> [std::ops::Range<usize>; 2] {
         [
-            self.ball(j)..self.ball(j) + Self::BALL,
+            self.ball(j)..self.ball(j) + self.ball_len(),
             self.ring()..self.cage() + Self::CAGE,
         ]
     }

@@ -18,6 +18,7 @@
 //! | `pocket` | ball–pocket contact |
 //! | `drag` | air–oil drag on balls and cage |
 //! | `supports` | ring spring–dampers |
+//! | `surface_contact` | waviness and spalls in the contacts, spall step limit |
 //! | `energy` | mechanical energy, work and dissipation |
 //! | `outputs` | per-contact output samples, pure-rolling reference |
 
@@ -29,6 +30,7 @@ pub mod outputs;
 pub mod pocket;
 pub mod race_contact;
 pub mod supports;
+pub mod surface_contact;
 
 pub use crate::cage::{CageParameters, GuideLand, PocketLaw, PocketShape};
 pub use drag::DragParameters;

@@ -47,6 +47,7 @@ use crate::kinematics::cage_speed_ratio;
 use crate::material::{Material, effective_modulus};
 use crate::operating::{LoadProfile, SpeedProfile};
 use crate::quasistatic::Equilibrium;
+use crate::surface::SurfaceModel;
 use crate::traction::TractionModel;
 use crate::traction::ellipse::TractionIntegration;
 use nalgebra::{Rotation3, Vector3};
@@ -86,10 +87,16 @@ pub struct DynamicsParameters {
     pub planar: bool,
     /// Drag of the air–oil mixture.
     pub drag: DragParameters,
+    /// Raceway and ball surfaces: waviness and spalls (default: smooth).
+    pub surface: SurfaceModel,
 }
 
 /// Kinematic state of a ball (global frame).
 pub(super) struct BallMotion {
+    /// Ball index j.
+    pub(super) index: usize,
+    /// Spin angle ψ \[rad\] (0 when the balls carry no surface).
+    pub(super) spin_angle: f64,
     pub(super) centre: Vector3<f64>,
     pub(super) velocity: Vector3<f64>,
     pub(super) omega: Vector3<f64>,
@@ -107,6 +114,10 @@ pub(super) struct RingMotion {
     pub(super) omega: Vector3<f64>,
     /// Angular velocity of the ring's frame (tilt rates only).
     pub(super) omega_frame: Vector3<f64>,
+    /// Angle the ring has turned about its axis θ_ring \[rad\].
+    pub(super) spin_angle: f64,
+    /// Spin speed of the ring about its axis \[rad/s\].
+    pub(super) spin_speed: f64,
 }
 
 /// The dynamic bearing model.
@@ -145,6 +156,7 @@ impl BearingModel {
             outer.housing.validate("outer_ring_housing")?;
         }
         require_non_negative("rolling_hysteresis", params.rolling_hysteresis)?;
+        params.surface.validate(geometry.ball_count)?;
         let ep = effective_modulus(ball, rings);
         let ball_mass = geometry.ball_mass(ball.density);
         Ok(Self {
@@ -165,6 +177,7 @@ impl BearingModel {
             effective_modulus: ep,
             layout: StateLayout {
                 balls: geometry.ball_count,
+                ball_spin_angle: params.surface.has_ball_surfaces(),
             },
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
             geometry: geometry.clone(),
@@ -256,13 +269,20 @@ impl BearingModel {
         let rz = Rotation3::from_axis_angle(&Vector3::z_axis(), pose.tilt_z);
         let omega_frame = y[r + 9] * Vector3::z() + y[r + 8] * (rz * Vector3::y());
         let axis = pose.rotation() * Vector3::x();
+        let spin_speed = self.params.speed.speed_at(t);
         let inner = RingMotion {
             raceway: self.geometry.inner,
             circle: GrooveCircle::of(&self.geometry.inner, &pose),
             centre: pose.translation,
             velocity: Vector3::new(y[r + 5], y[r + 6], y[r + 7]),
-            omega: self.params.speed.speed_at(t) * axis + omega_frame,
+            omega: spin_speed * axis + omega_frame,
             omega_frame,
+            spin_angle: if self.params.surface.inner.is_smooth() {
+                0.0
+            } else {
+                self.params.speed.angle_at(t)
+            },
+            spin_speed,
         };
         let o = self.layout.outer();
         let outer_pose = RingPose {
@@ -276,6 +296,8 @@ impl BearingModel {
             velocity: Vector3::new(0.0, y[o + 2], y[o + 3]),
             omega: Vector3::zeros(),
             omega_frame: Vector3::zeros(),
+            spin_angle: 0.0,
+            spin_speed: 0.0,
         };
         (inner, outer)
     }
@@ -293,6 +315,12 @@ impl BearingModel {
         let w = y[b + 6] * ex + y[b + 7] * er + y[b + 8] * et;
         (
             BallMotion {
+                index: j,
+                spin_angle: if self.layout.ball_spin_angle {
+                    y[b + StateLayout::SPIN_ANGLE]
+                } else {
+                    0.0
+                },
                 centre: q,
                 velocity: v,
                 omega: w,
@@ -400,19 +428,20 @@ impl BearingModel {
         if let Some(cn) =
             self.race_contact(inner, &self.inner_table, &episodes[0], &ball, Want::Forces)
         {
-            force += cn.force;
-            moment += cn.moment;
-            out.ring_force -= cn.force;
-            out.ring_moment +=
-                (cn.geometry.contact_point - inner.centre).cross(&(-cn.force)) - cn.couple;
+            force += cn.force + cn.surface.ball_force;
+            moment += cn.moment + cn.surface.ball_moment;
+            out.ring_force += cn.surface.ring_force - cn.force;
+            out.ring_moment += (cn.geometry.contact_point - inner.centre).cross(&(-cn.force))
+                - cn.couple
+                + (ball.centre - inner.centre).cross(&cn.surface.ring_force);
             out.dissipation += cn.dissipation;
         }
         if let Some(cn) =
             self.race_contact(outer, &self.outer_table, &episodes[1], &ball, Want::Forces)
         {
-            force += cn.force;
-            moment += cn.moment;
-            out.outer_force -= cn.force;
+            force += cn.force + cn.surface.ball_force;
+            moment += cn.moment + cn.surface.ball_moment;
+            out.outer_force += cn.surface.ring_force - cn.force;
             out.dissipation += cn.dissipation;
         }
         if let Some(pc) = self.pocket_contact(j, y, &ball) {
@@ -446,6 +475,11 @@ impl BearingModel {
         dy[6] = moment.dot(&ex) / inertia;
         dy[7] = moment.dot(&er) / inertia + phi_dot * wt;
         dy[8] = moment.dot(&et) / inertia - phi_dot * wr;
+        if l.ball_spin_angle {
+            // ψ̇ = |ω_b − φ̇ e_x|: the ball's turning relative to the cage
+            // frame carries its surface past the contacts (MODEL §1, §6).
+            dy[StateLayout::SPIN_ANGLE] = (w - phi_dot * ex).norm();
+        }
         if p.planar {
             dy[0] = 0.0;
             dy[3] = 0.0;
@@ -581,7 +615,7 @@ impl BlockSplit for BearingModel {
     fn block_layout(&self) -> BlockLayout {
         BlockLayout {
             blocks: self.layout.balls,
-            block_size: StateLayout::BALL,
+            block_size: self.layout.ball_len(),
             border: self.layout.len() - self.layout.ring(),
         }
     }
@@ -614,7 +648,7 @@ impl BlockSplit for BearingModel {
         let l = self.layout;
         let p = &self.params;
         if state < l.ring() {
-            let k = state % StateLayout::BALL;
+            let k = state % l.ball_len();
             return p.planar && matches!(k, 0 | 3 | 7 | 8);
         }
         if state < l.outer() {
@@ -641,7 +675,7 @@ impl OdeSystem for BearingModel {
         let mut balls = BallCoupling::default();
         for j in 0..l.balls {
             let b = l.ball(j);
-            let coupling = self.ball_rhs(j, y, &inner, &outer, &mut dy[b..b + StateLayout::BALL]);
+            let coupling = self.ball_rhs(j, y, &inner, &outer, &mut dy[b..b + l.ball_len()]);
             balls.add(&coupling);
         }
         let (_, border) = dy.split_at_mut(l.ring());
@@ -661,6 +695,9 @@ impl OdeSystem for BearingModel {
             scale[b..b + 3].fill(1e-6);
             scale[b + 3..b + 5].fill(1e-3);
             scale[b + 5..b + 9].fill(1.0);
+            if l.ball_spin_angle {
+                scale[b + StateLayout::SPIN_ANGLE] = 1e-6;
+            }
         }
         let r = l.ring();
         scale[r..r + 5].fill(1e-6);
@@ -674,6 +711,11 @@ impl OdeSystem for BearingModel {
         scale[c + 5] = 1.0;
         let w = l.work();
         scale[w..w + 2].fill(1e-6);
+    }
+
+    /// Spalls: the step may not carry a contact across one unseen.
+    fn step_limit(&self, t: f64, y: &[f64]) -> f64 {
+        self.spall_step_limit(t, y)
     }
 
     fn accept_step(&mut self, t: f64, y: &[f64]) -> bool {

@@ -17,6 +17,7 @@
 //! continuous at rest.
 
 use super::model::{BallMotion, BearingModel, RingMotion};
+use super::surface_contact::SurfaceEffect;
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{ContactTable, Curvature, TorusContact};
 use crate::traction::fastsim::MapCell;
@@ -73,7 +74,10 @@ pub(super) enum Want<'a> {
 
 /// One evaluated ball–raceway contact.
 pub(super) struct RaceContact {
+    /// Geometry; the penetration includes the surfaces' Δδ.
     pub(super) geometry: TorusContact,
+    /// The surfaces' forces (scaled by the load; zero when smooth).
+    pub(super) surface: SurfaceEffect,
     pub(super) penetration_rate: f64,
     /// Dissipated power: normal damping and traction \[W\].
     pub(super) dissipation: f64,
@@ -89,6 +93,24 @@ pub(super) struct RaceContact {
 }
 
 impl BearingModel {
+    /// Contact geometry of a ball with a ring, the penetration including the
+    /// surfaces (MODEL §2.1, §6), and the surfaces' effect per unit load;
+    /// None when the bodies do not touch.
+    pub(super) fn race_geometry(
+        &self,
+        ring: &RingMotion,
+        ball: &BallMotion,
+    ) -> Option<(TorusContact, SurfaceEffect)> {
+        let mut geometry = ring
+            .circle
+            .contact(&ball.centre, self.geometry.ball_diameter, 0.0)?;
+        let surface = self
+            .surface_effect(ring, ball, &geometry)
+            .unwrap_or_default();
+        geometry.penetration += surface.approach;
+        (geometry.penetration > 0.0).then_some((geometry, surface))
+    }
+
     pub(super) fn race_contact(
         &self,
         ring: &RingMotion,
@@ -100,17 +122,13 @@ impl BearingModel {
         let with_output = matches!(want, Want::Output | Want::Map(_));
         let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
         let orbital_rate = ball.orbital_rate;
-        let d = self.geometry.ball_diameter;
-        let geometry = ring.circle.contact(q, d, 0.0)?;
-        if geometry.penetration <= 0.0 {
-            return None;
-        }
+        let (geometry, surface) = self.race_geometry(ring, ball)?;
         let n = geometry.normal;
         let groove_velocity = ring.velocity
             + ring
                 .omega_frame
                 .cross(&(geometry.groove_centre - ring.centre));
-        let penetration_rate = (v - groove_velocity).dot(&n);
+        let penetration_rate = (v - groove_velocity).dot(&n) + surface.approach_rate;
         let hertz = table.at(geometry.contact_angle);
         let stiffness = hertz.stiffness;
         let state = ContactState {
@@ -240,8 +258,15 @@ impl BearingModel {
         } else {
             ContactOutput::default()
         };
+        let surface = SurfaceEffect {
+            ball_force: load * surface.ball_force,
+            ball_moment: load * surface.ball_moment,
+            ring_force: load * surface.ring_force,
+            ..surface
+        };
         Some(RaceContact {
             geometry,
+            surface,
             penetration_rate,
             dissipation,
             force: -load * n + traction.force,

@@ -393,6 +393,7 @@ impl Integrator for ExplicitRk {
             } => (Some(relative_tolerance), max_step),
             StepControl::Fixed { .. } => (None, f64::INFINITY),
         };
+        let max_step = max_step.min(system.step_limit(self.t, &self.y));
         let mut rejected = false;
         loop {
             let natural = self.h.min(max_step);

@@ -47,6 +47,13 @@ pub trait OdeSystem {
         scale.fill(1.0);
     }
 
+    /// Largest step the system allows from (t, y): features that an error
+    /// estimate cannot see coming (a surface defect ahead of a contact).
+    /// Asked once before each step. Default: no limit.
+    fn step_limit(&self, _t: f64, _y: &[f64]) -> f64 {
+        f64::INFINITY
+    }
+
     /// Called once after every accepted step with the new state (never
     /// inside Runge–Kutta stages). Returns true when this changed the
     /// right-hand side (e.g. a contact episode was recorded), so that the

@@ -410,12 +410,13 @@ impl Integrator for Rosenbrock {
         let min_step = 16.0 * f64::EPSILON * self.t.abs().max(remaining);
         // The embedded solution has order q − 1: the error scales as h^q.
         let q = self.tableau.order as f64;
+        let max_step = self.max_step.min(system.step_limit(self.t, &self.y));
         let mut rejected = false;
         loop {
             if self.jacobian_age.is_none_or(|age| age >= MAX_JACOBIAN_AGE) {
                 self.evaluate_jacobian(system);
             }
-            let natural = self.h.min(self.max_step);
+            let natural = self.h.min(max_step);
             let h = PiControl::landing(natural, remaining);
             let err = self.attempt(system, h);
             if err <= 1.0 {

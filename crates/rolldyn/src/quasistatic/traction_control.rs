@@ -495,6 +495,7 @@ mod tests {
             gravity: 0.0,
             planar: false,
             drag: DragParameters::default(),
+            surface: crate::surface::SurfaceModel::default(),
             inner_support: Support::default(),
             outer_ring: None,
             rolling_hysteresis: 0.0,

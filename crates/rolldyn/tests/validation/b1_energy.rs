@@ -73,6 +73,7 @@ fn model(configure: impl Fn(&mut DynamicsParameters)) -> BearingModel {
         gravity: 0.0,
         planar: true,
         drag: DragParameters::default(),
+        surface: rolldyn::surface::SurfaceModel::default(),
         inner_support: Support::default(),
         outer_ring: None,
         rolling_hysteresis: 0.0,
