@@ -17,6 +17,7 @@
 //! * [`lubrication`] — Hamrock–Dowson films, pressure–viscosity (MODEL §4);
 //! * [`traction`] — traction stress laws and their integration over the contact ellipse (MODEL §3);
 //! * [`surface`] — raceway and ball waviness, spalls (MODEL §6);
+//! * [`signal`] — spectra, envelope, velocity RMS, characteristic lines, cage whirl (MODEL §9);
 //! * [`math`] — elliptic integrals, root finding, monotone interpolation.
 //!
 //! Equation numbers refer to `../shared/spec/MODEL.md` and the seed papers;
@@ -34,6 +35,7 @@ pub mod material;
 pub mod math;
 pub mod operating;
 pub mod quasistatic;
+pub mod signal;
 pub mod surface;
 pub mod traction;
 

@@ -1,0 +1,24 @@
+//! Signal processing for vibration analysis (MODEL §9): amplitude spectra,
+//! Welch power spectral density, envelope spectra, band-limited vibration
+//! velocity RMS, the bearing's characteristic frequencies with harmonics and
+//! sidebands, a peak list that names the nearest line, and cage-whirl
+//! metrics (seed 001 eq 41).
+//!
+//! Everything works on uniformly sampled records (the recorder's fixed
+//! rate). FFTs are real-to-complex (realfft/rustfft); records are
+//! zero-padded to the next 5-smooth length (2ᵃ3ᵇ5ᶜ), which keeps every
+//! length fast (a prime length is ~25× slower) and leaves the amplitude
+//! scaling, taken from the unpadded window, exact for a tone on a bin.
+//! Conventions follow `scipy.signal` (Welch: one-sided density, mean removed
+//! per segment, `scaling = "density"`), so results can be checked against it.
+
+pub mod lines;
+pub mod spectrum;
+pub mod whirl;
+
+pub use lines::{CharacteristicFrequencies, Line, Peak, find_peaks};
+pub use spectrum::{
+    Spectrum, SpectrumError, Window, amplitude_spectrum, band_velocity_rms, envelope_spectrum,
+    welch_psd,
+};
+pub use whirl::{WhirlMetrics, whirl_metrics};
