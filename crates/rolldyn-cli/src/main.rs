@@ -6,8 +6,10 @@
 mod quasistatic;
 mod report;
 mod run;
+mod spectrum;
 mod traction;
 mod traction_equilibrium;
+mod vibration;
 
 use clap::{Args, Parser, Subcommand};
 use rolldyn_case::units::{Angle, Force, Quantity};
@@ -119,6 +121,11 @@ enum Command {
     /// FASTSIM (--semi-axes): forces, spin moment, power, stick fraction;
     /// --map writes FASTSIM's stick/slip map as CSV.
     Traction(Box<traction::TractionArgs>),
+    /// Spectrum of one channel of a run (amplitude, Welch PSD or envelope)
+    /// with the bearing's characteristic lines from the run's speeds, a
+    /// peak list naming the nearest line, and the vibration velocity RMS;
+    /// writes DIR/spectrum_<channel>_<kind>.csv and .json.
+    Spectrum(Box<spectrum::SpectrumArgs>),
     /// List the built-in bearings.
     Presets {
         /// Print JSON instead of text.
@@ -398,6 +405,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             }
         }
         Command::Traction(args) => traction::command(*args),
+        Command::Spectrum(args) => spectrum::command(*args),
         Command::Presets { json: as_json } => {
             let list: Vec<report::PresetEntry> = presets::PRESETS
                 .iter()

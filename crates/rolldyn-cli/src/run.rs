@@ -5,11 +5,13 @@
 //! terminal. Keys are documented in docs/cli.md.
 
 use crate::traction_equilibrium::{jones_harris_state, traction_state};
+use crate::vibration::VibrationSummary;
 use indicatif::{ProgressBar, ProgressStyle};
+use nalgebra::Vector3;
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{
-    ExplicitRk, IntegrationStats, ROS34PW2, Rosenbrock, RunEnd, Solver, StepControl, run,
+    ExplicitRk, IntegrationStats, OdeSystem, ROS34PW2, Rosenbrock, RunEnd, Solver, StepControl, run,
 };
 use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
@@ -56,7 +58,13 @@ pub struct Summary {
     pub jacobian_rhs_evaluations: u64,
     pub factorizations: u64,
     pub samples: usize,
+    pub sample_rate_hz: f64,
     pub averaging_window_s: [f64; 2],
+    pub ball_count: usize,
+    pub ball_diameter_m: f64,
+    pub pitch_diameter_m: f64,
+    pub mean_contact_angle_inner_deg: f64,
+    pub mean_contact_angle_outer_deg: f64,
     pub inner_ring_speed_rpm: f64,
     pub mean_cage_speed_rpm: f64,
     pub pure_rolling_cage_speed_rpm: f64,
@@ -77,6 +85,9 @@ pub struct Summary {
     pub mean_attitude_deg: f64,
     pub mean_yaw_deg: f64,
     pub max_abs_yaw_deg: f64,
+    /// Vibration velocity RMS and cage-whirl metrics.
+    #[serde(flatten)]
+    pub vibration: VibrationSummary,
     pub drive_work_j: f64,
     pub dissipated_energy_j: f64,
     pub mechanical_energy_change_j: f64,
@@ -135,10 +146,12 @@ struct Channels {
     balls: usize,
     /// Whether the FASTSIM channels are recorded.
     creep: bool,
+    /// Scratch derivative vector (accelerations of the rings).
+    derivative: Vec<f64>,
 }
 
 impl Channels {
-    fn new(balls: usize, creep: bool) -> Self {
+    fn new(balls: usize, creep: bool, states: usize) -> Self {
         let mut series = TimeSeries::default();
         for (name, unit) in [
             ("time_s", "s"),
@@ -156,6 +169,18 @@ impl Channels {
             ("inner_ring_velocity_z_m_s", "m/s"),
             ("outer_ring_y_m", "m"),
             ("outer_ring_z_m", "m"),
+            ("inner_ring_velocity_x_m_s", "m/s"),
+            ("inner_ring_acceleration_x_m_s2", "m/s^2"),
+            ("inner_ring_acceleration_y_m_s2", "m/s^2"),
+            ("inner_ring_acceleration_z_m_s2", "m/s^2"),
+            ("outer_ring_velocity_y_m_s", "m/s"),
+            ("outer_ring_velocity_z_m_s", "m/s"),
+            ("outer_ring_acceleration_y_m_s2", "m/s^2"),
+            ("outer_ring_acceleration_z_m_s2", "m/s^2"),
+            ("housing_force_y_n", "N"),
+            ("housing_force_z_n", "N"),
+            ("cage_velocity_y_m_s", "m/s"),
+            ("cage_velocity_z_m_s", "m/s"),
             ("drive_work_j", "J"),
             ("dissipated_energy_j", "J"),
             ("mechanical_energy_j", "J"),
@@ -177,6 +202,7 @@ impl Channels {
             series,
             balls,
             creep,
+            derivative: vec![0.0; states],
         }
     }
 
@@ -191,6 +217,20 @@ impl Channels {
         let l = model.layout();
         let (c, r) = (l.cage(), l.ring());
         let (drive, dissipated) = model.work(y);
+        // Accelerations: one evaluation of the equations of motion per sample.
+        model.rhs(t, y, &mut self.derivative);
+        let dy = &self.derivative;
+        let o = l.outer();
+        let housing = model
+            .parameters()
+            .outer_ring
+            .as_ref()
+            .map_or(Vector3::zeros(), |ring| {
+                -ring.housing.force(
+                    &Vector3::new(0.0, y[o], y[o + 1]),
+                    &Vector3::new(0.0, y[o + 2], y[o + 3]),
+                )
+            });
         row.clear();
         row.extend_from_slice(&[
             t,
@@ -206,8 +246,20 @@ impl Channels {
             y[r + 4],
             y[r + 6],
             y[r + 7],
-            y[l.outer()],
-            y[l.outer() + 1],
+            y[o],
+            y[o + 1],
+            y[r + 5],
+            dy[r + 5],
+            dy[r + 6],
+            dy[r + 7],
+            y[o + 2],
+            y[o + 3],
+            dy[o + 2],
+            dy[o + 3],
+            housing.y,
+            housing.z,
+            y[c + 3],
+            y[c + 4],
             drive,
             dissipated,
             model.energy(t, y).total(),
@@ -372,6 +424,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
     let mut channels = Channels::new(
         g.ball_count,
         matches!(params.traction, TractionModel::Fastsim(_)),
+        model.layout().len(),
     );
     let mut row = Vec::with_capacity(channels.series.width());
     let mut loads = vec![ContactSample::default(); g.ball_count];
@@ -498,7 +551,13 @@ fn summarise(
         jacobian_rhs_evaluations: stats.jacobian_rhs_evaluations,
         factorizations: stats.factorizations,
         samples: series.len(),
+        sample_rate_hz: case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE),
         averaging_window_s: [time.get(from).copied().unwrap_or(0.0), t_end],
+        ball_count: balls,
+        ball_diameter_m: g.ball_diameter,
+        pitch_diameter_m: g.pitch_diameter,
+        mean_contact_angle_inner_deg: loaded_mean("contact_angle_inner_deg", &inner_loads),
+        mean_contact_angle_outer_deg: loaded_mean("contact_angle_outer_deg", &outer_loads),
         inner_ring_speed_rpm: inner_speed,
         mean_cage_speed_rpm: cage_speed,
         pure_rolling_cage_speed_rpm: rolling_ratio * inner_speed,
@@ -539,6 +598,7 @@ fn summarise(
         mean_attitude_deg: mean(&pooled("attitude_deg")),
         mean_yaw_deg: mean(&yaw),
         max_abs_yaw_deg: yaw.iter().fold(0.0, |m, v| v.abs().max(m)),
+        vibration: crate::vibration::summarise(series, from, case.outer_ring.is_some()),
         drive_work_j: drive,
         dissipated_energy_j: dissipated,
         mechanical_energy_change_j: delta_e,

@@ -5,6 +5,8 @@
 //!   carries its unit in the field metadata (`unit`), and the file carries
 //!   key–value metadata (rolldyn version, case). pandas, polars and
 //!   pyarrow read it.
+//! * [`read_parquet`]: such a file back into a [`TimeSeries`] (the
+//!   post-processing commands, e.g. `rolldyn spectrum`).
 //! * [`write_atomic`]: any bytes, written to a temporary file in the same
 //!   directory and renamed, so a reader never sees a half-written result.
 
@@ -39,6 +41,27 @@ pub enum OutputError {
     },
 }
 
+/// Errors of result reading.
+#[derive(Debug, thiserror::Error)]
+pub enum InputError {
+    /// File system.
+    #[error("cannot read {path}: {source}")]
+    Io {
+        /// File.
+        path: String,
+        /// Cause.
+        source: std::io::Error,
+    },
+    /// Not a rolldyn time series.
+    #[error("{path} is not a rolldyn time series: {message}")]
+    Decode {
+        /// File.
+        path: String,
+        /// Cause.
+        message: String,
+    },
+}
+
 /// Named channels of samples, all of the same length.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct TimeSeries {
@@ -54,6 +77,12 @@ impl TimeSeries {
         self.units.push(unit.into());
         self.columns.push(Vec::new());
         self.names.len() - 1
+    }
+
+    /// Unit of a channel.
+    pub fn unit(&self, name: &str) -> Option<&str> {
+        let i = self.names.iter().position(|n| n == name)?;
+        Some(&self.units[i])
     }
 
     /// Number of channels.
@@ -151,6 +180,48 @@ pub fn write_parquet(
     write_atomic(path, &bytes)
 }
 
+/// Reads a Parquet file written by [`write_parquet`]: every column must be
+/// Float64; units from the field metadata ("" when absent).
+pub fn read_parquet(path: &Path) -> Result<TimeSeries, InputError> {
+    use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
+    let decode = |message: String| InputError::Decode {
+        path: path.display().to_string(),
+        message,
+    };
+    let file = std::fs::File::open(path).map_err(|source| InputError::Io {
+        path: path.display().to_string(),
+        source,
+    })?;
+    let builder =
+        ParquetRecordBatchReaderBuilder::try_new(file).map_err(|e| decode(e.to_string()))?;
+    let schema = builder.schema().clone();
+    let mut series = TimeSeries::default();
+    for field in schema.fields() {
+        if field.data_type() != &DataType::Float64 {
+            return Err(decode(format!(
+                "column {} is {}, not Float64",
+                field.name(),
+                field.data_type()
+            )));
+        }
+        series.channel(
+            field.name().clone(),
+            field.metadata().get("unit").cloned().unwrap_or_default(),
+        );
+    }
+    for batch in builder.build().map_err(|e| decode(e.to_string()))? {
+        let batch = batch.map_err(|e| decode(e.to_string()))?;
+        for (i, column) in batch.columns().iter().enumerate() {
+            let values = column
+                .as_any()
+                .downcast_ref::<Float64Array>()
+                .ok_or_else(|| decode(format!("column {i} is not Float64")))?;
+            series.columns[i].extend(values.values().iter().copied());
+        }
+    }
+    Ok(series)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -194,6 +265,13 @@ mod tests {
             .downcast_ref::<Float64Array>()
             .unwrap();
         assert_eq!(col.value(99), 4499.0);
+        let back = read_parquet(&path).unwrap();
+        assert_eq!(back, ts);
+        assert_eq!(back.unit("cage_speed_rpm"), Some("rpm"));
+        assert!(matches!(
+            read_parquet(&dir.join("missing.parquet")),
+            Err(InputError::Io { .. })
+        ));
         assert!(!dir.join(".series.parquet.tmp").exists());
         std::fs::remove_dir_all(&dir).ok();
     }

@@ -13,8 +13,9 @@ pub struct Support {
 }
 
 impl Support {
-    /// Force on the ring for displacement `x` and velocity `v`.
-    pub(super) fn force(&self, x: &Vector3<f64>, v: &Vector3<f64>) -> Vector3<f64> {
+    /// Force on the ring for displacement `x` and velocity `v` (its
+    /// negative is what the support carries: the housing force).
+    pub fn force(&self, x: &Vector3<f64>, v: &Vector3<f64>) -> Vector3<f64> {
         -Vector3::from(self.stiffness).component_mul(x)
             - Vector3::from(self.damping).component_mul(v)
     }

@@ -18,7 +18,7 @@ pub mod whirl;
 
 pub use lines::{CharacteristicFrequencies, Line, Peak, find_peaks};
 pub use spectrum::{
-    Spectrum, SpectrumError, Window, amplitude_spectrum, band_velocity_rms, envelope_spectrum,
-    welch_psd,
+    Spectrum, SpectrumError, Window, amplitude_spectrum, band_rms, band_velocity_rms,
+    envelope_spectrum, welch_psd,
 };
 pub use whirl::{WhirlMetrics, whirl_metrics};

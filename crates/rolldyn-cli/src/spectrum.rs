@@ -1,0 +1,346 @@
+//! `rolldyn spectrum DIR`: the spectrum of one channel of a run
+//! (DIR/timeseries.parquet) with the bearing's characteristic lines from the
+//! run's own mean shaft and cage speeds and contact angles (DIR/summary.json),
+//! a peak list naming the nearest line, and the vibration velocity RMS
+//! (10–1000 Hz) of acceleration and velocity channels. Writes
+//! DIR/spectrum_<channel>_<kind>.csv (frequency_hz,value) and .json;
+//! keys in docs/cli.md.
+
+use crate::vibration::VELOCITY_BAND;
+use crate::{Failure, bad_arg, emit, json};
+use clap::Args;
+use rolldyn::signal::{
+    CharacteristicFrequencies, Spectrum, Window, amplitude_spectrum, band_rms, band_velocity_rms,
+    envelope_spectrum, find_peaks, welch_psd,
+};
+use serde::Serialize;
+use std::fmt::Write;
+use std::path::Path;
+
+/// Arguments of `rolldyn spectrum`.
+#[derive(Args, Debug)]
+pub struct SpectrumArgs {
+    /// Run directory (timeseries.parquet, summary.json).
+    pub dir: String,
+    /// Channel to analyse (`rolldyn spectrum DIR --list` lists them).
+    #[arg(long, default_value = "inner_ring_acceleration_z_m_s2")]
+    pub channel: String,
+    /// amplitude, psd (Welch) or envelope.
+    #[arg(long, default_value = "amplitude")]
+    pub kind: String,
+    /// Window: hann or rectangular.
+    #[arg(long, default_value = "hann")]
+    pub window: String,
+    /// Welch segment length in samples (psd; default: a power of two near
+    /// an eighth of the record).
+    #[arg(long, value_name = "N")]
+    pub segment: Option<usize>,
+    /// Welch overlap fraction (psd).
+    #[arg(long, default_value_t = 0.5)]
+    pub overlap: f64,
+    /// Envelope band "LOW:HIGH" in Hz (envelope; default: 0.1 to 0.4 of the
+    /// sample rate).
+    #[arg(long, value_name = "LOW:HIGH")]
+    pub band: Option<String>,
+    /// Analyse samples from this time in s (default: the summary's
+    /// averaging window, the second half of the run).
+    #[arg(long, value_name = "SECONDS")]
+    pub from: Option<f64>,
+    /// Harmonics of each characteristic frequency to mark.
+    #[arg(long, default_value_t = 5)]
+    pub harmonics: usize,
+    /// Number of peaks to list.
+    #[arg(long, default_value_t = 10)]
+    pub peaks: usize,
+    /// List the channels and exit.
+    #[arg(long)]
+    pub list: bool,
+    /// Print the JSON report instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Serialize)]
+struct LineEntry {
+    name: String,
+    frequency_hz: f64,
+}
+
+#[derive(Serialize)]
+struct PeakEntry {
+    frequency_hz: f64,
+    value: f64,
+    line: Option<String>,
+    line_frequency_hz: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct Characteristic {
+    shaft_hz: f64,
+    cage_hz: f64,
+    bpfo_hz: f64,
+    bpfi_hz: f64,
+    ball_spin_hz: f64,
+    contact_angle_deg: f64,
+}
+
+#[derive(Serialize)]
+struct Report {
+    channel: String,
+    unit: String,
+    kind: String,
+    value_unit: String,
+    window: String,
+    sample_rate_hz: f64,
+    samples: usize,
+    from_s: f64,
+    to_s: f64,
+    resolution_hz: f64,
+    band_hz: Option<[f64; 2]>,
+    segment: Option<usize>,
+    velocity_rms_mm_s: Option<f64>,
+    velocity_rms_band_hz: Option<[f64; 2]>,
+    characteristic: Characteristic,
+    peaks: Vec<PeakEntry>,
+    lines: Vec<LineEntry>,
+    csv: String,
+}
+
+/// The subset of summary.json the lines need.
+#[derive(serde::Deserialize)]
+struct RunSummary {
+    inner_ring_speed_rpm: f64,
+    mean_cage_speed_rpm: f64,
+    ball_count: usize,
+    ball_diameter_m: f64,
+    pitch_diameter_m: f64,
+    mean_contact_angle_inner_deg: f64,
+    mean_contact_angle_outer_deg: f64,
+    averaging_window_s: [f64; 2],
+}
+
+pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
+    let dir = Path::new(&args.dir);
+    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet"))
+        .map_err(|e| Failure::BadInput(e.to_string()))?;
+    if args.list {
+        let mut text = String::new();
+        for name in series.names() {
+            let _ = writeln!(text, "{name} [{}]", series.unit(name).unwrap_or(""));
+        }
+        return emit(&text);
+    }
+    let summary_path = dir.join("summary.json");
+    let summary: RunSummary = std::fs::read_to_string(&summary_path)
+        .map_err(|e| e.to_string())
+        .and_then(|t| serde_json::from_str(&t).map_err(|e| e.to_string()))
+        .map_err(|e| {
+            Failure::BadInput(format!(
+                "{}: {e} (a summary.json of rolldyn run is needed for the characteristic lines)",
+                summary_path.display()
+            ))
+        })?;
+    let values = series.column(&args.channel).ok_or_else(|| {
+        bad_arg(
+            "--channel",
+            &args.channel,
+            "no such channel (rolldyn spectrum DIR --list shows them)",
+        )
+    })?;
+    let time = series
+        .column("time_s")
+        .ok_or_else(|| Failure::BadInput("timeseries.parquet has no time_s column".into()))?;
+    let from_time = args.from.unwrap_or(summary.averaging_window_s[0]);
+    if !from_time.is_finite() {
+        return Err(bad_arg("--from", &from_time.to_string(), "must be finite"));
+    }
+    let from = time
+        .iter()
+        .position(|&t| t >= from_time)
+        .unwrap_or(time.len());
+    let (time, record) = (&time[from..], &values[from..]);
+    if record.len() < 16 {
+        return Err(bad_arg(
+            "--from",
+            &from_time.to_string(),
+            format!(
+                "leaves {} samples; a spectrum needs at least 16",
+                record.len()
+            ),
+        ));
+    }
+    let sample_rate = (time.len() - 1) as f64 / (time[time.len() - 1] - time[0]);
+    let window = match args.window.as_str() {
+        "hann" => Window::Hann,
+        "rectangular" => Window::Rectangular,
+        w => return Err(bad_arg("--window", w, "expected hann or rectangular")),
+    };
+    let unit = series.unit(&args.channel).unwrap_or("").to_string();
+    let spectrum_error = |e: rolldyn::signal::SpectrumError| Failure::BadInput(e.to_string());
+    let (spectrum, value_unit, band, segment): (Spectrum, String, Option<[f64; 2]>, Option<usize>) =
+        match args.kind.as_str() {
+            "amplitude" => (
+                amplitude_spectrum(record, sample_rate, window).map_err(spectrum_error)?,
+                unit.clone(),
+                None,
+                None,
+            ),
+            "psd" => {
+                let segment = args
+                    .segment
+                    .unwrap_or_else(|| (record.len() / 8).max(16).next_power_of_two() / 2);
+                (
+                    welch_psd(record, sample_rate, segment, args.overlap, window)
+                        .map_err(spectrum_error)?,
+                    format!("({unit})^2/Hz"),
+                    None,
+                    Some(segment),
+                )
+            }
+            "envelope" => {
+                let band = match &args.band {
+                    None => (0.1 * sample_rate, 0.4 * sample_rate),
+                    Some(text) => parse_band(text)?,
+                };
+                (
+                    envelope_spectrum(record, sample_rate, band, window).map_err(spectrum_error)?,
+                    unit.clone(),
+                    Some([band.0, band.1]),
+                    None,
+                )
+            }
+            k => return Err(bad_arg("--kind", k, "expected amplitude, psd or envelope")),
+        };
+    let alpha = 0.5
+        * (summary.mean_contact_angle_inner_deg + summary.mean_contact_angle_outer_deg)
+            .to_radians();
+    let characteristic = CharacteristicFrequencies::new(
+        summary.inner_ring_speed_rpm / 60.0,
+        summary.mean_cage_speed_rpm / 60.0,
+        summary.ball_count,
+        summary.ball_diameter_m / summary.pitch_diameter_m,
+        alpha,
+    );
+    let lines = characteristic.lines(args.harmonics);
+    let resolution = spectrum.resolution();
+    let peaks = find_peaks(&spectrum, resolution, args.peaks, &lines, 1.5 * resolution);
+    let velocity_band = (VELOCITY_BAND.0, VELOCITY_BAND.1.min(0.5 * sample_rate));
+    let velocity_rms = match unit.as_str() {
+        "m/s^2" => band_velocity_rms(record, sample_rate, velocity_band).ok(),
+        "m/s" => band_rms(record, sample_rate, velocity_band).ok(),
+        _ => None,
+    }
+    .map(|v| 1e3 * v);
+    let stem = format!("spectrum_{}_{}", args.channel, args.kind);
+    let mut csv = String::from("frequency_hz,value\n");
+    for (f, v) in spectrum.frequency.iter().zip(&spectrum.value) {
+        let _ = writeln!(csv, "{f},{v:e}");
+    }
+    let csv_path = dir.join(format!("{stem}.csv"));
+    rolldyn_io::write_atomic(&csv_path, csv.as_bytes())
+        .map_err(|e| Failure::Internal(e.to_string()))?;
+    let report = Report {
+        channel: args.channel.clone(),
+        unit,
+        kind: args.kind.clone(),
+        value_unit,
+        window: args.window.clone(),
+        sample_rate_hz: sample_rate,
+        samples: record.len(),
+        from_s: time[0],
+        to_s: time[time.len() - 1],
+        resolution_hz: resolution,
+        band_hz: band,
+        segment,
+        velocity_rms_mm_s: velocity_rms,
+        velocity_rms_band_hz: velocity_rms.map(|_| [velocity_band.0, velocity_band.1]),
+        characteristic: Characteristic {
+            shaft_hz: characteristic.shaft,
+            cage_hz: characteristic.cage,
+            bpfo_hz: characteristic.bpfo,
+            bpfi_hz: characteristic.bpfi,
+            ball_spin_hz: characteristic.ball_spin,
+            contact_angle_deg: alpha.to_degrees(),
+        },
+        peaks: peaks
+            .into_iter()
+            .map(|p| PeakEntry {
+                frequency_hz: p.frequency,
+                value: p.value,
+                line: p.line,
+                line_frequency_hz: p.line_frequency,
+            })
+            .collect(),
+        lines: lines
+            .into_iter()
+            .map(|l| LineEntry {
+                name: l.name,
+                frequency_hz: l.frequency,
+            })
+            .collect(),
+        csv: csv_path.display().to_string(),
+    };
+    let text =
+        serde_json::to_string_pretty(&report).map_err(|e| Failure::Internal(e.to_string()))?;
+    rolldyn_io::write_atomic(&dir.join(format!("{stem}.json")), (text + "\n").as_bytes())
+        .map_err(|e| Failure::Internal(e.to_string()))?;
+    if args.json {
+        return json(&report);
+    }
+    emit(&report.to_text())
+}
+
+fn parse_band(text: &str) -> Result<(f64, f64), Failure> {
+    let parsed = text
+        .split_once(':')
+        .and_then(|(a, b)| Some((a.trim().parse::<f64>().ok()?, b.trim().parse::<f64>().ok()?)));
+    match parsed {
+        Some((lo, hi)) if lo.is_finite() && hi.is_finite() && 0.0 <= lo && lo < hi => Ok((lo, hi)),
+        _ => Err(bad_arg(
+            "--band",
+            text,
+            "expected LOW:HIGH in Hz with 0 ≤ LOW < HIGH, e.g. 2000:8000",
+        )),
+    }
+}
+
+impl Report {
+    fn to_text(&self) -> String {
+        let mut t = String::new();
+        let c = &self.characteristic;
+        let _ = writeln!(
+            t,
+            "{} spectrum of {} [{}], {} samples at {:.0} Hz from {:.4} s to {:.4} s, resolution {:.3} Hz, {} window",
+            self.kind,
+            self.channel,
+            self.unit,
+            self.samples,
+            self.sample_rate_hz,
+            self.from_s,
+            self.to_s,
+            self.resolution_hz,
+            self.window
+        );
+        if let Some([lo, hi]) = self.band_hz {
+            let _ = writeln!(t, "envelope band {lo:.0}–{hi:.0} Hz");
+        }
+        let _ = writeln!(
+            t,
+            "lines from the run: f_i {:.2} Hz, f_c {:.2} Hz, BPFO {:.1} Hz, BPFI {:.1} Hz, BSF {:.1} Hz (α {:.2}°)",
+            c.shaft_hz, c.cage_hz, c.bpfo_hz, c.bpfi_hz, c.ball_spin_hz, c.contact_angle_deg
+        );
+        if let (Some(v), Some([lo, hi])) = (self.velocity_rms_mm_s, self.velocity_rms_band_hz) {
+            let _ = writeln!(t, "vibration velocity RMS {v:.4} mm/s ({lo:.0}–{hi:.0} Hz)");
+        }
+        let _ = writeln!(t, "{:>12} {:>14}  nearest line", "f [Hz]", self.value_unit);
+        for p in &self.peaks {
+            let line = match (&p.line, p.line_frequency_hz) {
+                (Some(name), Some(f)) => format!("{name} ({f:.1} Hz)"),
+                _ => "—".to_string(),
+            };
+            let _ = writeln!(t, "{:>12.2} {:>14.4e}  {line}", p.frequency_hz, p.value);
+        }
+        let _ = writeln!(t, "wrote {}", self.csv);
+        t
+    }
+}
