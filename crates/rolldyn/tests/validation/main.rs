@@ -18,6 +18,7 @@ mod b3_impact;
 mod b6_stays_at_equilibrium;
 mod b8_fastsim;
 mod c1_seed000;
+mod c4_seed001_surfaces;
 mod c5_seed002_table1;
 mod cage_guide;
 mod common;
