@@ -540,3 +540,69 @@ fn pocket_laws_supports_and_load_tables() {
     ));
     check(&e, "model.traction.c", 15, &["must not be negative"]);
 }
+
+#[test]
+fn surface_errors_are_located() {
+    let case = |surface: &str| format!("{BASE}\n{surface}");
+    // Line 1 of the appended text is BASE's line count + 2.
+    let first = BASE.lines().count() + 2;
+    let e = err(&case(
+        "[surface.outer]\nradial_waviness = [{ order = 0, amplitude = \"0.3 um\" }]\n",
+    ));
+    check(
+        &e,
+        "surface.outer.radial_waviness[0].order",
+        first + 1,
+        &["must lie in [1, 10000]"],
+    );
+    let e = err(&case(
+        "[[surface.inner.spall]]\nposition = \"0 deg\"\nlength = \"1 mm\"\ndepth = \"-2 um\"\n",
+    ));
+    check(
+        &e,
+        "surface.inner.spall[0].depth",
+        first + 3,
+        &["must be positive"],
+    );
+    let e = err(&case(
+        "[[surface.inner.spall]]\nposition = \"0 deg\"\ndepth = \"2 um\"\n",
+    ));
+    assert_eq!(
+        e.key.as_deref(),
+        Some("surface.inner.spall[0].width"),
+        "{e}"
+    );
+    assert!(
+        e.to_string().contains("either width (angle) or length"),
+        "{e}"
+    );
+    let e = err(&case(
+        "[[surface.balls.spall]]\nball = 22\nposition = \"0 deg\"\nlength = \"1 mm\"\ndepth = \"2 um\"\n",
+    ));
+    check(&e, "surface.balls.spall[0].ball", first + 1, &["0 to 21"]);
+    let e = err(&case(
+        "[surface.outer]\nrandom_radial_waviness = { min_order = 5, max_order = 2, amplitude = \"0.1 um\" }\n",
+    ));
+    assert_eq!(
+        e.key.as_deref(),
+        Some("surface.outer.random_radial_waviness.max_order"),
+        "{e}"
+    );
+    let e = err(&case(
+        "[[surface.outer.spall]]\nposition = \"0 deg\"\nlength = \"1 mm\"\ndepth = \"2 um\"\nedge = \"ramped\"\n",
+    ));
+    assert_eq!(e.key.as_deref(), Some("surface.outer.spall[0].ramp"), "{e}");
+    // A valid surface loads, random waviness included.
+    let ok = load_case(
+        "case.toml",
+        &case(
+            "[surface.outer]\nradial_waviness = [{ order = 22, amplitude = \"0.3 um\" }]\nrandom_axial_waviness = { min_order = 2, max_order = 9, amplitude = \"0.1 um\", seed = 3 }\n[surface.balls]\nballs = [1]\nwaviness = [{ order = 2, amplitude = \"0.1 um\" }]\n",
+        ),
+        &[],
+    )
+    .unwrap();
+    assert_eq!(ok.surface.outer.radial.terms.len(), 1);
+    assert_eq!(ok.surface.outer.axial.terms.len(), 8);
+    assert_eq!(ok.surface.balls.len(), 22);
+    assert!(ok.surface.balls[0].is_smooth() && !ok.surface.balls[1].is_smooth());
+}
