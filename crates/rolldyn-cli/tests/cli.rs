@@ -925,3 +925,121 @@ fn traction_consistent_quasistatic() {
     assert!((cage / qs_cage - 1.0).abs() < 1e-6, "{cage} vs {qs_cage}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A wavy outer race (order 22 = Z, seed 001's C3 setting): `run` records
+/// the vibration channels and whirl keys, and `spectrum` finds BPFO (=
+/// 22 f_c, seed 001 Table 2) as the largest peak of the axial acceleration.
+#[test]
+fn spectrum_of_a_wavy_run_names_bpfo() {
+    let preset = PRESETS.iter().find(|p| p.name == "7008C").unwrap().text;
+    let case = preset.replacen(
+        "\n[assumptions]",
+        "\n[surface.outer]\nradial_waviness = [{ order = 22, amplitude = \"0.3 um\" }]\n\n[assumptions]",
+        1,
+    );
+    let dir = temp_dir("spectrum");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(&["run", "-", "--duration", "12 ms", "-o", &d], Some(&case));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    for k in [
+        "cage_whirl_radius_mean_m",
+        "cage_whirl_radius_max_m",
+        "cage_whirl_speed_rpm",
+        "cage_whirl_speed_ratio",
+        "cage_whirl_sigma",
+        "velocity_rms_band_hz",
+        "inner_ring_velocity_rms_x_mm_s",
+        "inner_ring_velocity_rms_y_mm_s",
+        "inner_ring_velocity_rms_z_mm_s",
+        "outer_ring_velocity_rms_y_mm_s",
+        "outer_ring_velocity_rms_z_mm_s",
+        "sample_rate_hz",
+        "ball_count",
+        "ball_diameter_m",
+        "pitch_diameter_m",
+        "mean_contact_angle_inner_deg",
+        "mean_contact_angle_outer_deg",
+    ] {
+        assert!(summary.get(k).is_some(), "summary lacks {k}");
+    }
+    assert!(summary["outer_ring_velocity_rms_y_mm_s"].is_null());
+    let list = stdout(&rolldyn(&["spectrum", &d, "--list"], None));
+    for channel in [
+        "inner_ring_acceleration_x_m_s2 [m/s^2]",
+        "outer_ring_acceleration_z_m_s2 [m/s^2]",
+        "housing_force_y_n [N]",
+        "cage_velocity_z_m_s [m/s]",
+    ] {
+        assert!(list.contains(channel), "--list lacks {channel}");
+    }
+    let s = json(
+        &[
+            "spectrum",
+            &d,
+            "--channel",
+            "inner_ring_acceleration_x_m_s2",
+            "--from",
+            "0.002",
+            "--json",
+        ],
+        None,
+    );
+    assert_eq!(
+        keys(&s),
+        [
+            "band_hz",
+            "channel",
+            "characteristic",
+            "csv",
+            "from_s",
+            "kind",
+            "lines",
+            "peaks",
+            "resolution_hz",
+            "sample_rate_hz",
+            "samples",
+            "segment",
+            "to_s",
+            "unit",
+            "value_unit",
+            "velocity_rms_band_hz",
+            "velocity_rms_mm_s",
+            "window"
+        ]
+    );
+    assert_eq!(s["peaks"][0]["line"], "BPFO", "{}", s["peaks"]);
+    let bpfo = s["characteristic"]["bpfo_hz"].as_f64().unwrap();
+    let f = s["peaks"][0]["frequency_hz"].as_f64().unwrap();
+    assert!((f - bpfo).abs() <= 1.5 * s["resolution_hz"].as_f64().unwrap());
+    assert!(s["velocity_rms_mm_s"].as_f64().unwrap() >= 0.0);
+    let csv =
+        std::fs::read_to_string(dir.join("spectrum_inner_ring_acceleration_x_m_s2_amplitude.csv"))
+            .unwrap();
+    assert!(csv.starts_with("frequency_hz,value\n"));
+    assert!(
+        dir.join("spectrum_inner_ring_acceleration_x_m_s2_amplitude.json")
+            .exists()
+    );
+    for kind in [["--kind", "psd"], ["--kind", "envelope"]] {
+        let s = json(&["spectrum", &d, kind[0], kind[1], "--json"], None);
+        assert_eq!(s["kind"], kind[1]);
+    }
+    // Bad arguments: exit 2, named.
+    for (args, fragment) in [
+        (vec!["--channel", "nope"], "--channel nope"),
+        (vec!["--kind", "cepstrum"], "--kind cepstrum"),
+        (vec!["--kind", "envelope", "--band", "9000:100"], "--band"),
+        (vec!["--from", "1"], "--from"),
+    ] {
+        let mut all = vec!["spectrum", d.as_str()];
+        all.extend(args);
+        let o = rolldyn(&all, None);
+        assert_eq!(o.status.code(), Some(2), "{all:?}");
+        assert!(stderr(&o).contains(fragment), "{}", stderr(&o));
+    }
+    let o = rolldyn(&["spectrum", "/nonexistent-dir"], None);
+    assert_eq!(o.status.code(), Some(2));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -24,6 +24,9 @@ pub struct Line {
     pub name: String,
     /// Frequency \[Hz\].
     pub frequency: f64,
+    /// Whether it is a sideband (a peak near both a harmonic and a
+    /// sideband is named by the harmonic).
+    pub sideband: bool,
 }
 
 /// Fundamental characteristic frequencies \[Hz\].
@@ -67,7 +70,12 @@ impl CharacteristicFrequencies {
         let mut out = Vec::new();
         let mut push = |name: String, frequency: f64| {
             if frequency > 0.0 {
-                out.push(Line { name, frequency });
+                let sideband = name.contains('+') || name.contains('−');
+                out.push(Line {
+                    name,
+                    frequency,
+                    sideband,
+                });
             }
         };
         let named = |k: usize, base: &str| {
@@ -126,7 +134,9 @@ pub struct Peak {
 
 /// The `count` largest local maxima of `spectrum` above `min_frequency`
 /// (strictly greater than both neighbours), largest first, each named by the
-/// nearest line within `tolerance` \[Hz\] (none beyond it).
+/// nearest line within `tolerance` \[Hz\] (none beyond it); harmonics
+/// before sidebands, so that a spectrum too coarse to separate a sideband
+/// names the peak by its carrier.
 pub fn find_peaks(
     spectrum: &Spectrum,
     min_frequency: f64,
@@ -147,12 +157,14 @@ pub fn find_peaks(
             let frequency = spectrum.frequency[k];
             let nearest = lines
                 .iter()
+                .filter(|l| (l.frequency - frequency).abs() <= tolerance)
                 .min_by(|a, b| {
-                    (a.frequency - frequency)
-                        .abs()
-                        .total_cmp(&(b.frequency - frequency).abs())
-                })
-                .filter(|l| (l.frequency - frequency).abs() <= tolerance);
+                    a.sideband.cmp(&b.sideband).then(
+                        (a.frequency - frequency)
+                            .abs()
+                            .total_cmp(&(b.frequency - frequency).abs()),
+                    )
+                });
             Peak {
                 frequency,
                 value,
@@ -210,16 +222,24 @@ mod tests {
         };
         let lines = vec![
             Line {
+                name: "A+f".into(),
+                frequency: 20.1,
+                sideband: true,
+            },
+            Line {
                 name: "A".into(),
-                frequency: 20.3,
+                frequency: 20.4,
+                sideband: false,
             },
             Line {
                 name: "B".into(),
                 frequency: 60.0,
+                sideband: false,
             },
         ];
         let peaks = find_peaks(&spectrum, 1.0, 5, &lines, 1.0);
         assert_eq!(peaks.len(), 2);
+        // The harmonic wins over the nearer sideband.
         assert_eq!(peaks[0].line.as_deref(), Some("A"));
         assert_eq!(peaks[1].frequency, 53.0);
         assert_eq!(peaks[1].line, None);
