@@ -9,7 +9,7 @@
 //! contact's equivalent radius in the rolling direction, the approach lost
 //! is at most the gap a²/(2R_x) of the two surfaces at that distance
 //! (the ball path through a spall of Sawalhi & Randall 2008, MSSP 22,
-//! 1924–1951, and Moazen-Ahmadi & Howard 2016, MSSP 75, 104–117):
+//! 1924–1951, written with the parabolic gap of the two surfaces):
 //!
 //! ```text
 //! sharp edge:   drop(a) = min(d, a²/(2R_x))
