@@ -1043,3 +1043,37 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
     assert_eq!(o.status.code(), Some(2));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Ball surfaces add a spin-angle state per ball: the traction-consistent
+/// quasi-static solve and a run from it still work.
+#[test]
+fn ball_surfaces_work_with_the_traction_quasistatic() {
+    let preset = PRESETS.iter().find(|p| p.name == "7008C").unwrap().text;
+    let case = preset.replacen(
+        "\n[assumptions]",
+        "\n[surface.balls]\nwaviness = [{ order = 2, amplitude = \"0.1 um\" }]\n\n[assumptions]",
+        1,
+    );
+    let o = rolldyn(
+        &["quasistatic", "-", "--control", "traction", "--json"],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let dir = temp_dir("ball-surface");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "1 ms",
+            "--set",
+            "solver.start=\"quasistatic_traction\"",
+            "-o",
+            &d,
+        ],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -405,8 +405,8 @@ impl BallCoupling {
 }
 
 impl BearingModel {
-    /// Derivatives of ball j's states (into `dy`, its 9 entries) and what
-    /// its contacts do to the rings and cage.
+    /// Derivatives of ball j's states (into `dy`, its 9 entries, 10 with
+    /// the spin angle ψ) and what its contacts do to the rings and cage.
     fn ball_rhs(
         &self,
         j: usize,

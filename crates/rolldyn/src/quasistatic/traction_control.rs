@@ -95,9 +95,12 @@ struct Solver<'a> {
 impl Solver<'_> {
     /// Scaled residual of ball j: forces \[N\] (moments over D/2).
     fn ball_residual(&self, y: &[f64], j: usize, out: &mut Vec<f64>) {
-        let mut dy = [0.0; StateLayout::BALL];
+        // Room for the spin angle ψ when the balls carry surfaces.
+        let mut dy = [0.0; StateLayout::BALL + 1];
         let mut coupling = vec![0.0; self.model.coupling_len()];
-        self.model.block_rhs(self.t, y, j, &mut dy, &mut coupling);
+        let len = self.layout.ball_len();
+        self.model
+            .block_rhs(self.t, y, j, &mut dy[..len], &mut coupling);
         let r = y[self.layout.ball(j) + 1];
         out.clear();
         for &k in ball_unknowns(self.planar) {

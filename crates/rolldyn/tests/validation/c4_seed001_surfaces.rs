@@ -199,6 +199,11 @@ fn c4_outer_waviness_kz_plus_one_excites_kz_fc_radially() {
 }
 
 #[test]
+fn c4_outer_waviness_kz_minus_one_excites_kz_fc_radially() {
+    c4(WavyPart::OuterRace, 21);
+}
+
+#[test]
 fn c4_inner_waviness_kz_excites_kz_inner_pass_axially() {
     c4(WavyPart::InnerRace, 22);
 }
@@ -206,6 +211,11 @@ fn c4_inner_waviness_kz_excites_kz_inner_pass_axially() {
 #[test]
 fn c4_inner_waviness_kz_minus_one_excites_the_shaft_sideband_radially() {
     c4(WavyPart::InnerRace, 21);
+}
+
+#[test]
+fn c4_inner_waviness_kz_plus_one_excites_the_shaft_sideband_radially() {
+    c4(WavyPart::InnerRace, 23);
 }
 
 #[test]
