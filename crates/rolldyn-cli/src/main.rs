@@ -124,7 +124,7 @@ enum Command {
     /// Spectrum of one channel of a run (amplitude, Welch PSD or envelope)
     /// with the bearing's characteristic lines from the run's speeds, a
     /// peak list naming the nearest line, and the vibration velocity RMS;
-    /// writes DIR/spectrum_<channel>_<kind>.csv and .json.
+    /// writes `DIR/spectrum_<channel>_<kind>.csv` and `.json`.
     Spectrum(Box<spectrum::SpectrumArgs>),
     /// List the built-in bearings.
     Presets {

@@ -3,7 +3,7 @@
 //! run's own mean shaft and cage speeds and contact angles (DIR/summary.json),
 //! a peak list naming the nearest line, and the vibration velocity RMS
 //! (10–1000 Hz) of acceleration and velocity channels. Writes
-//! DIR/spectrum_<channel>_<kind>.csv (frequency_hz,value) and .json;
+//! `DIR/spectrum_<channel>_<kind>.csv` (frequency_hz,value) and `.json`;
 //! keys in docs/cli.md.
 
 use crate::vibration::VELOCITY_BAND;
