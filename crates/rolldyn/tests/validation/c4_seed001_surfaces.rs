@@ -417,6 +417,50 @@ fn zero_amplitude_raceway_waviness_reproduces_the_smooth_run_bit_for_bit() {
     assert_eq!(smooth, wavy);
 }
 
+/// Zero-amplitude ball waviness adds the spin-angle states (one more state
+/// per ball in the error norm and the Jacobian), so the run matches the
+/// smooth one to the integrator's tolerance rather than bit for bit.
+#[test]
+fn zero_amplitude_ball_waviness_matches_the_smooth_run() {
+    let smooth = final_state(|_| {}, 2e-3);
+    let wavy = final_state(
+        |p| {
+            p.surface.balls = vec![
+                BallSurface {
+                    waviness: Waviness {
+                        terms: vec![WavinessTerm {
+                            order: 2,
+                            amplitude: 0.0,
+                            phase: 0.0,
+                        }],
+                    },
+                    spalls: vec![],
+                };
+                22
+            ]
+        },
+        2e-3,
+    );
+    // Ball j's mechanical states sit at 10 j … 10 j + 8 with ψ, at 9 j … without.
+    let (mut worst_position, mut worst_speed) = (0.0f64, 0.0f64);
+    for j in 0..22 {
+        for k in 0..9 {
+            let d = (wavy[10 * j + k] - smooth[9 * j + k]).abs();
+            match k {
+                0 | 1 => worst_position = worst_position.max(d),
+                5..=8 => worst_speed = worst_speed.max(d / smooth[9 * j + 5].abs()),
+                _ => {}
+            }
+        }
+    }
+    eprintln!("zero ball waviness: position {worst_position:.2e} m, speeds {worst_speed:.2e} rel");
+    // rtol 1e-3 of the 1 µm position scale: 1 nm.
+    assert!(worst_position < 1e-9 && worst_speed < 1e-6);
+    // The border (rings, cage, energy) follows the ball blocks.
+    let border = smooth.len() - 9 * 22;
+    assert_eq!(wavy.len() - 10 * 22, border);
+}
+
 #[test]
 fn b2_energy_balance_closes_with_waviness_and_spalls() {
     let (mut model, y0) = model(|p| {
