@@ -361,7 +361,52 @@ pub struct CheckReport {
     pub moment_y_n_m: f64,
     pub moment_z_n_m: f64,
     pub frequencies: Option<FrequencyReport>,
+    pub surfaces: Vec<SurfaceEntry>,
     pub assumptions: Vec<AssumptionReport>,
+}
+
+/// One surface feature set of `[surface]` (check report).
+#[derive(Serialize)]
+pub struct SurfaceEntry {
+    /// `inner`, `outer` or `ball{j}`.
+    pub part: String,
+    pub radial_waviness_terms: usize,
+    pub axial_waviness_terms: usize,
+    pub max_order: u32,
+    /// Largest waviness amplitude \[m\].
+    pub max_amplitude_m: f64,
+    pub spalls: usize,
+}
+
+fn surface_entries(surface: &rolldyn::surface::SurfaceModel) -> Vec<SurfaceEntry> {
+    let max_amplitude =
+        |w: &rolldyn::surface::Waviness| w.terms.iter().map(|t| t.amplitude).fold(0.0, f64::max);
+    let mut out = Vec::new();
+    for (part, race) in [("inner", &surface.inner), ("outer", &surface.outer)] {
+        if !race.is_smooth() {
+            out.push(SurfaceEntry {
+                part: part.into(),
+                radial_waviness_terms: race.radial.terms.len(),
+                axial_waviness_terms: race.axial.terms.len(),
+                max_order: race.radial.max_order().max(race.axial.max_order()),
+                max_amplitude_m: max_amplitude(&race.radial).max(max_amplitude(&race.axial)),
+                spalls: race.spalls.len(),
+            });
+        }
+    }
+    for (j, ball) in surface.balls.iter().enumerate() {
+        if !ball.is_smooth() {
+            out.push(SurfaceEntry {
+                part: format!("ball{j}"),
+                radial_waviness_terms: ball.waviness.terms.len(),
+                axial_waviness_terms: 0,
+                max_order: ball.waviness.max_order(),
+                max_amplitude_m: max_amplitude(&ball.waviness),
+                spalls: ball.spalls.len(),
+            });
+        }
+    }
+    out
 }
 
 fn material_report(m: &rolldyn_case::case::NamedMaterial) -> MaterialReport {
@@ -427,6 +472,7 @@ impl CheckReport {
             moment_y_n_m: case.loads.moment[0],
             moment_z_n_m: case.loads.moment[1],
             frequencies,
+            surfaces: surface_entries(&case.surface),
             assumptions: case
                 .assumptions
                 .iter()
@@ -549,6 +595,21 @@ impl CheckReport {
         if let Some(f) = &self.frequencies {
             let _ = writeln!(out);
             out.push_str(&f.to_text());
+        }
+        if !self.surfaces.is_empty() {
+            let _ = writeln!(out, "\nSurfaces ([surface], docs/dynamics.md):");
+            for e in &self.surfaces {
+                let _ = writeln!(
+                    out,
+                    "  {:<7} waviness {} radial + {} axial terms (orders ≤ {}, ≤ {:.3} µm), {} spall(s)",
+                    e.part,
+                    e.radial_waviness_terms,
+                    e.axial_waviness_terms,
+                    e.max_order,
+                    e.max_amplitude_m * 1e6,
+                    e.spalls
+                );
+            }
         }
         if self.assumptions.is_empty() {
             let _ = writeln!(out, "\nAssumed values: none");

@@ -965,6 +965,15 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
         assert!(summary.get(k).is_some(), "summary lacks {k}");
     }
     assert!(summary["outer_ring_velocity_rms_y_mm_s"].is_null());
+    let check = json(&["check", "-", "--json"], Some(&case));
+    assert_eq!(check["surfaces"][0]["part"], "outer");
+    assert_eq!(check["surfaces"][0]["max_order"], 22);
+    assert!(
+        json(&["check", "--json"], None)["surfaces"]
+            .as_array()
+            .unwrap()
+            .is_empty()
+    );
     let list = stdout(&rolldyn(&["spectrum", &d, "--list"], None));
     for channel in [
         "inner_ring_acceleration_x_m_s2 [m/s^2]",
