@@ -14,9 +14,16 @@
 //! contact), not seed 003 eq 14's shaft-speed approximation. E' here is the
 //! effective modulus of MODEL §2.2 (E' = 2/[(1−ν₁²)/E₁ + (1−ν₂²)/E₂]), the
 //! one Hamrock & Dowson use.
+//!
+//! [`starvation`]: starved films from the inlet distance or the oil supply
+//! (seed 003 eqs 26–30). [`film_stiffness`]: the oil film's normal
+//! stiffness K_oil = Q/(0.073 h_min) (seed 003 eq 37).
 
 use crate::error::InvalidParameter;
 use serde::{Deserialize, Serialize};
+
+pub mod starvation;
+pub use starvation::{Supply, critical_inlet_ratio, starvation_factor};
 
 /// Pressure dependence of the viscosity.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -127,9 +134,50 @@ pub fn hamrock_dowson(
     }
 }
 
+/// Oil-film normal stiffness K_oil = dQ/dh_min = Q/(0.073 h_min) \[N/m\]
+/// (seed 003 eq 37 written out: h_min ∝ Q^−0.073 in the Hamrock–Dowson
+/// formula; MODEL §4). Infinite without a film (the contact is then
+/// Hertz alone).
+pub fn film_stiffness(load: f64, minimum_film: f64) -> f64 {
+    if minimum_film > 0.0 {
+        load / (0.073 * minimum_film)
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// Series stiffness of the Hertz contact (K_c = dQ/dδ) and the film:
+/// 1/K = 1/K_c + 1/K_oil \[N/m\].
+pub fn series_stiffness(contact: f64, film: f64) -> f64 {
+    1.0 / (1.0 / contact + 1.0 / film)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn film_stiffness_is_the_derivative_of_the_film_law() {
+        let oil = Lubricant {
+            viscosity: 0.0467,
+            pressure_viscosity: 2.2e-8,
+            pressure_model: PressureViscosity::Barus,
+        };
+        let (u, rx, ep, kappa) = (10.0, 2.8e-3, 2.29e11, 5.1);
+        let q = 50.0;
+        let film = hamrock_dowson(&oil, u, q, rx, ep, kappa);
+        // dQ/dh_min by central differences of h_min(Q) (κ held, as in eq 37).
+        let dq = 1e-4 * q;
+        let dh = hamrock_dowson(&oil, u, q + dq, rx, ep, kappa).minimum
+            - hamrock_dowson(&oil, u, q - dq, rx, ep, kappa).minimum;
+        // h_min falls with load: the stiffness is the magnitude.
+        let fd = (2.0 * dq / dh).abs();
+        let k = film_stiffness(q, film.minimum);
+        assert!((k / fd - 1.0).abs() < 1e-6, "{k} vs {fd}");
+        assert_eq!(film_stiffness(q, 0.0), f64::INFINITY);
+        assert_eq!(series_stiffness(2e8, f64::INFINITY), 2e8);
+        assert!((series_stiffness(2e8, 2e8) - 1e8).abs() < 1e-6);
+    }
 
     #[test]
     fn scaling_laws() {
