@@ -16,13 +16,16 @@
 //! one Hamrock & Dowson use.
 //!
 //! [`starvation`]: starved films from the inlet distance or the oil supply
-//! (seed 003 eqs 26–30). [`film_stiffness`]: the oil film's normal
+//! (seed 003 eqs 26–30). [`film`]: a contact's whole film state (flooded
+//! and starved films, Λ = h_min/σ, K_oil). [`film_stiffness`]: the oil film's normal
 //! stiffness K_oil = Q/(0.073 h_min) (seed 003 eq 37).
 
 use crate::error::InvalidParameter;
 use serde::{Deserialize, Serialize};
 
+pub mod film;
 pub mod starvation;
+pub use film::{ContactFilm, FilmConditions, contact_film};
 pub use starvation::{Supply, critical_inlet_ratio, starvation_factor};
 
 /// Pressure dependence of the viscosity.
