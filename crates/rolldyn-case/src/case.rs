@@ -15,8 +15,11 @@ use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
 use rolldyn::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, Material};
 
+mod lubricant;
 mod surface;
 mod traction;
+pub use lubricant::Lubricant;
+use lubricant::lubricant;
 use traction::traction;
 
 /// A rule broken by one key: the raw material of a [`crate::CaseError`].
@@ -187,27 +190,6 @@ pub struct Materials {
     pub rings: NamedMaterial,
 }
 
-/// Lubricant in SI.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Lubricant {
-    /// Name.
-    pub name: Option<String>,
-    /// η₀ \[Pa·s\].
-    pub viscosity: f64,
-    /// α_p \[1/Pa\].
-    pub pressure_viscosity: f64,
-    /// Density \[kg/m³\].
-    pub density: Option<f64>,
-    /// Thermal conductivity \[W/(m·K)\].
-    pub thermal_conductivity: Option<f64>,
-    /// Specific heat \[J/(kg·K)\].
-    pub specific_heat: Option<f64>,
-    /// Reference temperature \[K\].
-    pub temperature: Option<f64>,
-    /// Pressure–viscosity law.
-    pub pressure_viscosity_model: rolldyn::lubrication::PressureViscosity,
-}
-
 /// Built-in material names and properties.
 pub const MATERIALS: [(&str, Material); 2] = [
     ("steel_52100", Material::STEEL_52100),
@@ -374,7 +356,12 @@ impl Case {
                 "the rk4 integrator needs a fixed step, e.g. \"0.5 us\"",
             ));
         }
-        let lubricant = raw.lubricant.as_ref().map(lubricant).transpose()?;
+        let bearing = bearing(&raw.bearing)?;
+        let lubricant = raw
+            .lubricant
+            .as_ref()
+            .map(|l| lubricant(l, &bearing.geometry))
+            .transpose()?;
         let materials = Materials {
             ball: material("materials.ball", raw.materials.ball.as_ref())?,
             rings: material("materials.rings", raw.materials.rings.as_ref())?,
@@ -474,7 +461,6 @@ impl Case {
                 .unwrap_or(0.0),
         };
 
-        let bearing = bearing(&raw.bearing)?;
         let surface = surface::surface(&raw.surface, bearing.geometry.ball_count)?;
         Ok(Self {
             title: raw.title.clone(),
@@ -793,35 +779,6 @@ fn material(key: &str, choice: Option<&MaterialChoice>) -> Result<NamedMaterial,
             })
         }
     }
-}
-
-fn lubricant(l: &RawLubricant) -> Result<Lubricant, Invalid> {
-    Ok(Lubricant {
-        name: l.name.clone(),
-        viscosity: checked("lubricant.viscosity", &Some(l.viscosity.clone()), positive)?
-            .unwrap_or_default(),
-        pressure_viscosity: checked(
-            "lubricant.pressure_viscosity",
-            &Some(l.pressure_viscosity.clone()),
-            non_negative,
-        )?
-        .unwrap_or_default(),
-        density: checked("lubricant.density", &l.density, positive)?,
-        thermal_conductivity: checked(
-            "lubricant.thermal_conductivity",
-            &l.thermal_conductivity,
-            positive,
-        )?,
-        specific_heat: checked("lubricant.specific_heat", &l.specific_heat, positive)?,
-        temperature: checked("lubricant.temperature", &l.temperature, |t| {
-            if t > 0.0 {
-                Ok(())
-            } else {
-                Err("must be above absolute zero".into())
-            }
-        })?,
-        pressure_viscosity_model: l.pressure_viscosity_model.unwrap_or_default(),
-    })
 }
 
 /// Film force at the pocket wall of the gupta_film law \[N\] (seed 001

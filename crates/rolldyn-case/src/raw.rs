@@ -319,6 +319,16 @@ pub struct RawLubricant {
     /// Pressure–viscosity law of the EHL traction: "barus" (default) or
     /// "roelands".
     pub pressure_viscosity_model: Option<rolldyn::lubrication::PressureViscosity>,
+    /// Starvation: inlet distance ratio L = X_b/b of both rings' contacts
+    /// (> 1; absent: fully flooded; seed 003 eqs 28–30).
+    pub inlet_distance_ratio: Option<f64>,
+    /// Inlet distance ratio of the inner-raceway contacts only.
+    pub inlet_distance_ratio_inner: Option<f64>,
+    /// Inlet distance ratio of the outer-raceway contacts only.
+    pub inlet_distance_ratio_outer: Option<f64>,
+    /// Starvation from an oil supply flow Q_v instead (seed 003 eqs 26–27;
+    /// needs `density`).
+    pub oil_flow: Option<Quantity<VolumeFlow>>,
 }
 
 /// Operating conditions: inner-ring speed and loads on the inner ring

@@ -606,3 +606,37 @@ fn surface_errors_are_located() {
     assert_eq!(ok.surface.balls.len(), 22);
     assert!(ok.surface.balls[0].is_smooth() && !ok.surface.balls[1].is_smooth());
 }
+
+#[test]
+fn starvation_inputs_are_checked() {
+    let lub = |extra: &str| {
+        format!(
+            "{BASE}\n[lubricant]\nviscosity = \"0.05 Pa.s\"\npressure_viscosity = \"2e-8 1/Pa\"\n{extra}"
+        )
+    };
+    let e = err(&lub("inlet_distance_ratio = 0.9\n"));
+    assert_eq!(
+        e.key.as_deref(),
+        Some("lubricant.inlet_distance_ratio"),
+        "{e}"
+    );
+    assert!(e.to_string().contains("> 1"), "{e}");
+    let e = err(&lub(
+        "inlet_distance_ratio = 1.5\ninlet_distance_ratio_inner = 1.2\n",
+    ));
+    assert_eq!(
+        e.key.as_deref(),
+        Some("lubricant.inlet_distance_ratio"),
+        "{e}"
+    );
+    let e = err(&lub("oil_flow = \"0.1 L/min\"\n"));
+    assert_eq!(e.key.as_deref(), Some("lubricant.density"), "{e}");
+    let e = err(&lub(
+        "oil_flow = \"0.1 L/min\"\ndensity = \"860 kg/m^3\"\ninlet_distance_ratio = 1.5\n",
+    ));
+    assert_eq!(e.key.as_deref(), Some("lubricant.oil_flow"), "{e}");
+    let ok = load_case("case.toml", &lub("inlet_distance_ratio_outer = 1.3\n"), &[]).unwrap();
+    let supply = ok.lubricant.unwrap().supply;
+    assert_eq!(supply[0], rolldyn::lubrication::Supply::Flooded);
+    assert_eq!(supply[1], rolldyn::lubrication::Supply::InletDistance(1.3));
+}

@@ -28,12 +28,29 @@ pub(super) fn surface(raw: &RawSurface, ball_count: usize) -> Result<SurfaceMode
     }
     if let Some(balls) = &raw.balls {
         model.balls = ball_surfaces(balls, ball_count)?;
+        model.ball_roughness = roughness("surface.balls.roughness", &balls.roughness)?;
     }
     Ok(model)
 }
 
+fn roughness(
+    key: &str,
+    value: &Option<crate::units::Quantity<crate::units::Length>>,
+) -> Result<f64, Invalid> {
+    match value {
+        None => Ok(0.0),
+        Some(q) if q.si.is_finite() && q.si >= 0.0 => Ok(q.si),
+        Some(q) => Err(Invalid::new(
+            key,
+            Some(q.to_string()),
+            "must not be negative",
+        )),
+    }
+}
+
 fn race(key: &str, raw: &RawRaceSurface) -> Result<RaceSurface, Invalid> {
     Ok(RaceSurface {
+        roughness: roughness(&format!("{key}.roughness"), &raw.roughness)?,
         radial: waviness(
             &format!("{key}.radial_waviness"),
             &raw.radial_waviness,

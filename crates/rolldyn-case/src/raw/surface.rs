@@ -36,6 +36,8 @@ pub struct RawRaceSurface {
     /// Spalls (`[[surface.outer.spall]]`).
     #[serde(default)]
     pub spall: Vec<RawSpall>,
+    /// RMS roughness R_q of the raceway (film parameter Λ).
+    pub roughness: Option<Quantity<Length>>,
 }
 
 /// Surfaces of the balls.
@@ -53,6 +55,8 @@ pub struct RawBallSurfaces {
     /// Spalls, each on the ball named by its `ball` key.
     #[serde(default)]
     pub spall: Vec<RawSpall>,
+    /// RMS roughness R_q of the balls (film parameter Λ).
+    pub roughness: Option<Quantity<Length>>,
 }
 
 /// One waviness harmonic.

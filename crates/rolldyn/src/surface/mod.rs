@@ -72,6 +72,8 @@ pub struct RaceSurface {
     pub axial: Waviness,
     /// Spalls.
     pub spalls: Vec<Spall>,
+    /// RMS roughness R_q \[m\] (film parameter Λ; 0: not given).
+    pub roughness: f64,
 }
 
 impl RaceSurface {
@@ -82,10 +84,11 @@ impl RaceSurface {
         for s in &self.spalls {
             s.validate()?;
         }
-        Ok(())
+        crate::error::require_non_negative("roughness", self.roughness)
     }
 
-    /// Whether the surface is perfectly smooth (nothing to evaluate).
+    /// Whether the surface has no form (waviness, spalls) to evaluate;
+    /// roughness does not enter the approach.
     pub fn is_smooth(&self) -> bool {
         self.radial.is_empty() && self.axial.is_empty() && self.spalls.is_empty()
     }
@@ -166,6 +169,8 @@ pub struct SurfaceModel {
     pub outer: RaceSurface,
     /// One surface per ball, or empty: smooth balls.
     pub balls: Vec<BallSurface>,
+    /// RMS roughness R_q of the balls \[m\] (film parameter Λ; 0: not given).
+    pub ball_roughness: f64,
 }
 
 impl SurfaceModel {
@@ -183,13 +188,23 @@ impl SurfaceModel {
         for b in &self.balls {
             b.validate()?;
         }
-        Ok(())
+        crate::error::require_non_negative("ball_roughness", self.ball_roughness)
+    }
+
+    /// Composite roughness σ = √(R_q,ball² + R_q,race²) of a raceway's
+    /// contacts \[m\] (0 when neither is given).
+    pub fn composite_roughness(&self, ring: crate::geometry::RingKind) -> f64 {
+        let race = match ring {
+            crate::geometry::RingKind::Inner => &self.inner,
+            crate::geometry::RingKind::Outer => &self.outer,
+        };
+        self.ball_roughness.hypot(race.roughness)
     }
 
     /// Whether the balls carry surfaces (the dynamic model then integrates
     /// each ball's spin angle ψ).
     pub fn has_ball_surfaces(&self) -> bool {
-        !self.balls.is_empty()
+        self.balls.iter().any(|b| !b.is_smooth())
     }
 
     /// Every spall with where it sits.
@@ -245,6 +260,7 @@ mod tests {
                 axial_width: None,
                 edge: Edge::Sharp,
             }],
+            roughness: 0.1e-6,
         };
         let point = RacePoint {
             angle: 0.0,
@@ -267,6 +283,18 @@ mod tests {
             ..SurfaceModel::default()
         };
         assert!(model.validate(3).is_ok());
+        // Smooth ball surfaces (e.g. a roughness only) add no spin angle.
+        assert!(!model.has_ball_surfaces());
+        let rough = SurfaceModel {
+            ball_roughness: 0.03e-6,
+            outer: RaceSurface {
+                roughness: 0.04e-6,
+                ..RaceSurface::default()
+            },
+            ..SurfaceModel::default()
+        };
+        let sigma = rough.composite_roughness(crate::geometry::RingKind::Outer);
+        assert!((sigma - 0.05e-6).abs() < 1e-20);
         assert_eq!(model.validate(4).unwrap_err().field, "surface.balls");
     }
 }

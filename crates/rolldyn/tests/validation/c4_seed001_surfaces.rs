@@ -405,11 +405,13 @@ fn zero_amplitude_raceway_waviness_reproduces_the_smooth_run_bit_for_bit() {
                 radial: zero(5),
                 axial: zero(3),
                 spalls: vec![],
+                roughness: 0.0,
             };
             p.surface.outer = RaceSurface {
                 radial: zero(22),
                 axial: zero(7),
                 spalls: vec![],
+                roughness: 0.0,
             };
         },
         2e-3,

@@ -1,0 +1,120 @@
+//! The case's lubricant (`[lubricant]`, MODEL §4): properties in SI and
+//! the oil supply of each ring (fully flooded, an inlet distance ratio, or
+//! an oil flow), seed 003 eqs 26–30.
+
+use super::{Invalid, checked, non_negative, positive};
+use crate::raw::RawLubricant;
+use rolldyn::BearingGeometry;
+use rolldyn::lubrication::Supply;
+
+/// Lubricant in SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lubricant {
+    /// Name.
+    pub name: Option<String>,
+    /// η₀ \[Pa·s\].
+    pub viscosity: f64,
+    /// α_p \[1/Pa\].
+    pub pressure_viscosity: f64,
+    /// Density \[kg/m³\].
+    pub density: Option<f64>,
+    /// Thermal conductivity \[W/(m·K)\].
+    pub thermal_conductivity: Option<f64>,
+    /// Specific heat \[J/(kg·K)\].
+    pub specific_heat: Option<f64>,
+    /// Reference temperature \[K\].
+    pub temperature: Option<f64>,
+    /// Pressure–viscosity law.
+    pub pressure_viscosity_model: rolldyn::lubrication::PressureViscosity,
+    /// Oil supply of the inner and outer raceway contacts (starvation).
+    pub supply: [Supply; 2],
+}
+
+pub(super) fn lubricant(
+    l: &RawLubricant,
+    geometry: &BearingGeometry,
+) -> Result<Lubricant, Invalid> {
+    Ok(Lubricant {
+        name: l.name.clone(),
+        viscosity: checked("lubricant.viscosity", &Some(l.viscosity.clone()), positive)?
+            .unwrap_or_default(),
+        pressure_viscosity: checked(
+            "lubricant.pressure_viscosity",
+            &Some(l.pressure_viscosity.clone()),
+            non_negative,
+        )?
+        .unwrap_or_default(),
+        density: checked("lubricant.density", &l.density, positive)?,
+        thermal_conductivity: checked(
+            "lubricant.thermal_conductivity",
+            &l.thermal_conductivity,
+            positive,
+        )?,
+        specific_heat: checked("lubricant.specific_heat", &l.specific_heat, positive)?,
+        temperature: checked("lubricant.temperature", &l.temperature, |t| {
+            if t > 0.0 {
+                Ok(())
+            } else {
+                Err("must be above absolute zero".into())
+            }
+        })?,
+        pressure_viscosity_model: l.pressure_viscosity_model.unwrap_or_default(),
+        supply: supply(l, geometry)?,
+    })
+}
+
+/// The supply per ring: `inlet_distance_ratio` (both rings) or its
+/// `_inner`/`_outer` forms, or `oil_flow` (with the density for ν = η/ρ;
+/// the inlet film on each ring's raceway radius, thrown by the inner ring's
+/// speed as seed 003 eq 27 has it); fully flooded without any.
+fn supply(l: &RawLubricant, geometry: &BearingGeometry) -> Result<[Supply; 2], Invalid> {
+    let ratio = |key: &str, v: Option<f64>| -> Result<Option<Supply>, Invalid> {
+        v.map(|r| {
+            let s = Supply::InletDistance(r);
+            s.validate()
+                .map(|_| s)
+                .map_err(|e| Invalid::new(format!("lubricant.{key}"), Some(r.to_string()), e.rule))
+        })
+        .transpose()
+    };
+    let both = ratio("inlet_distance_ratio", l.inlet_distance_ratio)?;
+    let inner = ratio("inlet_distance_ratio_inner", l.inlet_distance_ratio_inner)?;
+    let outer = ratio("inlet_distance_ratio_outer", l.inlet_distance_ratio_outer)?;
+    if both.is_some() && (inner.is_some() || outer.is_some()) {
+        return Err(Invalid::new(
+            "lubricant.inlet_distance_ratio",
+            None,
+            "give inlet_distance_ratio (both rings) or the _inner/_outer forms, not both",
+        ));
+    }
+    if let Some(flow) = &l.oil_flow {
+        if both.or(inner).or(outer).is_some() {
+            return Err(Invalid::new(
+                "lubricant.oil_flow",
+                Some(flow.to_string()),
+                "give either oil_flow or an inlet distance ratio, not both",
+            ));
+        }
+        checked("lubricant.oil_flow", &Some(flow.clone()), positive)?;
+        let density = l.density.as_ref().map(|d| d.si).ok_or_else(|| {
+            Invalid::missing(
+                "lubricant.density",
+                "the oil density (kinematic viscosity ν = η/ρ of the oil-flow supply)",
+            )
+        })?;
+        let nu = l.viscosity.si / density;
+        let at = |radius: f64| Supply::Flow {
+            flow: flow.si,
+            kinematic_viscosity: nu,
+            radius,
+        };
+        return Ok([
+            at(0.5 * geometry.inner.groove_bottom_diameter),
+            at(0.5 * geometry.outer.groove_bottom_diameter),
+        ]);
+    }
+    Ok([
+        both.or(inner).unwrap_or_default(),
+        both.or(outer).unwrap_or_default(),
+    ])
+}
