@@ -872,6 +872,10 @@ impl Case {
             planar: self.planar,
             drag: self.drag,
             surface: self.surface.clone(),
+            film_supply: self
+                .lubricant
+                .as_ref()
+                .map_or(Default::default(), |l| l.supply),
         })
     }
 }

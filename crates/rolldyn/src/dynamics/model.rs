@@ -89,6 +89,9 @@ pub struct DynamicsParameters {
     pub drag: DragParameters,
     /// Raceway and ball surfaces: waviness and spalls (default: smooth).
     pub surface: SurfaceModel,
+    /// Oil supply of the inner and outer raceway contacts (starvation of
+    /// the EHL film, MODEL §4; default: fully flooded).
+    pub film_supply: [crate::lubrication::Supply; 2],
 }
 
 /// Kinematic state of a ball (global frame).
@@ -118,6 +121,8 @@ pub(super) struct RingMotion {
     pub(super) spin_angle: f64,
     /// Spin speed of the ring about its axis \[rad/s\].
     pub(super) spin_speed: f64,
+    /// Inner-ring (shaft) speed \[rad/s\] (the oil-flow supply, MODEL §4).
+    pub(super) shaft_speed: f64,
 }
 
 /// The dynamic bearing model.
@@ -157,6 +162,9 @@ impl BearingModel {
         }
         require_non_negative("rolling_hysteresis", params.rolling_hysteresis)?;
         params.surface.validate(geometry.ball_count)?;
+        for supply in &params.film_supply {
+            supply.validate()?;
+        }
         let ep = effective_modulus(ball, rings);
         let ball_mass = geometry.ball_mass(ball.density);
         Ok(Self {
@@ -283,6 +291,7 @@ impl BearingModel {
                 self.params.speed.angle_at(t)
             },
             spin_speed,
+            shaft_speed: spin_speed,
         };
         let o = self.layout.outer();
         let outer_pose = RingPose {
@@ -298,6 +307,7 @@ impl BearingModel {
             omega_frame: Vector3::zeros(),
             spin_angle: 0.0,
             spin_speed: 0.0,
+            shaft_speed: spin_speed,
         };
         (inner, outer)
     }

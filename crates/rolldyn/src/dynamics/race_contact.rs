@@ -20,6 +20,8 @@ use super::model::{BallMotion, BearingModel, RingMotion};
 use super::surface_contact::SurfaceEffect;
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{ContactTable, Curvature, TorusContact};
+use crate::geometry::RingKind;
+use crate::lubrication::{FilmConditions, contact_film};
 use crate::traction::fastsim::MapCell;
 use crate::traction::{ContactConditions, ContactPatch, Creep, TractionModel, TractionResult};
 use nalgebra::Vector3;
@@ -168,22 +170,37 @@ impl BearingModel {
             } else {
                 (Vector3::zeros(), 0.0)
             };
-        let film = if self.params.traction.needs_film() {
-            let curvature = Curvature::of_raceway(
-                &ring.raceway,
-                self.geometry.ball_diameter,
-                self.geometry.pitch_diameter,
-                geometry.contact_angle,
-            );
-            self.params.traction.central_film(
-                u,
-                load,
-                curvature.rolling_radius,
-                self.effective_modulus,
-                hertz.ellipticity,
-            )
-        } else {
-            0.0
+        // Film (MODEL §4): Hamrock–Dowson, starved by the ring's supply.
+        let film = match self.params.traction.lubricant() {
+            Some(lubricant) => {
+                let curvature = Curvature::of_raceway(
+                    &ring.raceway,
+                    self.geometry.ball_diameter,
+                    self.geometry.pitch_diameter,
+                    geometry.contact_angle,
+                );
+                let k = match ring.raceway.kind {
+                    RingKind::Inner => 0,
+                    RingKind::Outer => 1,
+                };
+                contact_film(
+                    lubricant,
+                    &self.params.film_supply[k],
+                    0.0,
+                    &FilmConditions {
+                        entrainment_speed: u,
+                        load,
+                        rolling_radius: curvature.rolling_radius,
+                        effective_modulus: self.effective_modulus,
+                        ellipticity: hertz.ellipticity,
+                        semi_minor: ellipse.semi_minor,
+                        // Seed 003 eq 27: the inner ring throws the supply film.
+                        ring_speed: ring.shaft_speed,
+                    },
+                )
+                .central
+            }
+            None => 0.0,
         };
         let rg = ring.raceway.groove_radius;
         let rb = 0.5 * self.geometry.ball_diameter;

@@ -499,6 +499,7 @@ mod tests {
             planar: false,
             drag: DragParameters::default(),
             surface: crate::surface::SurfaceModel::default(),
+            film_supply: Default::default(),
             inner_support: Support::default(),
             outer_ring: None,
             rolling_hysteresis: 0.0,

@@ -80,6 +80,14 @@ impl TractionModel {
         matches!(self, Self::Ehl(_))
     }
 
+    /// The lubricant of the models that use a film (EHL), else None.
+    pub fn lubricant(&self) -> Option<&crate::lubrication::Lubricant> {
+        match self {
+            Self::Ehl(ehl) => Some(&ehl.lubricant),
+            _ => None,
+        }
+    }
+
     /// Central film thickness h_c \[m\] of a contact for the models that
     /// use one (EHL: Hamrock–Dowson, MODEL §4), else 0: entrainment speed
     /// |u| \[m/s\], load Q \[N\], rolling radius R_x \[m\], effective

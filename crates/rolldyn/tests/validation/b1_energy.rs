@@ -74,6 +74,7 @@ fn model(configure: impl Fn(&mut DynamicsParameters)) -> BearingModel {
         planar: true,
         drag: DragParameters::default(),
         surface: rolldyn::surface::SurfaceModel::default(),
+        film_supply: Default::default(),
         inner_support: Support::default(),
         outer_ring: None,
         rolling_hysteresis: 0.0,

@@ -20,6 +20,7 @@ mod b8_fastsim;
 mod c1_seed000;
 mod c4_seed001_surfaces;
 mod c5_seed002_table1;
+mod c7_starvation;
 mod cage_guide;
 mod common;
 mod convergence;
