@@ -8,10 +8,14 @@
 //! ([`ring_contact`]), with analytic derivatives, so Newton's method and
 //! the stiffness matrix (implicit-function theorem) use an exact Jacobian.
 //! [`sweep()`](sweep::sweep) solves lists and grids of operating points in parallel,
-//! warm-started, deterministically.
+//! warm-started, deterministically. [`films`]: the lubricant films of a
+//! solution (starved, Λ, K_oil); [`modes`]: natural frequencies and mode
+//! shapes of the supported inner ring on the bearing stiffness.
 
 pub mod equilibrium;
 pub mod error;
+pub mod films;
+pub mod modes;
 pub mod ring_contact;
 pub mod sweep;
 pub mod traction_control;

@@ -1,0 +1,206 @@
+//! Lubricant films of a quasi-static solution (MODEL §4; seed 003 §2.3):
+//! per contact the entrainment speed from the solved ball and ring motion,
+//! the flooded and starved Hamrock–Dowson films, Λ and K_oil.
+//!
+//! The entrainment speed is the dynamic model's (docs/dynamics.md): the
+//! mean of the ball's and the ring's surface speeds relative to the contact
+//! point, which moves with the ball's azimuth frame, tangential part only:
+//!
+//! ```text
+//! v_P = q̇ + ω_m e_x × (P − q),   u = |½[(v_b − v_P) + (v_ring − v_P)]_t|
+//! ```
+//! with the ball centre q at (x, r, φ), q̇ = r ω_m e_t, the ball's angular
+//! velocity ω_x e_x + ω_r e_r, and the inner ring turning at ω_i about its
+//! (displaced, tilted) axis. The contact point P is the exact torus contact
+//! of MODEL §2.1 at the solved ring displacement.
+
+use super::Equilibrium;
+use crate::contact::{Curvature, GrooveCircle, RingPose};
+use crate::geometry::BearingGeometry;
+use crate::lubrication::{ContactFilm, FilmConditions, Lubricant, Supply, contact_film};
+use nalgebra::Vector3;
+
+/// What the films need besides the solution.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilmInputs {
+    /// The lubricant.
+    pub lubricant: Lubricant,
+    /// Supply of the inner and outer raceway contacts.
+    pub supply: [Supply; 2],
+    /// Composite roughness σ of the inner and outer contacts \[m\] (0: no Λ).
+    pub roughness: [f64; 2],
+    /// Effective modulus E' \[Pa\].
+    pub effective_modulus: f64,
+}
+
+/// Films of one ball: inner, outer contact, with their entrainment speeds \[m/s\].
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BallFilms {
+    /// Inner and outer contact films.
+    pub films: [ContactFilm; 2],
+    /// Inner and outer entrainment speeds u \[m/s\].
+    pub entrainment_speed: [f64; 2],
+}
+
+/// The films of every ball of `eq` (zero films for unloaded contacts).
+pub fn equilibrium_films(
+    geometry: &BearingGeometry,
+    eq: &Equilibrium,
+    inputs: &FilmInputs,
+) -> Vec<BallFilms> {
+    let d = eq.displacement;
+    let pose = RingPose {
+        translation: Vector3::new(d[0], d[1], d[2]),
+        tilt_y: d[3],
+        tilt_z: d[4],
+    };
+    let inner_axis = pose.rotation() * Vector3::x();
+    let rings = [
+        (
+            &geometry.inner,
+            GrooveCircle::of(&geometry.inner, &pose),
+            pose.translation,
+            eq.inner_speed * inner_axis,
+        ),
+        (
+            &geometry.outer,
+            GrooveCircle::of(&geometry.outer, &RingPose::default()),
+            Vector3::zeros(),
+            Vector3::zeros(),
+        ),
+    ];
+    eq.balls
+        .iter()
+        .map(|ball| {
+            let (s, c) = ball.azimuth.sin_cos();
+            let (ex, er, et) = (
+                Vector3::x(),
+                Vector3::new(0.0, c, s),
+                Vector3::new(0.0, -s, c),
+            );
+            let q = ball.axial_position * ex + ball.radial_position * er;
+            let v = ball.radial_position * ball.orbital_speed * et;
+            let w = ball.spin_axial * ex + ball.spin_radial * er;
+            let mut out = BallFilms::default();
+            for (k, ((raceway, circle, centre, omega), solution)) in
+                rings.iter().zip([&ball.inner, &ball.outer]).enumerate()
+            {
+                if solution.load <= 0.0 {
+                    continue;
+                }
+                let Some(contact) = circle.contact(&q, geometry.ball_diameter, 0.0) else {
+                    continue;
+                };
+                let p = contact.contact_point;
+                let n = contact.normal;
+                let v_p = v + ball.orbital_speed * ex.cross(&(p - q));
+                let ball_surface = v + w.cross(&(p - q));
+                let ring_surface = omega.cross(&(p - centre));
+                let e = 0.5 * ((ball_surface - v_p) + (ring_surface - v_p));
+                let u = (e - e.dot(&n) * n).norm();
+                let curvature = Curvature::of_raceway(
+                    raceway,
+                    geometry.ball_diameter,
+                    geometry.pitch_diameter,
+                    solution.contact_angle,
+                );
+                let hertz = solution.hertz;
+                out.entrainment_speed[k] = u;
+                out.films[k] = contact_film(
+                    &inputs.lubricant,
+                    &inputs.supply[k],
+                    inputs.roughness[k],
+                    &FilmConditions {
+                        entrainment_speed: u,
+                        load: solution.load,
+                        rolling_radius: curvature.rolling_radius,
+                        effective_modulus: inputs.effective_modulus,
+                        ellipticity: hertz.semi_major / hertz.semi_minor,
+                        semi_minor: hertz.semi_minor,
+                        ring_speed: eq.inner_speed,
+                    },
+                );
+            }
+            out
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::HertzModel;
+    use crate::lubrication::PressureViscosity;
+    use crate::material::{Material, effective_modulus};
+    use crate::operating::Loads;
+    use crate::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+    use crate::{Clearance, GeometrySpec};
+
+    /// Under pure axial load at speed, outer control: the outer contact rolls
+    /// without spin, so its entrainment speed is the classical pure-rolling
+    /// one, (d_m/2 + (D/2) cos α_o) ω_m … checked against the ball's own
+    /// surface speed at the contact; and the films follow Hamrock–Dowson.
+    #[test]
+    fn entrainment_and_films_at_a_jones_harris_state() {
+        let g = BearingGeometry::new(&GeometrySpec {
+            ball_diameter: 6.35e-3,
+            ball_count: 22,
+            pitch_diameter: 54e-3,
+            inner_groove_curvature: 3.493 / 6.35,
+            outer_groove_curvature: 3.302 / 6.35,
+            clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
+            preload: false,
+        })
+        .unwrap();
+        let steel = Material::STEEL_52100;
+        let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
+        let speed = 10_000.0 * std::f64::consts::TAU / 60.0;
+        let eq = qs
+            .solve(
+                &Conditions {
+                    loads: Loads {
+                        force: [200.0, 0.0, 0.0],
+                        moment: [0.0; 2],
+                    },
+                    inner_speed: speed,
+                    control: RacewayControl::Outer,
+                },
+                &SolverOptions::default(),
+            )
+            .unwrap();
+        let inputs = FilmInputs {
+            lubricant: Lubricant {
+                viscosity: 0.0467,
+                pressure_viscosity: 2.2e-8,
+                pressure_model: PressureViscosity::Barus,
+            },
+            supply: [Supply::Flooded, Supply::InletDistance(1.3)],
+            roughness: [0.1e-6, 0.1e-6],
+            effective_modulus: effective_modulus(&steel, &steel),
+        };
+        let films = equilibrium_films(&g, &eq, &inputs);
+        assert_eq!(films.len(), 22);
+        let f = &films[0];
+        let ball = &eq.balls[0];
+        // Outer ring fixed, no slip at the outer contact (outer control):
+        // the ball surface at the outer contact moves at −v_P relative to the
+        // contact point, so u = |v_P| = ω_m × (radius of the contact point).
+        let alpha_o = ball.outer.contact_angle;
+        let r_contact = ball.radial_position + 0.5 * g.ball_diameter * alpha_o.cos();
+        let expected = ball.orbital_speed * r_contact;
+        assert!(
+            (f.entrainment_speed[1] / expected - 1.0).abs() < 1e-3,
+            "{} vs {expected}",
+            f.entrainment_speed[1]
+        );
+        // Flooded inner film is Hamrock–Dowson at that speed; the outer is starved.
+        assert_eq!(f.films[0].starvation_factor, 1.0);
+        assert!(f.films[1].starvation_factor < 1.0);
+        assert!(f.films[0].central > 1e-8 && f.films[0].central < 2e-6);
+        assert!(f.films[0].lambda.unwrap() > 0.0);
+        // All balls alike under pure axial load.
+        for b in &films {
+            assert!((b.films[0].central / f.films[0].central - 1.0).abs() < 1e-9);
+        }
+    }
+}
