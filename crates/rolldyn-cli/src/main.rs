@@ -4,6 +4,7 @@
 //! 2 bad input (case file, override or argument).
 
 mod quasistatic;
+mod quasistatic_films;
 mod report;
 mod run;
 mod spectrum;
@@ -331,7 +332,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 let sol = solver
                     .solve(&conditions, &rolldyn::quasistatic::SolverOptions::default())
                     .map_err(|e| Failure::BadInput(e.to_string()))?;
-                let report = quasistatic::QuasiStaticReport::new(&sol, &conditions);
+                let report = quasistatic::QuasiStaticReport::new(&sol, &conditions)
+                    .with_films_and_modes(&case, &sol);
                 if as_json {
                     json(&report)
                 } else {

@@ -121,6 +121,10 @@ pub struct QuasiStaticReport {
     pub iterations: usize,
     pub relative_residual: f64,
     pub balls: Vec<BallRow>,
+    /// Per ball films (null without a `[lubricant]`).
+    pub films: Option<Vec<crate::quasistatic_films::FilmRow>>,
+    /// Natural modes of the inner ring (null without its mass and tilt inertia).
+    pub modes: Option<crate::quasistatic_films::ModesReport>,
 }
 
 impl QuasiStaticReport {
@@ -159,7 +163,16 @@ impl QuasiStaticReport {
             iterations: sol.iterations,
             relative_residual: sol.residual,
             balls: sol.balls.iter().map(BallRow::from).collect(),
+            films: None,
+            modes: None,
         }
+    }
+
+    /// With the films and natural modes the case allows.
+    pub fn with_films_and_modes(mut self, case: &Case, sol: &Equilibrium) -> Self {
+        self.films = crate::quasistatic_films::films(case, sol);
+        self.modes = crate::quasistatic_films::modes(case, sol);
+        self
     }
 
     pub fn to_text(&self) -> String {
@@ -237,6 +250,7 @@ impl QuasiStaticReport {
                 b.max_pressure_outer_pa * 1e-6
             );
         }
+        crate::quasistatic_films::text(self.films.as_deref(), self.modes.as_ref(), &mut out);
         let _ = writeln!(
             out,
             "\n  converged in {} Newton iterations, relative residual {:.2e}",

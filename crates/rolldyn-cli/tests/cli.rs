@@ -326,6 +326,77 @@ fn quasistatic_single_point_and_json_keys() {
     assert!(text.contains("Static load distribution"), "{text}");
 }
 
+/// Films (the default case has a lubricant) and the ring's natural modes
+/// (given its tilt inertia); starvation on the inner ring thins only the
+/// inner films by the seed 003 eq 30 factor.
+#[test]
+fn quasistatic_films_and_modes() {
+    let flooded = json(&["quasistatic", "--json"], None);
+    assert!(
+        flooded["modes"].is_null(),
+        "the preset gives no tilt inertia"
+    );
+    let f = &flooded["films"][0];
+    for k in [
+        "entrainment_speed_m_s",
+        "central_film_m",
+        "minimum_film_m",
+        "flooded_central_film_m",
+        "flooded_minimum_film_m",
+        "starvation_factor",
+        "inlet_distance_ratio",
+        "critical_inlet_distance_ratio",
+        "film_parameter",
+        "film_stiffness_n_per_m",
+    ] {
+        assert!(f["inner"].get(k).is_some(), "films lack {k}");
+    }
+    assert_eq!(f["inner"]["starvation_factor"], 1.0);
+    assert!(f["inner"]["inlet_distance_ratio"].is_null());
+    assert!(f["inner"]["film_parameter"].is_null());
+    let q = json(
+        &[
+            "quasistatic",
+            "--json",
+            "--set",
+            "lubricant.inlet_distance_ratio_inner=1.3",
+            "--set",
+            "surface.inner.roughness=\"0.1 um\"",
+            "--set",
+            "inner_ring.tilt_inertia=\"1e-4 kg.m^2\"",
+        ],
+        None,
+    );
+    let (i, o) = (&q["films"][0]["inner"], &q["films"][0]["outer"]);
+    let l_star = i["critical_inlet_distance_ratio"].as_f64().unwrap();
+    let factor = ((1.3 - 1.0) / (l_star - 1.0)).powf(0.25);
+    let g = |v: &serde_json::Value| v.as_f64().unwrap();
+    assert!((g(&i["central_film_m"]) / g(&f["inner"]["central_film_m"]) - factor).abs() < 1e-9);
+    assert_eq!(o["central_film_m"], f["outer"]["central_film_m"]);
+    assert!((g(&i["film_parameter"]) - g(&i["minimum_film_m"]) / 0.1e-6).abs() < 1e-6);
+    let modes = q["modes"]["modes"].as_array().unwrap();
+    assert_eq!(modes.len(), 5);
+    // The axial mode is √(k_xx/m)/2π (pure axial load: x decouples).
+    let kxx = q["stiffness_matrix"][0][0].as_f64().unwrap();
+    let axial = (kxx / 0.5).sqrt() / std::f64::consts::TAU;
+    assert!(
+        modes
+            .iter()
+            .any(|m| (m["frequency_hz"].as_f64().unwrap() / axial - 1.0).abs() < 1e-6),
+        "{modes:?} vs {axial}"
+    );
+    let text = stdout(&rolldyn(
+        &[
+            "quasistatic",
+            "--set",
+            "inner_ring.tilt_inertia=\"1e-4 kg.m^2\"",
+        ],
+        None,
+    ));
+    assert!(text.contains("natural modes of the inner ring"), "{text}");
+    assert!(text.contains("films (Hamrock–Dowson"), "{text}");
+}
+
 #[test]
 fn quasistatic_sweep_writes_csv_and_json() {
     let dir = std::env::temp_dir().join(format!("rolldyn-sweep-test-{}", std::process::id()));
