@@ -3,6 +3,7 @@
 //! Exit codes: 0 success, 1 internal failure (e.g. cannot write output),
 //! 2 bad input (case file, override or argument).
 
+mod contact;
 mod quasistatic;
 mod quasistatic_films;
 mod report;
@@ -13,7 +14,7 @@ mod traction_equilibrium;
 mod vibration;
 
 use clap::{Args, Parser, Subcommand};
-use rolldyn_case::units::{Angle, Force, Quantity};
+use rolldyn_case::units::{Angle, Quantity};
 use rolldyn_case::{Case, CaseError, Override, load_case, load_default, presets};
 use std::io::{Read, Write};
 use std::process::ExitCode;
@@ -67,20 +68,10 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Hertz contact of one ball on the inner and outer raceway.
-    Contact {
-        #[command(flatten)]
-        case: CaseArgs,
-        /// Normal load per contact, e.g. "500 N".
-        #[arg(long, value_name = "FORCE")]
-        load: String,
-        /// Contact angle, e.g. "20 deg" (default: nominal angle).
-        #[arg(long, value_name = "ANGLE")]
-        angle: Option<String>,
-        /// Print JSON instead of text.
-        #[arg(long)]
-        json: bool,
-    },
+    /// Hertz contact of one ball on the inner and outer raceway, or of an
+    /// explicit contact (--radii, --ball-on-flat); with
+    /// --entrainment-speed also the lubricant film (starved, Λ, K_oil).
+    Contact(Box<contact::ContactArgs>),
     /// Quasi-static equilibrium: static load distribution (no speed) or the
     /// Jones–Harris model at the case speed; per-ball table, ring
     /// displacement, cage speed, stiffness. With --sweep: a sweep written
@@ -259,31 +250,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 emit(&report.to_text())
             }
         }
-        Command::Contact {
-            case,
-            load,
-            angle,
-            json: as_json,
-        } => {
-            let q = Quantity::<Force>::parse(&load)
-                .map_err(|e| bad_arg("--load", &load, e))?
-                .si;
-            if q < 0.0 {
-                return Err(bad_arg(
-                    "--load",
-                    &load,
-                    "a contact load cannot be negative",
-                ));
-            }
-            let angle = parse_angle("--angle", angle.as_ref())?;
-            let (_, case) = case.load()?;
-            let report = report::ContactReport::new(&case, q, angle).map_err(Failure::BadInput)?;
-            if as_json {
-                json(&report)
-            } else {
-                emit(&report.to_text())
-            }
-        }
+        Command::Contact(args) => contact::command(*args),
         Command::Quasistatic {
             case,
             control,

@@ -64,6 +64,51 @@ fn finite(v: f64) -> Option<f64> {
     v.is_finite().then_some(v)
 }
 
+impl ContactFilmRow {
+    /// The row of a film at entrainment speed `u` \[m/s\].
+    pub fn new(f: &lubrication::ContactFilm, u: f64) -> Self {
+        Self {
+            entrainment_speed_m_s: u,
+            central_film_m: f.central,
+            minimum_film_m: f.minimum,
+            flooded_central_film_m: f.flooded_central,
+            flooded_minimum_film_m: f.flooded_minimum,
+            starvation_factor: f.starvation_factor,
+            inlet_distance_ratio: finite(f.inlet_ratio),
+            critical_inlet_distance_ratio: finite(f.critical_ratio),
+            film_parameter: f.lambda,
+            film_stiffness_n_per_m: finite(f.stiffness),
+        }
+    }
+
+    /// Text lines of the film.
+    pub fn text(&self, out: &mut String) {
+        let _ = writeln!(
+            out,
+            "  film at u = {:.3} m/s: h_c {:.4} µm, h_min {:.4} µm (flooded {:.4} / {:.4} µm), starvation factor {:.4}{}{}",
+            self.entrainment_speed_m_s,
+            self.central_film_m * 1e6,
+            self.minimum_film_m * 1e6,
+            self.flooded_central_film_m * 1e6,
+            self.flooded_minimum_film_m * 1e6,
+            self.starvation_factor,
+            match (
+                self.inlet_distance_ratio,
+                self.critical_inlet_distance_ratio
+            ) {
+                (Some(l), Some(ls)) => format!(" (L {l:.3}, L* {ls:.3})"),
+                (None, Some(ls)) => format!(" (flooded; L* {ls:.3})"),
+                _ => String::new(),
+            },
+            self.film_parameter
+                .map_or(String::new(), |l| format!(", Λ {l:.3}"))
+        );
+        if let Some(k) = self.film_stiffness_n_per_m {
+            let _ = writeln!(out, "  film stiffness K_oil {k:.4e} N/m");
+        }
+    }
+}
+
 /// The films of `sol` when the case has a lubricant.
 pub fn films(case: &Case, sol: &Equilibrium) -> Option<Vec<FilmRow>> {
     let lub = case.lubricant.as_ref()?;
@@ -83,18 +128,7 @@ pub fn films(case: &Case, sol: &Equilibrium) -> Option<Vec<FilmRow>> {
             &case.materials.rings.material,
         ),
     };
-    let row = |f: &lubrication::ContactFilm, u: f64| ContactFilmRow {
-        entrainment_speed_m_s: u,
-        central_film_m: f.central,
-        minimum_film_m: f.minimum,
-        flooded_central_film_m: f.flooded_central,
-        flooded_minimum_film_m: f.flooded_minimum,
-        starvation_factor: f.starvation_factor,
-        inlet_distance_ratio: finite(f.inlet_ratio),
-        critical_inlet_distance_ratio: finite(f.critical_ratio),
-        film_parameter: f.lambda,
-        film_stiffness_n_per_m: finite(f.stiffness),
-    };
+    let row = |f: &lubrication::ContactFilm, u: f64| ContactFilmRow::new(f, u);
     Some(
         equilibrium_films(&case.bearing.geometry, sol, &inputs)
             .iter()

@@ -53,6 +53,12 @@ pub struct RacewayContact {
     pub max_pressure_pa: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub approach_m: Option<f64>,
+    /// Film at the contact (`contact --entrainment-speed`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub film: Option<crate::quasistatic_films::ContactFilmRow>,
+    /// Hertz contact and film in series \[N/m\] (`contact --entrainment-speed`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub series_stiffness_n_per_m: Option<f64>,
 }
 
 fn raceway_contact(
@@ -87,6 +93,8 @@ fn raceway_contact(
         semi_minor_m: at.map(|r| r.semi_minor),
         max_pressure_pa: at.map(|r| r.max_pressure),
         approach_m: at.map(|r| r.approach),
+        film: None,
+        series_stiffness_n_per_m: None,
     })
 }
 
@@ -130,12 +138,24 @@ fn raceway_text(out: &mut String, ring: &str, c: &RacewayContact) {
         let _ = writeln!(out, "    max pressure p₀       {:>12.1} MPa", p * 1e-6);
         let _ = writeln!(out, "    approach δ            {:>12.3} µm", d * 1e6);
     }
+    if let Some(f) = &c.film {
+        let mut film = String::new();
+        f.text(&mut film);
+        for line in film.lines() {
+            let _ = writeln!(out, "  {line}");
+        }
+        if let Some(k) = c.series_stiffness_n_per_m {
+            let _ = writeln!(out, "    contact and film in series {k:.4e} N/m");
+        }
+    }
 }
 
 /// `rolldyn contact` output.
 #[derive(Serialize)]
 pub struct ContactReport {
     pub load_n: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub entrainment_speed_m_s: Option<f64>,
     pub contact_stiffness_model: &'static str,
     pub effective_modulus_pa: f64,
     pub inner: RacewayContact,
@@ -147,6 +167,7 @@ impl ContactReport {
         let angle = angle.unwrap_or_else(|| case.bearing.geometry.nominal_contact_angle());
         Ok(Self {
             load_n: load,
+            entrainment_speed_m_s: None,
             contact_stiffness_model: case.contact_stiffness.name(),
             effective_modulus_pa: effective_modulus(
                 &case.materials.ball.material,

@@ -1157,3 +1157,117 @@ fn ball_surfaces_work_with_the_traction_quasistatic() {
     assert!(o.status.success(), "{}", stderr(&o));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `contact` for tribologists: an explicit ball-on-flat contact with a
+/// starved film, Hertz and film results; raceway films with
+/// --entrainment-speed; the errors.
+#[test]
+fn contact_with_films_and_explicit_contacts() {
+    let flat = json(
+        &[
+            "contact",
+            "--ball-on-flat",
+            "19.05 mm",
+            "--load",
+            "20 N",
+            "--entrainment-speed",
+            "0.5 m/s",
+            "--inlet-distance-ratio",
+            "1.5",
+            "--json",
+        ],
+        None,
+    );
+    assert_eq!(
+        keys(&flat),
+        [
+            "approach_m",
+            "contact_stiffness_n_per_m",
+            "effective_modulus_pa",
+            "ellipticity",
+            "film",
+            "load_n",
+            "max_pressure_pa",
+            "rolling_radius_m",
+            "semi_major_m",
+            "semi_minor_m",
+            "series_stiffness_n_per_m",
+            "transverse_radius_m"
+        ]
+    );
+    let g = |v: &Value| v.as_f64().unwrap();
+    assert!((g(&flat["ellipticity"]) - 1.0).abs() < 1e-12);
+    // Hertz sphere on flat: a = (3QR/(2E'))^{1/3} with R = D/2 (E' = 2/Σ(1−ν²)/E).
+    let ep = g(&flat["effective_modulus_pa"]);
+    let a = (3.0 * 20.0 * 9.525e-3 / (2.0 * ep)).cbrt();
+    assert!((g(&flat["semi_major_m"]) / a - 1.0).abs() < 1e-9);
+    let film = &flat["film"];
+    let l_star = g(&film["critical_inlet_distance_ratio"]);
+    let factor = ((1.5 - 1.0) / (l_star - 1.0)).powf(0.25);
+    assert!((g(&film["starvation_factor"]) - factor).abs() < 1e-12);
+    assert!(
+        (g(&film["central_film_m"]) / g(&film["flooded_central_film_m"]) - factor).abs() < 1e-12
+    );
+    let k = g(&flat["contact_stiffness_n_per_m"]);
+    let koil = g(&film["film_stiffness_n_per_m"]);
+    assert!((g(&flat["series_stiffness_n_per_m"]) - k * koil / (k + koil)).abs() < 1e-6 * k);
+    // Raceways with a film; without --entrainment-speed no film keys.
+    let r = json(
+        &[
+            "contact",
+            "--load",
+            "50 N",
+            "--entrainment-speed",
+            "14 m/s",
+            "--json",
+        ],
+        None,
+    );
+    assert_eq!(g(&r["entrainment_speed_m_s"]), 14.0);
+    assert!(g(&r["inner"]["film"]["central_film_m"]) > 0.0);
+    assert!(g(&r["outer"]["series_stiffness_n_per_m"]) > 0.0);
+    assert!(
+        json(&["contact", "--load", "50 N", "--json"], None)["inner"]
+            .get("film")
+            .is_none()
+    );
+    for (args, fragment) in [
+        (vec!["--radii", "3 mm,2 mm", "--load", "1 N"], "R_x ≤ R_y"),
+        (
+            vec![
+                "--radii",
+                "3 mm,4 mm",
+                "--ball-on-flat",
+                "5 mm",
+                "--load",
+                "1 N",
+            ],
+            "not both",
+        ),
+        (
+            vec!["--load", "1 N", "--inlet-distance-ratio", "1.5"],
+            "only for explicit contacts",
+        ),
+        (
+            vec![
+                "--ball-on-flat",
+                "5 mm",
+                "--load",
+                "1 N",
+                "--inlet-distance-ratio",
+                "0.5",
+            ],
+            "--inlet-distance-ratio",
+        ),
+        (
+            vec!["--load", "1 N", "--entrainment-speed", "-1 m/s"],
+            "must not be negative",
+        ),
+    ] {
+        let mut all = vec!["contact"];
+        all.extend(args);
+        let o = rolldyn(&all, None);
+        assert_eq!(o.status.code(), Some(2), "{all:?}");
+        assert!(stderr(&o).contains(fragment), "{}", stderr(&o));
+    }
+}
