@@ -101,7 +101,7 @@ fn hertz_stiffness(load: f64, approach: f64) -> f64 {
 
 pub fn command(args: ContactArgs) -> Result<(), Failure> {
     let load = quantity::<Force>("--load", &args.load)?;
-    if !(load >= 0.0) {
+    if load.is_nan() || load < 0.0 {
         return Err(bad_arg(
             "--load",
             &args.load,
