@@ -61,3 +61,59 @@ fn c7_inner_starvation_scales_the_inner_films_only() {
     eprintln!("C7 blocks: starved inner film vs formula, worst {worst:.1e}");
     assert!(worst < 1e-6, "{worst}");
 }
+
+/// The film in the normal approach (MODEL §4): Q = K_c (δ + h_c)^{3/2} with
+/// the (starved) central film of the last accepted step, and the energy
+/// balance with the film work (B2): drive + film work = ΔE + dissipated.
+#[test]
+fn b2_film_in_the_approach_closes_with_the_film_work() {
+    use rolldyn::integrate::Integrator;
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let (mut params, eq) = dynamics_7008c(DragParameters::default());
+    params.film_in_approach = true;
+    params.film_supply = [Supply::InletDistance(1.5), Supply::Flooded];
+    let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
+    let y0 = model.state_from_equilibrium(&eq);
+    model.initialise_films(0.0, &y0);
+    // The films are in the approach: the load is K_c(α)(δ_geom + h)^1.5.
+    let mut samples = vec![ContactSample::default(); 22];
+    model.contact_samples(0.0, &y0, &mut samples);
+    let dry = {
+        let (mut p, _) = dynamics_7008c(DragParameters::default());
+        p.film_supply = [Supply::InletDistance(1.5), Supply::Flooded];
+        BearingModel::new(&g, &steel, &steel, HertzModel::Exact, p).unwrap()
+    };
+    let mut dry_samples = vec![ContactSample::default(); 22];
+    dry.contact_samples(0.0, &y0, &mut dry_samples);
+    let ep = effective_modulus(&steel, &steel);
+    for (wet, dry) in samples.iter().zip(&dry_samples) {
+        let c = Curvature::of_raceway(&g.inner, g.ball_diameter, g.pitch_diameter, dry.inner.angle);
+        let k = HertzCoefficients::exact(&c, ep).unwrap().stiffness;
+        let delta = (dry.inner.load / k).powf(2.0 / 3.0);
+        let expected = k * (delta + dry.inner.film).powf(1.5);
+        assert!(
+            (wet.inner.load / expected - 1.0).abs() < 1e-6,
+            "{} vs {expected}",
+            wet.inner.load
+        );
+    }
+    let e0 = model.energy(0.0, &y0).total();
+    let mut rk =
+        super::common::integrator(super::common::Method::Ros34pw2, &model, &y0, 1e-6, 1e-5);
+    let t_end = 1e-3;
+    while rk.t() < t_end {
+        rk.step(&mut model, t_end).unwrap();
+    }
+    let (drive, dissipated) = model.work(rk.y());
+    let film = model.film_work();
+    let delta = model.energy(rk.t(), rk.y()).total() - e0;
+    let imbalance = drive + film - delta - dissipated;
+    let scale = drive.abs().max(dissipated.abs()).max(film.abs());
+    eprintln!(
+        "B2 with the film in the approach: drive {drive:.4e} J, film work {film:.4e} J, ΔE {delta:.4e} J, dissipated {dissipated:.4e} J, imbalance {:.1e}",
+        imbalance / scale
+    );
+    assert!(film != 0.0);
+    assert!((imbalance / scale).abs() < 1e-4);
+}
