@@ -88,8 +88,6 @@ pub struct Case {
     pub planar: bool,
     /// Gravity along −z.
     pub gravity: bool,
-    /// Film in the normal approach.
-    pub film_in_approach: bool,
     /// Inner-ring mass \[kg\], if given.
     pub inner_ring_mass: Option<f64>,
     /// Inner-ring tilt inertia \[kg·m²\], if given.
@@ -484,7 +482,6 @@ impl Case {
             traction_integration: raw.model.traction_integration.unwrap_or_default(),
             planar: raw.model.planar.unwrap_or(false),
             gravity: raw.model.gravity.unwrap_or(false),
-            film_in_approach: raw.model.film_in_approach.unwrap_or(false),
             inner_ring_mass,
             inner_ring_tilt_inertia,
             integrator,
@@ -879,7 +876,6 @@ impl Case {
                 .lubricant
                 .as_ref()
                 .map_or(Default::default(), |l| l.supply),
-            film_in_approach: self.film_in_approach,
         })
     }
 }

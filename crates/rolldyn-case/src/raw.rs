@@ -421,9 +421,6 @@ pub struct RawModel {
     pub planar: Option<bool>,
     /// Gravity along −z (default false).
     pub gravity: Option<bool>,
-    /// Lubricant film in the normal approach (MODEL §4): elastic
-    /// compression δ + h_c (default false; needs EHL traction).
-    pub film_in_approach: Option<bool>,
 }
 
 /// A traction model as written in the case file.

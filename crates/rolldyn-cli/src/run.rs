@@ -89,7 +89,6 @@ pub struct Summary {
     #[serde(flatten)]
     pub vibration: VibrationSummary,
     pub drive_work_j: f64,
-    pub film_work_j: f64,
     pub dissipated_energy_j: f64,
     pub mechanical_energy_change_j: f64,
     pub energy_balance_error_j: f64,
@@ -185,7 +184,6 @@ impl Channels {
             ("drive_work_j", "J"),
             ("dissipated_energy_j", "J"),
             ("mechanical_energy_j", "J"),
-            ("film_work_j", "J"),
             ("pure_rolling_cage_speed_ratio", "1"),
         ] {
             series.channel(name, unit);
@@ -265,7 +263,6 @@ impl Channels {
             drive,
             dissipated,
             model.energy(t, y).total(),
-            model.film_work(),
         ]);
         model.contact_samples(t, y, contacts);
         row.push(model.pure_rolling_ratio(contacts, y));
@@ -341,7 +338,6 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
         StartChoice::QuasistaticTraction => traction_state(case, &model, 0.0)
             .map_err(|e| format!("solver.start = \"quasistatic_traction\": {e}"))?,
     };
-    model.initialise_films(0.0, &y0);
     let relative_tolerance = case
         .relative_tolerance
         .unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
@@ -523,10 +519,9 @@ fn summarise(
     let last = |name: &str| column(name).last().copied().unwrap_or(0.0);
     let first = |name: &str| column(name).first().copied().unwrap_or(0.0);
     let drive = last("drive_work_j");
-    let film_work = last("film_work_j") - first("film_work_j");
     let dissipated = last("dissipated_energy_j");
     let delta_e = last("mechanical_energy_j") - first("mechanical_energy_j");
-    let imbalance = drive + film_work - delta_e - dissipated;
+    let imbalance = drive - delta_e - dissipated;
     let (status, error) = match end {
         RunEnd::Completed => ("completed", None),
         RunEnd::Interrupted { .. } => (
@@ -605,7 +600,6 @@ fn summarise(
         max_abs_yaw_deg: yaw.iter().fold(0.0, |m, v| v.abs().max(m)),
         vibration: crate::vibration::summarise(series, from, case.outer_ring.is_some()),
         drive_work_j: drive,
-        film_work_j: film_work,
         dissipated_energy_j: dissipated,
         mechanical_energy_change_j: delta_e,
         energy_balance_error_j: imbalance,

@@ -20,12 +20,10 @@
 //! | `supports` | ring spring–dampers |
 //! | `surface_contact` | waviness and spalls in the contacts, spall step limit |
 //! | `energy` | mechanical energy, work and dissipation |
-//! | `film_approach` | lubricant film in the normal approach |
 //! | `outputs` | per-contact output samples, pure-rolling reference |
 
 pub mod drag;
 pub mod energy;
-pub mod film_approach;
 pub mod layout;
 pub mod model;
 pub mod outputs;

@@ -92,10 +92,6 @@ pub struct DynamicsParameters {
     /// Oil supply of the inner and outer raceway contacts (starvation of
     /// the EHL film, MODEL §4; default: fully flooded).
     pub film_supply: [crate::lubrication::Supply; 2],
-    /// Film in the normal approach (MODEL §4): the elastic compression is
-    /// δ + h_c, h_c the (starved) central film of the previous accepted
-    /// step. Needs a film model (EHL traction).
-    pub film_in_approach: bool,
 }
 
 /// Kinematic state of a ball (global frame).
@@ -142,12 +138,6 @@ pub struct BearingModel {
     pub(super) layout: StateLayout,
     /// Episode memory: inner and outer contact of each ball.
     pub(super) episodes: Vec<[ContactEpisode; 2]>,
-    /// Film thickness in the approach, inner and outer contact of each
-    /// ball, from the last accepted step \[m\] (`film_in_approach`).
-    pub(super) films: Vec<[f64; 2]>,
-    /// Energy the film-thickness updates put into the contacts \[J\]
-    /// (`film_in_approach`; see `dynamics::film_approach`).
-    pub(super) film_work: f64,
 }
 
 impl BearingModel {
@@ -175,13 +165,6 @@ impl BearingModel {
         for supply in &params.film_supply {
             supply.validate()?;
         }
-        if params.film_in_approach && params.traction.lubricant().is_none() {
-            return Err(InvalidParameter::new(
-                "film_in_approach",
-                "true",
-                "needs a film model: the ehl traction law with a [lubricant]",
-            ));
-        }
         let ep = effective_modulus(ball, rings);
         let ball_mass = geometry.ball_mass(ball.density);
         Ok(Self {
@@ -205,8 +188,6 @@ impl BearingModel {
                 ball_spin_angle: params.surface.has_ball_surfaces(),
             },
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
-            films: vec![[0.0; 2]; geometry.ball_count],
-            film_work: 0.0,
             geometry: geometry.clone(),
             params,
         })
@@ -771,7 +752,6 @@ impl OdeSystem for BearingModel {
                 }
             }
         }
-        let films_changed = self.params.film_in_approach && self.update_films(t, y);
-        (changed && self.params.normal_law.hysteresis_factor().is_some()) || films_changed
+        changed && self.params.normal_law.hysteresis_factor().is_some()
     }
 }

@@ -110,9 +110,6 @@ impl BearingModel {
             .surface_effect(ring, ball, &geometry)
             .unwrap_or_default();
         geometry.penetration += surface.approach;
-        if self.params.film_in_approach {
-            geometry.penetration += self.film_offset(ball.index, ring.raceway.kind);
-        }
         (geometry.penetration > 0.0).then_some((geometry, surface))
     }
 
