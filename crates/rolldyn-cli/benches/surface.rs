@@ -10,6 +10,7 @@
 //!    be resolved (2., reported, not a cost of the implementation).
 //! 2. `rolldyn run` of the default case, 0.05 s, smooth and wavy: wall time
 //!    and steps from summary.json.
+//!    Also the RHS with the EHL films starved (issue 12: ≤ 5 %).
 //! 3. Spectra of 1 s of 50 kHz data (50 000 samples): amplitude, Welch
 //!    (4096-sample segments, ½ overlap), envelope; and `rolldyn spectrum`
 //!    end to end on a written run directory.
@@ -43,8 +44,8 @@ fn case_text(surfaces: bool) -> String {
     }
 }
 
-fn rhs_time(surfaces: bool) -> f64 {
-    let case = load_case("bench", &case_text(surfaces), &[]).expect("valid case");
+fn rhs_time(text: &str) -> f64 {
+    let case = load_case("bench", text, &[]).expect("valid case");
     let params = case.dynamics_parameters().expect("dynamic data");
     let g = &case.bearing.geometry;
     let (ball, rings) = (
@@ -107,13 +108,24 @@ fn cli_run(surfaces: bool, dir: &std::path::Path) -> (f64, u64) {
 }
 
 fn main() {
-    let smooth = rhs_time(false);
-    let rough = rhs_time(true);
+    let smooth = rhs_time(&case_text(false));
+    let rough = rhs_time(&case_text(true));
     println!(
         "RHS, default case: smooth {:.1} µs, with surfaces {:.1} µs ({:+.1} %)",
         smooth * 1e6,
         rough * 1e6,
         100.0 * (rough / smooth - 1.0)
+    );
+    // Issue 12: the EHL film starved on both rings.
+    let starved = rhs_time(&case_text(false).replacen(
+        "\n[operating]",
+        "inlet_distance_ratio = 1.3\n\n[operating]",
+        1,
+    ));
+    println!(
+        "RHS, default case starved (L = 1.3): {:.1} µs ({:+.1} % against flooded)",
+        starved * 1e6,
+        100.0 * (starved / smooth - 1.0)
     );
 
     let dir = std::env::temp_dir().join(format!("rolldyn-bench-surface-{}", std::process::id()));

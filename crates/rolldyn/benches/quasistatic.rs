@@ -1,11 +1,15 @@
 //! `cargo bench -p rolldyn --bench quasistatic`: one Jones–Harris solve of
 //! the 7218B (16 balls) from the built-in start, and warm-started solves,
-//! on one core. Issue 3 target: ≤ 1 ms per solve. Figures in
-//! docs/performance.md.
+//! on one core, and the films and natural modes of each solution. Issue 3
+//! target: ≤ 1 ms per solve; issue 12: with film outputs still ≤ 1 ms.
+//! Figures in docs/performance.md.
 
 use rolldyn::contact::HertzModel;
+use rolldyn::lubrication::{Lubricant, Supply};
 use rolldyn::material::Material;
 use rolldyn::operating::Loads;
+use rolldyn::quasistatic::films::{FilmInputs, equilibrium_films};
+use rolldyn::quasistatic::modes::natural_modes;
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions, sweep};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 use std::hint::black_box;
@@ -90,11 +94,30 @@ fn main() {
         let warm = median_time(21, || {
             black_box(solver.solve_from(&sol, &nearby, &options).ok());
         });
+        // Films of the solution (issue 12: quasi-static with film outputs).
+        let inputs = FilmInputs {
+            lubricant: Lubricant {
+                viscosity: 0.0275,
+                pressure_viscosity: 2e-8,
+                pressure_model: Default::default(),
+            },
+            supply: [Supply::InletDistance(1.3), Supply::Flooded],
+            roughness: [0.1e-6, 0.1e-6],
+            effective_modulus: rolldyn::material::effective_modulus(&steel, &steel),
+        };
+        let films = median_time(21, || {
+            black_box(equilibrium_films(&g, &sol, &inputs));
+        });
+        let modes = median_time(21, || {
+            black_box(natural_modes(&sol.stiffness, 5.0, 2e-3));
+        });
         println!(
-            "{name:<46} cold {:>8.3} ms ({} it)   warm (+1 % load) {:>8.3} ms",
+            "{name:<46} cold {:>8.3} ms ({} it)   warm (+1 % load) {:>8.3} ms   films {:>6.1} µs   modes {:>5.1} µs",
             cold * 1e3,
             sol.iterations,
-            warm * 1e3
+            warm * 1e3,
+            films * 1e6,
+            modes * 1e6
         );
     }
 
