@@ -35,11 +35,11 @@ struct CaseArgs {
     /// Override the inner-ring speed, e.g. "8000 rpm".
     #[arg(long, value_name = "SPEED")]
     speed: Option<String>,
-    /// Override the axial load F_x, e.g. "500 N".
-    #[arg(long, value_name = "FORCE")]
+    /// Override the axial load F_x, e.g. "500 N" (negative values allowed).
+    #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
     axial_load: Option<String>,
-    /// Override the radial load F_z, e.g. "1 kN".
-    #[arg(long, value_name = "FORCE")]
+    /// Override the radial load F_z, e.g. "1 kN" (negative values allowed).
+    #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
     radial_load: Option<String>,
     /// Override any key: --set bearing.ball_count=22 (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]

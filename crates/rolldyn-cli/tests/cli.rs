@@ -184,6 +184,9 @@ fn overrides_apply() {
     assert_eq!(c["force_z_n"].as_f64(), Some(500.0));
     let c = json(&["check", "--set", "bearing.ball_count=20", "--json"], None);
     assert_eq!(c["geometry"]["ball_count"].as_u64(), Some(20));
+    // Negative loads need no `=` (issue 16).
+    let c = json(&["check", "--radial-load", "-100 N", "--json"], None);
+    assert_eq!(c["force_z_n"].as_f64(), Some(-100.0));
 }
 
 #[test]
