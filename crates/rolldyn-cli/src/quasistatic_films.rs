@@ -128,15 +128,14 @@ pub fn films(case: &Case, sol: &Equilibrium) -> Option<Vec<FilmRow>> {
             &case.materials.rings.material,
         ),
     };
-    let row = |f: &lubrication::ContactFilm, u: f64| ContactFilmRow::new(f, u);
     Some(
         equilibrium_films(&case.bearing.geometry, sol, &inputs)
             .iter()
             .zip(&sol.balls)
             .map(|(f, b)| FilmRow {
                 azimuth_deg: b.azimuth.to_degrees(),
-                inner: row(&f.films[0], f.entrainment_speed[0]),
-                outer: row(&f.films[1], f.entrainment_speed[1]),
+                inner: ContactFilmRow::new(&f.films[0], f.entrainment_speed[0]),
+                outer: ContactFilmRow::new(&f.films[1], f.entrainment_speed[1]),
             })
             .collect(),
     )

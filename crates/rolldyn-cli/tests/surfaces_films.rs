@@ -1,0 +1,358 @@
+//! End-to-end tests of the surface, vibration and film commands (issues
+//! 11 and 12): `run` with waviness and the vibration keys, `spectrum`,
+//! films and natural modes in `quasistatic`, and `contact` for
+//! tribologists.
+
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{json, keys, rolldyn, stderr, stdout, temp_dir};
+use rolldyn_case::presets::PRESETS;
+use serde_json::Value;
+
+/// Films (the default case has a lubricant) and the ring's natural modes
+/// (given its tilt inertia); starvation on the inner ring thins only the
+/// inner films by the seed 003 eq 30 factor.
+#[test]
+fn quasistatic_films_and_modes() {
+    let flooded = json(&["quasistatic", "--json"], None);
+    assert!(
+        flooded["modes"].is_null(),
+        "the preset gives no tilt inertia"
+    );
+    let f = &flooded["films"][0];
+    for k in [
+        "entrainment_speed_m_s",
+        "central_film_m",
+        "minimum_film_m",
+        "flooded_central_film_m",
+        "flooded_minimum_film_m",
+        "starvation_factor",
+        "inlet_distance_ratio",
+        "critical_inlet_distance_ratio",
+        "film_parameter",
+        "film_stiffness_n_per_m",
+    ] {
+        assert!(f["inner"].get(k).is_some(), "films lack {k}");
+    }
+    assert_eq!(f["inner"]["starvation_factor"], 1.0);
+    assert!(f["inner"]["inlet_distance_ratio"].is_null());
+    assert!(f["inner"]["film_parameter"].is_null());
+    let q = json(
+        &[
+            "quasistatic",
+            "--json",
+            "--set",
+            "lubricant.inlet_distance_ratio_inner=1.3",
+            "--set",
+            "surface.inner.roughness=\"0.1 um\"",
+            "--set",
+            "inner_ring.tilt_inertia=\"1e-4 kg.m^2\"",
+        ],
+        None,
+    );
+    let (i, o) = (&q["films"][0]["inner"], &q["films"][0]["outer"]);
+    let l_star = i["critical_inlet_distance_ratio"].as_f64().unwrap();
+    let factor = ((1.3 - 1.0) / (l_star - 1.0)).powf(0.25);
+    let g = |v: &serde_json::Value| v.as_f64().unwrap();
+    assert!((g(&i["central_film_m"]) / g(&f["inner"]["central_film_m"]) - factor).abs() < 1e-9);
+    assert_eq!(o["central_film_m"], f["outer"]["central_film_m"]);
+    assert!((g(&i["film_parameter"]) - g(&i["minimum_film_m"]) / 0.1e-6).abs() < 1e-6);
+    let modes = q["modes"]["modes"].as_array().unwrap();
+    assert_eq!(modes.len(), 5);
+    // The axial mode is √(k_xx/m)/2π (pure axial load: x decouples).
+    let kxx = q["stiffness_matrix"][0][0].as_f64().unwrap();
+    let axial = (kxx / 0.5).sqrt() / std::f64::consts::TAU;
+    assert!(
+        modes
+            .iter()
+            .any(|m| (m["frequency_hz"].as_f64().unwrap() / axial - 1.0).abs() < 1e-6),
+        "{modes:?} vs {axial}"
+    );
+    let text = stdout(&rolldyn(
+        &[
+            "quasistatic",
+            "--set",
+            "inner_ring.tilt_inertia=\"1e-4 kg.m^2\"",
+        ],
+        None,
+    ));
+    assert!(text.contains("natural modes of the inner ring"), "{text}");
+    assert!(text.contains("films (Hamrock–Dowson"), "{text}");
+}
+
+/// A wavy outer race (order 22 = Z, seed 001's C3 setting): `run` records
+/// the vibration channels and whirl keys, and `spectrum` finds BPFO (=
+/// 22 f_c, seed 001 Table 2) as the largest peak of the axial acceleration.
+#[test]
+fn spectrum_of_a_wavy_run_names_bpfo() {
+    let preset = PRESETS.iter().find(|p| p.name == "7008C").unwrap().text;
+    let case = preset.replacen(
+        "\n[assumptions]",
+        "\n[surface.outer]\nradial_waviness = [{ order = 22, amplitude = \"0.3 um\" }]\n\n[assumptions]",
+        1,
+    );
+    let dir = temp_dir("spectrum");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(&["run", "-", "--duration", "12 ms", "-o", &d], Some(&case));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    for k in [
+        "cage_whirl_radius_mean_m",
+        "cage_whirl_radius_max_m",
+        "cage_whirl_speed_rpm",
+        "cage_whirl_speed_ratio",
+        "cage_whirl_sigma",
+        "velocity_rms_band_hz",
+        "inner_ring_velocity_rms_x_mm_s",
+        "inner_ring_velocity_rms_y_mm_s",
+        "inner_ring_velocity_rms_z_mm_s",
+        "outer_ring_velocity_rms_y_mm_s",
+        "outer_ring_velocity_rms_z_mm_s",
+        "sample_rate_hz",
+        "ball_count",
+        "ball_diameter_m",
+        "pitch_diameter_m",
+        "mean_contact_angle_inner_deg",
+        "mean_contact_angle_outer_deg",
+    ] {
+        assert!(summary.get(k).is_some(), "summary lacks {k}");
+    }
+    assert!(summary["outer_ring_velocity_rms_y_mm_s"].is_null());
+    let check = json(&["check", "-", "--json"], Some(&case));
+    assert_eq!(check["surfaces"][0]["part"], "outer");
+    assert_eq!(check["surfaces"][0]["max_order"], 22);
+    assert!(
+        json(&["check", "--json"], None)["surfaces"]
+            .as_array()
+            .unwrap()
+            .is_empty()
+    );
+    let list = stdout(&rolldyn(&["spectrum", &d, "--list"], None));
+    for channel in [
+        "inner_ring_acceleration_x_m_s2 [m/s^2]",
+        "outer_ring_acceleration_z_m_s2 [m/s^2]",
+        "housing_force_y_n [N]",
+        "cage_velocity_z_m_s [m/s]",
+    ] {
+        assert!(list.contains(channel), "--list lacks {channel}");
+    }
+    let s = json(
+        &[
+            "spectrum",
+            &d,
+            "--channel",
+            "inner_ring_acceleration_x_m_s2",
+            "--from",
+            "0.002",
+            "--json",
+        ],
+        None,
+    );
+    assert_eq!(
+        keys(&s),
+        [
+            "band_hz",
+            "channel",
+            "characteristic",
+            "csv",
+            "from_s",
+            "kind",
+            "lines",
+            "peaks",
+            "resolution_hz",
+            "sample_rate_hz",
+            "samples",
+            "segment",
+            "to_s",
+            "unit",
+            "value_unit",
+            "velocity_rms_band_hz",
+            "velocity_rms_mm_s",
+            "window"
+        ]
+    );
+    assert_eq!(s["peaks"][0]["line"], "BPFO", "{}", s["peaks"]);
+    let bpfo = s["characteristic"]["bpfo_hz"].as_f64().unwrap();
+    let f = s["peaks"][0]["frequency_hz"].as_f64().unwrap();
+    assert!((f - bpfo).abs() <= 1.5 * s["resolution_hz"].as_f64().unwrap());
+    assert!(s["velocity_rms_mm_s"].as_f64().unwrap() >= 0.0);
+    let csv =
+        std::fs::read_to_string(dir.join("spectrum_inner_ring_acceleration_x_m_s2_amplitude.csv"))
+            .unwrap();
+    assert!(csv.starts_with("frequency_hz,value\n"));
+    assert!(
+        dir.join("spectrum_inner_ring_acceleration_x_m_s2_amplitude.json")
+            .exists()
+    );
+    for kind in [["--kind", "psd"], ["--kind", "envelope"]] {
+        let s = json(&["spectrum", &d, kind[0], kind[1], "--json"], None);
+        assert_eq!(s["kind"], kind[1]);
+    }
+    // Bad arguments: exit 2, named.
+    for (args, fragment) in [
+        (vec!["--channel", "nope"], "--channel nope"),
+        (vec!["--kind", "cepstrum"], "--kind cepstrum"),
+        (vec!["--kind", "envelope", "--band", "9000:100"], "--band"),
+        (vec!["--from", "1"], "--from"),
+    ] {
+        let mut all = vec!["spectrum", d.as_str()];
+        all.extend(args);
+        let o = rolldyn(&all, None);
+        assert_eq!(o.status.code(), Some(2), "{all:?}");
+        assert!(stderr(&o).contains(fragment), "{}", stderr(&o));
+    }
+    let o = rolldyn(&["spectrum", "/nonexistent-dir"], None);
+    assert_eq!(o.status.code(), Some(2));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Ball surfaces add a spin-angle state per ball: the traction-consistent
+/// quasi-static solve and a run from it still work.
+#[test]
+fn ball_surfaces_work_with_the_traction_quasistatic() {
+    let preset = PRESETS.iter().find(|p| p.name == "7008C").unwrap().text;
+    let case = preset.replacen(
+        "\n[assumptions]",
+        "\n[surface.balls]\nwaviness = [{ order = 2, amplitude = \"0.1 um\" }]\n\n[assumptions]",
+        1,
+    );
+    let o = rolldyn(
+        &["quasistatic", "-", "--control", "traction", "--json"],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let dir = temp_dir("ball-surface");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "1 ms",
+            "--set",
+            "solver.start=\"quasistatic_traction\"",
+            "-o",
+            &d,
+        ],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `contact` for tribologists: an explicit ball-on-flat contact with a
+/// starved film, Hertz and film results; raceway films with
+/// --entrainment-speed; the errors.
+#[test]
+fn contact_with_films_and_explicit_contacts() {
+    let flat = json(
+        &[
+            "contact",
+            "--ball-on-flat",
+            "19.05 mm",
+            "--load",
+            "20 N",
+            "--entrainment-speed",
+            "0.5 m/s",
+            "--inlet-distance-ratio",
+            "1.5",
+            "--json",
+        ],
+        None,
+    );
+    assert_eq!(
+        keys(&flat),
+        [
+            "approach_m",
+            "contact_stiffness_n_per_m",
+            "effective_modulus_pa",
+            "ellipticity",
+            "film",
+            "load_n",
+            "max_pressure_pa",
+            "rolling_radius_m",
+            "semi_major_m",
+            "semi_minor_m",
+            "series_stiffness_n_per_m",
+            "transverse_radius_m"
+        ]
+    );
+    let g = |v: &Value| v.as_f64().unwrap();
+    assert!((g(&flat["ellipticity"]) - 1.0).abs() < 1e-12);
+    // Hertz sphere on flat: a = (3QR/(2E'))^{1/3} with R = D/2 (E' = 2/Σ(1−ν²)/E).
+    let ep = g(&flat["effective_modulus_pa"]);
+    let a = (3.0 * 20.0 * 9.525e-3 / (2.0 * ep)).cbrt();
+    assert!((g(&flat["semi_major_m"]) / a - 1.0).abs() < 1e-9);
+    let film = &flat["film"];
+    let l_star = g(&film["critical_inlet_distance_ratio"]);
+    let factor = ((1.5 - 1.0) / (l_star - 1.0)).powf(0.25);
+    assert!((g(&film["starvation_factor"]) - factor).abs() < 1e-12);
+    assert!(
+        (g(&film["central_film_m"]) / g(&film["flooded_central_film_m"]) - factor).abs() < 1e-12
+    );
+    let k = g(&flat["contact_stiffness_n_per_m"]);
+    let koil = g(&film["film_stiffness_n_per_m"]);
+    assert!((g(&flat["series_stiffness_n_per_m"]) - k * koil / (k + koil)).abs() < 1e-6 * k);
+    // Raceways with a film; without --entrainment-speed no film keys.
+    let r = json(
+        &[
+            "contact",
+            "--load",
+            "50 N",
+            "--entrainment-speed",
+            "14 m/s",
+            "--json",
+        ],
+        None,
+    );
+    assert_eq!(g(&r["entrainment_speed_m_s"]), 14.0);
+    assert!(g(&r["inner"]["film"]["central_film_m"]) > 0.0);
+    assert!(g(&r["outer"]["series_stiffness_n_per_m"]) > 0.0);
+    assert!(
+        json(&["contact", "--load", "50 N", "--json"], None)["inner"]
+            .get("film")
+            .is_none()
+    );
+    for (args, fragment) in [
+        (vec!["--radii", "3 mm,2 mm", "--load", "1 N"], "R_x ≤ R_y"),
+        (
+            vec![
+                "--radii",
+                "3 mm,4 mm",
+                "--ball-on-flat",
+                "5 mm",
+                "--load",
+                "1 N",
+            ],
+            "not both",
+        ),
+        (
+            vec!["--load", "1 N", "--inlet-distance-ratio", "1.5"],
+            "only for explicit contacts",
+        ),
+        (
+            vec![
+                "--ball-on-flat",
+                "5 mm",
+                "--load",
+                "1 N",
+                "--inlet-distance-ratio",
+                "0.5",
+            ],
+            "--inlet-distance-ratio",
+        ),
+        (
+            vec!["--load", "1 N", "--entrainment-speed", "-1 m/s"],
+            "must not be negative",
+        ),
+    ] {
+        let mut all = vec!["contact"];
+        all.extend(args);
+        let o = rolldyn(&all, None);
+        assert_eq!(o.status.code(), Some(2), "{all:?}");
+        assert!(stderr(&o).contains(fragment), "{}", stderr(&o));
+    }
+}
