@@ -4,6 +4,7 @@
 //! 2 bad input (case file, override or argument).
 
 mod contact;
+mod power_channels;
 mod quasistatic;
 mod quasistatic_films;
 mod report;

@@ -4,6 +4,7 @@
 //! integration failure (with what was computed). A progress bar shows on a
 //! terminal. Keys are documented in docs/cli.md.
 
+use crate::power_channels::PowerSummary;
 use crate::traction_equilibrium::{jones_harris_state, traction_state};
 use crate::vibration::VibrationSummary;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -11,7 +12,7 @@ use nalgebra::Vector3;
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{
-    ExplicitRk, IntegrationStats, OdeSystem, ROS34PW2, Rosenbrock, RunEnd, Solver, StepControl, run,
+    ExplicitRk, IntegrationStats, ROS34PW2, Rosenbrock, RunEnd, Solver, StepControl, run,
 };
 use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
@@ -88,6 +89,9 @@ pub struct Summary {
     /// Vibration velocity RMS and cage-whirl metrics.
     #[serde(flatten)]
     pub vibration: VibrationSummary,
+    /// Friction power by component and friction torque.
+    #[serde(flatten)]
+    pub power: PowerSummary,
     pub drive_work_j: f64,
     pub dissipated_energy_j: f64,
     pub mechanical_energy_change_j: f64,
@@ -188,6 +192,7 @@ impl Channels {
         ] {
             series.channel(name, unit);
         }
+        crate::power_channels::add_channels(&mut series);
         for j in 0..balls {
             for (name, unit) in BALL_CHANNELS {
                 series.channel(format!("ball{j}_{name}"), unit);
@@ -217,8 +222,9 @@ impl Channels {
         let l = model.layout();
         let (c, r) = (l.cage(), l.ring());
         let (drive, dissipated) = model.work(y);
-        // Accelerations: one evaluation of the equations of motion per sample.
-        model.rhs(t, y, &mut self.derivative);
+        // Accelerations and the dissipated power by component: one
+        // evaluation of the equations of motion per sample.
+        let power = model.rhs_with_power(t, y, &mut self.derivative);
         let dy = &self.derivative;
         let o = l.outer();
         let housing = model
@@ -266,6 +272,7 @@ impl Channels {
         ]);
         model.contact_samples(t, y, contacts);
         row.push(model.pure_rolling_ratio(contacts, y));
+        crate::power_channels::push(row, &power);
         for (j, c) in contacts.iter().enumerate().take(self.balls) {
             let b = l.ball(j);
             let (attitude, yaw) = model.ball_attitude(j, y);
@@ -599,6 +606,7 @@ fn summarise(
         mean_yaw_deg: mean(&yaw),
         max_abs_yaw_deg: yaw.iter().fold(0.0, |m, v| v.abs().max(m)),
         vibration: crate::vibration::summarise(series, from, case.outer_ring.is_some()),
+        power: crate::power_channels::summarise(series, from),
         drive_work_j: drive,
         dissipated_energy_j: dissipated,
         mechanical_energy_change_j: delta_e,

@@ -34,6 +34,7 @@ pub mod lubrication;
 pub mod material;
 pub mod math;
 pub mod operating;
+pub mod power;
 pub mod quasistatic;
 pub mod signal;
 pub mod surface;

@@ -46,6 +46,7 @@ use crate::integrate::{BlockSplit, OdeSystem};
 use crate::kinematics::cage_speed_ratio;
 use crate::material::{Material, effective_modulus};
 use crate::operating::{LoadProfile, SpeedProfile};
+use crate::power::Dissipation;
 use crate::quasistatic::Equilibrium;
 use crate::surface::SurfaceModel;
 use crate::traction::TractionModel;
@@ -424,6 +425,7 @@ impl BearingModel {
         inner: &RingMotion,
         outer: &RingMotion,
         dy: &mut [f64],
+        mut sink: Option<&mut Dissipation>,
     ) -> BallCoupling {
         let l = self.layout;
         let p = &self.params;
@@ -445,6 +447,9 @@ impl BearingModel {
                 - cn.couple
                 + (ball.centre - inner.centre).cross(&cn.surface.ring_force);
             out.dissipation += cn.dissipation;
+            if let Some(d) = sink.as_deref_mut() {
+                d.inner.add(&cn.losses);
+            }
         }
         if let Some(cn) =
             self.race_contact(outer, &self.outer_table, &episodes[1], &ball, Want::Forces)
@@ -453,6 +458,9 @@ impl BearingModel {
             moment += cn.moment + cn.surface.ball_moment;
             out.outer_force += cn.surface.ring_force - cn.force;
             out.dissipation += cn.dissipation;
+            if let Some(d) = sink.as_deref_mut() {
+                d.outer.add(&cn.losses);
+            }
         }
         if let Some(pc) = self.pocket_contact(j, y, &ball) {
             force += pc.force;
@@ -461,6 +469,10 @@ impl BearingModel {
             let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
             out.cage_torque += (pc.point - cage_centre).cross(&(-pc.force)).x;
             out.dissipation += pc.dissipation;
+            if let Some(d) = sink.as_deref_mut() {
+                d.pocket_friction += pc.friction_power;
+                d.pocket_damping += pc.dissipation - pc.friction_power;
+            }
         }
         let b = l.ball(j);
         let drag = &p.drag;
@@ -471,6 +483,9 @@ impl BearingModel {
             force += f * et;
             moment += m;
             out.dissipation -= f * v_t + m.dot(&w);
+            if let Some(d) = sink {
+                d.ball_drag -= f * v_t + m.dot(&w);
+            }
         }
         let (r, phi_dot, vr) = (y[b + 1], y[b + 5], y[b + 4]);
         let (wr, wt) = (y[b + 7], y[b + 8]);
@@ -509,6 +524,7 @@ impl BearingModel {
         inner: &RingMotion,
         balls: &BallCoupling,
         dy: &mut [f64],
+        mut sink: Option<&mut Dissipation>,
     ) {
         let l = self.layout;
         let p = &self.params;
@@ -546,8 +562,12 @@ impl BearingModel {
                 } else {
                     Vector3::zeros()
                 };
-            dissipation -=
-                fluid.dot(&(cage_velocity - centre_velocity)) + gf.torque * (y[c + 5] - land_speed);
+            let fluid_power = -(fluid.dot(&(cage_velocity - centre_velocity))
+                + gf.torque * (y[c + 5] - land_speed));
+            dissipation += fluid_power;
+            if let Some(d) = sink.as_deref_mut() {
+                d.guide_land = fluid_power;
+            }
             match guide.ring {
                 RingKind::Inner => {
                     ring_force -= gf.force;
@@ -566,6 +586,9 @@ impl BearingModel {
         );
         ring_force += p.inner_support.force(&ring_position, &ring_velocity);
         dissipation += p.inner_support.dissipation(&ring_velocity);
+        if let Some(d) = sink.as_deref_mut() {
+            d.support_damping = p.inner_support.dissipation(&ring_velocity);
+        }
         dy[dr + 5] = (ring_force.x + loads.force[0]) / mi;
         dy[dr + 6] = (ring_force.y + loads.force[1]) / mi;
         dy[dr + 7] = (ring_force.z + loads.force[2]) / mi - g;
@@ -591,6 +614,9 @@ impl BearingModel {
             let velocity = Vector3::new(0.0, y[o + 2], y[o + 3]);
             outer_force += ring.housing.force(&position, &velocity);
             dissipation += ring.housing.dissipation(&velocity);
+            if let Some(d) = sink.as_deref_mut() {
+                d.support_damping += ring.housing.dissipation(&velocity);
+            }
             dy[dob] = y[o + 2];
             dy[dob + 1] = y[o + 3];
             dy[dob + 2] = outer_force.y / ring.mass;
@@ -612,12 +638,58 @@ impl BearingModel {
         let cage_drag = -(p.drag.cage_viscous * cage_speed
             + p.drag.cage_windage * cage_speed * cage_speed.abs());
         dissipation -= cage_drag * cage_speed;
+        if let Some(d) = sink.as_deref_mut() {
+            d.cage_drag = -cage_drag * cage_speed;
+            // Torque the drive supplies: minus the moment of the bearing's
+            // forces on the inner ring about its (tilted) axis.
+            let speed = p.speed.speed_at(t);
+            let axis = if speed != 0.0 {
+                (inner.omega - inner.omega_frame) / speed
+            } else {
+                Vector3::x()
+            };
+            d.drive_torque = -ring_moment.dot(&axis);
+        }
         dy[dc + 5] = (cage_torque + cage_drag) / p.cage.inertia;
         // Drive power: the prescribed spin must supply −ω_i (moment of the
         // contact forces on the ring about its spin axis).
         let spin_axis = inner.omega - inner.omega_frame;
         dy[dw] = -ring_moment.dot(&spin_axis) + external_power;
         dy[dw + 1] = dissipation;
+    }
+}
+
+impl BearingModel {
+    /// The equations of motion; with `sink`, also the dissipated power by
+    /// component and the drive torque.
+    fn rhs_with(&self, t: f64, y: &[f64], dy: &mut [f64], mut sink: Option<&mut Dissipation>) {
+        let l = self.layout;
+        let (inner, outer) = self.ring_motion(t, y);
+        let mut balls = BallCoupling::default();
+        for j in 0..l.balls {
+            let b = l.ball(j);
+            let coupling = self.ball_rhs(
+                j,
+                y,
+                &inner,
+                &outer,
+                &mut dy[b..b + l.ball_len()],
+                sink.as_deref_mut(),
+            );
+            balls.add(&coupling);
+        }
+        let (_, border) = dy.split_at_mut(l.ring());
+        self.border_rhs_with(t, y, &inner, &balls, border, sink);
+    }
+
+    /// Derivatives `dy` of state `y` at time `t` (as [`OdeSystem::rhs`]) and
+    /// the dissipated power by component with the drive torque (MODEL §10,
+    /// [`crate::power::dissipation`]). Its total equals the rate of the
+    /// dissipated-energy accumulator, `dy[layout().work() + 1]`.
+    pub fn rhs_with_power(&self, t: f64, y: &[f64], dy: &mut [f64]) -> Dissipation {
+        let mut power = Dissipation::default();
+        self.rhs_with(t, y, dy, Some(&mut power));
+        power
     }
 }
 
@@ -643,13 +715,13 @@ impl BlockSplit for BearingModel {
         coupling: &mut [f64],
     ) {
         let (inner, outer) = self.ring_motion(t, y);
-        self.ball_rhs(block, y, &inner, &outer, dy_block)
+        self.ball_rhs(block, y, &inner, &outer, dy_block, None)
             .write(coupling);
     }
 
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
         let (inner, _) = self.ring_motion(t, y);
-        self.border_rhs_with(t, y, &inner, &BallCoupling::read(coupling), dy_border);
+        self.border_rhs_with(t, y, &inner, &BallCoupling::read(coupling), dy_border, None);
     }
 
     /// Frozen states (planar motion, a locked cage whirl, a fixed outer
@@ -680,16 +752,7 @@ impl OdeSystem for BearingModel {
     }
 
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        let l = self.layout;
-        let (inner, outer) = self.ring_motion(t, y);
-        let mut balls = BallCoupling::default();
-        for j in 0..l.balls {
-            let b = l.ball(j);
-            let coupling = self.ball_rhs(j, y, &inner, &outer, &mut dy[b..b + l.ball_len()]);
-            balls.add(&coupling);
-        }
-        let (_, border) = dy.split_at_mut(l.ring());
-        self.border_rhs_with(t, y, &inner, &balls, border);
+        self.rhs_with(t, y, dy, None);
     }
 
     fn blocks(&self) -> Option<&dyn BlockSplit> {

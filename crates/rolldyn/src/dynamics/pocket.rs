@@ -21,6 +21,8 @@ pub(super) struct PocketContact {
     pub(super) point: Vector3<f64>,
     /// Dissipated power: damping and friction \[W\].
     pub(super) dissipation: f64,
+    /// The friction's part of `dissipation` \[W\].
+    pub(super) friction_power: f64,
 }
 
 impl BearingModel {
@@ -66,6 +68,7 @@ impl BearingModel {
             point,
             offset,
             dissipation: (normal - law.elastic) * rate - friction.dot(&slip_t),
+            friction_power: -friction.dot(&slip_t),
         })
     }
 }

@@ -22,6 +22,7 @@ use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{ContactTable, Curvature, TorusContact};
 use crate::geometry::RingKind;
 use crate::lubrication::{FilmConditions, contact_film};
+use crate::power::ContactLosses;
 use crate::traction::fastsim::MapCell;
 use crate::traction::{ContactConditions, ContactPatch, Creep, TractionModel, TractionResult};
 use nalgebra::Vector3;
@@ -83,6 +84,8 @@ pub(super) struct RaceContact {
     pub(super) penetration_rate: f64,
     /// Dissipated power: normal damping and traction \[W\].
     pub(super) dissipation: f64,
+    /// The same by mechanism (sums to `dissipation` to rounding).
+    pub(super) losses: ContactLosses,
     /// Force on the ball (normal and traction) \[N\].
     pub(super) force: Vector3<f64>,
     /// Moment on the ball about its centre \[N·m\].
@@ -245,6 +248,18 @@ impl BearingModel {
         let mut moment = traction.moment;
         let mut couple = traction.couple;
         let mut dissipation = traction.dissipation;
+        // By mechanism (crate::power::dissipation): rigid sliding along and
+        // across the rolling direction, spin about n, and the rest of the
+        // traction's power (differential sliding).
+        let across = n.cross(&rolling_direction);
+        let mut losses = ContactLosses {
+            rolling_sliding: -traction.force.dot(&rolling_direction) * slip.dot(&rolling_direction),
+            transverse_sliding: -traction.force.dot(&across) * slip.dot(&across),
+            spin: -traction.couple.dot(&n) * relative_spin.dot(&n),
+            ..ContactLosses::default()
+        };
+        losses.differential_sliding =
+            traction.dissipation - losses.rolling_sliding - losses.transverse_sliding - losses.spin;
         if hysteresis {
             let rolling_speed = 0.5 * self.geometry.ball_diameter * rolling_rate;
             let ramp = (rolling_speed / HYSTERESIS_RAMP_SPEED).clamp(-1.0, 1.0);
@@ -253,9 +268,11 @@ impl BearingModel {
             moment += m_h;
             couple += m_h;
             dissipation -= m_h.dot(&relative_spin);
+            losses.hysteresis = -m_h.dot(&relative_spin);
         }
         let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
         dissipation += (load - elastic) * penetration_rate;
+        losses.damping = (load - elastic) * penetration_rate;
         let output = if with_output {
             let slip_speed = (slip - slip.dot(&n) * n).norm();
             ContactOutput {
@@ -286,6 +303,7 @@ impl BearingModel {
             surface,
             penetration_rate,
             dissipation,
+            losses,
             force: -load * n + traction.force,
             moment,
             couple,

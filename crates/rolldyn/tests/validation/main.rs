@@ -21,6 +21,7 @@ mod c1_seed000;
 mod c4_seed001_surfaces;
 mod c5_seed002_table1;
 mod c7_starvation;
+mod c8_power_dynamic;
 mod cage_guide;
 mod common;
 mod convergence;

@@ -1,0 +1,11 @@
+//! Power loss: where a bearing turns work into heat (MODEL §10).
+//!
+//! * [`dissipation`] — the dynamic model's exact dissipation split by force
+//!   element and mechanism (the energy balance's dissipated power, per
+//!   component).
+//!
+//! docs/power.md is the user guide.
+
+pub mod dissipation;
+
+pub use dissipation::{ContactLosses, Dissipation};
