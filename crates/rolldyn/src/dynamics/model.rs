@@ -638,7 +638,7 @@ impl BearingModel {
         let cage_drag = -(p.drag.cage_viscous * cage_speed
             + p.drag.cage_windage * cage_speed * cage_speed.abs());
         dissipation -= cage_drag * cage_speed;
-        if let Some(d) = sink.as_deref_mut() {
+        if let Some(d) = sink {
             d.cage_drag = -cage_drag * cage_speed;
             // Torque the drive supplies: minus the moment of the bearing's
             // forces on the inner ring about its (tilted) axis.
