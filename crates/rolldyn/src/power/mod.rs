@@ -7,5 +7,7 @@
 //! docs/power.md is the user guide.
 
 pub mod dissipation;
+pub mod harris;
 
 pub use dissipation::{ContactLosses, Dissipation};
+pub use harris::{LocalMethodInputs, LocalPowerLoss, RaceLosses, local_power_loss};

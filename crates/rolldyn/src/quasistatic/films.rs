@@ -2,23 +2,14 @@
 //! per contact the entrainment speed from the solved ball and ring motion,
 //! the flooded and starved Hamrock–Dowson films, Λ and K_oil.
 //!
-//! The entrainment speed is the dynamic model's (docs/dynamics.md): the
-//! mean of the ball's and the ring's surface speeds relative to the contact
-//! point, which moves with the ball's azimuth frame, tangential part only:
-//!
-//! ```text
-//! v_P = q̇ + ω_m e_x × (P − q),   u = |½[(v_b − v_P) + (v_ring − v_P)]_t|
-//! ```
-//! with the ball centre q at (x, r, φ), q̇ = r ω_m e_t, the ball's angular
-//! velocity ω_x e_x + ω_r e_r, and the inner ring turning at ω_i about its
-//! (displaced, tilted) axis. The contact point P is the exact torus contact
-//! of MODEL §2.1 at the solved ring displacement.
+//! The entrainment speed is the dynamic model's, from
+//! [`super::contact_motion`] (docs/dynamics.md).
 
 use super::Equilibrium;
-use crate::contact::{Curvature, GrooveCircle, RingPose};
+use super::contact_motion::contact_motions;
+use crate::contact::Curvature;
 use crate::geometry::BearingGeometry;
 use crate::lubrication::{ContactFilm, FilmConditions, Lubricant, Supply, contact_film};
-use nalgebra::Vector3;
 
 /// What the films need besides the solution.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -48,58 +39,16 @@ pub fn equilibrium_films(
     eq: &Equilibrium,
     inputs: &FilmInputs,
 ) -> Vec<BallFilms> {
-    let d = eq.displacement;
-    let pose = RingPose {
-        translation: Vector3::new(d[0], d[1], d[2]),
-        tilt_y: d[3],
-        tilt_z: d[4],
-    };
-    let inner_axis = pose.rotation() * Vector3::x();
-    let rings = [
-        (
-            &geometry.inner,
-            GrooveCircle::of(&geometry.inner, &pose),
-            pose.translation,
-            eq.inner_speed * inner_axis,
-        ),
-        (
-            &geometry.outer,
-            GrooveCircle::of(&geometry.outer, &RingPose::default()),
-            Vector3::zeros(),
-            Vector3::zeros(),
-        ),
-    ];
-    eq.balls
+    contact_motions(geometry, eq)
         .iter()
-        .map(|ball| {
-            let (s, c) = ball.azimuth.sin_cos();
-            let (ex, er, et) = (
-                Vector3::x(),
-                Vector3::new(0.0, c, s),
-                Vector3::new(0.0, -s, c),
-            );
-            let q = ball.axial_position * ex + ball.radial_position * er;
-            let v = ball.radial_position * ball.orbital_speed * et;
-            let w = ball.spin_axial * ex + ball.spin_radial * er;
+        .map(|contacts| {
             let mut out = BallFilms::default();
-            for (k, ((raceway, circle, centre, omega), solution)) in
-                rings.iter().zip([&ball.inner, &ball.outer]).enumerate()
-            {
-                if solution.load <= 0.0 {
-                    continue;
-                }
-                let Some(contact) = circle.contact(&q, geometry.ball_diameter, 0.0) else {
-                    continue;
-                };
-                let p = contact.contact_point;
-                let n = contact.normal;
-                let v_p = v + ball.orbital_speed * ex.cross(&(p - q));
-                let ball_surface = v + w.cross(&(p - q));
-                let ring_surface = omega.cross(&(p - centre));
-                let e = 0.5 * ((ball_surface - v_p) + (ring_surface - v_p));
-                let u = (e - e.dot(&n) * n).norm();
+            for (k, motion) in contacts.iter().enumerate() {
+                let Some(m) = motion else { continue };
+                let u = m.entrainment_speed();
+                let solution = m.solution;
                 let curvature = Curvature::of_raceway(
-                    raceway,
+                    m.raceway,
                     geometry.ball_diameter,
                     geometry.pitch_diameter,
                     solution.contact_angle,

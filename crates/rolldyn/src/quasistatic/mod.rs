@@ -9,9 +9,11 @@
 //! the stiffness matrix (implicit-function theorem) use an exact Jacobian.
 //! [`sweep()`](sweep::sweep) solves lists and grids of operating points in parallel,
 //! warm-started, deterministically. [`films`]: the lubricant films of a
-//! solution (starved, Λ, K_oil); [`modes`]: natural frequencies and mode
+//! solution (starved, Λ, K_oil), from the contact motion of
+//! [`contact_motion`]; [`modes`]: natural frequencies and mode
 //! shapes of the supported inner ring on the bearing stiffness.
 
+pub mod contact_motion;
 pub mod equilibrium;
 pub mod error;
 pub mod films;
