@@ -120,7 +120,7 @@ pub fn contact_motions<'a>(
                     slip: ball_surface - ring_surface,
                     relative_spin: w - omega,
                     entrainment: e - e.dot(&n) * n,
-                    rolling_direction: along.try_normalize(0.0).unwrap_or_else(|| et),
+                    rolling_direction: along.try_normalize(0.0).unwrap_or(et),
                 });
             }
             out
