@@ -38,6 +38,7 @@ pub mod power;
 pub mod quasistatic;
 pub mod signal;
 pub mod surface;
+pub mod thermal;
 pub mod traction;
 
 pub use error::InvalidParameter;

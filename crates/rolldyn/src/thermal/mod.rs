@@ -1,0 +1,23 @@
+//! Temperatures of a running bearing (seed 004 §4; MODEL §10).
+//!
+//! * [`network`] — a lumped thermal network: nodes, conductances, heat
+//!   sources, fixed temperatures; steady state by a direct solve, transient
+//!   by the trapezoidal rule;
+//! * [`resistance`] — the thermal resistances of a bearing: conduction
+//!   through rings as cylinders, the moving-heat-source resistance of a
+//!   Hertz contact, convection (correlations with user overrides), oil
+//!   advection;
+//! * [`bearing`] — seed 004's network of a bearing (ball, inner- and
+//!   outer-race contacts, rings, shaft, housing, oil, ambient, oil inlet);
+//! * [`viscosity`] — the Walther (ASTM D341) viscosity–temperature law.
+//!
+//! docs/thermal.md is the user guide.
+
+pub mod bearing;
+pub mod network;
+pub mod resistance;
+pub mod viscosity;
+
+pub use bearing::{BearingThermal, HeatSources, ThermalInputs, ThermalSolution};
+pub use network::{NodeId, ThermalNetwork};
+pub use viscosity::Walther;
