@@ -9,11 +9,14 @@
 //!   advection;
 //! * [`bearing`] — seed 004's network of a bearing (ball, inner- and
 //!   outer-race contacts, rings, shaft, housing, oil, ambient, oil inlet);
-//! * [`viscosity`] — the Walther (ASTM D341) viscosity–temperature law.
+//! * [`viscosity`] — the Walther (ASTM D341) viscosity–temperature law;
+//! * [`coupled`] — temperatures fed back (viscosity, thermal expansion of
+//!   the clearance) in a quasi-static iteration to thermal steady state.
 //!
 //! docs/thermal.md is the user guide.
 
 pub mod bearing;
+pub mod coupled;
 pub mod network;
 pub mod resistance;
 pub mod viscosity;

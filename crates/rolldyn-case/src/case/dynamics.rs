@@ -1,0 +1,225 @@
+//! The dynamic model's parameters from a case (`rolldyn run`): inner-ring
+//! inertia (estimated from the ring annulus when not given), cage, pocket
+//! law, guide land, drag, supports and the film supply (MODEL §1, §5).
+
+use super::{Case, Invalid};
+use crate::raw::{CageGuidance, PocketLawChoice};
+use rolldyn::RingKind;
+use rolldyn::cage::PocketLaw;
+use rolldyn::cage::pocket::hertz_pocket_stiffness;
+use rolldyn::dynamics::{CageParameters, DynamicsParameters, GuideLand};
+use rolldyn::operating::LoadProfile;
+use rolldyn::traction::ModifiedCoulomb;
+
+/// Film force at the pocket wall of the gupta_film law \[N\] (seed 001
+/// eq 28: K'_c = 11/C_p with C_p the per-side clearance).
+pub const GUPTA_WALL_FORCE: f64 = 11.0;
+
+/// Default ball–pocket friction coefficient (lubricated steel on cage
+/// material; seeds 001 and 002 use 0.01–0.1).
+pub const DEFAULT_POCKET_FRICTION: f64 = 0.05;
+
+impl Case {
+    /// The parameters of the dynamic model, with defaults applied. A value
+    /// a dynamic run needs but the case lacks is an error naming its key.
+    pub fn dynamics_parameters(&self) -> Result<DynamicsParameters, Invalid> {
+        let g = &self.bearing.geometry;
+        let speed = self.speed.clone().ok_or_else(|| {
+            Invalid::missing(
+                "operating.speed",
+                "a dynamic run needs the inner-ring speed (or operating.speed_profile)",
+            )
+        })?;
+        let need =
+            |v: Option<f64>, key: &str, what: &str| v.ok_or_else(|| Invalid::missing(key, what));
+        // Inner ring alone, as a steel annulus from bore to raceway, if not given.
+        let ring_density = self.materials.rings.material.density;
+        let annulus = match (self.bearing.bore, self.bearing.width) {
+            (Some(bore), Some(width)) => {
+                let (ro, ri) = (g.inner.groove_bottom_diameter / 2.0, bore / 2.0);
+                let mass = ring_density * std::f64::consts::PI * (ro * ro - ri * ri) * width;
+                Some((
+                    mass,
+                    mass * (3.0 * (ro * ro + ri * ri) + width * width) / 12.0,
+                ))
+            }
+            _ => None,
+        };
+        let inner_ring_mass = self.inner_ring_mass.or(annulus.map(|a| a.0)).ok_or_else(|| {
+            Invalid::missing("inner_ring.mass", "a dynamic run needs the inner-ring mass (or bearing.bore and bearing.width to estimate the ring alone)")
+        })?;
+        let inner_ring_tilt_inertia = self
+            .inner_ring_tilt_inertia
+            .or(annulus.map(|a| a.1 * inner_ring_mass / a.0))
+            .ok_or_else(|| {
+                Invalid::missing(
+                    "inner_ring.tilt_inertia",
+                    "a dynamic run needs the inner-ring tilt inertia",
+                )
+            })?;
+        let c = &self.cage;
+        let cage = CageParameters {
+            mass: need(c.mass, "cage.mass", "a dynamic run needs the cage mass")?,
+            inertia: need(
+                c.inertia,
+                "cage.inertia",
+                "a dynamic run needs the cage moment of inertia",
+            )?,
+            pitch_radius: g.pitch_diameter / 2.0,
+            pocket_clearance: need(
+                c.pocket_clearance,
+                "cage.pocket_clearance",
+                "a dynamic run needs the pocket clearance",
+            )?,
+            pocket_shape: c.pocket_shape,
+            pocket_law: self.pocket_law()?,
+            unbalance: c.unbalance,
+            pocket_friction: ModifiedCoulomb {
+                friction: c.pocket_friction,
+                stick_speed: 0.0,
+                full_speed: 1e-3,
+            },
+            whirl: c.whirl,
+            guide: self.guide_land()?,
+        };
+        Ok(DynamicsParameters {
+            inner_ring_mass,
+            inner_ring_tilt_inertia,
+            cage,
+            normal_law: self.normal_law,
+            impact_speed_floor: self.impact_speed_floor,
+            traction: self.traction,
+            traction_integration: self.traction_integration,
+            speed,
+            loads: self
+                .load_profile
+                .clone()
+                .unwrap_or(LoadProfile::Constant(self.loads)),
+            inner_support: self.inner_support,
+            outer_ring: self.outer_ring,
+            rolling_hysteresis: self.rolling_hysteresis,
+            gravity: if self.gravity { STANDARD_GRAVITY } else { 0.0 },
+            planar: self.planar,
+            drag: self.drag,
+            surface: self.surface.clone(),
+            film_supply: self
+                .lubricant
+                .as_ref()
+                .map_or(Default::default(), |l| l.supply),
+        })
+    }
+}
+
+impl Case {
+    /// The ball–pocket law with its constants: K_bc of the hertz laws from
+    /// the ball and pocket curvatures and the ball and cage materials.
+    fn pocket_law(&self) -> Result<PocketLaw, Invalid> {
+        let c = &self.cage;
+        let damping = c.pocket_damping.unwrap_or(0.0);
+        let hertz = || -> Result<f64, Invalid> {
+            let cage = c.material.as_ref().ok_or_else(|| {
+                Invalid::missing(
+                    "cage.material",
+                    "the hertz and gupta_film pocket laws need the cage material (e.g. a table with elastic_modulus, poisson_ratio, density)",
+                )
+            })?;
+            let clearance = c.pocket_clearance.ok_or_else(|| {
+                Invalid::missing(
+                    "cage.pocket_clearance",
+                    "a dynamic run needs the pocket clearance",
+                )
+            })?;
+            let ep =
+                rolldyn::material::effective_modulus(&self.materials.ball.material, &cage.material);
+            hertz_pocket_stiffness(
+                c.pocket_shape,
+                self.bearing.geometry.ball_diameter,
+                clearance,
+                ep,
+            )
+            .map_err(|e| Invalid::new("cage.pocket_clearance", Some(e.value), e.rule))
+        };
+        Ok(match c.pocket_law {
+            PocketLawChoice::Linear => PocketLaw::Linear {
+                stiffness: c.pocket_stiffness.ok_or_else(|| {
+                    Invalid::missing(
+                        "cage.pocket_stiffness",
+                        "the linear pocket law needs the ball–pocket contact stiffness, e.g. \"1e7 N/m\"",
+                    )
+                })?,
+                damping,
+            },
+            PocketLawChoice::Hertz => PocketLaw::Hertz {
+                stiffness: hertz()?,
+                damping,
+            },
+            PocketLawChoice::GuptaFilm => PocketLaw::GuptaFilm {
+                wall_force: c.pocket_wall_force,
+                stiffness: hertz()?,
+                damping,
+            },
+        })
+    }
+
+    /// The cage guide land, when the cage is ring-guided and whirls: land
+    /// radius from the cage outer (outer-ring guidance) or inner diameter,
+    /// width G, radial clearance C_g/2, η₀ from the lubricant.
+    fn guide_land(&self) -> Result<Option<GuideLand>, Invalid> {
+        let c = &self.cage;
+        let ring = match c.guidance {
+            Some(CageGuidance::OuterRing) => RingKind::Outer,
+            Some(CageGuidance::InnerRing) => RingKind::Inner,
+            _ => return Ok(None),
+        };
+        if !c.whirl {
+            return Ok(None);
+        }
+        let need =
+            |v: Option<f64>, key: &str, what: &str| v.ok_or_else(|| Invalid::missing(key, what));
+        let diameter = match ring {
+            RingKind::Outer => need(
+                c.outer_diameter,
+                "cage.outer_diameter",
+                "a ring-guided cage needs its guiding diameter",
+            )?,
+            RingKind::Inner => need(
+                c.inner_diameter,
+                "cage.inner_diameter",
+                "a ring-guided cage needs its guiding diameter",
+            )?,
+        };
+        let lubricant = self.lubricant.as_ref().ok_or_else(|| {
+            Invalid::new(
+                "cage.guidance",
+                None,
+                "a ring-guided cage needs a [lubricant] section (the guide land is hydrodynamic)",
+            )
+        })?;
+        Ok(Some(GuideLand {
+            ring,
+            land_radius: diameter / 2.0,
+            width: need(
+                c.guide_land_width,
+                "cage.guide_land_width",
+                "a ring-guided cage needs the guide-land width",
+            )?,
+            radial_clearance: need(
+                c.guide_clearance,
+                "cage.guide_clearance",
+                "a ring-guided cage needs the guide clearance",
+            )? / 2.0,
+            viscosity: lubricant.viscosity,
+            max_eccentricity: GUIDE_MAX_ECCENTRICITY,
+            stop_stiffness: GUIDE_STOP_STIFFNESS,
+        }))
+    }
+}
+
+/// Largest eccentricity ratio of the short-bearing guide-land law (MODEL §5).
+pub const GUIDE_MAX_ECCENTRICITY: f64 = 0.95;
+/// Stiffness of the guide-land stop beyond ε_max \[N/m\]: a stiff contact
+/// (of the order of a cage-material line contact), not from a source.
+pub const GUIDE_STOP_STIFFNESS: f64 = 1e8;
+
+/// Standard gravity g₀ = 9.80665 m/s² (CGPM 1901).
+pub const STANDARD_GRAVITY: f64 = 9.80665;
