@@ -14,13 +14,15 @@ use rolldyn::{BearingGeometry, Clearance, GeometrySpec, Material};
 mod dynamics;
 mod lubricant;
 mod surface;
+mod thermal;
 mod traction;
-pub use lubricant::Lubricant;
 pub use dynamics::{
     DEFAULT_POCKET_FRICTION, GUIDE_MAX_ECCENTRICITY, GUIDE_STOP_STIFFNESS, GUPTA_WALL_FORCE,
     STANDARD_GRAVITY,
 };
+pub use lubricant::Lubricant;
 use lubricant::lubricant;
+pub use thermal::{DEFAULT_AIR_CONVECTION, DEFAULT_OIL, DEFAULT_OIL_VISCOSITY, Power, Thermal};
 use traction::traction;
 
 /// A rule broken by one key: the raw material of a [`crate::CaseError`].
@@ -113,6 +115,10 @@ pub struct Case {
     pub sample_rate: Option<f64>,
     /// Output directory.
     pub output_directory: Option<String>,
+    /// Harris's local power-loss method settings.
+    pub power: Power,
+    /// Thermal network settings.
+    pub thermal: Thermal,
     /// Assumed values: (dotted key, reason).
     pub assumptions: Vec<(String, String)>,
 }
@@ -463,6 +469,7 @@ impl Case {
         };
 
         let surface = surface::surface(&raw.surface, bearing.geometry.ball_count)?;
+        let materials_ball_name = materials.ball.name.clone();
         Ok(Self {
             title: raw.title.clone(),
             bearing,
@@ -495,6 +502,8 @@ impl Case {
             max_step,
             sample_rate,
             output_directory: raw.output.directory.clone(),
+            power: thermal::power(&raw.power)?,
+            thermal: thermal::thermal(&raw.thermal, &materials_ball_name)?,
             assumptions: raw
                 .assumptions
                 .iter()
@@ -781,4 +790,3 @@ fn material(key: &str, choice: Option<&MaterialChoice>) -> Result<NamedMaterial,
         }
     }
 }
-

@@ -15,7 +15,9 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 mod surface;
+mod thermal;
 pub use surface::*;
+pub use thermal::*;
 
 /// A rolldyn case file.
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
@@ -51,6 +53,12 @@ pub struct RawCase {
     /// Raceway and ball waviness and spalls (dynamic engine).
     #[serde(default)]
     pub surface: RawSurface,
+    /// Friction power loss by Harris's local method (`rolldyn power`).
+    #[serde(default)]
+    pub power: RawPower,
+    /// Thermal network (`rolldyn thermal`).
+    #[serde(default)]
+    pub thermal: RawThermal,
     /// Time-integration settings (used by `rolldyn run`).
     #[serde(default)]
     pub solver: RawSolver,
@@ -329,6 +337,11 @@ pub struct RawLubricant {
     /// Starvation from an oil supply flow Q_v instead (seed 003 eqs 26–27;
     /// needs `density`).
     pub oil_flow: Option<Quantity<VolumeFlow>>,
+    /// A second viscosity point for the viscosity–temperature law (Walther,
+    /// ASTM D341; with `temperature` and `density`): its dynamic viscosity…
+    pub second_viscosity: Option<Quantity<Viscosity>>,
+    /// … and its temperature.
+    pub second_temperature: Option<Quantity<Temperature>>,
 }
 
 /// Operating conditions: inner-ring speed and loads on the inner ring

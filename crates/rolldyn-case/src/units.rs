@@ -92,6 +92,12 @@ dimension!(/// Thermal conductivity, SI W/(m·K).
 dimension!(/// Specific heat capacity, SI J/(kg·K).
     SpecificHeat, "specific heat", "2000 J/(kg.K)",
     [("j/(kg.k)", 1.0), ("j/kg/k", 1.0), ("j/kg.k", 1.0), ("kj/(kg.k)", 1e3), ("kj/kg/k", 1e3)]);
+dimension!(/// Convective heat-transfer coefficient, SI W/(m²·K).
+    HeatTransferCoefficient, "heat-transfer coefficient", "15 W/(m^2.K)",
+    [("w/(m^2.k)", 1.0), ("w/m^2/k", 1.0), ("w/m^2.k", 1.0), ("w/(m2.k)", 1.0), ("w/m2k", 1.0)]);
+dimension!(/// Linear thermal-expansion coefficient, SI 1/K.
+    ThermalExpansion, "thermal-expansion coefficient", "11.9e-6 1/K",
+    [("1/k", 1.0), ("k^-1", 1.0), ("um/(m.k)", 1e-6), ("ppm/k", 1e-6)]);
 dimension!(/// Linear speed, SI m/s.
     Velocity, "speed", "1 mm/s",
     [("m/s", 1.0), ("mm/s", 1e-3), ("um/s", 1e-6), ("cm/s", 1e-2)]);
@@ -124,7 +130,7 @@ dimension!(/// Unbalance (mass × radius), SI kg·m.
     [("kg.m", 1.0), ("g.mm", 1e-6), ("g.cm", 1e-5), ("kg.mm", 1e-3)]);
 
 /// Every dimension's name and units, for "that is a unit of X" messages.
-fn all_units() -> [(&'static str, UnitTable); 23] {
+fn all_units() -> [(&'static str, UnitTable); 25] {
     [
         (Length::NAME, Length::UNITS),
         (Angle::NAME, Angle::UNITS),
@@ -141,6 +147,11 @@ fn all_units() -> [(&'static str, UnitTable); 23] {
         (VolumeFlow::NAME, VolumeFlow::UNITS),
         (ThermalConductivity::NAME, ThermalConductivity::UNITS),
         (SpecificHeat::NAME, SpecificHeat::UNITS),
+        (
+            HeatTransferCoefficient::NAME,
+            HeatTransferCoefficient::UNITS,
+        ),
+        (ThermalExpansion::NAME, ThermalExpansion::UNITS),
         (Velocity::NAME, Velocity::UNITS),
         (Mass::NAME, Mass::UNITS),
         (Inertia::NAME, Inertia::UNITS),

@@ -4,12 +4,14 @@
 //! 2 bad input (case file, override or argument).
 
 mod contact;
+mod power;
 mod power_channels;
 mod quasistatic;
 mod quasistatic_films;
 mod report;
 mod run;
 mod spectrum;
+mod thermal;
 mod traction;
 mod traction_equilibrium;
 mod vibration;
@@ -96,6 +98,14 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Friction power loss at the Jones–Harris equilibrium by Harris's
+    /// local method (seed 004): hysteresis, differential sliding and spin
+    /// per raceway, cage land, ball–pocket, drag; total and friction torque.
+    Power(Box<power::PowerArgs>),
+    /// Bearing temperatures from the thermal network (seed 004), coupled to
+    /// the power loss through the oil viscosity and the operating
+    /// clearance; --transient adds the warm-up.
+    Thermal(Box<thermal::ThermalArgs>),
     /// Dynamic simulation: writes DIR/timeseries.parquet and DIR/summary.json
     /// (also after Ctrl-C). Without CASE: the built-in default (7008C,
     /// 10 000 rpm, F_x = 200 N, EHL traction, 0.05 s).
@@ -375,6 +385,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
             }
         }
         Command::Traction(args) => traction::command(*args),
+        Command::Power(args) => power::command(*args),
+        Command::Thermal(args) => thermal::command(*args),
         Command::Spectrum(args) => spectrum::command(*args),
         Command::Presets { json: as_json } => {
             let list: Vec<report::PresetEntry> = presets::PRESETS

@@ -165,13 +165,19 @@ impl Case {
     /// radius from the cage outer (outer-ring guidance) or inner diameter,
     /// width G, radial clearance C_g/2, η₀ from the lubricant.
     fn guide_land(&self) -> Result<Option<GuideLand>, Invalid> {
+        self.guide_land_of(true)
+    }
+
+    /// The guide land of a ring-guided cage; with `whirl_only`, only when
+    /// the cage whirls (the dynamic model's land acts on the whirl).
+    pub(super) fn guide_land_of(&self, whirl_only: bool) -> Result<Option<GuideLand>, Invalid> {
         let c = &self.cage;
         let ring = match c.guidance {
             Some(CageGuidance::OuterRing) => RingKind::Outer,
             Some(CageGuidance::InnerRing) => RingKind::Inner,
             _ => return Ok(None),
         };
-        if !c.whirl {
+        if whirl_only && !c.whirl {
             return Ok(None);
         }
         let need =

@@ -6,6 +6,7 @@ use super::{Invalid, checked, non_negative, positive};
 use crate::raw::RawLubricant;
 use rolldyn::BearingGeometry;
 use rolldyn::lubrication::Supply;
+use rolldyn::thermal::Walther;
 
 /// Lubricant in SI.
 #[derive(Debug, Clone, PartialEq)]
@@ -28,12 +29,64 @@ pub struct Lubricant {
     pub pressure_viscosity_model: rolldyn::lubrication::PressureViscosity,
     /// Oil supply of the inner and outer raceway contacts (starvation).
     pub supply: [Supply; 2],
+    /// Oil supply flow \[m³/s\], if given.
+    pub oil_flow: Option<f64>,
+    /// Viscosity–temperature law through (`temperature`, `viscosity`) and
+    /// (`second_temperature`, `second_viscosity`), if both are given.
+    pub viscosity_law: Option<Walther>,
 }
 
 pub(super) fn lubricant(
     l: &RawLubricant,
     geometry: &BearingGeometry,
 ) -> Result<Lubricant, Invalid> {
+    let mut out = base(l, geometry)?;
+    out.oil_flow = checked("lubricant.oil_flow", &l.oil_flow, positive)?;
+    let second = (
+        checked("lubricant.second_viscosity", &l.second_viscosity, positive)?,
+        checked(
+            "lubricant.second_temperature",
+            &l.second_temperature,
+            positive,
+        )?,
+    );
+    out.viscosity_law = match second {
+        (None, None) => None,
+        (Some(eta2), Some(t2)) => {
+            let t1 = out.temperature.ok_or_else(|| {
+                Invalid::missing(
+                    "lubricant.temperature",
+                    "the viscosity–temperature law needs the temperature at which lubricant.viscosity holds",
+                )
+            })?;
+            let density = out.density.unwrap_or(super::thermal::DEFAULT_OIL.0);
+            Some(
+                Walther::through((t1, out.viscosity), (t2, eta2), density).map_err(|e| {
+                    Invalid::new(
+                        "lubricant.second_viscosity",
+                        l.second_viscosity.as_ref().map(|q| q.to_string()),
+                        e.rule,
+                    )
+                })?,
+            )
+        }
+        (Some(_), None) => {
+            return Err(Invalid::missing(
+                "lubricant.second_temperature",
+                "lubricant.second_viscosity needs the temperature at which it holds",
+            ));
+        }
+        (None, Some(_)) => {
+            return Err(Invalid::missing(
+                "lubricant.second_viscosity",
+                "lubricant.second_temperature needs the viscosity at that temperature",
+            ));
+        }
+    };
+    Ok(out)
+}
+
+fn base(l: &RawLubricant, geometry: &BearingGeometry) -> Result<Lubricant, Invalid> {
     Ok(Lubricant {
         name: l.name.clone(),
         viscosity: checked("lubricant.viscosity", &Some(l.viscosity.clone()), positive)?
@@ -60,6 +113,8 @@ pub(super) fn lubricant(
         })?,
         pressure_viscosity_model: l.pressure_viscosity_model.unwrap_or_default(),
         supply: supply(l, geometry)?,
+        oil_flow: None,
+        viscosity_law: None,
     })
 }
 

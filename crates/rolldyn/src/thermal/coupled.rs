@@ -191,7 +191,8 @@ pub fn coupled_steady(
         };
         let e = &p.expansion;
         let delta = e.ring
-            * ((p.geometry.pitch_diameter + p.geometry.ball_diameter) * (t("outer_ring") - reference)
+            * ((p.geometry.pitch_diameter + p.geometry.ball_diameter)
+                * (t("outer_ring") - reference)
                 - (p.geometry.pitch_diameter - p.geometry.ball_diameter)
                     * (t("inner_ring") - reference))
             - 2.0 * e.ball * p.geometry.ball_diameter * (t("ball") - reference);
@@ -202,8 +203,9 @@ pub fn coupled_steady(
         };
         let solver = QuasiStaticSolver::new(&geometry, p.ball, p.rings, p.hertz)?;
         let eq = match &warm_start {
-            Some(previous) => solver
-                .solve_from(previous, &p.conditions, &SolverOptions::default())?,
+            Some(previous) => {
+                solver.solve_from(previous, &p.conditions, &SolverOptions::default())?
+            }
             None => solver.solve(&p.conditions, &SolverOptions::default())?,
         };
         let oil_viscosity = match &p.viscosity {

@@ -1,0 +1,58 @@
+//! `[power]` and `[thermal]`: friction power loss and the thermal network
+//! (seed 004; MODEL §10) as written.
+
+use crate::units::*;
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// Harris's local power-loss method (`rolldyn power`, `rolldyn thermal`).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawPower {
+    /// Sliding friction coefficient f_s of the raceway contacts under full
+    /// sliding (spin, differential sliding). Default: the traction model's
+    /// full-sliding value (Coulomb μ, EHL limiting shear coefficient,
+    /// traction-curve asymptote D, FASTSIM μ).
+    pub sliding_friction: Option<f64>,
+}
+
+/// Thermal network of the bearing (`rolldyn thermal`); every key has a
+/// documented default (docs/thermal.md).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawThermal {
+    /// Ambient air temperature (default 20 °C).
+    pub ambient_temperature: Option<Quantity<Temperature>>,
+    /// Oil inlet temperature (default: `lubricant.temperature`, else ambient).
+    pub oil_inlet_temperature: Option<Quantity<Temperature>>,
+    /// Oil supply flow (default: `lubricant.oil_flow`, else none).
+    pub oil_flow: Option<Quantity<VolumeFlow>>,
+    /// Housing outside diameter (default 1.6 × the bearing's outside diameter).
+    pub housing_diameter: Option<Quantity<Length>>,
+    /// Housing width (default 2 × the bearing width).
+    pub housing_width: Option<Quantity<Length>>,
+    /// Shaft length in air on each side of the bearing (default the bearing width).
+    pub shaft_length: Option<Quantity<Length>>,
+    /// Housing-to-air convection coefficient (default 15 W/(m²K)).
+    pub housing_convection: Option<Quantity<HeatTransferCoefficient>>,
+    /// Shaft-to-air convection coefficient (default 15 W/(m²K)).
+    pub shaft_convection: Option<Quantity<HeatTransferCoefficient>>,
+    /// Balls and rings to oil (default: flat-plate correlation at the cage's surface speed).
+    pub oil_convection: Option<Quantity<HeatTransferCoefficient>>,
+    /// Ring and shaft conductivity (default 43 W/(m·K), bearing steel).
+    pub ring_conductivity: Option<Quantity<ThermalConductivity>>,
+    /// Ball conductivity (default 43 W/(m·K); 30 for silicon nitride balls).
+    pub ball_conductivity: Option<Quantity<ThermalConductivity>>,
+    /// Housing conductivity (default 43 W/(m·K)).
+    pub housing_conductivity: Option<Quantity<ThermalConductivity>>,
+    /// Ring specific heat (default 458 J/(kg·K)).
+    pub ring_specific_heat: Option<Quantity<SpecificHeat>>,
+    /// Ball specific heat (default 458 J/(kg·K); 690 for silicon nitride).
+    pub ball_specific_heat: Option<Quantity<SpecificHeat>>,
+    /// Ring expansion coefficient (default 11.9e-6 1/K, AISI 52100).
+    pub ring_expansion: Option<Quantity<ThermalExpansion>>,
+    /// Ball expansion coefficient (default 11.9e-6 1/K; 3.2e-6 for silicon nitride).
+    pub ball_expansion: Option<Quantity<ThermalExpansion>>,
+    /// Temperature at which the geometry is given (default 20 °C).
+    pub reference_temperature: Option<Quantity<Temperature>>,
+}

@@ -1,0 +1,221 @@
+//! `rolldyn thermal`: bearing temperatures (seed 004 §4; docs/thermal.md).
+//! The coupled quasi-static iteration to thermal steady state (Jones–Harris
+//! → local power loss → thermal network → oil viscosity and operating
+//! clearance) with its convergence history; with `--transient`, the
+//! warm-up from the reference temperature at the converged heat sources.
+//! Text or JSON (keys in docs/cli.md).
+
+use crate::power::PowerReport;
+use crate::{CaseArgs, Failure, bad_arg, emit, json};
+use clap::Args;
+use rolldyn::quasistatic::RacewayControl;
+use rolldyn::thermal::BearingThermal;
+use rolldyn::thermal::bearing::NODES;
+use rolldyn::thermal::coupled::{
+    CoupledOptions, CoupledProblem, CoupledSolution, coupled_steady, heat_sources,
+};
+use rolldyn_case::Case;
+use rolldyn_case::units::{Quantity, Time};
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+
+const KELVIN: f64 = 273.15;
+
+/// Arguments of `rolldyn thermal`.
+#[derive(Args, Debug)]
+pub struct ThermalArgs {
+    #[command(flatten)]
+    pub case: CaseArgs,
+    /// Also the warm-up from the reference temperature over this time,
+    /// e.g. "30 min" (heat sources of the steady state, held constant).
+    #[arg(long, value_name = "TIME")]
+    pub transient: Option<String>,
+    /// Time steps of the transient.
+    #[arg(long, default_value_t = 600)]
+    pub steps: usize,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// One sample of the transient.
+#[derive(Serialize)]
+pub struct TransientRow {
+    pub time_s: f64,
+    pub temperatures_c: BTreeMap<&'static str, f64>,
+}
+
+/// `rolldyn thermal --json`.
+#[derive(Serialize)]
+pub struct ThermalReport {
+    pub converged: bool,
+    pub iterations: usize,
+    /// Largest node-temperature change per pass \[K\].
+    pub history_k: Vec<f64>,
+    pub temperatures_c: BTreeMap<&'static str, f64>,
+    pub heat_generated_w: f64,
+    pub heat_to_ambient_w: f64,
+    pub heat_to_oil_w: f64,
+    pub oil_viscosity_pa_s: f64,
+    pub oil_flow_m3_s: f64,
+    pub reference_clearance_m: f64,
+    pub operating_clearance_m: f64,
+    pub power: PowerReport,
+    pub transient: Option<Vec<TransientRow>>,
+}
+
+fn temperatures(t: &[f64; 10]) -> BTreeMap<&'static str, f64> {
+    NODES.iter().zip(t).map(|(n, v)| (*n, v - KELVIN)).collect()
+}
+
+fn bad(e: rolldyn_case::case::Invalid) -> Failure {
+    Failure::BadInput(format!("{}: {}", e.key, e.rule))
+}
+
+/// The coupled steady state of a case.
+pub fn solve(case: &Case) -> Result<CoupledSolution, Failure> {
+    let problem = CoupledProblem {
+        geometry: &case.bearing.geometry,
+        ball: &case.materials.ball.material,
+        rings: &case.materials.rings.material,
+        hertz: case.contact_stiffness,
+        conditions: crate::quasistatic::conditions(case, None::<RacewayControl>),
+        power: case.local_method_inputs().map_err(bad)?,
+        thermal: case.thermal_inputs().map_err(bad)?,
+        viscosity: case.lubricant.as_ref().and_then(|l| l.viscosity_law),
+        expansion: case.thermal.expansion,
+    };
+    coupled_steady(&problem, &CoupledOptions::default())
+        .map_err(|e| Failure::BadInput(format!("thermal: {e}")))
+}
+
+pub fn command(args: ThermalArgs) -> Result<(), Failure> {
+    let duration = args
+        .transient
+        .as_deref()
+        .map(|t| {
+            Quantity::<Time>::parse(t)
+                .map(|q| q.si)
+                .map_err(|e| bad_arg("--transient", t, e))
+                .and_then(|d| {
+                    if d > 0.0 && d.is_finite() {
+                        Ok(d)
+                    } else {
+                        Err(bad_arg("--transient", t, "must be a positive time"))
+                    }
+                })
+        })
+        .transpose()?;
+    if !(1..=1_000_000).contains(&args.steps) {
+        return Err(bad_arg(
+            "--steps",
+            &args.steps.to_string(),
+            "must lie in [1, 1000000]",
+        ));
+    }
+    let (_, case) = args.case.load()?;
+    let s = solve(&case)?;
+    let inputs = case.thermal_inputs().map_err(bad)?;
+    let transient = match duration {
+        None => None,
+        Some(d) => {
+            let mut thermal = inputs.clone();
+            thermal.oil_kinematic_viscosity = s.oil_viscosity / thermal.oil_density;
+            let heat = heat_sources(&case.bearing.geometry, &s.equilibrium, &s.power);
+            let network = BearingThermal::new(&thermal, &heat)
+                .map_err(|e| Failure::BadInput(e.to_string()))?;
+            let mut start = [case.thermal.expansion.reference_temperature; 10];
+            start[8] = thermal.ambient_temperature;
+            start[9] = thermal.oil_inlet_temperature;
+            let samples = 20.min(args.steps);
+            let mut rows = Vec::new();
+            let mut state = start;
+            for k in 1..=samples {
+                let from = (k - 1) * args.steps / samples;
+                let to = k * args.steps / samples;
+                let span = d * (to - from) as f64 / args.steps as f64;
+                let next = network
+                    .transient(&state, span, to - from)
+                    .map_err(|e| Failure::BadInput(e.to_string()))?;
+                state = next.temperatures;
+                rows.push(TransientRow {
+                    time_s: d * to as f64 / args.steps as f64,
+                    temperatures_c: temperatures(&state),
+                });
+            }
+            Some(rows)
+        }
+    };
+    let report = ThermalReport {
+        converged: s.converged,
+        iterations: s.history.len(),
+        history_k: s.history.clone(),
+        temperatures_c: temperatures(&s.thermal.temperatures),
+        heat_generated_w: s.power.total(),
+        heat_to_ambient_w: s.thermal.to_ambient,
+        heat_to_oil_w: s.thermal.to_oil,
+        oil_viscosity_pa_s: s.oil_viscosity,
+        oil_flow_m3_s: inputs.oil_flow,
+        reference_clearance_m: case.bearing.geometry.equivalent_diametral_clearance(),
+        operating_clearance_m: s.operating_clearance,
+        power: PowerReport::new(&case, &s.equilibrium, &s.power)?,
+        transient,
+    };
+    if args.json {
+        return json(&report);
+    }
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "Thermal steady state ({} after {} passes; last change {:.2e} K)",
+        if report.converged {
+            "converged"
+        } else {
+            "NOT converged"
+        },
+        report.iterations,
+        report.history_k.last().copied().unwrap_or(0.0)
+    );
+    for (node, t) in &report.temperatures_c {
+        let _ = writeln!(out, "  {node:<14} {t:>8.2} °C");
+    }
+    let _ = writeln!(
+        out,
+        "  heat {:.3} W: {:.3} W to ambient, {:.3} W to the oil ({:.3} L/min); oil viscosity {:.4} Pa·s",
+        report.heat_generated_w,
+        report.heat_to_ambient_w,
+        report.heat_to_oil_w,
+        report.oil_flow_m3_s * 6e4,
+        report.oil_viscosity_pa_s
+    );
+    let _ = writeln!(
+        out,
+        "  diametral clearance {:.2} µm at the reference temperature, {:.2} µm operating\n",
+        report.reference_clearance_m * 1e6,
+        report.operating_clearance_m * 1e6
+    );
+    report.power.text(&mut out);
+    if let Some(rows) = &report.transient {
+        let _ = writeln!(out, "\nWarm-up from the reference temperature:");
+        let _ = writeln!(
+            out,
+            "  {:>10} {:>9} {:>9} {:>9} {:>9} {:>9}",
+            "t s", "ball", "inner", "outer", "housing", "oil"
+        );
+        for r in rows {
+            let t = |n: &str| r.temperatures_c.get(n).copied().unwrap_or(f64::NAN);
+            let _ = writeln!(
+                out,
+                "  {:>10.1} {:>9.2} {:>9.2} {:>9.2} {:>9.2} {:>9.2}",
+                r.time_s,
+                t("ball"),
+                t("inner_ring"),
+                t("outer_ring"),
+                t("housing"),
+                t("oil")
+            );
+        }
+    }
+    emit(&out)
+}
