@@ -112,15 +112,15 @@ pub fn heat_sources(
             h.loaded_contacts[k] += 1;
         }
     }
-    for k in 0..2 {
+    for (k, sum) in sums.iter().enumerate() {
         let n = h.loaded_contacts[k].max(1) as f64;
-        let ellipse = (sums[k][0] / n, sums[k][1] / n);
+        let ellipse = (sum[0] / n, sum[1] / n);
         if k == 0 {
             h.inner_ellipse = ellipse;
         } else {
             h.outer_ellipse = ellipse;
         }
-        h.entrainment_speed[k] = sums[k][2] / n;
+        h.entrainment_speed[k] = sum[2] / n;
     }
     h
 }
