@@ -4,6 +4,7 @@
 
 use rolldyn::material::Material;
 use rolldyn::operating::Loads;
+use rolldyn::power::local_power_loss;
 use rolldyn::quasistatic::{
     BallSolution, Conditions, Equilibrium, QuasiStaticSolver, RacewayControl, SolverOptions, sweep,
 };
@@ -332,6 +333,9 @@ pub struct SweepRow {
     pub contact_angle_outer_deg: Option<f64>,
     pub stiffness_axial_n_per_m: Option<f64>,
     pub stiffness_radial_z_n_per_m: Option<f64>,
+    /// Harris's local power loss (null without a sliding friction).
+    pub power_loss_w: Option<f64>,
+    pub friction_torque_n_m: Option<f64>,
 }
 
 /// Builds the grid (first sweep outermost) and solves it.
@@ -360,6 +364,8 @@ pub fn run_sweep(
             .collect();
     }
     let results = sweep(&solver, &points, &SolverOptions::default(), true);
+    // The local power loss where the case allows it (docs/power.md).
+    let power_inputs = case.local_method_inputs().ok();
     Ok(points
         .iter()
         .zip(results)
@@ -380,6 +386,8 @@ pub fn run_sweep(
                 contact_angle_outer_deg: None,
                 stiffness_axial_n_per_m: None,
                 stiffness_radial_z_n_per_m: None,
+                power_loss_w: None,
+                friction_torque_n_m: None,
             };
             if let Ok(sol) = r {
                 let top = sol
@@ -395,6 +403,11 @@ pub fn run_sweep(
                 row.contact_angle_outer_deg = top.map(|b| b.outer.contact_angle.to_degrees());
                 row.stiffness_axial_n_per_m = Some(sol.stiffness[0][0]);
                 row.stiffness_radial_z_n_per_m = Some(sol.stiffness[2][2]);
+                if let Some(inputs) = &power_inputs {
+                    let p = local_power_loss(&case.bearing.geometry, &sol, inputs);
+                    row.power_loss_w = Some(p.total());
+                    row.friction_torque_n_m = Some(p.friction_torque());
+                }
             }
             row
         })
@@ -404,13 +417,13 @@ pub fn run_sweep(
 /// CSV text of sweep rows (header + one line per point).
 pub fn sweep_csv(rows: &[SweepRow]) -> String {
     let mut out = String::from(
-        "speed_rpm,force_x_n,force_z_n,converged,cage_speed_rpm,axial_displacement_m,radial_displacement_z_m,max_load_inner_n,max_load_outer_n,contact_angle_inner_deg,contact_angle_outer_deg,stiffness_axial_n_per_m,stiffness_radial_z_n_per_m,error\n",
+        "speed_rpm,force_x_n,force_z_n,converged,cage_speed_rpm,axial_displacement_m,radial_displacement_z_m,max_load_inner_n,max_load_outer_n,contact_angle_inner_deg,contact_angle_outer_deg,stiffness_axial_n_per_m,stiffness_radial_z_n_per_m,power_loss_w,friction_torque_n_m,error\n",
     );
     let f = |v: Option<f64>| v.map(|x| format!("{x:e}")).unwrap_or_default();
     for r in rows {
         let _ = writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
             r.speed_rpm,
             r.force_x_n,
             r.force_z_n,
@@ -424,6 +437,8 @@ pub fn sweep_csv(rows: &[SweepRow]) -> String {
             f(r.contact_angle_outer_deg),
             f(r.stiffness_axial_n_per_m),
             f(r.stiffness_radial_z_n_per_m),
+            f(r.power_loss_w),
+            f(r.friction_torque_n_m),
             r.error.as_deref().unwrap_or("").replace('"', "'")
         );
     }

@@ -57,3 +57,149 @@ fn run_reports_power_by_component() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+fn preset(name: &str) -> String {
+    rolldyn_case::presets::find(name).unwrap().text.to_string()
+}
+
+fn json_of(args: &[&str], stdin: Option<&str>) -> Value {
+    let o = rolldyn(args, stdin);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+/// `rolldyn power`: components sum to the total, spin is the largest
+/// share on the seed 004 bearing (C8), torque = power/ω.
+#[test]
+fn power_command_reports_components() {
+    let case = preset("acbb_30x62");
+    let v = json_of(&["power", "-", "--json"], Some(&case));
+    let f = |path: &[&str]| {
+        let mut x = &v;
+        for p in path {
+            x = &x[*p];
+        }
+        x.as_f64().unwrap_or_else(|| panic!("{path:?}"))
+    };
+    let parts = f(&["inner", "total_w"])
+        + f(&["outer", "total_w"])
+        + f(&["cage_land_w"])
+        + f(&["ball_pocket_w"])
+        + f(&["ball_drag_w"])
+        + f(&["cage_drag_w"]);
+    assert!((parts / f(&["power_loss_w"]) - 1.0).abs() < 1e-12);
+    let spin = f(&["inner", "spin_w"]) + f(&["outer", "spin_w"]);
+    assert!(spin > 0.5 * f(&["power_loss_w"]), "spin {spin} W");
+    let omega = f(&["speed_rpm"]) * std::f64::consts::TAU / 60.0;
+    assert!((f(&["friction_torque_n_m"]) * omega / f(&["power_loss_w"]) - 1.0).abs() < 1e-12);
+    let text = rolldyn(&["power", "-"], Some(&case));
+    assert!(String::from_utf8_lossy(&text.stdout).contains("differential sliding"));
+}
+
+/// No traction model and no `power.sliding_friction`: a located error.
+#[test]
+fn power_needs_a_sliding_friction() {
+    let case = preset("6205");
+    let o = rolldyn(&["power", "-"], Some(&case));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("power.sliding_friction"),
+        "{}",
+        stderr(&o)
+    );
+    let o = rolldyn(
+        &["power", "-", "--set", "power.sliding_friction=1.5"],
+        Some(&case),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("[0, 1]"), "{}", stderr(&o));
+}
+
+/// `rolldyn thermal`: converged, heat in = heat out, the warm-up rises
+/// towards the steady state; bad input is located.
+#[test]
+fn thermal_command_balances_heat_and_warms_up() {
+    let case = preset("acbb_30x62");
+    let v = json_of(
+        &[
+            "thermal",
+            "-",
+            "--json",
+            "--transient",
+            "4 h",
+            "--steps",
+            "400",
+        ],
+        Some(&case),
+    );
+    assert_eq!(v["converged"], true);
+    let f = |k: &str| v[k].as_f64().unwrap();
+    let out = f("heat_to_ambient_w") + f("heat_to_oil_w");
+    assert!((out / f("heat_generated_w") - 1.0).abs() < 1e-9, "{out}");
+    let t = &v["temperatures_c"];
+    let node = |k: &str| t[k].as_f64().unwrap();
+    assert!(node("inner_contact") > node("inner_ring") && node("inner_ring") > node("oil"));
+    assert!((node("ambient") - 20.0).abs() < 1e-9);
+    let rows = v["transient"].as_array().unwrap();
+    assert_eq!(rows.len(), 20);
+    let outer = |r: &Value| r["temperatures_c"]["outer_ring"].as_f64().unwrap();
+    assert!(outer(&rows[0]) < outer(&rows[19]));
+    assert!(
+        (outer(&rows[19]) - node("outer_ring")).abs() < 0.5,
+        "{} vs {}",
+        outer(&rows[19]),
+        node("outer_ring")
+    );
+    for (args, key) in [
+        (
+            vec!["--set", "thermal.housing_diameter=50mm"],
+            "housing_diameter",
+        ),
+        (
+            vec![
+                "--set",
+                "lubricant.second_temperature=100degC",
+                "--set",
+                "lubricant.second_viscosity=40mPa.s",
+            ],
+            "lubricant.second_viscosity",
+        ),
+        (vec!["--transient=-3 s"], "--transient"),
+    ] {
+        let mut a = vec!["thermal", "-"];
+        a.extend(args.iter().copied());
+        let o = rolldyn(&a, Some(&case));
+        assert_eq!(o.status.code(), Some(2), "{a:?}");
+        assert!(stderr(&o).contains(key), "{a:?}: {}", stderr(&o));
+    }
+}
+
+/// Quasi-static sweeps carry the local power loss.
+#[test]
+fn quasistatic_sweep_has_power_columns() {
+    let case = preset("acbb_30x62");
+    let dir = temp_dir("power-sweep");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(
+        &[
+            "quasistatic",
+            "-",
+            "--sweep",
+            "speed=9000rpm,17000rpm",
+            "-o",
+            &d,
+        ],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let rows: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
+    let p = |i: usize| rows[i]["power_loss_w"].as_f64().unwrap();
+    assert!(p(1) > p(0), "power rises with speed");
+    assert!(
+        std::fs::read_to_string(dir.join("sweep.csv"))
+            .unwrap()
+            .contains("power_loss_w")
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
