@@ -76,6 +76,8 @@ use crate::operating::Loads;
 use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
 use serde::{Deserialize, Serialize};
 
+mod rebuild;
+
 type Matrix5 = SMatrix<f64, 5, 5>;
 type Vector5 = SVector<f64, 5>;
 type Row3 = SMatrix<f64, 1, 3>;

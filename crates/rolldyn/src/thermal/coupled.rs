@@ -182,6 +182,7 @@ pub fn coupled_steady(
     let mut history = Vec::new();
     let mut last: Option<CoupledSolution> = None;
     let mut warm_start: Option<Equilibrium> = None;
+    let base = QuasiStaticSolver::new(p.geometry, p.ball, p.rings, p.hertz)?;
     for _ in 0..options.max_iterations {
         let t = |name: &str| {
             super::bearing::NODES
@@ -201,7 +202,7 @@ pub fn coupled_steady(
         } else {
             p.geometry.clone()
         };
-        let solver = QuasiStaticSolver::new(&geometry, p.ball, p.rings, p.hertz)?;
+        let solver = base.with_geometry(&geometry)?;
         let eq = match &warm_start {
             Some(previous) => {
                 solver.solve_from(previous, &p.conditions, &SolverOptions::default())?
