@@ -9,6 +9,9 @@
 //! 4. One RHS of the default case with and without the dissipation split
 //!    (`rhs_with_power`, what `run` evaluates once per sample).
 
+// A benchmark stops at the first failure.
+#![allow(clippy::unwrap_used)]
+
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::OdeSystem;
 use rolldyn::power::local_power_loss;
