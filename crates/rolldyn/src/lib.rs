@@ -18,6 +18,8 @@
 //! * [`traction`] — traction stress laws and their integration over the contact ellipse (MODEL §3);
 //! * [`surface`] — raceway and ball waviness, spalls (MODEL §6);
 //! * [`signal`] — spectra, envelope, velocity RMS, characteristic lines, cage whirl (MODEL §9);
+//! * [`power`] — dissipation by component (dynamic) and Harris's local method (MODEL §10, seed 004);
+//! * [`thermal`] — thermal network, viscosity–temperature law, coupled iteration (MODEL §10, seed 004);
 //! * [`math`] — elliptic integrals, root finding, monotone interpolation.
 //!
 //! Equation numbers refer to `../shared/spec/MODEL.md` and the seed papers;
