@@ -1,9 +1,16 @@
 //! Friction power of a run by component (MODEL §10; issue 13): the
 //! time-series channels and the `summary.json` means of the dynamic
 //! model's exact dissipation split ([`rolldyn::power::dissipation`]), and
-//! the drive (friction) torque on the inner ring. Keys in docs/cli.md.
+//! the drive (friction) torque on the inner ring; with `thermal.run_coupling`
+//! the thermal network coupled to the run (docs/thermal.md): its node
+//! temperatures and the EHL viscosity as channels, and a summary. Keys in
+//! docs/cli.md.
 
+use rolldyn::dynamics::{BearingModel, ThermalCoupling};
 use rolldyn::power::Dissipation;
+use rolldyn::thermal::bearing::NODES;
+use rolldyn::traction::TractionModel;
+use rolldyn_case::Case;
 use rolldyn_io::TimeSeries;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -24,20 +31,92 @@ fn components(p: &Dissipation) -> impl Iterator<Item = (String, f64)> {
         .chain(p.others().into_iter().map(|(n, v)| (n.to_string(), v)))
 }
 
-/// Adds the power channels and the friction torque to `series`.
-pub fn add_channels(series: &mut TimeSeries) {
+/// Temperature channels of a coupled run: `temperature_<node>_c`.
+const TEMPERATURE_NODES: [&str; 5] = ["ball", "inner_ring", "outer_ring", "housing", "oil"];
+
+/// Adds the power channels and the friction torque to `series`, and with
+/// `thermal` the temperatures and the EHL viscosity.
+pub fn add_channels(series: &mut TimeSeries, thermal: bool) {
     for (name, _) in components(&Dissipation::default()) {
         series.channel(format!("{PREFIX}{name}_w"), "W");
     }
     series.channel("power_total_w", "W");
     series.channel("friction_torque_n_m", "N*m");
+    if thermal {
+        for node in TEMPERATURE_NODES {
+            series.channel(format!("temperature_{node}_c"), "degC");
+        }
+        series.channel("oil_viscosity_pa_s", "Pa*s");
+    }
 }
 
 /// Appends one sample of the channels of [`add_channels`] to `row`.
-pub fn push(row: &mut Vec<f64>, p: &Dissipation) {
+pub fn push(row: &mut Vec<f64>, p: &Dissipation, model: &BearingModel) {
     row.extend(components(p).map(|(_, v)| v));
     row.push(p.total());
     row.push(p.drive_torque);
+    if let Some(t) = model.thermal() {
+        for node in TEMPERATURE_NODES {
+            row.push(t.temperature(node).unwrap_or(f64::NAN) - KELVIN);
+        }
+        let eta = match &model.parameters().traction {
+            TractionModel::Ehl(e) => e.lubricant.viscosity,
+            _ => f64::NAN,
+        };
+        row.push(eta);
+    }
+}
+
+const KELVIN: f64 = 273.15;
+
+/// Couples the case's thermal network to `model`, starting at the
+/// quasi-static thermal steady state (`rolldyn thermal`).
+pub fn couple(
+    case: &Case,
+    model: &mut BearingModel,
+    interval: f64,
+    y0: &[f64],
+) -> Result<(), String> {
+    let steady = crate::thermal::solve(case).map_err(|f| match f {
+        crate::Failure::BadInput(m) | crate::Failure::Internal(m) => m,
+    })?;
+    let mut inputs = case
+        .thermal_inputs()
+        .map_err(|e| format!("{}: {}", e.key, e.rule))?;
+    inputs.oil_kinematic_viscosity = steady.oil_viscosity / inputs.oil_density;
+    let coupling = ThermalCoupling::new(
+        inputs,
+        case.lubricant.as_ref().and_then(|l| l.viscosity_law),
+        interval,
+        steady.thermal.temperatures,
+    )
+    .map_err(|e| format!("thermal.update_interval: {}", e.rule))?;
+    model.couple_thermal(coupling, 0.0, y0);
+    Ok(())
+}
+
+/// The run's thermal coupling in `summary.json`.
+#[derive(Serialize)]
+pub struct ThermalRunSummary {
+    pub updates: usize,
+    pub update_interval_s: f64,
+    pub initial_temperatures_c: BTreeMap<&'static str, f64>,
+    pub final_temperatures_c: BTreeMap<&'static str, f64>,
+    /// Largest node-temperature rate at the last update \[K/s\].
+    pub largest_rate_k_per_s: f64,
+}
+
+impl From<&ThermalCoupling> for ThermalRunSummary {
+    fn from(t: &ThermalCoupling) -> Self {
+        let map = |v: &[f64; 10]| NODES.iter().zip(v).map(|(n, t)| (*n, t - KELVIN)).collect();
+        Self {
+            updates: t.updates(),
+            update_interval_s: t.interval(),
+            initial_temperatures_c: map(t.initial_temperatures()),
+            final_temperatures_c: map(t.temperatures()),
+            largest_rate_k_per_s: t.largest_rate(),
+        }
+    }
 }
 
 /// Power keys of `summary.json`, means over the averaging window.

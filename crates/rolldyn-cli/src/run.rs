@@ -92,6 +92,8 @@ pub struct Summary {
     /// Friction power by component and friction torque.
     #[serde(flatten)]
     pub power: PowerSummary,
+    /// The thermal network coupled to the run (null when not coupled).
+    pub thermal_coupling: Option<crate::power_channels::ThermalRunSummary>,
     pub drive_work_j: f64,
     pub dissipated_energy_j: f64,
     pub mechanical_energy_change_j: f64,
@@ -155,7 +157,7 @@ struct Channels {
 }
 
 impl Channels {
-    fn new(balls: usize, creep: bool, states: usize) -> Self {
+    fn new(balls: usize, creep: bool, thermal: bool, states: usize) -> Self {
         let mut series = TimeSeries::default();
         for (name, unit) in [
             ("time_s", "s"),
@@ -192,7 +194,7 @@ impl Channels {
         ] {
             series.channel(name, unit);
         }
-        crate::power_channels::add_channels(&mut series);
+        crate::power_channels::add_channels(&mut series, thermal);
         for j in 0..balls {
             for (name, unit) in BALL_CHANNELS {
                 series.channel(format!("ball{j}_{name}"), unit);
@@ -272,7 +274,7 @@ impl Channels {
         ]);
         model.contact_samples(t, y, contacts);
         row.push(model.pure_rolling_ratio(contacts, y));
-        crate::power_channels::push(row, &power);
+        crate::power_channels::push(row, &power, model);
         for (j, c) in contacts.iter().enumerate().take(self.balls) {
             let b = l.ball(j);
             let (attitude, yaw) = model.ball_attitude(j, y);
@@ -345,6 +347,9 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
         StartChoice::QuasistaticTraction => traction_state(case, &model, 0.0)
             .map_err(|e| format!("solver.start = \"quasistatic_traction\": {e}"))?,
     };
+    if let Some(interval) = case.thermal.run_coupling {
+        crate::power_channels::couple(case, &mut model, interval, &y0)?;
+    }
     let relative_tolerance = case
         .relative_tolerance
         .unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
@@ -431,6 +436,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
     let mut channels = Channels::new(
         g.ball_count,
         matches!(params.traction, TractionModel::Fastsim(_)),
+        model.thermal().is_some(),
         model.layout().len(),
     );
     let mut row = Vec::with_capacity(channels.series.width());
@@ -462,6 +468,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
     let summary = summarise(
         source,
         case,
+        &model,
         &channels.series,
         duration,
         wall,
@@ -486,6 +493,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
 fn summarise(
     source: &str,
     case: &Case,
+    model: &BearingModel,
     series: &TimeSeries,
     duration: f64,
     wall: f64,
@@ -607,6 +615,9 @@ fn summarise(
         max_abs_yaw_deg: yaw.iter().fold(0.0, |m, v| v.abs().max(m)),
         vibration: crate::vibration::summarise(series, from, case.outer_ring.is_some()),
         power: crate::power_channels::summarise(series, from),
+        thermal_coupling: model
+            .thermal()
+            .map(crate::power_channels::ThermalRunSummary::from),
         drive_work_j: drive,
         dissipated_energy_j: dissipated,
         mechanical_energy_change_j: delta_e,

@@ -203,3 +203,76 @@ fn quasistatic_sweep_has_power_columns() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `thermal.run_coupling`: the run starts at the quasi-static thermal
+/// steady state, updates every interval, records temperatures and the EHL
+/// viscosity, and reports the coupling in summary.json.
+#[test]
+fn run_with_thermal_coupling() {
+    let case = preset("acbb_30x62");
+    let dir = temp_dir("thermal-run");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "3 ms",
+            "-o",
+            &d,
+            "--set",
+            "thermal.run_coupling=true",
+            "--set",
+            "thermal.update_interval=0.5ms",
+        ],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let t = &s["thermal_coupling"];
+    assert_eq!(t["updates"].as_u64(), Some(5), "{t}");
+    let steady = json_of(&["thermal", "-", "--json"], Some(&case));
+    let start = t["initial_temperatures_c"]["outer_ring"].as_f64().unwrap();
+    assert!((start - steady["temperatures_c"]["outer_ring"].as_f64().unwrap()).abs() < 1e-9);
+    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
+    let eta = series.column("oil_viscosity_pa_s").unwrap();
+    assert!(
+        eta.iter().all(|v| *v > 0.0 && *v < 0.0275),
+        "warmer than 40 °C: thinner oil"
+    );
+    assert!(series.column("temperature_outer_ring_c").is_some());
+    // Not coupled: the key is null.
+    let plain = temp_dir("thermal-run-plain");
+    let p = plain.to_string_lossy().into_owned();
+    assert!(
+        rolldyn(&["run", "-", "--duration", "1 ms", "-o", &p], Some(&case))
+            .status
+            .success()
+    );
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(plain.join("summary.json")).unwrap())
+            .unwrap();
+    assert!(s["thermal_coupling"].is_null());
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "1 ms",
+            "-o",
+            &p,
+            "--set",
+            "thermal.update_interval=1ms",
+        ],
+        Some(&case),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("thermal.run_coupling"),
+        "{}",
+        stderr(&o)
+    );
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::remove_dir_all(&plain).ok();
+}

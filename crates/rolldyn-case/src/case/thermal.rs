@@ -48,7 +48,12 @@ pub struct Thermal {
     pub housing: Solid,
     /// Expansion coefficients and reference temperature.
     pub expansion: Expansion,
+    /// Coupled to `rolldyn run`: the update interval \[s\] (None: not coupled).
+    pub run_coupling: Option<f64>,
 }
+
+/// Default update interval of the run coupling \[s\].
+pub const DEFAULT_UPDATE_INTERVAL: f64 = 1e-3;
 
 /// Silicon nitride: k = 30 W/(m·K), c = 690 J/(kg·K), α = 3.2e-6 1/K
 /// (typical hot-pressed Si₃N₄ bearing grade, ASTM F2094 class data).
@@ -84,6 +89,13 @@ fn positive_or<D: Dimension>(
 }
 
 pub(super) fn thermal(t: &RawThermal, ball_material: &str) -> Result<Thermal, Invalid> {
+    if t.update_interval.is_some() && !t.run_coupling.unwrap_or(false) {
+        return Err(Invalid::new(
+            "thermal.update_interval",
+            t.update_interval.as_ref().map(|q| q.to_string()),
+            "is used only with thermal.run_coupling = true",
+        ));
+    }
     let temperature = |key: &str, q| {
         checked(key, q, |v| {
             if v > 0.0 {
@@ -153,6 +165,14 @@ pub(super) fn thermal(t: &RawThermal, ball_material: &str) -> Result<Thermal, In
         ring,
         ball,
         housing,
+        run_coupling: if t.run_coupling.unwrap_or(false) {
+            Some(
+                checked("thermal.update_interval", &t.update_interval, positive)?
+                    .unwrap_or(DEFAULT_UPDATE_INTERVAL),
+            )
+        } else {
+            None
+        },
         expansion: Expansion {
             ring: checked(
                 "thermal.ring_expansion",

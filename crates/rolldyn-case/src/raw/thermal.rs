@@ -55,4 +55,10 @@ pub struct RawThermal {
     pub ball_expansion: Option<Quantity<ThermalExpansion>>,
     /// Temperature at which the geometry is given (default 20 °C).
     pub reference_temperature: Option<Quantity<Temperature>>,
+    /// Couple the network to `rolldyn run` (default false): it starts at
+    /// the quasi-static thermal steady state and is advanced every
+    /// `update_interval`, feeding the oil viscosity back.
+    pub run_coupling: Option<bool>,
+    /// Update interval of the run coupling (default 1 ms).
+    pub update_interval: Option<Quantity<Time>>,
 }

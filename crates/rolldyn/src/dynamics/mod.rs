@@ -21,6 +21,7 @@
 //! | `surface_contact` | waviness and spalls in the contacts, spall step limit |
 //! | `energy` | mechanical energy, work and dissipation |
 //! | `outputs` | per-contact output samples, pure-rolling reference |
+//! | `thermal_coupling` | the thermal network advanced alongside a run, oil viscosity fed back |
 
 pub mod drag;
 pub mod energy;
@@ -31,6 +32,7 @@ pub mod pocket;
 pub mod race_contact;
 pub mod supports;
 pub mod surface_contact;
+pub mod thermal_coupling;
 
 pub use crate::cage::{CageParameters, GuideLand, PocketLaw, PocketShape};
 pub use drag::DragParameters;
@@ -39,3 +41,4 @@ pub use layout::StateLayout;
 pub use model::{BearingModel, DynamicsParameters};
 pub use race_contact::{ContactOutput, ContactSample, HYSTERESIS_RAMP_SPEED};
 pub use supports::{OuterRing, Support};
+pub use thermal_coupling::ThermalCoupling;

@@ -139,6 +139,8 @@ pub struct BearingModel {
     pub(super) layout: StateLayout,
     /// Episode memory: inner and outer contact of each ball.
     pub(super) episodes: Vec<[ContactEpisode; 2]>,
+    /// Thermal network advanced alongside a run, if coupled.
+    pub(super) thermal: Option<Box<super::thermal_coupling::ThermalCoupling>>,
 }
 
 impl BearingModel {
@@ -189,6 +191,7 @@ impl BearingModel {
                 ball_spin_angle: params.surface.has_ball_surfaces(),
             },
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
+            thermal: None,
             geometry: geometry.clone(),
             params,
         })
@@ -815,6 +818,7 @@ impl OdeSystem for BearingModel {
                 }
             }
         }
-        changed && self.params.normal_law.hysteresis_factor().is_some()
+        let thermal = self.thermal_update(t, y);
+        (changed && self.params.normal_law.hysteresis_factor().is_some()) || thermal
     }
 }

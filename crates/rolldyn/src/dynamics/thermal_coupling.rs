@@ -1,0 +1,428 @@
+//! Temperatures during a dynamic run (MODEL §10; issue 13): the bearing's
+//! thermal network ([`crate::thermal::bearing`]) advanced on its own,
+//! slower time scale alongside the integration, feeding the oil viscosity
+//! back into the EHL traction and the guide land.
+//!
+//! Every `interval` of simulated time (at the first accepted step past
+//! it), the coupling
+//! 1. takes the dissipated energy over the interval from the energy
+//!    balance's accumulator (exact) and splits it like the dissipation by
+//!    component at that instant ([`BearingModel::rhs_with_power`]): race
+//!    contacts to the contact nodes, pocket losses to the balls, guide
+//!    land, drag and support dampers to the oil;
+//! 2. takes the loaded contacts' mean Hertz semi-axes and entrainment
+//!    speeds from the current state;
+//! 3. advances the network by one trapezoidal step of the interval (the
+//!    parts' time constants are seconds to minutes, the interval
+//!    milliseconds);
+//! 4. sets η₀ of the EHL traction to the Walther viscosity at the contact
+//!    inlet, taken as the mean of the ball and mean-ring temperatures, and
+//!    the guide land's to the viscosity at the oil node.
+//!
+//! The step that changes the viscosity tells the integrator
+//! (`accept_step` returns true), which re-evaluates the right-hand side.
+
+use super::model::BearingModel;
+use super::race_contact::Want;
+use crate::error::InvalidParameter;
+use crate::integrate::OdeSystem;
+use crate::thermal::bearing::{BearingThermal, HeatSources, NODES, ThermalInputs};
+use crate::thermal::viscosity::Walther;
+use crate::traction::TractionModel;
+
+/// The thermal state carried by a coupled run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThermalCoupling {
+    inputs: ThermalInputs,
+    viscosity: Option<Walther>,
+    interval: f64,
+    next_update: f64,
+    last_time: f64,
+    last_dissipated: f64,
+    temperatures: [f64; 10],
+    initial: [f64; 10],
+    updates: usize,
+    largest_rate: f64,
+    heat_supplied: f64,
+    scratch: Vec<f64>,
+}
+
+/// The nodes with a heat capacity (the others follow quasi-statically).
+const MASSIVE: [usize; 5] = [0, 2, 3, 5, 6];
+
+impl ThermalCoupling {
+    /// A coupling for `inputs`, the viscosity law (None: constant
+    /// viscosity, temperatures only), update `interval` \[s\], starting
+    /// from `temperatures` (per node of [`NODES`], K).
+    pub fn new(
+        inputs: ThermalInputs,
+        viscosity: Option<Walther>,
+        interval: f64,
+        temperatures: [f64; 10],
+    ) -> Result<Self, InvalidParameter> {
+        if !(interval.is_finite() && interval > 0.0) {
+            return Err(InvalidParameter::new(
+                "update_interval",
+                interval,
+                "must be a positive time",
+            ));
+        }
+        Ok(Self {
+            inputs,
+            viscosity,
+            interval,
+            next_update: interval,
+            last_time: 0.0,
+            last_dissipated: 0.0,
+            temperatures,
+            initial: temperatures,
+            updates: 0,
+            largest_rate: 0.0,
+            heat_supplied: 0.0,
+            scratch: Vec::new(),
+        })
+    }
+
+    /// Node temperatures now \[K\] (order of [`NODES`]).
+    pub fn temperatures(&self) -> &[f64; 10] {
+        &self.temperatures
+    }
+
+    /// Node temperatures at the start \[K\].
+    pub fn initial_temperatures(&self) -> &[f64; 10] {
+        &self.initial
+    }
+
+    /// Updates done.
+    pub fn updates(&self) -> usize {
+        self.updates
+    }
+
+    /// Largest temperature rate of the parts with a heat capacity (balls,
+    /// rings, shaft, housing) at the last update \[K/s\]: how far from
+    /// thermal steady state the run is.
+    pub fn largest_rate(&self) -> f64 {
+        self.largest_rate
+    }
+
+    /// Heat given to the network so far \[J\]: the dissipated energy from
+    /// the coupling's start to its last update.
+    pub fn heat_supplied(&self) -> f64 {
+        self.heat_supplied
+    }
+
+    /// Update interval \[s\].
+    pub fn interval(&self) -> f64 {
+        self.interval
+    }
+
+    /// Temperature of a node \[K\].
+    pub fn temperature(&self, node: &str) -> Option<f64> {
+        NODES
+            .iter()
+            .position(|&n| n == node)
+            .map(|i| self.temperatures[i])
+    }
+
+    /// Viscosities at the contact inlets and at the oil node \[Pa·s\]
+    /// (None without a viscosity law).
+    fn viscosities(&self) -> Option<(f64, f64)> {
+        let w = self.viscosity?;
+        let t = |n| {
+            self.temperature(n)
+                .unwrap_or(self.inputs.ambient_temperature)
+        };
+        let rings = 0.5 * (t("inner_ring") + t("outer_ring"));
+        Some((w.dynamic(0.5 * (t("ball") + rings)), w.dynamic(t("oil"))))
+    }
+}
+
+impl BearingModel {
+    /// Couples the thermal network to this model's run from time `t0` and
+    /// state `y0` (the dissipated energy counts from there) and applies the
+    /// starting viscosities.
+    pub fn couple_thermal(&mut self, mut coupling: ThermalCoupling, t0: f64, y0: &[f64]) {
+        coupling.last_time = t0;
+        coupling.next_update = t0 + coupling.interval;
+        coupling.last_dissipated = self.work(y0).1;
+        coupling.scratch = vec![0.0; self.dimension()];
+        self.apply_viscosities(coupling.viscosities());
+        self.thermal = Some(Box::new(coupling));
+    }
+
+    /// The thermal coupling, if the run has one.
+    pub fn thermal(&self) -> Option<&ThermalCoupling> {
+        self.thermal.as_deref()
+    }
+
+    /// η₀ of the EHL traction and of the guide land, if `viscosities`.
+    fn apply_viscosities(&mut self, viscosities: Option<(f64, f64)>) {
+        let Some((contact, land)) = viscosities else {
+            return;
+        };
+        if let TractionModel::Ehl(ehl) = &mut self.params.traction {
+            ehl.lubricant.viscosity = contact;
+        }
+        if let Some(guide) = &mut self.params.cage.guide {
+            guide.viscosity = land;
+        }
+    }
+
+    /// The coupling's update at an accepted step; true when the right-hand
+    /// side changed (the viscosity).
+    pub(super) fn thermal_update(&mut self, t: f64, y: &[f64]) -> bool {
+        let Some(mut c) = self.thermal.take() else {
+            return false;
+        };
+        if t < c.next_update {
+            self.thermal = Some(c);
+            return false;
+        }
+        let span = t - c.last_time;
+        let dissipated = self.work(y).1;
+        let mean_power = (dissipated - c.last_dissipated) / span;
+        let mut scratch = std::mem::take(&mut c.scratch);
+        let p = self.rhs_with_power(t, y, &mut scratch);
+        c.scratch = scratch;
+        let scale = if p.total() > 0.0 {
+            mean_power / p.total()
+        } else {
+            0.0
+        };
+        let mut heat = HeatSources {
+            inner_contacts: scale * p.inner.total(),
+            outer_contacts: scale * p.outer.total(),
+            balls: scale * (p.pocket_friction + p.pocket_damping),
+            oil: scale * (p.guide_land + p.ball_drag + p.cage_drag + p.support_damping),
+            cage_speed: y[self.layout.cage() + 5],
+            ..HeatSources::default()
+        };
+        self.contact_means(t, y, &mut heat);
+        let mut inputs = c.inputs.clone();
+        if let Some((_, land)) = c.viscosities() {
+            inputs.oil_kinematic_viscosity = land / inputs.oil_density;
+        }
+        let before = c.temperatures;
+        if let Ok(s) =
+            BearingThermal::new(&inputs, &heat).and_then(|n| n.transient(&c.temperatures, span, 1))
+        {
+            c.temperatures = s.temperatures;
+        }
+        c.largest_rate = MASSIVE
+            .iter()
+            .map(|&i| (c.temperatures[i] - before[i]).abs() / span)
+            .fold(0.0, f64::max);
+        c.heat_supplied +=
+            span * (heat.inner_contacts + heat.outer_contacts + heat.balls + heat.oil);
+        c.updates += 1;
+        c.last_time = t;
+        c.last_dissipated = dissipated;
+        c.next_update = t + c.interval;
+        let viscosities = c.viscosities();
+        self.thermal = Some(c);
+        self.apply_viscosities(viscosities);
+        viscosities.is_some()
+    }
+
+    /// Mean semi-axes, entrainment speeds and counts of the loaded contacts.
+    fn contact_means(&self, t: f64, y: &[f64], heat: &mut HeatSources) {
+        let (inner, outer) = self.ring_motion(t, y);
+        let mut sums = [[0.0; 3]; 2];
+        for j in 0..self.layout.balls {
+            let (ball, _) = self.ball_kinematics(j, y);
+            for (k, (ring, table)) in [(&inner, &self.inner_table), (&outer, &self.outer_table)]
+                .into_iter()
+                .enumerate()
+            {
+                let episode = &self.episodes[j][k];
+                if let Some(cn) = self.race_contact(ring, table, episode, &ball, Want::Output) {
+                    let o = cn.output;
+                    if o.load <= 0.0 {
+                        continue;
+                    }
+                    let e = table.at(o.angle).at_load(o.load);
+                    sums[k][0] += e.semi_major;
+                    sums[k][1] += e.semi_minor;
+                    sums[k][2] += o.entrainment_speed;
+                    heat.loaded_contacts[k] += 1;
+                }
+            }
+        }
+        for (k, s) in sums.iter().enumerate() {
+            let n = heat.loaded_contacts[k].max(1) as f64;
+            let ellipse = (s[0] / n, s[1] / n);
+            if k == 0 {
+                heat.inner_ellipse = ellipse;
+            } else {
+                heat.outer_ellipse = ellipse;
+            }
+            heat.entrainment_speed[k] = s[2] / n;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::HertzModel;
+    use crate::dynamics::{
+        CageParameters, DragParameters, DynamicsParameters, PocketLaw, PocketShape,
+    };
+    use crate::integrate::tableau::DOPRI5;
+    use crate::integrate::{ExplicitRk, Integrator, StepControl};
+    use crate::material::Material;
+    use crate::operating::{LoadProfile, Loads, SpeedProfile};
+    use crate::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+    use crate::thermal::bearing::Solid;
+    use crate::traction::ellipse::TractionIntegration;
+    use crate::traction::{EhlRheology, ModifiedCoulomb};
+    use crate::{BearingGeometry, Clearance, GeometrySpec};
+
+    /// A 30×62×16-like bearing with EHL traction, coupled every 0.1 ms over
+    /// 0.45 ms: the heat handed to the network equals the dissipated energy
+    /// of the energy balance over the coupled span (to rounding), and the
+    /// EHL η₀ follows Walther at the inlet temperature.
+    #[test]
+    fn coupling_hands_over_the_dissipated_energy_and_sets_the_viscosity() {
+        let g = BearingGeometry::new(&GeometrySpec {
+            ball_diameter: 9.525e-3,
+            ball_count: 11,
+            pitch_diameter: 46e-3,
+            inner_groove_curvature: 0.52,
+            outer_groove_curvature: 0.52,
+            clearance: Clearance::FreeContactAngle(30f64.to_radians()),
+            preload: false,
+        })
+        .unwrap();
+        let steel = Material::STEEL_52100;
+        let speed = 9000.0 * std::f64::consts::TAU / 60.0;
+        let loads = Loads {
+            force: [3000.0, 0.0, 780.0],
+            moment: [0.0; 2],
+        };
+        let eq = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact)
+            .unwrap()
+            .solve(
+                &Conditions {
+                    loads,
+                    inner_speed: speed,
+                    control: RacewayControl::Outer,
+                },
+                &SolverOptions::default(),
+            )
+            .unwrap();
+        let lubricant = crate::lubrication::Lubricant {
+            viscosity: 0.0275,
+            pressure_viscosity: 2e-8,
+            pressure_model: Default::default(),
+        };
+        let params = DynamicsParameters {
+            inner_ring_mass: 0.3,
+            inner_ring_tilt_inertia: 1e-4,
+            cage: CageParameters {
+                mass: 6e-3,
+                inertia: 2.8e-6,
+                pitch_radius: 23e-3,
+                pocket_clearance: 0.3e-3,
+                pocket_shape: PocketShape::Cylindrical,
+                pocket_law: PocketLaw::Linear {
+                    stiffness: 1e7,
+                    damping: 20.0,
+                },
+                unbalance: 0.0,
+                pocket_friction: ModifiedCoulomb {
+                    friction: 0.05,
+                    stick_speed: 0.0,
+                    full_speed: 1e-3,
+                },
+                whirl: false,
+                guide: None,
+            },
+            normal_law: crate::contact::NormalForceLaw::Hertz,
+            impact_speed_floor: 1e-3,
+            traction: TractionModel::Ehl(EhlRheology {
+                eyring_stress: 5e6,
+                limiting_shear_coefficient: 0.08,
+                lubricant,
+            }),
+            traction_integration: TractionIntegration::Grid {
+                across: 8,
+                along: 4,
+            },
+            speed: SpeedProfile::Constant(speed),
+            loads: LoadProfile::Constant(loads),
+            inner_support: Default::default(),
+            outer_ring: None,
+            rolling_hysteresis: 0.007,
+            gravity: 0.0,
+            planar: false,
+            drag: DragParameters::default(),
+            surface: Default::default(),
+            film_supply: Default::default(),
+        };
+        let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
+        let y0 = model.state_from_equilibrium(&eq);
+        let inputs = ThermalInputs {
+            bore: 30e-3,
+            outside_diameter: 62e-3,
+            width: 16e-3,
+            ball_diameter: g.ball_diameter,
+            pitch_diameter: g.pitch_diameter,
+            ball_count: 11,
+            ball: Solid::STEEL,
+            ring: Solid::STEEL,
+            housing: Solid::STEEL,
+            housing_diameter: 0.1,
+            housing_width: 0.032,
+            shaft_length: 0.016,
+            ambient_temperature: 293.15,
+            oil_inlet_temperature: 313.15,
+            oil_flow: 2e-3 / 60.0,
+            oil_density: 860.0,
+            oil_specific_heat: 1900.0,
+            oil_conductivity: 0.13,
+            oil_kinematic_viscosity: 32e-6,
+            housing_convection: 15.0,
+            shaft_convection: 15.0,
+            oil_convection: None,
+        };
+        let walther = Walther::through((313.15, 0.0275), (373.15, 4.6e-3), 860.0).unwrap();
+        let start = [333.15; 10];
+        let coupling = ThermalCoupling::new(inputs, Some(walther), 1e-4, start).unwrap();
+        model.couple_thermal(coupling, 0.0, &y0);
+        let eta = |m: &BearingModel| match &m.parameters().traction {
+            TractionModel::Ehl(e) => e.lubricant.viscosity,
+            _ => f64::NAN,
+        };
+        assert!((eta(&model) - walther.dynamic(333.15)).abs() < 1e-15);
+        let control = StepControl::Adaptive {
+            relative_tolerance: 1e-6,
+            max_step: 1e-5,
+            initial_step: None,
+        };
+        let mut rk = ExplicitRk::new(&DOPRI5, control, &model, 0.0, &y0).unwrap();
+        let mut at_update = (0, 0.0);
+        while rk.t() < 4.5e-4 {
+            rk.step(&mut model, 4.5e-4).unwrap();
+            let c = model.thermal().unwrap();
+            if c.updates() != at_update.0 {
+                at_update = (c.updates(), model.work(rk.y()).1);
+            }
+        }
+        let c = model.thermal().unwrap();
+        assert_eq!(
+            c.updates(),
+            4,
+            "updates at 0.2, 0.4, 0.6, 0.8 ms (and the one at 1 ms if reached)"
+        );
+        let supplied = c.heat_supplied();
+        assert!(
+            supplied > 0.0 && (supplied - at_update.1).abs() < 1e-12 * at_update.1,
+            "{supplied} J vs {} J",
+            at_update.1
+        );
+        let t = |n| c.temperature(n).unwrap();
+        let inlet = 0.5 * (t("ball") + 0.5 * (t("inner_ring") + t("outer_ring")));
+        assert!((eta(&model) - walther.dynamic(inlet)).abs() < 1e-15);
+    }
+}
