@@ -113,6 +113,8 @@ pub struct Case {
     pub max_step: Option<f64>,
     /// Recorder sample rate \[Hz\].
     pub sample_rate: Option<f64>,
+    /// Per-ball power channels.
+    pub power_per_ball: bool,
     /// Output directory.
     pub output_directory: Option<String>,
     /// Harris's local power-loss method settings.
@@ -501,6 +503,7 @@ impl Case {
             relative_tolerance,
             max_step,
             sample_rate,
+            power_per_ball: raw.output.power_per_ball.unwrap_or(false),
             output_directory: raw.output.directory.clone(),
             power: thermal::power(&raw.power)?,
             thermal: thermal::thermal(&raw.thermal, &materials_ball_name)?,

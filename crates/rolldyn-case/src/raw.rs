@@ -650,4 +650,7 @@ pub struct RawOutput {
     pub sample_rate: Option<Quantity<Frequency>>,
     /// Output directory.
     pub directory: Option<String>,
+    /// Record each ball's dissipated power at its inner and outer contact
+    /// (`ball{j}_power_inner_w`, `…_outer_w`; default false).
+    pub power_per_ball: Option<bool>,
 }

@@ -152,12 +152,14 @@ struct Channels {
     balls: usize,
     /// Whether the FASTSIM channels are recorded.
     creep: bool,
+    /// Whether the per-ball power channels are recorded.
+    power_per_ball: bool,
     /// Scratch derivative vector (accelerations of the rings).
     derivative: Vec<f64>,
 }
 
 impl Channels {
-    fn new(balls: usize, creep: bool, thermal: bool, states: usize) -> Self {
+    fn new(balls: usize, creep: bool, thermal: bool, power_per_ball: bool, states: usize) -> Self {
         let mut series = TimeSeries::default();
         for (name, unit) in [
             ("time_s", "s"),
@@ -204,11 +206,16 @@ impl Channels {
                     series.channel(format!("ball{j}_{name}"), unit);
                 }
             }
+            if power_per_ball {
+                series.channel(format!("ball{j}_power_inner_w"), "W");
+                series.channel(format!("ball{j}_power_outer_w"), "W");
+            }
         }
         Self {
             series,
             balls,
             creep,
+            power_per_ball,
             derivative: vec![0.0; states],
         }
     }
@@ -309,6 +316,9 @@ impl Channels {
                     i.stick_fraction,
                     o.stick_fraction,
                 ]);
+            }
+            if self.power_per_ball {
+                row.extend_from_slice(&[c.inner.losses.total(), c.outer.losses.total()]);
             }
         }
         self.series.push(row);
@@ -437,6 +447,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
         g.ball_count,
         matches!(params.traction, TractionModel::Fastsim(_)),
         model.thermal().is_some(),
+        case.power_per_ball,
         model.layout().len(),
     );
     let mut row = Vec::with_capacity(channels.series.width());

@@ -16,7 +16,18 @@ use serde_json::Value;
 fn run_reports_power_by_component() {
     let dir = temp_dir("power-run");
     let d = dir.to_string_lossy().into_owned();
-    let o = rolldyn(&["run", "--duration", "8 ms", "-o", &d], None);
+    let o = rolldyn(
+        &[
+            "run",
+            "--duration",
+            "8 ms",
+            "-o",
+            &d,
+            "--set",
+            "output.power_per_ball=true",
+        ],
+        None,
+    );
     assert!(o.status.success(), "{}", stderr(&o));
     let s: Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();

@@ -52,6 +52,8 @@ pub struct ContactOutput {
     /// FASTSIM creepages (ξ, η \[-\], φ \[1/m\]) and stick fraction
     /// (None with the stress-law traction models).
     pub creep: Option<Creep>,
+    /// Dissipated power by mechanism \[W\] (docs/power.md).
+    pub losses: ContactLosses,
 }
 
 /// Contact state of one ball for output.
@@ -288,6 +290,7 @@ impl BearingModel {
                 },
                 film,
                 creep: traction.creep,
+                losses,
             }
         } else {
             ContactOutput::default()
