@@ -640,3 +640,48 @@ fn starvation_inputs_are_checked() {
     assert_eq!(supply[0], rolldyn::lubrication::Supply::Flooded);
     assert_eq!(supply[1], rolldyn::lubrication::Supply::InletDistance(1.3));
 }
+
+#[test]
+fn power_and_thermal_inputs_are_checked() {
+    let lub = |extra: &str| {
+        format!(
+            "{BASE}\n[lubricant]\nviscosity = \"0.05 Pa.s\"\npressure_viscosity = \"2e-8 1/Pa\"\n{extra}"
+        )
+    };
+    let e = err(&lub("second_viscosity = \"5 mPa.s\"\n"));
+    assert_eq!(
+        e.key.as_deref(),
+        Some("lubricant.second_temperature"),
+        "{e}"
+    );
+    let e = err(&lub(
+        "second_viscosity = \"5 mPa.s\"\nsecond_temperature = \"100 degC\"\n",
+    ));
+    assert_eq!(e.key.as_deref(), Some("lubricant.temperature"), "{e}");
+    let e = err(&lub(
+        "temperature = \"40 degC\"\nsecond_viscosity = \"80 mPa.s\"\nsecond_temperature = \"100 degC\"\n",
+    ));
+    assert_eq!(e.key.as_deref(), Some("lubricant.second_viscosity"), "{e}");
+    assert!(e.to_string().contains("fall"), "{e}");
+    let e = err(&format!("{BASE}\n[power]\nsliding_friction = -0.1\n"));
+    assert_eq!(e.key.as_deref(), Some("power.sliding_friction"), "{e}");
+    let e = err(&format!("{BASE}\n[thermal]\noil_flow = \"-1 L/min\"\n"));
+    assert_eq!(e.key.as_deref(), Some("thermal.oil_flow"), "{e}");
+    let e = err(&format!(
+        "{BASE}\n[thermal]\nhousing_convection = \"15 W/m\"\n"
+    ));
+    assert_eq!(e.key.as_deref(), Some("thermal.housing_convection"), "{e}");
+    let e = err(&format!("{BASE}\n[thermal]\nupdate_interval = \"1 ms\"\n"));
+    assert_eq!(e.key.as_deref(), Some("thermal.update_interval"), "{e}");
+    let ok = load_case(
+        "case.toml",
+        &format!("{BASE}\n[thermal]\nhousing_convection = \"20 W/(m^2.K)\"\nring_expansion = \"12 ppm/K\"\nrun_coupling = true\n"),
+        &[],
+    )
+    .unwrap();
+    assert_eq!(ok.thermal.housing_convection, 20.0);
+    assert!((ok.thermal.expansion.ring - 12e-6).abs() < 1e-20);
+    assert_eq!(ok.thermal.run_coupling, Some(1e-3));
+    let e = ok.thermal_inputs().unwrap_err();
+    assert_eq!(e.key, "bearing.bore");
+}
