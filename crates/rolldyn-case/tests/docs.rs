@@ -72,6 +72,8 @@ fn every_schema_key_is_documented() {
         "solver",
         "output",
         "surface",
+        "power",
+        "thermal",
     ];
     for key in all {
         let documented = if sections.contains(&key.as_str()) {
