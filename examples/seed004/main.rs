@@ -69,6 +69,7 @@ fn main() -> Result<(), String> {
                 inner_speed: rpm * std::f64::consts::TAU / 60.0,
                 control: case.raceway_control,
             },
+            options: case.solver_options(),
             power: case.local_method_inputs().map_err(bad)?,
             thermal: case.thermal_inputs().map_err(bad)?,
             viscosity: case.lubricant.as_ref().and_then(|l| l.viscosity_law),

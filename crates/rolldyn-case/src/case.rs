@@ -115,6 +115,8 @@ pub struct Case {
     pub sample_rate: Option<f64>,
     /// Per-ball power channels.
     pub power_per_ball: bool,
+    /// Azimuth of ball 0 \[rad\].
+    pub first_ball_azimuth: f64,
     /// Output directory.
     pub output_directory: Option<String>,
     /// Harris's local power-loss method settings.
@@ -282,10 +284,31 @@ impl Case {
         };
         let force = |q: &Option<Quantity<crate::units::Force>>| q.as_ref().map_or(0.0, |q| q.si);
         let moment = |q: &Option<Quantity<crate::units::Moment>>| q.as_ref().map_or(0.0, |q| q.si);
-        let loads = Loads {
+        let mut loads = Loads {
             force: [force(&op.force_x), force(&op.force_y), force(&op.force_z)],
             moment: [moment(&op.moment_y), moment(&op.moment_z)],
         };
+        if let Some(q) = &op.radial_load {
+            if op.force_y.is_some() || op.force_z.is_some() {
+                return Err(Invalid::new(
+                    "operating.radial_load",
+                    Some(q.to_string()),
+                    "give the radial load either as radial_load (with radial_load_angle) or as force_y/force_z, not both",
+                ));
+            }
+            let angle = op
+                .radial_load_angle
+                .as_ref()
+                .map_or(std::f64::consts::FRAC_PI_2, |a| a.si);
+            loads.force[1] = q.si * angle.cos();
+            loads.force[2] = q.si * angle.sin();
+        } else if let Some(a) = &op.radial_load_angle {
+            return Err(Invalid::new(
+                "operating.radial_load_angle",
+                Some(a.to_string()),
+                "needs operating.radial_load",
+            ));
+        }
         let load_profile = match &op.load_profile {
             None => None,
             Some(points) => {
@@ -293,6 +316,7 @@ impl Case {
                     ("force_x", &op.force_x),
                     ("force_y", &op.force_y),
                     ("force_z", &op.force_z),
+                    ("radial_load", &op.radial_load),
                 ]
                 .iter()
                 .find(|(_, q)| q.is_some())
@@ -504,6 +528,7 @@ impl Case {
             max_step,
             sample_rate,
             power_per_ball: raw.output.power_per_ball.unwrap_or(false),
+            first_ball_azimuth: op.first_ball_azimuth.as_ref().map_or(0.0, |a| a.si),
             output_directory: raw.output.directory.clone(),
             power: thermal::power(&raw.power)?,
             thermal: thermal::thermal(&raw.thermal, &materials_ball_name)?,
@@ -513,6 +538,16 @@ impl Case {
                 .map(|(k, v)| (k.clone(), v.clone()))
                 .collect(),
         })
+    }
+}
+
+impl Case {
+    /// Quasi-static solver options of the case (ball 0's azimuth).
+    pub fn solver_options(&self) -> rolldyn::quasistatic::SolverOptions {
+        rolldyn::quasistatic::SolverOptions {
+            first_ball_azimuth: self.first_ball_azimuth,
+            ..Default::default()
+        }
     }
 }
 

@@ -364,6 +364,14 @@ pub struct RawOperating {
     pub moment_y: Option<Quantity<Moment>>,
     /// Moment M_z on the inner ring.
     pub moment_z: Option<Quantity<Moment>>,
+    /// Radial load by magnitude (instead of `force_y`, `force_z`)…
+    pub radial_load: Option<Quantity<Force>>,
+    /// … and direction in the radial plane, from +y towards +z (default
+    /// 90°: along +z, as `--radial-load`).
+    pub radial_load_angle: Option<Quantity<Angle>>,
+    /// Azimuth of ball 0 from +y towards +z (default 0; quasi-static solves
+    /// and the Jones–Harris start of a run).
+    pub first_ball_azimuth: Option<Quantity<Angle>>,
     /// Piecewise-linear load table (alternative to the constant loads;
     /// dynamic runs): `[{ time = "0 s", force_x = "200 N" }, ...]`, times
     /// increasing, missing components 0.

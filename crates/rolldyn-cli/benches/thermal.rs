@@ -80,6 +80,7 @@ fn main() {
         rings,
         hertz: case.contact_stiffness,
         conditions,
+        options: SolverOptions::default(),
         power: inputs.clone(),
         thermal: thermal.clone(),
         viscosity: case.lubricant.as_ref().and_then(|l| l.viscosity_law),

@@ -308,7 +308,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 let solver = quasistatic::solver(&case).map_err(Failure::BadInput)?;
                 let conditions = quasistatic::conditions(&case, control);
                 let sol = solver
-                    .solve(&conditions, &rolldyn::quasistatic::SolverOptions::default())
+                    .solve(&conditions, &case.solver_options())
                     .map_err(|e| Failure::BadInput(e.to_string()))?;
                 let report = quasistatic::QuasiStaticReport::new(&sol, &conditions)
                     .with_films_and_modes(&case, &sol);

@@ -5,7 +5,7 @@
 use crate::{CaseArgs, Failure, emit, json};
 use clap::Args;
 use rolldyn::power::{LocalPowerLoss, RaceLosses, local_power_loss};
-use rolldyn::quasistatic::{Equilibrium, SolverOptions};
+use rolldyn::quasistatic::Equilibrium;
 use rolldyn_case::Case;
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -136,7 +136,7 @@ pub fn solve(case: &Case) -> Result<(Equilibrium, LocalPowerLoss), Failure> {
     let solver = crate::quasistatic::solver(case).map_err(Failure::BadInput)?;
     let conditions = crate::quasistatic::conditions(case, None);
     let eq = solver
-        .solve(&conditions, &SolverOptions::default())
+        .solve(&conditions, &case.solver_options())
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     let p = local_power_loss(&case.bearing.geometry, &eq, &inputs);
     Ok((eq, p))

@@ -6,7 +6,7 @@ use rolldyn::material::Material;
 use rolldyn::operating::Loads;
 use rolldyn::power::local_power_loss;
 use rolldyn::quasistatic::{
-    BallSolution, Conditions, Equilibrium, QuasiStaticSolver, RacewayControl, SolverOptions, sweep,
+    BallSolution, Conditions, Equilibrium, QuasiStaticSolver, RacewayControl, sweep,
 };
 use rolldyn_case::Case;
 use rolldyn_case::units::{AngularSpeed, Force, Quantity};
@@ -99,6 +99,16 @@ pub struct TiltStiffness {
     pub z: f64,
 }
 
+/// Conventional stiffnesses 1/C_ii (docs/cli.md).
+#[derive(Serialize)]
+pub struct ConventionalStiffness {
+    pub axial_n_per_m: f64,
+    pub radial_y_n_per_m: f64,
+    pub radial_z_n_per_m: f64,
+    pub tilt_y_n_m_per_rad: f64,
+    pub tilt_z_n_m_per_rad: f64,
+}
+
 /// `rolldyn quasistatic --json` output for one operating point.
 #[derive(Serialize)]
 pub struct QuasiStaticReport {
@@ -119,6 +129,17 @@ pub struct QuasiStaticReport {
     pub stiffness_n_per_m: Stiffness,
     pub tilt_stiffness_n_m_per_rad: TiltStiffness,
     pub stiffness_matrix: [[f64; 5]; 5],
+    /// C = K⁻¹ (null where K is singular).
+    pub compliance_matrix: Option<[[f64; 5]; 5]>,
+    /// 1/C_ii: load–deflection slopes with the other loads held.
+    pub conventional_stiffness: Option<ConventionalStiffness>,
+    /// Radial load magnitude √(F_y² + F_z²) and direction from +y towards +z.
+    pub radial_load_n: f64,
+    pub radial_load_angle_deg: f64,
+    pub first_ball_azimuth_deg: f64,
+    /// Range of the balls' orbital speeds (cage_speed_rpm is their mean).
+    pub orbital_speed_min_rpm: f64,
+    pub orbital_speed_max_rpm: f64,
     pub iterations: usize,
     pub relative_residual: f64,
     pub balls: Vec<BallRow>,
@@ -161,6 +182,31 @@ impl QuasiStaticReport {
                 z: k[4][4],
             },
             stiffness_matrix: k,
+            compliance_matrix: sol.compliance(),
+            conventional_stiffness: sol.conventional_stiffness().map(|c| ConventionalStiffness {
+                axial_n_per_m: c[0],
+                radial_y_n_per_m: c[1],
+                radial_z_n_per_m: c[2],
+                tilt_y_n_m_per_rad: c[3],
+                tilt_z_n_m_per_rad: c[4],
+            }),
+            radial_load_n: conditions.loads.force[1].hypot(conditions.loads.force[2]),
+            radial_load_angle_deg: conditions.loads.force[2]
+                .atan2(conditions.loads.force[1])
+                .to_degrees(),
+            first_ball_azimuth_deg: sol.balls.first().map_or(0.0, |b| b.azimuth.to_degrees()),
+            orbital_speed_min_rpm: sol
+                .balls
+                .iter()
+                .map(|b| b.orbital_speed)
+                .fold(f64::INFINITY, f64::min)
+                / RPM,
+            orbital_speed_max_rpm: sol
+                .balls
+                .iter()
+                .map(|b| b.orbital_speed)
+                .fold(f64::NEG_INFINITY, f64::max)
+                / RPM,
             iterations: sol.iterations,
             relative_residual: sol.residual,
             balls: sol.balls.iter().map(BallRow::from).collect(),
@@ -189,8 +235,15 @@ impl QuasiStaticReport {
         let _ = writeln!(out, "{kind}");
         let _ = writeln!(
             out,
-            "  loads: F_x {} N, F_y {} N, F_z {} N, M_y {} N·m, M_z {} N·m",
-            self.force_x_n, self.force_y_n, self.force_z_n, self.moment_y_n_m, self.moment_z_n_m
+            "  loads: F_x {} N, F_y {} N, F_z {} N (radial {:.1} N at {:.1}° from +y), M_y {} N·m, M_z {} N·m; ball 0 at {:.1}°",
+            self.force_x_n,
+            self.force_y_n,
+            self.force_z_n,
+            self.radial_load_n,
+            self.radial_load_angle_deg,
+            self.moment_y_n_m,
+            self.moment_z_n_m,
+            self.first_ball_azimuth_deg
         );
         let _ = writeln!(
             out,
@@ -204,19 +257,33 @@ impl QuasiStaticReport {
         if self.speed_rpm != 0.0 {
             let _ = writeln!(
                 out,
-                "  cage speed: {:.1} rpm (ω_c/ω_i = {:.5})",
-                self.cage_speed_rpm, self.cage_speed_ratio
+                "  cage speed: {:.1} rpm (ω_c/ω_i = {:.5}; mean of the balls' orbital speeds, {:.1} … {:.1} rpm)",
+                self.cage_speed_rpm,
+                self.cage_speed_ratio,
+                self.orbital_speed_min_rpm,
+                self.orbital_speed_max_rpm
             );
         }
         let _ = writeln!(
             out,
-            "  stiffness: axial {:.4e} N/m, radial y {:.4e} N/m, radial z {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
+            "  stiffness, diagonal of K (other displacements held): axial {:.4e} N/m, radial y {:.4e} N/m, radial z {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
             self.stiffness_n_per_m.axial,
             self.stiffness_n_per_m.radial_y,
             self.stiffness_n_per_m.radial_z,
             self.tilt_stiffness_n_m_per_rad.y,
             self.tilt_stiffness_n_m_per_rad.z
         );
+        if let Some(c) = &self.conventional_stiffness {
+            let _ = writeln!(
+                out,
+                "  stiffness, 1/C_ii (other loads held): axial {:.4e} N/m, radial y {:.4e} N/m, radial z {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
+                c.axial_n_per_m,
+                c.radial_y_n_per_m,
+                c.radial_z_n_per_m,
+                c.tilt_y_n_m_per_rad,
+                c.tilt_z_n_m_per_rad
+            );
+        }
         let _ = writeln!(
             out,
             "\n  {:>7} {:>10} {:>10} {:>8} {:>8} {:>9} {:>9} {:>7} {:>8} {:>8} {:>8} {:>8}",
@@ -363,7 +430,7 @@ pub fn run_sweep(
             })
             .collect();
     }
-    let results = sweep(&solver, &points, &SolverOptions::default(), true);
+    let results = sweep(&solver, &points, &case.solver_options(), true);
     // The local power loss where the case allows it (docs/power.md).
     let power_inputs = case.local_method_inputs().ok();
     Ok(points

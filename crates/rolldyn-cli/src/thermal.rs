@@ -81,6 +81,7 @@ pub fn solve(case: &Case) -> Result<CoupledSolution, Failure> {
         rings: &case.materials.rings.material,
         hertz: case.contact_stiffness,
         conditions: crate::quasistatic::conditions(case, None::<RacewayControl>),
+        options: case.solver_options(),
         power: case.local_method_inputs().map_err(bad)?,
         thermal: case.thermal_inputs().map_err(bad)?,
         viscosity: case.lubricant.as_ref().and_then(|l| l.viscosity_law),

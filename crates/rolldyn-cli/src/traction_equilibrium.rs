@@ -6,7 +6,7 @@
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::operating::{LoadProfile, SpeedProfile};
 use rolldyn::quasistatic::{
-    Conditions, QuasiStaticSolver, SolverOptions, TractionSolveOptions, solve_traction_consistent,
+    Conditions, QuasiStaticSolver, TractionSolveOptions, solve_traction_consistent,
 };
 use rolldyn_case::Case;
 use serde::Serialize;
@@ -32,7 +32,7 @@ pub fn jones_harris_state(case: &Case, model: &BearingModel, t: f64) -> Result<V
                 inner_speed: p.speed.speed_at(t),
                 control: case.raceway_control,
             },
-            &SolverOptions::default(),
+            &case.solver_options(),
         )
         .map_err(|e| e.to_string())?;
     Ok(model.state_from_equilibrium(&eq))

@@ -11,7 +11,8 @@
 //! warm-started, deterministically. [`films`]: the lubricant films of a
 //! solution (starved, Λ, K_oil), from the contact motion of
 //! [`contact_motion`]; [`modes`]: natural frequencies and mode
-//! shapes of the supported inner ring on the bearing stiffness.
+//! shapes of the supported inner ring on the bearing stiffness;
+//! [`stiffness`]: compliance and the conventional scalar stiffnesses.
 
 pub mod contact_motion;
 pub mod equilibrium;
@@ -19,6 +20,7 @@ pub mod error;
 pub mod films;
 pub mod modes;
 pub mod ring_contact;
+pub mod stiffness;
 pub mod sweep;
 pub mod traction_control;
 

@@ -155,6 +155,8 @@ pub struct CoupledProblem<'a> {
     pub hertz: HertzModel,
     /// Operating point.
     pub conditions: Conditions,
+    /// Quasi-static solver options (ball 0's azimuth).
+    pub options: SolverOptions,
     /// Local-method inputs (the guide land's viscosity is updated).
     pub power: LocalMethodInputs,
     /// Network inputs (the oil's kinematic viscosity is updated).
@@ -204,10 +206,8 @@ pub fn coupled_steady(
         };
         let solver = base.with_geometry(&geometry)?;
         let eq = match &warm_start {
-            Some(previous) => {
-                solver.solve_from(previous, &p.conditions, &SolverOptions::default())?
-            }
-            None => solver.solve(&p.conditions, &SolverOptions::default())?,
+            Some(previous) => solver.solve_from(previous, &p.conditions, &p.options)?,
+            None => solver.solve(&p.conditions, &p.options)?,
         };
         let oil_viscosity = match &p.viscosity {
             Some(w) => w.dynamic(t("oil")),

@@ -171,6 +171,7 @@ fn c8_outer_ring_warms_with_speed() {
                 rings: &steel,
                 hertz: HertzModel::Exact,
                 conditions: conditions(rpm, 3000.0, 780.0),
+                options: SolverOptions::default(),
                 power: inputs(),
                 thermal: thermal.clone(),
                 viscosity: Some(walther),

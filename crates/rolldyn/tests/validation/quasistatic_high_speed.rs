@@ -250,3 +250,54 @@ fn combined_load_7218b_point_converges_under_every_control() {
         assert!(top > 17_800.0 / 16.0, "{control:?}: the load is carried");
     }
 }
+
+/// Compliance (issue 16): C K = I, and the conventional stiffnesses 1/C_ii
+/// equal finite differences of re-solves with the other loads held (the
+/// other displacements free), 0.5 %; the diagonal K_ii differs under
+/// combined load. 7218B, F_x = F_z = 10 kN, at rest and at 3550 rpm.
+#[test]
+fn conventional_stiffness_is_the_load_deflection_slope() {
+    let s = solver(&bearing_7218b());
+    for rpm in [0.0, 3550.0] {
+        let at = |fx: f64, fz: f64| {
+            s.solve(
+                &Conditions {
+                    loads: Loads {
+                        force: [fx, 0.0, fz],
+                        moment: [0.0, 0.0],
+                    },
+                    inner_speed: rpm * RPM,
+                    control: RacewayControl::Outer,
+                },
+                &SolverOptions::default(),
+            )
+            .unwrap()
+        };
+        let eq = at(10_000.0, 10_000.0);
+        let c = eq.compliance().unwrap();
+        for (i, row) in c.iter().enumerate() {
+            for j in 0..5 {
+                let ck: f64 = (0..5).map(|m| row[m] * eq.stiffness[m][j]).sum();
+                let expected = if i == j { 1.0 } else { 0.0 };
+                assert!((ck - expected).abs() < 1e-9, "(CK)[{i}][{j}] = {ck}");
+            }
+        }
+        let k = eq.conventional_stiffness().unwrap();
+        let h = 50.0;
+        let axial = 2.0 * h
+            / (at(10_000.0 + h, 10_000.0).displacement[0]
+                - at(10_000.0 - h, 10_000.0).displacement[0]);
+        let radial = 2.0 * h
+            / (at(10_000.0, 10_000.0 + h).displacement[2]
+                - at(10_000.0, 10_000.0 - h).displacement[2]);
+        eprintln!(
+            "{rpm} rpm: axial 1/C_xx {:.4e} (FD {axial:.4e}), K_xx {:.4e}; radial 1/C_zz {:.4e} (FD {radial:.4e}), K_zz {:.4e} N/m",
+            k[0], eq.stiffness[0][0], k[2], eq.stiffness[2][2]
+        );
+        assert!(rel(k[0], axial) < 5e-3 && rel(k[2], radial) < 5e-3);
+        assert!(
+            eq.stiffness[0][0] > 1.2 * k[0],
+            "coupling: the diagonal overstates"
+        );
+    }
+}
