@@ -300,8 +300,10 @@ impl Case {
                 .radial_load_angle
                 .as_ref()
                 .map_or(std::f64::consts::FRAC_PI_2, |a| a.si);
-            loads.force[1] = q.si * angle.cos();
-            loads.force[2] = q.si * angle.sin();
+            // Exact zeros along the axes (cos 90° is 6e-17 in floating point).
+            let snap = |v: f64| if v.abs() < 1e-12 * q.si.abs() { 0.0 } else { v };
+            loads.force[1] = snap(q.si * angle.cos());
+            loads.force[2] = snap(q.si * angle.sin());
         } else if let Some(a) = &op.radial_load_angle {
             return Err(Invalid::new(
                 "operating.radial_load_angle",
