@@ -117,6 +117,9 @@ pub struct Case {
     pub power_per_ball: bool,
     /// Azimuth of ball 0 \[rad\].
     pub first_ball_azimuth: f64,
+    /// Prescribed ring displacements (x, y, z \[m\], θ_y, θ_z \[rad\]);
+    /// quasi-static solves only.
+    pub prescribed_displacement: [Option<f64>; 5],
     /// Output directory.
     pub output_directory: Option<String>,
     /// Harris's local power-loss method settings.
@@ -531,6 +534,7 @@ impl Case {
             sample_rate,
             power_per_ball: raw.output.power_per_ball.unwrap_or(false),
             first_ball_azimuth: op.first_ball_azimuth.as_ref().map_or(0.0, |a| a.si),
+            prescribed_displacement: prescribed(op)?,
             output_directory: raw.output.directory.clone(),
             power: thermal::power(&raw.power)?,
             thermal: thermal::thermal(&raw.thermal, &materials_ball_name)?,
@@ -544,13 +548,71 @@ impl Case {
 }
 
 impl Case {
-    /// Quasi-static solver options of the case (ball 0's azimuth).
+    /// Quasi-static solver options of the case (ball 0's azimuth, the
+    /// prescribed displacements).
     pub fn solver_options(&self) -> rolldyn::quasistatic::SolverOptions {
         rolldyn::quasistatic::SolverOptions {
             first_ball_azimuth: self.first_ball_azimuth,
+            prescribed_displacement: self.prescribed_displacement,
             ..Default::default()
         }
     }
+}
+
+/// The prescribed displacements of `[operating]`: each instead of its load.
+fn prescribed(op: &RawOperating) -> Result<[Option<f64>; 5], Invalid> {
+    let fixed = op.fixed_tilt.unwrap_or(false);
+    let length = |q: &Option<Quantity<crate::units::Length>>| q.as_ref().map(|q| q.si);
+    let angle = |q: &Option<Quantity<crate::units::Angle>>| q.as_ref().map(|q| q.si);
+    let out = [
+        length(&op.displacement_x),
+        length(&op.displacement_y),
+        length(&op.displacement_z),
+        angle(&op.tilt_y).or(fixed.then_some(0.0)),
+        angle(&op.tilt_z).or(fixed.then_some(0.0)),
+    ];
+    let loads = [
+        ("force_x", op.force_x.is_some()),
+        ("force_y", op.force_y.is_some() || op.radial_load.is_some()),
+        ("force_z", op.force_z.is_some() || op.radial_load.is_some()),
+        ("moment_y", op.moment_y.is_some()),
+        ("moment_z", op.moment_z.is_some()),
+    ];
+    let names = [
+        "displacement_x",
+        "displacement_y",
+        "displacement_z",
+        "tilt_y",
+        "tilt_z",
+    ];
+    let given = [
+        op.displacement_x.is_some(),
+        op.displacement_y.is_some(),
+        op.displacement_z.is_some(),
+        op.tilt_y.is_some(),
+        op.tilt_z.is_some(),
+    ];
+    for k in 0..5 {
+        if out[k].is_some() && loads[k].1 {
+            let key = if given[k] { names[k] } else { "fixed_tilt" };
+            return Err(Invalid::new(
+                format!("operating.{key}"),
+                None,
+                format!(
+                    "a ring displacement is either prescribed or follows its load: not with operating.{}",
+                    loads[k].0
+                ),
+            ));
+        }
+    }
+    if out.iter().any(Option::is_some) && op.load_profile.is_some() {
+        return Err(Invalid::new(
+            "operating.load_profile",
+            None,
+            "prescribed ring displacements are quasi-static: not with a load table",
+        ));
+    }
+    Ok(out)
 }
 
 /// The parametrization groups of MODEL §2, by their keys.

@@ -372,6 +372,20 @@ pub struct RawOperating {
     /// Azimuth of ball 0 from +y towards +z (default 0; quasi-static solves
     /// and the Jones–Harris start of a run).
     pub first_ball_azimuth: Option<Quantity<Angle>>,
+    /// Hold the inner ring's tilts at zero (quasi-static; the moments that
+    /// hold them are reported).
+    pub fixed_tilt: Option<bool>,
+    /// Prescribed tilt θ_y of the inner ring (a misalignment; quasi-static),
+    /// instead of `moment_y`.
+    pub tilt_y: Option<Quantity<Angle>>,
+    /// Prescribed tilt θ_z, instead of `moment_z`.
+    pub tilt_z: Option<Quantity<Angle>>,
+    /// Prescribed axial displacement x, instead of `force_x` (quasi-static).
+    pub displacement_x: Option<Quantity<Length>>,
+    /// Prescribed radial displacement y, instead of `force_y`.
+    pub displacement_y: Option<Quantity<Length>>,
+    /// Prescribed radial displacement z, instead of `force_z`.
+    pub displacement_z: Option<Quantity<Length>>,
     /// Piecewise-linear load table (alternative to the constant loads;
     /// dynamic runs): `[{ time = "0 s", force_x = "200 N" }, ...]`, times
     /// increasing, missing components 0.

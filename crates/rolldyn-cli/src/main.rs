@@ -44,6 +44,13 @@ struct CaseArgs {
     /// Override the radial load F_z, e.g. "1 kN" (negative values allowed).
     #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
     radial_load: Option<String>,
+    /// Hold the inner ring's tilts at zero (quasi-static; the holding
+    /// moments are reported).
+    #[arg(long)]
+    fix_tilt: bool,
+    /// Prescribe the inner ring's tilt θ_y, e.g. "0.05 deg" (quasi-static).
+    #[arg(long, value_name = "ANGLE", allow_hyphen_values = true)]
+    misalignment: Option<String>,
     /// Override any key: --set bearing.ball_count=22 (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     set: Vec<String>,
@@ -172,6 +179,12 @@ impl CaseArgs {
         }
         if let Some(f) = &self.radial_load {
             out.push(Override::flag("--radial-load", "operating.force_z", f));
+        }
+        if self.fix_tilt {
+            out.push(Override::parse_set("operating.fixed_tilt=true")?);
+        }
+        if let Some(a) = &self.misalignment {
+            out.push(Override::flag("--misalignment", "operating.tilt_y", a));
         }
         for s in &self.set {
             out.push(Override::parse_set(s)?);
@@ -310,7 +323,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 let sol = solver
                     .solve(&conditions, &case.solver_options())
                     .map_err(|e| Failure::BadInput(e.to_string()))?;
-                let report = quasistatic::QuasiStaticReport::new(&sol, &conditions)
+                let held = case.prescribed_displacement.map(|p| p.is_some());
+                let report = quasistatic::QuasiStaticReport::new(&sol, &conditions, held)
                     .with_films_and_modes(&case, &sol);
                 if as_json {
                     json(&report)

@@ -137,6 +137,14 @@ pub struct QuasiStaticReport {
     pub radial_load_n: f64,
     pub radial_load_angle_deg: f64,
     pub first_ball_azimuth_deg: f64,
+    /// Displacements held at a prescribed value (x, y, z, tilt_y, tilt_z).
+    pub held_displacements: Vec<&'static str>,
+    /// Loads that hold them (null where the displacement is free).
+    pub reaction_force_x_n: Option<f64>,
+    pub reaction_force_y_n: Option<f64>,
+    pub reaction_force_z_n: Option<f64>,
+    pub reaction_moment_y_n_m: Option<f64>,
+    pub reaction_moment_z_n_m: Option<f64>,
     /// Range of the balls' orbital speeds (cage_speed_rpm is their mean).
     pub orbital_speed_min_rpm: f64,
     pub orbital_speed_max_rpm: f64,
@@ -150,9 +158,11 @@ pub struct QuasiStaticReport {
 }
 
 impl QuasiStaticReport {
-    pub fn new(sol: &Equilibrium, conditions: &Conditions) -> Self {
+    /// The report of `sol`; `held` marks the prescribed displacements.
+    pub fn new(sol: &Equilibrium, conditions: &Conditions, held: [bool; 5]) -> Self {
         let u = sol.displacement;
         let k = sol.stiffness;
+        let reaction = |i: usize| held[i].then_some(sol.reaction[i]);
         Self {
             speed_rpm: conditions.inner_speed / RPM,
             raceway_control: conditions.control,
@@ -195,6 +205,16 @@ impl QuasiStaticReport {
                 .atan2(conditions.loads.force[1])
                 .to_degrees(),
             first_ball_azimuth_deg: sol.balls.first().map_or(0.0, |b| b.azimuth.to_degrees()),
+            held_displacements: ["x", "y", "z", "tilt_y", "tilt_z"]
+                .into_iter()
+                .zip(held)
+                .filter_map(|(n, h)| h.then_some(n))
+                .collect(),
+            reaction_force_x_n: reaction(0),
+            reaction_force_y_n: reaction(1),
+            reaction_force_z_n: reaction(2),
+            reaction_moment_y_n_m: reaction(3),
+            reaction_moment_z_n_m: reaction(4),
             orbital_speed_min_rpm: sol
                 .balls
                 .iter()
@@ -254,6 +274,25 @@ impl QuasiStaticReport {
             self.tilt_y_rad,
             self.tilt_z_rad
         );
+        if !self.held_displacements.is_empty() {
+            let r = [
+                ("F_x", self.reaction_force_x_n, "N"),
+                ("F_y", self.reaction_force_y_n, "N"),
+                ("F_z", self.reaction_force_z_n, "N"),
+                ("M_y", self.reaction_moment_y_n_m, "N·m"),
+                ("M_z", self.reaction_moment_z_n_m, "N·m"),
+            ];
+            let holding: Vec<String> = r
+                .iter()
+                .filter_map(|(n, v, u)| v.map(|v| format!("{n} {v:.4} {u}")))
+                .collect();
+            let _ = writeln!(
+                out,
+                "  held: {} (the loads that hold them: {})",
+                self.held_displacements.join(", "),
+                holding.join(", ")
+            );
+        }
         if self.speed_rpm != 0.0 {
             let _ = writeln!(
                 out,

@@ -53,27 +53,109 @@ fn radial_load_direction_ball_azimuth_and_compliance() {
     assert!((conventional - 1.0 / c[0][0].as_f64().unwrap()).abs() < 1e-6 * conventional);
 }
 
+/// Conflicting keys in one case file are refused, naming the key; on the
+/// command line a later override replaces the conflicting key instead
+/// (the dedicated flags apply before `--set`).
 #[test]
-fn radial_load_conflicts_are_located() {
-    for (args, key) in [
+fn radial_load_and_tilt_conflicts_are_located() {
+    let preset = rolldyn_case::presets::find("7008C").unwrap().text;
+    for (extra, key) in [
         (
-            vec![
-                "--set",
-                "operating.radial_load=1 kN",
-                "--radial-load",
-                "5 N",
-            ],
+            "radial_load = \"1 kN\"\nforce_z = \"5 N\"\n",
             "operating.radial_load",
         ),
         (
-            vec!["--set", "operating.radial_load_angle=10 deg"],
+            "radial_load_angle = \"10 deg\"\n",
             "operating.radial_load_angle",
         ),
+        (
+            "tilt_z = \"1 mrad\"\nmoment_z = \"1 N.m\"\n",
+            "operating.tilt_z",
+        ),
+        (
+            "fixed_tilt = true\nmoment_y = \"1 N.m\"\n",
+            "operating.fixed_tilt",
+        ),
     ] {
-        let mut a = vec!["quasistatic"];
-        a.extend(args);
-        let o = rolldyn(&a, None);
-        assert_eq!(o.status.code(), Some(2), "{a:?}");
-        assert!(stderr(&o).contains(key), "{a:?}: {}", stderr(&o));
+        let case = preset.replacen("[operating]\n", &format!("[operating]\n{extra}"), 1);
+        let o = rolldyn(&["quasistatic", "-"], Some(&case));
+        assert_eq!(o.status.code(), Some(2), "{extra}");
+        assert!(stderr(&o).contains(key), "{extra}: {}", stderr(&o));
     }
+    let v = json(
+        &[
+            "quasistatic",
+            "--json",
+            "--set",
+            "operating.radial_load=1 kN",
+            "--radial-load",
+            "5 N",
+        ],
+        None,
+    );
+    // Flags apply before --set: the --set radial load replaces F_z.
+    assert_eq!(v["force_z_n"].as_f64(), Some(1000.0));
+}
+
+/// `--fix-tilt` and `--misalignment`: the tilts are held, the holding
+/// moments reported; applying those moments to the free ring gives the
+/// same tilt; conflicts and dynamic runs are refused with the key.
+#[test]
+fn fixed_tilt_and_misalignment() {
+    let v = json(
+        &[
+            "quasistatic",
+            "--json",
+            "--radial-load",
+            "300 N",
+            "--fix-tilt",
+        ],
+        None,
+    );
+    assert_eq!(
+        v["held_displacements"],
+        serde_json::json!(["tilt_y", "tilt_z"])
+    );
+    assert_eq!(v["tilt_y_rad"].as_f64(), Some(0.0));
+    let m = v["reaction_moment_y_n_m"].as_f64().unwrap();
+    assert!(
+        m.abs() > 0.1,
+        "a radial load on an angular-contact bearing tilts it: {m}"
+    );
+    assert!(v["reaction_force_x_n"].is_null());
+    let free = json(
+        &[
+            "quasistatic",
+            "--json",
+            "--radial-load",
+            "300 N",
+            "--set",
+            &format!("operating.moment_y={m} N.m"),
+        ],
+        None,
+    );
+    assert!(
+        free["tilt_y_rad"].as_f64().unwrap().abs() < 1e-9,
+        "{}",
+        free["tilt_y_rad"]
+    );
+    let v = json(
+        &["quasistatic", "--json", "--misalignment", "0.01 deg"],
+        None,
+    );
+    assert!((v["tilt_y_rad"].as_f64().unwrap() - 0.01f64.to_radians()).abs() < 1e-15);
+    assert!(v["reaction_moment_y_n_m"].as_f64().is_some());
+    let o = rolldyn(
+        &[
+            "run",
+            "--fix-tilt",
+            "--duration",
+            "1 ms",
+            "-o",
+            "/nonexistent-dir-never-made",
+        ],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("quasi-static only"), "{}", stderr(&o));
 }

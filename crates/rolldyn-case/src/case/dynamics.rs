@@ -24,6 +24,24 @@ impl Case {
     /// a dynamic run needs but the case lacks is an error naming its key.
     pub fn dynamics_parameters(&self) -> Result<DynamicsParameters, Invalid> {
         let g = &self.bearing.geometry;
+        if let Some(k) = self
+            .prescribed_displacement
+            .iter()
+            .position(Option::is_some)
+        {
+            let key = [
+                "displacement_x",
+                "displacement_y",
+                "displacement_z",
+                "tilt_y",
+                "tilt_z",
+            ][k];
+            return Err(Invalid::new(
+                format!("operating.{key}"),
+                None,
+                "prescribed ring displacements (and operating.fixed_tilt) are quasi-static only: a dynamic run moves the ring under its loads",
+            ));
+        }
         let speed = self.speed.clone().ok_or_else(|| {
             Invalid::missing(
                 "operating.speed",

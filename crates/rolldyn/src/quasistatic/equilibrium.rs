@@ -76,6 +76,7 @@ use crate::operating::Loads;
 use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
 use serde::{Deserialize, Serialize};
 
+mod constraints;
 mod newton;
 mod rebuild;
 
@@ -130,6 +131,9 @@ pub struct SolverOptions {
     pub relative_tolerance: f64,
     /// Azimuth of ball 0 \[rad\] (0: +y axis; e_r = cos φ e_y + sin φ e_z).
     pub first_ball_azimuth: f64,
+    /// Ring displacements held at a value (x, y, z \[m\], θ_y, θ_z \[rad\]):
+    /// a fixed tilt or misalignment; None: free, its load given.
+    pub prescribed_displacement: [Option<f64>; 5],
 }
 
 impl Default for SolverOptions {
@@ -138,6 +142,7 @@ impl Default for SolverOptions {
             max_iterations: 60,
             relative_tolerance: 1e-11,
             first_ball_azimuth: 0.0,
+            prescribed_displacement: [None; 5],
         }
     }
 }
@@ -199,6 +204,9 @@ pub struct Equilibrium {
     pub balls: Vec<BallSolution>,
     /// Bearing stiffness matrix K = −∂(contact forces on the ring)/∂u.
     pub stiffness: [[f64; 5]; 5],
+    /// Loads the prescribed displacements need (F_x, F_y, F_z \[N\], M_y,
+    /// M_z \[N·m\]; zero where the displacement is free).
+    pub reaction: [f64; 5],
     /// Newton iterations used (all passes and continuation steps).
     pub iterations: usize,
     /// Largest relative residual at the solution.
@@ -1087,11 +1095,17 @@ impl QuasiStaticSolver {
             })
             .collect();
         let k = -schur;
+        let setup = Setup {
+            conditions,
+            options,
+            extension: if omega_i == 0.0 { 1.0 } else { SPEED_EXTENSION },
+        };
         Equilibrium {
             inner_speed: omega_i,
             displacement: state.ring.into(),
             balls,
             stiffness: std::array::from_fn(|i| std::array::from_fn(|j| k[(i, j)])),
+            reaction: self.reaction(state, controls, setup),
             iterations,
             residual,
         }

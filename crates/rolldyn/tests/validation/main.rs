@@ -27,6 +27,7 @@ mod cage_guide;
 mod common;
 mod convergence;
 mod efficiency;
+mod quasistatic_fixed_tilt;
 mod quasistatic_high_speed;
 mod quasistatic_static;
 mod rolling_resistance;

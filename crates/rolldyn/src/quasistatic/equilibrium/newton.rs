@@ -11,6 +11,25 @@ use super::{
 use crate::geometry::RingKind;
 
 impl QuasiStaticSolver {
+    /// The converged result; with prescribed displacements the stiffness
+    /// comes from the unconstrained equations.
+    fn converged(
+        &self,
+        state: State,
+        s: Matrix5,
+        iterations: usize,
+        residual: f64,
+        controls: &[RingKind],
+        setup: Setup<'_>,
+    ) -> (State, Matrix5, usize, f64) {
+        let s = if Self::constrained(setup) {
+            self.full_schur(&state, controls, setup)
+        } else {
+            s
+        };
+        (state, s, iterations, residual)
+    }
+
     /// Largest relative residual: forces over `scale`, kinematics over the
     /// reference speeds.
     pub(super) fn residual_norm(&self, asm: &Assembly, scale: f64, omega_ref: f64) -> f64 {
@@ -63,10 +82,11 @@ impl QuasiStaticSolver {
     /// iterations and the residual.
     pub(super) fn newton(
         &self,
-        mut state: State,
+        state: State,
         controls: &[RingKind],
         setup: Setup<'_>,
     ) -> Result<(State, Matrix5, usize, f64), QuasiStaticError> {
+        let mut state = Self::with_prescribed(state, setup);
         let l = self.lever();
         let applied = self
             .scaled_ring(&Self::applied(&setup.conditions.loads))
@@ -76,7 +96,7 @@ impl QuasiStaticSolver {
         // Ball spin reaches ~(d_m/D) ω_i; the cap only stops absurd steps.
         let max_speed_step =
             2.0 * omega_ref * self.geometry.pitch_diameter / self.geometry.ball_diameter;
-        let mut asm = self.assemble(&state, controls, setup);
+        let mut asm = self.constrained_assembly(&state, controls, setup);
         let scale = applied.max(asm.largest_load).max(f64::MIN_POSITIVE);
         let fail = |iterations, residual| QuasiStaticError::NoConvergence {
             iterations,
@@ -92,7 +112,7 @@ impl QuasiStaticSolver {
             let step = Self::newton_step(&asm);
             if residual <= setup.options.relative_tolerance {
                 let s = step.map(|(_, _, s)| s).unwrap_or_else(Matrix5::zeros);
-                return Ok((state, s, iteration, residual));
+                return Ok(self.converged(state, s, iteration, residual, controls, setup));
             }
             if iteration == setup.options.max_iterations {
                 // Out of iterations while still descending: a ball at the
@@ -101,7 +121,7 @@ impl QuasiStaticSolver {
                 // Accepted at the requirement, as a stall is.
                 if residual <= STAGNATION_ACCEPT {
                     let s = step.map(|(_, _, s)| s).unwrap_or_else(Matrix5::zeros);
-                    return Ok((state, s, iteration, residual));
+                    return Ok(self.converged(state, s, iteration, residual, controls, setup));
                 }
                 return Err(fail(iteration, residual));
             }
@@ -134,7 +154,7 @@ impl QuasiStaticSolver {
                         .collect(),
                     ring: state.ring + lambda * du,
                 };
-                let trial_asm = self.assemble(&trial, controls, setup);
+                let trial_asm = self.constrained_assembly(&trial, controls, setup);
                 let m = self.merit(&trial_asm, scale, omega_ref);
                 if m.is_finite() && m <= (1.0 - 1e-4 * lambda) * merit0 {
                     accepted = Some((trial, trial_asm));
@@ -149,7 +169,7 @@ impl QuasiStaticSolver {
                     let s = Self::newton_step(&asm)
                         .map(|(_, _, s)| s)
                         .unwrap_or_else(Matrix5::zeros);
-                    return Ok((state, s, iteration, residual));
+                    return Ok(self.converged(state, s, iteration, residual, controls, setup));
                 }
                 return Err(fail(iteration, residual));
             };
