@@ -1,7 +1,10 @@
 //! `rolldyn` — the command-line front end of the rolldyn bearing engine.
 //!
-//! Exit codes: 0 success, 1 internal failure (e.g. cannot write output),
-//! 2 bad input (case file, override or argument).
+//! Exit codes (docs/cli.md): 0 success; 2 user error (case file, override,
+//! argument, an output path that cannot be written); 3 the model failed
+//! (a quasi-static solve did not converge, a run's integration failed);
+//! 130 a run interrupted by Ctrl-C (its files hold what was computed);
+//! 1 an internal error.
 
 mod contact;
 mod power;
@@ -154,8 +157,25 @@ enum Command {
 
 /// A failure with its exit code.
 enum Failure {
+    /// 2: the user's input, arguments or output path.
     BadInput(String),
+    /// 3: the model failed to converge or diverged.
+    Model(String),
+    /// 130: interrupted by the user.
+    Interrupted(String),
+    /// 1: an internal error.
     Internal(String),
+}
+
+/// A quasi-static solver error: no convergence is the model's failure (3),
+/// anything else (an unsupported load) the input's (2).
+fn quasistatic_failure(e: rolldyn::quasistatic::QuasiStaticError) -> Failure {
+    match e {
+        rolldyn::quasistatic::QuasiStaticError::NoConvergence { .. } => {
+            Failure::Model(e.to_string())
+        }
+        other => Failure::BadInput(other.to_string()),
+    }
 }
 
 impl From<CaseError> for Failure {
@@ -238,7 +258,7 @@ fn emit(text: &str) -> Result<(), Failure> {
     let mut out = std::io::stdout().lock();
     out.write_all(text.as_bytes())
         .and_then(|_| out.flush())
-        .map_err(|e| Failure::Internal(format!("cannot write output: {e}")))
+        .map_err(|e| Failure::BadInput(format!("cannot write to standard output: {e}")))
 }
 
 fn json<T: serde::Serialize>(value: &T) -> Result<(), Failure> {
@@ -322,7 +342,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 let conditions = quasistatic::conditions(&case, control);
                 let sol = solver
                     .solve(&conditions, &case.solver_options())
-                    .map_err(|e| Failure::BadInput(e.to_string()))?;
+                    .map_err(quasistatic_failure)?;
                 let held = case.prescribed_displacement.map(|p| p.is_some());
                 let report = quasistatic::QuasiStaticReport::new(&sol, &conditions, held)
                     .with_films_and_modes(&case, &sol);
@@ -336,12 +356,13 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     quasistatic::run_sweep(&case, control, &sweeps).map_err(Failure::BadInput)?;
                 let dir = std::path::Path::new(&output);
                 std::fs::create_dir_all(dir)
-                    .map_err(|e| Failure::Internal(format!("cannot create {output}: {e}")))?;
+                    .map_err(|e| Failure::BadInput(format!("cannot create {output}: {e}")))?;
                 let json_text = serde_json::to_string_pretty(&rows)
                     .map_err(|e| Failure::Internal(e.to_string()))?;
                 let write = |name: &str, text: &str| {
-                    rolldyn_io::write_atomic(&dir.join(name), text.as_bytes())
-                        .map_err(|e| Failure::Internal(e.to_string()))
+                    rolldyn_io::write_atomic(&dir.join(name), text.as_bytes()).map_err(|e| {
+                        Failure::BadInput(format!("cannot write {output}/{name}: {e}"))
+                    })
                 };
                 write("sweep.csv", &quasistatic::sweep_csv(&rows))?;
                 write("sweep.json", &json_text)?;
@@ -394,7 +415,15 @@ fn run(cli: Cli) -> Result<(), Failure> {
             );
             emit(&text)?;
             match summary.status {
-                "failed" => Err(Failure::Internal(summary.error.unwrap_or_default())),
+                "failed" => Err(Failure::Model(format!(
+                    "{}; the files hold the run up to t = {:.6} s. Try a smaller solver.max_step or solver.relative_tolerance, or another solver.integrator",
+                    summary.error.unwrap_or_default(),
+                    summary.simulated_time_s
+                ))),
+                "interrupted" => Err(Failure::Interrupted(format!(
+                    "interrupted at t = {:.6} s; {output}/ holds what was computed",
+                    summary.simulated_time_s
+                ))),
                 _ => Ok(()),
             }
         }
@@ -435,6 +464,14 @@ fn main() -> ExitCode {
         Err(Failure::BadInput(msg)) => {
             eprintln!("error: {msg}");
             ExitCode::from(2)
+        }
+        Err(Failure::Model(msg)) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(3)
+        }
+        Err(Failure::Interrupted(msg)) => {
+            eprintln!("{msg}");
+            ExitCode::from(130)
         }
         Err(Failure::Internal(msg)) => {
             eprintln!("error: {msg}");

@@ -137,7 +137,7 @@ pub fn solve(case: &Case) -> Result<(Equilibrium, LocalPowerLoss), Failure> {
     let conditions = crate::quasistatic::conditions(case, None);
     let eq = solver
         .solve(&conditions, &case.solver_options())
-        .map_err(|e| Failure::BadInput(e.to_string()))?;
+        .map_err(crate::quasistatic_failure)?;
     let p = local_power_loss(&case.bearing.geometry, &eq, &inputs);
     Ok((eq, p))
 }

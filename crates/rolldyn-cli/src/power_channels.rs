@@ -78,7 +78,10 @@ pub fn couple(
     y0: &[f64],
 ) -> Result<(), String> {
     let steady = crate::thermal::solve(case).map_err(|f| match f {
-        crate::Failure::BadInput(m) | crate::Failure::Internal(m) => m,
+        crate::Failure::BadInput(m)
+        | crate::Failure::Model(m)
+        | crate::Failure::Interrupted(m)
+        | crate::Failure::Internal(m) => m,
     })?;
     let mut inputs = case
         .thermal_inputs()

@@ -238,7 +238,7 @@ pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
     }
     let csv_path = dir.join(format!("{stem}.csv"));
     rolldyn_io::write_atomic(&csv_path, csv.as_bytes())
-        .map_err(|e| Failure::Internal(e.to_string()))?;
+        .map_err(|e| Failure::BadInput(e.to_string()))?;
     let report = Report {
         channel: args.channel.clone(),
         unit,
@@ -283,7 +283,7 @@ pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
     let text =
         serde_json::to_string_pretty(&report).map_err(|e| Failure::Internal(e.to_string()))?;
     rolldyn_io::write_atomic(&dir.join(format!("{stem}.json")), (text + "\n").as_bytes())
-        .map_err(|e| Failure::Internal(e.to_string()))?;
+        .map_err(|e| Failure::BadInput(e.to_string()))?;
     if args.json {
         return json(&report);
     }

@@ -87,8 +87,10 @@ pub fn solve(case: &Case) -> Result<CoupledSolution, Failure> {
         viscosity: case.lubricant.as_ref().and_then(|l| l.viscosity_law),
         expansion: case.thermal.expansion,
     };
-    coupled_steady(&problem, &CoupledOptions::default())
-        .map_err(|e| Failure::BadInput(format!("thermal: {e}")))
+    coupled_steady(&problem, &CoupledOptions::default()).map_err(|e| match e {
+        rolldyn::thermal::coupled::CoupledError::QuasiStatic(q) => crate::quasistatic_failure(q),
+        other => Failure::BadInput(format!("thermal: {other}")),
+    })
 }
 
 pub fn command(args: ThermalArgs) -> Result<(), Failure> {

@@ -219,7 +219,7 @@ pub fn command(args: TractionArgs) -> Result<(), Failure> {
     let report = evaluate(&contact, &inputs, map_text.as_mut()).map_err(Failure::BadInput)?;
     if let (Some(path), Some(text)) = (&args.map, &map_text) {
         rolldyn_io::write_atomic(std::path::Path::new(path), text.as_bytes())
-            .map_err(|e| Failure::Internal(format!("cannot write {path}: {e}")))?;
+            .map_err(|e| Failure::BadInput(format!("cannot write {path}: {e}")))?;
     }
     if args.json {
         json(&report)
