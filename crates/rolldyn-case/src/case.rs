@@ -256,7 +256,14 @@ fn positive_number(
             Some(x.to_string()),
             "must be a finite number",
         )),
-        Some(x) if !rule(x) => Err(Invalid::new(key, Some(x.to_string()), what)),
+        Some(x) if !rule(x) => {
+            let text = if x != 0.0 && !(1e-4..1e15).contains(&x.abs()) {
+                format!("{x:e}")
+            } else {
+                x.to_string()
+            };
+            Err(Invalid::new(key, Some(text), what))
+        }
         other => Ok(other),
     }
 }
@@ -377,16 +384,42 @@ impl Case {
         .unwrap_or(DEFAULT_IMPACT_SPEED_FLOOR);
 
         let s = &raw.solver;
+        // Practical limits (docs/case-format.md): below them a run cannot
+        // finish (steps at round-off) or cannot be stored.
+        let at_least = |min: f64, what: &'static str| {
+            move |v: f64| {
+                if v >= min {
+                    Ok(())
+                } else {
+                    Err(format!("must be at least {what}"))
+                }
+            }
+        };
         let duration = checked("solver.duration", &s.duration, positive)?;
-        let max_step = checked("solver.max_step", &s.max_step, positive)?;
+        let max_step = checked("solver.max_step", &s.max_step, at_least(1e-9, "1 ns"))?;
         let relative_tolerance = positive_number(
             "solver.relative_tolerance",
             s.relative_tolerance,
-            |x| x > 0.0 && x < 1.0,
-            "must lie in (0, 1)",
+            |x| (1e-12..=0.5).contains(&x),
+            "must lie in [1e-12, 0.5] (below 1e-12 the steps stall at round-off)",
         )?;
-        let sample_rate = checked("output.sample_rate", &raw.output.sample_rate, positive)?;
-        let time_step = checked("solver.time_step", &s.time_step, positive)?;
+        let sample_rate = checked("output.sample_rate", &raw.output.sample_rate, |v| {
+            if v > 0.0 && v <= 1e7 {
+                Ok(())
+            } else {
+                Err("must lie in (0, 10 MHz]".to_string())
+            }
+        })?;
+        let time_step = checked("solver.time_step", &s.time_step, at_least(1e-10, "0.1 ns"))?;
+        if let Some(TractionIntegration::Grid { across, along }) = raw.model.traction_integration {
+            if across.saturating_mul(along) > 10_000 || across == 0 || along == 0 {
+                return Err(Invalid::new(
+                    "model.traction_integration",
+                    Some(format!("{across} × {along}")),
+                    "the grid needs 1 to 10 000 cells (across × along)",
+                ));
+            }
+        }
         let integrator = s.integrator.unwrap_or(IntegratorChoice::Auto);
         if integrator == IntegratorChoice::Rk4 && time_step.is_none() {
             return Err(Invalid::missing(

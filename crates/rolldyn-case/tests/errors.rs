@@ -685,3 +685,28 @@ fn power_and_thermal_inputs_are_checked() {
     let e = ok.thermal_inputs().unwrap_err();
     assert_eq!(e.key, "bearing.bore");
 }
+
+#[test]
+fn practical_limits_are_checked() {
+    for (extra, key) in [
+        (
+            "[solver]\nrelative_tolerance = 1e-300\n",
+            "solver.relative_tolerance",
+        ),
+        ("[solver]\nmax_step = \"1e-300 s\"\n", "solver.max_step"),
+        ("[solver]\ntime_step = \"1e-12 s\"\n", "solver.time_step"),
+        (
+            "[output]\nsample_rate = \"1e12 Hz\"\n",
+            "output.sample_rate",
+        ),
+        (
+            "[model]\ntraction_integration = { method = \"grid\", across = 100000, along = 100000 }\n",
+            "model.traction_integration",
+        ),
+    ] {
+        let e = err(&format!("{BASE}\n{extra}"));
+        assert_eq!(e.key.as_deref(), Some(key), "{e}");
+    }
+    let e = err(&format!("{BASE}\n[solver]\nrelative_tolerance = 1e-300\n"));
+    assert!(e.to_string().contains("1e-300"), "{e}");
+}

@@ -104,6 +104,9 @@ enum Command {
         /// Output directory of a sweep (sweep.csv, sweep.json).
         #[arg(short, long, value_name = "DIR", default_value = "quasistatic-sweep")]
         output: String,
+        /// Solve a sweep of more than 1 000 000 points.
+        #[arg(long)]
+        force: bool,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
@@ -128,6 +131,10 @@ enum Command {
         /// Simulated time, e.g. "0.01 s" (overrides solver.duration).
         #[arg(long, value_name = "TIME")]
         duration: Option<String>,
+        /// Run even when the estimated steps or time-series memory exceed
+        /// the limits (docs/cli.md).
+        #[arg(long)]
+        force: bool,
     },
     /// Traction of one ball–raceway contact with the case's traction model
     /// (FASTSIM, Coulomb, curve, EHL), or of an explicit ellipse with
@@ -300,6 +307,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             control,
             sweep,
             output,
+            force,
             json: as_json,
         } => {
             let traction_control = control.as_deref() == Some("traction");
@@ -320,6 +328,15 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 .iter()
                 .map(|s| quasistatic::parse_sweep(s).map_err(|e| bad_arg("--sweep", s, e)))
                 .collect::<Result<Vec<_>, _>>()?;
+            let points = sweeps
+                .iter()
+                .fold(1f64, |n, (_, values)| n * values.len() as f64);
+            if points > quasistatic::MAX_SWEEP_POINTS && !force {
+                return Err(Failure::BadInput(format!(
+                    "--sweep: the grid has {points:.3e} points, above the limit of {:.0e} (time and memory); use fewer points or pass --force",
+                    quasistatic::MAX_SWEEP_POINTS
+                )));
+            }
             let (_, case) = case.load()?;
             if traction_control {
                 if !sweeps.is_empty() {
@@ -385,13 +402,14 @@ fn run(cli: Cli) -> Result<(), Failure> {
             mut case,
             output,
             duration,
+            force,
         } => {
             if let Some(d) = duration {
                 case.set.push(format!("solver.duration={d}"));
             }
             let (source, case) = case.load()?;
             let dir = std::path::Path::new(&output);
-            let summary = run::run_case(&source, &case, dir).map_err(Failure::BadInput)?;
+            let summary = run::run_case(&source, &case, dir, force).map_err(Failure::BadInput)?;
             let text = format!(
                 "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS, {} Jacobians costing {} RHS, {} factorizations)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e}\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
                 summary.status,

@@ -367,6 +367,9 @@ impl QuasiStaticReport {
     }
 }
 
+/// Most points of a sweep grid without `--force`.
+pub const MAX_SWEEP_POINTS: f64 = 1e6;
+
 /// A swept quantity.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Swept {

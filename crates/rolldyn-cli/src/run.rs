@@ -335,7 +335,41 @@ fn mean(values: &[f64]) -> f64 {
 
 /// Runs the case and writes the results into `dir`. Returns the summary;
 /// `Err` is bad input (no files written).
-pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String> {
+/// Most steps a run may need at least (duration / largest step) before
+/// it is refused without `--force`.
+pub const MAX_STEPS: f64 = 1e9;
+/// Most memory the recorded time series may take before a run is refused
+/// without `--force` \[bytes\].
+pub const MAX_SERIES_BYTES: f64 = 4.0 * 1024.0 * 1024.0 * 1024.0;
+
+/// Refuses a run that cannot finish or whose time series cannot fit:
+/// at least `duration / step` steps, `duration × rate` rows of `channels`.
+fn check_limits(
+    duration: f64,
+    step: f64,
+    step_key: &str,
+    rate: f64,
+    channels: usize,
+) -> Result<(), String> {
+    let steps = duration / step;
+    if steps > MAX_STEPS {
+        return Err(format!(
+            "{step_key}: the run needs at least {steps:.2e} steps (solver.duration / {step_key}), above the limit of {MAX_STEPS:.0e}; shorten the run, raise the step, or pass --force"
+        ));
+    }
+    let bytes = (duration * rate + 1.0) * channels as f64 * 8.0;
+    if bytes > MAX_SERIES_BYTES {
+        return Err(format!(
+            "output.sample_rate: the time series would take {:.1} GiB ({:.2e} rows × {channels} channels), above the limit of {:.0} GiB; lower the sample rate, shorten the run, or pass --force",
+            bytes / 1024f64.powi(3),
+            duration * rate + 1.0,
+            MAX_SERIES_BYTES / 1024f64.powi(3)
+        ));
+    }
+    Ok(())
+}
+
+pub fn run_case(source: &str, case: &Case, dir: &Path, force: bool) -> Result<Summary, String> {
     let params = case
         .dynamics_parameters()
         .map_err(|e| format!("{}: {}", e.key, e.rule))?;
@@ -377,6 +411,21 @@ pub fn run_case(source: &str, case: &Case, dir: &Path) -> Result<Summary, String
         } else {
             DEFAULT_MAX_STEP
         });
+    if !force {
+        let (step, key) = match choice {
+            IntegratorChoice::Rk4 => (case.time_step.unwrap_or(1e-7), "solver.time_step"),
+            _ => (max_step, "solver.max_step"),
+        };
+        // Channel count: the fixed channels and per-ball ones (a bound).
+        let channels = 60 + g.ball_count * 26;
+        check_limits(
+            duration,
+            step,
+            key,
+            case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE),
+            channels,
+        )?;
+    }
     let (solver, integrator) = match choice {
         IntegratorChoice::Auto => unreachable!("resolved above"),
         IntegratorChoice::Rk4 => (
