@@ -268,10 +268,58 @@ fn positive_number(
     }
 }
 
+/// Largest shaft speed accepted \[rad/s\]: 10⁶ rpm, far beyond any ball
+/// bearing (DN 3·10⁶ mm·rpm is a 3 mm bore at that speed).
+pub const MAX_SPEED: f64 = 1e6 * std::f64::consts::TAU / 60.0;
+/// Largest load component accepted \[N\] (100 MN).
+pub const MAX_FORCE: f64 = 1e8;
+
+/// Checks a speed against [`MAX_SPEED`].
+pub fn check_speed(key: &str, v: f64) -> Result<(), Invalid> {
+    if v.is_finite() && v.abs() <= MAX_SPEED {
+        Ok(())
+    } else {
+        Err(Invalid::new(
+            key,
+            Some(format!("{:e} rpm", v * 60.0 / std::f64::consts::TAU)),
+            "must lie within ±1 000 000 rpm",
+        ))
+    }
+}
+
+/// Checks a force against [`MAX_FORCE`].
+pub fn check_force(key: &str, v: f64) -> Result<(), Invalid> {
+    if v.is_finite() && v.abs() <= MAX_FORCE {
+        Ok(())
+    } else {
+        Err(Invalid::new(
+            key,
+            Some(format!("{v:e} N")),
+            "must lie within ±100 MN",
+        ))
+    }
+}
+
 impl Case {
     /// Validates a raw case (already merged with its preset and overrides).
     pub fn from_raw(raw: &RawCase) -> Result<Self, Invalid> {
         let op = &raw.operating;
+        if let Some(s) = &op.speed {
+            check_speed("operating.speed", s.si)?;
+        }
+        for (i, p) in op.speed_profile.iter().flatten().enumerate() {
+            check_speed(&format!("operating.speed_profile[{i}].speed"), p.speed.si)?;
+        }
+        for (key, q) in [
+            ("operating.force_x", &op.force_x),
+            ("operating.force_y", &op.force_y),
+            ("operating.force_z", &op.force_z),
+            ("operating.radial_load", &op.radial_load),
+        ] {
+            if let Some(q) = q {
+                check_force(key, q.si)?;
+            }
+        }
         let speed = match (&op.speed, &op.speed_profile) {
             (Some(_), Some(_)) => {
                 return Err(Invalid::new(
@@ -906,8 +954,20 @@ fn material(key: &str, choice: Option<&MaterialChoice>) -> Result<NamedMaterial,
                 )
             }),
         Some(MaterialChoice::Custom(m)) => {
-            checked(&format!("{key}.elastic_modulus"), &Some(m.elastic_modulus.clone()), positive)?;
-            checked(&format!("{key}.density"), &Some(m.density.clone()), positive)?;
+            checked(&format!("{key}.elastic_modulus"), &Some(m.elastic_modulus.clone()), |v| {
+                if (1e6..=1e13).contains(&v) {
+                    Ok(())
+                } else {
+                    Err("must lie in [1 MPa, 10 TPa] (engineering solids)".into())
+                }
+            })?;
+            checked(&format!("{key}.density"), &Some(m.density.clone()), |v| {
+                if (1.0..=1e5).contains(&v) {
+                    Ok(())
+                } else {
+                    Err("must lie in [1, 100 000] kg/m^3".into())
+                }
+            })?;
             positive_number(
                 &format!("{key}.poisson_ratio"),
                 Some(m.poisson_ratio),

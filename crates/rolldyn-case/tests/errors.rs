@@ -710,3 +710,30 @@ fn practical_limits_are_checked() {
     let e = err(&format!("{BASE}\n[solver]\nrelative_tolerance = 1e-300\n"));
     assert!(e.to_string().contains("1e-300"), "{e}");
 }
+
+#[test]
+fn physical_ranges_are_checked() {
+    for (from, to, key) in [
+        (
+            "speed = \"10000 rpm\"",
+            "speed = \"1e300 rpm\"",
+            "operating.speed",
+        ),
+        (
+            "force_x = \"200 N\"",
+            "force_x = \"1e300 N\"",
+            "operating.force_x",
+        ),
+    ] {
+        let e = err(&replace(from, to));
+        assert_eq!(e.key.as_deref(), Some(key), "{e}");
+    }
+    let e = err(&format!(
+        "{BASE}\n[materials]\nball = {{ elastic_modulus = \"1e-300 Pa\", poisson_ratio = 0.3, density = \"7800 kg/m^3\" }}\n"
+    ));
+    assert_eq!(
+        e.key.as_deref(),
+        Some("materials.ball.elastic_modulus"),
+        "{e}"
+    );
+}

@@ -422,6 +422,13 @@ pub fn parse_sweep(arg: &str) -> Result<(Swept, Vec<f64>), String> {
     if values.is_empty() {
         return Err("no values".into());
     }
+    for &v in &values {
+        let checked = match swept {
+            Swept::Speed => rolldyn_case::case::check_speed("speed", v),
+            _ => rolldyn_case::case::check_force(name.trim(), v),
+        };
+        checked.map_err(|e| format!("{}: {}", e.value.unwrap_or_default(), e.rule))?;
+    }
     Ok((swept, values))
 }
 

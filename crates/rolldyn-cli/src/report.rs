@@ -298,7 +298,13 @@ impl FrequencyReport {
         ];
         let _ = writeln!(out, "  {:<22} {:>12} {:>10}", "", "Hz", "order");
         for (name, hz, order) in rows {
-            let _ = writeln!(out, "  {name:<22} {hz:>12.3} {order:>10.5}");
+            // An order is undefined at 0 rpm: "—" here, null in JSON.
+            let order = if order.is_finite() {
+                format!("{order:.5}")
+            } else {
+                "—".to_string()
+            };
+            let _ = writeln!(out, "  {name:<22} {hz:>12.3} {order:>10}");
         }
         let _ = writeln!(
             out,

@@ -241,3 +241,14 @@ fn limits_before_work() {
         stderr(&o)
     );
 }
+
+/// Undefined quantities (issue 17): the orders at 0 rpm are null in JSON
+/// and "—" in text.
+#[test]
+fn undefined_orders_at_rest() {
+    let v = json(&["frequencies", "--speed", "0 rpm", "--json"], None);
+    assert!(v["orders"]["bpfo"].is_null(), "{}", v["orders"]);
+    let o = rolldyn(&["frequencies", "--speed", "0 rpm"], None);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains('—') && !text.contains("NaN"), "{text}");
+}
