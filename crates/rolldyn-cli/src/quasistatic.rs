@@ -99,6 +99,40 @@ pub struct TiltStiffness {
     pub z: f64,
 }
 
+/// ISO 281 basic rating (docs/cli.md).
+#[derive(Serialize)]
+pub struct RatingLife {
+    pub standard: &'static str,
+    pub dynamic_load_rating_n: Option<f64>,
+    pub equivalent_load_n: Option<f64>,
+    pub basic_rating_life_mrev: Option<f64>,
+    pub basic_rating_life_h: Option<f64>,
+}
+
+impl RatingLife {
+    /// ISO 281 for `case` under `loads` at `speed` \[rad/s\].
+    pub fn new(case: &Case, loads: &Loads, speed: f64) -> Self {
+        use rolldyn::life::iso281;
+        let g = &case.bearing.geometry;
+        let alpha = g.nominal_contact_angle();
+        let c = iso281::dynamic_load_rating(g.ball_diameter, g.pitch_diameter, g.ball_count, alpha)
+            .ok();
+        let p =
+            iso281::equivalent_load(loads.force[1].hypot(loads.force[2]), loads.force[0], alpha)
+                .filter(|p| *p > 0.0);
+        let l10 = c.zip(p).map(|(c, p)| iso281::basic_rating_life(c, p));
+        Self {
+            standard: "ISO 281:2007",
+            dynamic_load_rating_n: c,
+            equivalent_load_n: p,
+            basic_rating_life_mrev: l10,
+            basic_rating_life_h: l10
+                .filter(|_| speed != 0.0)
+                .map(|l| l * 1e6 / (speed.abs() / RPM * 60.0)),
+        }
+    }
+}
+
 /// Conventional stiffnesses 1/C_ii (docs/cli.md).
 #[derive(Serialize)]
 pub struct ConventionalStiffness {
@@ -151,6 +185,8 @@ pub struct QuasiStaticReport {
     pub iterations: usize,
     pub relative_residual: f64,
     pub balls: Vec<BallRow>,
+    /// ISO 281 basic rating life.
+    pub rating_life: Option<RatingLife>,
     /// Per ball films (null without a `[lubricant]`).
     pub films: Option<Vec<crate::quasistatic_films::FilmRow>>,
     /// Natural modes of the inner ring (null without its mass and tilt inertia).
@@ -230,6 +266,7 @@ impl QuasiStaticReport {
             iterations: sol.iterations,
             relative_residual: sol.residual,
             balls: sol.balls.iter().map(BallRow::from).collect(),
+            rating_life: None,
             films: None,
             modes: None,
         }
@@ -237,6 +274,14 @@ impl QuasiStaticReport {
 
     /// With the films and natural modes the case allows.
     pub fn with_films_and_modes(mut self, case: &Case, sol: &Equilibrium) -> Self {
+        self.rating_life = Some(RatingLife::new(
+            case,
+            &Loads {
+                force: [self.force_x_n, self.force_y_n, self.force_z_n],
+                moment: [self.moment_y_n_m, self.moment_z_n_m],
+            },
+            self.speed_rpm * RPM,
+        ));
         self.films = crate::quasistatic_films::films(case, sol);
         self.modes = crate::quasistatic_films::modes(case, sol);
         self
@@ -357,6 +402,22 @@ impl QuasiStaticReport {
                 b.max_pressure_outer_pa * 1e-6
             );
         }
+        if let Some(r) = &self.rating_life {
+            let f = |v: Option<f64>, unit: &str, p: usize| {
+                v.map_or("— (not covered)".to_string(), |v| {
+                    format!("{v:.p$} {unit}")
+                })
+            };
+            let _ = writeln!(
+                out,
+                "  rating ({}): C_r {}, P_r {}, L10 {} = {}",
+                r.standard,
+                f(r.dynamic_load_rating_n, "N", 0),
+                f(r.equivalent_load_n, "N", 1),
+                f(r.basic_rating_life_mrev, "10^6 rev", 1),
+                f(r.basic_rating_life_h, "h", 0)
+            );
+        }
         crate::quasistatic_films::text(self.films.as_deref(), self.modes.as_ref(), &mut out);
         let _ = writeln!(
             out,
@@ -452,6 +513,8 @@ pub struct SweepRow {
     /// Harris's local power loss (null without a sliding friction).
     pub power_loss_w: Option<f64>,
     pub friction_torque_n_m: Option<f64>,
+    /// ISO 281 basic rating life (null where not covered).
+    pub basic_rating_life_h: Option<f64>,
 }
 
 /// Builds the grid (first sweep outermost) and solves it.
@@ -504,6 +567,8 @@ pub fn run_sweep(
                 stiffness_radial_z_n_per_m: None,
                 power_loss_w: None,
                 friction_torque_n_m: None,
+                basic_rating_life_h: RatingLife::new(case, &p.loads, p.inner_speed)
+                    .basic_rating_life_h,
             };
             if let Ok(sol) = r {
                 let top = sol
@@ -533,13 +598,13 @@ pub fn run_sweep(
 /// CSV text of sweep rows (header + one line per point).
 pub fn sweep_csv(rows: &[SweepRow]) -> String {
     let mut out = String::from(
-        "speed_rpm,force_x_n,force_z_n,converged,cage_speed_rpm,axial_displacement_m,radial_displacement_z_m,max_load_inner_n,max_load_outer_n,contact_angle_inner_deg,contact_angle_outer_deg,stiffness_axial_n_per_m,stiffness_radial_z_n_per_m,power_loss_w,friction_torque_n_m,error\n",
+        "speed_rpm,force_x_n,force_z_n,converged,cage_speed_rpm,axial_displacement_m,radial_displacement_z_m,max_load_inner_n,max_load_outer_n,contact_angle_inner_deg,contact_angle_outer_deg,stiffness_axial_n_per_m,stiffness_radial_z_n_per_m,power_loss_w,friction_torque_n_m,basic_rating_life_h,error\n",
     );
     let f = |v: Option<f64>| v.map(|x| format!("{x:e}")).unwrap_or_default();
     for r in rows {
         let _ = writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
             r.speed_rpm,
             r.force_x_n,
             r.force_z_n,
@@ -555,6 +620,7 @@ pub fn sweep_csv(rows: &[SweepRow]) -> String {
             f(r.stiffness_radial_z_n_per_m),
             f(r.power_loss_w),
             f(r.friction_torque_n_m),
+            f(r.basic_rating_life_h),
             r.error.as_deref().unwrap_or("").replace('"', "'")
         );
     }

@@ -252,3 +252,25 @@ fn undefined_orders_at_rest() {
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains('—') && !text.contains("NaN"), "{text}");
 }
+
+/// ISO 281 rating in `quasistatic` (issue 16): the CWRU 6205's C_r is the
+/// catalogue's 14.0 kN, L10 = (C_r/P_r)³ under its radial load, hours at
+/// its speed; a 15° bearing under axial load is not covered (null).
+#[test]
+fn iso281_rating_life() {
+    let case = rolldyn_case::presets::find("6205").unwrap().text;
+    let v = json(&["quasistatic", "-", "--json"], Some(case));
+    let r = &v["rating_life"];
+    let c = r["dynamic_load_rating_n"].as_f64().unwrap();
+    assert!((c / 14_000.0 - 1.0).abs() < 5e-3, "{c}");
+    let p = r["equivalent_load_n"].as_f64().unwrap();
+    assert!((p - v["radial_load_n"].as_f64().unwrap()).abs() < 1e-9);
+    let l10 = r["basic_rating_life_mrev"].as_f64().unwrap();
+    assert!((l10 / (c / p).powi(3) - 1.0).abs() < 1e-12);
+    let hours = r["basic_rating_life_h"].as_f64().unwrap();
+    let rpm = v["speed_rpm"].as_f64().unwrap();
+    assert!((hours / (l10 * 1e6 / (60.0 * rpm)) - 1.0).abs() < 1e-12);
+    let v = json(&["quasistatic", "--json"], None);
+    assert!(v["rating_life"]["basic_rating_life_h"].is_null());
+    assert!(v["rating_life"]["dynamic_load_rating_n"].as_f64().is_some());
+}

@@ -9,6 +9,7 @@
 //!   contact tables and normal force laws (MODEL §2.1–§2.3);
 //! * [`operating`] — speed profiles and applied loads (MODEL §8);
 //! * [`quasistatic`] — static load distribution and stiffness (MODEL §7);
+//! * [`life`] — basic load rating and rating life (ISO 281);
 //! * [`kinematics`] — pure-rolling speeds, defect frequencies, waviness
 //!   excitation map (MODEL §7);
 //! * [`integrate`] — explicit Runge–Kutta integrators (RK4, Dormand–Prince 5(4));
@@ -32,6 +33,7 @@ pub mod error;
 pub mod geometry;
 pub mod integrate;
 pub mod kinematics;
+pub mod life;
 pub mod lubrication;
 pub mod material;
 pub mod math;
