@@ -77,6 +77,7 @@ use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
 use serde::{Deserialize, Serialize};
 
 mod constraints;
+mod continuation;
 mod newton;
 mod rebuild;
 
@@ -756,63 +757,16 @@ impl QuasiStaticSolver {
                 self.solve_at(self.initial_state(&loads, options, true), &at_rest, options)
             })
             .or_else(|_| self.continue_in_load(&at_rest, options))?;
-        self.continue_in_speed(static_solution, conditions, options)
-    }
-
-    /// Static fallback: from a pure axial load of the same magnitude (all
-    /// balls loaded, an easy solve) to the target loads along
-    /// F(λ) = (1 − λ) F_axial + λ F_target, halving λ's step on failure.
-    fn continue_in_load(
-        &self,
-        at_rest: &Conditions,
-        options: &SolverOptions,
-    ) -> Result<(State, Matrix5, usize, f64, Vec<RingKind>), QuasiStaticError> {
-        let target = at_rest.loads;
-        let magnitude = self.scaled_ring(&Self::applied(&target)).norm();
-        let axial = Loads {
-            force: [magnitude, 0.0, 0.0],
-            moment: [0.0, 0.0],
-        };
-        let blend = |lambda: f64| Loads {
-            force: std::array::from_fn(|i| {
-                (1.0 - lambda) * axial.force[i] + lambda * target.force[i]
-            }),
-            moment: std::array::from_fn(|i| lambda * target.moment[i]),
-        };
-        let mut current = self.solve_at(
-            self.initial_state(&axial, options, false),
-            &Conditions {
-                loads: axial,
-                ..*at_rest
-            },
-            options,
-        )?;
-        let (mut lambda, mut step) = (0.0f64, 1.0f64);
-        while lambda < 1.0 {
-            let next = (lambda + step).min(1.0);
-            let conditions = Conditions {
-                loads: blend(next),
-                ..*at_rest
-            };
-            match self.solve_at(current.0.clone(), &conditions, options) {
-                Ok(solution) => {
-                    let easy = solution.2 <= 8;
-                    current.2 += solution.2;
-                    current = (solution.0, solution.1, current.2, solution.3, solution.4);
-                    lambda = next;
-                    if easy {
-                        step *= 2.0;
-                    }
-                }
-                Err(e) => {
-                    step *= 0.5;
-                    if step < 1e-4 {
-                        return Err(e);
-                    }
-                }
-            }
-        }
-        Ok(current)
+        let path = self
+            .continue_in_speed(static_solution, conditions, options)
+            .or_else(|e| {
+                self.axial_then_load_at_speed(conditions, options)
+                    .map_err(|_| e)
+            })?;
+        let (state, s, iterations, residual, controls) = path;
+        Ok(self.solution(
+            &state, &s, iterations, residual, &controls, conditions, options,
+        ))
     }
 
     fn any_contact(&self, state: &State, options: &SolverOptions) -> bool {
@@ -820,111 +774,6 @@ impl QuasiStaticSolver {
         state.balls.iter().enumerate().any(|(j, y)| {
             let (_, inner, outer) = self.contacts(y, self.azimuth(j, options), &ring);
             inner.in_contact() || outer.in_contact()
-        })
-    }
-
-    /// Continuation from the converged static solution `from` to the target
-    /// speed, doubling the speed step on success and halving it on failure.
-    fn continue_in_speed(
-        &self,
-        from: (State, Matrix5, usize, f64, Vec<RingKind>),
-        conditions: &Conditions,
-        options: &SolverOptions,
-    ) -> Result<Equilibrium, QuasiStaticError> {
-        let target = conditions.inner_speed;
-        let (mut state, mut s, mut iterations, mut residual, mut controls) = from;
-        let mut current = 0.0f64;
-        let mut step = target;
-        let min_step = 1e-4 * target.abs();
-        while current != target {
-            let next = if (target - current).abs() <= step.abs() {
-                target
-            } else {
-                current + step
-            };
-            let trial_conditions = Conditions {
-                inner_speed: next,
-                ..*conditions
-            };
-            let guess = if current == 0.0 {
-                let seated = self.seat_free_balls(&state, next, options);
-                self.with_kinematic_speeds(&seated, &controls, next, options)
-            } else {
-                let setup = Setup {
-                    conditions: &Conditions {
-                        inner_speed: current,
-                        ..*conditions
-                    },
-                    options,
-                    extension: SPEED_EXTENSION,
-                };
-                match self.speed_tangent(&state, &controls, setup) {
-                    Some(t) => State {
-                        balls: state
-                            .balls
-                            .iter()
-                            .zip(&t.balls)
-                            .map(|(y, d)| y + (next - current) * d)
-                            .collect(),
-                        ring: state.ring + (next - current) * t.ring,
-                    },
-                    None => self.with_kinematic_speeds(&state, &controls, next, options),
-                }
-            };
-            match self.solve_at(guess, &trial_conditions, options) {
-                Ok((st, ss, it, res, ctl)) => {
-                    state = st;
-                    s = ss;
-                    iterations += it;
-                    residual = res;
-                    controls = ctl;
-                    current = next;
-                    // Grow the step only after an easy solve.
-                    if it <= 8 {
-                        step *= 2.0;
-                    }
-                }
-                Err(e) => {
-                    step *= 0.5;
-                    if step.abs() < min_step {
-                        return Err(e);
-                    }
-                }
-            }
-        }
-        Ok(self.solution(
-            &state, &s, iterations, residual, &controls, conditions, options,
-        ))
-    }
-
-    /// Tangent of the solution path with respect to the inner-ring speed,
-    /// dy/dω_i = −J⁻¹ ∂R/∂ω_i, from the same bordered solve as a Newton
-    /// step (Euler predictor of the speed continuation).
-    fn speed_tangent(
-        &self,
-        state: &State,
-        controls: &[RingKind],
-        setup: Setup<'_>,
-    ) -> Option<State> {
-        let mut asm = self.assemble(state, controls, setup);
-        let ring = RingDisplacement::from_array(state.ring.into());
-        let half = 0.5 * self.geometry.ball_diameter;
-        for (j, y) in state.balls.iter().enumerate() {
-            let phi = self.azimuth(j, setup.options);
-            let (ex, er) = Self::basis(phi);
-            let (_, inner, _) = self.contacts(y, phi, &ring);
-            let mut dr = Vector5::zeros();
-            dr[2] = -(y[1] + half * inner.normal.dot(&er));
-            if controls[j] == RingKind::Inner {
-                dr[4] = -inner.normal.dot(&ex);
-            }
-            asm.ball[j] = dr;
-        }
-        asm.ring = Vector5::zeros();
-        let (dy, du, _) = Self::newton_step(&asm)?;
-        Some(State {
-            balls: dy,
-            ring: du,
         })
     }
 

@@ -1,0 +1,229 @@
+//! Continuation paths of the quasi-static solve (MODEL §7): in speed from
+//! the static solution (Euler predictor on the solution's speed tangent,
+//! step doubled after easy solves and halved on failure), in load from an
+//! equivalent pure axial load, and the fallback that takes the axial load
+//! to speed first and then blends to the target loads at speed.
+
+use super::{
+    Conditions, Matrix5, QuasiStaticError, QuasiStaticSolver, SPEED_EXTENSION, Setup, State,
+    Vector5,
+};
+use crate::geometry::RingKind;
+use crate::operating::Loads;
+use crate::quasistatic::SolverOptions;
+use crate::quasistatic::ring_contact::RingDisplacement;
+
+/// A converged point of a path: state, Schur complement, iterations,
+/// residual, raceway controls.
+pub(super) type Path = (State, Matrix5, usize, f64, Vec<RingKind>);
+
+impl QuasiStaticSolver {
+    /// Static fallback: from a pure axial load of the same magnitude (all
+    /// balls loaded, an easy solve) to the target loads along
+    /// F(λ) = (1 − λ) F_axial + λ F_target, halving λ's step on failure.
+    pub(super) fn continue_in_load(
+        &self,
+        at_rest: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Path, QuasiStaticError> {
+        let axial = self.equivalent_axial(&at_rest.loads);
+        let current = self.solve_at(
+            self.initial_state(&axial, options, false),
+            &Conditions {
+                loads: axial,
+                ..*at_rest
+            },
+            options,
+        )?;
+        self.blend_loads(current, &axial, at_rest, options)
+    }
+
+    /// A pure axial load of the target's magnitude (forces, moments over
+    /// d_m/2): every ball loaded, an easy solve.
+    fn equivalent_axial(&self, target: &Loads) -> Loads {
+        let magnitude = self.scaled_ring(&Self::applied(target)).norm();
+        Loads {
+            force: [magnitude, 0.0, 0.0],
+            moment: [0.0, 0.0],
+        }
+    }
+
+    /// Continuation in load at the conditions' speed from the solution
+    /// `current` under `axial` to the target loads along
+    /// F(λ) = (1 − λ) F_axial + λ F_target, halving λ's step on failure.
+    fn blend_loads(
+        &self,
+        mut current: Path,
+        axial: &Loads,
+        at: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Path, QuasiStaticError> {
+        let target = at.loads;
+        let blend = |lambda: f64| Loads {
+            force: std::array::from_fn(|i| {
+                (1.0 - lambda) * axial.force[i] + lambda * target.force[i]
+            }),
+            moment: std::array::from_fn(|i| lambda * target.moment[i]),
+        };
+        let (mut lambda, mut step) = (0.0f64, 1.0f64);
+        while lambda < 1.0 {
+            let next = (lambda + step).min(1.0);
+            let conditions = Conditions {
+                loads: blend(next),
+                ..*at
+            };
+            match self.solve_at(current.0.clone(), &conditions, options) {
+                Ok(solution) => {
+                    let easy = solution.2 <= 8;
+                    current.2 += solution.2;
+                    current = (solution.0, solution.1, current.2, solution.3, solution.4);
+                    lambda = next;
+                    if easy {
+                        step *= 2.0;
+                    }
+                }
+                Err(e) => {
+                    step *= 0.5;
+                    if step < 1e-4 {
+                        return Err(e);
+                    }
+                }
+            }
+        }
+        Ok(current)
+    }
+
+    /// Continuation from the converged static solution `from` to the target
+    /// speed, doubling the speed step on success and halving it on failure.
+    pub(super) fn continue_in_speed(
+        &self,
+        from: Path,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Path, QuasiStaticError> {
+        let target = conditions.inner_speed;
+        let (mut state, mut s, mut iterations, mut residual, mut controls) = from;
+        let mut current = 0.0f64;
+        let mut step = target;
+        let min_step = 1e-4 * target.abs();
+        while current != target {
+            let next = if (target - current).abs() <= step.abs() {
+                target
+            } else {
+                current + step
+            };
+            let trial_conditions = Conditions {
+                inner_speed: next,
+                ..*conditions
+            };
+            let guess = if current == 0.0 {
+                let seated = self.seat_free_balls(&state, next, options);
+                self.with_kinematic_speeds(&seated, &controls, next, options)
+            } else {
+                let setup = Setup {
+                    conditions: &Conditions {
+                        inner_speed: current,
+                        ..*conditions
+                    },
+                    options,
+                    extension: SPEED_EXTENSION,
+                };
+                match self.speed_tangent(&state, &controls, setup) {
+                    Some(t) => State {
+                        balls: state
+                            .balls
+                            .iter()
+                            .zip(&t.balls)
+                            .map(|(y, d)| y + (next - current) * d)
+                            .collect(),
+                        ring: state.ring + (next - current) * t.ring,
+                    },
+                    None => self.with_kinematic_speeds(&state, &controls, next, options),
+                }
+            };
+            match self.solve_at(guess, &trial_conditions, options) {
+                Ok((st, ss, it, res, ctl)) => {
+                    state = st;
+                    s = ss;
+                    iterations += it;
+                    residual = res;
+                    controls = ctl;
+                    current = next;
+                    // Grow the step only after an easy solve.
+                    if it <= 8 {
+                        step *= 2.0;
+                    }
+                }
+                Err(e) => {
+                    step *= 0.5;
+                    if step.abs() < min_step {
+                        return Err(e);
+                    }
+                }
+            }
+        }
+        Ok((state, s, iterations, residual, controls))
+    }
+
+    /// Fallback when the speed continuation from the static solution fails
+    /// (light axial with heavy radial load: the unloaded balls' seating at a
+    /// few rpm is ill-conditioned): the equivalent pure axial load taken to
+    /// speed first (every ball loaded), then a continuation in load at speed.
+    pub(super) fn axial_then_load_at_speed(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Path, QuasiStaticError> {
+        let axial = self.equivalent_axial(&conditions.loads);
+        let at_rest = Conditions {
+            loads: axial,
+            inner_speed: 0.0,
+            ..*conditions
+        };
+        let rest = self.solve_at(
+            self.initial_state(&axial, options, false),
+            &at_rest,
+            options,
+        )?;
+        let at_speed = self.continue_in_speed(
+            rest,
+            &Conditions {
+                loads: axial,
+                ..*conditions
+            },
+            options,
+        )?;
+        self.blend_loads(at_speed, &axial, conditions, options)
+    }
+
+    /// Tangent of the solution path with respect to the inner-ring speed,
+    /// dy/dω_i = −J⁻¹ ∂R/∂ω_i, from the same bordered solve as a Newton
+    /// step (Euler predictor of the speed continuation).
+    fn speed_tangent(
+        &self,
+        state: &State,
+        controls: &[RingKind],
+        setup: Setup<'_>,
+    ) -> Option<State> {
+        let mut asm = self.assemble(state, controls, setup);
+        let ring = RingDisplacement::from_array(state.ring.into());
+        let half = 0.5 * self.geometry.ball_diameter;
+        for (j, y) in state.balls.iter().enumerate() {
+            let phi = self.azimuth(j, setup.options);
+            let (ex, er) = Self::basis(phi);
+            let (_, inner, _) = self.contacts(y, phi, &ring);
+            let mut dr = Vector5::zeros();
+            dr[2] = -(y[1] + half * inner.normal.dot(&er));
+            if controls[j] == RingKind::Inner {
+                dr[4] = -inner.normal.dot(&ex);
+            }
+            asm.ball[j] = dr;
+        }
+        asm.ring = Vector5::zeros();
+        let (dy, du, _) = Self::newton_step(&asm)?;
+        Some(State {
+            balls: dy,
+            ring: du,
+        })
+    }
+}
