@@ -184,20 +184,21 @@ fn exit_codes() {
     }
     std::fs::remove_file(&file).ok();
     // A point of issue 16's stress grid that has no converged solution yet
-    // (light axial with a radial load far beyond the 7008C's rating, from
-    // rest by continuation); when the solver learns it, force a failure
-    // another way.
+    // (the 7218B with light axial and heavy radial load, at speed); when the
+    // solver learns it, force a failure another way.
+    let case = rolldyn_case::presets::find("7218B").unwrap().text;
     let o = rolldyn(
         &[
             "quasistatic",
+            "-",
             "--speed",
             "5000 rpm",
             "--axial-load",
             "10 N",
             "--radial-load",
-            "50 kN",
+            "10 kN",
         ],
-        None,
+        Some(case),
     );
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
     assert!(stderr(&o).contains("no equilibrium"), "{}", stderr(&o));
