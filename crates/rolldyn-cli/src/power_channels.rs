@@ -8,7 +8,6 @@
 
 use rolldyn::dynamics::{BearingModel, ThermalCoupling};
 use rolldyn::power::Dissipation;
-use rolldyn::thermal::bearing::NODES;
 use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
 use rolldyn_io::TimeSeries;
@@ -111,12 +110,11 @@ pub struct ThermalRunSummary {
 
 impl From<&ThermalCoupling> for ThermalRunSummary {
     fn from(t: &ThermalCoupling) -> Self {
-        let map = |v: &[f64; 10]| NODES.iter().zip(v).map(|(n, t)| (*n, t - KELVIN)).collect();
         Self {
             updates: t.updates(),
             update_interval_s: t.interval(),
-            initial_temperatures_c: map(t.initial_temperatures()),
-            final_temperatures_c: map(t.temperatures()),
+            initial_temperatures_c: crate::thermal::temperatures(t.initial_temperatures()),
+            final_temperatures_c: crate::thermal::temperatures(t.temperatures()),
             largest_rate_k_per_s: t.largest_rate(),
         }
     }

@@ -65,7 +65,8 @@ pub struct ThermalReport {
     pub transient: Option<Vec<TransientRow>>,
 }
 
-fn temperatures(t: &[f64; 10]) -> BTreeMap<&'static str, f64> {
+/// Node temperatures in °C by node name.
+pub fn temperatures(t: &[f64; 10]) -> BTreeMap<&'static str, f64> {
     NODES.iter().zip(t).map(|(n, v)| (*n, v - KELVIN)).collect()
 }
 

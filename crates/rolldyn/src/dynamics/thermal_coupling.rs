@@ -26,7 +26,7 @@ use super::model::BearingModel;
 use super::race_contact::Want;
 use crate::error::InvalidParameter;
 use crate::integrate::OdeSystem;
-use crate::thermal::bearing::{BearingThermal, HeatSources, NODES, ThermalInputs};
+use crate::thermal::bearing::{BearingThermal, HeatSources, ThermalInputs, node_index};
 use crate::thermal::viscosity::Walther;
 use crate::traction::TractionModel;
 
@@ -118,10 +118,7 @@ impl ThermalCoupling {
 
     /// Temperature of a node \[K\].
     pub fn temperature(&self, node: &str) -> Option<f64> {
-        NODES
-            .iter()
-            .position(|&n| n == node)
-            .map(|i| self.temperatures[i])
+        node_index(node).map(|i| self.temperatures[i])
     }
 
     /// Viscosities at the contact inlets and at the oil node \[Pa·s\]
@@ -227,37 +224,22 @@ impl BearingModel {
     /// Mean semi-axes, entrainment speeds and counts of the loaded contacts.
     fn contact_means(&self, t: f64, y: &[f64], heat: &mut HeatSources) {
         let (inner, outer) = self.ring_motion(t, y);
-        let mut sums = [[0.0; 3]; 2];
-        for j in 0..self.layout.balls {
+        let rings = [(&inner, &self.inner_table), (&outer, &self.outer_table)];
+        heat.set_contact_means((0..self.layout.balls).flat_map(|j| {
             let (ball, _) = self.ball_kinematics(j, y);
-            for (k, (ring, table)) in [(&inner, &self.inner_table), (&outer, &self.outer_table)]
+            rings
                 .into_iter()
                 .enumerate()
-            {
-                let episode = &self.episodes[j][k];
-                if let Some(cn) = self.race_contact(ring, table, episode, &ball, Want::Output) {
+                .filter_map(move |(k, (ring, table))| {
+                    let cn =
+                        self.race_contact(ring, table, &self.episodes[j][k], &ball, Want::Output)?;
                     let o = cn.output;
-                    if o.load <= 0.0 {
-                        continue;
-                    }
-                    let e = table.at(o.angle).at_load(o.load);
-                    sums[k][0] += e.semi_major;
-                    sums[k][1] += e.semi_minor;
-                    sums[k][2] += o.entrainment_speed;
-                    heat.loaded_contacts[k] += 1;
-                }
-            }
-        }
-        for (k, s) in sums.iter().enumerate() {
-            let n = heat.loaded_contacts[k].max(1) as f64;
-            let ellipse = (s[0] / n, s[1] / n);
-            if k == 0 {
-                heat.inner_ellipse = ellipse;
-            } else {
-                heat.outer_ellipse = ellipse;
-            }
-            heat.entrainment_speed[k] = s[2] / n;
-        }
+                    (o.load > 0.0).then(|| {
+                        let e = table.at(o.angle).at_load(o.load);
+                        (k, e.semi_major, e.semi_minor, o.entrainment_speed)
+                    })
+                })
+        }));
     }
 }
 

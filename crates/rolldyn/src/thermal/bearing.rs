@@ -127,6 +127,26 @@ pub struct HeatSources {
     pub cage_speed: f64,
 }
 
+impl HeatSources {
+    /// Sets the loaded contacts' counts, mean semi-axes and mean entrainment
+    /// speeds from `contacts`: (ring 0 inner / 1 outer, a, b, u) per loaded
+    /// contact.
+    pub fn set_contact_means(&mut self, contacts: impl Iterator<Item = (usize, f64, f64, f64)>) {
+        let mut sums = [[0.0; 3]; 2];
+        self.loaded_contacts = [0; 2];
+        for (k, a, b, u) in contacts {
+            sums[k][0] += a;
+            sums[k][1] += b;
+            sums[k][2] += u;
+            self.loaded_contacts[k] += 1;
+        }
+        let mean = |k: usize, i: usize| sums[k][i] / self.loaded_contacts[k].max(1) as f64;
+        self.inner_ellipse = (mean(0, 0), mean(0, 1));
+        self.outer_ellipse = (mean(1, 0), mean(1, 1));
+        self.entrainment_speed = [mean(0, 2), mean(1, 2)];
+    }
+}
+
 /// Nodes of the bearing network, in this order.
 pub const NODES: [&str; 10] = [
     "ball",
@@ -140,6 +160,11 @@ pub const NODES: [&str; 10] = [
     "ambient",
     "oil_inlet",
 ];
+
+/// Index of a node of [`NODES`] by name.
+pub fn node_index(name: &str) -> Option<NodeId> {
+    NODES.iter().position(|&n| n == name)
+}
 
 /// The network of a bearing with its heat sources.
 #[derive(Debug, Clone, PartialEq)]
@@ -174,10 +199,7 @@ impl ThermalSolution {
 
     /// Temperature of a node by name \[K\].
     pub fn temperature(&self, node: &str) -> Option<f64> {
-        NODES
-            .iter()
-            .position(|&n| n == node)
-            .map(|i| self.temperatures[i])
+        node_index(node).map(|i| self.temperatures[i])
     }
 }
 
@@ -356,11 +378,6 @@ impl BearingThermal {
         Ok(ThermalSolution::from(
             &self.network.transient(initial, duration, steps)?,
         ))
-    }
-
-    /// Node index by name.
-    pub fn node(name: &str) -> Option<NodeId> {
-        NODES.iter().position(|&n| n == name)
     }
 }
 

@@ -102,26 +102,14 @@ pub fn heat_sources(
         cage_speed: eq.cage_speed(),
         ..Default::default()
     };
-    let mut sums = [[0.0; 3]; 2];
-    for contacts in contact_motions(geometry, eq) {
-        for (k, m) in contacts.iter().enumerate() {
-            let Some(m) = m else { continue };
-            sums[k][0] += m.solution.hertz.semi_major;
-            sums[k][1] += m.solution.hertz.semi_minor;
-            sums[k][2] += m.entrainment_speed();
-            h.loaded_contacts[k] += 1;
-        }
-    }
-    for (k, sum) in sums.iter().enumerate() {
-        let n = h.loaded_contacts[k].max(1) as f64;
-        let ellipse = (sum[0] / n, sum[1] / n);
-        if k == 0 {
-            h.inner_ellipse = ellipse;
-        } else {
-            h.outer_ellipse = ellipse;
-        }
-        h.entrainment_speed[k] = sum[2] / n;
-    }
+    h.set_contact_means(contact_motions(geometry, eq).iter().flat_map(|contacts| {
+        contacts.iter().enumerate().filter_map(|(k, m)| {
+            m.map(|m| {
+                let e = &m.solution.hertz;
+                (k, e.semi_major, e.semi_minor, m.entrainment_speed())
+            })
+        })
+    }));
     h
 }
 
@@ -186,12 +174,8 @@ pub fn coupled_steady(
     let mut warm_start: Option<Equilibrium> = None;
     let base = QuasiStaticSolver::new(p.geometry, p.ball, p.rings, p.hertz)?;
     for _ in 0..options.max_iterations {
-        let t = |name: &str| {
-            super::bearing::NODES
-                .iter()
-                .position(|&n| n == name)
-                .map_or(reference, |i| temperatures[i])
-        };
+        let t =
+            |name: &str| super::bearing::node_index(name).map_or(reference, |i| temperatures[i]);
         let e = &p.expansion;
         let delta = e.ring
             * ((p.geometry.pitch_diameter + p.geometry.ball_diameter)
