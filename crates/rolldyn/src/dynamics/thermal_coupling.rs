@@ -53,7 +53,7 @@ const MASSIVE: [usize; 5] = [0, 2, 3, 5, 6];
 impl ThermalCoupling {
     /// A coupling for `inputs`, the viscosity law (None: constant
     /// viscosity, temperatures only), update `interval` \[s\], starting
-    /// from `temperatures` (per node of [`NODES`], K).
+    /// from `temperatures` (per node of [`NODES`](crate::thermal::bearing::NODES), K).
     pub fn new(
         inputs: ThermalInputs,
         viscosity: Option<Walther>,
@@ -83,7 +83,7 @@ impl ThermalCoupling {
         })
     }
 
-    /// Node temperatures now \[K\] (order of [`NODES`]).
+    /// Node temperatures now \[K\] (order of [`NODES`](crate::thermal::bearing::NODES)).
     pub fn temperatures(&self) -> &[f64; 10] {
         &self.temperatures
     }
