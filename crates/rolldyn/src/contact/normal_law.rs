@@ -230,6 +230,11 @@ impl ContactEpisode {
     pub fn recorded(&self) -> Option<f64> {
         self.impact_speed
     }
+
+    /// An episode with this record (a restored checkpoint).
+    pub fn with_record(impact_speed: Option<f64>) -> Self {
+        Self { impact_speed }
+    }
 }
 
 #[cfg(test)]

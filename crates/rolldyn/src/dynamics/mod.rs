@@ -22,7 +22,9 @@
 //! | `energy` | mechanical energy, work and dissipation |
 //! | `outputs` | per-contact output samples, pure-rolling reference |
 //! | `thermal_coupling` | the thermal network advanced alongside a run, oil viscosity fed back |
+//! | `checkpoint` | the model's memory (contact episodes, thermal network) in a run's checkpoint |
 
+pub mod checkpoint;
 pub mod drag;
 pub mod energy;
 pub mod layout;

@@ -26,6 +26,7 @@ use super::model::BearingModel;
 use super::race_contact::Want;
 use crate::error::InvalidParameter;
 use crate::integrate::OdeSystem;
+use crate::integrate::checkpoint::{CheckpointError, StateReader, StateWriter};
 use crate::thermal::bearing::{BearingThermal, HeatSources, ThermalInputs, node_index};
 use crate::thermal::viscosity::Walther;
 use crate::traction::TractionModel;
@@ -134,6 +135,41 @@ impl ThermalCoupling {
     }
 }
 
+impl ThermalCoupling {
+    /// Appends the network's evolving state to a checkpoint.
+    pub(super) fn save(&self, out: &mut StateWriter) {
+        out.tag("thermal");
+        for v in [
+            self.next_update,
+            self.last_time,
+            self.last_dissipated,
+            self.largest_rate,
+            self.heat_supplied,
+        ] {
+            out.f64(v);
+        }
+        out.u64(self.updates as u64);
+        out.f64s(&self.temperatures);
+    }
+
+    /// Restores what [`ThermalCoupling::save`] wrote; returns the
+    /// viscosities to apply.
+    pub(super) fn restore(
+        &mut self,
+        input: &mut StateReader,
+    ) -> Result<Option<(f64, f64)>, CheckpointError> {
+        input.tag("thermal")?;
+        self.next_update = input.f64()?;
+        self.last_time = input.f64()?;
+        self.last_dissipated = input.f64()?;
+        self.largest_rate = input.f64()?;
+        self.heat_supplied = input.f64()?;
+        self.updates = input.u64()? as usize;
+        input.f64s_into("thermal node temperatures", &mut self.temperatures)?;
+        Ok(self.viscosities())
+    }
+}
+
 impl BearingModel {
     /// Couples the thermal network to this model's run from time `t0` and
     /// state `y0` (the dissipated energy counts from there) and applies the
@@ -153,7 +189,7 @@ impl BearingModel {
     }
 
     /// η₀ of the EHL traction and of the guide land, if `viscosities`.
-    fn apply_viscosities(&mut self, viscosities: Option<(f64, f64)>) {
+    pub(super) fn apply_viscosities(&mut self, viscosities: Option<(f64, f64)>) {
         let Some((contact, land)) = viscosities else {
             return;
         };

@@ -35,6 +35,18 @@ pub struct RunReport {
     pub samples: usize,
 }
 
+/// Where a run's samples lie: at `t0 + i / sample_rate` for i = 0, 1, …;
+/// `next` is the index of the next sample to deliver.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sampling {
+    /// Time of sample 0 (the run's start) \[s\].
+    pub t0: f64,
+    /// Samples per second \[Hz\].
+    pub rate: f64,
+    /// Index of the next sample to deliver.
+    pub next: u64,
+}
+
 /// Integrates `system` with `integrator` to `t_end`, calling
 /// `on_sample(system, t, y)`
 /// at t0, t0 + Δ, … (Δ = 1/`sample_rate`, the last sample at or before
@@ -49,15 +61,56 @@ pub fn run<S: OdeSystem, I: Integrator>(
     mut on_sample: impl FnMut(&S, f64, &[f64]),
     mut on_progress: impl FnMut(f64),
 ) -> RunReport {
-    let t0 = integrator.t();
-    let dt = 1.0 / sample_rate;
+    let sampling = Sampling {
+        t0: integrator.t(),
+        rate: sample_rate,
+        next: 0,
+    };
+    run_from(
+        system,
+        integrator,
+        t_end,
+        sampling,
+        stop,
+        &mut on_sample,
+        |_, i: &I, _| on_progress(i.t()),
+    )
+}
+
+/// Integrates from the integrator's current point to `t_end`, delivering
+/// the samples of `sampling` from index `sampling.next` on (those at or
+/// before the current time first: sample 0 of a fresh run). After each
+/// accepted step `on_step(system, integrator, next)` sees the whole state
+/// and the index of the next sample: between two calls nothing else
+/// changes, so a checkpoint taken there and restored with
+/// `Sampling { next, .. }` continues the run bit for bit.
+pub fn run_from<S: OdeSystem, I: Integrator>(
+    system: &mut S,
+    integrator: &mut I,
+    t_end: f64,
+    sampling: Sampling,
+    stop: &AtomicBool,
+    mut on_sample: impl FnMut(&S, f64, &[f64]),
+    mut on_step: impl FnMut(&S, &I, u64),
+) -> RunReport {
+    let dt = 1.0 / sampling.rate;
     let mut buffer = vec![0.0; system.dimension()];
-    let mut index = 0u64;
+    let mut index = sampling.next;
     let mut samples = 0usize;
-    let sample_time = |i: u64| t0 + i as f64 * dt;
-    on_sample(system, t0, integrator.y());
-    samples += 1;
-    index += 1;
+    let sample_time = |i: u64| sampling.t0 + i as f64 * dt;
+    // Samples due at the current point (sample 0 of a fresh run).
+    while sample_time(index) <= integrator.t() * (1.0 + 1e-15)
+        && sample_time(index) <= t_end * (1.0 + 1e-12)
+    {
+        if sample_time(index) == integrator.t() {
+            on_sample(system, sample_time(index), integrator.y());
+        } else {
+            integrator.interpolate(sample_time(index), &mut buffer);
+            on_sample(system, sample_time(index), &buffer);
+        }
+        samples += 1;
+        index += 1;
+    }
     let end = loop {
         if integrator.t() >= t_end {
             break RunEnd::Completed;
@@ -76,7 +129,7 @@ pub fn run<S: OdeSystem, I: Integrator>(
             samples += 1;
             index += 1;
         }
-        on_progress(integrator.t());
+        on_step(system, integrator, index);
     };
     RunReport {
         end,

@@ -2,6 +2,7 @@
 //! output (Hairer, Nørsett & Wanner, *Solving Ordinary Differential
 //! Equations I*, 2nd ed., §II.4 step-size control, §II.6 dense output).
 
+use super::checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
 use super::tableau::Tableau;
 use super::{Integrator, OdeSystem};
 
@@ -104,7 +105,7 @@ const PI_BETA: f64 = 0.08;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PiControl {
     /// Error norm of the last accepted step.
-    err_prev: f64,
+    pub(crate) err_prev: f64,
 }
 
 impl PiControl {
@@ -363,6 +364,35 @@ impl ExplicitRk {
             system.rhs(self.t, &self.y, &mut self.f);
             self.stats.rhs_evaluations += 1;
         }
+    }
+}
+
+impl Checkpoint for ExplicitRk {
+    fn save(&self, out: &mut StateWriter) {
+        out.tag(self.tableau.name);
+        for v in [self.t, self.h, self.t_prev, self.h_prev] {
+            out.f64(v);
+        }
+        for v in [&self.y, &self.f, &self.y_prev, &self.f_prev, &self.dense] {
+            out.f64s(v);
+        }
+        out.f64(self.control_state.err_prev);
+        self.stats.save(out);
+    }
+
+    fn restore(&mut self, input: &mut StateReader) -> Result<(), CheckpointError> {
+        input.tag(self.tableau.name)?;
+        self.t = input.f64()?;
+        self.h = input.f64()?;
+        self.t_prev = input.f64()?;
+        self.h_prev = input.f64()?;
+        input.f64s_into("y", &mut self.y)?;
+        input.f64s_into("f", &mut self.f)?;
+        input.f64s_into("y_prev", &mut self.y_prev)?;
+        input.f64s_into("f_prev", &mut self.f_prev)?;
+        input.f64s_into("dense", &mut self.dense)?;
+        self.control_state.err_prev = input.f64()?;
+        self.stats.restore(input)
     }
 }
 

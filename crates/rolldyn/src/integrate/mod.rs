@@ -17,8 +17,12 @@
 //! * [`IntegrationStats`]: steps, rejected steps, RHS evaluations,
 //!   Jacobian evaluations and factorizations.
 //! * [`run`]: to an end time with samples at a fixed rate (dense output),
-//!   a stop flag and progress callbacks.
+//!   a stop flag and progress callbacks; [`run_from`] continues a run
+//!   restored from a [`checkpoint`] on the same sample grid.
+//! * [`Checkpoint`]: the complete state of an integrator or system as
+//!   bytes, so that an interrupted run continues bit-identically.
 
+pub mod checkpoint;
 pub mod driver;
 pub mod explicit;
 pub mod jacobian;
@@ -26,7 +30,8 @@ pub mod linear;
 pub mod rosenbrock;
 pub mod tableau;
 
-pub use driver::{RunEnd, RunReport, run};
+pub use checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
+pub use driver::{RunEnd, RunReport, Sampling, run, run_from};
 pub use explicit::{ExplicitRk, IntegrationError, IntegrationStats, StepControl};
 pub use jacobian::BlockSplit;
 pub use rosenbrock::{ROS34PW2, Rosenbrock, RosenbrockTableau};
@@ -91,6 +96,21 @@ pub enum Solver {
     Explicit(Box<ExplicitRk>),
     /// Linearly implicit Rosenbrock–W.
     Rosenbrock(Box<Rosenbrock>),
+}
+
+impl Checkpoint for Solver {
+    fn save(&self, out: &mut StateWriter) {
+        match self {
+            Self::Explicit(i) => i.save(out),
+            Self::Rosenbrock(i) => i.save(out),
+        }
+    }
+    fn restore(&mut self, input: &mut StateReader) -> Result<(), CheckpointError> {
+        match self {
+            Self::Explicit(i) => i.restore(input),
+            Self::Rosenbrock(i) => i.restore(input),
+        }
+    }
 }
 
 impl Integrator for Solver {

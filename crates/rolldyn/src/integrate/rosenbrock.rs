@@ -24,6 +24,7 @@
 //! dense output (cubic Hermite, order 3), so a step costs 4 right-hand
 //! sides and one factorization.
 
+use super::checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
 use super::explicit::{IntegrationError, IntegrationStats, PiControl};
 use super::jacobian::{JacobianWork, finite_difference};
 use super::linear::{BlockJacobian, BlockLayout, BlockLu};
@@ -386,6 +387,65 @@ impl Rosenbrock {
         if let Some(age) = &mut self.jacobian_age {
             *age += 1;
         }
+    }
+}
+
+impl Checkpoint for Rosenbrock {
+    fn save(&self, out: &mut StateWriter) {
+        out.tag(self.tableau.name);
+        for v in [self.t, self.h, self.t_prev, self.h_prev] {
+            out.f64(v);
+        }
+        for v in [&self.y, &self.f, &self.y_prev, &self.f_prev] {
+            out.f64s(v);
+        }
+        out.f64(self.control_state.err_prev);
+        // Age + 1, 0 for "no Jacobian yet".
+        out.u64(self.jacobian_age.map_or(0, |a| u64::from(a) + 1));
+        out.opt_f64(self.factored_step);
+        let j = &self.jacobian;
+        for part in [&j.diag, &j.upper, &j.lower, &j.border] {
+            out.f64s(part);
+        }
+        self.stats.save(out);
+    }
+
+    /// Restores the state; the iteration matrix is factored again from the
+    /// saved Jacobian and step (the same operations, so the same bits).
+    fn restore(&mut self, input: &mut StateReader) -> Result<(), CheckpointError> {
+        input.tag(self.tableau.name)?;
+        self.t = input.f64()?;
+        self.h = input.f64()?;
+        self.t_prev = input.f64()?;
+        self.h_prev = input.f64()?;
+        input.f64s_into("y", &mut self.y)?;
+        input.f64s_into("f", &mut self.f)?;
+        input.f64s_into("y_prev", &mut self.y_prev)?;
+        input.f64s_into("f_prev", &mut self.f_prev)?;
+        self.control_state.err_prev = input.f64()?;
+        self.jacobian_age = match input.u64()? {
+            0 => None,
+            a => Some(u32::try_from(a - 1).map_err(|_| {
+                CheckpointError::Mismatch(format!("Jacobian age {a} out of range"))
+            })?),
+        };
+        self.factored_step = input.opt_f64()?;
+        let j = &mut self.jacobian;
+        input.f64s_into("jacobian diagonal blocks", &mut j.diag)?;
+        input.f64s_into("jacobian upper border", &mut j.upper)?;
+        input.f64s_into("jacobian lower border", &mut j.lower)?;
+        input.f64s_into("jacobian corner", &mut j.border)?;
+        self.stats.restore(input)?;
+        if let Some(h) = self.factored_step {
+            if self
+                .lu
+                .factor(&self.jacobian, 1.0 / (h * self.coefficients.gamma))
+                .is_err()
+            {
+                self.factored_step = None;
+            }
+        }
+        Ok(())
     }
 }
 

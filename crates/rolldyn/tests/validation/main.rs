@@ -16,6 +16,7 @@ mod b1_energy;
 mod b2_energy_balance;
 mod b3_impact;
 mod b6_stays_at_equilibrium;
+mod b7_resume;
 mod b8_fastsim;
 mod c1_seed000;
 mod c4_seed001_surfaces;

@@ -1,0 +1,50 @@
+//! The bearing model's own memory in a run's checkpoint (issue 17): the
+//! contact-episode records (impact speeds of the Lankarani–Nikravesh,
+//! Hunt–Crossley and Flores laws, MODEL §2.3) and, in a thermally coupled
+//! run, the thermal network's state, from which the viscosities it feeds
+//! back are set again. Everything else the right-hand side reads is the
+//! case's data or the integrator's state.
+
+use super::model::BearingModel;
+use crate::contact::normal_law::ContactEpisode;
+use crate::integrate::checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
+
+impl Checkpoint for BearingModel {
+    fn save(&self, out: &mut StateWriter) {
+        out.tag("bearing_model");
+        out.u64(self.episodes.len() as u64);
+        for episode in self.episodes.iter().flatten() {
+            out.opt_f64(episode.recorded());
+        }
+        out.u64(u64::from(self.thermal.is_some()));
+        if let Some(thermal) = &self.thermal {
+            thermal.save(out);
+        }
+    }
+
+    fn restore(&mut self, input: &mut StateReader) -> Result<(), CheckpointError> {
+        input.tag("bearing_model")?;
+        let balls = input.u64()?;
+        if balls != self.episodes.len() as u64 {
+            return Err(CheckpointError::Mismatch(format!(
+                "{balls} balls saved, the model has {}",
+                self.episodes.len()
+            )));
+        }
+        for episode in self.episodes.iter_mut().flatten() {
+            *episode = ContactEpisode::with_record(input.opt_f64()?);
+        }
+        let coupled = input.u64()? == 1;
+        if coupled != self.thermal.is_some() {
+            return Err(CheckpointError::Mismatch(
+                "thermal coupling differs from the saved run".into(),
+            ));
+        }
+        if let Some(mut thermal) = self.thermal.take() {
+            let viscosities = thermal.restore(input);
+            self.thermal = Some(thermal);
+            self.apply_viscosities(viscosities?);
+        }
+        Ok(())
+    }
+}
