@@ -18,6 +18,11 @@ use std::sync::atomic::AtomicBool;
 
 const RATE: f64 = 20_000.0;
 
+/// Samples (t, y).
+type Samples = Vec<(f64, Vec<f64>)>;
+/// Checkpoint bytes and the index of the next sample.
+type Saved = Option<(Vec<u8>, u64)>;
+
 fn model() -> BearingModel {
     let steel = steel_seed000();
     BearingModel::new(
@@ -38,7 +43,7 @@ fn advance(
     t_end: f64,
     sampling: Sampling,
     checkpoint_at: f64,
-) -> (Vec<(f64, Vec<f64>)>, Option<(Vec<u8>, u64)>) {
+) -> (Samples, Saved) {
     let stop = AtomicBool::new(false);
     let mut samples = Vec::new();
     let mut checkpoint = None;
