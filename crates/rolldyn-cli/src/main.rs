@@ -6,6 +6,7 @@
 //! 130 a run interrupted by Ctrl-C (its files hold what was computed);
 //! 1 an internal error.
 
+mod checkpoint;
 mod contact;
 mod power;
 mod power_channels;
@@ -20,7 +21,7 @@ mod traction_equilibrium;
 mod vibration;
 
 use clap::{Args, Parser, Subcommand};
-use rolldyn_case::units::{Angle, Quantity};
+use rolldyn_case::units::{Angle, Quantity, Time};
 use rolldyn_case::{Case, CaseError, Override, load_case, load_default, presets};
 use std::io::{Read, Write};
 use std::process::ExitCode;
@@ -38,6 +39,14 @@ struct CaseArgs {
     /// Case file (TOML); `-` reads standard input; omitted: the built-in
     /// default case (7008C at 10 000 rpm, F_x = 200 N).
     case: Option<String>,
+    #[command(flatten)]
+    overrides: CaseOverrides,
+}
+
+/// Overrides of a case's values from the command line (also kept in a
+/// run's `run.json`, so that `--resume` rebuilds the same case).
+#[derive(Args, Debug, Clone, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+struct CaseOverrides {
     /// Override the inner-ring speed, e.g. "8000 rpm".
     #[arg(long, value_name = "SPEED")]
     speed: Option<String>,
@@ -126,7 +135,7 @@ enum Command {
         #[command(flatten)]
         case: CaseArgs,
         /// Output directory.
-        #[arg(short, long, value_name = "DIR", default_value = "rolldyn-run")]
+        #[arg(short, long, value_name = "DIR", default_value = DEFAULT_RUN_DIR)]
         output: String,
         /// Simulated time, e.g. "0.01 s" (overrides solver.duration).
         #[arg(long, value_name = "TIME")]
@@ -135,6 +144,16 @@ enum Command {
         /// the limits (docs/cli.md).
         #[arg(long)]
         force: bool,
+        /// Continue the interrupted run in DIR (killed, Ctrl-C) from its
+        /// last checkpoint, bit-identically; the case comes from
+        /// DIR/run.json (give no case, overrides or --output).
+        #[arg(long, value_name = "DIR")]
+        resume: Option<String>,
+        /// Wall time between checkpoints (time series, state), e.g.
+        /// "10 s"; default 30 s. Never more often than keeps their cost
+        /// under 5 % of the run.
+        #[arg(long, value_name = "TIME")]
+        checkpoint_interval: Option<String>,
     },
     /// Traction of one ball–raceway contact with the case's traction model
     /// (FASTSIM, Coulomb, curve, EHL), or of an explicit ellipse with
@@ -161,6 +180,9 @@ enum Command {
     /// Print the JSON Schema of the case-file format.
     Schema,
 }
+
+/// Output directory of `rolldyn run` when none is given.
+const DEFAULT_RUN_DIR: &str = "rolldyn-run";
 
 /// A failure with its exit code.
 enum Failure {
@@ -195,7 +217,7 @@ fn bad_arg(flag: &str, value: &str, rule: impl std::fmt::Display) -> Failure {
     Failure::BadInput(format!("argument {flag} {value}: {rule}"))
 }
 
-impl CaseArgs {
+impl CaseOverrides {
     fn overrides(&self) -> Result<Vec<Override>, Failure> {
         let mut out = Vec::new();
         if let Some(s) = &self.speed {
@@ -219,31 +241,44 @@ impl CaseArgs {
         Ok(out)
     }
 
-    /// Loads and validates the case with its overrides.
-    fn load(&self) -> Result<(String, Case), Failure> {
+    /// Loads and validates a case from its text (None: the built-in
+    /// default case) with these overrides.
+    fn load_text(&self, source: &str, text: Option<&str>) -> Result<Case, Failure> {
         let overrides = self.overrides()?;
+        Ok(match text {
+            None => load_default(&overrides)?,
+            Some(text) => load_case(source, text, &overrides)?,
+        })
+    }
+}
+
+impl CaseArgs {
+    /// The case's source name and text (None: the built-in default).
+    fn read(&self) -> Result<(String, Option<String>), Failure> {
         match self.case.as_deref() {
-            None => Ok((
-                "built-in default case (7008C)".into(),
-                load_default(&overrides)?,
-            )),
+            None => Ok(("built-in default case (7008C)".into(), None)),
+            Some("-") => {
+                let mut text = String::new();
+                std::io::stdin().read_to_string(&mut text).map_err(|e| {
+                    Failure::BadInput(format!("cannot read the case from standard input: {e}"))
+                })?;
+                Ok(("<stdin>".to_string(), Some(text)))
+            }
             Some(path) => {
-                let (name, text) = if path == "-" {
-                    let mut text = String::new();
-                    std::io::stdin().read_to_string(&mut text).map_err(|e| {
-                        Failure::BadInput(format!("cannot read the case from standard input: {e}"))
-                    })?;
-                    ("<stdin>".to_string(), text)
-                } else {
-                    let text = std::fs::read_to_string(path).map_err(|e| {
-                        Failure::BadInput(format!("cannot read case file {path}: {e}"))
-                    })?;
-                    (path.to_string(), text)
-                };
-                let case = load_case(&name, &text, &overrides)?;
-                Ok((name, case))
+                let text = std::fs::read_to_string(path)
+                    .map_err(|e| Failure::BadInput(format!("cannot read case file {path}: {e}")))?;
+                Ok((path.to_string(), Some(text)))
             }
         }
+    }
+
+    /// Loads and validates the case with its overrides.
+    fn load(&self) -> Result<(String, Case), Failure> {
+        // Overrides are checked before a case is read from standard input.
+        self.overrides.overrides()?;
+        let (source, text) = self.read()?;
+        let case = self.overrides.load_text(&source, text.as_deref())?;
+        Ok((source, case))
     }
 }
 
@@ -403,13 +438,68 @@ fn run(cli: Cli) -> Result<(), Failure> {
             output,
             duration,
             force,
+            resume,
+            checkpoint_interval,
         } => {
-            if let Some(d) = duration {
-                case.set.push(format!("solver.duration={d}"));
-            }
-            let (source, case) = case.load()?;
+            let checkpoint_interval = match &checkpoint_interval {
+                None => run::DEFAULT_CHECKPOINT_INTERVAL,
+                Some(t) => {
+                    let v = Quantity::<Time>::parse(t)
+                        .map_err(|e| bad_arg("--checkpoint-interval", t, e))?
+                        .si;
+                    if !(0.0..=1e6).contains(&v) {
+                        return Err(bad_arg(
+                            "--checkpoint-interval",
+                            t,
+                            "must lie in [0, 1e6] s",
+                        ));
+                    }
+                    v
+                }
+            };
+            let resuming = resume.is_some();
+            let (record, output) = match resume {
+                Some(dir) => {
+                    let given = case.case.is_some()
+                        || case.overrides != CaseOverrides::default()
+                        || duration.is_some()
+                        || force
+                        || output != DEFAULT_RUN_DIR;
+                    if given {
+                        return Err(bad_arg(
+                            "--resume",
+                            &dir,
+                            "takes the case, overrides, duration and output directory from DIR/run.json; give none of them",
+                        ));
+                    }
+                    (
+                        checkpoint::RunRecord::read(std::path::Path::new(&dir))
+                            .map_err(Failure::BadInput)?,
+                        dir,
+                    )
+                }
+                None => {
+                    if let Some(d) = duration {
+                        case.overrides.set.push(format!("solver.duration={d}"));
+                    }
+                    case.overrides.overrides()?;
+                    let (source, text) = case.read()?;
+                    (
+                        checkpoint::RunRecord::new(source, text, case.overrides, force),
+                        output,
+                    )
+                }
+            };
+            let case = record
+                .overrides
+                .load_text(&record.source, record.case_text.as_deref())?;
             let dir = std::path::Path::new(&output);
-            let summary = run::run_case(&source, &case, dir, force).map_err(Failure::BadInput)?;
+            let options = run::RunOptions {
+                force: record.force,
+                checkpoint_interval,
+                resume: resuming,
+            };
+            let summary = run::run_case(&record, &case, dir, &options)?;
             let text = format!(
                 "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS, {} Jacobians costing {} RHS, {} factorizations)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e}\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
                 summary.status,
@@ -439,7 +529,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     summary.simulated_time_s
                 ))),
                 "interrupted" => Err(Failure::Interrupted(format!(
-                    "interrupted at t = {:.6} s; {output}/ holds what was computed",
+                    "interrupted at t = {:.6} s; {output}/ holds what was computed; `rolldyn run --resume {output}` continues the run",
                     summary.simulated_time_s
                 ))),
                 _ => Ok(()),

@@ -4,6 +4,8 @@
 //! integration failure (with what was computed). A progress bar shows on a
 //! terminal. Keys are documented in docs/cli.md.
 
+use crate::Failure;
+use crate::checkpoint::{self, CHECKPOINT_FILE, Position, RECORD_FILE, RunRecord};
 use crate::power_channels::PowerSummary;
 use crate::traction_equilibrium::{jones_harris_state, traction_state};
 use crate::vibration::VibrationSummary;
@@ -12,13 +14,15 @@ use nalgebra::Vector3;
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{
-    ExplicitRk, IntegrationStats, ROS34PW2, Rosenbrock, RunEnd, Solver, StepControl, run,
+    ExplicitRk, IntegrationStats, Integrator, ROS34PW2, Rosenbrock, RunEnd, Sampling, Solver,
+    StepControl, run_from,
 };
 use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
 use rolldyn_case::raw::{IntegratorChoice, StartChoice};
-use rolldyn_io::{TimeSeries, write_atomic, write_parquet};
+use rolldyn_io::{TimeSeries, read_parquet, write_atomic, write_parquet};
 use serde::Serialize;
+use std::cell::RefCell;
 use std::io::IsTerminal;
 use std::path::Path;
 use std::sync::Arc;
@@ -369,30 +373,62 @@ fn check_limits(
     Ok(())
 }
 
-pub fn run_case(source: &str, case: &Case, dir: &Path, force: bool) -> Result<Summary, String> {
+/// Wall time between checkpoints when `--checkpoint-interval` is not
+/// given \[s\].
+pub const DEFAULT_CHECKPOINT_INTERVAL: f64 = 30.0;
+/// A checkpoint waits at least this many times as long as the last one
+/// took, so that checkpoints cost at most ~5 % of a run.
+const CHECKPOINT_COST_FACTOR: f64 = 20.0;
+
+/// How `run_case` runs.
+#[derive(Debug, Clone, Copy)]
+pub struct RunOptions {
+    /// Skip the step and memory limits.
+    pub force: bool,
+    /// Wall time between checkpoints \[s\].
+    pub checkpoint_interval: f64,
+    /// Continue from `DIR/checkpoint.bin` instead of starting.
+    pub resume: bool,
+}
+
+/// Runs the case (from `record`) and writes the results into `dir`:
+/// `run.json` first, then at every checkpoint and at the end the time
+/// series, `summary.json` and (unless the run completed) `checkpoint.bin`.
+/// Returns the summary; `Err` is bad input or an unwritable directory
+/// (exit 2; nothing half-written).
+pub fn run_case(
+    record: &RunRecord,
+    case: &Case,
+    dir: &Path,
+    options: &RunOptions,
+) -> Result<Summary, Failure> {
+    let bad = Failure::BadInput;
+    let source = record.source.as_str();
     let params = case
         .dynamics_parameters()
-        .map_err(|e| format!("{}: {}", e.key, e.rule))?;
-    let duration = case
-        .duration
-        .ok_or("solver.duration: missing: give the simulated time (or --duration, e.g. --duration \"0.05 s\")")?;
+        .map_err(|e| bad(format!("{}: {}", e.key, e.rule)))?;
+    let duration = case.duration.ok_or_else(|| bad(
+        "solver.duration: missing: give the simulated time (or --duration, e.g. --duration \"0.05 s\")".into(),
+    ))?;
     let g = &case.bearing.geometry;
     let (ball, rings) = (
         &case.materials.ball.material,
         &case.materials.rings.material,
     );
     let mut model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| bad(e.to_string()))?;
     let y0 = match case.start {
         StartChoice::PureRolling => model.pure_rolling_state([0.0; 5]),
         StartChoice::JonesHarris => jones_harris_state(case, &model, 0.0).map_err(|e| {
-            format!("solver.start = \"jones_harris\": {e}; try start = \"pure_rolling\"")
+            bad(format!(
+                "solver.start = \"jones_harris\": {e}; try start = \"pure_rolling\""
+            ))
         })?,
         StartChoice::QuasistaticTraction => traction_state(case, &model, 0.0)
-            .map_err(|e| format!("solver.start = \"quasistatic_traction\": {e}"))?,
+            .map_err(|e| bad(format!("solver.start = \"quasistatic_traction\": {e}")))?,
     };
     if let Some(interval) = case.thermal.run_coupling {
-        crate::power_channels::couple(case, &mut model, interval, &y0)?;
+        crate::power_channels::couple(case, &mut model, interval, &y0).map_err(bad)?;
     }
     let relative_tolerance = case
         .relative_tolerance
@@ -411,7 +447,7 @@ pub fn run_case(source: &str, case: &Case, dir: &Path, force: bool) -> Result<Su
         } else {
             DEFAULT_MAX_STEP
         });
-    if !force {
+    if !options.force {
         let (step, key) = match choice {
             IntegratorChoice::Rk4 => (case.time_step.unwrap_or(1e-7), "solver.time_step"),
             _ => (max_step, "solver.max_step"),
@@ -424,7 +460,8 @@ pub fn run_case(source: &str, case: &Case, dir: &Path, force: bool) -> Result<Su
             key,
             case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE),
             channels,
-        )?;
+        )
+        .map_err(bad)?;
     }
     let (solver, integrator) = match choice {
         IntegratorChoice::Auto => unreachable!("resolved above"),
@@ -470,8 +507,68 @@ pub fn run_case(source: &str, case: &Case, dir: &Path, force: bool) -> Result<Su
             "ros34pw2",
         ),
     };
-    let mut solver = solver.map_err(|e| e.to_string())?;
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let mut solver = solver.map_err(|e| bad(e.to_string()))?;
+    let mut channels = Channels::new(
+        g.ball_count,
+        matches!(params.traction, TractionModel::Fastsim(_)),
+        model.thermal().is_some(),
+        case.power_per_ball,
+        model.layout().len(),
+    );
+    let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
+    let record_hash = record.hash();
+    let write = |name: &str, bytes: &[u8]| {
+        write_atomic(&dir.join(name), bytes).map_err(|e| bad(e.to_string()))
+    };
+    let (sampling, wall_before) = if options.resume {
+        let position =
+            checkpoint::restore(dir, record_hash, &mut solver, &mut model).map_err(bad)?;
+        let path = dir.join("timeseries.parquet");
+        let mut series = read_parquet(&path).map_err(|e| bad(format!("--resume: {e}")))?;
+        if series.names() != channels.series.names() || (series.len() as u64) < position.rows {
+            return Err(bad(format!(
+                "--resume: {} does not hold the checkpoint's {} rows of this run's channels",
+                path.display(),
+                position.rows
+            )));
+        }
+        series.truncate(position.rows as usize);
+        channels.series = series;
+        (
+            Sampling {
+                t0: 0.0,
+                rate: sample_rate,
+                next: position.next_sample,
+            },
+            position.wall_time,
+        )
+    } else {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| bad(format!("cannot create {}: {e}", dir.display())))?;
+        // A new run in an old directory: its checkpoint is no longer valid.
+        match std::fs::remove_file(dir.join(CHECKPOINT_FILE)) {
+            Ok(()) => {}
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
+            Err(e) => {
+                return Err(bad(format!(
+                    "cannot remove the old checkpoint in {}: {e}",
+                    dir.display()
+                )));
+            }
+        }
+        write(
+            RECORD_FILE,
+            record.to_json().map_err(Failure::Internal)?.as_bytes(),
+        )?;
+        (
+            Sampling {
+                t0: 0.0,
+                rate: sample_rate,
+                next: 0,
+            },
+            0.0,
+        )
+    };
 
     let stop = Arc::new(AtomicBool::new(false));
     {
@@ -492,26 +589,34 @@ pub fn run_case(source: &str, case: &Case, dir: &Path, force: bool) -> Result<Su
         None
     };
 
-    let mut channels = Channels::new(
-        g.ball_count,
-        matches!(params.traction, TractionModel::Fastsim(_)),
-        model.thermal().is_some(),
-        case.power_per_ball,
-        model.layout().len(),
-    );
     let mut row = Vec::with_capacity(channels.series.width());
     let mut loads = vec![ContactSample::default(); g.ball_count];
-    let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
     let start = Instant::now();
+    let output = Output {
+        source,
+        case,
+        dir,
+        duration,
+        integrator,
+        record_hash,
+    };
+    let channels = RefCell::new(channels);
     let mut last_draw = 0.0;
-    let report = run(
+    // A fresh run delivers sample 0 before its first step.
+    let mut next_sample = sampling.next + u64::from(!options.resume);
+    let mut last_checkpoint = Instant::now();
+    let mut checkpoint_cost = 0.0;
+    let mut checkpoint_error = None;
+    let report = run_from(
         &mut model,
         &mut solver,
         duration,
-        sample_rate,
+        sampling,
         &stop,
-        |m, t, y| channels.record(m, t, y, &mut row, &mut loads),
-        |t| {
+        |m, t, y| channels.borrow_mut().record(m, t, y, &mut row, &mut loads),
+        |m, s, next| {
+            next_sample = next;
+            let t = s.t();
             if let Some(bar) = &bar {
                 if t - last_draw >= duration / 1000.0 {
                     last_draw = t;
@@ -519,34 +624,122 @@ pub fn run_case(source: &str, case: &Case, dir: &Path, force: bool) -> Result<Su
                     bar.set_message(format!("t = {:.4} s", t));
                 }
             }
+            let since = last_checkpoint.elapsed().as_secs_f64();
+            if checkpoint_error.is_none()
+                && since
+                    >= options
+                        .checkpoint_interval
+                        .max(CHECKPOINT_COST_FACTOR * checkpoint_cost)
+            {
+                let begun = Instant::now();
+                let wall = wall_before + start.elapsed().as_secs_f64();
+                let series = channels.borrow();
+                let position = Position {
+                    next_sample: next,
+                    rows: series.series.len() as u64,
+                    wall_time: wall,
+                };
+                checkpoint_error = output
+                    .write(m, s, &series.series, None, Some(position), wall)
+                    .err();
+                checkpoint_cost = begun.elapsed().as_secs_f64();
+                last_checkpoint = Instant::now();
+            }
         },
     );
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    let wall = start.elapsed().as_secs_f64();
-    let summary = summarise(
-        source,
-        case,
-        &model,
-        &channels.series,
-        duration,
-        wall,
-        integrator,
-        report.stats,
-        &report.end,
-    );
-    let metadata = [
-        ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
-        ("case", source.to_string()),
-        ("title", case.title.clone().unwrap_or_default()),
-        ("status", summary.status.to_string()),
-    ];
-    write_parquet(&dir.join("timeseries.parquet"), &channels.series, &metadata)
-        .map_err(|e| e.to_string())?;
-    let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
-    write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes()).map_err(|e| e.to_string())?;
+    if let Some(e) = checkpoint_error {
+        return Err(e);
+    }
+    let wall = wall_before + start.elapsed().as_secs_f64();
+    let series = channels.into_inner().series;
+    // An interrupted run keeps a checkpoint at its last step; a completed
+    // one needs none; a failed one keeps its last periodic checkpoint.
+    let position = matches!(report.end, RunEnd::Interrupted { .. }).then_some(Position {
+        next_sample,
+        rows: series.len() as u64,
+        wall_time: wall,
+    });
+    let summary = output.write(&model, &solver, &series, Some(&report.end), position, wall)?;
+    if report.end == RunEnd::Completed {
+        match std::fs::remove_file(dir.join(CHECKPOINT_FILE)) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                return Err(bad(format!(
+                    "cannot remove {}: {e}",
+                    dir.join(CHECKPOINT_FILE).display()
+                )));
+            }
+            _ => {}
+        }
+    }
     Ok(summary)
+}
+
+/// What the run's files are written from.
+struct Output<'a> {
+    source: &'a str,
+    case: &'a Case,
+    dir: &'a Path,
+    duration: f64,
+    integrator: &'static str,
+    record_hash: u64,
+}
+
+impl Output<'_> {
+    /// Writes the time series, the checkpoint (when `position` is given)
+    /// and `summary.json`, each atomically, in that order. `end` is None
+    /// for a checkpoint during the run: the summary then says `partial`.
+    fn write(
+        &self,
+        model: &BearingModel,
+        solver: &Solver,
+        series: &TimeSeries,
+        end: Option<&RunEnd>,
+        position: Option<Position>,
+        wall: f64,
+    ) -> Result<Summary, Failure> {
+        let during = RunEnd::Completed;
+        let mut summary = summarise(
+            self.source,
+            self.case,
+            model,
+            series,
+            self.duration,
+            wall,
+            self.integrator,
+            solver.stats(),
+            end.unwrap_or(&during),
+        );
+        if end.is_none() {
+            summary.status = "partial";
+            summary.error = Some(format!(
+                "checkpoint at t = {:.6} s of a run in progress (or killed); `rolldyn run --resume {}` continues it",
+                solver.t(),
+                self.dir.display()
+            ));
+        }
+        let metadata = [
+            ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
+            ("case", self.source.to_string()),
+            ("title", self.case.title.clone().unwrap_or_default()),
+            ("status", summary.status.to_string()),
+        ];
+        let bad = |e: String| Failure::BadInput(e);
+        write_parquet(&self.dir.join("timeseries.parquet"), series, &metadata)
+            .map_err(|e| bad(e.to_string()))?;
+        if let Some(position) = position {
+            let bytes = checkpoint::encode(self.record_hash, position, solver, model);
+            write_atomic(&self.dir.join(CHECKPOINT_FILE), &bytes)
+                .map_err(|e| bad(e.to_string()))?;
+        }
+        let json =
+            serde_json::to_string_pretty(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
+        write_atomic(&self.dir.join("summary.json"), (json + "\n").as_bytes())
+            .map_err(|e| bad(e.to_string()))?;
+        Ok(summary)
+    }
 }
 
 #[allow(clippy::too_many_arguments)]

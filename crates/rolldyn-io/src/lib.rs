@@ -107,6 +107,19 @@ impl TimeSeries {
         }
     }
 
+    /// Keeps the first `rows` samples (a resumed run drops what was
+    /// recorded after its checkpoint).
+    pub fn truncate(&mut self, rows: usize) {
+        for c in &mut self.columns {
+            c.truncate(rows);
+        }
+    }
+
+    /// Channel units, in channel order.
+    pub fn units(&self) -> &[String] {
+        &self.units
+    }
+
     /// Channel names.
     pub fn names(&self) -> &[String] {
         &self.names
@@ -121,8 +134,12 @@ impl TimeSeries {
     }
 }
 
-/// Writes `bytes` to `path` atomically (temporary file + rename).
+/// Writes `bytes` to `path` atomically: a temporary file in the same
+/// directory, flushed to the disk, then renamed over `path` (and the
+/// directory flushed), so that a reader, a killed process or a power
+/// loss leaves either the old file or the new one, never a part.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+    use std::io::Write;
     let io = |source| OutputError::Io {
         path: path.display().to_string(),
         source,
@@ -132,9 +149,23 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
         path.file_name()
             .map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned())
     ));
-    std::fs::write(&tmp, bytes).map_err(io)?;
-    std::fs::rename(&tmp, path).map_err(io)
+    let mut file = std::fs::File::create(&tmp).map_err(io)?;
+    file.write_all(bytes).map_err(io)?;
+    file.sync_all().map_err(io)?;
+    drop(file);
+    std::fs::rename(&tmp, path).map_err(io)?;
+    // The rename itself reaches the disk with the directory (best effort:
+    // not every platform opens directories).
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        if let Ok(d) = std::fs::File::open(dir) {
+            let _ = d.sync_all();
+        }
+    }
+    Ok(())
 }
+
+/// Rows per Parquet row group: readers can stream a long run's file.
+pub const ROW_GROUP_ROWS: usize = 16_384;
 
 /// Writes `series` as Parquet to `path` atomically, with file metadata.
 pub fn write_parquet(
@@ -169,6 +200,7 @@ pub fn write_parquet(
     let props = WriterProperties::builder()
         .set_compression(Compression::ZSTD(ZstdLevel::default()))
         .set_key_value_metadata(Some(kv))
+        .set_max_row_group_row_count(Some(ROW_GROUP_ROWS))
         .build();
     let mut bytes = Vec::new();
     {

@@ -1,0 +1,191 @@
+//! Nothing lost (issue 17): the files that let `rolldyn run --resume DIR`
+//! continue an interrupted run bit-identically.
+//!
+//! * `DIR/run.json` ([`RunRecord`]): how the run was asked for — the case
+//!   text as read (not its path: the file may change), the command-line
+//!   overrides and `--force`. Written once, before the integration starts.
+//! * `DIR/checkpoint.bin`: the integrator's and the model's complete state
+//!   ([`rolldyn::integrate::Checkpoint`]), the index of the next sample,
+//!   the number of rows of `timeseries.parquet` that belong to it and the
+//!   wall time so far, tied to `run.json` by a hash.
+//!
+//! A checkpoint writes `timeseries.parquet` (every row so far),
+//! `checkpoint.bin` and `summary.json` (status `partial`), each
+//! atomically and in that order: after a kill at any moment the Parquet
+//! file holds at least the checkpoint's rows, and a resume reads back
+//! exactly those.
+
+use rolldyn::dynamics::BearingModel;
+use rolldyn::integrate::{Checkpoint, Solver, StateReader, StateWriter};
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// File names in a run directory.
+pub const RECORD_FILE: &str = "run.json";
+/// The checkpoint's file name.
+pub const CHECKPOINT_FILE: &str = "checkpoint.bin";
+/// Version of `run.json` and `checkpoint.bin`.
+const FORMAT: u64 = 1;
+/// First part of a checkpoint.
+const TAG: &str = "rolldyn-run-checkpoint";
+
+/// `run.json`: how a run was asked for.
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct RunRecord {
+    /// File format version.
+    pub format: u64,
+    /// rolldyn version that started the run.
+    pub rolldyn_version: String,
+    /// Where the case came from (file name, `<stdin>`, built-in default).
+    pub source: String,
+    /// The case text as read; null for the built-in default case.
+    pub case_text: Option<String>,
+    /// Command-line overrides in the order applied (`--speed`, `--set`, …).
+    pub overrides: crate::CaseOverrides,
+    /// Whether the run was started with `--force`.
+    pub force: bool,
+}
+
+impl RunRecord {
+    /// A record of a new run.
+    pub fn new(
+        source: String,
+        case_text: Option<String>,
+        overrides: crate::CaseOverrides,
+        force: bool,
+    ) -> Self {
+        Self {
+            format: FORMAT,
+            rolldyn_version: env!("CARGO_PKG_VERSION").to_string(),
+            source,
+            case_text,
+            overrides,
+            force,
+        }
+    }
+
+    /// The record's JSON text.
+    pub fn to_json(&self) -> Result<String, String> {
+        serde_json::to_string_pretty(self)
+            .map(|t| t + "\n")
+            .map_err(|e| e.to_string())
+    }
+
+    /// Reads `DIR/run.json`.
+    pub fn read(dir: &Path) -> Result<Self, String> {
+        let path = dir.join(RECORD_FILE);
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            format!(
+                "--resume {}: cannot read {}: {e} (only a directory written by `rolldyn run` can be resumed)",
+                dir.display(),
+                path.display()
+            )
+        })?;
+        let record: Self = serde_json::from_str(&text).map_err(|e| {
+            format!(
+                "--resume {}: {} is not a run record: {e}",
+                dir.display(),
+                path.display()
+            )
+        })?;
+        if record.format != FORMAT {
+            return Err(format!(
+                "--resume {}: run record format {} (this rolldyn reads {FORMAT})",
+                dir.display(),
+                record.format
+            ));
+        }
+        Ok(record)
+    }
+
+    /// A hash of the record that ties a checkpoint to it (FNV-1a of the
+    /// JSON text).
+    pub fn hash(&self) -> u64 {
+        let text = self.to_json().unwrap_or_default();
+        text.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+            (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+        })
+    }
+}
+
+/// Where a checkpoint leaves the run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Position {
+    /// Index of the next sample.
+    pub next_sample: u64,
+    /// Rows of the time series that belong to the checkpoint.
+    pub rows: u64,
+    /// Wall time spent so far \[s\].
+    pub wall_time: f64,
+}
+
+/// The bytes of a checkpoint.
+pub fn encode(
+    record_hash: u64,
+    position: Position,
+    solver: &Solver,
+    model: &BearingModel,
+) -> Vec<u8> {
+    let mut w = StateWriter::new();
+    w.tag(TAG);
+    w.u64(FORMAT);
+    w.u64(record_hash);
+    w.u64(position.next_sample);
+    w.u64(position.rows);
+    w.f64(position.wall_time);
+    solver.save(&mut w);
+    model.save(&mut w);
+    w.into_bytes()
+}
+
+/// Restores `solver` and `model` (built from the same record) from
+/// `DIR/checkpoint.bin`; returns where it leaves the run.
+pub fn restore(
+    dir: &Path,
+    record_hash: u64,
+    solver: &mut Solver,
+    model: &mut BearingModel,
+) -> Result<Position, String> {
+    let path = dir.join(CHECKPOINT_FILE);
+    let bytes = std::fs::read(&path).map_err(|e| {
+        format!(
+            "--resume {}: cannot read {}: {e} (a completed run has none)",
+            dir.display(),
+            path.display()
+        )
+    })?;
+    let bad = |e: rolldyn::integrate::CheckpointError| {
+        format!("--resume {}: {}: {e}", dir.display(), path.display())
+    };
+    let mut r = StateReader::new(&bytes);
+    r.tag(TAG).map_err(bad)?;
+    if r.u64().map_err(bad)? != FORMAT {
+        return Err(format!(
+            "--resume {}: checkpoint of another format",
+            dir.display()
+        ));
+    }
+    if r.u64().map_err(bad)? != record_hash {
+        return Err(format!(
+            "--resume {}: {} does not belong to {} (changed since the checkpoint)",
+            dir.display(),
+            path.display(),
+            RECORD_FILE
+        ));
+    }
+    let position = Position {
+        next_sample: r.u64().map_err(bad)?,
+        rows: r.u64().map_err(bad)?,
+        wall_time: r.f64().map_err(bad)?,
+    };
+    solver.restore(&mut r).map_err(bad)?;
+    model.restore(&mut r).map_err(bad)?;
+    if !r.is_done() {
+        return Err(format!(
+            "--resume {}: {} has trailing bytes",
+            dir.display(),
+            path.display()
+        ));
+    }
+    Ok(position)
+}
