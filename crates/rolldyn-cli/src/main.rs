@@ -8,6 +8,7 @@
 
 mod checkpoint;
 mod contact;
+mod finite;
 mod power;
 mod power_channels;
 mod quasistatic;
@@ -304,7 +305,7 @@ fn emit(text: &str) -> Result<(), Failure> {
 }
 
 fn json<T: serde::Serialize>(value: &T) -> Result<(), Failure> {
-    let text = serde_json::to_string_pretty(value).map_err(|e| Failure::Internal(e.to_string()))?;
+    let text = crate::finite::to_json(value).map_err(|e| Failure::Internal(e.to_string()))?;
     emit(&(text + "\n"))
 }
 
@@ -409,8 +410,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 let dir = std::path::Path::new(&output);
                 std::fs::create_dir_all(dir)
                     .map_err(|e| Failure::BadInput(format!("cannot create {output}: {e}")))?;
-                let json_text = serde_json::to_string_pretty(&rows)
-                    .map_err(|e| Failure::Internal(e.to_string()))?;
+                let json_text =
+                    crate::finite::to_json(&rows).map_err(|e| Failure::Internal(e.to_string()))?;
                 let write = |name: &str, text: &str| {
                     rolldyn_io::write_atomic(&dir.join(name), text.as_bytes()).map_err(|e| {
                         Failure::BadInput(format!("cannot write {output}/{name}: {e}"))

@@ -120,7 +120,11 @@ impl RatingLife {
         let p =
             iso281::equivalent_load(loads.force[1].hypot(loads.force[2]), loads.force[0], alpha)
                 .filter(|p| *p > 0.0);
-        let l10 = c.zip(p).map(|(c, p)| iso281::basic_rating_life(c, p));
+        // A load so small that the life overflows has none (null).
+        let l10 = c
+            .zip(p)
+            .map(|(c, p)| iso281::basic_rating_life(c, p))
+            .filter(|l| l.is_finite());
         Self {
             standard: "ISO 281:2007",
             dynamic_load_rating_n: c,
@@ -128,7 +132,8 @@ impl RatingLife {
             basic_rating_life_mrev: l10,
             basic_rating_life_h: l10
                 .filter(|_| speed != 0.0)
-                .map(|l| l * 1e6 / (speed.abs() / RPM * 60.0)),
+                .map(|l| l * 1e6 / (speed.abs() / RPM * 60.0))
+                .filter(|h| h.is_finite()),
         }
     }
 }

@@ -5,7 +5,7 @@
 use rolldyn::contact::table::RacewayContactModel;
 use rolldyn::contact::{Curvature, HertzCoefficients};
 use rolldyn::geometry::{Clearance, RingKind};
-use rolldyn::kinematics::{Frequencies, Orders, WavyPart, waviness_frequencies};
+use rolldyn::kinematics::{Frequencies, WavyPart, waviness_frequencies};
 use rolldyn::material::effective_modulus;
 use rolldyn_case::Case;
 use rolldyn_case::presets::Preset;
@@ -200,6 +200,27 @@ pub struct WavinessEntry {
 }
 
 /// `rolldyn frequencies` output.
+/// Orders (frequency / f_i); None where undefined (0 rpm: JSON null).
+#[derive(Serialize)]
+pub struct OrderReport {
+    pub cage: Option<f64>,
+    pub bpfo: Option<f64>,
+    pub bpfi: Option<f64>,
+    pub ball_spin: Option<f64>,
+}
+
+impl From<rolldyn::kinematics::Orders> for OrderReport {
+    fn from(o: rolldyn::kinematics::Orders) -> Self {
+        let defined = |v: f64| v.is_finite().then_some(v);
+        Self {
+            cage: defined(o.cage),
+            bpfo: defined(o.bpfo),
+            bpfi: defined(o.bpfi),
+            ball_spin: defined(o.ball_spin),
+        }
+    }
+}
+
 #[derive(Serialize)]
 pub struct FrequencyReport {
     pub speed_rpm: f64,
@@ -211,7 +232,7 @@ pub struct FrequencyReport {
     pub bpfi_hz: f64,
     pub ball_spin_hz: f64,
     pub ball_defect_hz: f64,
-    pub orders: Orders,
+    pub orders: OrderReport,
     pub waviness: Vec<WavinessEntry>,
     #[serde(skip)]
     from_profile: bool,
@@ -269,7 +290,7 @@ impl FrequencyReport {
             bpfi_hz: f.bpfi_hz,
             ball_spin_hz: f.ball_spin_hz,
             ball_defect_hz: 2.0 * f.ball_spin_hz,
-            orders: f.orders(),
+            orders: OrderReport::from(f.orders()),
             waviness,
             from_profile,
         })
@@ -289,21 +310,21 @@ impl FrequencyReport {
         );
         let o = &self.orders;
         let rows = [
-            ("shaft f_i", self.shaft_hz, 1.0),
+            ("shaft f_i", self.shaft_hz, Some(1.0)),
             ("cage f_c (FTF)", self.cage_hz, o.cage),
             ("BPFO", self.bpfo_hz, o.bpfo),
             ("BPFI", self.bpfi_hz, o.bpfi),
             ("ball spin f_b (BSF)", self.ball_spin_hz, o.ball_spin),
-            ("ball defect 2 f_b", self.ball_defect_hz, 2.0 * o.ball_spin),
+            (
+                "ball defect 2 f_b",
+                self.ball_defect_hz,
+                o.ball_spin.map(|b| 2.0 * b),
+            ),
         ];
         let _ = writeln!(out, "  {:<22} {:>12} {:>10}", "", "Hz", "order");
         for (name, hz, order) in rows {
             // An order is undefined at 0 rpm: "—" here, null in JSON.
-            let order = if order.is_finite() {
-                format!("{order:.5}")
-            } else {
-                "—".to_string()
-            };
+            let order = order.map_or_else(|| "—".to_string(), |o| format!("{o:.5}"));
             let _ = writeln!(out, "  {name:<22} {hz:>12.3} {order:>10}");
         }
         let _ = writeln!(

@@ -346,6 +346,55 @@ pub const MAX_STEPS: f64 = 1e9;
 /// without `--force` \[bytes\].
 pub const MAX_SERIES_BYTES: f64 = 4.0 * 1024.0 * 1024.0 * 1024.0;
 
+/// Largest Hertz pressure a run accepts without `--force` \[Pa\]: 2.4 times
+/// ISO 76's static limit for ball bearings (4.2 GPa, permanent deformation
+/// of 10⁻⁴ D), i.e. 13.5 times the load at that limit. Beyond it no bearing
+/// steel or ceramic carries the load elastically, the Hertz and EHL models
+/// do not apply, and the stiff contacts make the integration crawl.
+pub const MAX_CONTACT_PRESSURE: f64 = 10e9;
+
+/// The largest contact pressure the case's loads can give, estimated
+/// before any solve: Stribeck's maximum ball load 5 F_r/(Z cos α) plus the
+/// axial share F_a/(Z sin α) (α the nominal angle, at least 10° so that a
+/// deep-groove bearing under axial load is not judged at α = 0), on the
+/// more conforming … less conforming raceway (the larger of the two
+/// pressures). An estimate for a plausibility limit, not a result.
+fn pressure_estimate(case: &Case) -> Option<(f64, f64)> {
+    use rolldyn::contact::hertz::{Curvature, HertzCoefficients};
+    let g = &case.bearing.geometry;
+    let z = g.ball_count as f64;
+    let alpha = g.nominal_contact_angle();
+    let axial_angle = alpha.max(10f64.to_radians());
+    let loads: Vec<rolldyn::operating::Loads> = match &case.load_profile {
+        Some(rolldyn::operating::LoadProfile::PiecewiseLinear(points)) => {
+            points.iter().map(|p| p.1).collect()
+        }
+        _ => vec![case.loads],
+    };
+    let q = loads
+        .iter()
+        .map(|l| {
+            5.0 * l.force[1].hypot(l.force[2]) / (z * alpha.cos())
+                + l.force[0].abs() / (z * axial_angle.sin())
+        })
+        .fold(0.0, f64::max);
+    let ep = rolldyn::material::effective_modulus(
+        &case.materials.ball.material,
+        &case.materials.rings.material,
+    );
+    let pressure = [rolldyn::RingKind::Inner, rolldyn::RingKind::Outer]
+        .into_iter()
+        .filter_map(|ring| {
+            let c =
+                Curvature::of_raceway(g.raceway(ring), g.ball_diameter, g.pitch_diameter, alpha);
+            HertzCoefficients::exact(&c, ep)
+                .ok()
+                .map(|h| h.at_load(q).max_pressure)
+        })
+        .fold(0.0, f64::max);
+    Some((q, pressure))
+}
+
 /// Refuses a run that cannot finish or whose time series cannot fit:
 /// at least `duration / step` steps, `duration × rate` rows of `channels`.
 fn check_limits(
@@ -462,6 +511,13 @@ pub fn run_case(
             channels,
         )
         .map_err(bad)?;
+        if let Some((q, p)) = pressure_estimate(case).filter(|(_, p)| *p > MAX_CONTACT_PRESSURE) {
+            return Err(bad(format!(
+                "operating: the loads give a ball load of about {q:.3e} N and a contact pressure of about {:.1} GPa, above the {:.0} GPa where the Hertz and EHL models hold (ISO 76's static limit is 4.2 GPa); check the loads and their units, or pass --force",
+                p * 1e-9,
+                MAX_CONTACT_PRESSURE * 1e-9
+            )));
+        }
     }
     let (solver, integrator) = match choice {
         IntegratorChoice::Auto => unreachable!("resolved above"),
@@ -735,7 +791,7 @@ impl Output<'_> {
                 .map_err(|e| bad(e.to_string()))?;
         }
         let json =
-            serde_json::to_string_pretty(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
+            crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
         write_atomic(&self.dir.join("summary.json"), (json + "\n").as_bytes())
             .map_err(|e| bad(e.to_string()))?;
         Ok(summary)

@@ -280,8 +280,7 @@ pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
             .collect(),
         csv: csv_path.display().to_string(),
     };
-    let text =
-        serde_json::to_string_pretty(&report).map_err(|e| Failure::Internal(e.to_string()))?;
+    let text = crate::finite::to_json(&report).map_err(|e| Failure::Internal(e.to_string()))?;
     rolldyn_io::write_atomic(&dir.join(format!("{stem}.json")), (text + "\n").as_bytes())
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     if args.json {
