@@ -25,16 +25,24 @@ pub trait Dimension {
     const EXAMPLE: &'static str;
     /// Accepted units: (normalised symbol, factor to SI, offset to SI).
     const UNITS: UnitTable;
+    /// Practical range: no value of this dimension in a bearing case
+    /// exceeds this magnitude in SI (far beyond any bearing; a larger one is
+    /// a unit or exponent slip). Keys add their own physical rules.
+    const LIMIT: f64;
+    /// The SI unit's symbol, for messages.
+    const SI: &'static str;
 }
 
 macro_rules! dimension {
-    ($(#[$doc:meta])* $name:ident, $human:literal, $example:literal, [$(($sym:literal, $scale:expr $(, $offset:expr)?)),* $(,)?]) => {
+    ($(#[$doc:meta])* $name:ident, $human:literal, $example:literal, $limit:expr, $si:literal, [$(($sym:literal, $scale:expr $(, $offset:expr)?)),* $(,)?]) => {
         $(#[$doc])*
         #[derive(Debug, Clone, Copy, PartialEq, Eq)]
         pub enum $name {}
         impl Dimension for $name {
             const NAME: &'static str = $human;
             const EXAMPLE: &'static str = $example;
+            const LIMIT: f64 = $limit;
+            const SI: &'static str = $si;
             const UNITS: &'static [(&'static str, f64, f64)] = &[$(($sym, $scale, dimension!(@offset $($offset)?))),*];
         }
     };
@@ -48,85 +56,85 @@ const PSI: f64 = 6_894.757_293_168;
 const TAU: f64 = std::f64::consts::TAU;
 
 dimension!(/// Length, SI metre.
-    Length, "length", "6.35 mm",
+    Length, "length", "6.35 mm", 1e2, "m",
     [("m", 1.0), ("mm", 1e-3), ("um", 1e-6), ("nm", 1e-9), ("cm", 1e-2), ("in", INCH), ("mil", 1e-3 * INCH)]);
 dimension!(/// Plane angle, SI radian.
-    Angle, "angle", "17.7 deg",
+    Angle, "angle", "17.7 deg", 1e4, "rad",
     [("deg", std::f64::consts::PI / 180.0), ("°", std::f64::consts::PI / 180.0), ("rad", 1.0), ("mrad", 1e-3), ("arcmin", std::f64::consts::PI / 10_800.0)]);
 dimension!(/// Rotational speed, SI rad/s. "Hz" and "rps" mean revolutions per second.
-    AngularSpeed, "rotational speed", "10000 rpm",
+    AngularSpeed, "rotational speed", "10000 rpm", 1e6, "rad/s",
     [("rpm", TAU / 60.0), ("r/min", TAU / 60.0), ("rev/min", TAU / 60.0), ("rad/s", 1.0), ("hz", TAU), ("rps", TAU), ("krpm", TAU * 1000.0 / 60.0)]);
 dimension!(/// Force, SI newton.
-    Force, "force", "200 N",
+    Force, "force", "200 N", 1e9, "N",
     [("n", 1.0), ("kn", 1e3), ("mn", 1e-3), ("lbf", LBF)]);
 dimension!(/// Moment, SI N·m.
-    Moment, "moment", "5 N.m",
+    Moment, "moment", "5 N.m", 1e9, "N·m",
     [("n.m", 1.0), ("nm", 1.0), ("n.mm", 1e-3), ("nmm", 1e-3), ("kn.m", 1e3), ("lbf.in", LBF * INCH), ("lbf.ft", LBF * 0.3048)]);
 dimension!(/// Pressure, stress and elastic modulus, SI pascal.
-    Pressure, "pressure or modulus", "206 GPa",
+    Pressure, "pressure or modulus", "206 GPa", 1e13, "Pa",
     [("pa", 1.0), ("kpa", 1e3), ("mpa", 1e6), ("gpa", 1e9), ("n/mm^2", 1e6), ("n/m^2", 1.0), ("bar", 1e5), ("psi", PSI), ("ksi", 1e3 * PSI), ("msi", 1e6 * PSI)]);
 dimension!(/// Mass density, SI kg/m³.
-    Density, "density", "7800 kg/m^3",
+    Density, "density", "7800 kg/m^3", 1e5, "kg/m³",
     [("kg/m^3", 1.0), ("kg/m3", 1.0), ("g/cm^3", 1e3), ("g/cm3", 1e3), ("kg/dm^3", 1e3), ("kg/l", 1e3)]);
 dimension!(/// Dynamic viscosity, SI Pa·s.
-    Viscosity, "dynamic viscosity", "0.0467 Pa.s",
+    Viscosity, "dynamic viscosity", "0.0467 Pa.s", 1e6, "Pa·s",
     [("pa.s", 1.0), ("mpa.s", 1e-3), ("cp", 1e-3), ("p", 0.1)]);
 dimension!(/// Pressure–viscosity coefficient α_p, SI 1/Pa.
-    PressureViscosity, "pressure-viscosity coefficient", "2.2e-8 1/Pa",
+    PressureViscosity, "pressure-viscosity coefficient", "2.2e-8 1/Pa", 1e-5, "1/Pa",
     [("1/pa", 1.0), ("1/mpa", 1e-6), ("1/gpa", 1e-9), ("pa^-1", 1.0), ("gpa^-1", 1e-9), ("m^2/n", 1.0), ("mm^2/n", 1e-6)]);
 dimension!(/// Temperature, SI kelvin.
-    Temperature, "temperature", "40 degC",
+    Temperature, "temperature", "40 degC", 1e4, "K",
     [("k", 1.0), ("degc", 1.0, 273.15), ("°c", 1.0, 273.15), ("degf", 5.0 / 9.0, 273.15 - 32.0 * 5.0 / 9.0), ("°f", 5.0 / 9.0, 273.15 - 32.0 * 5.0 / 9.0)]);
 dimension!(/// Time, SI second.
-    Time, "time", "0.05 s",
+    Time, "time", "0.05 s", 1e8, "s",
     [("s", 1.0), ("ms", 1e-3), ("us", 1e-6), ("ns", 1e-9), ("min", 60.0), ("h", 3600.0)]);
 dimension!(/// Frequency (sampling), SI hertz.
-    Frequency, "frequency", "20 kHz",
+    Frequency, "frequency", "20 kHz", 1e10, "Hz",
     [("hz", 1.0), ("khz", 1e3), ("mhz", 1e6)]);
 dimension!(/// Volume flow rate, SI m³/s.
-    VolumeFlow, "volume flow", "2 L/min",
+    VolumeFlow, "volume flow", "2 L/min", 1e2, "m³/s",
     [("m^3/s", 1.0), ("l/min", 1e-3 / 60.0), ("ml/min", 1e-6 / 60.0), ("l/h", 1e-3 / 3600.0), ("l/s", 1e-3), ("cm^3/min", 1e-6 / 60.0)]);
 dimension!(/// Thermal conductivity, SI W/(m·K).
-    ThermalConductivity, "thermal conductivity", "0.14 W/(m.K)",
+    ThermalConductivity, "thermal conductivity", "0.14 W/(m.K)", 1e4, "W/(m·K)",
     [("w/(m.k)", 1.0), ("w/m/k", 1.0), ("w/m.k", 1.0), ("w/mk", 1.0)]);
 dimension!(/// Specific heat capacity, SI J/(kg·K).
-    SpecificHeat, "specific heat", "2000 J/(kg.K)",
+    SpecificHeat, "specific heat", "2000 J/(kg.K)", 1e6, "J/(kg·K)",
     [("j/(kg.k)", 1.0), ("j/kg/k", 1.0), ("j/kg.k", 1.0), ("kj/(kg.k)", 1e3), ("kj/kg/k", 1e3)]);
 dimension!(/// Convective heat-transfer coefficient, SI W/(m²·K).
-    HeatTransferCoefficient, "heat-transfer coefficient", "15 W/(m^2.K)",
+    HeatTransferCoefficient, "heat-transfer coefficient", "15 W/(m^2.K)", 1e7, "W/(m²·K)",
     [("w/(m^2.k)", 1.0), ("w/m^2/k", 1.0), ("w/m^2.k", 1.0), ("w/(m2.k)", 1.0), ("w/m2k", 1.0)]);
 dimension!(/// Linear thermal-expansion coefficient, SI 1/K.
-    ThermalExpansion, "thermal-expansion coefficient", "11.9e-6 1/K",
+    ThermalExpansion, "thermal-expansion coefficient", "11.9e-6 1/K", 1e-2, "1/K",
     [("1/k", 1.0), ("k^-1", 1.0), ("um/(m.k)", 1e-6), ("ppm/k", 1e-6)]);
 dimension!(/// Linear speed, SI m/s.
-    Velocity, "speed", "1 mm/s",
+    Velocity, "speed", "1 mm/s", 1e4, "m/s",
     [("m/s", 1.0), ("mm/s", 1e-3), ("um/s", 1e-6), ("cm/s", 1e-2)]);
 dimension!(/// Mass, SI kilogram.
-    Mass, "mass", "0.0035 kg",
+    Mass, "mass", "0.0035 kg", 1e6, "kg",
     [("kg", 1.0), ("g", 1e-3), ("mg", 1e-6)]);
 dimension!(/// Mass moment of inertia, SI kg·m².
-    Inertia, "moment of inertia", "8.2e-7 kg.m^2",
+    Inertia, "moment of inertia", "8.2e-7 kg.m^2", 1e6, "kg·m²",
     [("kg.m^2", 1.0), ("kg.mm^2", 1e-6), ("g.mm^2", 1e-9), ("g.cm^2", 1e-7)]);
 
 /// A dimension's unit table: (normalised symbol, factor to SI, offset to SI).
 type UnitTable = &'static [(&'static str, f64, f64)];
 
 dimension!(/// Contact stiffness (linear), SI N/m.
-    Stiffness, "stiffness", "1e7 N/m",
+    Stiffness, "stiffness", "1e7 N/m", 1e16, "N/m",
     [("n/m", 1.0), ("n/mm", 1e3), ("n/um", 1e6), ("kn/mm", 1e6)]);
 dimension!(/// Viscous damping coefficient, SI N·s/m.
-    Damping, "damping coefficient", "20 N.s/m",
+    Damping, "damping coefficient", "20 N.s/m", 1e12, "N·s/m",
     [("n.s/m", 1.0), ("n.s/mm", 1e3), ("kg/s", 1.0)]);
 
 dimension!(/// Rotational viscous damping, SI N·m·s.
-    RotationalDamping, "rotational damping", "1e-6 N.m.s",
+    RotationalDamping, "rotational damping", "1e-6 N.m.s", 1e6, "N·m·s",
     [("n.m.s", 1.0), ("n.mm.s", 1e-3)]);
 dimension!(/// Windage (quadratic rotational drag) coefficient, SI N·m·s².
-    WindageCoefficient, "windage coefficient", "1e-9 N.m.s^2",
+    WindageCoefficient, "windage coefficient", "1e-9 N.m.s^2", 1e6, "N·m·s²",
     [("n.m.s^2", 1.0), ("n.mm.s^2", 1e-3)]);
 
 dimension!(/// Unbalance (mass × radius), SI kg·m.
-    Unbalance, "unbalance", "50 g.mm",
+    Unbalance, "unbalance", "50 g.mm", 1e3, "kg·m",
     [("kg.m", 1.0), ("g.mm", 1e-6), ("g.cm", 1e-5), ("kg.mm", 1e-3)]);
 
 /// Every dimension's name and units, for "that is a unit of X" messages.
@@ -257,7 +265,16 @@ pub fn parse_quantity<D: Dimension>(text: &str) -> Result<f64, String> {
     let key = normalise_unit(unit);
     let key = key.as_str();
     if let Some(&(_, scale, offset)) = D::UNITS.iter().find(|u| u.0 == key) {
-        return Ok(value * scale + offset);
+        let si = value * scale + offset;
+        if !(si.abs() <= D::LIMIT) {
+            return Err(format!(
+                "\"{text}\" is beyond the practical range of a {}: at most {:e} {} in magnitude (a unit or exponent slip?)",
+                D::NAME,
+                D::LIMIT,
+                D::SI
+            ));
+        }
+        return Ok(si);
     }
     if let Some((other, _)) = all_units()
         .iter()
@@ -380,6 +397,31 @@ mod tests {
 
     fn close(a: f64, b: f64) -> bool {
         (a - b).abs() <= 1e-12 * b.abs().max(1e-300)
+    }
+
+    #[test]
+    fn values_beyond_the_practical_range_are_refused() {
+        let e = parse_quantity::<Length>("6.35e3 m").unwrap_err();
+        assert!(
+            e.contains("practical range of a length") && e.contains("1e2 m"),
+            "{e}"
+        );
+        assert!(parse_quantity::<Length>("100 m").is_ok());
+        assert!(parse_quantity::<Length>("-100 m").is_ok());
+        assert!(parse_quantity::<Force>("1e300 N").is_err());
+        assert!(parse_quantity::<Time>("3 h").is_ok());
+        // Every dimension's limit is positive and above its example value.
+        fn example_fits<D: Dimension>() {
+            let v = parse_quantity::<D>(D::EXAMPLE).unwrap();
+            assert!(D::LIMIT > 0.0 && v.abs() <= D::LIMIT, "{}", D::NAME);
+        }
+        example_fits::<Length>();
+        example_fits::<Pressure>();
+        example_fits::<Stiffness>();
+        example_fits::<PressureViscosity>();
+        example_fits::<Temperature>();
+        example_fits::<ThermalExpansion>();
+        example_fits::<Unbalance>();
     }
 
     #[test]
