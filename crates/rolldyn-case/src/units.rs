@@ -266,7 +266,7 @@ pub fn parse_quantity<D: Dimension>(text: &str) -> Result<f64, String> {
     let key = key.as_str();
     if let Some(&(_, scale, offset)) = D::UNITS.iter().find(|u| u.0 == key) {
         let si = value * scale + offset;
-        if !(si.abs() <= D::LIMIT) {
+        if si.abs() > D::LIMIT {
             return Err(format!(
                 "\"{text}\" is beyond the practical range of a {}: at most {:e} {} in magnitude (a unit or exponent slip?)",
                 D::NAME,
