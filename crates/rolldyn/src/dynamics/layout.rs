@@ -58,8 +58,83 @@ impl StateLayout {
     pub fn len(&self) -> usize {
         self.work() + 2
     }
+    /// What state `index` is, in words (integration failures name it).
+    pub fn state_name(&self, index: usize) -> String {
+        const BALL: [&str; 10] = [
+            "axial position x",
+            "radial position r",
+            "orbital angle φ",
+            "axial velocity ẋ",
+            "radial velocity ṙ",
+            "orbital speed φ̇",
+            "angular velocity ω_x",
+            "angular velocity ω_r",
+            "angular velocity ω_t",
+            "spin angle ψ",
+        ];
+        const RING: [&str; 10] = [
+            "axial position x",
+            "position y",
+            "position z",
+            "tilt θ_y",
+            "tilt θ_z",
+            "axial velocity",
+            "velocity y",
+            "velocity z",
+            "tilt rate θ̇_y",
+            "tilt rate θ̇_z",
+        ];
+        const OUTER: [&str; 4] = ["position y", "position z", "velocity y", "velocity z"];
+        const CAGE: [&str; 6] = [
+            "centre y",
+            "centre z",
+            "angle",
+            "centre velocity y",
+            "centre velocity z",
+            "speed",
+        ];
+        let n = self.ball_len() * self.balls;
+        if index < n {
+            let (j, k) = (index / self.ball_len(), index % self.ball_len());
+            format!("ball {j} {}", BALL[k])
+        } else if index < self.outer() {
+            format!("inner ring {}", RING[index - self.ring()])
+        } else if index < self.cage() {
+            format!("outer ring {}", OUTER[index - self.outer()])
+        } else if index < self.work() {
+            format!("cage {}", CAGE[index - self.cage()])
+        } else if index == self.work() {
+            "drive work accumulator".into()
+        } else if index == self.work() + 1 {
+            "dissipated energy accumulator".into()
+        } else {
+            format!("state {index}")
+        }
+    }
+
     /// Whether there are no states (never, for a valid bearing).
     pub fn is_empty(&self) -> bool {
         self.len() == 0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_state_has_a_name() {
+        let l = StateLayout {
+            balls: 2,
+            ball_spin_angle: true,
+        };
+        let names: Vec<String> = (0..l.len()).map(|i| l.state_name(i)).collect();
+        assert_eq!(names[0], "ball 0 axial position x");
+        assert_eq!(names[l.ball(1) + 9], "ball 1 spin angle ψ");
+        assert_eq!(names[l.ring() + 2], "inner ring position z");
+        assert_eq!(names[l.outer() + 3], "outer ring velocity z");
+        assert_eq!(names[l.cage() + 5], "cage speed");
+        assert_eq!(names[l.work() + 1], "dissipated energy accumulator");
+        assert!(names.iter().all(|n| !n.starts_with("state")));
     }
 }

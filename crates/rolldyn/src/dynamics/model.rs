@@ -754,6 +754,10 @@ impl OdeSystem for BearingModel {
         self.layout.len()
     }
 
+    fn state_name(&self, index: usize) -> String {
+        self.layout.state_name(index)
+    }
+
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         self.rhs_with(t, y, dy, None);
     }

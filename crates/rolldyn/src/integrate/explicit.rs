@@ -48,19 +48,25 @@ pub struct IntegrationStats {
 pub enum IntegrationError {
     /// The error control asked for a step below the resolution of t.
     #[error(
-        "step size {step:.3e} s at t = {t:.6e} s fell below the smallest step the time resolution allows"
+        "step size {step:.3e} s at t = {t:.6e} s fell below the smallest step the time resolution allows (largest error in {state})"
     )]
     StepTooSmall {
         /// Time reached \[s\].
         t: f64,
         /// Step asked for \[s\].
         step: f64,
+        /// The state component with the largest error in the last attempt
+        /// ([`OdeSystem::state_name`]).
+        state: String,
     },
     /// The state or its derivative became NaN or infinite.
-    #[error("the solution became non-finite at t = {t:.6e} s")]
+    #[error("the solution became non-finite at t = {t:.6e} s (first in {state})")]
     NonFinite {
         /// Time reached \[s\].
         t: f64,
+        /// The first state component that is not finite (or whose
+        /// derivative is not).
+        state: String,
     },
     /// Bad settings.
     #[error("invalid integrator setting: {0}")]
@@ -143,12 +149,41 @@ impl PiControl {
         h * factor
     }
 
-    /// The error for a step that fell below `min_step`.
-    pub(crate) fn too_small(t: f64, step: f64, err: f64) -> IntegrationError {
+    /// The error for a step that fell below `min_step`, naming a state
+    /// component: the one with the largest scaled error term of the last
+    /// attempt (`error_terms`) when that error is finite; otherwise (the
+    /// attempt overflowed, and a linear solve spreads NaN over every
+    /// component) the one changing fastest relative to its tolerance at
+    /// the last accepted point, |f_k| / (atol_k + rtol |y_k|).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn too_small(
+        t: f64,
+        step: f64,
+        err: f64,
+        system: &impl OdeSystem,
+        error_terms: impl Iterator<Item = f64>,
+        y: &[f64],
+        f: &[f64],
+        atol: &[f64],
+        rtol: f64,
+    ) -> IntegrationError {
+        let largest = |terms: &mut dyn Iterator<Item = f64>| {
+            terms
+                .enumerate()
+                .filter(|(_, c)| c.is_finite())
+                .fold(
+                    (0, f64::NEG_INFINITY),
+                    |w, (i, c)| if c > w.1 { (i, c) } else { w },
+                )
+                .0
+        };
         if err.is_finite() {
-            IntegrationError::StepTooSmall { t, step }
+            let state = system.state_name(largest(&mut { error_terms }));
+            IntegrationError::StepTooSmall { t, step, state }
         } else {
-            IntegrationError::NonFinite { t }
+            let mut rates = (0..y.len()).map(|k| f[k].abs() / (atol[k] + rtol * y[k].abs()));
+            let state = system.state_name(largest(&mut rates));
+            IntegrationError::NonFinite { t, state }
         }
     }
 }
@@ -232,7 +267,11 @@ impl ExplicitRk {
             control_state: PiControl::new(),
         };
         if me.f.iter().any(|v| !v.is_finite()) {
-            return Err(IntegrationError::NonFinite { t: t0 });
+            let first = me.f.iter().position(|v| !v.is_finite()).unwrap_or(0);
+            return Err(IntegrationError::NonFinite {
+                t: t0,
+                state: system.state_name(first),
+            });
         }
         me.h = match control {
             StepControl::Fixed { step } => step,
@@ -331,6 +370,26 @@ impl ExplicitRk {
         }
         let err = (sum / n as f64).sqrt();
         if err.is_finite() { err } else { f64::INFINITY }
+    }
+
+    /// The scaled error of each component in the last attempt of step h
+    /// (the terms of the error norm; the state itself where not finite).
+    fn error_terms(&self, h: f64, rtol: f64) -> impl Iterator<Item = f64> + '_ {
+        (0..self.y.len()).map(move |i| {
+            let e: f64 = self
+                .tableau
+                .error
+                .iter()
+                .enumerate()
+                .map(|(j, w)| w * self.k[j][i])
+                .sum();
+            let scale = self.atol[i] + rtol * self.y[i].abs().max(self.y_new[i].abs());
+            if self.y_new[i].is_finite() {
+                (h * e / scale).abs()
+            } else {
+                f64::INFINITY
+            }
+        })
     }
 
     fn finish_step(&mut self, system: &mut impl OdeSystem, h: f64) {
@@ -439,13 +498,21 @@ impl Integrator for ExplicitRk {
                 return Ok(());
             }
             if fixed {
-                return Err(IntegrationError::NonFinite { t: self.t });
+                let first = self.y_new.iter().position(|v| !v.is_finite()).unwrap_or(0);
+                return Err(IntegrationError::NonFinite {
+                    t: self.t,
+                    state: system.state_name(first),
+                });
             }
             self.stats.rejected_steps += 1;
             rejected = true;
             self.h = PiControl::rejected(h, err, self.tableau.order as f64);
             if self.h < min_step {
-                return Err(PiControl::too_small(self.t, self.h, err));
+                let rtol = rtol.unwrap_or(0.0);
+                let terms = self.error_terms(h, rtol);
+                return Err(PiControl::too_small(
+                    self.t, self.h, err, system, terms, &self.y, &self.f, &self.atol, rtol,
+                ));
             }
         }
     }
@@ -520,6 +587,70 @@ pub(crate) fn hermite(
 mod tests {
     use super::*;
     use crate::integrate::tableau::{DOPRI5, RK4};
+
+    /// y₀' = −y₀ (tame), y₁' = y₁² from y₁(0) = 1 (blows up at t = 1),
+    /// with named components.
+    struct NamedBlowUp;
+
+    impl OdeSystem for NamedBlowUp {
+        fn dimension(&self) -> usize {
+            2
+        }
+        fn rhs(&self, _t: f64, y: &[f64], dydt: &mut [f64]) {
+            dydt[0] = -y[0];
+            dydt[1] = y[1] * y[1];
+        }
+        fn state_name(&self, index: usize) -> String {
+            ["tame", "exploding"][index].into()
+        }
+    }
+
+    /// A failing integration names the component that fails, with both
+    /// integrators (issue 17: exit 3 with the time, the state and a hint).
+    #[test]
+    fn failure_names_the_state_component() {
+        let adaptive = StepControl::Adaptive {
+            relative_tolerance: 1e-6,
+            max_step: 0.1,
+            initial_step: None,
+        };
+        let mut explicit =
+            ExplicitRk::new(&DOPRI5, adaptive, &NamedBlowUp, 0.0, &[1.0, 1.0]).unwrap();
+        let mut stiff = crate::integrate::Rosenbrock::new(
+            &crate::integrate::ROS34PW2,
+            1e-6,
+            0.1,
+            None,
+            &NamedBlowUp,
+            0.0,
+            &[1.0, 1.0],
+        )
+        .unwrap();
+        let mut failures = Vec::new();
+        for _ in 0..100_000 {
+            if let Err(e) = explicit.step(&mut NamedBlowUp, 2.0) {
+                failures.push(e);
+                break;
+            }
+        }
+        for _ in 0..100_000 {
+            if let Err(e) = stiff.step(&mut NamedBlowUp, 2.0) {
+                failures.push(e);
+                break;
+            }
+        }
+        assert_eq!(failures.len(), 2);
+        for e in failures {
+            let (t, state) = match &e {
+                IntegrationError::StepTooSmall { t, state, .. }
+                | IntegrationError::NonFinite { t, state } => (*t, state.clone()),
+                other => panic!("{other}"),
+            };
+            assert_eq!(state, "exploding", "{e}");
+            assert!((t - 1.0).abs() < 1e-2, "{e}");
+            assert!(e.to_string().contains("exploding"));
+        }
+    }
 
     /// Harmonic oscillator x'' = −x.
     struct Oscillator {

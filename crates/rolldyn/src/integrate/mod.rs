@@ -52,6 +52,13 @@ pub trait OdeSystem {
         scale.fill(1.0);
     }
 
+    /// A name for state component `index`, for messages (an integration
+    /// failure names the component with the largest error). Default
+    /// `y[index]`.
+    fn state_name(&self, index: usize) -> String {
+        format!("y[{index}]")
+    }
+
     /// Largest step the system allows from (t, y): features that an error
     /// estimate cannot see coming (a surface defect ahead of a contact).
     /// Asked once before each step. Default: no limit.

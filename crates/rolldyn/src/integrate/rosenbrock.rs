@@ -233,7 +233,11 @@ impl Rosenbrock {
         let mut f = vec![0.0; n];
         system.rhs(t0, y0, &mut f);
         if f.iter().any(|v| !v.is_finite()) {
-            return Err(IntegrationError::NonFinite { t: t0 });
+            let first = f.iter().position(|v| !v.is_finite()).unwrap_or(0);
+            return Err(IntegrationError::NonFinite {
+                t: t0,
+                state: system.state_name(first),
+            });
         }
         let coefficients = Transformed::of(tableau);
         let mut me = Self {
@@ -495,7 +499,18 @@ impl Integrator for Rosenbrock {
             }
             self.h = PiControl::rejected(h, err, q);
             if self.h < min_step {
-                return Err(PiControl::too_small(self.t, self.h, err));
+                let rtol = self.relative_tolerance;
+                let terms = (0..self.y.len()).map(|k| {
+                    let scale = self.atol[k] + rtol * self.y[k].abs().max(self.y_new[k].abs());
+                    if self.y_new[k].is_finite() {
+                        (self.error[k] / scale).abs()
+                    } else {
+                        f64::INFINITY
+                    }
+                });
+                return Err(PiControl::too_small(
+                    self.t, self.h, err, system, terms, &self.y, &self.f, &self.atol, rtol,
+                ));
             }
         }
     }
