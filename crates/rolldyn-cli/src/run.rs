@@ -573,10 +573,7 @@ pub fn run_case(
     );
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
     let record_hash = record.hash();
-    let write = |name: &str, bytes: &[u8]| {
-        write_atomic(&dir.join(name), bytes).map_err(|e| bad(e.to_string()))
-    };
-    let (sampling, wall_before) = if options.resume {
+    let (next_sample, wall_before) = if options.resume {
         let position =
             checkpoint::restore(dir, record_hash, &mut solver, &mut model).map_err(bad)?;
         let path = dir.join("timeseries.parquet");
@@ -590,40 +587,20 @@ pub fn run_case(
         }
         series.truncate(position.rows as usize);
         channels.series = series;
-        (
-            Sampling {
-                t0: 0.0,
-                rate: sample_rate,
-                next: position.next_sample,
-            },
-            position.wall_time,
-        )
+        (position.next_sample, position.wall_time)
     } else {
         std::fs::create_dir_all(dir)
             .map_err(|e| bad(format!("cannot create {}: {e}", dir.display())))?;
         // A new run in an old directory: its checkpoint is no longer valid.
-        match std::fs::remove_file(dir.join(CHECKPOINT_FILE)) {
-            Ok(()) => {}
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
-            Err(e) => {
-                return Err(bad(format!(
-                    "cannot remove the old checkpoint in {}: {e}",
-                    dir.display()
-                )));
-            }
-        }
-        write(
-            RECORD_FILE,
-            record.to_json().map_err(Failure::Internal)?.as_bytes(),
-        )?;
-        (
-            Sampling {
-                t0: 0.0,
-                rate: sample_rate,
-                next: 0,
-            },
-            0.0,
-        )
+        remove_checkpoint(dir)?;
+        let text = record.to_json().map_err(Failure::Internal)?;
+        write_atomic(&dir.join(RECORD_FILE), text.as_bytes()).map_err(|e| bad(e.to_string()))?;
+        (0, 0.0)
+    };
+    let sampling = Sampling {
+        t0: 0.0,
+        rate: sample_rate,
+        next: next_sample,
     };
 
     let stop = Arc::new(AtomicBool::new(false));
@@ -659,7 +636,7 @@ pub fn run_case(
     let channels = RefCell::new(channels);
     let mut last_draw = 0.0;
     // A fresh run delivers sample 0 before its first step.
-    let mut next_sample = sampling.next + u64::from(!options.resume);
+    let mut next_sample = next_sample + u64::from(!options.resume);
     let mut last_checkpoint = Instant::now();
     let mut checkpoint_cost = 0.0;
     let mut checkpoint_error = None;
@@ -720,17 +697,21 @@ pub fn run_case(
     });
     let summary = output.write(&model, &solver, &series, Some(&report.end), position, wall)?;
     if report.end == RunEnd::Completed {
-        match std::fs::remove_file(dir.join(CHECKPOINT_FILE)) {
-            Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
-                return Err(bad(format!(
-                    "cannot remove {}: {e}",
-                    dir.join(CHECKPOINT_FILE).display()
-                )));
-            }
-            _ => {}
-        }
+        remove_checkpoint(dir)?;
     }
     Ok(summary)
+}
+
+/// Removes `DIR/checkpoint.bin` if there is one.
+fn remove_checkpoint(dir: &Path) -> Result<(), Failure> {
+    let path = dir.join(CHECKPOINT_FILE);
+    match std::fs::remove_file(&path) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(Failure::BadInput(format!(
+            "cannot remove {}: {e}",
+            path.display()
+        ))),
+        _ => Ok(()),
+    }
 }
 
 /// What the run's files are written from.
@@ -756,7 +737,9 @@ impl Output<'_> {
         position: Option<Position>,
         wall: f64,
     ) -> Result<Summary, Failure> {
-        let during = RunEnd::Completed;
+        // A checkpoint's summary is built like a final one; its status and
+        // error are then replaced below.
+        let in_progress = RunEnd::Completed;
         let mut summary = summarise(
             self.source,
             self.case,
@@ -766,7 +749,7 @@ impl Output<'_> {
             wall,
             self.integrator,
             solver.stats(),
-            end.unwrap_or(&during),
+            end.unwrap_or(&in_progress),
         );
         if end.is_none() {
             summary.status = "partial";
