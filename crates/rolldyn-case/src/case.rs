@@ -557,7 +557,13 @@ impl Case {
         .unwrap_or(0.0);
         let d = &raw.drag;
         let coefficient = |key: &str, v: Option<f64>| {
-            positive_number(key, v, |x| x >= 0.0, "must not be negative").map(|v| v.unwrap_or(0.0))
+            positive_number(
+                key,
+                v,
+                |x| (0.0..=1e4).contains(&x),
+                "a drag coefficient must lie in [0, 1e4] (a sphere's C_D is below 1e3 down to Re = 0.03)",
+            )
+            .map(|v| v.unwrap_or(0.0))
         };
         let drag = DragParameters {
             effective_density: checked(
@@ -899,8 +905,8 @@ fn cage(c: &RawCage) -> Result<Cage, Invalid> {
         pocket_friction: positive_number(
             "cage.pocket_friction",
             c.pocket_friction,
-            |v| v >= 0.0,
-            "must not be negative",
+            |v| (0.0..=rolldyn::traction::MAX_FRICTION).contains(&v),
+            "a friction coefficient must lie in [0, 5]",
         )?
         .unwrap_or(DEFAULT_POCKET_FRICTION),
         whirl: c.whirl.unwrap_or(true),

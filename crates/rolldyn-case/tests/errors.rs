@@ -429,7 +429,16 @@ fn dynamic_model_rules() {
     let e = err(&format!(
         "{BASE}\n[model]\ntraction = {{ law = \"modified_coulomb\", friction = -0.1 }}\n"
     ));
-    check(&e, "model.traction.friction", 15, &["≥ 0"]);
+    check(&e, "model.traction.friction", 15, &["[0, 5]"]);
+    // Friction coefficients and drag coefficients have practical upper ends.
+    let e = err(&format!(
+        "{BASE}\n[model]\ntraction = {{ law = \"modified_coulomb\", friction = 50.0 }}\n"
+    ));
+    check(&e, "model.traction.friction", 15, &["[0, 5]"]);
+    let e = err(&format!("{BASE}\n[cage]\npocket_friction = 1e300\n"));
+    assert_eq!(e.key.as_deref(), Some("cage.pocket_friction"), "{e}");
+    let e = err(&format!("{BASE}\n[drag]\nball_drag_coefficient = 1e9\n"));
+    assert_eq!(e.key.as_deref(), Some("drag.ball_drag_coefficient"), "{e}");
     let e = err(&format!("{BASE}\n[solver]\nintegrator = \"rk4\"\n"));
     assert_eq!(e.key.as_deref(), Some("solver.time_step"), "{e}");
     assert!(e.to_string().contains("fixed step"), "{e}");

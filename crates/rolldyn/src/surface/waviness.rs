@@ -61,11 +61,11 @@ impl RandomWaviness {
             ));
         }
         require_non_negative("amplitude", self.amplitude)?;
-        if !self.exponent.is_finite() {
+        if !(0.0..=10.0).contains(&self.exponent) {
             return Err(InvalidParameter::new(
                 "exponent",
                 self.exponent,
-                "must be finite",
+                "must lie in [0, 10] (amplitudes do not grow with the order)",
             ));
         }
         Ok(())

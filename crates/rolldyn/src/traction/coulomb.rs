@@ -35,13 +35,7 @@ fn default_full_speed() -> f64 {
 impl ModifiedCoulomb {
     /// Checks μ ≥ 0 and 0 ≤ v₀ < v₁.
     pub fn validate(&self) -> Result<(), InvalidParameter> {
-        if !(self.friction.is_finite() && self.friction >= 0.0) {
-            return Err(InvalidParameter::new(
-                "friction",
-                self.friction,
-                "friction coefficient must be ≥ 0",
-            ));
-        }
+        super::require_friction("friction", self.friction)?;
         if !(self.stick_speed >= 0.0
             && self.full_speed > self.stick_speed
             && self.full_speed.is_finite())

@@ -76,7 +76,7 @@
 
 use super::kalker::{self, CreepCoefficients};
 use super::{ContactConditions, ContactPatch, TractionResult};
-use crate::error::{InvalidParameter, require_non_negative, require_positive};
+use crate::error::{InvalidParameter, require_positive};
 use nalgebra::{Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -232,7 +232,7 @@ impl Fastsim {
 
     /// Checks the parameters.
     pub fn validate(&self) -> Result<(), InvalidParameter> {
-        require_non_negative("friction", self.friction)?;
+        super::require_friction("friction", self.friction)?;
         for (field, n) in [("strips", self.strips), ("elements", self.elements)] {
             if !(1..=MAX_DIVISIONS).contains(&n) {
                 return Err(InvalidParameter::new(

@@ -24,6 +24,27 @@ pub mod fastsim;
 pub mod kalker;
 
 pub use coulomb::ModifiedCoulomb;
+
+/// Largest friction coefficient a case may give (Coulomb laws, FASTSIM,
+/// pocket friction): clean metals in vacuum reach a few, lubricated
+/// rolling contacts 0.001–0.2; beyond this a value is a slip.
+pub const MAX_FRICTION: f64 = 5.0;
+
+/// Checks a friction coefficient: finite, in [0, [`MAX_FRICTION`]].
+pub fn require_friction(
+    field: &'static str,
+    value: f64,
+) -> Result<(), crate::error::InvalidParameter> {
+    if (0.0..=MAX_FRICTION).contains(&value) {
+        Ok(())
+    } else {
+        Err(crate::error::InvalidParameter::new(
+            field,
+            value,
+            format!("a friction coefficient must lie in [0, {MAX_FRICTION}]"),
+        ))
+    }
+}
 pub use curve::{SlipMeasure, TractionCurve};
 pub use ehl::EhlRheology;
 pub use ellipse::{ContactPatch, TractionIntegration, TractionResult};
