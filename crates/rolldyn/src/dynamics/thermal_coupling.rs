@@ -300,8 +300,9 @@ mod tests {
     /// 0.45 ms: the heat handed to the network equals the dissipated energy
     /// of the energy balance over the coupled span (to rounding), and the
     /// EHL η₀ follows Walther at the inlet temperature.
-    #[test]
-    fn coupling_hands_over_the_dissipated_energy_and_sets_the_viscosity() {
+    /// The 30×62×16-like bearing with EHL traction, coupled every 0.1 ms,
+    /// from its Jones–Harris state; with the viscosity law.
+    fn coupled_model() -> (BearingModel, Vec<f64>, Walther) {
         let g = BearingGeometry::new(&GeometrySpec {
             ball_diameter: 9.525e-3,
             ball_count: 11,
@@ -408,6 +409,12 @@ mod tests {
         let start = [333.15; 10];
         let coupling = ThermalCoupling::new(inputs, Some(walther), 1e-4, start).unwrap();
         model.couple_thermal(coupling, 0.0, &y0);
+        (model, y0, walther)
+    }
+
+    #[test]
+    fn coupling_hands_over_the_dissipated_energy_and_sets_the_viscosity() {
+        let (mut model, y0, walther) = coupled_model();
         let eta = |m: &BearingModel| match &m.parameters().traction {
             TractionModel::Ehl(e) => e.lubricant.viscosity,
             _ => f64::NAN,
@@ -442,5 +449,50 @@ mod tests {
         let t = |n| c.temperature(n).unwrap();
         let inlet = 0.5 * (t("ball") + 0.5 * (t("inner_ring") + t("outer_ring")));
         assert!((eta(&model) - walther.dynamic(inlet)).abs() < 1e-15);
+    }
+
+    /// A coupled run checkpointed between two network updates and restored
+    /// into a freshly coupled model continues bit for bit (issue 17):
+    /// temperatures, heat, update times and the viscosities fed back.
+    #[test]
+    fn coupled_run_resumes_bit_identically() {
+        use crate::integrate::{Checkpoint, StateReader, StateWriter};
+        let control = StepControl::Adaptive {
+            relative_tolerance: 1e-6,
+            max_step: 1e-5,
+            initial_step: None,
+        };
+        let (mut model, y0, _) = coupled_model();
+        let mut rk = ExplicitRk::new(&DOPRI5, control, &model, 0.0, &y0).unwrap();
+        while rk.t() < 2.5e-4 {
+            rk.step(&mut model, 5e-4).unwrap();
+        }
+        assert!(model.thermal().unwrap().updates() >= 1);
+        let mut w = StateWriter::new();
+        rk.save(&mut w);
+        model.save(&mut w);
+        let bytes = w.into_bytes();
+        while rk.t() < 5e-4 {
+            rk.step(&mut model, 5e-4).unwrap();
+        }
+        let (mut again, _, _) = coupled_model();
+        let mut rk2 = ExplicitRk::new(&DOPRI5, control, &again, 0.0, &y0).unwrap();
+        let mut r = StateReader::new(&bytes);
+        rk2.restore(&mut r).unwrap();
+        again.restore(&mut r).unwrap();
+        assert!(r.is_done());
+        while rk2.t() < 5e-4 {
+            rk2.step(&mut again, 5e-4).unwrap();
+        }
+        assert!(
+            rk.y()
+                .iter()
+                .zip(rk2.y())
+                .all(|(a, b)| a.to_bits() == b.to_bits())
+        );
+        let (c, c2) = (model.thermal().unwrap(), again.thermal().unwrap());
+        assert_eq!(c, c2);
+        assert!(c.updates() >= 3);
+        assert_eq!(model.parameters().traction, again.parameters().traction);
     }
 }
