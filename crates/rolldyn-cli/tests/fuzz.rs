@@ -145,7 +145,7 @@ const HOSTILE: &[&str] = &["nan N", "abc", "", "1e300 rpm", "inf deg", "5 kN"];
 
 /// A command line for a case read from standard input; `dir` for outputs.
 fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
-    let base: &[&str] = match rng.below(9) {
+    let base: &[&str] = match rng.below(10) {
         0 => &["check", "-", "--json"],
         1 => &["frequencies", "-", "--json"],
         2 => &["contact", "-", "--load", "500 N", "--json"],
@@ -170,7 +170,28 @@ fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
             dir,
             "--json",
         ],
-        _ => &["run", "-", "-o", dir, "--duration", "0.3 ms"],
+        8 => &[
+            "traction",
+            "-",
+            "--load",
+            "500 N",
+            "--rolling-speed",
+            "10 m/s",
+            "--creepages",
+            "1e-3,0,5",
+            "--json",
+        ],
+        // 60 samples, so that the run's spectrum has data to work on.
+        _ => &[
+            "run",
+            "-",
+            "-o",
+            dir,
+            "--duration",
+            "0.3 ms",
+            "--set",
+            "output.sample_rate=\"200 kHz\"",
+        ],
     };
     let mut args: Vec<String> = base.iter().map(|s| s.to_string()).collect();
     let flags = [
@@ -283,8 +304,11 @@ fn mutated_case(rng: &mut Rng, known: &[(String, String)]) -> String {
 }
 
 /// Runs one case; its exit code, or what broke.
-fn check_case(args: &[String], case: &str, dir: &Path) -> Result<i32, String> {
-    std::fs::remove_dir_all(dir).ok();
+/// `fresh`: start from an empty output directory.
+fn check_case(args: &[String], case: &str, dir: &Path, fresh: bool) -> Result<i32, String> {
+    if fresh {
+        std::fs::remove_dir_all(dir).ok();
+    }
     let mut child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
         .args(args)
         .stdin(Stdio::piped())
@@ -400,11 +424,24 @@ fn fuzzed_cases_and_flags_never_panic_hang_or_print_non_finite_numbers() {
                         let mut rng = Rng(seed ^ n.wrapping_mul(0x2545_f491_4f6c_dd1d));
                         let case = mutated_case(&mut rng, known);
                         let args = command(&mut rng, &d);
-                        match check_case(&args, &case, &dir) {
-                            Ok(code) => *counts.entry((args[0].clone(), code)).or_insert(0u64) += 1,
-                            Err(e) => failures.push(format!(
+                        let mut result = check_case(&args, &case, &dir, true);
+                        if args[0] == "run" && matches!(result, Ok(0)) {
+                            *counts.entry(("run".to_string(), 0)).or_insert(0u64) += 1;
+                            // The run's spectrum reads its files back.
+                            let spectrum: Vec<String> =
+                                ["spectrum", &d, "--json"].map(String::from).to_vec();
+                            result = check_case(&spectrum, "", &dir, false)
+                                .map_err(|e| format!("spectrum of the run: {e}"));
+                            if let Ok(code) = result {
+                                *counts.entry(("spectrum".to_string(), code)).or_insert(0u64) += 1;
+                            }
+                        } else if let Ok(code) = result {
+                            *counts.entry((args[0].clone(), code)).or_insert(0u64) += 1;
+                        }
+                        if let Err(e) = result {
+                            failures.push(format!(
                                 "seed {seed} case {n}: {args:?}\n{e}\n--- case ---\n{case}"
-                            )),
+                            ));
                         }
                     }
                     (failures, counts)
@@ -446,7 +483,7 @@ fn regressions_found_by_fuzzing_stay_fixed() {
     for (preset, args, expected) in REGRESSIONS {
         let case = PRESETS.iter().find(|p| p.name == *preset).unwrap().text;
         let args: Vec<String> = args.iter().map(|a| a.replace("{dir}", &d)).collect();
-        let code = check_case(&args, case, &dir).unwrap_or_else(|e| panic!("{args:?}: {e}"));
+        let code = check_case(&args, case, &dir, true).unwrap_or_else(|e| panic!("{args:?}: {e}"));
         assert_eq!(code, *expected, "{args:?}");
     }
     std::fs::remove_dir_all(&dir).ok();
