@@ -12,6 +12,7 @@ use rolldyn::traction::{TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, Material};
 
 mod dynamics;
+mod life;
 mod lubricant;
 mod surface;
 mod thermal;
@@ -20,6 +21,7 @@ pub use dynamics::{
     DEFAULT_POCKET_FRICTION, GUIDE_MAX_ECCENTRICITY, GUIDE_STOP_STIFFNESS, GUPTA_WALL_FORCE,
     STANDARD_GRAVITY,
 };
+pub use life::{Life, MAX_VISCOSITY_RATIO};
 pub use lubricant::Lubricant;
 use lubricant::lubricant;
 pub use thermal::{DEFAULT_AIR_CONVECTION, DEFAULT_OIL, DEFAULT_OIL_VISCOSITY, Power, Thermal};
@@ -126,6 +128,8 @@ pub struct Case {
     pub power: Power,
     /// Thermal network settings.
     pub thermal: Thermal,
+    /// Rating-life settings.
+    pub life: Life,
     /// Assumed values: (dotted key, reason).
     pub assumptions: Vec<(String, String)>,
 }
@@ -625,6 +629,7 @@ impl Case {
             output_directory: raw.output.directory.clone(),
             power: thermal::power(&raw.power)?,
             thermal: thermal::thermal(&raw.thermal, &materials_ball_name)?,
+            life: life::life(&raw.life)?,
             assumptions: raw
                 .assumptions
                 .iter()

@@ -14,8 +14,10 @@ use serde::{Deserialize, Deserializer, Serialize};
 use std::collections::BTreeMap;
 use std::fmt;
 
+mod life;
 mod surface;
 mod thermal;
+pub use life::*;
 pub use surface::*;
 pub use thermal::*;
 
@@ -59,6 +61,9 @@ pub struct RawCase {
     /// Thermal network (`rolldyn thermal`).
     #[serde(default)]
     pub thermal: RawThermal,
+    /// Rating-life settings (`rolldyn quasistatic`).
+    #[serde(default)]
+    pub life: RawLife,
     /// Time-integration settings (used by `rolldyn run`).
     #[serde(default)]
     pub solver: RawSolver,

@@ -74,6 +74,7 @@ fn every_schema_key_is_documented() {
         "surface",
         "power",
         "thermal",
+        "life",
     ];
     for key in all {
         let documented = if sections.contains(&key.as_str()) {

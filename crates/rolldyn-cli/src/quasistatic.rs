@@ -2,6 +2,7 @@
 //! equilibrium of a case, and sweeps over speed and axial load written as
 //! CSV and JSON. Keys are documented in docs/cli.md.
 
+use rolldyn::life::{self, BallLoads};
 use rolldyn::material::Material;
 use rolldyn::operating::Loads;
 use rolldyn::power::local_power_loss;
@@ -99,42 +100,118 @@ pub struct TiltStiffness {
     pub z: f64,
 }
 
-/// ISO 281 basic rating (docs/cli.md).
+/// ISO 281 and ISO/TS 16281 ratings and lives (docs/cli.md; null where a
+/// standard does not cover the case or a life is infinite).
 #[derive(Serialize)]
 pub struct RatingLife {
     pub standard: &'static str,
     pub dynamic_load_rating_n: Option<f64>,
+    pub static_load_rating_n: Option<f64>,
+    pub fatigue_load_limit_n: Option<f64>,
     pub equivalent_load_n: Option<f64>,
     pub basic_rating_life_mrev: Option<f64>,
     pub basic_rating_life_h: Option<f64>,
+    pub contamination_factor: Option<f64>,
+    pub reference_viscosity_mm2_per_s: Option<f64>,
+    pub viscosity_ratio: Option<f64>,
+    pub life_modification_factor: Option<f64>,
+    pub modified_rating_life_mrev: Option<f64>,
+    pub modified_rating_life_h: Option<f64>,
+    pub reference_rating_life_mrev: Option<f64>,
+    pub reference_rating_life_h: Option<f64>,
+    pub reference_equivalent_load_n: Option<f64>,
+    pub reference_life_modification_factor: Option<f64>,
+    pub modified_reference_rating_life_mrev: Option<f64>,
+    pub modified_reference_rating_life_h: Option<f64>,
 }
 
 impl RatingLife {
-    /// ISO 281 for `case` under `loads` at `speed` \[rad/s\].
-    pub fn new(case: &Case, loads: &Loads, speed: f64) -> Self {
-        use rolldyn::life::iso281;
-        let g = &case.bearing.geometry;
-        let alpha = g.nominal_contact_angle();
-        let c = iso281::dynamic_load_rating(g.ball_diameter, g.pitch_diameter, g.ball_count, alpha)
-            .ok();
-        let p =
-            iso281::equivalent_load(loads.force[1].hypot(loads.force[2]), loads.force[0], alpha)
-                .filter(|p| *p > 0.0);
-        // A load so small that the life overflows has none (null).
-        let l10 = c
-            .zip(p)
-            .map(|(c, p)| iso281::basic_rating_life(c, p))
-            .filter(|l| l.is_finite());
+    /// Ratings of `case` under `loads` at `speed` \[rad/s\]; the reference
+    /// lives from the ball loads of `solution` where given.
+    pub fn new(case: &Case, loads: &Loads, speed: f64, solution: Option<&Equilibrium>) -> Self {
+        let rpm = speed / RPM;
+        let inner: Vec<f64>;
+        let outer: Vec<f64>;
+        let balls = match solution {
+            Some(sol) => {
+                inner = sol.balls.iter().map(|b| b.inner.load).collect();
+                outer = sol.balls.iter().map(|b| b.outer.load).collect();
+                Some(BallLoads {
+                    inner: &inner,
+                    outer: &outer,
+                })
+            }
+            None => None,
+        };
+        let conditions = case.life_conditions();
+        let r = life::RatingLife::new(
+            &case.bearing.geometry,
+            loads.force[1].hypot(loads.force[2]),
+            loads.force[0],
+            rpm,
+            balls,
+            &conditions,
+        );
+        let h = |l: Option<f64>| life::hours(l, rpm);
         Self {
-            standard: "ISO 281:2007",
-            dynamic_load_rating_n: c,
-            equivalent_load_n: p,
-            basic_rating_life_mrev: l10,
-            basic_rating_life_h: l10
-                .filter(|_| speed != 0.0)
-                .map(|l| l * 1e6 / (speed.abs() / RPM * 60.0))
-                .filter(|h| h.is_finite()),
+            standard: "ISO 281:2007, ISO 76:2006, ISO/TS 16281:2008",
+            dynamic_load_rating_n: r.dynamic_load_rating,
+            static_load_rating_n: r.static_load_rating,
+            fatigue_load_limit_n: r.fatigue_load_limit,
+            equivalent_load_n: r.equivalent_load,
+            basic_rating_life_mrev: r.basic_rating_life,
+            basic_rating_life_h: h(r.basic_rating_life),
+            contamination_factor: conditions.contamination_factor,
+            reference_viscosity_mm2_per_s: r.reference_viscosity.map(|v| v * 1e6),
+            viscosity_ratio: r.viscosity_ratio,
+            life_modification_factor: r.life_modification_factor,
+            modified_rating_life_mrev: r.modified_rating_life,
+            modified_rating_life_h: h(r.modified_rating_life),
+            reference_rating_life_mrev: r.reference_rating_life,
+            reference_rating_life_h: h(r.reference_rating_life),
+            reference_equivalent_load_n: r.reference_equivalent_load,
+            reference_life_modification_factor: r.reference_life_modification_factor,
+            modified_reference_rating_life_mrev: r.modified_reference_rating_life,
+            modified_reference_rating_life_h: h(r.modified_reference_rating_life),
         }
+    }
+
+    /// The text lines of the rating.
+    fn text(&self, out: &mut String) {
+        let f = |v: Option<f64>, unit: &str, p: usize| {
+            v.map_or("—".to_string(), |v| format!("{v:.p$} {unit}"))
+        };
+        let _ = writeln!(
+            out,
+            "  rating ({}):\n    C_r {}, C_0r {}, C_u {}\n    P_r {}, L10 {} = {}",
+            self.standard,
+            f(self.dynamic_load_rating_n, "N", 0),
+            f(self.static_load_rating_n, "N", 0),
+            f(self.fatigue_load_limit_n, "N", 0),
+            f(self.equivalent_load_n, "N", 1),
+            f(self.basic_rating_life_mrev, "10^6 rev", 1),
+            f(self.basic_rating_life_h, "h", 0)
+        );
+        let _ = writeln!(
+            out,
+            "    e_C {}, nu1 {}, kappa {}: a_ISO {}, L10m {} = {}",
+            f(self.contamination_factor, "", 2).trim_end(),
+            f(self.reference_viscosity_mm2_per_s, "mm^2/s", 1),
+            f(self.viscosity_ratio, "", 2).trim_end(),
+            f(self.life_modification_factor, "", 3).trim_end(),
+            f(self.modified_rating_life_mrev, "10^6 rev", 1),
+            f(self.modified_rating_life_h, "h", 0)
+        );
+        let _ = writeln!(
+            out,
+            "    ISO/TS 16281 (actual ball loads): L10r {} = {}, P_ref {}, a_ISO {}, L10mr {} = {}",
+            f(self.reference_rating_life_mrev, "10^6 rev", 1),
+            f(self.reference_rating_life_h, "h", 0),
+            f(self.reference_equivalent_load_n, "N", 1),
+            f(self.reference_life_modification_factor, "", 3).trim_end(),
+            f(self.modified_reference_rating_life_mrev, "10^6 rev", 1),
+            f(self.modified_reference_rating_life_h, "h", 0)
+        );
     }
 }
 
@@ -286,6 +363,7 @@ impl QuasiStaticReport {
                 moment: [self.moment_y_n_m, self.moment_z_n_m],
             },
             self.speed_rpm * RPM,
+            Some(sol),
         ));
         self.films = crate::quasistatic_films::films(case, sol);
         self.modes = crate::quasistatic_films::modes(case, sol);
@@ -408,20 +486,7 @@ impl QuasiStaticReport {
             );
         }
         if let Some(r) = &self.rating_life {
-            let f = |v: Option<f64>, unit: &str, p: usize| {
-                v.map_or("— (not covered)".to_string(), |v| {
-                    format!("{v:.p$} {unit}")
-                })
-            };
-            let _ = writeln!(
-                out,
-                "  rating ({}): C_r {}, P_r {}, L10 {} = {}",
-                r.standard,
-                f(r.dynamic_load_rating_n, "N", 0),
-                f(r.equivalent_load_n, "N", 1),
-                f(r.basic_rating_life_mrev, "10^6 rev", 1),
-                f(r.basic_rating_life_h, "h", 0)
-            );
+            r.text(&mut out);
         }
         crate::quasistatic_films::text(self.films.as_deref(), self.modes.as_ref(), &mut out);
         let _ = writeln!(
@@ -520,6 +585,10 @@ pub struct SweepRow {
     pub friction_torque_n_m: Option<f64>,
     /// ISO 281 basic rating life (null where not covered).
     pub basic_rating_life_h: Option<f64>,
+    /// ISO/TS 16281 basic reference rating life (null where not solved).
+    pub reference_rating_life_h: Option<f64>,
+    /// Modified reference rating life (null without `life.contamination_factor`).
+    pub modified_reference_rating_life_h: Option<f64>,
 }
 
 /// Builds the grid (first sweep outermost) and solves it.
@@ -572,9 +641,14 @@ pub fn run_sweep(
                 stiffness_radial_z_n_per_m: None,
                 power_loss_w: None,
                 friction_torque_n_m: None,
-                basic_rating_life_h: RatingLife::new(case, &p.loads, p.inner_speed)
-                    .basic_rating_life_h,
+                basic_rating_life_h: None,
+                reference_rating_life_h: None,
+                modified_reference_rating_life_h: None,
             };
+            let life = RatingLife::new(case, &p.loads, p.inner_speed, r.as_ref().ok());
+            row.basic_rating_life_h = life.basic_rating_life_h;
+            row.reference_rating_life_h = life.reference_rating_life_h;
+            row.modified_reference_rating_life_h = life.modified_reference_rating_life_h;
             if let Ok(sol) = r {
                 let top = sol
                     .balls
@@ -603,13 +677,13 @@ pub fn run_sweep(
 /// CSV text of sweep rows (header + one line per point).
 pub fn sweep_csv(rows: &[SweepRow]) -> String {
     let mut out = String::from(
-        "speed_rpm,force_x_n,force_z_n,converged,cage_speed_rpm,axial_displacement_m,radial_displacement_z_m,max_load_inner_n,max_load_outer_n,contact_angle_inner_deg,contact_angle_outer_deg,stiffness_axial_n_per_m,stiffness_radial_z_n_per_m,power_loss_w,friction_torque_n_m,basic_rating_life_h,error\n",
+        "speed_rpm,force_x_n,force_z_n,converged,cage_speed_rpm,axial_displacement_m,radial_displacement_z_m,max_load_inner_n,max_load_outer_n,contact_angle_inner_deg,contact_angle_outer_deg,stiffness_axial_n_per_m,stiffness_radial_z_n_per_m,power_loss_w,friction_torque_n_m,basic_rating_life_h,reference_rating_life_h,modified_reference_rating_life_h,error\n",
     );
     let f = |v: Option<f64>| v.map(|x| format!("{x:e}")).unwrap_or_default();
     for r in rows {
         let _ = writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
             r.speed_rpm,
             r.force_x_n,
             r.force_z_n,
@@ -626,6 +700,8 @@ pub fn sweep_csv(rows: &[SweepRow]) -> String {
             f(r.power_loss_w),
             f(r.friction_torque_n_m),
             f(r.basic_rating_life_h),
+            f(r.reference_rating_life_h),
+            f(r.modified_reference_rating_life_h),
             r.error.as_deref().unwrap_or("").replace('"', "'")
         );
     }

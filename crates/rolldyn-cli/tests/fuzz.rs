@@ -215,6 +215,8 @@ fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
                 "solver.max_step",
                 "model.traction",
                 "operating.radial_load_angle",
+                "life.contamination_factor",
+                "life.viscosity_ratio",
             ]);
             let value = if rng.below(2) == 0 {
                 *rng.pick(NUMBERS)

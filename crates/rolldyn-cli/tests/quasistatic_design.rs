@@ -275,3 +275,91 @@ fn iso281_rating_life() {
     assert!(v["rating_life"]["basic_rating_life_h"].is_null());
     assert!(v["rating_life"]["dynamic_load_rating_n"].as_f64().is_some());
 }
+
+/// Static rating, fatigue load limit, modified and reference lives
+/// (issue 16): the relations between the keys of `rating_life`; the
+/// deep-groove axial factors apply; a hybrid bearing has no modified life;
+/// a contamination factor outside [0, 1] is refused with its key.
+#[test]
+fn modified_and_reference_rating_lives() {
+    let case = rolldyn_case::presets::find("6205").unwrap().text;
+    let v = json(
+        &[
+            "quasistatic",
+            "-",
+            "--json",
+            "--axial-load",
+            "300 N",
+            "--set",
+            "life.contamination_factor=0.5",
+            "--set",
+            "life.viscosity_ratio=1.5",
+        ],
+        Some(case),
+    );
+    let r = &v["rating_life"];
+    let get = |k: &str| r[k].as_f64().unwrap_or_else(|| panic!("{k}: {r}"));
+    assert!((get("fatigue_load_limit_n") - get("static_load_rating_n") / 22.0).abs() < 1e-9);
+    assert!(get("equivalent_load_n") >= v["radial_load_n"].as_f64().unwrap());
+    assert_eq!(get("viscosity_ratio"), 1.5);
+    assert_eq!(get("contamination_factor"), 0.5);
+    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+    assert!(
+        rel(
+            get("modified_rating_life_mrev"),
+            get("life_modification_factor") * get("basic_rating_life_mrev")
+        ) < 1e-12
+    );
+    assert!(
+        rel(
+            get("modified_reference_rating_life_mrev"),
+            get("reference_life_modification_factor") * get("reference_rating_life_mrev")
+        ) < 1e-12
+    );
+    assert!(
+        rel(
+            get("reference_equivalent_load_n"),
+            get("dynamic_load_rating_n") / get("reference_rating_life_mrev").cbrt()
+        ) < 1e-12
+    );
+    let rpm = v["speed_rpm"].as_f64().unwrap();
+    assert!(
+        rel(
+            get("reference_rating_life_h"),
+            get("reference_rating_life_mrev") * 1e6 / (60.0 * rpm)
+        ) < 1e-12
+    );
+    // Without e_C: no modified lives.
+    let v = json(&["quasistatic", "-", "--json"], Some(case));
+    assert!(v["rating_life"]["modified_rating_life_mrev"].is_null());
+    assert!(
+        v["rating_life"]["reference_rating_life_mrev"]
+            .as_f64()
+            .is_some()
+    );
+    // Hybrid: ratings of the steel bearing, no modified lives.
+    let ceramic = rolldyn_case::presets::find("ceramic_45x75").unwrap().text;
+    let v = json(
+        &[
+            "quasistatic",
+            "-",
+            "--json",
+            "--set",
+            "life.contamination_factor=0.5",
+        ],
+        Some(ceramic),
+    );
+    assert!(v["rating_life"]["viscosity_ratio"].as_f64().is_some());
+    assert!(v["rating_life"]["life_modification_factor"].is_null());
+    assert!(v["rating_life"]["dynamic_load_rating_n"].as_f64().is_some());
+    let o = rolldyn(
+        &["quasistatic", "-", "--set", "life.contamination_factor=1.5"],
+        Some(case),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("life.contamination_factor") && err.contains("[0, 1]"),
+        "{err}"
+    );
+}

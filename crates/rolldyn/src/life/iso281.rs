@@ -9,16 +9,21 @@
 //! b_m = 1.3 (radial ball bearings); f_c from Table 2 (single-row radial
 //! contact groove ball bearings and angular-contact groove ball bearings),
 //! linear between its rows, over D_w cos α/D_pw; X, Y, e from Table 3 for
-//! single-row angular-contact bearings of α = 25°, 30°, 40°, and X = 1,
-//! Y = 0 under a purely radial load for any bearing. Other cases (deep-groove
-//! and 15° bearings under axial load need f_0 F_a/C_0r and the static rating)
-//! are not covered: the equivalent load is then None.
+//! single-row bearings: deep-groove (α = 0) and 15° angular-contact bearings
+//! by the relative axial load f_0 F_a/C_0r = F_a/(i Z D_w² cos α) (N, mm;
+//! ISO 76's C_0r = f_0 i Z D_w² cos α, so f_0 itself is not needed), linear
+//! between its rows and held at the end rows outside them; 20°, 25°, 30°,
+//! 35° and 40° bearings by their fixed rows; X = 1, Y = 0 under a purely
+//! radial load for any bearing. Other nominal angles (5°, 10°, between the
+//! table's angles) under axial load are not covered: the equivalent load is
+//! then None.
 //!
 //! Check: C_r of the CWRU 6205 and 6203 geometries and of the 6206 and 6304
 //! presets against manufacturers' catalogue values computed by the same
 //! standard (tests).
 
 use crate::error::InvalidParameter;
+use crate::geometry::BearingGeometry;
 
 /// b_m of radial ball bearings (ISO 281 Table 1).
 pub const B_M: f64 = 1.3;
@@ -90,30 +95,131 @@ pub fn dynamic_load_rating(
     })
 }
 
-/// ISO 281 Table 3, single-row angular-contact ball bearings:
-/// (α \[deg\], e, X, Y) for F_a/F_r > e (X = 1, Y = 0 at or below e).
-const ANGULAR: [(f64, f64, f64, f64); 3] = [
+/// ISO 281 Table 3, single-row angular-contact ball bearings of fixed
+/// rows: (α \[deg\], e, X, Y) for F_a/F_r > e (X = 1, Y = 0 at or below e).
+const ANGULAR: [(f64, f64, f64, f64); 5] = [
+    (20.0, 0.57, 0.43, 1.00),
     (25.0, 0.68, 0.41, 0.87),
     (30.0, 0.80, 0.39, 0.76),
+    (35.0, 0.95, 0.37, 0.66),
     (40.0, 1.14, 0.35, 0.57),
 ];
 
-/// Dynamic equivalent radial load P_r \[N\] for radial load F_r and axial
-/// load F_a \[N\] on a bearing of nominal contact angle α \[rad\]: F_r when
-/// F_a = 0; by Table 3 for single-row angular-contact bearings of 25°, 30°
-/// and 40° (within 0.5°); otherwise None (not covered).
-pub fn equivalent_load(radial: f64, axial: f64, contact_angle: f64) -> Option<f64> {
-    let (fr, fa) = (radial.abs(), axial.abs());
-    if fa == 0.0 {
-        return Some(fr);
+/// ISO 281 Table 3, relative axial load f_0 F_a/C_0r of the rows of
+/// deep-groove and 15° single-row bearings.
+const RELATIVE_AXIAL_LOAD: [f64; 9] = [0.172, 0.345, 0.689, 1.03, 1.38, 2.07, 3.45, 5.17, 6.89];
+
+/// A bearing type of Table 3 whose e and Y follow the relative axial load:
+/// (α \[deg\], X, e per row, Y per row).
+struct AxialLoadRows {
+    angle_deg: f64,
+    x: f64,
+    e: [f64; 9],
+    y: [f64; 9],
+}
+
+const LOAD_DEPENDENT: [AxialLoadRows; 2] = [
+    // Single-row deep-groove ball bearings.
+    AxialLoadRows {
+        angle_deg: 0.0,
+        x: 0.56,
+        e: [0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44],
+        y: [2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00],
+    },
+    // Single-row angular-contact ball bearings, α = 15°.
+    AxialLoadRows {
+        angle_deg: 15.0,
+        x: 0.44,
+        e: [0.38, 0.40, 0.43, 0.46, 0.47, 0.50, 0.55, 0.56, 0.56],
+        y: [1.47, 1.40, 1.30, 1.23, 1.19, 1.12, 1.02, 1.00, 1.00],
+    },
+];
+
+/// Linear interpolation of `values` over [`RELATIVE_AXIAL_LOAD`], held at
+/// the end rows.
+fn by_relative_axial_load(values: &[f64; 9], relative: f64) -> f64 {
+    let xs = &RELATIVE_AXIAL_LOAD;
+    if relative <= xs[0] {
+        return values[0];
     }
-    let deg = contact_angle.to_degrees();
-    let &(_, e, x, y) = ANGULAR.iter().find(|row| (row.0 - deg).abs() <= 0.5)?;
-    Some(if fr > 0.0 && fa / fr <= e {
-        fr
-    } else {
-        x * fr + y * fa
-    })
+    for i in 1..xs.len() {
+        if relative <= xs[i] {
+            let t = (relative - xs[i - 1]) / (xs[i] - xs[i - 1]);
+            return values[i - 1] + t * (values[i] - values[i - 1]);
+        }
+    }
+    values[xs.len() - 1]
+}
+
+/// The ball set of a single-row radial ball bearing, as ISO 281 rates it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BallSet {
+    /// Ball diameter D_w \[m\].
+    pub ball_diameter: f64,
+    /// Pitch diameter D_pw \[m\].
+    pub pitch_diameter: f64,
+    /// Number of balls Z.
+    pub ball_count: usize,
+    /// Nominal contact angle α \[rad\] (0 for deep-groove bearings).
+    pub contact_angle: f64,
+}
+
+impl BallSet {
+    /// The ball set of `geometry` at its nominal contact angle.
+    pub fn of(geometry: &BearingGeometry) -> Self {
+        Self {
+            ball_diameter: geometry.ball_diameter,
+            pitch_diameter: geometry.pitch_diameter,
+            ball_count: geometry.ball_count,
+            contact_angle: geometry.nominal_contact_angle(),
+        }
+    }
+
+    /// Basic dynamic radial load rating C_r \[N\].
+    pub fn dynamic_load_rating(&self) -> Result<f64, InvalidParameter> {
+        dynamic_load_rating(
+            self.ball_diameter,
+            self.pitch_diameter,
+            self.ball_count,
+            self.contact_angle,
+        )
+    }
+
+    /// Relative axial load f_0 F_a/C_0r = F_a/(Z D_w² cos α) \[N/mm², as
+    /// Table 3 tabulates it\] for the axial load F_a \[N\].
+    pub fn relative_axial_load(&self, axial: f64) -> f64 {
+        let d_mm = self.ball_diameter * 1e3;
+        axial.abs() / (self.ball_count as f64 * d_mm * d_mm * self.contact_angle.cos())
+    }
+
+    /// Dynamic equivalent radial load P_r \[N\] for radial load F_r and
+    /// axial load F_a \[N\]: F_r when F_a = 0; by Table 3 for deep-groove
+    /// bearings and angular-contact bearings of 15°, 20°, 25°, 30°, 35° and
+    /// 40° (nominal angle within 0.5°); otherwise None (not covered).
+    pub fn equivalent_load(&self, radial: f64, axial: f64) -> Option<f64> {
+        let (fr, fa) = (radial.abs(), axial.abs());
+        if fa == 0.0 {
+            return Some(fr);
+        }
+        let deg = self.contact_angle.to_degrees();
+        let near = |a: f64| (a - deg).abs() <= 0.5;
+        let (e, x, y) = if let Some(rows) = LOAD_DEPENDENT.iter().find(|r| near(r.angle_deg)) {
+            let relative = self.relative_axial_load(fa);
+            (
+                by_relative_axial_load(&rows.e, relative),
+                rows.x,
+                by_relative_axial_load(&rows.y, relative),
+            )
+        } else {
+            let &(_, e, x, y) = ANGULAR.iter().find(|row| near(row.0))?;
+            (e, x, y)
+        };
+        Some(if fr > 0.0 && fa / fr <= e {
+            fr
+        } else {
+            x * fr + y * fa
+        })
+    }
 }
 
 /// Basic rating life L_10 = (C_r/P_r)³ \[10⁶ revolutions\] (ball bearings).
@@ -149,18 +255,60 @@ mod tests {
     }
 
     #[test]
-    fn factors_and_life() {
+    fn factors() {
         assert_eq!(geometry_factor(0.20), Some(59.9));
         assert!((geometry_factor(0.21).unwrap() - 59.75).abs() < 1e-12);
         assert!(geometry_factor(0.5).is_none());
-        assert_eq!(equivalent_load(1000.0, 0.0, 0.0), Some(1000.0));
-        let a = 30f64.to_radians();
-        assert_eq!(equivalent_load(1000.0, 700.0, a), Some(1000.0));
+        let set = |deg: f64| BallSet {
+            ball_diameter: 7.94e-3,
+            pitch_diameter: 39e-3,
+            ball_count: 9,
+            contact_angle: deg.to_radians(),
+        };
+        assert_eq!(set(0.0).equivalent_load(1000.0, 0.0), Some(1000.0));
+        let a30 = set(30.0);
+        assert_eq!(a30.equivalent_load(1000.0, 700.0), Some(1000.0));
         assert!(
-            (equivalent_load(780.0, 3000.0, a).unwrap() - (0.39 * 780.0 + 0.76 * 3000.0)).abs()
+            (a30.equivalent_load(780.0, 3000.0).unwrap() - (0.39 * 780.0 + 0.76 * 3000.0)).abs()
                 < 1e-9
         );
-        assert!(equivalent_load(780.0, 3000.0, 15f64.to_radians()).is_none());
+        assert!(set(10.0).equivalent_load(780.0, 3000.0).is_none());
+        assert!(set(0.0).equivalent_load(0.0, 0.0) == Some(0.0));
+    }
+
+    /// Deep-groove 6205 ball set (Z = 9, D_w = 7.94 mm), F_a = 1000 N:
+    /// f_0 F_a/C_0r = 1000/(9 · 7.94²) = 1.7625, between Table 3's rows
+    /// 1.38 (e 0.30, Y 1.45) and 2.07 (e 0.34, Y 1.31); by hand
+    /// e = 0.3222, Y = 1.3724, so F_r = 2000 N (F_a/F_r = 0.5 > e) gives
+    /// P = 0.56 · 2000 + 1.3724 · 1000, and F_r = 4000 N (0.25 < e) P = F_r.
+    #[test]
+    fn deep_groove_axial_factors_interpolate_table_3() {
+        let set = BallSet {
+            ball_diameter: 7.94e-3,
+            pitch_diameter: 39e-3,
+            ball_count: 9,
+            contact_angle: 0.0,
+        };
+        let relative = 1000.0 / (9.0 * 7.94 * 7.94);
+        assert!((set.relative_axial_load(1000.0) - relative).abs() < 1e-12);
+        let t = (relative - 1.38) / (2.07 - 1.38);
+        let y = 1.45 + t * (1.31 - 1.45);
+        let p = set.equivalent_load(2000.0, 1000.0).unwrap();
+        assert!((p - (0.56 * 2000.0 + y * 1000.0)).abs() < 1e-9, "{p}");
+        assert!((y - 1.3724).abs() < 1e-4);
+        assert_eq!(set.equivalent_load(4000.0, 1000.0), Some(4000.0));
+        // Pure axial load beyond the last row: Y = 1.00.
+        assert_eq!(set.equivalent_load(0.0, 50_000.0), Some(50_000.0));
+        // 15°: the same column, X = 0.44; below the first row, its values.
+        let set15 = BallSet {
+            contact_angle: 15f64.to_radians(),
+            ..set
+        };
+        assert_eq!(set15.equivalent_load(0.0, 10.0), Some(1.47 * 10.0));
+    }
+
+    #[test]
+    fn life() {
         assert_eq!(basic_rating_life(2000.0, 1000.0), 8.0);
         // Large balls use the D_w^1.4 branch: continuous within 1 % at 25.4 mm.
         let below = dynamic_load_rating(25.39e-3, 150e-3, 12, 0.0).unwrap();

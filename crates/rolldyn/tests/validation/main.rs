@@ -28,6 +28,7 @@ mod cage_guide;
 mod common;
 mod convergence;
 mod efficiency;
+mod life_reference;
 mod quasistatic_fixed_tilt;
 mod quasistatic_high_speed;
 mod quasistatic_static;
