@@ -198,7 +198,8 @@ enum Failure {
 }
 
 /// A quasi-static solver error: no convergence is the model's failure (3),
-/// anything else (an unsupported load) the input's (2).
+/// anything else (a load the bearing cannot carry: unsupported, or an axial
+/// load below the least it needs) the input's (2).
 fn quasistatic_failure(e: rolldyn::quasistatic::QuasiStaticError) -> Failure {
     match e {
         rolldyn::quasistatic::QuasiStaticError::NoConvergence { .. } => {

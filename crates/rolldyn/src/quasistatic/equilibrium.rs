@@ -76,6 +76,7 @@ use crate::operating::Loads;
 use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
 use serde::{Deserialize, Serialize};
 
+mod axial_control;
 mod constraints;
 mod continuation;
 mod newton;
@@ -720,12 +721,73 @@ impl QuasiStaticSolver {
     }
 
     /// Solves the quasi-static equilibrium from the built-in start: the
-    /// static solution, then continuation in speed.
+    /// static solution, then continuation in speed; where that fails, with
+    /// the axial displacement found from its reaction (`axial_control`).
     ///
     /// With no applied load and no contact closed (clearance, at rest) the
     /// ring can sit anywhere inside the clearance: the centred position is
     /// returned with every ball unloaded and zero stiffness.
     pub fn solve(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Equilibrium, QuasiStaticError> {
+        self.solve_free(conditions, options)
+            .or_else(|e| self.start_from_outer_control(conditions, options).ok_or(e))
+            .or_else(|e| {
+                if options.prescribed_displacement[0].is_some() {
+                    return Err(e);
+                }
+                // At speed: from the solution at rest (its axial displacement
+                // held while the speed rises); else from the built-in start.
+                let at_rest = Conditions {
+                    inner_speed: 0.0,
+                    ..*conditions
+                };
+                let rest = (conditions.inner_speed != 0.0)
+                    .then(|| self.solve(&at_rest, options).ok())
+                    .flatten();
+                self.solve_by_axial_displacement(conditions, options, rest.as_ref())
+                    .map_err(|fallback| match fallback {
+                        QuasiStaticError::AxialLoadTooSmall { .. } => fallback,
+                        _ => e,
+                    })
+            })
+    }
+
+    /// Inner or Harris control where the continuation failed: from the
+    /// outer-control solution at the same speed and loads (the ring
+    /// displacement and ball positions differ little between controls).
+    fn start_from_outer_control(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Option<Equilibrium> {
+        if conditions.control == RacewayControl::Outer || conditions.inner_speed == 0.0 {
+            return None;
+        }
+        let outer = Conditions {
+            control: RacewayControl::Outer,
+            ..*conditions
+        };
+        let start = self.solve_free(&outer, options).ok()?;
+        let (state, s, it, res, controls) = self
+            .solve_at(Self::state_of(&start), conditions, options)
+            .ok()?;
+        Some(self.solution(
+            &state,
+            &s,
+            start.iterations + it,
+            res,
+            &controls,
+            conditions,
+            options,
+        ))
+    }
+
+    /// [`Self::solve`] without the axial-displacement fallback: static
+    /// solution, then continuation in speed (or axial load first).
+    fn solve_free(
         &self,
         conditions: &Conditions,
         options: &SolverOptions,
@@ -853,23 +915,7 @@ impl QuasiStaticSolver {
         conditions: &Conditions,
         options: &SolverOptions,
     ) -> Result<Equilibrium, QuasiStaticError> {
-        let state = State {
-            balls: previous
-                .balls
-                .iter()
-                .map(|b| {
-                    Vector5::new(
-                        b.axial_position,
-                        b.radial_position,
-                        b.orbital_speed,
-                        b.spin_axial,
-                        b.spin_radial,
-                    )
-                })
-                .collect(),
-            ring: Vector5::from(previous.displacement),
-        };
-        let mut guess = state;
+        let mut guess = Self::state_of(previous);
         if previous.inner_speed != 0.0 {
             let ratio = conditions.inner_speed / previous.inner_speed;
             for b in &mut guess.balls {
@@ -886,6 +932,26 @@ impl QuasiStaticSolver {
                 Ok(self.solution(&st, &s, it, res, &controls, conditions, options))
             }
             Err(_) => self.solve(conditions, options),
+        }
+    }
+
+    /// The unknowns of a solution.
+    fn state_of(solution: &Equilibrium) -> State {
+        State {
+            balls: solution
+                .balls
+                .iter()
+                .map(|b| {
+                    Vector5::new(
+                        b.axial_position,
+                        b.radial_position,
+                        b.orbital_speed,
+                        b.spin_axial,
+                        b.spin_radial,
+                    )
+                })
+                .collect(),
+            ring: Vector5::from(solution.displacement),
         }
     }
 

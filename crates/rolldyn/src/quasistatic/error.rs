@@ -28,6 +28,23 @@ pub enum QuasiStaticError {
         /// Inner-ring speed \[rpm\].
         speed_rpm: f64,
     },
+    /// Under this radial load and speed, with the tilt free, the balls
+    /// cannot carry the axial load on their loaded flank: the axial load
+    /// the bearing needs is at least `least_axial_load`
+    /// ([`super::equilibrium`]'s axial-displacement search found the
+    /// smallest reaction at a minimum that does not reach zero).
+    #[error(
+        "no equilibrium at {speed_rpm:.0} rpm: with the tilt free this bearing needs an axial load of at least {least_axial_load:.4} N at this radial load (F_x = {axial_load} N given): the ring would tilt the balls over to the groove's other flank; raise the axial load, or hold the tilt (--fix-tilt, operating.fixed_tilt)"
+    )]
+    AxialLoadTooSmall {
+        /// The axial load given \[N\].
+        axial_load: f64,
+        /// The smallest axial load with an equilibrium on the loaded
+        /// flank (the minimum of the reaction found; an estimate) \[N\].
+        least_axial_load: f64,
+        /// Inner-ring speed \[rpm\].
+        speed_rpm: f64,
+    },
     /// The ring is not held in the load direction.
     #[error("the bearing cannot carry this load: {reason}")]
     Unsupported {
