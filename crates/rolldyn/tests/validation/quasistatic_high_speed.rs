@@ -310,17 +310,11 @@ type Grid = Vec<(
     Result<rolldyn::quasistatic::Equilibrium, QuasiStaticError>,
 )>;
 
-/// Issue 16's stress grid: speed 0–20 000 rpm (5) × F_x 10 N–50 kN (5) ×
-/// F_z 0–50 kN (5), outer, inner and Harris control (375 points). Returns
-/// per point the conditions and the solve's result.
-fn stress_grid(g: &BearingGeometry) -> (QuasiStaticSolver, Grid) {
-    let s = solver(g);
+/// The grid's points: per control, speed 0–20 000 rpm (5) × F_x 10 N–50 kN
+/// (5) × F_z 0–50 kN (5).
+fn grid_points(controls: &[RacewayControl]) -> Vec<Conditions> {
     let mut points = Vec::new();
-    for control in [
-        RacewayControl::Outer,
-        RacewayControl::Inner,
-        RacewayControl::Harris,
-    ] {
+    for &control in controls {
         for rpm in [0.0, 5000.0, 10_000.0, 15_000.0, 20_000.0] {
             for fa in [10.0, 100.0, 1000.0, 10_000.0, 50_000.0] {
                 for fr in [0.0, 100.0, 1000.0, 10_000.0, 50_000.0] {
@@ -336,6 +330,19 @@ fn stress_grid(g: &BearingGeometry) -> (QuasiStaticSolver, Grid) {
             }
         }
     }
+    points
+}
+
+/// Issue 16's stress grid: speed 0–20 000 rpm (5) × F_x 10 N–50 kN (5) ×
+/// F_z 0–50 kN (5), outer, inner and Harris control (375 points). Returns
+/// per point the conditions and the solve's result.
+fn stress_grid(g: &BearingGeometry) -> (QuasiStaticSolver, Grid) {
+    let s = solver(g);
+    let points = grid_points(&[
+        RacewayControl::Outer,
+        RacewayControl::Inner,
+        RacewayControl::Harris,
+    ]);
     let results = rolldyn::quasistatic::sweep(&s, &points, &SolverOptions::default(), true);
     (s, points.into_iter().zip(results).collect())
 }
@@ -460,21 +467,7 @@ fn stress_grid_with_misalignment() {
                 prescribed_displacement: [None, None, None, Some(tilt), None],
                 ..Default::default()
             };
-            let mut points = Vec::new();
-            for rpm in [0.0, 5000.0, 10_000.0, 15_000.0, 20_000.0] {
-                for fa in [10.0, 100.0, 1000.0, 10_000.0, 50_000.0] {
-                    for fr in [0.0, 100.0, 1000.0, 10_000.0, 50_000.0] {
-                        points.push(Conditions {
-                            loads: Loads {
-                                force: [fa, 0.0, fr],
-                                moment: [0.0, 0.0],
-                            },
-                            inner_speed: rpm * RPM,
-                            control: RacewayControl::Outer,
-                        });
-                    }
-                }
-            }
+            let points = grid_points(&[RacewayControl::Outer]);
             let results = rolldyn::quasistatic::sweep(&s, &points, &options, true);
             for (p, r) in points.iter().zip(results) {
                 match r {
