@@ -2,16 +2,19 @@
 //! the static solution (Euler predictor on the solution's speed tangent,
 //! step doubled after easy solves and halved on failure), in load from an
 //! equivalent pure axial load, and the fallback that takes the axial load
-//! to speed first and then blends to the target loads at speed.
+//! to speed first and then blends to the target loads at speed; the first
+//! guesses at speed (free balls seated by the centrifugal force, speeds
+//! from the raceway control).
 
 use super::{
-    Conditions, Matrix5, QuasiStaticError, QuasiStaticSolver, SPEED_EXTENSION, Setup, State,
+    Conditions, Matrix5, QuasiStaticError, QuasiStaticSolver, Row3, SPEED_EXTENSION, Setup, State,
     Vector5,
 };
 use crate::geometry::RingKind;
 use crate::operating::Loads;
 use crate::quasistatic::SolverOptions;
-use crate::quasistatic::ring_contact::RingDisplacement;
+use crate::quasistatic::ring_contact::{RingContactEval, RingDisplacement};
+use nalgebra::{Matrix3, Vector3};
 
 /// A converged point of a path: state, Schur complement, iterations,
 /// residual, raceway controls.
@@ -225,5 +228,73 @@ impl QuasiStaticSolver {
             balls: dy,
             ring: du,
         })
+    }
+
+    /// First guess at speed for balls that carry no inner load at rest:
+    /// centrifugal force seats them at the bottom of the outer groove,
+    /// compressed by δ_o = (m r ω_m²/K_o)^{2/3} with the pure-rolling ω_m.
+    fn seat_free_balls(&self, state: &State, omega_i: f64, options: &SolverOptions) -> State {
+        let g = &self.geometry;
+        let ring = RingDisplacement::from_array(state.ring.into());
+        let k_o = self.outer_table.stiffness(0.0);
+        let mut out = state.clone();
+        for (j, y) in out.balls.iter_mut().enumerate() {
+            let (_, inner, _) = self.contacts(y, self.azimuth(j, options), &ring);
+            if inner.in_contact() {
+                continue;
+            }
+            let r = g.pitch_diameter / 2.0;
+            let omega_m = 0.5 * omega_i * (1.0 - g.ball_diameter / g.pitch_diameter);
+            let centrifugal = self.ball_mass * r * omega_m * omega_m;
+            let approach = (centrifugal / k_o).powf(2.0 / 3.0);
+            y[0] = g.outer.groove_centre_axial;
+            y[1] = g.outer.groove_centre_radius + g.outer.groove_radius - 0.5 * g.ball_diameter
+                + approach;
+        }
+        out
+    }
+
+    /// `state` with every ball's speeds (ω_m, ω_x, ω_r) replaced by the
+    /// solution of its kinematic equations (rolling at both contacts, no
+    /// spin at the controlling one) at inner-ring speed `omega_i` for the
+    /// current positions: these equations are linear in the speeds.
+    fn with_kinematic_speeds(
+        &self,
+        state: &State,
+        controls: &[RingKind],
+        omega_i: f64,
+        options: &SolverOptions,
+    ) -> State {
+        let ring = RingDisplacement::from_array(state.ring.into());
+        let half = 0.5 * self.geometry.ball_diameter;
+        let mut out = state.clone();
+        for (j, y) in out.balls.iter_mut().enumerate() {
+            let phi = self.azimuth(j, options);
+            let (ex, er) = Self::basis(phi);
+            let (_, inner, outer) = self.contacts(y, phi, &ring);
+            let r = y[1];
+            let row =
+                |c: &RingContactEval| [r, half * c.normal.dot(&er), -half * c.normal.dot(&ex)];
+            let (cc, omega_c) = match controls[j] {
+                RingKind::Inner => (&inner, omega_i),
+                RingKind::Outer => (&outer, 0.0),
+            };
+            let m = Matrix3::from_rows(&[
+                Row3::from(row(&inner)),
+                Row3::from(row(&outer)),
+                Row3::new(0.0, cc.normal.dot(&ex), cc.normal.dot(&er)),
+            ]);
+            let rhs = Vector3::new(
+                omega_i * (r + half * inner.normal.dot(&er)),
+                0.0,
+                omega_c * cc.normal.dot(&ex),
+            );
+            if let Some(w) = m.lu().solve(&rhs) {
+                y[2] = w[0];
+                y[3] = w[1];
+                y[4] = w[2];
+            }
+        }
+        out
     }
 }

@@ -1,0 +1,182 @@
+//! The solve strategy (MODEL §7): the static solution from the built-in
+//! start, the continuation in speed, and the fallbacks in order (axial
+//! load to speed first, outer-control start for inner and Harris control,
+//! the axial-displacement search); warm starts from a previous solution
+//! and the first guesses at speed.
+
+use super::{
+    Conditions, Equilibrium, Matrix5, QuasiStaticError, QuasiStaticSolver, RacewayControl, State,
+    Vector5,
+};
+use crate::geometry::RingKind;
+use crate::quasistatic::SolverOptions;
+use crate::quasistatic::ring_contact::RingDisplacement;
+
+impl QuasiStaticSolver {
+    /// Solves the quasi-static equilibrium from the built-in start: the
+    /// static solution, then continuation in speed; where that fails, with
+    /// the axial displacement found from its reaction (`axial_control`).
+    ///
+    /// With no applied load and no contact closed (clearance, at rest) the
+    /// ring can sit anywhere inside the clearance: the centred position is
+    /// returned with every ball unloaded and zero stiffness.
+    pub fn solve(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Equilibrium, QuasiStaticError> {
+        self.solve_free(conditions, options)
+            .or_else(|e| self.start_from_outer_control(conditions, options).ok_or(e))
+            .or_else(|e| {
+                if options.prescribed_displacement[0].is_some() {
+                    return Err(e);
+                }
+                // At speed: from the solution at rest (its axial displacement
+                // held while the speed rises); else from the built-in start.
+                let at_rest = Conditions {
+                    inner_speed: 0.0,
+                    ..*conditions
+                };
+                let rest = (conditions.inner_speed != 0.0)
+                    .then(|| self.solve(&at_rest, options).ok())
+                    .flatten();
+                self.solve_by_axial_displacement(conditions, options, rest.as_ref())
+                    .map_err(|fallback| match fallback {
+                        QuasiStaticError::AxialLoadTooSmall { .. } => fallback,
+                        _ => e,
+                    })
+            })
+    }
+
+    /// Inner or Harris control where the continuation failed: from the
+    /// outer-control solution at the same speed and loads (the ring
+    /// displacement and ball positions differ little between controls).
+    fn start_from_outer_control(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Option<Equilibrium> {
+        if conditions.control == RacewayControl::Outer || conditions.inner_speed == 0.0 {
+            return None;
+        }
+        let outer = Conditions {
+            control: RacewayControl::Outer,
+            ..*conditions
+        };
+        let start = self.solve_free(&outer, options).ok()?;
+        let (state, s, it, res, controls) = self
+            .solve_at(Self::state_of(&start), conditions, options)
+            .ok()?;
+        Some(self.solution(
+            &state,
+            &s,
+            start.iterations + it,
+            res,
+            &controls,
+            conditions,
+            options,
+        ))
+    }
+
+    /// [`Self::solve`] without the axial-displacement fallback: static
+    /// solution, then continuation in speed (or axial load first).
+    pub(super) fn solve_free(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Equilibrium, QuasiStaticError> {
+        let loads = conditions.loads;
+        let at_rest = Conditions {
+            inner_speed: 0.0,
+            ..*conditions
+        };
+        let start = self.initial_state(&loads, options, false);
+        if Self::applied(&loads).amax() == 0.0
+            && !self.any_contact(&start, options)
+            && conditions.inner_speed == 0.0
+        {
+            let controls = vec![RingKind::Outer; self.geometry.ball_count];
+            return Ok(self.solution(
+                &start,
+                &Matrix5::zeros(),
+                0,
+                0.0,
+                &controls,
+                &at_rest,
+                options,
+            ));
+        }
+        let static_solution = self
+            .solve_at(start, &at_rest, options)
+            .or_else(|_| {
+                self.solve_at(self.initial_state(&loads, options, true), &at_rest, options)
+            })
+            .or_else(|_| self.continue_in_load(&at_rest, options))?;
+        let path = self
+            .continue_in_speed(static_solution, conditions, options)
+            .or_else(|e| {
+                self.axial_then_load_at_speed(conditions, options)
+                    .map_err(|_| e)
+            })?;
+        let (state, s, iterations, residual, controls) = path;
+        Ok(self.solution(
+            &state, &s, iterations, residual, &controls, conditions, options,
+        ))
+    }
+
+    fn any_contact(&self, state: &State, options: &SolverOptions) -> bool {
+        let ring = RingDisplacement::from_array(state.ring.into());
+        state.balls.iter().enumerate().any(|(j, y)| {
+            let (_, inner, outer) = self.contacts(y, self.azimuth(j, options), &ring);
+            inner.in_contact() || outer.in_contact()
+        })
+    }
+
+    /// Solves starting from a previous solution (warm start for sweeps);
+    /// falls back to the built-in start.
+    pub fn solve_from(
+        &self,
+        previous: &Equilibrium,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Equilibrium, QuasiStaticError> {
+        let mut guess = Self::state_of(previous);
+        if previous.inner_speed != 0.0 {
+            let ratio = conditions.inner_speed / previous.inner_speed;
+            for b in &mut guess.balls {
+                b[2] *= ratio;
+                b[3] *= ratio;
+                b[4] *= ratio;
+            }
+        }
+        if previous.inner_speed == 0.0 && conditions.inner_speed != 0.0 {
+            return self.solve(conditions, options);
+        }
+        match self.solve_at(guess, conditions, options) {
+            Ok((st, s, it, res, controls)) => {
+                Ok(self.solution(&st, &s, it, res, &controls, conditions, options))
+            }
+            Err(_) => self.solve(conditions, options),
+        }
+    }
+
+    /// The unknowns of a solution.
+    pub(super) fn state_of(solution: &Equilibrium) -> State {
+        State {
+            balls: solution
+                .balls
+                .iter()
+                .map(|b| {
+                    Vector5::new(
+                        b.axial_position,
+                        b.radial_position,
+                        b.orbital_speed,
+                        b.spin_axial,
+                        b.spin_radial,
+                    )
+                })
+                .collect(),
+            ring: Vector5::from(solution.displacement),
+        }
+    }
+}
