@@ -15,8 +15,16 @@
 //! the constraint must add, R_x(x) = 0, by a safeguarded secant:
 //! Newton steps on the conventional axial stiffness 1/C_xx (dR_x/dx with
 //! the other loads held) until the root is bracketed, then the Illinois
-//! variant of regula falsi. R_x is monotone in x (the axial stiffness with
-//! the other loads held is positive at every equilibrium).
+//! variant of regula falsi.
+//!
+//! Along the loaded-flank branch R_x falls with x towards the unloaded
+//! side; with the tilt free it can reach a minimum short of zero (7218B,
+//! F_x = 10 N, F_z = 50 kN: R_x ≥ 16.7 N), beyond which R_x rises again as
+//! the balls turn over to the groove's other flank (the torus has no
+//! shoulder; docs/geometry.md). When |R_x| keeps growing for
+//! [`MARCH_AFTER_MINIMUM`] doubling steps past its minimum, the search
+//! stops with [`QuasiStaticError::AxialLoadTooSmall`], giving the least
+//! axial load F_x + min R_x.
 
 use super::{
     Conditions, Equilibrium, Matrix5, QuasiStaticError, QuasiStaticSolver, STAGNATION_ACCEPT,
@@ -133,7 +141,7 @@ impl QuasiStaticSolver {
                 growing = 0;
             } else if bracket.is_none() && r_next.signum() == r.signum() {
                 growing += 1;
-                // |R| grew over a march of doubling steps (> 8 times the
+                // |R| grew over a march of doubling steps (16 times the
                 // step that found the minimum) without changing sign: the
                 // reaction has a minimum short of zero. Beyond it the
                 // balls move to the groove's other flank (a branch a
