@@ -8,7 +8,7 @@
 //!   fatigue load limit C_u;
 //! * [`modified`] — the life modification factor a_ISO from the viscosity
 //!   ratio κ, the contamination factor e_C and C_u/P (ISO 281 §9.3);
-//! * [`reference`] — ISO/TS 16281's basic reference rating life L_10r from
+//! * [`mod@reference`] — ISO/TS 16281's basic reference rating life L_10r from
 //!   the actual ball loads of a quasi-static solution.
 //!
 //! [`RatingLife::new`] gathers them for one operating point. All ratings
