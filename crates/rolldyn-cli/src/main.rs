@@ -197,12 +197,14 @@ enum Failure {
     Internal(String),
 }
 
-/// A quasi-static solver error: no convergence is the model's failure (3),
-/// anything else (a load the bearing cannot carry: unsupported, or an axial
-/// load below the least it needs) the input's (2).
+/// A quasi-static solver error: no convergence, or a solution branch that
+/// ends short of the axial load (a least axial load), is the model's
+/// failure (3); an unsupported load (no ball in its direction) the input's
+/// (2).
 fn quasistatic_failure(e: rolldyn::quasistatic::QuasiStaticError) -> Failure {
     match e {
-        rolldyn::quasistatic::QuasiStaticError::NoConvergence { .. } => {
+        rolldyn::quasistatic::QuasiStaticError::NoConvergence { .. }
+        | rolldyn::quasistatic::QuasiStaticError::AxialLoadTooSmall { .. } => {
             Failure::Model(e.to_string())
         }
         other => Failure::BadInput(other.to_string()),

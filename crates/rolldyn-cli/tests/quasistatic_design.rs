@@ -363,3 +363,41 @@ fn modified_and_reference_rating_lives() {
         "{err}"
     );
 }
+
+/// A light axial load under a heavy radial load on a single 40° bearing
+/// with its tilt free (issue 16's stress grid): the solution branch ends
+/// before the given axial load; the solve fails with the model's exit 3
+/// and names the least axial load, which then solves.
+#[test]
+fn least_axial_load_is_named() {
+    let case = rolldyn_case::presets::find("7218B").unwrap().text;
+    let args = [
+        "quasistatic",
+        "-",
+        "--speed",
+        "0 rpm",
+        "--radial-load",
+        "50 kN",
+    ];
+    let o = rolldyn(&[&args[..], &["--axial-load", "10 N"]].concat(), Some(case));
+    assert_eq!(o.status.code(), Some(3));
+    let err = String::from_utf8_lossy(&o.stderr);
+    let least: f64 = err
+        .split("at least ")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("{err}"));
+    assert!(least > 10.0 && least < 100.0, "{err}");
+    let enough = format!("{} N", 1.05 * least + 1.0);
+    let o = rolldyn(
+        &[&args[..], &["--axial-load", &enough]].concat(),
+        Some(case),
+    );
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}

@@ -28,13 +28,17 @@ pub enum QuasiStaticError {
         /// Inner-ring speed \[rpm\].
         speed_rpm: f64,
     },
-    /// Under this radial load and speed, with the tilt free, the balls
-    /// cannot carry the axial load on their loaded flank: the axial load
+    /// Along the branch the solver follows, the balls cannot carry the
+    /// axial load on their loaded flank at this radial load and speed (with
+    /// the tilt free under combined load, or at speed under inner control):
+    /// the axial reaction has a minimum short of zero. Another branch may
+    /// still exist (inner control of the 7218B has two near 6 600 rpm). The
+    /// axial load
     /// the bearing needs is at least `least_axial_load`
     /// ([`super::equilibrium`]'s axial-displacement search found the
     /// smallest reaction at a minimum that does not reach zero).
     #[error(
-        "no equilibrium at {speed_rpm:.0} rpm: with the tilt free this bearing needs an axial load of at least {least_axial_load:.4} N at this radial load (F_x = {axial_load} N given): the ring would tilt the balls over to the groove's other flank; raise the axial load, or hold the tilt (--fix-tilt, operating.fixed_tilt)"
+        "no equilibrium found at {speed_rpm:.0} rpm: along the solution branch this load needs an axial load of at least {least_axial_load:.4} N at this radial load and speed (F_x = {axial_load} N given; below it the balls run over towards the groove's other flank); raise the axial load, under combined load hold the tilt (--fix-tilt), or reach the point by a sweep (another branch may exist)"
     )]
     AxialLoadTooSmall {
         /// The axial load given \[N\].
