@@ -450,10 +450,9 @@ fn stress_grid_7218b() {
 /// Issue 16's stress grid with a misalignment: the tilt θ_y held at
 /// 0.5 and 2 mrad (`--misalignment`), outer control, speed × F_x × F_z as
 /// above (250 points per bearing). The 7008C converges everywhere; the
-/// 7218B fails at 53 (found 2026-11-23: 31 at 0.5 mrad, 22 at 2 mrad,
-/// mostly light axial with heavy radial load, where the first speed step
-/// from rest does not converge at any size: docs/quasistatic.md). A
-/// ratchet: the count may only fall.
+/// 7218B fails at 53 (found 2026-11-23; mostly light axial with heavy
+/// radial load, where the first speed step from rest does not converge at
+/// any size: docs/quasistatic.md). A ratchet: the count may only fall.
 #[test]
 fn stress_grid_with_misalignment() {
     for (name, g, allowed) in [
