@@ -176,6 +176,36 @@ impl<'a> StateReader<'a> {
     }
 }
 
+/// Names of the solution vectors every adaptive integrator keeps, in the
+/// order [`save_step`] writes them.
+const STEP_VECTORS: [&str; 4] = ["y", "f", "y_prev", "f_prev"];
+
+/// Writes the step state the adaptive integrators share: t, h, t_prev,
+/// h_prev, then y, f, y_prev, f_prev.
+pub(crate) fn save_step(out: &mut StateWriter, times: [f64; 4], vectors: [&[f64]; 4]) {
+    for v in times {
+        out.f64(v);
+    }
+    for v in vectors {
+        out.f64s(v);
+    }
+}
+
+/// Reads what [`save_step`] wrote into the integrator's fields.
+pub(crate) fn restore_step(
+    input: &mut StateReader,
+    times: [&mut f64; 4],
+    vectors: [&mut [f64]; 4],
+) -> Result<(), CheckpointError> {
+    for t in times {
+        *t = input.f64()?;
+    }
+    for (name, v) in STEP_VECTORS.into_iter().zip(vectors) {
+        input.f64s_into(name, v)?;
+    }
+    Ok(())
+}
+
 /// A part of a run whose state a checkpoint carries.
 pub trait Checkpoint {
     /// Appends the state.

@@ -2,7 +2,9 @@
 //! output (Hairer, Nørsett & Wanner, *Solving Ordinary Differential
 //! Equations I*, 2nd ed., §II.4 step-size control, §II.6 dense output).
 
-use super::checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
+use super::checkpoint::{
+    Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
+};
 use super::tableau::Tableau;
 use super::{Integrator, OdeSystem};
 
@@ -429,26 +431,23 @@ impl ExplicitRk {
 impl Checkpoint for ExplicitRk {
     fn save(&self, out: &mut StateWriter) {
         out.tag(self.tableau.name);
-        for v in [self.t, self.h, self.t_prev, self.h_prev] {
-            out.f64(v);
-        }
-        for v in [&self.y, &self.f, &self.y_prev, &self.f_prev, &self.dense] {
-            out.f64s(v);
-        }
+        save_step(
+            out,
+            [self.t, self.h, self.t_prev, self.h_prev],
+            [&self.y, &self.f, &self.y_prev, &self.f_prev],
+        );
+        out.f64s(&self.dense);
         out.f64(self.control_state.err_prev);
         self.stats.save(out);
     }
 
     fn restore(&mut self, input: &mut StateReader) -> Result<(), CheckpointError> {
         input.tag(self.tableau.name)?;
-        self.t = input.f64()?;
-        self.h = input.f64()?;
-        self.t_prev = input.f64()?;
-        self.h_prev = input.f64()?;
-        input.f64s_into("y", &mut self.y)?;
-        input.f64s_into("f", &mut self.f)?;
-        input.f64s_into("y_prev", &mut self.y_prev)?;
-        input.f64s_into("f_prev", &mut self.f_prev)?;
+        restore_step(
+            input,
+            [&mut self.t, &mut self.h, &mut self.t_prev, &mut self.h_prev],
+            [&mut self.y, &mut self.f, &mut self.y_prev, &mut self.f_prev],
+        )?;
         input.f64s_into("dense", &mut self.dense)?;
         self.control_state.err_prev = input.f64()?;
         self.stats.restore(input)

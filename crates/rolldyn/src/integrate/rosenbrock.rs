@@ -24,7 +24,9 @@
 //! dense output (cubic Hermite, order 3), so a step costs 4 right-hand
 //! sides and one factorization.
 
-use super::checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
+use super::checkpoint::{
+    Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
+};
 use super::explicit::{IntegrationError, IntegrationStats, PiControl};
 use super::jacobian::{JacobianWork, finite_difference};
 use super::linear::{BlockJacobian, BlockLayout, BlockLu};
@@ -397,12 +399,11 @@ impl Rosenbrock {
 impl Checkpoint for Rosenbrock {
     fn save(&self, out: &mut StateWriter) {
         out.tag(self.tableau.name);
-        for v in [self.t, self.h, self.t_prev, self.h_prev] {
-            out.f64(v);
-        }
-        for v in [&self.y, &self.f, &self.y_prev, &self.f_prev] {
-            out.f64s(v);
-        }
+        save_step(
+            out,
+            [self.t, self.h, self.t_prev, self.h_prev],
+            [&self.y, &self.f, &self.y_prev, &self.f_prev],
+        );
         out.f64(self.control_state.err_prev);
         // Age + 1, 0 for "no Jacobian yet".
         out.u64(self.jacobian_age.map_or(0, |a| u64::from(a) + 1));
@@ -418,14 +419,11 @@ impl Checkpoint for Rosenbrock {
     /// saved Jacobian and step (the same operations, so the same bits).
     fn restore(&mut self, input: &mut StateReader) -> Result<(), CheckpointError> {
         input.tag(self.tableau.name)?;
-        self.t = input.f64()?;
-        self.h = input.f64()?;
-        self.t_prev = input.f64()?;
-        self.h_prev = input.f64()?;
-        input.f64s_into("y", &mut self.y)?;
-        input.f64s_into("f", &mut self.f)?;
-        input.f64s_into("y_prev", &mut self.y_prev)?;
-        input.f64s_into("f_prev", &mut self.f_prev)?;
+        restore_step(
+            input,
+            [&mut self.t, &mut self.h, &mut self.t_prev, &mut self.h_prev],
+            [&mut self.y, &mut self.f, &mut self.y_prev, &mut self.f_prev],
+        )?;
         self.control_state.err_prev = input.f64()?;
         self.jacobian_age = match input.u64()? {
             0 => None,
