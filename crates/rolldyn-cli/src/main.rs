@@ -9,12 +9,14 @@
 mod checkpoint;
 mod contact;
 mod finite;
+mod html_report;
 mod power;
 mod power_channels;
 mod quasistatic;
 mod quasistatic_films;
 mod report;
 mod run;
+mod run_sweep;
 mod spectrum;
 mod thermal;
 mod traction;
@@ -155,6 +157,24 @@ enum Command {
         /// under 5 % of the run.
         #[arg(long, value_name = "TIME")]
         checkpoint_interval: Option<String>,
+        /// Also write DIR/report.html (as `rolldyn report DIR`).
+        #[arg(long)]
+        report: bool,
+        /// Run a sweep: speed=0rpm..20000rpm/5 (linear range) or
+        /// axial=100N,1kN (list); also radial=... Repeat for a grid. The
+        /// points run in parallel, each into DIR/point-NNNN/, with a
+        /// combined DIR/sweep.csv and DIR/sweep.json.
+        #[arg(long, value_name = "NAME=VALUES")]
+        sweep: Vec<String>,
+    },
+    /// Write DIR/report.html: one self-contained HTML file (inline SVG, no
+    /// network, no script) with the case, summary, solver statistics and
+    /// plots of a run directory, or the swept quantities of a sweep
+    /// directory.
+    Report {
+        /// A directory written by `rolldyn run` or by a sweep.
+        #[arg(value_name = "DIR")]
+        dir: String,
     },
     /// Traction of one ball–raceway contact with the case's traction model
     /// (FASTSIM, Coulomb, curve, EHL), or of an explicit ellipse with
@@ -444,6 +464,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
             force,
             resume,
             checkpoint_interval,
+            report: with_report,
+            sweep,
         } => {
             let checkpoint_interval = match &checkpoint_interval {
                 None => run::DEFAULT_CHECKPOINT_INTERVAL,
@@ -461,6 +483,21 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     v
                 }
             };
+            if !sweep.is_empty() {
+                if let Some(dir) = resume {
+                    return Err(bad_arg(
+                        "--resume",
+                        &dir,
+                        "not with --sweep: resume one point with --resume DIR/point-NNNN",
+                    ));
+                }
+                let options = run::RunOptions {
+                    force,
+                    checkpoint_interval,
+                    ..Default::default()
+                };
+                return run_sweep::command(case, &sweep, duration, &output, &options, with_report);
+            }
             let resuming = resume.is_some();
             let (record, output) = match resume {
                 Some(dir) => {
@@ -502,6 +539,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 force: record.force,
                 checkpoint_interval,
                 resume: resuming,
+                ..Default::default()
             };
             let summary = run::run_case(&record, &case, dir, &options)?;
             let text = format!(
@@ -526,6 +564,10 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 output
             );
             emit(&text)?;
+            if with_report {
+                let path = html_report::write(dir)?;
+                emit(&format!("wrote {}\n", path.display()))?;
+            }
             match summary.status {
                 "failed" => Err(Failure::Model(format!(
                     "{}; the files hold the run up to t = {:.6} s. Try a smaller solver.max_step or solver.relative_tolerance, or another solver.integrator",
@@ -538,6 +580,10 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 ))),
                 _ => Ok(()),
             }
+        }
+        Command::Report { dir } => {
+            let path = html_report::write(std::path::Path::new(&dir))?;
+            emit(&format!("wrote {}\n", path.display()))
         }
         Command::Traction(args) => traction::command(*args),
         Command::Power(args) => power::command(*args),

@@ -430,7 +430,7 @@ pub const DEFAULT_CHECKPOINT_INTERVAL: f64 = 30.0;
 const CHECKPOINT_COST_FACTOR: f64 = 20.0;
 
 /// How `run_case` runs.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Default)]
 pub struct RunOptions {
     /// Skip the step and memory limits.
     pub force: bool,
@@ -438,6 +438,11 @@ pub struct RunOptions {
     pub checkpoint_interval: f64,
     /// Continue from `DIR/checkpoint.bin` instead of starting.
     pub resume: bool,
+    /// The flag that stops the run (a sweep shares one among its points);
+    /// None: a Ctrl-C handler of its own.
+    pub stop: Option<Arc<AtomicBool>>,
+    /// No progress bar (a sweep draws one for all its points).
+    pub quiet: bool,
 }
 
 /// Runs the case (from `record`) and writes the results into `dir`:
@@ -603,13 +608,17 @@ pub fn run_case(
         next: next_sample,
     };
 
-    let stop = Arc::new(AtomicBool::new(false));
-    {
-        let stop = stop.clone();
-        // A second handler cannot be installed in the same process; ignore.
-        let _ = ctrlc::set_handler(move || stop.store(true, Ordering::Relaxed));
-    }
-    let bar = if std::io::stderr().is_terminal() {
+    let stop = match &options.stop {
+        Some(stop) => stop.clone(),
+        None => {
+            let stop = Arc::new(AtomicBool::new(false));
+            let handler = stop.clone();
+            // A second handler cannot be installed in the same process; ignore.
+            let _ = ctrlc::set_handler(move || handler.store(true, Ordering::Relaxed));
+            stop
+        }
+    };
+    let bar = if !options.quiet && std::io::stderr().is_terminal() {
         let bar = ProgressBar::new(1000);
         bar.set_style(
             ProgressStyle::with_template(

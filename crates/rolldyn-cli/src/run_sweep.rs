@@ -1,0 +1,296 @@
+//! `rolldyn run CASE --sweep speed=… --sweep axial=… -o DIR`: dynamic
+//! runs over a grid (first `--sweep` outermost, as `quasistatic
+//! --sweep`), in parallel on the machine's cores. Each point is an
+//! ordinary run directory `DIR/point-NNNN/` (its `run.json` holds the
+//! point's overrides, so `rolldyn run --resume DIR/point-NNNN` continues
+//! an interrupted point); `DIR/sweep.json` and `DIR/sweep.csv` hold one
+//! row per point: the swept inputs, the status and every number of the
+//! point's `summary.json` (nested keys joined with '.').
+//!
+//! Deterministic whatever the thread count: each point runs on one
+//! thread from its own case, and the table is written in grid order. A
+//! Ctrl-C stops the running points (they keep what they computed, as a
+//! single run does) and starts no more; their rows say so.
+
+use crate::checkpoint::RunRecord;
+use crate::quasistatic::{Swept, conditions, parse_sweep};
+use crate::run::{RunOptions, run_case};
+use crate::{CaseArgs, CaseOverrides, Failure, bad_arg, emit, html_report};
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+use serde_json::{Map, Value};
+use std::fmt::Write;
+use std::io::IsTerminal;
+use std::path::Path;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
+const RPM: f64 = std::f64::consts::TAU / 60.0;
+
+/// Most points of a dynamic sweep without `--force`.
+pub const MAX_RUN_SWEEP_POINTS: usize = 1000;
+
+/// Status of a point the sweep did not start (interrupted before it).
+const NOT_STARTED: &str = "not_started";
+
+/// The overrides of each grid point: the base ones plus the swept values
+/// (first sweep outermost).
+pub fn grid(base: &CaseOverrides, sweeps: &[(Swept, Vec<f64>)]) -> Vec<CaseOverrides> {
+    let mut points = vec![base.clone()];
+    for (swept, values) in sweeps {
+        points = points
+            .iter()
+            .flat_map(|p| {
+                values.iter().map(move |&v| {
+                    let mut o = p.clone();
+                    match swept {
+                        // SI text: the point runs at exactly the swept value.
+                        Swept::Speed => o.speed = Some(format!("{v:?} rad/s")),
+                        Swept::Axial => o.axial_load = Some(format!("{v:?} N")),
+                        Swept::Radial => o.radial_load = Some(format!("{v:?} N")),
+                    }
+                    o
+                })
+            })
+            .collect();
+    }
+    points
+}
+
+/// `rolldyn run --sweep`: parses the sweeps, runs the grid, prints a
+/// line per point and the totals; with `report`, writes the sweep's
+/// report and each point's.
+pub fn command(
+    mut case: CaseArgs,
+    sweeps: &[String],
+    duration: Option<String>,
+    output: &str,
+    options: &RunOptions,
+    report: bool,
+) -> Result<(), Failure> {
+    let sweeps = sweeps
+        .iter()
+        .map(|s| parse_sweep(s).map_err(|e| bad_arg("--sweep", s, e)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let count: usize = sweeps.iter().map(|(_, v)| v.len()).product();
+    if count > MAX_RUN_SWEEP_POINTS && !options.force {
+        return Err(Failure::BadInput(format!(
+            "--sweep: the grid has {count} runs, above the limit of {MAX_RUN_SWEEP_POINTS}; use fewer points or pass --force"
+        )));
+    }
+    if let Some(d) = duration {
+        case.overrides.set.push(format!("solver.duration={d}"));
+    }
+    case.overrides.overrides()?;
+    let (source, text) = case.read()?;
+    let points = grid(&case.overrides, &sweeps);
+    let dir = Path::new(output);
+    let (rows, interrupted) = run(&source, text.as_deref(), &points, dir, options)?;
+    let mut out = String::new();
+    for row in &rows {
+        let _ = writeln!(
+            out,
+            "{}: {:.1} rpm, F_x {} N, F_z {} N: {}{}",
+            row["point"].as_str().unwrap_or("?"),
+            row["speed_rpm"].as_f64().unwrap_or(f64::NAN),
+            row["force_x_n"],
+            row["force_z_n"],
+            row["status"].as_str().unwrap_or("?"),
+            row.get("mean_cage_speed_rpm")
+                .and_then(Value::as_f64)
+                .map(|c| format!(", cage {c:.1} rpm"))
+                .unwrap_or_default()
+        );
+    }
+    let completed = rows.iter().filter(|r| r["status"] == "completed").count();
+    let _ = writeln!(
+        out,
+        "{} of {} runs completed; wrote {output}/sweep.csv, {output}/sweep.json and {output}/point-*/",
+        completed,
+        rows.len()
+    );
+    emit(&out)?;
+    if report {
+        for row in &rows {
+            let point = dir.join(row["point"].as_str().unwrap_or_default());
+            if point.join(rolldyn_report::run::SUMMARY_FILE).is_file() {
+                html_report::write(&point)?;
+            }
+        }
+        let path = html_report::write(dir)?;
+        emit(&format!("wrote {} (and one per point)\n", path.display()))?;
+    }
+    if interrupted {
+        return Err(Failure::Interrupted(format!(
+            "interrupted; {output}/ holds what was computed (rows with status \"interrupted\" or \"{NOT_STARTED}\")"
+        )));
+    }
+    Ok(())
+}
+
+/// Runs the grid; writes the point directories, `sweep.json` and
+/// `sweep.csv` into `dir`. Returns the rows and whether a Ctrl-C stopped
+/// the sweep.
+pub fn run(
+    source: &str,
+    case_text: Option<&str>,
+    points: &[CaseOverrides],
+    dir: &Path,
+    options: &RunOptions,
+) -> Result<(Vec<Map<String, Value>>, bool), Failure> {
+    // Every point's case first: bad input fails before any run starts.
+    let cases = points
+        .iter()
+        .map(|o| o.load_text(source, case_text))
+        .collect::<Result<Vec<_>, _>>()?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| Failure::BadInput(format!("cannot create {}: {e}", dir.display())))?;
+    let stop = Arc::new(AtomicBool::new(false));
+    {
+        let stop = stop.clone();
+        let _ = ctrlc::set_handler(move || stop.store(true, Ordering::Relaxed));
+    }
+    let options = RunOptions {
+        stop: Some(stop.clone()),
+        quiet: true,
+        ..options.clone()
+    };
+    let width = points.len().saturating_sub(1).to_string().len().max(4);
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let bar = ProgressBar::new(points.len() as u64);
+        bar.set_style(
+            ProgressStyle::with_template(
+                "[{elapsed_precise}] {wide_bar} {pos}/{len} points ETA {eta}",
+            )
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+        );
+        bar
+    });
+    let done = AtomicUsize::new(0);
+    let rows = points
+        .par_iter()
+        .zip(&cases)
+        .enumerate()
+        .map(|(k, (overrides, case))| {
+            let name = format!("point-{k:0width$}");
+            let at = conditions(case, None);
+            let mut row = Map::new();
+            row.insert("point".into(), Value::from(name.clone()));
+            row.insert("speed_rpm".into(), Value::from(at.inner_speed / RPM));
+            row.insert("force_x_n".into(), Value::from(at.loads.force[0]));
+            row.insert("force_z_n".into(), Value::from(at.loads.force[2]));
+            let result = if stop.load(Ordering::Relaxed) {
+                None
+            } else {
+                let record = RunRecord::new(
+                    source.to_string(),
+                    case_text.map(str::to_string),
+                    overrides.clone(),
+                    options.force,
+                );
+                Some(run_case(&record, case, &dir.join(&name), &options))
+            };
+            match result {
+                None => {
+                    row.insert("status".into(), Value::from(NOT_STARTED));
+                    row.insert("error".into(), Value::Null);
+                }
+                Some(Err(
+                    Failure::BadInput(m)
+                    | Failure::Model(m)
+                    | Failure::Internal(m)
+                    | Failure::Interrupted(m),
+                )) => {
+                    row.insert("status".into(), Value::from("failed"));
+                    row.insert("error".into(), Value::from(m));
+                }
+                Some(Ok(summary)) => {
+                    let value = serde_json::to_value(&summary).unwrap_or(Value::Null);
+                    row.insert("status".into(), value["status"].clone());
+                    row.insert("error".into(), value["error"].clone());
+                    flatten("", &value, &mut row);
+                }
+            }
+            if let Some(bar) = &bar {
+                bar.set_position(done.fetch_add(1, Ordering::Relaxed) as u64 + 1);
+            }
+            row
+        })
+        .collect::<Vec<_>>();
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    write_tables(dir, &rows)?;
+    Ok((rows, stop.load(Ordering::Relaxed)))
+}
+
+/// Adds the numbers of a summary to a row (nested keys joined by '.';
+/// arrays by index). Strings other than the status and error are left
+/// out: the table is numeric.
+fn flatten(prefix: &str, value: &Value, row: &mut Map<String, Value>) {
+    match value {
+        Value::Object(map) => {
+            for (k, v) in map {
+                let key = if prefix.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{prefix}.{k}")
+                };
+                flatten(&key, v, row);
+            }
+        }
+        Value::Array(items) => {
+            for (i, v) in items.iter().enumerate() {
+                flatten(&format!("{prefix}.{i}"), v, row);
+            }
+        }
+        Value::Number(_) | Value::Null => {
+            if !matches!(prefix, "speed_rpm" | "force_x_n" | "force_z_n") {
+                row.insert(prefix.to_string(), value.clone());
+            }
+        }
+        Value::String(_) | Value::Bool(_) => {}
+    }
+}
+
+/// Writes `sweep.json` and `sweep.csv` (columns: the union of the rows'
+/// keys in first-seen order).
+fn write_tables(dir: &Path, rows: &[Map<String, Value>]) -> Result<(), Failure> {
+    let json = crate::finite::to_json(rows).map_err(|e| Failure::Internal(e.to_string()))?;
+    // The point and its inputs first, then the summary's keys.
+    let mut columns: Vec<&str> = vec![
+        "point",
+        "speed_rpm",
+        "force_x_n",
+        "force_z_n",
+        "status",
+        "error",
+    ];
+    for row in rows {
+        for key in row.keys() {
+            if !columns.contains(&key.as_str()) {
+                columns.push(key);
+            }
+        }
+    }
+    let mut csv = columns.join(",");
+    csv.push('\n');
+    for row in rows {
+        let cells: Vec<String> = columns
+            .iter()
+            .map(|c| match row.get(*c) {
+                Some(Value::Number(n)) => n.to_string(),
+                Some(Value::String(s)) => format!("\"{}\"", s.replace('"', "'")),
+                _ => String::new(),
+            })
+            .collect();
+        csv.push_str(&cells.join(","));
+        csv.push('\n');
+    }
+    for (name, text) in [("sweep.json", json), ("sweep.csv", csv)] {
+        rolldyn_io::write_atomic(&dir.join(name), text.as_bytes()).map_err(|e| {
+            Failure::BadInput(format!("cannot write {}/{name}: {e}", dir.display()))
+        })?;
+    }
+    Ok(())
+}

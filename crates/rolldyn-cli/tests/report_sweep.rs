@@ -1,0 +1,229 @@
+//! End-to-end tests of issue 14's CLI parts: `rolldyn report DIR`,
+//! `rolldyn run --report` and dynamic sweeps `rolldyn run --sweep`
+//! (parallel, deterministic whatever the thread count).
+
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{rolldyn, stderr, stdout, temp_dir};
+use serde_json::Value;
+
+/// Sections of a report page, checked to be well-formed XML with inline
+/// SVG plots only.
+fn sections(html: &str) -> (Vec<String>, usize) {
+    let doc = roxmltree::Document::parse_with_options(
+        html,
+        roxmltree::ParsingOptions {
+            allow_dtd: true,
+            ..Default::default()
+        },
+    )
+    .expect("well-formed report");
+    let ids = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("section"))
+        .map(|n| n.attribute("id").unwrap().to_string())
+        .collect();
+    let plots = doc.descendants().filter(|n| n.has_tag_name("svg")).count();
+    assert!(!doc.descendants().any(|n| n.has_tag_name("script")));
+    (ids, plots)
+}
+
+#[test]
+fn run_report_shows_every_section() {
+    let dir = temp_dir("run-report");
+    let d = dir.to_str().unwrap();
+    let o = rolldyn(&["run", "--duration", "2 ms", "--report", "-o", d], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains("report.html"));
+    let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    let (ids, plots) = sections(&html);
+    assert_eq!(
+        ids,
+        [
+            "summary", "case", "solver", "cage", "contacts", "slip", "orbit", "energy", "power",
+            "values"
+        ]
+    );
+    // cage 1, contacts 3, slip 3, orbit 1, energy 2, power 1.
+    assert_eq!(plots, 11);
+    // The case is described as `rolldyn check` describes it.
+    assert!(html.contains("Derived geometry"));
+    assert!(html.contains("--set solver.duration=2 ms"));
+    // `rolldyn report` rewrites the same page.
+    std::fs::remove_file(dir.join("report.html")).unwrap();
+    let o = rolldyn(&["report", d], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(
+        std::fs::read_to_string(dir.join("report.html")).unwrap(),
+        html
+    );
+}
+
+#[test]
+fn report_of_a_directory_without_results_is_refused() {
+    let dir = temp_dir("no-results");
+    std::fs::create_dir_all(&dir).unwrap();
+    let o = rolldyn(&["report", dir.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("not a run or sweep directory"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.join("report.html").exists());
+}
+
+#[test]
+fn quasistatic_sweep_report() {
+    let dir = temp_dir("qs-sweep-report");
+    let d = dir.to_str().unwrap();
+    let o = rolldyn(
+        &[
+            "quasistatic",
+            "--sweep",
+            "speed=0rpm..10000rpm/3",
+            "--sweep",
+            "axial=100N,1kN",
+            "-o",
+            d,
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = rolldyn(&["report", d], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    let (ids, plots) = sections(&html);
+    assert_eq!(ids, ["points", "quantities"]);
+    assert!(plots >= 8, "{plots}");
+    // The last sweep (axial) is the abscissa; one series per speed.
+    assert!(html.contains("axial load F_x [N]</text>"));
+    assert!(html.contains("data-series=\"inner-ring speed [rpm] = 5000\""));
+}
+
+/// Rows of a sweep without the wall time (the only value that may differ).
+fn rows(dir: &std::path::Path) -> Vec<Value> {
+    let text = std::fs::read_to_string(dir.join("sweep.json")).unwrap();
+    let mut rows: Vec<Value> = serde_json::from_str(&text).unwrap();
+    for r in &mut rows {
+        r.as_object_mut().unwrap().remove("wall_time_s");
+    }
+    rows
+}
+
+#[test]
+fn dynamic_sweep_is_deterministic_whatever_the_thread_count() {
+    let serial = temp_dir("run-sweep-1");
+    let parallel = temp_dir("run-sweep-2");
+    let args = |dir: &str| {
+        vec![
+            "run".to_string(),
+            "--duration".into(),
+            "1 ms".into(),
+            "--sweep".into(),
+            "speed=6000rpm,10000rpm".into(),
+            "--sweep".into(),
+            "axial=150N,250N".into(),
+            "--report".into(),
+            "-o".into(),
+            dir.to_string(),
+        ]
+    };
+    for (dir, threads) in [(&serial, "1"), (&parallel, "2")] {
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+            .args(args(dir.to_str().unwrap()))
+            .env("RAYON_NUM_THREADS", threads)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(
+            stdout(&o).contains("4 of 4 runs completed"),
+            "{}",
+            stdout(&o)
+        );
+    }
+    let (a, b) = (rows(&serial), rows(&parallel));
+    assert_eq!(a, b);
+    // Grid order, first sweep outermost; the inputs are the case's.
+    let inputs: Vec<(f64, f64)> = a
+        .iter()
+        .map(|r| {
+            (
+                r["speed_rpm"].as_f64().unwrap(),
+                r["force_x_n"].as_f64().unwrap(),
+            )
+        })
+        .collect();
+    let expected = [
+        (6000.0, 150.0),
+        (6000.0, 250.0),
+        (10000.0, 150.0),
+        (10000.0, 250.0),
+    ];
+    for ((speed, axial), (s, f)) in inputs.iter().zip(expected) {
+        assert!((speed - s).abs() < 1e-9 * s && *axial == f, "{inputs:?}");
+    }
+    for (k, r) in a.iter().enumerate() {
+        assert_eq!(r["status"], "completed");
+        assert_eq!(r["point"], format!("point-{k:04}"));
+        // Each point is a run directory of its own, resumable and reported.
+        let point = serial.join(format!("point-{k:04}"));
+        let summary: Value =
+            serde_json::from_str(&std::fs::read_to_string(point.join("summary.json")).unwrap())
+                .unwrap();
+        assert_eq!(summary["mean_cage_speed_rpm"], r["mean_cage_speed_rpm"]);
+        assert!(point.join("run.json").is_file() && point.join("report.html").is_file());
+        // The same time series from one thread or two.
+        let other = parallel.join(format!("point-{k:04}"));
+        assert_eq!(
+            std::fs::read(point.join("timeseries.parquet")).unwrap(),
+            std::fs::read(other.join("timeseries.parquet")).unwrap()
+        );
+    }
+    // The CSV has the same rows, inputs first.
+    let csv = std::fs::read_to_string(serial.join("sweep.csv")).unwrap();
+    assert!(csv.starts_with("point,speed_rpm,force_x_n,force_z_n,status,error,"));
+    assert_eq!(csv.lines().count(), 5);
+    let (ids, _) = sections(&std::fs::read_to_string(serial.join("report.html")).unwrap());
+    assert_eq!(ids, ["points", "quantities"]);
+}
+
+#[test]
+fn dynamic_sweep_input_errors() {
+    let o = rolldyn(&["run", "--sweep", "temperature=1,2"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("unknown sweep variable"),
+        "{}",
+        stderr(&o)
+    );
+    let o = rolldyn(
+        &["run", "--sweep", "speed=1rpm,2rpm", "--resume", "x"],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("not with --sweep"), "{}", stderr(&o));
+    let o = rolldyn(&["run", "--sweep", "speed=0rpm..1000rpm/2000"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("above the limit of 1000"),
+        "{}",
+        stderr(&o)
+    );
+    // A bad point fails before any run starts.
+    let dir = temp_dir("run-sweep-bad");
+    let o = rolldyn(
+        &[
+            "run",
+            "--sweep",
+            "axial=100N,-1e12N",
+            "-o",
+            dir.to_str().unwrap(),
+        ],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(!dir.exists());
+}

@@ -1,0 +1,208 @@
+//! The report is well-formed, self-contained HTML: parsed as XML, every
+//! section the run has data for is present, every plot is an SVG with
+//! drawn series, nothing is loaded from elsewhere and no value is NaN.
+
+#![allow(clippy::unwrap_used)]
+
+use rolldyn_io::{TimeSeries, write_parquet};
+use rolldyn_report::svg::{Plot, Series};
+use rolldyn_report::{REPORT_FILE, Report, Section, report_for};
+use std::path::PathBuf;
+
+fn temp_dir(tag: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rolldyn-report-{tag}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Checks the page: XML, no external reference, no script; returns the
+/// ids of its sections and the number of SVGs with a drawn series.
+fn check_page(html: &str) -> (Vec<String>, usize) {
+    let doc = roxmltree::Document::parse_with_options(
+        html,
+        roxmltree::ParsingOptions {
+            allow_dtd: true,
+            ..Default::default()
+        },
+    )
+    .expect("the report is well-formed XML");
+    let mut sections = Vec::new();
+    let mut plots = 0;
+    for node in doc.descendants().filter(|n| n.is_element()) {
+        let name = node.tag_name().name();
+        assert_ne!(name, "script", "no script");
+        assert_ne!(name, "img", "plots are inline SVG");
+        assert_ne!(name, "link", "styles are inline");
+        for attr in node.attributes() {
+            assert!(
+                !attr.value().starts_with("http") || attr.name() == "xmlns",
+                "external reference {}={}",
+                attr.name(),
+                attr.value()
+            );
+        }
+        if name == "section" {
+            sections.push(node.attribute("id").unwrap().to_string());
+        }
+        if name == "svg" {
+            let drawn = node
+                .descendants()
+                .any(|d| matches!(d.tag_name().name(), "polyline" | "circle"));
+            assert!(drawn, "an SVG without data");
+            plots += 1;
+        }
+    }
+    assert!(
+        !html.contains("NaN") && !html.contains("inf<"),
+        "non-finite value shown"
+    );
+    (sections, plots)
+}
+
+fn synthetic_run(dir: &std::path::Path) {
+    let mut s = TimeSeries::default();
+    let names = [
+        ("time_s", "s"),
+        ("inner_ring_speed_rpm", "rpm"),
+        ("cage_speed_rpm", "rpm"),
+        ("pure_rolling_cage_speed_ratio", "1"),
+        ("cage_y_m", "m"),
+        ("cage_z_m", "m"),
+        ("drive_work_j", "J"),
+        ("dissipated_energy_j", "J"),
+        ("mechanical_energy_j", "J"),
+        ("ball0_load_inner_n", "N"),
+        ("ball0_load_outer_n", "N"),
+        ("ball1_load_inner_n", "N"),
+        ("ball1_load_outer_n", "N"),
+    ];
+    for (n, u) in names {
+        s.channel(n, u);
+    }
+    for k in 0..500 {
+        let t = k as f64 * 1e-5;
+        let phase = 2.0 * std::f64::consts::PI * 800.0 * t;
+        s.push(&[
+            t,
+            10_000.0,
+            4440.0 + phase.sin(),
+            0.4447,
+            1e-6 * phase.cos(),
+            1e-6 * phase.sin(),
+            t,
+            0.99 * t,
+            1.0 + 0.01 * t,
+            100.0 + phase.sin(),
+            110.0,
+            f64::NAN, // an undefined sample is not drawn
+            120.0,
+        ]);
+    }
+    write_parquet(&dir.join("timeseries.parquet"), &s, &[]).unwrap();
+    let summary = serde_json::json!({
+        "source": "test",
+        "title": "synthetic <run> & co",
+        "status": "completed",
+        "error": null,
+        "simulated_time_s": 5e-3,
+        "requested_duration_s": 5e-3,
+        "wall_time_s": 0.1,
+        "integrator": "ros34pw2",
+        "steps": 100,
+        "averaging_window_s": [2.5e-3, 5e-3],
+        "mean_cage_speed_rpm": 4440.0,
+        "pure_rolling_cage_speed_rpm": 4447.0,
+        "cage_sliding_rate": 0.0016,
+        "outer_ring_velocity_rms_y_mm_s": null,
+        "mean_power_loss_by_component_w": {"inner_spin": 1.5, "guide_land": 80.0}
+    });
+    std::fs::write(dir.join("summary.json"), summary.to_string()).unwrap();
+}
+
+#[test]
+fn run_report_has_every_section_and_plot() {
+    let dir = temp_dir("run");
+    synthetic_run(&dir);
+    let report = report_for(&dir, Some("geometry: <described>".into())).unwrap();
+    let html = report.to_html();
+    let (sections, plots) = check_page(&html);
+    // No slide/spin or power channels: those sections are left out; no
+    // run.json: the case section shows the description only.
+    assert_eq!(
+        sections,
+        [
+            "summary", "case", "solver", "cage", "contacts", "orbit", "energy", "values"
+        ]
+    );
+    // Cage 1; contacts 2 (loads per ball and of ball 0; no angle channels);
+    // orbit 1; energy 2.
+    assert_eq!(plots, 6);
+    assert!(html.contains("synthetic &lt;run&gt; &amp; co"));
+    assert!(html.contains("geometry: &lt;described&gt;"));
+    // The undefined summary value shows as a dash, the nested one by its path.
+    assert!(html.contains("<td>outer_ring_velocity_rms_y_mm_s</td><td>—</td>"));
+    assert!(html.contains("<td>mean_power_loss_by_component_w.guide_land</td>"));
+}
+
+#[test]
+fn sweep_report_plots_each_quantity_per_series() {
+    let dir = temp_dir("sweep");
+    let mut rows = Vec::new();
+    for fa in [100.0f64, 1000.0] {
+        for rpm in [0.0, 5000.0, 10_000.0] {
+            rows.push(serde_json::json!({
+                "speed_rpm": rpm, "force_x_n": fa, "force_z_n": 0.0,
+                "converged": !(rpm == 10_000.0 && fa == 1000.0),
+                "error": null,
+                "cage_speed_rpm": 0.44 * rpm,
+                "stiffness_axial_n_per_m": 1e7 * fa.sqrt(),
+                "constant_n": 1.0
+            }));
+        }
+    }
+    std::fs::write(
+        dir.join("sweep.json"),
+        serde_json::Value::Array(rows).to_string(),
+    )
+    .unwrap();
+    let report = report_for(&dir, None).unwrap();
+    let html = report.to_html();
+    let (sections, plots) = check_page(&html);
+    assert_eq!(sections, ["points", "quantities"]);
+    // Two varying outputs (the constant one is left out), speed on the
+    // abscissa, one series per axial load.
+    assert_eq!(plots, 2);
+    assert_eq!(
+        html.matches("data-series=\"axial load F_x [N] = 100\"")
+            .count(),
+        2
+    );
+    assert!(html.contains("inner-ring speed [rpm]"));
+    assert!(html.contains("1 failed"));
+}
+
+#[test]
+fn not_a_result_directory_is_named() {
+    let dir = temp_dir("empty");
+    let e = report_for(&dir, None).unwrap_err().to_string();
+    assert!(
+        e.contains(&dir.display().to_string()) && e.contains("summary.json"),
+        "{e}"
+    );
+    assert_eq!(REPORT_FILE, "report.html");
+}
+
+#[test]
+fn sections_are_added_as_data() {
+    // A later model adds a section: a title, text and a plot.
+    let report = Report {
+        title: "t".into(),
+        subtitle: "s".into(),
+        sections: vec![Section::new("spectrum", "Spectrum").paragraph("p").figure(
+            Plot::new("PSD", "f [Hz]", "PSD").with(Series::line("x", &[1.0, 2.0], &[3.0, 4.0])),
+        )],
+    };
+    let (sections, plots) = check_page(&report.to_html());
+    assert_eq!((sections, plots), (vec!["spectrum".to_string()], 1));
+}
