@@ -1,0 +1,32 @@
+"""Seed 003 (C7, quasi-static part): central film of the most loaded inner
+contact against the inlet distance ratio L, one curve per radial load,
+with the critical ratio L* above which the contact is flooded.
+
+    cargo run --release --example seed003      # writes examples/seed003/out
+    python3 examples/seed003/plot.py [OUT_DIR]
+"""
+import csv
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+here = pathlib.Path(__file__).parent
+out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else here / "out"
+rows = list(csv.DictReader(open(out / "films.csv")))
+rows = [r for r in rows if r["inlet_distance_ratio"] not in ("", "inf")]
+fig, ax = plt.subplots(figsize=(7, 4))
+for k, fz in enumerate(sorted({r["radial_load_n"] for r in rows}, key=float)):
+    group = [r for r in rows if r["radial_load_n"] == fz]
+    ax.plot([float(r["inlet_distance_ratio"]) for r in group], [1e6 * float(r["central_film_m"]) for r in group], "o-", color=f"C{k}", label=f"F_z = {fz} N")
+    ax.axvline(float(group[0]["critical_inlet_distance_ratio"]), color=f"C{k}", ls=":", lw=0.8)
+ax.set_xlabel("inlet distance ratio L")
+ax.set_ylabel("central film h_c [µm]")
+ax.set_title("Ceramic 45x75 at 15 000 rpm: starved film (seed 003); dotted: L*")
+ax.legend(fontsize=8)
+fig.tight_layout()
+fig.savefig(out / "seed003.png", dpi=150)
+print(f"wrote {out / 'seed003.png'}")
