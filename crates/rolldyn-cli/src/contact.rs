@@ -53,7 +53,7 @@ pub struct ContactArgs {
 
 /// An explicit contact (`--radii`, `--ball-on-flat`).
 #[derive(Serialize)]
-struct ExplicitReport {
+pub struct ExplicitReport {
     load_n: f64,
     effective_modulus_pa: f64,
     rolling_radius_m: f64,
@@ -99,7 +99,39 @@ fn hertz_stiffness(load: f64, approach: f64) -> f64 {
     }
 }
 
+/// `rolldyn contact`: loads the case and prints the contact.
 pub fn command(args: ContactArgs) -> Result<(), Failure> {
+    let (_, case) = args.case.load()?;
+    let report = evaluate(&args, &case)?;
+    if args.json {
+        json(&report)
+    } else {
+        emit(&report.to_text())
+    }
+}
+
+/// What `rolldyn contact` prints: the raceway contacts of the case, or an
+/// explicit contact.
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum ContactOutput {
+    Raceways(Box<ContactReport>),
+    Explicit(ExplicitReport),
+}
+
+impl ContactOutput {
+    /// The text `rolldyn contact` prints.
+    pub fn to_text(&self) -> String {
+        match self {
+            ContactOutput::Raceways(r) => r.to_text(),
+            ContactOutput::Explicit(r) => r.to_text(),
+        }
+    }
+}
+
+/// Evaluates the contact that `args` describe on `case` (its materials,
+/// raceways and lubricant; `args.case` is not read).
+pub fn evaluate(args: &ContactArgs, case: &Case) -> Result<ContactOutput, Failure> {
     let load = quantity::<Force>("--load", &args.load)?;
     if load.is_nan() || load < 0.0 {
         return Err(bad_arg(
@@ -125,7 +157,6 @@ pub fn command(args: ContactArgs) -> Result<(), Failure> {
             .validate()
             .map_err(|e| bad_arg("--inlet-distance-ratio", &l.to_string(), e.rule))?;
     }
-    let (_, case) = args.case.load()?;
     let ep = effective_modulus(
         &case.materials.ball.material,
         &case.materials.rings.material,
@@ -178,13 +209,8 @@ pub fn command(args: ContactArgs) -> Result<(), Failure> {
     };
     match explicit {
         Some(curvature) => {
-            let report =
-                explicit_report(&case, curvature, ep, load, speed, args.inlet_distance_ratio)?;
-            if args.json {
-                json(&report)
-            } else {
-                emit(&report.to_text())
-            }
+            explicit_report(case, curvature, ep, load, speed, args.inlet_distance_ratio)
+                .map(ContactOutput::Explicit)
         }
         None => {
             if args.inlet_distance_ratio.is_some() {
@@ -193,9 +219,9 @@ pub fn command(args: ContactArgs) -> Result<(), Failure> {
                 ));
             }
             let angle = parse_angle("--angle", args.angle.as_ref())?;
-            let mut report = ContactReport::new(&case, load, angle).map_err(Failure::BadInput)?;
+            let mut report = ContactReport::new(case, load, angle).map_err(Failure::BadInput)?;
             if let Some(u) = speed {
-                let lub = lubricant(&case)?;
+                let lub = lubricant(case)?;
                 let supply = case
                     .lubricant
                     .as_ref()
@@ -235,11 +261,7 @@ pub fn command(args: ContactArgs) -> Result<(), Failure> {
                     });
                 }
             }
-            if args.json {
-                json(&report)
-            } else {
-                emit(&report.to_text())
-            }
+            Ok(ContactOutput::Raceways(Box::new(report)))
         }
     }
 }

@@ -6,27 +6,14 @@
 //! 130 a run interrupted by Ctrl-C (its files hold what was computed);
 //! 1 an internal error.
 
-mod checkpoint;
-mod contact;
-mod finite;
-mod html_report;
-mod power;
-mod power_channels;
-mod quasistatic;
-mod quasistatic_films;
-mod report;
-mod run;
-mod run_sweep;
-mod spectrum;
-mod thermal;
-mod traction;
-mod traction_equilibrium;
-mod vibration;
-
-use clap::{Args, Parser, Subcommand};
-use rolldyn_case::units::{Angle, Quantity, Time};
-use rolldyn_case::{Case, CaseError, Override, load_case, load_default, presets};
-use std::io::{Read, Write};
+use clap::{Parser, Subcommand};
+use rolldyn_case::presets;
+use rolldyn_case::units::{Quantity, Time};
+use rolldyn_cli::{
+    CaseArgs, CaseOverrides, DEFAULT_RUN_DIR, Failure, bad_arg, checkpoint, contact, emit,
+    html_report, json, parse_angle, power, quasistatic, report, run, run_sweep, spectrum, thermal,
+    traction,
+};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -34,41 +21,6 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
-}
-
-/// The case to work on, and overrides of its values.
-#[derive(Args, Debug, Clone)]
-struct CaseArgs {
-    /// Case file (TOML); `-` reads standard input; omitted: the built-in
-    /// default case (7008C at 10 000 rpm, F_x = 200 N).
-    case: Option<String>,
-    #[command(flatten)]
-    overrides: CaseOverrides,
-}
-
-/// Overrides of a case's values from the command line (also kept in a
-/// run's `run.json`, so that `--resume` rebuilds the same case).
-#[derive(Args, Debug, Clone, Default, PartialEq, serde::Serialize, serde::Deserialize)]
-struct CaseOverrides {
-    /// Override the inner-ring speed, e.g. "8000 rpm".
-    #[arg(long, value_name = "SPEED")]
-    speed: Option<String>,
-    /// Override the axial load F_x, e.g. "500 N" (negative values allowed).
-    #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
-    axial_load: Option<String>,
-    /// Override the radial load F_z, e.g. "1 kN" (negative values allowed).
-    #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
-    radial_load: Option<String>,
-    /// Hold the inner ring's tilts at zero (quasi-static; the holding
-    /// moments are reported).
-    #[arg(long)]
-    fix_tilt: bool,
-    /// Prescribe the inner ring's tilt θ_y, e.g. "0.05 deg" (quasi-static).
-    #[arg(long, value_name = "ANGLE", allow_hyphen_values = true)]
-    misalignment: Option<String>,
-    /// Override any key: --set bearing.ball_count=22 (repeatable).
-    #[arg(long = "set", value_name = "KEY=VALUE")]
-    set: Vec<String>,
 }
 
 #[derive(Subcommand)]
@@ -202,136 +154,6 @@ enum Command {
     Schema,
 }
 
-/// Output directory of `rolldyn run` when none is given.
-const DEFAULT_RUN_DIR: &str = "rolldyn-run";
-
-/// A failure with its exit code.
-enum Failure {
-    /// 2: the user's input, arguments or output path.
-    BadInput(String),
-    /// 3: the model failed to converge or diverged.
-    Model(String),
-    /// 130: interrupted by the user.
-    Interrupted(String),
-    /// 1: an internal error.
-    Internal(String),
-}
-
-/// A quasi-static solver error: no convergence, or a solution branch that
-/// ends short of the axial load (a least axial load), is the model's
-/// failure (3); an unsupported load (no ball in its direction) the input's
-/// (2).
-fn quasistatic_failure(e: rolldyn::quasistatic::QuasiStaticError) -> Failure {
-    match e {
-        rolldyn::quasistatic::QuasiStaticError::NoConvergence { .. }
-        | rolldyn::quasistatic::QuasiStaticError::AxialLoadTooSmall { .. } => {
-            Failure::Model(e.to_string())
-        }
-        other => Failure::BadInput(other.to_string()),
-    }
-}
-
-impl From<CaseError> for Failure {
-    fn from(e: CaseError) -> Self {
-        Failure::BadInput(e.to_string())
-    }
-}
-
-fn bad_arg(flag: &str, value: &str, rule: impl std::fmt::Display) -> Failure {
-    Failure::BadInput(format!("argument {flag} {value}: {rule}"))
-}
-
-impl CaseOverrides {
-    fn overrides(&self) -> Result<Vec<Override>, Failure> {
-        let mut out = Vec::new();
-        if let Some(s) = &self.speed {
-            out.push(Override::flag("--speed", "operating.speed", s));
-        }
-        if let Some(f) = &self.axial_load {
-            out.push(Override::flag("--axial-load", "operating.force_x", f));
-        }
-        if let Some(f) = &self.radial_load {
-            out.push(Override::flag("--radial-load", "operating.force_z", f));
-        }
-        if self.fix_tilt {
-            out.push(Override::parse_set("operating.fixed_tilt=true")?);
-        }
-        if let Some(a) = &self.misalignment {
-            out.push(Override::flag("--misalignment", "operating.tilt_y", a));
-        }
-        for s in &self.set {
-            out.push(Override::parse_set(s)?);
-        }
-        Ok(out)
-    }
-
-    /// Loads and validates a case from its text (None: the built-in
-    /// default case) with these overrides.
-    fn load_text(&self, source: &str, text: Option<&str>) -> Result<Case, Failure> {
-        let overrides = self.overrides()?;
-        Ok(match text {
-            None => load_default(&overrides)?,
-            Some(text) => load_case(source, text, &overrides)?,
-        })
-    }
-}
-
-impl CaseArgs {
-    /// The case's source name and text (None: the built-in default).
-    fn read(&self) -> Result<(String, Option<String>), Failure> {
-        match self.case.as_deref() {
-            None => Ok(("built-in default case (7008C)".into(), None)),
-            Some("-") => {
-                let mut text = String::new();
-                std::io::stdin().read_to_string(&mut text).map_err(|e| {
-                    Failure::BadInput(format!("cannot read the case from standard input: {e}"))
-                })?;
-                Ok(("<stdin>".to_string(), Some(text)))
-            }
-            Some(path) => {
-                let text = std::fs::read_to_string(path)
-                    .map_err(|e| Failure::BadInput(format!("cannot read case file {path}: {e}")))?;
-                Ok((path.to_string(), Some(text)))
-            }
-        }
-    }
-
-    /// Loads and validates the case with its overrides.
-    fn load(&self) -> Result<(String, Case), Failure> {
-        // Overrides are checked before a case is read from standard input.
-        self.overrides.overrides()?;
-        let (source, text) = self.read()?;
-        let case = self.overrides.load_text(&source, text.as_deref())?;
-        Ok((source, case))
-    }
-}
-
-fn parse_angle(flag: &str, text: Option<&String>) -> Result<Option<f64>, Failure> {
-    text.map(|t| {
-        let a = Quantity::<Angle>::parse(t)
-            .map_err(|e| bad_arg(flag, t, e))?
-            .si;
-        if (0.0..=std::f64::consts::FRAC_PI_2).contains(&a) {
-            Ok(a)
-        } else {
-            Err(bad_arg(flag, t, "contact angle must lie in [0, 90] deg"))
-        }
-    })
-    .transpose()
-}
-
-fn emit(text: &str) -> Result<(), Failure> {
-    let mut out = std::io::stdout().lock();
-    out.write_all(text.as_bytes())
-        .and_then(|_| out.flush())
-        .map_err(|e| Failure::BadInput(format!("cannot write to standard output: {e}")))
-}
-
-fn json<T: serde::Serialize>(value: &T) -> Result<(), Failure> {
-    let text = crate::finite::to_json(value).map_err(|e| Failure::Internal(e.to_string()))?;
-    emit(&(text + "\n"))
-}
-
 fn run(cli: Cli) -> Result<(), Failure> {
     match cli.command {
         Command::Check {
@@ -369,20 +191,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             force,
             json: as_json,
         } => {
-            let traction_control = control.as_deref() == Some("traction");
-            let control = control
-                .filter(|_| !traction_control)
-                .map(|c| match c.as_str() {
-                    "outer" => Ok(rolldyn::quasistatic::RacewayControl::Outer),
-                    "inner" => Ok(rolldyn::quasistatic::RacewayControl::Inner),
-                    "harris" => Ok(rolldyn::quasistatic::RacewayControl::Harris),
-                    _ => Err(bad_arg(
-                        "--control",
-                        &c,
-                        "expected outer, inner, harris or traction",
-                    )),
-                })
-                .transpose()?;
+            let control = quasistatic::ControlChoice::parse(control.as_deref())?;
             let sweeps = sweep
                 .iter()
                 .map(|s| quasistatic::parse_sweep(s).map_err(|e| bad_arg("--sweep", s, e)))
@@ -397,44 +206,28 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 )));
             }
             let (_, case) = case.load()?;
-            if traction_control {
-                if !sweeps.is_empty() {
+            if sweeps.is_empty() {
+                let output = quasistatic::solve(&case, control)?;
+                if as_json {
+                    json(&output)
+                } else {
+                    emit(&output.to_text())
+                }
+            } else {
+                let quasistatic::ControlChoice::Raceway(control) = control else {
                     return Err(bad_arg(
                         "--control",
                         "traction",
                         "not with --sweep (solve the points one by one)",
                     ));
-                }
-                let report = traction_equilibrium::TractionEquilibriumReport::new(&case)
-                    .map_err(Failure::BadInput)?;
-                return if as_json {
-                    json(&report)
-                } else {
-                    emit(&report.to_text())
                 };
-            }
-            if sweeps.is_empty() {
-                let solver = quasistatic::solver(&case).map_err(Failure::BadInput)?;
-                let conditions = quasistatic::conditions(&case, control);
-                let sol = solver
-                    .solve(&conditions, &case.solver_options())
-                    .map_err(quasistatic_failure)?;
-                let held = case.prescribed_displacement.map(|p| p.is_some());
-                let report = quasistatic::QuasiStaticReport::new(&sol, &conditions, held)
-                    .with_films_and_modes(&case, &sol);
-                if as_json {
-                    json(&report)
-                } else {
-                    emit(&report.to_text())
-                }
-            } else {
                 let rows =
                     quasistatic::run_sweep(&case, control, &sweeps).map_err(Failure::BadInput)?;
                 let dir = std::path::Path::new(&output);
                 std::fs::create_dir_all(dir)
                     .map_err(|e| Failure::BadInput(format!("cannot create {output}: {e}")))?;
-                let json_text =
-                    crate::finite::to_json(&rows).map_err(|e| Failure::Internal(e.to_string()))?;
+                let json_text = rolldyn_cli::finite::to_json(&rows)
+                    .map_err(|e| Failure::Internal(e.to_string()))?;
                 let write = |name: &str, text: &str| {
                     rolldyn_io::write_atomic(&dir.join(name), text.as_bytes()).map_err(|e| {
                         Failure::BadInput(format!("cannot write {output}/{name}: {e}"))

@@ -707,3 +707,72 @@ pub fn sweep_csv(rows: &[SweepRow]) -> String {
     }
     out
 }
+
+/// The `--control` of `rolldyn quasistatic`: a raceway-control hypothesis
+/// (None: the case's `model.raceway_control`) or the traction equilibrium.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ControlChoice {
+    Raceway(Option<RacewayControl>),
+    Traction,
+}
+
+impl ControlChoice {
+    /// Parses `outer`, `inner`, `harris` or `traction` (None: the case's).
+    pub fn parse(text: Option<&str>) -> Result<Self, crate::Failure> {
+        Ok(match text {
+            None => ControlChoice::Raceway(None),
+            Some("outer") => ControlChoice::Raceway(Some(RacewayControl::Outer)),
+            Some("inner") => ControlChoice::Raceway(Some(RacewayControl::Inner)),
+            Some("harris") => ControlChoice::Raceway(Some(RacewayControl::Harris)),
+            Some("traction") => ControlChoice::Traction,
+            Some(other) => {
+                return Err(crate::bad_arg(
+                    "--control",
+                    other,
+                    "expected outer, inner, harris or traction",
+                ));
+            }
+        })
+    }
+}
+
+/// One solve as `rolldyn quasistatic` prints it.
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum QuasiStaticOutput {
+    Raceway(Box<QuasiStaticReport>),
+    Traction(Box<crate::traction_equilibrium::TractionEquilibriumReport>),
+}
+
+impl QuasiStaticOutput {
+    /// The text `rolldyn quasistatic` prints.
+    pub fn to_text(&self) -> String {
+        match self {
+            QuasiStaticOutput::Raceway(r) => r.to_text(),
+            QuasiStaticOutput::Traction(r) => r.to_text(),
+        }
+    }
+}
+
+/// Solves the case at its operating point with the chosen control.
+pub fn solve(case: &Case, control: ControlChoice) -> Result<QuasiStaticOutput, crate::Failure> {
+    use crate::Failure;
+    match control {
+        ControlChoice::Traction => {
+            crate::traction_equilibrium::TractionEquilibriumReport::new(case)
+                .map(|r| QuasiStaticOutput::Traction(Box::new(r)))
+                .map_err(Failure::BadInput)
+        }
+        ControlChoice::Raceway(control) => {
+            let solver = solver(case).map_err(Failure::BadInput)?;
+            let conditions = conditions(case, control);
+            let sol = solver
+                .solve(&conditions, &case.solver_options())
+                .map_err(crate::quasistatic_failure)?;
+            let held = case.prescribed_displacement.map(|p| p.is_some());
+            let report =
+                QuasiStaticReport::new(&sol, &conditions, held).with_films_and_modes(case, &sol);
+            Ok(QuasiStaticOutput::Raceway(Box::new(report)))
+        }
+    }
+}

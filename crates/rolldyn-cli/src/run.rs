@@ -26,7 +26,7 @@ use std::cell::RefCell;
 use std::io::IsTerminal;
 use std::path::Path;
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::Instant;
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
@@ -443,6 +443,16 @@ pub struct RunOptions {
     pub stop: Option<Arc<AtomicBool>>,
     /// No progress bar (a sweep draws one for all its points).
     pub quiet: bool,
+    /// Where the run reports its progress: the fraction of the duration
+    /// simulated, as `f64::to_bits` (the Python package reads it from
+    /// another thread for its progress callback).
+    pub progress: Option<Arc<AtomicU64>>,
+}
+
+/// A run's summary and its time series (as written to the run directory).
+pub struct RunOutput {
+    pub summary: Summary,
+    pub series: TimeSeries,
 }
 
 /// Runs the case (from `record`) and writes the results into `dir`:
@@ -456,6 +466,16 @@ pub fn run_case(
     dir: &Path,
     options: &RunOptions,
 ) -> Result<Summary, Failure> {
+    run_case_series(record, case, dir, options).map(|o| o.summary)
+}
+
+/// As [`run_case`], also returning the time series.
+pub fn run_case_series(
+    record: &RunRecord,
+    case: &Case,
+    dir: &Path,
+    options: &RunOptions,
+) -> Result<RunOutput, Failure> {
     let bad = Failure::BadInput;
     let source = record.source.as_str();
     let params = case
@@ -659,11 +679,14 @@ pub fn run_case(
         |m, s, next| {
             next_sample = next;
             let t = s.t();
-            if let Some(bar) = &bar {
-                if t - last_draw >= duration / 1000.0 {
-                    last_draw = t;
+            if t - last_draw >= duration / 1000.0 {
+                last_draw = t;
+                if let Some(bar) = &bar {
                     bar.set_position((1000.0 * t / duration) as u64);
                     bar.set_message(format!("t = {:.4} s", t));
+                }
+                if let Some(progress) = &options.progress {
+                    progress.store((t / duration).to_bits(), Ordering::Relaxed);
                 }
             }
             let since = last_checkpoint.elapsed().as_secs_f64();
@@ -708,7 +731,13 @@ pub fn run_case(
     if report.end == RunEnd::Completed {
         remove_checkpoint(dir)?;
     }
-    Ok(summary)
+    if let Some(progress) = &options.progress {
+        progress.store(
+            (summary.simulated_time_s / duration).to_bits(),
+            Ordering::Relaxed,
+        );
+    }
+    Ok(RunOutput { summary, series })
 }
 
 /// Removes `DIR/checkpoint.bin` if there is one.

@@ -18,6 +18,7 @@ use crate::run::{RunOptions, run_case};
 use crate::{CaseArgs, CaseOverrides, Failure, bad_arg, emit, html_report};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
+use rolldyn_case::Case;
 use serde_json::{Map, Value};
 use std::fmt::Write;
 use std::io::IsTerminal;
@@ -145,18 +146,24 @@ pub fn run(
         .collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(dir)
         .map_err(|e| Failure::BadInput(format!("cannot create {}: {e}", dir.display())))?;
-    let stop = Arc::new(AtomicBool::new(false));
-    {
-        let stop = stop.clone();
-        let _ = ctrlc::set_handler(move || stop.store(true, Ordering::Relaxed));
-    }
+    let stop = match &options.stop {
+        Some(stop) => stop.clone(),
+        None => {
+            let stop = Arc::new(AtomicBool::new(false));
+            let handler = stop.clone();
+            let _ = ctrlc::set_handler(move || handler.store(true, Ordering::Relaxed));
+            stop
+        }
+    };
+    let progress = options.progress.clone();
     let options = RunOptions {
         stop: Some(stop.clone()),
         quiet: true,
+        progress: None,
         ..options.clone()
     };
-    let width = points.len().saturating_sub(1).to_string().len().max(4);
-    let bar = std::io::stderr().is_terminal().then(|| {
+    // No bar when the caller follows the progress itself (the Python package).
+    let bar = (progress.is_none() && std::io::stderr().is_terminal()).then(|| {
         let bar = ProgressBar::new(points.len() as u64);
         bar.set_style(
             ProgressStyle::with_template(
@@ -172,47 +179,22 @@ pub fn run(
         .zip(&cases)
         .enumerate()
         .map(|(k, (overrides, case))| {
-            let name = format!("point-{k:0width$}");
-            let at = conditions(case, None);
-            let mut row = Map::new();
-            row.insert("point".into(), Value::from(name.clone()));
-            row.insert("speed_rpm".into(), Value::from(at.inner_speed / RPM));
-            row.insert("force_x_n".into(), Value::from(at.loads.force[0]));
-            row.insert("force_z_n".into(), Value::from(at.loads.force[2]));
-            let result = if stop.load(Ordering::Relaxed) {
-                None
+            let name = point_name(k, points.len());
+            let row = if stop.load(Ordering::Relaxed) {
+                let mut row = inputs_row(&name, case);
+                row.insert("status".into(), Value::from(NOT_STARTED));
+                row.insert("error".into(), Value::Null);
+                row
             } else {
-                let record = RunRecord::new(
-                    source.to_string(),
-                    case_text.map(str::to_string),
-                    overrides.clone(),
-                    options.force,
-                );
-                Some(run_case(&record, case, &dir.join(&name), &options))
+                run_point(&name, source, case_text, overrides, case, dir, &options)
             };
-            match result {
-                None => {
-                    row.insert("status".into(), Value::from(NOT_STARTED));
-                    row.insert("error".into(), Value::Null);
-                }
-                Some(Err(
-                    Failure::BadInput(m)
-                    | Failure::Model(m)
-                    | Failure::Internal(m)
-                    | Failure::Interrupted(m),
-                )) => {
-                    row.insert("status".into(), Value::from("failed"));
-                    row.insert("error".into(), Value::from(m));
-                }
-                Some(Ok(summary)) => {
-                    let value = serde_json::to_value(&summary).unwrap_or(Value::Null);
-                    row.insert("status".into(), value["status"].clone());
-                    row.insert("error".into(), value["error"].clone());
-                    flatten("", &value, &mut row);
-                }
-            }
+            let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
             if let Some(bar) = &bar {
-                bar.set_position(done.fetch_add(1, Ordering::Relaxed) as u64 + 1);
+                bar.set_position(finished as u64);
+            }
+            if let Some(progress) = &progress {
+                let fraction = finished as f64 / points.len() as f64;
+                progress.store(fraction.to_bits(), Ordering::Relaxed);
             }
             row
         })
@@ -222,6 +204,63 @@ pub fn run(
     }
     write_tables(dir, &rows)?;
     Ok((rows, stop.load(Ordering::Relaxed)))
+}
+
+/// The directory name of point `k` of `count`: `point-NNNN` (at least four
+/// digits, all of the same width).
+pub fn point_name(k: usize, count: usize) -> String {
+    let width = count.saturating_sub(1).to_string().len().max(4);
+    format!("point-{k:0width$}")
+}
+
+/// A row's first columns: the point and the operating point it runs at.
+fn inputs_row(name: &str, case: &Case) -> Map<String, Value> {
+    let at = conditions(case, None);
+    let mut row = Map::new();
+    row.insert("point".into(), Value::from(name));
+    row.insert("speed_rpm".into(), Value::from(at.inner_speed / RPM));
+    row.insert("force_x_n".into(), Value::from(at.loads.force[0]));
+    row.insert("force_z_n".into(), Value::from(at.loads.force[2]));
+    row
+}
+
+/// Runs one point into `dir/name` and returns its row: the inputs, the
+/// status and error, and the summary's numbers. A failure is a row, not an
+/// error: the other points go on.
+pub fn run_point(
+    name: &str,
+    source: &str,
+    case_text: Option<&str>,
+    overrides: &CaseOverrides,
+    case: &Case,
+    dir: &Path,
+    options: &RunOptions,
+) -> Map<String, Value> {
+    let mut row = inputs_row(name, case);
+    let record = RunRecord::new(
+        source.to_string(),
+        case_text.map(str::to_string),
+        overrides.clone(),
+        options.force,
+    );
+    match run_case(&record, case, &dir.join(name), options) {
+        Err(
+            Failure::BadInput(m)
+            | Failure::Model(m)
+            | Failure::Internal(m)
+            | Failure::Interrupted(m),
+        ) => {
+            row.insert("status".into(), Value::from("failed"));
+            row.insert("error".into(), Value::from(m));
+        }
+        Ok(summary) => {
+            let value = serde_json::to_value(&summary).unwrap_or(Value::Null);
+            row.insert("status".into(), value["status"].clone());
+            row.insert("error".into(), value["error"].clone());
+            flatten("", &value, &mut row);
+        }
+    }
+    row
 }
 
 /// Adds the numbers of a summary to a row (nested keys joined by '.';
@@ -255,7 +294,7 @@ fn flatten(prefix: &str, value: &Value, row: &mut Map<String, Value>) {
 
 /// Writes `sweep.json` and `sweep.csv` (columns: the union of the rows'
 /// keys in first-seen order).
-fn write_tables(dir: &Path, rows: &[Map<String, Value>]) -> Result<(), Failure> {
+pub fn write_tables(dir: &Path, rows: &[Map<String, Value>]) -> Result<(), Failure> {
     let json = crate::finite::to_json(rows).map_err(|e| Failure::Internal(e.to_string()))?;
     // The point and its inputs first, then the summary's keys.
     let mut columns: Vec<&str> = vec![

@@ -1,0 +1,191 @@
+//! The application layer of rolldyn: what the `rolldyn` command does,
+//! as a library, so that the Python package (`crates/rolldyn-py`) runs
+//! cases, sweeps and reports with exactly the CLI's code. The binary
+//! (`main.rs`) only parses arguments and maps [`Failure`] to exit codes.
+
+pub mod checkpoint;
+pub mod contact;
+pub mod finite;
+pub mod html_report;
+pub mod power;
+pub mod power_channels;
+pub mod quasistatic;
+pub mod quasistatic_films;
+pub mod report;
+pub mod run;
+pub mod run_sweep;
+pub mod spectrum;
+pub mod thermal;
+pub mod traction;
+pub mod traction_equilibrium;
+pub mod vibration;
+
+use clap::Args;
+use rolldyn_case::units::{Angle, Quantity};
+use rolldyn_case::{Case, CaseError, Override, load_case, load_default};
+use std::io::{Read, Write};
+
+/// The case to work on, and overrides of its values.
+#[derive(Args, Debug, Clone)]
+pub struct CaseArgs {
+    /// Case file (TOML); `-` reads standard input; omitted: the built-in
+    /// default case (7008C at 10 000 rpm, F_x = 200 N).
+    pub case: Option<String>,
+    #[command(flatten)]
+    pub overrides: CaseOverrides,
+}
+
+/// Overrides of a case's values from the command line (also kept in a
+/// run's `run.json`, so that `--resume` rebuilds the same case).
+#[derive(Args, Debug, Clone, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct CaseOverrides {
+    /// Override the inner-ring speed, e.g. "8000 rpm".
+    #[arg(long, value_name = "SPEED")]
+    pub speed: Option<String>,
+    /// Override the axial load F_x, e.g. "500 N" (negative values allowed).
+    #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
+    pub axial_load: Option<String>,
+    /// Override the radial load F_z, e.g. "1 kN" (negative values allowed).
+    #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
+    pub radial_load: Option<String>,
+    /// Hold the inner ring's tilts at zero (quasi-static; the holding
+    /// moments are reported).
+    #[arg(long)]
+    pub fix_tilt: bool,
+    /// Prescribe the inner ring's tilt θ_y, e.g. "0.05 deg" (quasi-static).
+    #[arg(long, value_name = "ANGLE", allow_hyphen_values = true)]
+    pub misalignment: Option<String>,
+    /// Override any key: --set bearing.ball_count=22 (repeatable).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+}
+
+/// Output directory of `rolldyn run` when none is given.
+pub const DEFAULT_RUN_DIR: &str = "rolldyn-run";
+
+/// A failure with its exit code.
+pub enum Failure {
+    /// 2: the user's input, arguments or output path.
+    BadInput(String),
+    /// 3: the model failed to converge or diverged.
+    Model(String),
+    /// 130: interrupted by the user.
+    Interrupted(String),
+    /// 1: an internal error.
+    Internal(String),
+}
+
+/// A quasi-static solver error: no convergence, or a solution branch that
+/// ends short of the axial load (a least axial load), is the model's
+/// failure (3); an unsupported load (no ball in its direction) the input's
+/// (2).
+pub fn quasistatic_failure(e: rolldyn::quasistatic::QuasiStaticError) -> Failure {
+    match e {
+        rolldyn::quasistatic::QuasiStaticError::NoConvergence { .. }
+        | rolldyn::quasistatic::QuasiStaticError::AxialLoadTooSmall { .. } => {
+            Failure::Model(e.to_string())
+        }
+        other => Failure::BadInput(other.to_string()),
+    }
+}
+
+impl From<CaseError> for Failure {
+    fn from(e: CaseError) -> Self {
+        Failure::BadInput(e.to_string())
+    }
+}
+
+pub fn bad_arg(flag: &str, value: &str, rule: impl std::fmt::Display) -> Failure {
+    Failure::BadInput(format!("argument {flag} {value}: {rule}"))
+}
+
+impl CaseOverrides {
+    pub fn overrides(&self) -> Result<Vec<Override>, Failure> {
+        let mut out = Vec::new();
+        if let Some(s) = &self.speed {
+            out.push(Override::flag("--speed", "operating.speed", s));
+        }
+        if let Some(f) = &self.axial_load {
+            out.push(Override::flag("--axial-load", "operating.force_x", f));
+        }
+        if let Some(f) = &self.radial_load {
+            out.push(Override::flag("--radial-load", "operating.force_z", f));
+        }
+        if self.fix_tilt {
+            out.push(Override::parse_set("operating.fixed_tilt=true")?);
+        }
+        if let Some(a) = &self.misalignment {
+            out.push(Override::flag("--misalignment", "operating.tilt_y", a));
+        }
+        for s in &self.set {
+            out.push(Override::parse_set(s)?);
+        }
+        Ok(out)
+    }
+
+    /// Loads and validates a case from its text (None: the built-in
+    /// default case) with these overrides.
+    pub fn load_text(&self, source: &str, text: Option<&str>) -> Result<Case, Failure> {
+        let overrides = self.overrides()?;
+        Ok(match text {
+            None => load_default(&overrides)?,
+            Some(text) => load_case(source, text, &overrides)?,
+        })
+    }
+}
+
+impl CaseArgs {
+    /// The case's source name and text (None: the built-in default).
+    pub fn read(&self) -> Result<(String, Option<String>), Failure> {
+        match self.case.as_deref() {
+            None => Ok(("built-in default case (7008C)".into(), None)),
+            Some("-") => {
+                let mut text = String::new();
+                std::io::stdin().read_to_string(&mut text).map_err(|e| {
+                    Failure::BadInput(format!("cannot read the case from standard input: {e}"))
+                })?;
+                Ok(("<stdin>".to_string(), Some(text)))
+            }
+            Some(path) => {
+                let text = std::fs::read_to_string(path)
+                    .map_err(|e| Failure::BadInput(format!("cannot read case file {path}: {e}")))?;
+                Ok((path.to_string(), Some(text)))
+            }
+        }
+    }
+
+    /// Loads and validates the case with its overrides.
+    pub fn load(&self) -> Result<(String, Case), Failure> {
+        // Overrides are checked before a case is read from standard input.
+        self.overrides.overrides()?;
+        let (source, text) = self.read()?;
+        let case = self.overrides.load_text(&source, text.as_deref())?;
+        Ok((source, case))
+    }
+}
+
+pub fn parse_angle(flag: &str, text: Option<&String>) -> Result<Option<f64>, Failure> {
+    text.map(|t| {
+        let a = Quantity::<Angle>::parse(t)
+            .map_err(|e| bad_arg(flag, t, e))?
+            .si;
+        if (0.0..=std::f64::consts::FRAC_PI_2).contains(&a) {
+            Ok(a)
+        } else {
+            Err(bad_arg(flag, t, "contact angle must lie in [0, 90] deg"))
+        }
+    })
+    .transpose()
+}
+
+pub fn emit(text: &str) -> Result<(), Failure> {
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|_| out.flush())
+        .map_err(|e| Failure::BadInput(format!("cannot write to standard output: {e}")))
+}
+
+pub fn json<T: serde::Serialize>(value: &T) -> Result<(), Failure> {
+    let text = crate::finite::to_json(value).map_err(|e| Failure::Internal(e.to_string()))?;
+    emit(&(text + "\n"))
+}
