@@ -132,6 +132,33 @@ impl TimeSeries {
             .position(|n| n == name)
             .map(|i| self.columns[i].as_slice())
     }
+
+    /// The Arrow schema: one non-null Float64 field per channel, its unit
+    /// in the field metadata (`unit`).
+    pub fn schema(&self) -> Arc<Schema> {
+        let fields: Vec<Field> = self
+            .names
+            .iter()
+            .zip(&self.units)
+            .map(|(n, u)| {
+                Field::new(n, DataType::Float64, false)
+                    .with_metadata(HashMap::from([("unit".to_string(), u.clone())]))
+            })
+            .collect();
+        Arc::new(Schema::new(fields))
+    }
+
+    /// The series as one Arrow record batch; the columns are moved into
+    /// the arrays, not copied.
+    pub fn into_record_batch(self) -> Result<RecordBatch, arrow_schema::ArrowError> {
+        let schema = self.schema();
+        let columns: Vec<ArrayRef> = self
+            .columns
+            .into_iter()
+            .map(|c| Arc::new(Float64Array::from(c)) as ArrayRef)
+            .collect();
+        RecordBatch::try_new(schema, columns)
+    }
 }
 
 /// Writes `bytes` to `path` atomically: a temporary file in the same
@@ -177,22 +204,11 @@ pub fn write_parquet(
         path: path.display().to_string(),
         message,
     };
-    let fields: Vec<Field> = series
-        .names
-        .iter()
-        .zip(&series.units)
-        .map(|(n, u)| {
-            Field::new(n, DataType::Float64, false)
-                .with_metadata(HashMap::from([("unit".to_string(), u.clone())]))
-        })
-        .collect();
-    let schema = Arc::new(Schema::new(fields));
-    let columns: Vec<ArrayRef> = series
-        .columns
-        .iter()
-        .map(|c| Arc::new(Float64Array::from(c.clone())) as ArrayRef)
-        .collect();
-    let batch = RecordBatch::try_new(schema.clone(), columns).map_err(|e| encode(e.to_string()))?;
+    let batch = series
+        .clone()
+        .into_record_batch()
+        .map_err(|e| encode(e.to_string()))?;
+    let schema = batch.schema();
     let kv: Vec<KeyValue> = metadata
         .iter()
         .map(|(k, v)| KeyValue::new(k.to_string(), v.clone()))

@@ -1,0 +1,460 @@
+//! `rolldyn._rolldyn`: the native half of the Python package `rolldyn`
+//! (the Python half is `python/rolldyn/__init__.py`, which users import).
+//!
+//! Every function runs exactly the code of the `rolldyn` command
+//! (`rolldyn_cli`, the application layer), so a case gives the same
+//! numbers from Python as from the CLI. A case crosses the boundary as its
+//! source name, its TOML text (None: the built-in default case) and its
+//! `KEY=VALUE` overrides, as `run.json` records it; reports come back as
+//! JSON text (the CLI's `--json` output, keys in docs/cli.md), time
+//! series as Arrow record batches handed to pyarrow through the Arrow C
+//! stream interface, without a copy.
+//!
+//! Runs and sweeps release the GIL. They execute on a worker thread while
+//! the calling thread waits in slices of 100 ms: between slices it takes
+//! the GIL to check for a Ctrl-C (which raises the stop flag the engine
+//! polls at every step, so the run ends cleanly and keeps what it
+//! computed) and to call the progress callback.
+
+use arrow_array::ffi_stream::FFI_ArrowArrayStream;
+use arrow_array::{RecordBatch, RecordBatchIterator};
+use arrow_schema::SchemaRef;
+use pyo3::create_exception;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyCapsule;
+use rolldyn_case::{Case, presets};
+use rolldyn_cli::checkpoint::RunRecord;
+use rolldyn_cli::contact::{ContactArgs, evaluate};
+use rolldyn_cli::quasistatic::{self, ControlChoice};
+use rolldyn_cli::report::{CheckReport, FrequencyReport};
+use rolldyn_cli::run::{RunOptions, run_case_series};
+use rolldyn_cli::{CaseArgs, CaseOverrides, Failure, finite, parse_angle, run_sweep};
+use std::path::Path;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::time::Duration;
+
+create_exception!(
+    _rolldyn,
+    CaseError,
+    PyValueError,
+    "Bad input: a case file, an override or an argument (the CLI's exit code 2). The message names the key, the value and the rule."
+);
+create_exception!(
+    _rolldyn,
+    ModelError,
+    PyRuntimeError,
+    "The model failed: a quasi-static solve did not converge (the CLI's exit code 3)."
+);
+
+/// How long the calling thread waits for a run between two looks at
+/// Ctrl-C and the progress callback.
+const POLL: Duration = Duration::from_millis(100);
+
+fn to_py(failure: Failure) -> PyErr {
+    match failure {
+        Failure::BadInput(m) => CaseError::new_err(m),
+        Failure::Model(m) => ModelError::new_err(m),
+        Failure::Interrupted(m) | Failure::Internal(m) => PyRuntimeError::new_err(m),
+    }
+}
+
+fn json_text<T: serde::Serialize>(value: &T) -> PyResult<String> {
+    finite::to_json(value).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+}
+
+fn overrides(sets: Vec<String>) -> CaseOverrides {
+    CaseOverrides {
+        set: sets,
+        ..Default::default()
+    }
+}
+
+/// Loads and validates a case: its source name, text (None: the built-in
+/// default) and overrides.
+fn load(source: &str, text: Option<&str>, sets: Vec<String>) -> PyResult<Case> {
+    overrides(sets).load_text(source, text).map_err(to_py)
+}
+
+/// Names and one-line descriptions of the built-in bearings.
+#[pyfunction]
+fn preset_names() -> Vec<(&'static str, &'static str)> {
+    presets::PRESETS
+        .iter()
+        .map(|p| (p.name, p.summary))
+        .collect()
+}
+
+/// The case-file text of a preset.
+#[pyfunction]
+fn preset_text(name: &str) -> PyResult<&'static str> {
+    presets::find(name).map(|p| p.text).ok_or_else(|| {
+        CaseError::new_err(format!(
+            "preset {name}: unknown preset; available: {}",
+            presets::names()
+        ))
+    })
+}
+
+/// Validates the case; returns `rolldyn check --json`.
+#[pyfunction]
+#[pyo3(signature = (source, text, sets))]
+fn check(source: &str, text: Option<&str>, sets: Vec<String>) -> PyResult<String> {
+    let case = load(source, text, sets)?;
+    let report = CheckReport::new(source, &case).map_err(CaseError::new_err)?;
+    json_text(&report)
+}
+
+/// `rolldyn frequencies --json`.
+#[pyfunction]
+#[pyo3(signature = (source, text, sets, angle=None))]
+fn frequencies(
+    source: &str,
+    text: Option<&str>,
+    sets: Vec<String>,
+    angle: Option<String>,
+) -> PyResult<String> {
+    let angle = parse_angle("angle", angle.as_ref()).map_err(to_py)?;
+    let case = load(source, text, sets)?;
+    let report = FrequencyReport::new(&case, angle).map_err(CaseError::new_err)?;
+    json_text(&report)
+}
+
+/// `rolldyn contact --json`.
+#[pyfunction]
+#[pyo3(signature = (source, text, sets, load_, angle=None, entrainment_speed=None, radii=None, ball_on_flat=None, inlet_distance_ratio=None))]
+#[allow(clippy::too_many_arguments)]
+fn contact(
+    source: &str,
+    text: Option<&str>,
+    sets: Vec<String>,
+    load_: String,
+    angle: Option<String>,
+    entrainment_speed: Option<String>,
+    radii: Option<String>,
+    ball_on_flat: Option<String>,
+    inlet_distance_ratio: Option<f64>,
+) -> PyResult<String> {
+    let case = load(source, text, sets)?;
+    let args = ContactArgs {
+        case: CaseArgs {
+            case: None,
+            overrides: CaseOverrides::default(),
+        },
+        load: load_,
+        angle,
+        entrainment_speed,
+        radii,
+        ball_on_flat,
+        inlet_distance_ratio,
+        json: true,
+    };
+    json_text(&evaluate(&args, &case).map_err(to_py)?)
+}
+
+/// `rolldyn quasistatic --json`.
+#[pyfunction]
+#[pyo3(signature = (source, text, sets, control=None))]
+fn quasistatic_solve(
+    py: Python<'_>,
+    source: &str,
+    text: Option<&str>,
+    sets: Vec<String>,
+    control: Option<String>,
+) -> PyResult<String> {
+    let control = ControlChoice::parse(control.as_deref()).map_err(to_py)?;
+    let case = load(source, text, sets)?;
+    let output = py.detach(|| quasistatic::solve(&case, control).map_err(to_py))?;
+    json_text(&output)
+}
+
+/// `rolldyn quasistatic --sweep … --json`: the rows of the sweep.
+#[pyfunction]
+#[pyo3(signature = (source, text, sets, sweeps, control=None))]
+fn quasistatic_sweep(
+    py: Python<'_>,
+    source: &str,
+    text: Option<&str>,
+    sets: Vec<String>,
+    sweeps: Vec<String>,
+    control: Option<String>,
+) -> PyResult<String> {
+    let ControlChoice::Raceway(control) =
+        ControlChoice::parse(control.as_deref()).map_err(to_py)?
+    else {
+        return Err(CaseError::new_err(
+            "control traction: not with a sweep (solve the points one by one)",
+        ));
+    };
+    let sweeps = sweeps
+        .iter()
+        .map(|s| quasistatic::parse_sweep(s).map_err(|e| format!("sweep {s}: {e}")))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(CaseError::new_err)?;
+    let case = load(source, text, sets)?;
+    let rows =
+        py.detach(|| quasistatic::run_sweep(&case, control, &sweeps).map_err(CaseError::new_err))?;
+    json_text(&rows)
+}
+
+/// A time series as Arrow record batches; pyarrow takes it through the
+/// Arrow PyCapsule interface (`pyarrow.table(stream)`), sharing the
+/// buffers (no copy). Every call of `__arrow_c_stream__` gives a new
+/// stream over the same batches.
+#[pyclass(frozen)]
+struct ArrowStream {
+    schema: SchemaRef,
+    batches: Vec<RecordBatch>,
+}
+
+#[pymethods]
+impl ArrowStream {
+    #[pyo3(signature = (requested_schema=None))]
+    fn __arrow_c_stream__<'py>(
+        &self,
+        py: Python<'py>,
+        requested_schema: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyCapsule>> {
+        // The schema is fixed (Float64 columns); a requested one is ignored,
+        // as the interface allows.
+        let _ = requested_schema;
+        let reader = RecordBatchIterator::new(
+            self.batches.clone().into_iter().map(Ok),
+            self.schema.clone(),
+        );
+        let stream = FFI_ArrowArrayStream::new(Box::new(reader));
+        PyCapsule::new_with_value(py, stream, c"arrow_array_stream")
+    }
+}
+
+impl ArrowStream {
+    fn new(series: rolldyn_io::TimeSeries) -> PyResult<Self> {
+        let batch = series
+            .into_record_batch()
+            .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+        Ok(ArrowStream {
+            schema: batch.schema(),
+            batches: vec![batch],
+        })
+    }
+}
+
+/// Runs `work` on a worker thread with the GIL released; meanwhile, every
+/// [`POLL`], checks for Ctrl-C (raising `stop`) and calls `callback` with
+/// the fraction in `progress`. Returns the work's result and whether a
+/// Ctrl-C stopped it.
+fn watched<T: Send>(
+    py: Python<'_>,
+    stop: &AtomicBool,
+    progress: &AtomicU64,
+    callback: Option<&Bound<'_, PyAny>>,
+    work: impl FnOnce() -> T + Send,
+) -> PyResult<(T, bool)> {
+    let mut interrupted = false;
+    let result = std::thread::scope(|scope| -> PyResult<T> {
+        let worker = scope.spawn(work);
+        let mut last = f64::NAN;
+        loop {
+            let finished = py.detach(|| {
+                let begun = std::time::Instant::now();
+                while !worker.is_finished() && begun.elapsed() < POLL {
+                    std::thread::sleep(Duration::from_millis(2));
+                }
+                worker.is_finished()
+            });
+            if !interrupted && py.check_signals().is_err() {
+                // The KeyboardInterrupt is replaced by the partial result
+                // (the Python side raises `RunInterrupted`).
+                interrupted = true;
+                stop.store(true, Ordering::Relaxed);
+            }
+            if let Some(callback) = callback {
+                let fraction = f64::from_bits(progress.load(Ordering::Relaxed));
+                if fraction != last || finished {
+                    last = fraction;
+                    if let Err(e) = callback.call1((fraction,)) {
+                        // An exception in the callback stops the run; it
+                        // is raised once the worker has ended.
+                        stop.store(true, Ordering::Relaxed);
+                        let _ = py.detach(|| worker.join());
+                        return Err(e);
+                    }
+                }
+            }
+            if finished {
+                return py
+                    .detach(|| worker.join())
+                    .map_err(|_| PyRuntimeError::new_err("the run panicked"));
+            }
+        }
+    })?;
+    Ok((result, interrupted))
+}
+
+/// `rolldyn run`: runs the case into `directory`. Returns the summary
+/// (JSON), the time series and whether a Ctrl-C stopped the run.
+#[pyfunction]
+#[pyo3(signature = (source, text, sets, directory, force=false, progress=None))]
+fn run(
+    py: Python<'_>,
+    source: String,
+    text: Option<String>,
+    sets: Vec<String>,
+    directory: &str,
+    force: bool,
+    progress: Option<Bound<'_, PyAny>>,
+) -> PyResult<(String, ArrowStream, bool)> {
+    let overrides = overrides(sets);
+    let case = overrides
+        .load_text(&source, text.as_deref())
+        .map_err(to_py)?;
+    let record = RunRecord::new(source, text, overrides, force);
+    let stop = Arc::new(AtomicBool::new(false));
+    let fraction = Arc::new(AtomicU64::new(0f64.to_bits()));
+    let options = RunOptions {
+        force,
+        checkpoint_interval: rolldyn_cli::run::DEFAULT_CHECKPOINT_INTERVAL,
+        stop: Some(stop.clone()),
+        quiet: true,
+        progress: Some(fraction.clone()),
+        ..Default::default()
+    };
+    let dir = Path::new(directory);
+    let (output, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
+        run_case_series(&record, &case, dir, &options)
+    })?;
+    let output = output.map_err(to_py)?;
+    Ok((
+        json_text(&output.summary)?,
+        ArrowStream::new(output.series)?,
+        interrupted,
+    ))
+}
+
+/// Opens a run directory: its summary (JSON) and time series.
+#[pyfunction]
+fn open_run(directory: &str) -> PyResult<(String, ArrowStream)> {
+    let dir = Path::new(directory);
+    let summary = std::fs::read_to_string(dir.join(rolldyn_report::run::SUMMARY_FILE))
+        .map_err(|e| CaseError::new_err(format!("{directory}: no summary.json: {e}")))?;
+    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet"))
+        .map_err(|e| CaseError::new_err(e.to_string()))?;
+    Ok((summary, ArrowStream::new(series)?))
+}
+
+/// `rolldyn run --sweep`: runs the points (each a list of overrides added
+/// to the case's) in parallel into `directory/point-NNNN/`, writes
+/// `sweep.json` and `sweep.csv`, and returns the rows (JSON) and whether
+/// a Ctrl-C stopped the sweep. Progress: the fraction of points done.
+#[pyfunction]
+#[pyo3(signature = (source, text, sets, points, directory, force=false, progress=None))]
+#[allow(clippy::too_many_arguments)]
+fn run_points(
+    py: Python<'_>,
+    source: String,
+    text: Option<String>,
+    sets: Vec<String>,
+    points: Vec<Vec<String>>,
+    directory: &str,
+    force: bool,
+    progress: Option<Bound<'_, PyAny>>,
+) -> PyResult<(String, bool)> {
+    let points: Vec<CaseOverrides> = points
+        .into_iter()
+        .map(|p| overrides(sets.iter().cloned().chain(p).collect()))
+        .collect();
+    let stop = Arc::new(AtomicBool::new(false));
+    let fraction = Arc::new(AtomicU64::new(0f64.to_bits()));
+    let options = RunOptions {
+        force,
+        checkpoint_interval: rolldyn_cli::run::DEFAULT_CHECKPOINT_INTERVAL,
+        stop: Some(stop.clone()),
+        progress: Some(fraction.clone()),
+        ..Default::default()
+    };
+    let dir = Path::new(directory);
+    let (rows, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
+        run_sweep::run(&source, text.as_deref(), &points, dir, &options)
+    })?;
+    let (rows, _) = rows.map_err(to_py)?;
+    Ok((json_text(&rows)?, interrupted))
+}
+
+/// One point of a sweep (a Dask task): runs the case with the point's
+/// overrides into `directory/name` and returns its row (JSON), the same
+/// row `run_points` gives.
+#[pyfunction]
+#[pyo3(signature = (name, source, text, sets, directory, force=false))]
+#[allow(clippy::too_many_arguments)]
+fn run_point(
+    py: Python<'_>,
+    name: &str,
+    source: &str,
+    text: Option<&str>,
+    sets: Vec<String>,
+    directory: &str,
+    force: bool,
+) -> PyResult<String> {
+    let overrides = overrides(sets);
+    let case = overrides.load_text(source, text).map_err(to_py)?;
+    let stop = Arc::new(AtomicBool::new(false));
+    let fraction = Arc::new(AtomicU64::new(0f64.to_bits()));
+    let options = RunOptions {
+        force,
+        checkpoint_interval: rolldyn_cli::run::DEFAULT_CHECKPOINT_INTERVAL,
+        stop: Some(stop.clone()),
+        quiet: true,
+        ..Default::default()
+    };
+    let dir = Path::new(directory);
+    let (row, _) = watched(py, &stop, &fraction, None, || {
+        run_sweep::run_point(name, source, text, &overrides, &case, dir, &options)
+    })?;
+    json_text(&row)
+}
+
+/// The directory name of point `k` of `count` (`point-NNNN`).
+#[pyfunction]
+fn point_name(k: usize, count: usize) -> String {
+    run_sweep::point_name(k, count)
+}
+
+/// Writes `sweep.json` and `sweep.csv` of rows (JSON) into `directory`.
+#[pyfunction]
+fn write_sweep_tables(directory: &str, rows: &str) -> PyResult<()> {
+    let rows: Vec<serde_json::Map<String, serde_json::Value>> =
+        serde_json::from_str(rows).map_err(|e| CaseError::new_err(e.to_string()))?;
+    run_sweep::write_tables(Path::new(directory), &rows).map_err(to_py)
+}
+
+/// Writes `directory/report.html` (as `rolldyn report`); returns its path.
+#[pyfunction]
+fn report(directory: &str) -> PyResult<String> {
+    rolldyn_cli::html_report::write(Path::new(directory))
+        .map(|p| p.display().to_string())
+        .map_err(to_py)
+}
+
+#[pymodule]
+fn _rolldyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("CaseError", m.py().get_type::<CaseError>())?;
+    m.add("ModelError", m.py().get_type::<ModelError>())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_class::<ArrowStream>()?;
+    m.add_function(wrap_pyfunction!(preset_names, m)?)?;
+    m.add_function(wrap_pyfunction!(preset_text, m)?)?;
+    m.add_function(wrap_pyfunction!(check, m)?)?;
+    m.add_function(wrap_pyfunction!(frequencies, m)?)?;
+    m.add_function(wrap_pyfunction!(contact, m)?)?;
+    m.add_function(wrap_pyfunction!(quasistatic_solve, m)?)?;
+    m.add_function(wrap_pyfunction!(quasistatic_sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(open_run, m)?)?;
+    m.add_function(wrap_pyfunction!(run_points, m)?)?;
+    m.add_function(wrap_pyfunction!(run_point, m)?)?;
+    m.add_function(wrap_pyfunction!(point_name, m)?)?;
+    m.add_function(wrap_pyfunction!(write_sweep_tables, m)?)?;
+    m.add_function(wrap_pyfunction!(report, m)?)?;
+    Ok(())
+}

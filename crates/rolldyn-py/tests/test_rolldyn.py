@@ -1,0 +1,274 @@
+"""Tests of the Python package `rolldyn` (issue 14, item 1 and the Dask part
+of item 2). Run by scripts/test.sh after `cargo test`; the CLI binary to
+compare with is $ROLLDYN_CLI (default: target/debug/rolldyn).
+
+The package runs the CLI's own code, so its results must equal the CLI's
+exactly: reports as dicts equal to `--json`, run summaries equal but for the
+wall time, time series bit-identical to the CLI's Parquet file.
+"""
+
+import json
+import os
+import pickle
+import signal
+import subprocess
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pyarrow as pa
+import pyarrow.parquet as pq
+import pytest
+
+import rolldyn
+
+REPO = Path(__file__).resolve().parents[3]
+CLI = Path(os.environ.get("ROLLDYN_CLI", REPO / "target" / "debug" / "rolldyn"))
+
+
+def cli_json(*args):
+    if not CLI.exists():
+        pytest.skip(f"no rolldyn binary at {CLI} (set ROLLDYN_CLI)")
+    out = subprocess.run([str(CLI), *args], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    return json.loads(out.stdout) if out.stdout.strip() else None
+
+
+def cli(*args):
+    if not CLI.exists():
+        pytest.skip(f"no rolldyn binary at {CLI} (set ROLLDYN_CLI)")
+    out = subprocess.run([str(CLI), *args], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    return out
+
+
+def without_wall(summary):
+    return {k: v for k, v in summary.items() if k != "wall_time_s"}
+
+
+# --- cases ---------------------------------------------------------------
+
+
+def test_presets_are_the_clis():
+    listed = {p["name"]: p["summary"] for p in cli_json("presets", "--json")}
+    assert rolldyn.presets() == listed
+
+
+def test_case_constructors_agree():
+    text = (REPO / "examples" / "seed000" / "case.toml").read_text()
+    from_file = rolldyn.Case.load(REPO / "examples" / "seed000" / "case.toml")
+    from_text = rolldyn.Case.from_toml(text)
+    assert from_file.describe()["geometry"] == from_text.describe()["geometry"]
+    default = rolldyn.Case.default()
+    assert default.source == rolldyn.DEFAULT_SOURCE
+    assert default.describe() == cli_json("check", "--json")
+    # A preset is its case-file text, as `rolldyn new --preset` prints it.
+    preset = rolldyn.Case.preset("7008C").describe()
+    assert preset["source"] == "preset 7008C"
+    assert preset["geometry"] == default.describe()["geometry"]
+
+
+def test_set_validates_at_once_and_leaves_the_case_unchanged():
+    case = rolldyn.Case.preset("6304")
+    with pytest.raises(rolldyn.CaseError) as e:
+        case.set("operating.speed", "fast")
+    # The CLI's located message: key, value, rule.
+    assert "operating.speed" in str(e.value)
+    assert "fast" in str(e.value)
+    assert case.overrides == []
+    with pytest.raises(rolldyn.CaseError, match="bearing.ball_count"):
+        case.set("bearing.ball_count", -3)
+    assert case.set("speed", "3000 rpm").set("bearing.ball_count", 8) is case
+    assert case.overrides == ["operating.speed=3000 rpm", "bearing.ball_count=8"]
+    assert case.describe()["geometry"]["ball_count"] == 8
+
+
+def test_unknown_preset_names_the_choices():
+    with pytest.raises(rolldyn.CaseError, match="7008C"):
+        rolldyn.Case.preset("nope")
+
+
+def test_cases_pickle():
+    case = rolldyn.Case.preset("7218B").set("speed", "2000 rpm")
+    assert pickle.loads(pickle.dumps(case)) == case
+
+
+# --- reports equal the CLI's --json ------------------------------------------
+
+
+def test_frequencies_equal_the_cli():
+    case = rolldyn.Case.preset("6205").set("speed", "1797 rpm")
+    cli("presets")  # skips without a binary
+    # The preset's text through standard input, as the Python case holds it.
+    out = subprocess.run([str(CLI), "frequencies", "--json", "-", "--speed", "1797 rpm"],
+                         input=rolldyn._rolldyn.preset_text("6205"), capture_output=True,
+                         text=True)
+    assert out.returncode == 0, out.stderr
+    expected = json.loads(out.stdout)
+    assert rolldyn.frequencies(case) == expected
+    assert rolldyn.frequencies(case, angle="10 deg") != expected
+
+
+def test_contact_ball_on_flat():
+    c = rolldyn.contact("100 N", ball_on_flat="12.7 mm")
+    assert c == cli_json("contact", "--json", "--load", "100 N", "--ball-on-flat", "12.7 mm")
+    assert c["ellipticity"] == pytest.approx(1.0, rel=1e-9)
+    assert c["semi_major_m"] == pytest.approx(c["semi_minor_m"], rel=1e-9)
+    with pytest.raises(rolldyn.CaseError, match="--load"):
+        rolldyn.contact("-5 N")
+
+
+def test_quasistatic_equals_the_cli():
+    case = rolldyn.Case.default().set("speed", "6000 rpm")
+    expected = cli_json("quasistatic", "--json", "--speed", "6000 rpm", "--control", "inner")
+    assert rolldyn.quasistatic(case, control="inner") == expected
+    with pytest.raises(rolldyn.CaseError, match="outer, inner, harris or traction"):
+        rolldyn.quasistatic(case, control="sideways")
+
+
+def test_quasistatic_sweep_equals_the_cli(tmp_path):
+    cli("quasistatic", "--sweep", "speed=0rpm..12000rpm/4", "--sweep", "axial=100N,1kN",
+        "-o", str(tmp_path))
+    expected = json.loads((tmp_path / "sweep.json").read_text())
+    rows = rolldyn.quasistatic_sweep(
+        None, {"speed": "0rpm..12000rpm/4", "axial": ["100 N", "1 kN"]})
+    assert rows.rows == expected
+    assert len(rows) == 8 and all(r["converged"] for r in rows)
+
+
+# --- runs ----------------------------------------------------------------------
+
+
+def test_run_equals_the_cli_bit_for_bit(tmp_path):
+    cli("run", "--duration", "2 ms", "-o", str(tmp_path / "cli"))
+    result = rolldyn.run(duration="2 ms", output=tmp_path / "py")
+    expected = json.loads((tmp_path / "cli" / "summary.json").read_text())
+    assert without_wall(result.summary) == without_wall(expected)
+    assert result.status == "completed"
+    cli_table = pq.read_table(tmp_path / "cli" / "timeseries.parquet")
+    assert result.timeseries.equals(cli_table)
+    # The run directory is the CLI's: `rolldyn run --resume`, `report` and
+    # Result.load read it.
+    loaded = rolldyn.Result.load(tmp_path / "py")
+    assert loaded.timeseries.equals(result.timeseries)
+    assert Path(result.report()).is_file()
+
+
+def test_channels_are_numpy_arrays_with_units_without_copies():
+    before = pa.total_allocated_bytes()
+    result = rolldyn.run(duration="5 ms")
+    # The table's buffers are the engine's, imported through the C stream
+    # interface: pyarrow's pool did not allocate them.
+    assert result.timeseries.nbytes > 100_000
+    assert pa.total_allocated_bytes() - before < 0.01 * result.timeseries.nbytes
+    speed = result["cage_speed_rpm"]
+    assert isinstance(speed, np.ndarray) and speed.dtype == np.float64
+    assert speed.unit == "rpm" and speed.name == "cage_speed_rpm"
+    assert result["time_s"].unit == "s"
+    column = result.timeseries.column("cage_speed_rpm").chunk(0)
+    assert speed.ctypes.data == column.buffers()[1].address
+    assert result.units["time_s"] == "s"
+    with pytest.raises(KeyError, match="no such channel"):
+        result["nope"]
+    frame = result.to_pandas()
+    assert list(frame.columns) == result.channels
+
+
+def test_bad_input_is_a_case_error_naming_the_key():
+    with pytest.raises(rolldyn.CaseError, match="solver.duration"):
+        rolldyn.run(duration="soon")
+
+
+def test_progress_callback_and_gil_released():
+    seen = []
+    counter = [0]
+    done = threading.Event()
+
+    def work():
+        rolldyn.run(duration="20 ms", progress=seen.append)
+        done.set()
+
+    thread = threading.Thread(target=work)
+    thread.start()
+    # The run holds no GIL: this thread keeps running Python meanwhile.
+    while not done.is_set():
+        counter[0] += 1
+    thread.join()
+    assert counter[0] > 10_000
+    assert seen and seen[-1] == pytest.approx(1.0)
+    assert all(b >= a for a, b in zip(seen, seen[1:]))
+
+
+def test_an_exception_in_the_progress_callback_stops_the_run():
+    def fail(fraction):
+        raise ValueError("stop here")
+
+    t0 = time.time()
+    with pytest.raises(ValueError, match="stop here"):
+        rolldyn.run(duration="1 s", progress=fail)
+    assert time.time() - t0 < 30
+
+
+def test_ctrl_c_stops_a_run_and_keeps_the_partial_result(tmp_path):
+    timer = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    with pytest.raises(rolldyn.RunInterrupted) as e:
+        rolldyn.run(duration="1 s", output=tmp_path)
+    timer.join()
+    result = e.value.result
+    assert isinstance(e.value, KeyboardInterrupt)
+    assert result.status == "interrupted"
+    assert 0 < result.summary["simulated_time_s"] < 1.0
+    assert result.timeseries.num_rows == result.summary["samples"]
+    # The run directory holds the same, and a checkpoint to resume from.
+    on_disk = json.loads((tmp_path / "summary.json").read_text())
+    assert on_disk["status"] == "interrupted"
+    assert (tmp_path / "checkpoint.bin").is_file()
+
+
+# --- sweeps ------------------------------------------------------------------
+
+GRID = {"speed": ["6000 rpm", "9000 rpm"], "axial": ["150 N", "300 N"]}
+
+
+def rows_without_wall(result):
+    return [{k: v for k, v in r.items() if k != "wall_time_s"} for r in result]
+
+
+def test_sweep_rows_equal_the_clis_run_sweep(tmp_path):
+    cli("run", "--duration", "1 ms", "--sweep", "speed=6000rpm,9000rpm",
+        "--sweep", "axial=150N,300N", "-o", str(tmp_path / "cli"))
+    expected = json.loads((tmp_path / "cli" / "sweep.json").read_text())
+    result = rolldyn.sweep(None, GRID, duration="1 ms", output=tmp_path / "py")
+    assert len(result) == 4
+    assert [r["speed"] for r in result] == ["6000 rpm", "6000 rpm", "9000 rpm", "9000 rpm"]
+    assert all(r["status"] == "completed" for r in result)
+    for row, cli_row in zip(rows_without_wall(result), expected):
+        cli_row.pop("wall_time_s")
+        assert {k: v for k, v in row.items() if k not in GRID} == cli_row
+    assert (tmp_path / "py" / "sweep.json").is_file()
+    assert (tmp_path / "py" / "point-0003" / "timeseries.parquet").is_file()
+    assert result.column("mean_cage_speed_rpm").shape == (4,)
+
+
+def test_sweep_on_a_dask_local_cluster_equals_the_serial_sweep(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    serial = rolldyn.sweep(None, GRID, duration="1 ms")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        seen = []
+        on_dask = rolldyn.sweep(None, GRID, client, duration="1 ms",
+                                output=tmp_path, progress=seen.append)
+    assert rows_without_wall(on_dask) == rows_without_wall(serial)
+    assert seen[-1] == pytest.approx(1.0)
+    assert json.loads((tmp_path / "sweep.json").read_text())[0]["point"] == "point-0000"
+    assert (tmp_path / "point-0002" / "summary.json").is_file()
+
+
+def test_sweep_refuses_a_bad_point_before_running():
+    with pytest.raises(rolldyn.CaseError, match="operating.speed"):
+        rolldyn.sweep(None, {"speed": ["1000 rpm", "very fast"]}, duration="1 ms")
+    with pytest.raises(rolldyn.CaseError, match="list of values"):
+        rolldyn.sweep(None, {"speed": "1000 rpm"})

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The whole test suite (the README's test command; `.ci/run` calls it):
+# the Rust workspace, then the Python package installed from the
+# repository with pip, as a user installs it, and its tests (pytest).
+# Needs the Rust toolchain, gcc and Python ≥ 3.9 with pip; everything else
+# (maturin, numpy, pyarrow, pytest, Dask distributed, pandas) is installed
+# into a virtual environment under target/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+cargo test --workspace
+
+venv=target/python-venv
+if [ ! -x "$venv/bin/python" ]; then
+  python3 -m venv "$venv"
+fi
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check "maturin>=1.16,<2"
+# The dev profile (dependencies and the engine at -O2, Cargo.toml) reuses
+# what `cargo test` built; a user's `pip install` builds the release
+# profile.
+PATH="$PWD/$venv/bin:$PATH" MATURIN_PEP517_ARGS="--profile dev" "$venv/bin/python" -m pip install --quiet \
+  --disable-pip-version-check --no-build-isolation "./crates/rolldyn-py[test]"
+ROLLDYN_CLI="$PWD/target/debug/rolldyn" "$venv/bin/python" -m pytest -q crates/rolldyn-py/tests
