@@ -225,6 +225,13 @@ def quasistatic_sweep(case: Optional[Case], grid: Mapping[str, Union[str, Iterab
     return SweepResult(rows, None)
 
 
+def _table(stream: Any) -> pa.Table:
+    """The engine's record batches as a Table, sharing their buffers (the
+    Arrow C stream interface; not ``pa.table``, which imports pandas to
+    look for a DataFrame)."""
+    return pa.RecordBatchReader.from_stream(stream).read_all()
+
+
 class Channel(np.ndarray):
     """A time-series channel: a NumPy array with its ``name`` and ``unit``."""
 
@@ -252,7 +259,7 @@ class Result:
     def load(cls, directory: Union[str, os.PathLike]) -> "Result":
         """Opens a run directory written by ``rolldyn run`` or :func:`run`."""
         summary, stream = _rolldyn.open_run(str(directory))
-        return cls(json.loads(summary), pa.table(stream), str(directory))
+        return cls(json.loads(summary), _table(stream), str(directory))
 
     @property
     def status(self) -> str:
@@ -335,7 +342,7 @@ def run(case: Optional[Case] = None, duration: Optional[str] = None, *,
     with _Directory(output) as d:
         summary, stream, interrupted = _rolldyn.run(
             *case._args(), d.path, force, progress)
-        result = Result(json.loads(summary), pa.table(stream), d.path if d.given else None)
+        result = Result(json.loads(summary), _table(stream), d.path if d.given else None)
     if interrupted:
         raise RunInterrupted(result)
     return result
