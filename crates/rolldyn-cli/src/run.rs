@@ -449,6 +449,23 @@ pub struct RunOptions {
     pub progress: Option<Arc<AtomicU64>>,
 }
 
+impl RunOptions {
+    /// The flag that stops the run: the given one, or a new one raised by
+    /// Ctrl-C.
+    pub fn stop_flag(&self) -> Arc<AtomicBool> {
+        match &self.stop {
+            Some(stop) => stop.clone(),
+            None => {
+                let stop = Arc::new(AtomicBool::new(false));
+                let handler = stop.clone();
+                // A second handler cannot be installed in the same process; ignore.
+                let _ = ctrlc::set_handler(move || handler.store(true, Ordering::Relaxed));
+                stop
+            }
+        }
+    }
+}
+
 /// A run's summary and its time series (as written to the run directory).
 pub struct RunOutput {
     pub summary: Summary,
@@ -628,16 +645,7 @@ pub fn run_case_series(
         next: next_sample,
     };
 
-    let stop = match &options.stop {
-        Some(stop) => stop.clone(),
-        None => {
-            let stop = Arc::new(AtomicBool::new(false));
-            let handler = stop.clone();
-            // A second handler cannot be installed in the same process; ignore.
-            let _ = ctrlc::set_handler(move || handler.store(true, Ordering::Relaxed));
-            stop
-        }
-    };
+    let stop = options.stop_flag();
     let bar = if !options.quiet && std::io::stderr().is_terminal() {
         let bar = ProgressBar::new(1000);
         bar.set_style(

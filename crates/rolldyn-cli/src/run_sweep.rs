@@ -23,8 +23,7 @@ use serde_json::{Map, Value};
 use std::fmt::Write;
 use std::io::IsTerminal;
 use std::path::Path;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
 
@@ -146,15 +145,7 @@ pub fn run(
         .collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(dir)
         .map_err(|e| Failure::BadInput(format!("cannot create {}: {e}", dir.display())))?;
-    let stop = match &options.stop {
-        Some(stop) => stop.clone(),
-        None => {
-            let stop = Arc::new(AtomicBool::new(false));
-            let handler = stop.clone();
-            let _ = ctrlc::set_handler(move || handler.store(true, Ordering::Relaxed));
-            stop
-        }
-    };
+    let stop = options.stop_flag();
     let progress = options.progress.clone();
     let options = RunOptions {
         stop: Some(stop.clone()),

@@ -240,6 +240,22 @@ impl ArrowStream {
     }
 }
 
+/// Options of a run from Python: its own stop flag (never the process's
+/// Ctrl-C handler: Python owns SIGINT) and progress fraction, no bar.
+fn run_options(force: bool) -> (RunOptions, Arc<AtomicBool>, Arc<AtomicU64>) {
+    let stop = Arc::new(AtomicBool::new(false));
+    let fraction = Arc::new(AtomicU64::new(0f64.to_bits()));
+    let options = RunOptions {
+        force,
+        checkpoint_interval: rolldyn_cli::run::DEFAULT_CHECKPOINT_INTERVAL,
+        stop: Some(stop.clone()),
+        quiet: true,
+        progress: Some(fraction.clone()),
+        ..Default::default()
+    };
+    (options, stop, fraction)
+}
+
 /// Runs `work` on a worker thread with the GIL released; meanwhile, every
 /// [`POLL`], checks for Ctrl-C (raising `stop`) and calls `callback` with
 /// the fraction in `progress`. Returns the work's result and whether a
@@ -310,16 +326,7 @@ fn run(
         .load_text(&source, text.as_deref())
         .map_err(to_py)?;
     let record = RunRecord::new(source, text, overrides, force);
-    let stop = Arc::new(AtomicBool::new(false));
-    let fraction = Arc::new(AtomicU64::new(0f64.to_bits()));
-    let options = RunOptions {
-        force,
-        checkpoint_interval: rolldyn_cli::run::DEFAULT_CHECKPOINT_INTERVAL,
-        stop: Some(stop.clone()),
-        quiet: true,
-        progress: Some(fraction.clone()),
-        ..Default::default()
-    };
+    let (options, stop, fraction) = run_options(force);
     let dir = Path::new(directory);
     let (output, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
         run_case_series(&record, &case, dir, &options)
@@ -364,15 +371,7 @@ fn run_points(
         .into_iter()
         .map(|p| overrides(sets.iter().cloned().chain(p).collect()))
         .collect();
-    let stop = Arc::new(AtomicBool::new(false));
-    let fraction = Arc::new(AtomicU64::new(0f64.to_bits()));
-    let options = RunOptions {
-        force,
-        checkpoint_interval: rolldyn_cli::run::DEFAULT_CHECKPOINT_INTERVAL,
-        stop: Some(stop.clone()),
-        progress: Some(fraction.clone()),
-        ..Default::default()
-    };
+    let (options, stop, fraction) = run_options(force);
     let dir = Path::new(directory);
     let (rows, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
         run_sweep::run(&source, text.as_deref(), &points, dir, &options)
@@ -398,15 +397,7 @@ fn run_point(
 ) -> PyResult<String> {
     let overrides = overrides(sets);
     let case = overrides.load_text(source, text).map_err(to_py)?;
-    let stop = Arc::new(AtomicBool::new(false));
-    let fraction = Arc::new(AtomicU64::new(0f64.to_bits()));
-    let options = RunOptions {
-        force,
-        checkpoint_interval: rolldyn_cli::run::DEFAULT_CHECKPOINT_INTERVAL,
-        stop: Some(stop.clone()),
-        quiet: true,
-        ..Default::default()
-    };
+    let (options, stop, fraction) = run_options(force);
     let dir = Path::new(directory);
     let (row, _) = watched(py, &stop, &fraction, None, || {
         run_sweep::run_point(name, source, text, &overrides, &case, dir, &options)
