@@ -33,6 +33,10 @@ pub struct CaseArgs {
     pub case: Option<String>,
     #[command(flatten)]
     pub overrides: CaseOverrides,
+    /// A case given in memory (the Python package): its source name and
+    /// text (None: the built-in default); takes the place of `case`.
+    #[arg(skip)]
+    pub given: Option<(String, Option<String>)>,
 }
 
 /// Overrides of a case's values from the command line (also kept in a
@@ -137,6 +141,9 @@ impl CaseOverrides {
 impl CaseArgs {
     /// The case's source name and text (None: the built-in default).
     pub fn read(&self) -> Result<(String, Option<String>), Failure> {
+        if let Some(given) = &self.given {
+            return Ok(given.clone());
+        }
         match self.case.as_deref() {
             None => Ok(("built-in default case (7008C)".into(), None)),
             Some("-") => {

@@ -143,9 +143,7 @@ pub fn solve(case: &Case) -> Result<(Equilibrium, LocalPowerLoss), Failure> {
 }
 
 pub fn command(args: PowerArgs) -> Result<(), Failure> {
-    let (_, case) = args.case.load()?;
-    let (eq, p) = solve(&case)?;
-    let report = PowerReport::new(&case, &eq, &p)?;
+    let report = report(&args)?;
     if args.json {
         json(&report)
     } else {
@@ -153,4 +151,11 @@ pub fn command(args: PowerArgs) -> Result<(), Failure> {
         report.text(&mut out);
         emit(&out)
     }
+}
+
+/// What `rolldyn power --json` prints.
+pub fn report(args: &PowerArgs) -> Result<PowerReport, Failure> {
+    let (_, case) = args.case.load()?;
+    let (eq, p) = solve(&case)?;
+    PowerReport::new(&case, &eq, &p)
 }

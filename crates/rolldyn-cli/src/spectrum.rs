@@ -85,7 +85,7 @@ struct Characteristic {
 }
 
 #[derive(Serialize)]
-struct Report {
+pub struct Report {
     channel: String,
     unit: String,
     kind: String,
@@ -120,16 +120,29 @@ struct RunSummary {
 }
 
 pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
-    let dir = Path::new(&args.dir);
-    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet"))
-        .map_err(|e| Failure::BadInput(e.to_string()))?;
     if args.list {
+        let dir = Path::new(&args.dir);
+        let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet"))
+            .map_err(|e| Failure::BadInput(e.to_string()))?;
         let mut text = String::new();
         for name in series.names() {
             let _ = writeln!(text, "{name} [{}]", series.unit(name).unwrap_or(""));
         }
         return emit(&text);
     }
+    let report = report(&args)?;
+    if args.json {
+        return json(&report);
+    }
+    emit(&report.to_text())
+}
+
+/// The spectrum `rolldyn spectrum --json` prints; writes its CSV and JSON
+/// files into the run directory.
+pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
+    let dir = Path::new(&args.dir);
+    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet"))
+        .map_err(|e| Failure::BadInput(e.to_string()))?;
     let summary_path = dir.join("summary.json");
     let summary: RunSummary = std::fs::read_to_string(&summary_path)
         .map_err(|e| e.to_string())
@@ -283,10 +296,7 @@ pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
     let text = crate::finite::to_json(&report).map_err(|e| Failure::Internal(e.to_string()))?;
     rolldyn_io::write_atomic(&dir.join(format!("{stem}.json")), (text + "\n").as_bytes())
         .map_err(|e| Failure::BadInput(e.to_string()))?;
-    if args.json {
-        return json(&report);
-    }
-    emit(&report.to_text())
+    Ok(report)
 }
 
 fn parse_band(text: &str) -> Result<(f64, f64), Failure> {

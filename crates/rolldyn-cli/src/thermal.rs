@@ -95,6 +95,15 @@ pub fn solve(case: &Case) -> Result<CoupledSolution, Failure> {
 }
 
 pub fn command(args: ThermalArgs) -> Result<(), Failure> {
+    let report = report(&args)?;
+    if args.json {
+        return json(&report);
+    }
+    emit(&report.to_text())
+}
+
+/// What `rolldyn thermal --json` prints.
+pub fn report(args: &ThermalArgs) -> Result<ThermalReport, Failure> {
     let duration = args
         .transient
         .as_deref()
@@ -151,7 +160,7 @@ pub fn command(args: ThermalArgs) -> Result<(), Failure> {
             Some(rows)
         }
     };
-    let report = ThermalReport {
+    Ok(ThermalReport {
         converged: s.converged,
         iterations: s.history.len(),
         history_k: s.history.clone(),
@@ -165,61 +174,65 @@ pub fn command(args: ThermalArgs) -> Result<(), Failure> {
         operating_clearance_m: s.operating_clearance,
         power: PowerReport::new(&case, &s.equilibrium, &s.power)?,
         transient,
-    };
-    if args.json {
-        return json(&report);
-    }
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "Thermal steady state ({} after {} passes; last change {:.2e} K)",
-        if report.converged {
-            "converged"
-        } else {
-            "NOT converged"
-        },
-        report.iterations,
-        report.history_k.last().copied().unwrap_or(0.0)
-    );
-    for (node, t) in &report.temperatures_c {
-        let _ = writeln!(out, "  {node:<14} {t:>8.2} °C");
-    }
-    let _ = writeln!(
-        out,
-        "  heat {:.3} W: {:.3} W to ambient, {:.3} W to the oil ({:.3} L/min); oil viscosity {:.4} Pa·s",
-        report.heat_generated_w,
-        report.heat_to_ambient_w,
-        report.heat_to_oil_w,
-        report.oil_flow_m3_s * 6e4,
-        report.oil_viscosity_pa_s
-    );
-    let _ = writeln!(
-        out,
-        "  diametral clearance {:.2} µm at the reference temperature, {:.2} µm operating\n",
-        report.reference_clearance_m * 1e6,
-        report.operating_clearance_m * 1e6
-    );
-    report.power.text(&mut out);
-    if let Some(rows) = &report.transient {
-        let _ = writeln!(out, "\nWarm-up from the reference temperature:");
+    })
+}
+
+impl ThermalReport {
+    /// The text `rolldyn thermal` prints.
+    pub fn to_text(&self) -> String {
+        let report = self;
+        let mut out = String::new();
         let _ = writeln!(
             out,
-            "  {:>10} {:>9} {:>9} {:>9} {:>9} {:>9}",
-            "t s", "ball", "inner", "outer", "housing", "oil"
+            "Thermal steady state ({} after {} passes; last change {:.2e} K)",
+            if report.converged {
+                "converged"
+            } else {
+                "NOT converged"
+            },
+            report.iterations,
+            report.history_k.last().copied().unwrap_or(0.0)
         );
-        for r in rows {
-            let t = |n: &str| r.temperatures_c.get(n).copied().unwrap_or(f64::NAN);
+        for (node, t) in &report.temperatures_c {
+            let _ = writeln!(out, "  {node:<14} {t:>8.2} °C");
+        }
+        let _ = writeln!(
+            out,
+            "  heat {:.3} W: {:.3} W to ambient, {:.3} W to the oil ({:.3} L/min); oil viscosity {:.4} Pa·s",
+            report.heat_generated_w,
+            report.heat_to_ambient_w,
+            report.heat_to_oil_w,
+            report.oil_flow_m3_s * 6e4,
+            report.oil_viscosity_pa_s
+        );
+        let _ = writeln!(
+            out,
+            "  diametral clearance {:.2} µm at the reference temperature, {:.2} µm operating\n",
+            report.reference_clearance_m * 1e6,
+            report.operating_clearance_m * 1e6
+        );
+        report.power.text(&mut out);
+        if let Some(rows) = &report.transient {
+            let _ = writeln!(out, "\nWarm-up from the reference temperature:");
             let _ = writeln!(
                 out,
-                "  {:>10.1} {:>9.2} {:>9.2} {:>9.2} {:>9.2} {:>9.2}",
-                r.time_s,
-                t("ball"),
-                t("inner_ring"),
-                t("outer_ring"),
-                t("housing"),
-                t("oil")
+                "  {:>10} {:>9} {:>9} {:>9} {:>9} {:>9}",
+                "t s", "ball", "inner", "outer", "housing", "oil"
             );
+            for r in rows {
+                let t = |n: &str| r.temperatures_c.get(n).copied().unwrap_or(f64::NAN);
+                let _ = writeln!(
+                    out,
+                    "  {:>10.1} {:>9.2} {:>9.2} {:>9.2} {:>9.2} {:>9.2}",
+                    r.time_s,
+                    t("ball"),
+                    t("inner_ring"),
+                    t("outer_ring"),
+                    t("housing"),
+                    t("oil")
+                );
+            }
         }
+        out
     }
-    emit(&out)
 }

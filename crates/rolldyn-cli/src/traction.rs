@@ -191,15 +191,25 @@ fn bearing_load(args: &TractionArgs) -> Result<Load, Failure> {
 
 /// Runs `rolldyn traction`.
 pub fn command(args: TractionArgs) -> Result<(), Failure> {
+    let report = report(&args)?;
+    if args.json {
+        json(&report)
+    } else {
+        emit(&report.to_text())
+    }
+}
+
+/// What `rolldyn traction --json` prints (and the map file written).
+pub fn report(args: &TractionArgs) -> Result<TractionReport, Failure> {
     let inputs = Inputs {
         rolling_speed: quantity::<Velocity>("--rolling-speed", &args.rolling_speed)?,
-        motion: motion(&args)?,
+        motion: motion(args)?,
     };
     let case;
     let contact = match &args.semi_axes {
-        Some(axes) => explicit_contact(&args, axes)?,
+        Some(axes) => explicit_contact(args, axes)?,
         None => {
-            let load = bearing_load(&args)?;
+            let load = bearing_load(args)?;
             let ring = match args.ring.as_str() {
                 "inner" => RingKind::Inner,
                 "outer" => RingKind::Outer,
@@ -221,11 +231,7 @@ pub fn command(args: TractionArgs) -> Result<(), Failure> {
         rolldyn_io::write_atomic(std::path::Path::new(path), text.as_bytes())
             .map_err(|e| Failure::BadInput(format!("cannot write {path}: {e}")))?;
     }
-    if args.json {
-        json(&report)
-    } else {
-        emit(&report.to_text())
-    }
+    Ok(report)
 }
 
 /// The contact and its kinematics, in SI units.

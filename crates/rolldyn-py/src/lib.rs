@@ -26,9 +26,13 @@ use pyo3::types::PyCapsule;
 use rolldyn_case::{Case, presets};
 use rolldyn_cli::checkpoint::RunRecord;
 use rolldyn_cli::contact::{ContactArgs, evaluate};
+use rolldyn_cli::power::{self, PowerArgs};
 use rolldyn_cli::quasistatic::{self, ControlChoice};
 use rolldyn_cli::report::{CheckReport, FrequencyReport};
 use rolldyn_cli::run::{RunOptions, run_case_series};
+use rolldyn_cli::spectrum::{self, SpectrumArgs};
+use rolldyn_cli::thermal::{self, ThermalArgs};
+use rolldyn_cli::traction::{self, TractionArgs};
 use rolldyn_cli::{CaseArgs, CaseOverrides, Failure, finite, parse_angle, run_sweep};
 use std::path::Path;
 use std::sync::Arc;
@@ -61,7 +65,7 @@ fn to_py(failure: Failure) -> PyErr {
 }
 
 fn json_text<T: serde::Serialize>(value: &T) -> PyResult<String> {
-    finite::to_json(value).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+    json_value(value).map_err(to_py)
 }
 
 fn overrides(sets: Vec<String>) -> CaseOverrides {
@@ -121,36 +125,80 @@ fn frequencies(
     json_text(&report)
 }
 
-/// `rolldyn contact --json`.
+/// The arguments of a command parsed from its flags, as on the command
+/// line (clap: the same names, defaults and messages).
+#[derive(clap::Parser)]
+#[command(name = "rolldyn")]
+struct Flags<A: clap::Args> {
+    #[command(flatten)]
+    args: A,
+}
+
+fn parse<A: clap::Args>(name: &str, argv: Vec<String>) -> PyResult<A> {
+    <Flags<A> as clap::Parser>::try_parse_from(
+        std::iter::once(format!("rolldyn {name}")).chain(argv),
+    )
+    .map(|f| f.args)
+    .map_err(|e| CaseError::new_err(e.render().to_string().trim().to_string()))
+}
+
+/// `rolldyn NAME FLAGS… --json` for `contact`, `power`, `thermal` and
+/// `traction` on the given case, and `spectrum` (whose run directory is
+/// among the flags): the JSON it prints.
 #[pyfunction]
-#[pyo3(signature = (source, text, sets, load_, angle=None, entrainment_speed=None, radii=None, ball_on_flat=None, inlet_distance_ratio=None))]
-#[allow(clippy::too_many_arguments)]
-fn contact(
-    source: &str,
-    text: Option<&str>,
+#[pyo3(signature = (name, source, text, sets, argv))]
+fn command(
+    py: Python<'_>,
+    name: &str,
+    source: String,
+    text: Option<String>,
     sets: Vec<String>,
-    load_: String,
-    angle: Option<String>,
-    entrainment_speed: Option<String>,
-    radii: Option<String>,
-    ball_on_flat: Option<String>,
-    inlet_distance_ratio: Option<f64>,
+    argv: Vec<String>,
 ) -> PyResult<String> {
-    let case = load(source, text, sets)?;
-    let args = ContactArgs {
-        case: CaseArgs {
-            case: None,
-            overrides: CaseOverrides::default(),
-        },
-        load: load_,
-        angle,
-        entrainment_speed,
-        radii,
-        ball_on_flat,
-        inlet_distance_ratio,
-        json: true,
+    let case_args = |mut case: CaseArgs| {
+        case.given = Some((source.clone(), text.clone()));
+        case.overrides.set = sets.clone();
+        case
     };
-    json_text(&evaluate(&args, &case).map_err(to_py)?)
+    let output = match name {
+        "contact" => {
+            let mut args: ContactArgs = parse(name, argv)?;
+            args.case = case_args(args.case);
+            py.detach(|| {
+                let (_, case) = args.case.load()?;
+                evaluate(&args, &case).and_then(|r| json_value(&r))
+            })
+        }
+        "power" => {
+            let mut args: PowerArgs = parse(name, argv)?;
+            args.case = case_args(args.case);
+            py.detach(|| power::report(&args).and_then(|r| json_value(&r)))
+        }
+        "thermal" => {
+            let mut args: ThermalArgs = parse(name, argv)?;
+            args.case = case_args(args.case);
+            py.detach(|| thermal::report(&args).and_then(|r| json_value(&r)))
+        }
+        "traction" => {
+            let mut args: TractionArgs = parse(name, argv)?;
+            args.case = case_args(args.case);
+            py.detach(|| traction::report(&args).and_then(|r| json_value(&r)))
+        }
+        "spectrum" => {
+            let args: SpectrumArgs = parse(name, argv)?;
+            py.detach(|| spectrum::report(&args).and_then(|r| json_value(&r)))
+        }
+        other => {
+            return Err(CaseError::new_err(format!(
+                "command {other}: expected contact, power, thermal, traction or spectrum"
+            )));
+        }
+    };
+    output.map_err(to_py)
+}
+
+fn json_value<T: serde::Serialize>(value: &T) -> Result<String, Failure> {
+    finite::to_json(value).map_err(|e| Failure::Internal(e.to_string()))
 }
 
 /// `rolldyn quasistatic --json`.
@@ -437,7 +485,7 @@ fn _rolldyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(preset_text, m)?)?;
     m.add_function(wrap_pyfunction!(check, m)?)?;
     m.add_function(wrap_pyfunction!(frequencies, m)?)?;
-    m.add_function(wrap_pyfunction!(contact, m)?)?;
+    m.add_function(wrap_pyfunction!(command, m)?)?;
     m.add_function(wrap_pyfunction!(quasistatic_solve, m)?)?;
     m.add_function(wrap_pyfunction!(quasistatic_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;

@@ -272,3 +272,41 @@ def test_sweep_refuses_a_bad_point_before_running():
         rolldyn.sweep(None, {"speed": ["1000 rpm", "very fast"]}, duration="1 ms")
     with pytest.raises(rolldyn.CaseError, match="list of values"):
         rolldyn.sweep(None, {"speed": "1000 rpm"})
+
+
+# --- the other commands: power, thermal, traction, spectrum -----------------------
+
+SEED004 = REPO / "examples" / "seed004" / "case.toml"
+
+
+def test_power_and_thermal_equal_the_cli():
+    case = rolldyn.Case.load(SEED004)
+    assert rolldyn.power(case) == cli_json("power", str(SEED004), "--json")
+    expected = cli_json("thermal", str(SEED004), "--json", "--transient", "10 min",
+                        "--steps", "40")
+    assert rolldyn.thermal(case, transient="10 min", steps=40) == expected
+    with pytest.raises(rolldyn.CaseError, match="--transient"):
+        rolldyn.thermal(case, transient="-1 s")
+
+
+def test_traction_equals_the_cli(tmp_path):
+    law = '{ law = "fastsim", friction = 0.1 }'
+    case = rolldyn.Case.default().set("model.traction", law)
+    flags = dict(load="500 N", rolling_speed="10 m/s", creepages="1e-3,0,5")
+    got = rolldyn.traction(case, map=tmp_path / "py.csv", **flags)
+    expected = cli_json("traction", "--set", f"model.traction={law}", "--json",
+                        "--load", "500 N", "--rolling-speed", "10 m/s",
+                        "--creepages", "1e-3,0,5", "--map", str(tmp_path / "cli.csv"))
+    assert got == expected
+    assert (tmp_path / "py.csv").read_text() == (tmp_path / "cli.csv").read_text()
+    # Flag errors are the CLI's (clap) messages.
+    with pytest.raises(rolldyn.CaseError, match="--no-such-flag"):
+        rolldyn.traction(case, no_such_flag=1, **flags)
+
+
+def test_spectrum_equals_the_cli(tmp_path):
+    result = rolldyn.run(duration="5 ms", output=tmp_path)
+    expected = cli_json("spectrum", str(tmp_path), "--channel", "cage_speed_rpm", "--json")
+    assert result.spectrum("cage_speed_rpm") == expected
+    with pytest.raises(rolldyn.CaseError, match="no such channel"):
+        result.spectrum("nope")

@@ -44,11 +44,15 @@ __all__ = [
     "SweepResult",
     "contact",
     "frequencies",
+    "power",
     "presets",
     "quasistatic",
     "quasistatic_sweep",
     "run",
+    "spectrum",
     "sweep",
+    "thermal",
+    "traction",
     "__version__",
 ]
 
@@ -73,6 +77,8 @@ def _value_text(value: Any) -> str:
         return repr(value.item() if isinstance(value, np.generic) else value)
     if isinstance(value, str):
         return value
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
     raise CaseError(f"value {value!r}: expected a string with its unit, a number or a bool")
 
 
@@ -188,17 +194,60 @@ def frequencies(case: Optional[Case] = None, angle: Optional[str] = None) -> dic
     return json.loads(_rolldyn.frequencies(*_case(case)._args(), angle))
 
 
-def contact(load: str, case: Optional[Case] = None, *, angle: Optional[str] = None,
-            entrainment_speed: Optional[str] = None, radii: Optional[str] = None,
-            ball_on_flat: Optional[str] = None,
-            inlet_distance_ratio: Optional[float] = None) -> dict:
+def _flags(flags: Mapping[str, Any]) -> list:
+    """Keyword arguments as the CLI's flags: ``rolling_speed="10 m/s"`` is
+    ``--rolling-speed=10 m/s``; True is the bare flag; None and False are
+    left out."""
+    argv = []
+    for key, value in flags.items():
+        flag = "--" + key.replace("_", "-")
+        if value is None or value is False:
+            continue
+        argv.append(flag if value is True else f"{flag}={_value_text(value)}")
+    return argv
+
+
+def _command(name: str, case: Optional[Case], flags: Mapping[str, Any]) -> dict:
+    return json.loads(_rolldyn.command(name, *_case(case)._args(), _flags(flags)))
+
+
+def contact(load: str, case: Optional[Case] = None, **flags: Any) -> dict:
     """``rolldyn contact --json``: Hertz contact of one ball on the case's
-    raceways, or of an explicit contact (``radii="2.8 mm,20 mm"`` or
-    ``ball_on_flat="19.05 mm"``); with ``entrainment_speed`` the lubricant
-    film too."""
-    return json.loads(_rolldyn.contact(
-        *_case(case)._args(), _value_text(load), angle, entrainment_speed, radii,
-        ball_on_flat, inlet_distance_ratio))
+    raceways (``angle="20 deg"``), or of an explicit contact
+    (``radii="2.8 mm,20 mm"`` or ``ball_on_flat="19.05 mm"``); with
+    ``entrainment_speed="1 m/s"`` (and ``inlet_distance_ratio``) the
+    lubricant film too."""
+    return _command("contact", case, {"load": load, **flags})
+
+
+def power(case: Optional[Case] = None) -> dict:
+    """``rolldyn power --json``: friction power by component at the
+    Jones–Harris equilibrium (Harris's local method, seed 004)."""
+    return _command("power", case, {})
+
+
+def thermal(case: Optional[Case] = None, transient: Optional[str] = None,
+            steps: Optional[int] = None) -> dict:
+    """``rolldyn thermal --json``: bearing temperatures coupled to the power
+    loss; ``transient="30 min"`` adds the warm-up (``steps`` time steps)."""
+    return _command("thermal", case, {"transient": transient, "steps": steps})
+
+
+def traction(case: Optional[Case] = None, **flags: Any) -> dict:
+    """``rolldyn traction --json``: one contact's traction with the case's
+    traction model, flags as keywords, e.g. ``traction(case, load="500 N",
+    rolling_speed="10 m/s", creepages="1e-3,0,5", map="map.csv")``."""
+    return _command("traction", case, flags)
+
+
+def spectrum(directory: Union[str, os.PathLike], channel: str, **flags: Any) -> dict:
+    """``rolldyn spectrum DIR --json``: amplitude, Welch PSD or envelope
+    spectrum of a run's channel (``kind="envelope"``, ``band="2000:8000"``,
+    ...), with the bearing's lines and the nearest line of each peak;
+    writes ``spectrum_<channel>_<kind>.csv`` and ``.json`` into the run
+    directory."""
+    argv = [str(directory)] + _flags({"channel": channel, **flags})
+    return json.loads(_rolldyn.command("spectrum", DEFAULT_SOURCE, None, [], argv))
 
 
 def quasistatic(case: Optional[Case] = None, control: Optional[str] = None) -> dict:
@@ -286,6 +335,12 @@ class Result:
     def to_pandas(self):
         """The time series as a pandas DataFrame (needs pandas)."""
         return self.timeseries.to_pandas()
+
+    def spectrum(self, channel: str, **flags: Any) -> dict:
+        """:func:`spectrum` of this run (needs its directory: ``output=``)."""
+        if self.directory is None:
+            raise CaseError("spectrum: this run has no directory; run with output=DIR")
+        return spectrum(self.directory, channel, **flags)
 
     def report(self) -> str:
         """Writes ``report.html`` into the run directory; returns its path."""
