@@ -266,6 +266,22 @@ def test_sweep_on_a_dask_local_cluster_equals_the_serial_sweep(tmp_path):
     assert json.loads((tmp_path / "sweep.json").read_text())[0]["point"] == "point-0000"
     assert (tmp_path / "point-0002" / "summary.json").is_file()
 
+    # A Ctrl-C (here raised by the progress callback after the first point)
+    # keeps the finished points and marks the rest.
+    def interrupt(fraction):
+        raise KeyboardInterrupt
+
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        with pytest.raises(rolldyn.RunInterrupted) as e:
+            rolldyn.sweep(None, GRID, client, duration="5 ms", progress=interrupt)
+    partial = e.value.result
+    assert len(partial) == 4
+    statuses = [r["status"] for r in partial]
+    assert "completed" in statuses and "not_started" in statuses
+    assert set(statuses) <= {"completed", "not_started"}
+
 
 def test_sweep_refuses_a_bad_point_before_running():
     with pytest.raises(rolldyn.CaseError, match="operating.speed"):

@@ -503,6 +503,7 @@ def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any =
             _dask_point, names, [source] * len(points), [text] * len(points),
             [base + sets for sets in overrides], [out] * len(points),
             [force] * len(points), pure=False)
+        interrupted = False
         try:
             if progress is not None:
                 from distributed import as_completed
@@ -510,9 +511,13 @@ def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any =
                     progress(done / len(futures))
             rows = client.gather(futures)
         except KeyboardInterrupt:
-            client.cancel(futures)
-            raise
-        interrupted = False
+            # Keep the finished points; the others are cancelled (a task
+            # already running on a worker finishes there, unreported).
+            interrupted = True
+            rows = [f.result() if f.status == "finished"
+                    else {"point": name, "status": "not_started", "error": None}
+                    for f, name in zip(futures, names)]
+            client.cancel([f for f in futures if f.status != "finished"])
         if out is not None:
             _rolldyn.write_sweep_tables(out, json.dumps(rows))
     result = SweepResult([_with_inputs(r, keys, p) for r, p in zip(rows, points)],
