@@ -36,16 +36,22 @@
 //! with the larger spin-resisting moment, ∝ Q a E(m) (Harris & Kotzalas,
 //! *Advanced Concepts*, §3.4), controls. The criterion is re-evaluated after
 //! each converged solve until no ball changes (at most 5 passes); the
-//! intermediate band where neither raceway controls is not modelled.
+//! intermediate band where neither raceway controls is not modelled. A
+//! fallback reaches inner control from outer control by continuation in
+//! the control (`Setup::inner_share`; a numerical path, not a model).
 //!
 //! **Unloaded balls.** A ball with no contact has no defined position at
 //! zero speed; its force equations use the signed extension of the Hertz
 //! law (weight 1 at zero speed), which keeps it where its two gaps balance.
 //! At speed centrifugal force seats such a ball on the outer raceway and
-//! the extension keeps only a weight of [`SPEED_EXTENSION`] = 1e-9: the
-//! pull of an open inner contact on its ball is at most 1e-9 of the Hertz
-//! force at its gap (~3e-7 N for a 10 µm gap on a 7008C), far below the
-//! ball's centrifugal load. Forces on the ring always use the physical law.
+//! an open inner contact's extension keeps only a weight of
+//! [`SPEED_EXTENSION`] = 1e-9: its pull on the ball is at most 1e-9 of the
+//! Hertz force at its gap (~3e-7 N for a 10 µm gap on a 7008C), far below
+//! the ball's centrifugal load. An open outer contact keeps its full
+//! extension: at a solution at speed it is closed (the centrifugal force
+//! needs its reaction), and on the way there its pull holds the ball to
+//! its raceway, where the centrifugal term's stiffness m ω_m² alone is
+//! destabilising and sends Newton inwards. Forces on the ring always use the physical law.
 //!
 //! # Solution
 //! Newton's method with the analytic Jacobian, bordered block-diagonal (a
@@ -89,7 +95,8 @@ type Vector5 = SVector<f64, 5>;
 type Row3 = SMatrix<f64, 1, 3>;
 type Row5 = SMatrix<f64, 1, 5>;
 
-/// Weight of the signed Hertz extension in the ball equations at speed.
+/// Weight of the signed Hertz extension of an open inner contact in the
+/// ball equations at speed.
 pub const SPEED_EXTENSION: f64 = 1e-9;
 
 /// A solve whose line search stalls (round-off), or that runs out of
@@ -257,8 +264,32 @@ struct Assembly {
 struct Setup<'a> {
     conditions: &'a Conditions,
     options: &'a SolverOptions,
-    /// Weight of the signed Hertz extension in the ball equations.
+    /// Weight of the signed Hertz extension of an open inner contact in the
+    /// ball equations (an open outer contact always has weight 1).
     extension: f64,
+    /// Share t of the inner raceway in the control of an inner-controlled
+    /// ball: 1 is Jones–Harris inner control, 0 outer control; between,
+    /// the homotopy of [`QuasiStaticSolver::start_from_outer_control`]
+    /// (friction shares λ_i = 2t, λ_o = 2(1 − t), no-spin condition
+    /// t s_i − (1 − t) s_o).
+    inner_share: f64,
+}
+
+impl<'a> Setup<'a> {
+    /// A solve at `conditions`: extension weight 1 at rest and
+    /// [`SPEED_EXTENSION`] at speed, controls as stated.
+    fn new(conditions: &'a Conditions, options: &'a SolverOptions) -> Self {
+        Self {
+            conditions,
+            options,
+            extension: if conditions.inner_speed == 0.0 {
+                1.0
+            } else {
+                SPEED_EXTENSION
+            },
+            inner_share: 1.0,
+        }
+    }
 }
 
 impl QuasiStaticSolver {
@@ -353,14 +384,6 @@ impl QuasiStaticSolver {
         (q, inner, outer)
     }
 
-    /// (λ_i, λ_o) and the controlling ring of ball j.
-    fn control_of(control: RingKind) -> (f64, f64) {
-        match control {
-            RingKind::Outer => (0.0, 2.0),
-            RingKind::Inner => (2.0, 0.0),
-        }
-    }
-
     /// Places every ball in force equilibrium for a fixed ring (zero speed).
     fn equilibrate_balls(&self, state: &mut State, options: &SolverOptions) {
         let ring = RingDisplacement::from_array(state.ring.into());
@@ -424,11 +447,7 @@ impl QuasiStaticSolver {
                 inner_speed: 0.0,
                 control: RacewayControl::Outer,
             };
-            let setup = Setup {
-                conditions: &conditions,
-                options,
-                extension: 1.0,
-            };
+            let setup = Setup::new(&conditions, options);
             let mut f = |s: f64| {
                 let mut trial = State {
                     balls: balls0.clone(),
@@ -503,16 +522,7 @@ impl QuasiStaticSolver {
         conditions: &Conditions,
         options: &SolverOptions,
     ) -> Result<(State, Matrix5, usize, f64, Vec<RingKind>), QuasiStaticError> {
-        let extension = if conditions.inner_speed == 0.0 {
-            1.0
-        } else {
-            SPEED_EXTENSION
-        };
-        let setup = Setup {
-            conditions,
-            options,
-            extension,
-        };
+        let setup = Setup::new(conditions, options);
         let mut controls = self.controls_for(conditions.control, Some(&state), options);
         let (mut state, mut s, mut iterations, mut residual) =
             self.newton(state, &controls, setup)?;
@@ -589,11 +599,7 @@ impl QuasiStaticSolver {
             })
             .collect();
         let k = -schur;
-        let setup = Setup {
-            conditions,
-            options,
-            extension: if omega_i == 0.0 { 1.0 } else { SPEED_EXTENSION },
-        };
+        let setup = Setup::new(conditions, options);
         Equilibrium {
             inner_speed: omega_i,
             displacement: state.ring.into(),

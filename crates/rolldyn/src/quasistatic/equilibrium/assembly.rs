@@ -86,7 +86,16 @@ impl QuasiStaticSolver {
         let (q, inner, outer) = self.contacts(y, phi, ring);
         let largest_load = inner.load.max(outer.load);
         let (r, wm, wx, wr) = (y[1], y[2], y[3], y[4]);
-        let (lambda_i, lambda_o) = Self::control_of(control);
+        // Friction shares (λ_i, λ_o) of the gyroscopic moment and the
+        // weights (t_i, t_o) of the no-spin conditions s_i, s_o: at the
+        // controlling raceway; an inner-controlled ball's blended by
+        // `inner_share` (t s_i − (1 − t) s_o: the minus keeps the blend
+        // regular for a loaded ball, whose n_i ≈ −n_o).
+        let t = setup.inner_share;
+        let (lambda_i, lambda_o, spin_i_weight, spin_o_weight) = match control {
+            RingKind::Outer => (0.0, 2.0, 0.0, 1.0),
+            RingKind::Inner => (2.0 * t, 2.0 * (1.0 - t), t, t - 1.0),
+        };
 
         // Normal components and their gradients.
         let nx = |c: &RingContactEval| c.normal.dot(&ex);
@@ -107,7 +116,11 @@ impl QuasiStaticSolver {
         let (fi, fo) = (ci * tangent(&inner), co * tangent(&outer));
 
         let (force_i, dfi_dq, dfi_du) = weighted(&inner, setup.extension);
-        let (force_o, dfo_dq, _) = weighted(&outer, setup.extension);
+        // An open outer contact keeps its full extension: it pulls the ball
+        // to its raceway (at speed the centrifugal force closes it at the
+        // solution; a weak pull would leave the ball's radial stiffness
+        // negative, m ω_m², and Newton would drive it inwards).
+        let (force_o, dfo_dq, _) = weighted(&outer, 1.0);
 
         let mut res = Vector5::zeros();
         let force = e.transpose() * (force_i + force_o + fi + fo);
@@ -118,11 +131,8 @@ impl QuasiStaticSolver {
         };
         res[2] = rolling(&inner, omega_i);
         res[3] = rolling(&outer, 0.0);
-        let (cc, omega_c) = match control {
-            RingKind::Inner => (&inner, omega_i),
-            RingKind::Outer => (&outer, 0.0),
-        };
-        res[4] = (wx - omega_c) * nx(cc) + wr * nr(cc);
+        let spin = |c: &RingContactEval, omega: f64| (wx - omega) * nx(c) + wr * nr(c);
+        res[4] = spin_i_weight * spin(&inner, omega_i) + spin_o_weight * spin(&outer, 0.0);
 
         // A: ball rows × (x, r, ω_m, ω_x, ω_r).
         let mut a = Matrix5::zeros();
@@ -153,12 +163,15 @@ impl QuasiStaticSolver {
             a[(row, 3)] = half * nr(c);
             a[(row, 4)] = -half * nx(c);
         }
-        let spin_dq: Row3 = (wx - omega_c) * grad_q(cc, &ex) + wr * grad_q(cc, &er);
-        let g = spin_dq * e;
+        let spin_dq = |c: &RingContactEval, omega: f64| -> Row3 {
+            (wx - omega) * grad_q(c, &ex) + wr * grad_q(c, &er)
+        };
+        let g =
+            (spin_i_weight * spin_dq(&inner, omega_i) + spin_o_weight * spin_dq(&outer, 0.0)) * e;
         a[(4, 0)] = g[0];
         a[(4, 1)] = g[1];
-        a[(4, 3)] = nx(cc);
-        a[(4, 4)] = nr(cc);
+        a[(4, 3)] = spin_i_weight * nx(&inner) + spin_o_weight * nx(&outer);
+        a[(4, 4)] = spin_i_weight * nr(&inner) + spin_o_weight * nr(&outer);
 
         // B: ball rows × ring u (only the inner contact depends on u).
         let mut b = Matrix5::zeros();
@@ -167,10 +180,8 @@ impl QuasiStaticSolver {
         let roll_u: Row5 =
             half * (wx - omega_i) * grad_u(&inner, &er) - half * wr * grad_u(&inner, &ex);
         b.set_row(2, &roll_u);
-        if control == RingKind::Inner {
-            let spin_u: Row5 = (wx - omega_i) * grad_u(&inner, &ex) + wr * grad_u(&inner, &er);
-            b.set_row(4, &spin_u);
-        }
+        let spin_u: Row5 = (wx - omega_i) * grad_u(&inner, &ex) + wr * grad_u(&inner, &er);
+        b.set_row(4, &(spin_i_weight * spin_u));
 
         // Ring: force and moment of this ball on the inner ring
         // (physical normal law plus the inner friction force).
@@ -255,7 +266,9 @@ mod tests {
     use crate::operating::Loads;
 
     /// The assembled Jacobian blocks equal central differences of the
-    /// residual, at speed, with friction on the inner ring (inner control).
+    /// residual, at speed, with friction on the inner ring: balls under
+    /// inner and outer control, the inner control as stated (t = 1) and
+    /// blended (t = 0.4, the outer-control homotopy).
     #[test]
     fn jacobian_matches_finite_differences() {
         let g = BearingGeometry::new(&GeometrySpec {
@@ -284,11 +297,6 @@ mod tests {
             control: RacewayControl::Inner,
         };
         let options = SolverOptions::default();
-        let setup = Setup {
-            conditions: &conditions,
-            options: &options,
-            extension: 1e-6,
-        };
         let state = State {
             balls: (0..5)
                 .map(|j| {
@@ -303,54 +311,70 @@ mod tests {
                 .collect(),
             ring: Vector5::new(1.2e-5, 1e-6, -2e-6, 1e-4, -5e-5),
         };
-        let controls = vec![RingKind::Inner; 5];
-        let asm = solver.assemble(&state, &controls, setup);
-        let steps = [1e-9, 1e-9, 1e-3, 1e-3, 1e-3];
-        for j in 0..5 {
-            for (k, &step) in steps.iter().enumerate() {
+        let controls: Vec<RingKind> = (0..5)
+            .map(|j| {
+                if j % 2 == 0 {
+                    RingKind::Inner
+                } else {
+                    RingKind::Outer
+                }
+            })
+            .collect();
+        for inner_share in [1.0, 0.4] {
+            let setup = Setup {
+                conditions: &conditions,
+                options: &options,
+                extension: 1e-6,
+                inner_share,
+            };
+            let asm = solver.assemble(&state, &controls, setup);
+            let steps = [1e-9, 1e-9, 1e-3, 1e-3, 1e-3];
+            for j in 0..5 {
+                for (k, &step) in steps.iter().enumerate() {
+                    let (mut plus, mut minus) = (state.clone(), state.clone());
+                    plus.balls[j][k] += step;
+                    minus.balls[j][k] -= step;
+                    let (ap, am) = (
+                        solver.assemble(&plus, &controls, setup),
+                        solver.assemble(&minus, &controls, setup),
+                    );
+                    let fd_ball = (ap.ball[j] - am.ball[j]) / (2.0 * step);
+                    let fd_ring = (ap.ring - am.ring) / (2.0 * step);
+                    let (a, c) = (asm.a[j].column(k), asm.c[j].column(k));
+                    assert!(
+                        (fd_ball - a).norm() <= 1e-4 * fd_ball.norm().max(1e-3),
+                        "A[{j}] col {k}: {fd_ball:?} vs {a:?}"
+                    );
+                    assert!(
+                        (fd_ring - c).norm() <= 1e-4 * fd_ring.norm().max(1e-3),
+                        "C[{j}] col {k}: {fd_ring:?} vs {c:?}"
+                    );
+                }
+            }
+            let ring_steps = [1e-9, 1e-9, 1e-9, 1e-8, 1e-8];
+            for (k, &step) in ring_steps.iter().enumerate() {
                 let (mut plus, mut minus) = (state.clone(), state.clone());
-                plus.balls[j][k] += step;
-                minus.balls[j][k] -= step;
+                plus.ring[k] += step;
+                minus.ring[k] -= step;
                 let (ap, am) = (
                     solver.assemble(&plus, &controls, setup),
                     solver.assemble(&minus, &controls, setup),
                 );
-                let fd_ball = (ap.ball[j] - am.ball[j]) / (2.0 * step);
                 let fd_ring = (ap.ring - am.ring) / (2.0 * step);
-                let (a, c) = (asm.a[j].column(k), asm.c[j].column(k));
                 assert!(
-                    (fd_ball - a).norm() <= 1e-4 * fd_ball.norm().max(1e-3),
-                    "A[{j}] col {k}: {fd_ball:?} vs {a:?}"
+                    (fd_ring - asm.d.column(k)).norm() <= 1e-4 * fd_ring.norm().max(1e-3),
+                    "D col {k}: {fd_ring:?} vs {:?}",
+                    asm.d.column(k)
                 );
-                assert!(
-                    (fd_ring - c).norm() <= 1e-4 * fd_ring.norm().max(1e-3),
-                    "C[{j}] col {k}: {fd_ring:?} vs {c:?}"
-                );
-            }
-        }
-        let ring_steps = [1e-9, 1e-9, 1e-9, 1e-8, 1e-8];
-        for (k, &step) in ring_steps.iter().enumerate() {
-            let (mut plus, mut minus) = (state.clone(), state.clone());
-            plus.ring[k] += step;
-            minus.ring[k] -= step;
-            let (ap, am) = (
-                solver.assemble(&plus, &controls, setup),
-                solver.assemble(&minus, &controls, setup),
-            );
-            let fd_ring = (ap.ring - am.ring) / (2.0 * step);
-            assert!(
-                (fd_ring - asm.d.column(k)).norm() <= 1e-4 * fd_ring.norm().max(1e-3),
-                "D col {k}: {fd_ring:?} vs {:?}",
-                asm.d.column(k)
-            );
-            for j in 0..5 {
-                let fd_ball = (ap.ball[j] - am.ball[j]) / (2.0 * step);
-                let b = asm.b[j].column(k);
-                assert!(
-                    (fd_ball - b).norm() <= 1e-4 * fd_ball.norm().max(1e-3),
-                    "B[{j}] col {k}: {fd_ball:?} vs {:?}",
-                    b.transpose()
-                );
+                for j in 0..5 {
+                    let fd_ball = (ap.ball[j] - am.ball[j]) / (2.0 * step);
+                    let b = asm.b[j].column(k);
+                    assert!(
+                        (fd_ball - b).norm() <= 1e-4 * fd_ball.norm().max(1e-3),
+                        "B[{j}] col {k}: {fd_ball:?} vs {:?}",
+                        b.transpose()
+                    );
+                }
             }
         }
     }

@@ -68,7 +68,9 @@ impl QuasiStaticSolver {
             let held = held_at(x);
             match previous {
                 Some(p) => self.solve_from(p, conditions, &held),
-                None => self.solve_free(conditions, &held),
+                None => self
+                    .solve_free(conditions, &held)
+                    .or_else(|e| self.start_from_outer_control(conditions, &held).ok_or(e)),
             }
             .map(|eq| {
                 iterations += eq.iterations;
@@ -89,8 +91,8 @@ impl QuasiStaticSolver {
                 let held = held_at(x);
                 let controls = rest.balls.iter().map(|b| b.control).collect();
                 let from = (Self::state_of(rest), Matrix5::zeros(), 0, 0.0, controls);
-                let cont = self.continue_in_speed(from, conditions, &held);
-                let (state, schur, it, residual, controls) = cont?;
+                let (state, schur, it, residual, controls) =
+                    self.continue_in_speed_via_outer_control(from, conditions, &held)?;
                 let eq = self.solution(&state, &schur, it, residual, &controls, conditions, &held);
                 first_iterations = it;
                 let r = eq.reaction[0];

@@ -7,13 +7,12 @@
 //! from the raceway control).
 
 use super::{
-    Conditions, Matrix5, QuasiStaticError, QuasiStaticSolver, Row3, SPEED_EXTENSION, Setup, State,
-    Vector5,
+    Conditions, Matrix5, QuasiStaticError, QuasiStaticSolver, Row3, Setup, State, Vector5,
 };
 use crate::geometry::RingKind;
 use crate::operating::Loads;
-use crate::quasistatic::SolverOptions;
 use crate::quasistatic::ring_contact::{RingContactEval, RingDisplacement};
+use crate::quasistatic::{RacewayControl, SolverOptions};
 use nalgebra::{Matrix3, Vector3};
 
 /// A converged point of a path: state, Schur complement, iterations,
@@ -123,14 +122,11 @@ impl QuasiStaticSolver {
                 let seated = self.seat_free_balls(&state, next, options);
                 self.with_kinematic_speeds(&seated, &controls, next, options)
             } else {
-                let setup = Setup {
-                    conditions: &Conditions {
-                        inner_speed: current,
-                        ..*conditions
-                    },
-                    options,
-                    extension: SPEED_EXTENSION,
+                let at_current = Conditions {
+                    inner_speed: current,
+                    ..*conditions
                 };
+                let setup = Setup::new(&at_current, options);
                 match self.speed_tangent(&state, &controls, setup) {
                     Some(t) => State {
                         balls: state
@@ -199,6 +195,92 @@ impl QuasiStaticSolver {
         self.blend_loads(at_speed, &axial, conditions, options)
     }
 
+    /// [`Self::continue_in_speed`]; where that fails under inner or Harris
+    /// control, the continuation in speed under outer control, then in
+    /// the control ([`Self::continue_in_control`]).
+    pub(super) fn continue_in_speed_via_outer_control(
+        &self,
+        from: Path,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Path, QuasiStaticError> {
+        let direct = self.continue_in_speed(from.clone(), conditions, options);
+        let Err(failure) = direct else {
+            return direct;
+        };
+        if conditions.control == RacewayControl::Outer {
+            return Err(failure);
+        }
+        let outer = Conditions {
+            control: RacewayControl::Outer,
+            ..*conditions
+        };
+        let (state, ..) = self
+            .continue_in_speed(
+                (
+                    from.0,
+                    from.1,
+                    from.2,
+                    from.3,
+                    vec![RingKind::Outer; from.4.len()],
+                ),
+                &outer,
+                options,
+            )
+            .map_err(|_| failure.clone())?;
+        self.continue_in_control(state, conditions, options)
+            .map_err(|_| failure)
+    }
+
+    /// Continuation in the raceway control from `from`, a solution under
+    /// outer control at the conditions' speed and loads, to the
+    /// conditions' control: first in one step; where that fails, along the
+    /// share t of the inner raceway in the inner-controlled balls' control
+    /// ([`Setup::inner_share`], 0 → 1), the step halved on failure and
+    /// doubled after easy solves. The balls' controls are the conditions'
+    /// at `from`; under Harris control they are re-evaluated at t = 1.
+    pub(super) fn continue_in_control(
+        &self,
+        from: State,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Path, QuasiStaticError> {
+        let direct = self.solve_at(from.clone(), conditions, options);
+        let Err(mut failure) = direct else {
+            return direct;
+        };
+        let controls = self.controls_for(conditions.control, Some(&from), options);
+        let (mut state, mut iterations) = (from, 0);
+        let (mut share, mut step) = (0.0f64, 0.5f64);
+        while step >= 1e-3 {
+            let next = (share + step).min(1.0);
+            if next == 1.0 {
+                match self.solve_at(state.clone(), conditions, options) {
+                    Ok((st, s, it, res, ctl)) => return Ok((st, s, iterations + it, res, ctl)),
+                    Err(e) => failure = e,
+                }
+            } else {
+                let setup = Setup {
+                    inner_share: next,
+                    ..Setup::new(conditions, options)
+                };
+                match self.newton(state.clone(), &controls, setup) {
+                    Ok((st, _, it, _)) => {
+                        (state, share) = (st, next);
+                        iterations += it;
+                        if it <= 8 {
+                            step *= 2.0;
+                        }
+                        continue;
+                    }
+                    Err(e) => failure = e,
+                }
+            }
+            step *= 0.5;
+        }
+        Err(failure)
+    }
+
     /// Tangent of the solution path with respect to the inner-ring speed,
     /// dy/dω_i = −J⁻¹ ∂R/∂ω_i, from the same bordered solve as a Newton
     /// step (Euler predictor of the speed continuation).
@@ -218,7 +300,7 @@ impl QuasiStaticSolver {
             let mut dr = Vector5::zeros();
             dr[2] = -(y[1] + half * inner.normal.dot(&er));
             if controls[j] == RingKind::Inner {
-                dr[4] = -inner.normal.dot(&ex);
+                dr[4] = -setup.inner_share * inner.normal.dot(&ex);
             }
             asm.ball[j] = dr;
         }

@@ -50,8 +50,9 @@ impl QuasiStaticSolver {
 
     /// Inner or Harris control where the continuation failed: from the
     /// outer-control solution at the same speed and loads (the ring
-    /// displacement and ball positions differ little between controls).
-    fn start_from_outer_control(
+    /// displacement and ball positions differ little between controls),
+    /// by continuation in the control.
+    pub(super) fn start_from_outer_control(
         &self,
         conditions: &Conditions,
         options: &SolverOptions,
@@ -65,7 +66,7 @@ impl QuasiStaticSolver {
         };
         let start = self.solve_free(&outer, options).ok()?;
         let (state, s, it, res, controls) = self
-            .solve_at(Self::state_of(&start), conditions, options)
+            .continue_in_control(Self::state_of(&start), conditions, options)
             .ok()?;
         Some(self.solution(
             &state,
