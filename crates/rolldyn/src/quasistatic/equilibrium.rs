@@ -87,6 +87,7 @@ mod axial_control;
 mod constraints;
 mod continuation;
 mod newton;
+mod race_drive;
 mod rebuild;
 mod solve;
 
@@ -145,6 +146,12 @@ pub struct SolverOptions {
     /// Ring displacements held at a value (x, y, z \[m\], θ_y, θ_z \[rad\]):
     /// a fixed tilt or misalignment; None: free, its load given.
     pub prescribed_displacement: [Option<f64>; 5],
+    /// Strength σ ∈ [0, 1] of the race drive (`equilibrium::race_drive`)
+    /// for balls whose inner contact is open: 1 (default) rolldyn's
+    /// kinematics for free balls; 0 Jones–Harris rolling at the nearest
+    /// point of the inner groove. Values between are the solver's own
+    /// continuation path.
+    pub race_drive: f64,
 }
 
 impl Default for SolverOptions {
@@ -154,6 +161,7 @@ impl Default for SolverOptions {
             relative_tolerance: 1e-11,
             first_ball_azimuth: 0.0,
             prescribed_displacement: [None; 5],
+            race_drive: 1.0,
         }
     }
 }
@@ -251,6 +259,8 @@ struct State {
 /// Residuals and Jacobian blocks.
 struct Assembly {
     ball: Vec<Vector5>,
+    /// Per ball ∂residual/∂ω_i.
+    speed_derivative: Vec<Vector5>,
     ring: Vector5,
     a: Vec<Matrix5>,
     b: Vec<Matrix5>,

@@ -4,6 +4,7 @@
 //! ball's load on the inner ring with its derivatives; summed over the
 //! balls into the bordered system Newton solves.
 
+use super::race_drive::{kinematic_inner, race_drive};
 use super::{Assembly, Matrix5, QuasiStaticSolver, Row3, Row5, Setup, State, Vector5};
 use crate::geometry::RingKind;
 use crate::quasistatic::ring_contact::{Matrix3x5, RingContactEval, RingDisplacement};
@@ -20,6 +21,9 @@ pub(super) struct BallTerms {
     pub c: Matrix5,
     pub d: Matrix5,
     pub ring: Vector5,
+    /// ∂residual/∂ω_i at fixed unknowns (the rolling equation at the inner
+    /// contact and an inner-controlled ball's spin condition).
+    pub speed_derivative: Vector5,
     /// Larger of the ball's two contact loads \[N\].
     pub largest_load: f64,
 }
@@ -47,6 +51,7 @@ impl QuasiStaticSolver {
         let ring = RingDisplacement::from_array(state.ring.into());
         let mut asm = Assembly {
             ball: Vec::with_capacity(z),
+            speed_derivative: Vec::with_capacity(z),
             ring: Self::applied(&setup.conditions.loads),
             a: Vec::with_capacity(z),
             b: Vec::with_capacity(z),
@@ -57,6 +62,7 @@ impl QuasiStaticSolver {
         for (j, y) in state.balls.iter().enumerate() {
             let t = self.ball_terms(j, y, &ring, controls[j], setup);
             asm.ball.push(t.residual);
+            asm.speed_derivative.push(t.speed_derivative);
             asm.a.push(t.a);
             asm.b.push(t.b);
             asm.c.push(t.c);
@@ -86,15 +92,29 @@ impl QuasiStaticSolver {
         let (q, inner, outer) = self.contacts(y, phi, ring);
         let largest_load = inner.load.max(outer.load);
         let (r, wm, wx, wr) = (y[1], y[2], y[3], y[4]);
+        // How far the inner raceway drives the ball (`race_drive`): 1 while
+        // its contact is closed, → 0 as it opens.
+        let drive = race_drive(&inner, self.drive_reference(), setup.options.race_drive);
+        let inner_k = kinematic_inner(&inner, &outer, &drive);
         // Friction shares (λ_i, λ_o) of the gyroscopic moment and the
-        // weights (t_i, t_o) of the no-spin conditions s_i, s_o: at the
-        // controlling raceway; an inner-controlled ball's blended by
-        // `inner_share` (t s_i − (1 − t) s_o: the minus keeps the blend
+        // weights of the no-spin conditions s_i, s_o: at the controlling
+        // raceway. An inner-controlled ball's share s = t w: faded by the
+        // drive weight w, and blended by `inner_share` t on the way from
+        // outer control (s s_i − (1 − s) s_o: the minus keeps the blend
         // regular for a loaded ball, whose n_i ≈ −n_o).
         let t = setup.inner_share;
-        let (lambda_i, lambda_o, spin_i_weight, spin_o_weight) = match control {
-            RingKind::Outer => (0.0, 2.0, 0.0, 1.0),
-            RingKind::Inner => (2.0 * t, 2.0 * (1.0 - t), t, t - 1.0),
+        let inner_controlled = control == RingKind::Inner;
+        let share = t * drive.weight;
+        let (lambda_i, lambda_o, spin_i_weight, spin_o_weight) = if inner_controlled {
+            (2.0 * share, 2.0 * (1.0 - t), share, share - 1.0)
+        } else {
+            (0.0, 2.0, 0.0, 1.0)
+        };
+        // Gradients of the inner-control share s = t w.
+        let (dshare_dq, dshare_du) = if inner_controlled {
+            (t * drive.dq, t * drive.du)
+        } else {
+            (Row3::zeros(), Row5::zeros())
         };
 
         // Normal components and their gradients.
@@ -114,6 +134,9 @@ impl QuasiStaticSolver {
         let dtangent_du = |c: &RingContactEval| er * grad_u(c, &ex) - ex * grad_u(c, &er);
         let (ci, co) = (lambda_i * mg / d, lambda_o * mg / d);
         let (fi, fo) = (ci * tangent(&inner), co * tangent(&outer));
+        // ∂f_i/∂(q, u), with the share's own dependence (λ_i = 2s).
+        let dfric_i_dq = ci * dtangent_dq(&inner) + tangent(&inner) * (2.0 * mg / d * dshare_dq);
+        let dfric_i_du = ci * dtangent_du(&inner) + tangent(&inner) * (2.0 * mg / d * dshare_du);
 
         let (force_i, dfi_dq, dfi_du) = weighted(&inner, setup.extension);
         // An open outer contact keeps its full extension: it pulls the ball
@@ -129,14 +152,15 @@ impl QuasiStaticSolver {
         let rolling = |c: &RingContactEval, omega: f64| {
             wm * r + half * (wx * nr(c) - wr * nx(c)) - omega * (r + half * nr(c))
         };
-        res[2] = rolling(&inner, omega_i);
+        res[2] = rolling(&inner_k, omega_i);
         res[3] = rolling(&outer, 0.0);
         let spin = |c: &RingContactEval, omega: f64| (wx - omega) * nx(c) + wr * nr(c);
-        res[4] = spin_i_weight * spin(&inner, omega_i) + spin_o_weight * spin(&outer, 0.0);
+        let (spin_i, spin_o) = (spin(&inner, omega_i), spin(&outer, 0.0));
+        res[4] = spin_i_weight * spin_i + spin_o_weight * spin_o;
 
         // A: ball rows × (x, r, ω_m, ω_x, ω_r).
         let mut a = Matrix5::zeros();
-        let df_dq = dfi_dq + dfo_dq + ci * dtangent_dq(&inner) + co * dtangent_dq(&outer);
+        let df_dq = dfi_dq + dfo_dq + dfric_i_dq + co * dtangent_dq(&outer);
         let f_pos = e.transpose() * df_dq * e;
         let dforce_dwm = e.transpose()
             * (lambda_i * inertia * wr / d * tangent(&inner)
@@ -155,7 +179,7 @@ impl QuasiStaticSolver {
         let rolling_dq = |c: &RingContactEval, omega: f64| -> Row3 {
             half * (wx - omega) * grad_q(c, &er) - half * wr * grad_q(c, &ex)
         };
-        for (row, c, omega) in [(2, &inner, omega_i), (3, &outer, 0.0)] {
+        for (row, c, omega) in [(2, &inner_k, omega_i), (3, &outer, 0.0)] {
             let g = rolling_dq(c, omega) * e;
             a[(row, 0)] = g[0];
             a[(row, 1)] = g[1] + wm - omega;
@@ -166,8 +190,10 @@ impl QuasiStaticSolver {
         let spin_dq = |c: &RingContactEval, omega: f64| -> Row3 {
             (wx - omega) * grad_q(c, &ex) + wr * grad_q(c, &er)
         };
-        let g =
-            (spin_i_weight * spin_dq(&inner, omega_i) + spin_o_weight * spin_dq(&outer, 0.0)) * e;
+        let g = (spin_i_weight * spin_dq(&inner, omega_i)
+            + spin_o_weight * spin_dq(&outer, 0.0)
+            + (spin_i + spin_o) * dshare_dq)
+            * e;
         a[(4, 0)] = g[0];
         a[(4, 1)] = g[1];
         a[(4, 3)] = spin_i_weight * nx(&inner) + spin_o_weight * nx(&outer);
@@ -175,13 +201,13 @@ impl QuasiStaticSolver {
 
         // B: ball rows × ring u (only the inner contact depends on u).
         let mut b = Matrix5::zeros();
-        let fu = e.transpose() * (dfi_du + ci * dtangent_du(&inner));
+        let fu = e.transpose() * (dfi_du + dfric_i_du);
         b.fixed_view_mut::<2, 5>(0, 0).copy_from(&fu);
         let roll_u: Row5 =
-            half * (wx - omega_i) * grad_u(&inner, &er) - half * wr * grad_u(&inner, &ex);
+            half * (wx - omega_i) * grad_u(&inner_k, &er) - half * wr * grad_u(&inner_k, &ex);
         b.set_row(2, &roll_u);
         let spin_u: Row5 = (wx - omega_i) * grad_u(&inner, &ex) + wr * grad_u(&inner, &er);
-        b.set_row(4, &(spin_i_weight * spin_u));
+        b.set_row(4, &(spin_i_weight * spin_u + (spin_i + spin_o) * dshare_du));
 
         // Ring: force and moment of this ball on the inner ring
         // (physical normal law plus the inner friction force).
@@ -191,8 +217,8 @@ impl QuasiStaticSolver {
             (Vector3::zeros(), Matrix3::zeros(), Matrix3x5::zeros())
         };
         let f_ring = -(fn_phys + fi);
-        let df_ring_dq = -(dfn_dq + ci * dtangent_dq(&inner));
-        let df_ring_du = -(dfn_du + ci * dtangent_du(&inner));
+        let df_ring_dq = -(dfn_dq + dfric_i_dq);
+        let df_ring_du = -(dfn_du + dfric_i_du);
         let df_ring_dwm = -(lambda_i * inertia * wr / d) * tangent(&inner);
         let df_ring_dwr = -(lambda_i * inertia * wm / d) * tangent(&inner);
         let arm = q - ring.translation;
@@ -202,11 +228,9 @@ impl QuasiStaticSolver {
         let fi_x = cross_matrix(&fi);
         // Friction acts at P = q + (D/2) n: extra couple −(D/2) n × f_i.
         let moment = arm.cross(&f_ring) - half * inner.normal.cross(&fi);
-        let dm_dq = arm_x * df_ring_dq
-            - f_x
-            - half * (n_x * (ci * dtangent_dq(&inner)) - fi_x * inner.dnormal_dball);
-        let mut dm_du = arm_x * df_ring_du
-            - half * (n_x * (ci * dtangent_du(&inner)) - fi_x * inner.dnormal_dring);
+        let dm_dq =
+            arm_x * df_ring_dq - f_x - half * (n_x * dfric_i_dq - fi_x * inner.dnormal_dball);
+        let mut dm_du = arm_x * df_ring_du - half * (n_x * dfric_i_du - fi_x * inner.dnormal_dring);
         for k in 0..3 {
             let col = dm_du.column(k) + f_x.column(k);
             dm_du.set_column(k, &col);
@@ -244,7 +268,11 @@ impl QuasiStaticSolver {
             dd[(3, col)] = dm_du[(1, col)];
             dd[(4, col)] = dm_du[(2, col)];
         }
+        let mut speed_derivative = Vector5::zeros();
+        speed_derivative[2] = -(r + half * nr(&inner_k));
+        speed_derivative[4] = -spin_i_weight * nx(&inner);
         BallTerms {
+            speed_derivative,
             residual: res,
             a,
             b,
@@ -264,6 +292,8 @@ mod tests {
     use crate::geometry::{BearingGeometry, Clearance, GeometrySpec};
     use crate::material::Material;
     use crate::operating::Loads;
+    use crate::quasistatic::equilibrium::race_drive::GAP_FRACTION;
+    use crate::quasistatic::ring_contact::RingDisplacement;
 
     /// The assembled Jacobian blocks equal central differences of the
     /// residual, at speed, with friction on the inner ring: balls under
@@ -297,7 +327,7 @@ mod tests {
             control: RacewayControl::Inner,
         };
         let options = SolverOptions::default();
-        let state = State {
+        let mut state = State {
             balls: (0..5)
                 .map(|j| {
                     Vector5::new(
@@ -311,6 +341,28 @@ mod tests {
                 .collect(),
             ring: Vector5::new(1.2e-5, 1e-6, -2e-6, 1e-4, -5e-5),
         };
+        // Balls 3 (outer control) and 4 (inner control) in the race
+        // drive's band, their inner gap at g_ref (w = 1/2); ball 2's inner
+        // contact open wide (w ≈ 0.008).
+        let ring = RingDisplacement::from_array(state.ring.into());
+        let g_ref = GAP_FRACTION * g.ball_diameter;
+        for (j, gap) in [(2, 5.0 * g_ref), (3, g_ref), (4, g_ref)] {
+            let phi = solver.azimuth(j, &options);
+            let (mut outside, mut inside) = (26.9e-3, 27.1e-3);
+            for _ in 0..200 {
+                let mut y = state.balls[j];
+                y[1] = 0.5 * (outside + inside);
+                if solver.contacts(&y, phi, &ring).1.penetration > -gap {
+                    outside = y[1];
+                } else {
+                    inside = y[1];
+                }
+            }
+            state.balls[j][1] = 0.5 * (outside + inside);
+            let (_, inner, outer) = solver.contacts(&state.balls[j], phi, &ring);
+            assert!((inner.penetration + gap).abs() < 1e-3 * gap, "ball {j}");
+            assert!(outer.in_contact(), "ball {j}: outer contact open");
+        }
         let controls: Vec<RingKind> = (0..5)
             .map(|j| {
                 if j % 2 == 0 {
@@ -320,6 +372,23 @@ mod tests {
                 }
             })
             .collect();
+        // Fourth-order central differences of the residual and the ring
+        // load (the drive band is steep).
+        let derivative = |perturbed: &dyn Fn(f64) -> Assembly, h: f64| {
+            let (p1, m1, p2, m2) = (
+                perturbed(h),
+                perturbed(-h),
+                perturbed(2.0 * h),
+                perturbed(-2.0 * h),
+            );
+            let combine = |f: &dyn Fn(&Assembly) -> Vector5| {
+                (8.0 * (f(&p1) - f(&m1)) - (f(&p2) - f(&m2))) / (12.0 * h)
+            };
+            let balls: Vec<Vector5> = (0..5).map(|j| combine(&|a: &Assembly| a.ball[j])).collect();
+            (balls, combine(&|a: &Assembly| a.ring))
+        };
+        let close =
+            |fd: &Vector5, exact: Vector5| (fd - exact).norm() <= 1e-4 * fd.norm().max(1e-3);
         for inner_share in [1.0, 0.4] {
             let setup = Setup {
                 conditions: &conditions,
@@ -331,50 +400,72 @@ mod tests {
             let steps = [1e-9, 1e-9, 1e-3, 1e-3, 1e-3];
             for j in 0..5 {
                 for (k, &step) in steps.iter().enumerate() {
-                    let (mut plus, mut minus) = (state.clone(), state.clone());
-                    plus.balls[j][k] += step;
-                    minus.balls[j][k] -= step;
-                    let (ap, am) = (
-                        solver.assemble(&plus, &controls, setup),
-                        solver.assemble(&minus, &controls, setup),
+                    let (fd_balls, fd_ring) = derivative(
+                        &|h| {
+                            let mut moved = state.clone();
+                            moved.balls[j][k] += h;
+                            solver.assemble(&moved, &controls, setup)
+                        },
+                        step,
                     );
-                    let fd_ball = (ap.ball[j] - am.ball[j]) / (2.0 * step);
-                    let fd_ring = (ap.ring - am.ring) / (2.0 * step);
-                    let (a, c) = (asm.a[j].column(k), asm.c[j].column(k));
-                    assert!(
-                        (fd_ball - a).norm() <= 1e-4 * fd_ball.norm().max(1e-3),
-                        "A[{j}] col {k}: {fd_ball:?} vs {a:?}"
+                    let (a, c) = (
+                        asm.a[j].column(k).into_owned(),
+                        asm.c[j].column(k).into_owned(),
                     );
                     assert!(
-                        (fd_ring - c).norm() <= 1e-4 * fd_ring.norm().max(1e-3),
-                        "C[{j}] col {k}: {fd_ring:?} vs {c:?}"
+                        close(&fd_balls[j], a),
+                        "A[{j}] col {k} (t {inner_share}): {:?} vs {a:?}",
+                        fd_balls[j]
+                    );
+                    assert!(
+                        close(&fd_ring, c),
+                        "C[{j}] col {k} (t {inner_share}): {fd_ring:?} vs {c:?}"
                     );
                 }
             }
             let ring_steps = [1e-9, 1e-9, 1e-9, 1e-8, 1e-8];
             for (k, &step) in ring_steps.iter().enumerate() {
-                let (mut plus, mut minus) = (state.clone(), state.clone());
-                plus.ring[k] += step;
-                minus.ring[k] -= step;
-                let (ap, am) = (
-                    solver.assemble(&plus, &controls, setup),
-                    solver.assemble(&minus, &controls, setup),
+                let (fd_balls, fd_ring) = derivative(
+                    &|h| {
+                        let mut moved = state.clone();
+                        moved.ring[k] += h;
+                        solver.assemble(&moved, &controls, setup)
+                    },
+                    step,
                 );
-                let fd_ring = (ap.ring - am.ring) / (2.0 * step);
+                let d = asm.d.column(k).into_owned();
                 assert!(
-                    (fd_ring - asm.d.column(k)).norm() <= 1e-4 * fd_ring.norm().max(1e-3),
-                    "D col {k}: {fd_ring:?} vs {:?}",
-                    asm.d.column(k)
+                    close(&fd_ring, d),
+                    "D col {k} (t {inner_share}): {fd_ring:?} vs {d:?}"
                 );
-                for j in 0..5 {
-                    let fd_ball = (ap.ball[j] - am.ball[j]) / (2.0 * step);
-                    let b = asm.b[j].column(k);
+                for (j, fd_ball) in fd_balls.iter().enumerate() {
+                    let b = asm.b[j].column(k).into_owned();
                     assert!(
-                        (fd_ball - b).norm() <= 1e-4 * fd_ball.norm().max(1e-3),
-                        "B[{j}] col {k}: {fd_ball:?} vs {:?}",
-                        b.transpose()
+                        close(fd_ball, b),
+                        "B[{j}] col {k} (t {inner_share}): {fd_ball:?} vs {b:?}"
                     );
                 }
+            }
+            // ∂residual/∂ω_i: the residual is linear in ω_i.
+            let faster = Conditions {
+                inner_speed: conditions.inner_speed + 1.0,
+                ..conditions
+            };
+            let moved = solver.assemble(
+                &state,
+                &controls,
+                Setup {
+                    conditions: &faster,
+                    ..setup
+                },
+            );
+            for j in 0..5 {
+                let fd = moved.ball[j] - asm.ball[j];
+                assert!(
+                    close(&fd, asm.speed_derivative[j]),
+                    "speed derivative of ball {j}: {fd:?} vs {:?}",
+                    asm.speed_derivative[j]
+                );
             }
         }
     }

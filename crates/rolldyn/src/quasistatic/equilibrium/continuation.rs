@@ -2,18 +2,51 @@
 //! the static solution (Euler predictor on the solution's speed tangent,
 //! step doubled after easy solves and halved on failure), in load from an
 //! equivalent pure axial load, and the fallback that takes the axial load
-//! to speed first and then blends to the target loads at speed; the first
-//! guesses at speed (free balls seated by the centrifugal force, speeds
-//! from the raceway control).
+//! to speed first and then blends to the target loads at speed; in the
+//! raceway control (from outer control) and in the race drive's strength
+//! (from Jones–Harris kinematics); the first guesses at speed (free balls
+//! seated by the centrifugal force, speeds from the kinematic equations).
 
-use super::{
-    Conditions, Matrix5, QuasiStaticError, QuasiStaticSolver, Row3, Setup, State, Vector5,
-};
+use super::{Conditions, Matrix5, QuasiStaticError, QuasiStaticSolver, Setup, State, Vector5};
 use crate::geometry::RingKind;
 use crate::operating::Loads;
-use crate::quasistatic::ring_contact::{RingContactEval, RingDisplacement};
+use crate::quasistatic::ring_contact::RingDisplacement;
 use crate::quasistatic::{RacewayControl, SolverOptions};
-use nalgebra::{Matrix3, Vector3};
+
+/// Continuation in a homotopy parameter p from 0, where `from` is a
+/// solution, to 1: `solve(p, guess)` solves at p. First p = 1 in one step;
+/// where that fails, steps of p halved on failure and doubled after easy
+/// solves (≤ 8 iterations), down to 1e-3.
+fn continue_in_parameter(
+    from: State,
+    mut solve: impl FnMut(f64, State) -> Result<Path, QuasiStaticError>,
+) -> Result<Path, QuasiStaticError> {
+    let mut failure = match solve(1.0, from.clone()) {
+        Ok(path) => return Ok(path),
+        Err(e) => e,
+    };
+    let (mut state, mut iterations) = (from, 0);
+    let (mut p, mut step) = (0.0f64, 0.5f64);
+    while step >= 1e-3 {
+        let next = (p + step).min(1.0);
+        match solve(next, state.clone()) {
+            Ok((st, s, it, res, controls)) => {
+                iterations += it;
+                if next == 1.0 {
+                    return Ok((st, s, iterations, res, controls));
+                }
+                (state, p) = (st, next);
+                if it <= 8 {
+                    step *= 2.0;
+                }
+                continue;
+            }
+            Err(e) => failure = e,
+        }
+        step *= 0.5;
+    }
+    Err(failure)
+}
 
 /// A converged point of a path: state, Schur complement, iterations,
 /// residual, raceway controls.
@@ -120,7 +153,7 @@ impl QuasiStaticSolver {
             };
             let guess = if current == 0.0 {
                 let seated = self.seat_free_balls(&state, next, options);
-                self.with_kinematic_speeds(&seated, &controls, next, options)
+                self.with_kinematic_speeds(&seated, &controls, &trial_conditions, options)
             } else {
                 let at_current = Conditions {
                     inner_speed: current,
@@ -137,7 +170,9 @@ impl QuasiStaticSolver {
                             .collect(),
                         ring: state.ring + (next - current) * t.ring,
                     },
-                    None => self.with_kinematic_speeds(&state, &controls, next, options),
+                    None => {
+                        self.with_kinematic_speeds(&state, &controls, &trial_conditions, options)
+                    }
                 }
             };
             match self.solve_at(guess, &trial_conditions, options) {
@@ -234,51 +269,46 @@ impl QuasiStaticSolver {
 
     /// Continuation in the raceway control from `from`, a solution under
     /// outer control at the conditions' speed and loads, to the
-    /// conditions' control: first in one step; where that fails, along the
-    /// share t of the inner raceway in the inner-controlled balls' control
-    /// ([`Setup::inner_share`], 0 → 1), the step halved on failure and
-    /// doubled after easy solves. The balls' controls are the conditions'
-    /// at `from`; under Harris control they are re-evaluated at t = 1.
+    /// conditions' control, along the share t of the inner raceway in the
+    /// inner-controlled balls' control ([`Setup::inner_share`], 0 → 1).
+    /// The balls' controls are the conditions' at `from`; under Harris
+    /// control they are re-evaluated at t = 1.
     pub(super) fn continue_in_control(
         &self,
         from: State,
         conditions: &Conditions,
         options: &SolverOptions,
     ) -> Result<Path, QuasiStaticError> {
-        let direct = self.solve_at(from.clone(), conditions, options);
-        let Err(mut failure) = direct else {
-            return direct;
-        };
         let controls = self.controls_for(conditions.control, Some(&from), options);
-        let (mut state, mut iterations) = (from, 0);
-        let (mut share, mut step) = (0.0f64, 0.5f64);
-        while step >= 1e-3 {
-            let next = (share + step).min(1.0);
-            if next == 1.0 {
-                match self.solve_at(state.clone(), conditions, options) {
-                    Ok((st, s, it, res, ctl)) => return Ok((st, s, iterations + it, res, ctl)),
-                    Err(e) => failure = e,
-                }
-            } else {
-                let setup = Setup {
-                    inner_share: next,
-                    ..Setup::new(conditions, options)
-                };
-                match self.newton(state.clone(), &controls, setup) {
-                    Ok((st, _, it, _)) => {
-                        (state, share) = (st, next);
-                        iterations += it;
-                        if it <= 8 {
-                            step *= 2.0;
-                        }
-                        continue;
-                    }
-                    Err(e) => failure = e,
-                }
+        continue_in_parameter(from, |share, state| {
+            if share == 1.0 {
+                return self.solve_at(state, conditions, options);
             }
-            step *= 0.5;
-        }
-        Err(failure)
+            let setup = Setup {
+                inner_share: share,
+                ..Setup::new(conditions, options)
+            };
+            self.newton(state, &controls, setup)
+                .map(|(st, s, it, res)| (st, s, it, res, controls.clone()))
+        })
+    }
+
+    /// Continuation in the race drive's strength σ
+    /// ([`SolverOptions::race_drive`]) from `from`, a solution with σ = 0,
+    /// to the options' σ.
+    pub(super) fn continue_in_drive(
+        &self,
+        from: State,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Path, QuasiStaticError> {
+        continue_in_parameter(from, |fraction, state| {
+            let partial = SolverOptions {
+                race_drive: fraction * options.race_drive,
+                ..*options
+            };
+            self.solve_at(state, conditions, &partial)
+        })
     }
 
     /// Tangent of the solution path with respect to the inner-ring speed,
@@ -291,19 +321,7 @@ impl QuasiStaticSolver {
         setup: Setup<'_>,
     ) -> Option<State> {
         let mut asm = self.assemble(state, controls, setup);
-        let ring = RingDisplacement::from_array(state.ring.into());
-        let half = 0.5 * self.geometry.ball_diameter;
-        for (j, y) in state.balls.iter().enumerate() {
-            let phi = self.azimuth(j, setup.options);
-            let (ex, er) = Self::basis(phi);
-            let (_, inner, _) = self.contacts(y, phi, &ring);
-            let mut dr = Vector5::zeros();
-            dr[2] = -(y[1] + half * inner.normal.dot(&er));
-            if controls[j] == RingKind::Inner {
-                dr[4] = -setup.inner_share * inner.normal.dot(&ex);
-            }
-            asm.ball[j] = dr;
-        }
+        asm.ball = std::mem::take(&mut asm.speed_derivative);
         asm.ring = Vector5::zeros();
         let (dy, du, _) = Self::newton_step(&asm)?;
         Some(State {
@@ -338,43 +356,28 @@ impl QuasiStaticSolver {
 
     /// `state` with every ball's speeds (ω_m, ω_x, ω_r) replaced by the
     /// solution of its kinematic equations (rolling at both contacts, no
-    /// spin at the controlling one) at inner-ring speed `omega_i` for the
-    /// current positions: these equations are linear in the speeds.
+    /// spin at the controlling one, with the race drive) at the speed of
+    /// `conditions` for the current positions: these equations are linear
+    /// in the speeds.
     fn with_kinematic_speeds(
         &self,
         state: &State,
         controls: &[RingKind],
-        omega_i: f64,
+        conditions: &Conditions,
         options: &SolverOptions,
     ) -> State {
         let ring = RingDisplacement::from_array(state.ring.into());
-        let half = 0.5 * self.geometry.ball_diameter;
+        let setup = Setup::new(conditions, options);
         let mut out = state.clone();
         for (j, y) in out.balls.iter_mut().enumerate() {
-            let phi = self.azimuth(j, options);
-            let (ex, er) = Self::basis(phi);
-            let (_, inner, outer) = self.contacts(y, phi, &ring);
-            let r = y[1];
-            let row =
-                |c: &RingContactEval| [r, half * c.normal.dot(&er), -half * c.normal.dot(&ex)];
-            let (cc, omega_c) = match controls[j] {
-                RingKind::Inner => (&inner, omega_i),
-                RingKind::Outer => (&outer, 0.0),
-            };
-            let m = Matrix3::from_rows(&[
-                Row3::from(row(&inner)),
-                Row3::from(row(&outer)),
-                Row3::new(0.0, cc.normal.dot(&ex), cc.normal.dot(&er)),
-            ]);
-            let rhs = Vector3::new(
-                omega_i * (r + half * inner.normal.dot(&er)),
-                0.0,
-                omega_c * cc.normal.dot(&ex),
-            );
-            if let Some(w) = m.lu().solve(&rhs) {
-                y[2] = w[0];
-                y[3] = w[1];
-                y[4] = w[2];
+            // The kinematic rows are linear in the speeds: one Newton step
+            // on their 3 × 3 block solves them.
+            let terms = self.ball_terms(j, y, &ring, controls[j], setup);
+            let block = terms.a.fixed_view::<3, 3>(2, 2).into_owned();
+            let residual = terms.residual.fixed_rows::<3>(2).into_owned();
+            if let Some(step) = block.lu().solve(&residual) {
+                let speeds = y.fixed_rows::<3>(2) - step;
+                y.fixed_rows_mut::<3>(2).copy_from(&speeds);
             }
         }
         out

@@ -20,7 +20,56 @@ impl QuasiStaticSolver {
     /// With no applied load and no contact closed (clearance, at rest) the
     /// ring can sit anywhere inside the clearance: the centred position is
     /// returned with every ball unloaded and zero stiffness.
+    ///
+    /// Where that fails with the race drive on, the same solve without it
+    /// (Jones–Harris kinematics for free balls) and a continuation in the
+    /// drive's strength ([`SolverOptions::race_drive`]); a refusal
+    /// ([`QuasiStaticError::AxialLoadTooSmall`]) found without the drive
+    /// is returned as it is.
     pub fn solve(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Equilibrium, QuasiStaticError> {
+        if !(0.0..=1.0).contains(&options.race_drive) {
+            return Err(QuasiStaticError::Unsupported {
+                reason: format!(
+                    "race_drive = {} is outside [0, 1] (1: rolldyn's free-ball kinematics, 0: Jones–Harris)",
+                    options.race_drive
+                ),
+            });
+        }
+        self.solve_with_drive(conditions, options).or_else(|e| {
+            // At rest the kinematics (and so the drive) play no part.
+            if options.race_drive == 0.0 || conditions.inner_speed == 0.0 {
+                return Err(e);
+            }
+            let without = SolverOptions {
+                race_drive: 0.0,
+                ..*options
+            };
+            let start = match self.solve_with_drive(conditions, &without) {
+                Ok(start) => start,
+                Err(refusal @ QuasiStaticError::AxialLoadTooSmall { .. }) => return Err(refusal),
+                Err(_) => return Err(e),
+            };
+            let (state, s, it, res, controls) = self
+                .continue_in_drive(Self::state_of(&start), conditions, options)
+                .map_err(|_| e)?;
+            Ok(self.solution(
+                &state,
+                &s,
+                start.iterations + it,
+                res,
+                &controls,
+                conditions,
+                options,
+            ))
+        })
+    }
+
+    /// [`Self::solve`] at the options' race drive.
+    fn solve_with_drive(
         &self,
         conditions: &Conditions,
         options: &SolverOptions,
