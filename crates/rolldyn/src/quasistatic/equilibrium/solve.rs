@@ -1,9 +1,11 @@
 //! The solve strategy (MODEL §7): the static solution from the built-in
 //! start, the continuation in speed, and the fallbacks in order (axial
 //! load to speed first, outer-control start for inner and Harris control,
-//! the axial-displacement search); warm starts from a previous solution
-//! and the first guesses at speed.
+//! the axial-displacement search, and last the solve without the race
+//! drive continued in its strength); warm starts from a previous
+//! solution.
 
+use super::continuation::Path;
 use super::{
     Conditions, Equilibrium, Matrix5, QuasiStaticError, QuasiStaticSolver, RacewayControl, State,
     Vector5,
@@ -53,19 +55,30 @@ impl QuasiStaticSolver {
                 Err(refusal @ QuasiStaticError::AxialLoadTooSmall { .. }) => return Err(refusal),
                 Err(_) => return Err(e),
             };
-            let (state, s, it, res, controls) = self
+            let path = self
                 .continue_in_drive(Self::state_of(&start), conditions, options)
                 .map_err(|_| e)?;
-            Ok(self.solution(
-                &state,
-                &s,
-                start.iterations + it,
-                res,
-                &controls,
-                conditions,
-                options,
-            ))
+            Ok(self.continued(&start, path, conditions, options))
         })
+    }
+
+    /// The solution at the end of a continuation `path` from `start`.
+    fn continued(
+        &self,
+        start: &Equilibrium,
+        (state, schur, iterations, residual, controls): Path,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Equilibrium {
+        self.solution(
+            &state,
+            &schur,
+            start.iterations + iterations,
+            residual,
+            &controls,
+            conditions,
+            options,
+        )
     }
 
     /// [`Self::solve`] at the options' race drive.
@@ -114,18 +127,10 @@ impl QuasiStaticSolver {
             ..*conditions
         };
         let start = self.solve_free(&outer, options).ok()?;
-        let (state, s, it, res, controls) = self
+        let path = self
             .continue_in_control(Self::state_of(&start), conditions, options)
             .ok()?;
-        Some(self.solution(
-            &state,
-            &s,
-            start.iterations + it,
-            res,
-            &controls,
-            conditions,
-            options,
-        ))
+        Some(self.continued(&start, path, conditions, options))
     }
 
     /// [`Self::solve`] without the axial-displacement fallback: static
