@@ -140,7 +140,7 @@ impl QuasiStaticSolver {
         let (mut state, mut s, mut iterations, mut residual, mut controls) = from;
         let mut current = 0.0f64;
         let mut step = target;
-        let min_step = 1e-4 * target.abs();
+        let min_step = if options.race_drive > 0.0 { 1e-2 } else { 1e-4 } * target.abs();
         while current != target {
             let next = if (target - current).abs() <= step.abs() {
                 target

@@ -23,11 +23,14 @@ impl QuasiStaticSolver {
     /// ring can sit anywhere inside the clearance: the centred position is
     /// returned with every ball unloaded and zero stiffness.
     ///
-    /// Where that fails with the race drive on, the same solve without it
-    /// (Jones–Harris kinematics for free balls) and a continuation in the
-    /// drive's strength ([`SolverOptions::race_drive`]); a refusal
-    /// ([`QuasiStaticError::AxialLoadTooSmall`]) found without the drive
-    /// is returned as it is.
+    /// With the race drive on, at speed, where the free solve fails, the
+    /// free solve without the drive (Jones–Harris kinematics for free
+    /// balls) continued in the drive's strength
+    /// ([`SolverOptions::race_drive`]) comes before the axial-displacement
+    /// search; where everything fails (other than by a refusal,
+    /// [`QuasiStaticError::AxialLoadTooSmall`]), the whole solve without
+    /// the drive, continued likewise; a refusal found without the drive is
+    /// returned as it is.
     pub fn solve(
         &self,
         conditions: &Conditions,
@@ -42,24 +45,40 @@ impl QuasiStaticSolver {
             });
         }
         self.solve_with_drive(conditions, options).or_else(|e| {
-            // At rest the kinematics (and so the drive) play no part.
-            if options.race_drive == 0.0 || conditions.inner_speed == 0.0 {
+            if matches!(e, QuasiStaticError::AxialLoadTooSmall { .. }) {
                 return Err(e);
             }
-            let without = SolverOptions {
-                race_drive: 0.0,
-                ..*options
-            };
-            let start = match self.solve_with_drive(conditions, &without) {
-                Ok(start) => start,
-                Err(refusal @ QuasiStaticError::AxialLoadTooSmall { .. }) => return Err(refusal),
-                Err(_) => return Err(e),
-            };
-            let path = self
-                .continue_in_drive(Self::state_of(&start), conditions, options)
-                .map_err(|_| e)?;
-            Ok(self.continued(&start, path, conditions, options))
+            match self.via_jones_harris_kinematics(conditions, options, |without| {
+                self.solve_with_drive(conditions, without)
+            }) {
+                Some(Err(refusal @ QuasiStaticError::AxialLoadTooSmall { .. })) => Err(refusal),
+                Some(Ok(eq)) => Ok(eq),
+                _ => Err(e),
+            }
         })
+    }
+
+    /// `solve` without the race drive (σ = 0: Jones–Harris kinematics for
+    /// free balls), then continued in σ to the options' σ. None where the
+    /// drive plays no part (σ = 0, or at rest, where the kinematics do
+    /// not enter); the error of `solve`, or of the continuation, otherwise.
+    fn via_jones_harris_kinematics(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+        solve: impl Fn(&SolverOptions) -> Result<Equilibrium, QuasiStaticError>,
+    ) -> Option<Result<Equilibrium, QuasiStaticError>> {
+        if options.race_drive == 0.0 || conditions.inner_speed == 0.0 {
+            return None;
+        }
+        let without = SolverOptions {
+            race_drive: 0.0,
+            ..*options
+        };
+        Some(solve(&without).and_then(|start| {
+            let path = self.continue_in_drive(Self::state_of(&start), conditions, options)?;
+            Ok(self.continued(&start, path, conditions, options))
+        }))
     }
 
     /// The solution at the end of a continuation `path` from `start`.
@@ -89,6 +108,15 @@ impl QuasiStaticSolver {
     ) -> Result<Equilibrium, QuasiStaticError> {
         self.solve_free(conditions, options)
             .or_else(|e| self.start_from_outer_control(conditions, options).ok_or(e))
+            .or_else(|e| {
+                // Before the costly axial-displacement search: the free
+                // solve without the race drive, continued in its strength.
+                self.via_jones_harris_kinematics(conditions, options, |without| {
+                    self.solve_free(conditions, without)
+                })
+                .and_then(Result::ok)
+                .ok_or(e)
+            })
             .or_else(|e| {
                 if options.prescribed_displacement[0].is_some() {
                     return Err(e);
