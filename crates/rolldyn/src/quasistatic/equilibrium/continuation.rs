@@ -29,9 +29,7 @@ fn continue_in_parameter(
     let (mut p, mut step) = (0.0f64, 0.5f64);
     while step >= 1e-3 {
         let next = (p + step).min(1.0);
-        let r = solve(next, state.clone());
-        if std::env::var("QS_TRACE").is_ok() { eprintln!("PARAM {next} {:?}", r.as_ref().map(|x| x.2).map_err(|e| e.to_string())); }
-        match r {
+        match solve(next, state.clone()) {
             Ok((st, s, it, res, controls)) => {
                 iterations += it;
                 if next == 1.0 {
