@@ -22,8 +22,11 @@
 //! outer contact, which carries it at about the epicyclic cage speed.
 //! Under inner control the no-spin condition is w s_i − (1 − w) s_o and
 //! the gyroscopic friction 2w M_g/D at the inner contact (a free ball's
-//! gyroscopic pivoting is resisted by no friction it could carry). With
-//! the minus signs these blends stay regular for every w < 1.
+//! gyroscopic pivoting is resisted by no friction it could carry;
+//! Jones–Harris put the full 2 M_g/D at the open contact, on ball and
+//! ring). With the minus signs these blends stay regular for every w < 1.
+//! Under outer control a free ball exerts no force on the inner ring, so
+//! the drive changes nothing but the free balls' own speeds and places.
 
 use super::{QuasiStaticSolver, Row3, Row5};
 use crate::quasistatic::ring_contact::RingContactEval;
