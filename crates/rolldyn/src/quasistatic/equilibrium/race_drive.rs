@@ -16,10 +16,13 @@
 //! w = 1/(1 + (g/g_ref)³) for a gap g, written through the signed Hertz
 //! extension Q_s = K δ|δ|^{1/2} < 0 as w = 1/(1 + (Q_s/Q_ref)²), which is
 //! C¹ at δ = 0 and has analytic gradients. g_ref = [`GAP_FRACTION`] D
-//! (2.2 µm on a 7218B), Q_ref = K_i(0) g_ref^{3/2}. The inner contact as
-//! the kinematics see it has the normal n = w n_i − (1 − w) n_o: a free
-//! ball (w → 0) rolls as if it touched the inner raceway opposite its
-//! outer contact, which carries it at about the epicyclic cage speed.
+//! (22 µm on a 7218B), Q_ref = K_i(0) g_ref^{3/2}: a ball that almost
+//! touches keeps the Jones–Harris kinematics (its nearest inner point is
+//! where its contact would be), one far from the groove gets the outer
+//! contact's. The inner contact as the kinematics see it has the normal
+//! n = w n_i − (1 − w) n_o: a free ball (w → 0) rolls as if it touched
+//! the inner raceway opposite its outer contact, which carries it at
+//! about the epicyclic cage speed.
 //! Under inner control the no-spin condition is w s_i − (1 − w) s_o and
 //! the gyroscopic friction 2w M_g/D at the inner contact (a free ball's
 //! gyroscopic pivoting is resisted by no friction it could carry;
@@ -33,7 +36,7 @@ use crate::quasistatic::ring_contact::RingContactEval;
 
 /// Inner gap, as a fraction of the ball diameter, at which the drive
 /// weight is one half.
-pub(super) const GAP_FRACTION: f64 = 1e-4;
+pub(super) const GAP_FRACTION: f64 = 1e-3;
 
 /// The drive weight w and its gradients in the ball centre and the ring
 /// displacement.
