@@ -141,8 +141,9 @@ impl QuasiStaticSolver {
         let (force_i, dfi_dq, dfi_du) = weighted(&inner, setup.extension);
         // An open outer contact keeps its full extension: it pulls the ball
         // to its raceway (at speed the centrifugal force closes it at the
-        // solution; a weak pull would leave the ball's radial stiffness
-        // negative, m ω_m², and Newton would drive it inwards).
+        // solution; with a weak pull the ball's radial stiffness would be
+        // the destabilising centrifugal m ω_m² alone, and Newton would
+        // drive the ball inwards).
         let (force_o, dfo_dq, _) = weighted(&outer, 1.0);
 
         let mut res = Vector5::zeros();
