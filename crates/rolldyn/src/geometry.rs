@@ -403,6 +403,23 @@ impl BearingGeometry {
     }
 }
 
+/// A test bearing: the 7008C's ball and pitch diameters and free contact
+/// angle (6.35 mm, 54 mm, 17.7°) with groove curvatures 0.55 / 0.52 and
+/// `ball_count` balls.
+#[cfg(test)]
+pub(crate) fn test_bearing(ball_count: usize) -> BearingGeometry {
+    BearingGeometry::new(&GeometrySpec {
+        ball_diameter: 6.35e-3,
+        ball_count,
+        pitch_diameter: 54e-3,
+        inner_groove_curvature: 0.55,
+        outer_groove_curvature: 0.52,
+        clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
+        preload: false,
+    })
+    .expect("the test bearing is valid")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -122,20 +122,11 @@ pub struct TorusContact {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::{BearingGeometry, Clearance, GeometrySpec};
+    use crate::geometry::test_bearing;
 
     #[test]
     fn free_angle_contact_touches_at_alpha0() {
-        let g = BearingGeometry::new(&GeometrySpec {
-            ball_diameter: 6.35e-3,
-            ball_count: 22,
-            pitch_diameter: 54e-3,
-            inner_groove_curvature: 0.55,
-            outer_groove_curvature: 0.52,
-            clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
-            preload: false,
-        })
-        .unwrap();
+        let g = test_bearing(22);
         for phi in [0.0, 1.0, 2.5, 4.0] {
             let q = Vector3::new(0.0, 27e-3 * f64::cos(phi), 27e-3 * f64::sin(phi));
             for race in [&g.inner, &g.outer] {

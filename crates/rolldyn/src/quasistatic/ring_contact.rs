@@ -175,21 +175,12 @@ pub fn evaluate(
 mod tests {
     use super::*;
     use crate::contact::{HertzModel, RacewayContactModel};
-    use crate::geometry::{BearingGeometry, Clearance, GeometrySpec, RingKind};
+    use crate::geometry::{RingKind, test_bearing};
     use crate::material::{Material, effective_modulus};
 
     #[test]
     fn derivatives_match_central_differences() {
-        let g = BearingGeometry::new(&GeometrySpec {
-            ball_diameter: 6.35e-3,
-            ball_count: 22,
-            pitch_diameter: 54e-3,
-            inner_groove_curvature: 0.55,
-            outer_groove_curvature: 0.52,
-            clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
-            preload: false,
-        })
-        .unwrap();
+        let g = test_bearing(22);
         let ep = effective_modulus(&Material::STEEL_52100, &Material::STEEL_52100);
         let model = RacewayContactModel::new(&g, RingKind::Inner, ep, HertzModel::Exact);
         let table = ContactTable::new(model).unwrap();

@@ -290,7 +290,7 @@ mod tests {
     use super::super::{Conditions, RacewayControl, SolverOptions};
     use super::*;
     use crate::contact::HertzModel;
-    use crate::geometry::{BearingGeometry, Clearance, GeometrySpec};
+    use crate::geometry::test_bearing;
     use crate::material::Material;
     use crate::operating::Loads;
     use crate::quasistatic::equilibrium::race_drive::GAP_FRACTION;
@@ -302,16 +302,7 @@ mod tests {
     /// blended (t = 0.4, the outer-control homotopy).
     #[test]
     fn jacobian_matches_finite_differences() {
-        let g = BearingGeometry::new(&GeometrySpec {
-            ball_diameter: 6.35e-3,
-            ball_count: 5,
-            pitch_diameter: 54e-3,
-            inner_groove_curvature: 0.55,
-            outer_groove_curvature: 0.52,
-            clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
-            preload: false,
-        })
-        .unwrap();
+        let g = test_bearing(5);
         let solver = QuasiStaticSolver::new(
             &g,
             &Material::STEEL_52100,
