@@ -235,10 +235,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 };
                 write("sweep.csv", &quasistatic::sweep_csv(&rows))?;
                 write("sweep.json", &json_text)?;
-                let failed = rows.iter().filter(|r| !r.converged).count();
+                let refused = rows.iter().filter(|r| r.refused()).count();
+                let failed = rows.iter().filter(|r| !r.converged).count() - refused;
                 let summary = format!(
-                    "{} points solved ({} failed; reasons in the error column); wrote {}/sweep.csv and {}/sweep.json\n",
+                    "{} points solved ({} refused: below the least axial load their branch needs, in the least_axial_load_n column; {} failed; reasons in the error column); wrote {}/sweep.csv and {}/sweep.json\n",
                     rows.len(),
+                    refused,
                     failed,
                     output,
                     output

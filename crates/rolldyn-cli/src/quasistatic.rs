@@ -7,7 +7,8 @@ use rolldyn::material::Material;
 use rolldyn::operating::Loads;
 use rolldyn::power::local_power_loss;
 use rolldyn::quasistatic::{
-    BallSolution, Conditions, Equilibrium, QuasiStaticSolver, RacewayControl, sweep,
+    BallSolution, Conditions, Equilibrium, QuasiStaticError, QuasiStaticSolver, RacewayControl,
+    sweep,
 };
 use rolldyn_case::Case;
 use rolldyn_case::units::{AngularSpeed, Force, Quantity};
@@ -589,6 +590,16 @@ pub struct SweepRow {
     pub reference_rating_life_h: Option<f64>,
     /// Modified reference rating life (null without `life.contamination_factor`).
     pub modified_reference_rating_life_h: Option<f64>,
+    /// Where the point is refused: the least axial load its solution
+    /// branch needs at this radial load and speed (null otherwise).
+    pub least_axial_load_n: Option<f64>,
+}
+
+impl SweepRow {
+    /// Refused: the axial load is below the least its branch needs.
+    pub fn refused(&self) -> bool {
+        self.least_axial_load_n.is_some()
+    }
 }
 
 /// Builds the grid (first sweep outermost) and solves it.
@@ -644,6 +655,12 @@ pub fn run_sweep(
                 basic_rating_life_h: None,
                 reference_rating_life_h: None,
                 modified_reference_rating_life_h: None,
+                least_axial_load_n: match &r {
+                    Err(QuasiStaticError::AxialLoadTooSmall {
+                        least_axial_load, ..
+                    }) => Some(*least_axial_load),
+                    _ => None,
+                },
             };
             let life = RatingLife::new(case, &p.loads, p.inner_speed, r.as_ref().ok());
             row.basic_rating_life_h = life.basic_rating_life_h;
@@ -677,13 +694,13 @@ pub fn run_sweep(
 /// CSV text of sweep rows (header + one line per point).
 pub fn sweep_csv(rows: &[SweepRow]) -> String {
     let mut out = String::from(
-        "speed_rpm,force_x_n,force_z_n,converged,cage_speed_rpm,axial_displacement_m,radial_displacement_z_m,max_load_inner_n,max_load_outer_n,contact_angle_inner_deg,contact_angle_outer_deg,stiffness_axial_n_per_m,stiffness_radial_z_n_per_m,power_loss_w,friction_torque_n_m,basic_rating_life_h,reference_rating_life_h,modified_reference_rating_life_h,error\n",
+        "speed_rpm,force_x_n,force_z_n,converged,cage_speed_rpm,axial_displacement_m,radial_displacement_z_m,max_load_inner_n,max_load_outer_n,contact_angle_inner_deg,contact_angle_outer_deg,stiffness_axial_n_per_m,stiffness_radial_z_n_per_m,power_loss_w,friction_torque_n_m,basic_rating_life_h,reference_rating_life_h,modified_reference_rating_life_h,error,least_axial_load_n\n",
     );
     let f = |v: Option<f64>| v.map(|x| format!("{x:e}")).unwrap_or_default();
     for r in rows {
         let _ = writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\",{}",
             r.speed_rpm,
             r.force_x_n,
             r.force_z_n,
@@ -702,7 +719,8 @@ pub fn sweep_csv(rows: &[SweepRow]) -> String {
             f(r.basic_rating_life_h),
             f(r.reference_rating_life_h),
             f(r.modified_reference_rating_life_h),
-            r.error.as_deref().unwrap_or("").replace('"', "'")
+            r.error.as_deref().unwrap_or("").replace('"', "'"),
+            f(r.least_axial_load_n)
         );
     }
     out

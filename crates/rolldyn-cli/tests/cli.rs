@@ -333,6 +333,53 @@ fn quasistatic_sweep_writes_csv_and_json() {
     assert_eq!(o.status.code(), Some(2));
 }
 
+/// A refused sweep point (7218B, F_x = 100 N under F_z = 50 kN: below the
+/// least axial load) is counted apart from failures, and its least axial
+/// load is a column.
+#[test]
+fn quasistatic_sweep_reports_refused_points_with_their_least_axial_load() {
+    let dir = temp_dir("sweep-refused");
+    let dir_s = dir.to_string_lossy().into_owned();
+    let case = stdout(&rolldyn(&["new", "--preset", "7218B"], None));
+    let o = rolldyn(
+        &[
+            "quasistatic",
+            "-",
+            "--sweep",
+            "speed=4444rpm",
+            "--sweep",
+            "axial=100N,20kN",
+            "--sweep",
+            "radial=50kN",
+            "-o",
+            &dir_s,
+        ],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("(1 refused: below the least axial load")
+            && stdout(&o).contains("; 0 failed;"),
+        "{}",
+        stdout(&o)
+    );
+    let rows: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
+    let least = rows[0]["least_axial_load_n"].as_f64().expect("refused");
+    assert!(least > 100.0, "{least}");
+    assert_eq!(rows[0]["converged"], false);
+    assert!(rows[1]["least_axial_load_n"].is_null());
+    assert_eq!(rows[1]["converged"], true);
+    let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
+    assert!(
+        csv.lines()
+            .next()
+            .unwrap()
+            .ends_with(",error,least_axial_load_n")
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn run_writes_parquet_and_summary() {
     use arrow_array::Float64Array;

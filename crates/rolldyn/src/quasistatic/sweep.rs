@@ -1,36 +1,98 @@
 //! Sweeps of quasi-static solutions over lists or grids of operating
 //! points, in parallel and deterministic.
 //!
-//! The points are cut, in input order, into fixed chunks of
-//! [`SWEEP_CHUNK`] consecutive points. Each chunk solves its first point
-//! from the built-in start and warm-starts every next point from its
-//! neighbour ([`QuasiStaticSolver::solve_from`], which falls back to the
-//! built-in start). Chunks run in parallel (rayon). Because the chunking
-//! does not depend on the number of threads, results come back in input
-//! order and are bit-identical to a serial run (VALIDATION B7).
+//! The points are cut, in input order, into chunks of consecutive points
+//! ([`chunk_length`]: at least [`SWEEP_CHUNK`], and at most
+//! [`SWEEP_CHUNKS`] chunks). Each chunk solves its first point from the
+//! built-in start and warm-starts every next point from the nearest point
+//! of the chunk solved so far ([`QuasiStaticSolver::solve_from`], which
+//! falls back to the built-in start): on a grid that is the neighbour
+//! along the fastest axis, or, at the start of a line, the start of the
+//! line before. Chunks run in parallel (rayon). Because the chunking
+//! depends on the number of points only, not on the number of threads,
+//! results come back in input order and are bit-identical to a serial run
+//! (VALIDATION B7).
 
 use super::equilibrium::{
     Conditions, Equilibrium, QuasiStaticError, QuasiStaticSolver, SolverOptions,
 };
 use rayon::prelude::*;
 
-/// Points per warm-started chain.
+/// Fewest points per warm-started chain.
 pub const SWEEP_CHUNK: usize = 32;
+
+/// Most chains of a sweep: longer chains start cold less often (a cold
+/// start at speed costs tens of warm ones) and still share the work
+/// evenly among the cores of a workstation.
+pub const SWEEP_CHUNKS: usize = 64;
+
+/// Solved points searched for the nearest (the latest ones): on a grid,
+/// more than a line.
+const NEAREST_WINDOW: usize = 256;
+
+/// Points per chain for a sweep of `points` points.
+pub fn chunk_length(points: usize) -> usize {
+    points.div_ceil(SWEEP_CHUNKS).max(SWEEP_CHUNK)
+}
+
+/// The operating point's coordinates: inner-ring speed, forces, moments.
+fn coordinates(c: &Conditions) -> [f64; 6] {
+    let [fx, fy, fz] = c.loads.force;
+    let [my, mz] = c.loads.moment;
+    [c.inner_speed, fx, fy, fz, my, mz]
+}
+
+/// The solved point of the chunk nearest to `point`: the smallest sum of
+/// coordinate differences, each over the largest magnitude of that
+/// coordinate in the chunk; the latest of equals, points under another
+/// raceway control last. The last [`NEAREST_WINDOW`] solved points are
+/// searched.
+fn nearest<'a>(
+    point: &Conditions,
+    solved: &'a [(Conditions, Equilibrium)],
+    scale: &[f64; 6],
+) -> Option<&'a Equilibrium> {
+    let here = coordinates(point);
+    let distance = |c: &Conditions| {
+        let there = coordinates(c);
+        let d: f64 = (0..6)
+            .filter(|&i| scale[i] > 0.0)
+            .map(|i| (here[i] - there[i]).abs() / scale[i])
+            .sum();
+        if c.control == point.control {
+            d
+        } else {
+            d + 1e3
+        }
+    };
+    solved
+        .iter()
+        .rev()
+        .take(NEAREST_WINDOW)
+        .min_by(|a, b| distance(&a.0).total_cmp(&distance(&b.0)))
+        .map(|(_, eq)| eq)
+}
 
 fn solve_chunk(
     solver: &QuasiStaticSolver,
     points: &[Conditions],
     options: &SolverOptions,
 ) -> Vec<Result<Equilibrium, QuasiStaticError>> {
+    let mut scale = [0.0f64; 6];
+    for p in points {
+        for (s, v) in scale.iter_mut().zip(coordinates(p)) {
+            *s = s.max(v.abs());
+        }
+    }
     let mut out: Vec<Result<Equilibrium, QuasiStaticError>> = Vec::with_capacity(points.len());
-    let mut previous: Option<Equilibrium> = None;
+    let mut solved: Vec<(Conditions, Equilibrium)> = Vec::with_capacity(points.len());
     for point in points {
-        let result = match &previous {
+        let result = match nearest(point, &solved, &scale) {
             Some(p) => solver.solve_from(p, point, options),
             None => solver.solve(point, options),
         };
         if let Ok(sol) = &result {
-            previous = Some(sol.clone());
+            solved.push((*point, sol.clone()));
         }
         out.push(result);
     }
@@ -44,15 +106,77 @@ pub fn sweep(
     options: &SolverOptions,
     parallel: bool,
 ) -> Vec<Result<Equilibrium, QuasiStaticError>> {
+    let length = chunk_length(points.len());
     if parallel {
         points
-            .par_chunks(SWEEP_CHUNK)
+            .par_chunks(length)
             .flat_map_iter(|c| solve_chunk(solver, c, options))
             .collect()
     } else {
         points
-            .chunks(SWEEP_CHUNK)
+            .chunks(length)
             .flat_map(|c| solve_chunk(solver, c, options))
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::operating::Loads;
+    use crate::quasistatic::RacewayControl;
+
+    #[test]
+    fn chains_are_at_least_32_points_and_at_most_64() {
+        assert_eq!(chunk_length(1), SWEEP_CHUNK);
+        assert_eq!(chunk_length(2048), SWEEP_CHUNK);
+        assert_eq!(chunk_length(2049), 33);
+        assert_eq!(chunk_length(10_000), 157);
+        assert!(10_000usize.div_ceil(chunk_length(10_000)) <= SWEEP_CHUNKS);
+    }
+
+    /// On a grid (speed outer, radial load inner), a point warm-starts from
+    /// its neighbour along the line, and the start of a line from the
+    /// start of the line before, not from the end of the last line.
+    #[test]
+    fn warm_starts_come_from_the_nearest_solved_point() {
+        let point = |rpm: f64, fz: f64| Conditions {
+            loads: Loads {
+                force: [1000.0, 0.0, fz],
+                moment: [0.0, 0.0],
+            },
+            inner_speed: rpm,
+            control: RacewayControl::Outer,
+        };
+        let g = crate::geometry::test_bearing(15);
+        let solver = QuasiStaticSolver::new(
+            &g,
+            &crate::Material::STEEL_52100,
+            &crate::Material::STEEL_52100,
+            crate::contact::HertzModel::Exact,
+        )
+        .unwrap();
+        let eq = solver
+            .solve(&point(0.0, 0.0), &SolverOptions::default())
+            .unwrap();
+        let mut solved = Vec::new();
+        for rpm in [0.0, 100.0] {
+            for fz in [0.0, 500.0, 1000.0] {
+                let mut e = eq.clone();
+                // Tag each solution by its point.
+                e.iterations = (rpm + fz) as usize;
+                solved.push((point(rpm, fz), e));
+            }
+        }
+        let scale = [100.0, 1000.0, 0.0, 1000.0, 0.0, 0.0];
+        let tag = |p: &Conditions| nearest(p, &solved, &scale).map(|e| e.iterations);
+        assert_eq!(tag(&point(200.0, 0.0)), Some(100));
+        assert_eq!(tag(&point(100.0, 1500.0)), Some(1100));
+        assert_eq!(tag(&point(0.0, 500.0)), Some(500));
+        assert_eq!(tag(&point(0.0, 0.0)), Some(0));
+        assert_eq!(
+            nearest(&point(0.0, 0.0), &[], &scale).map(|e| e.iterations),
+            None
+        );
     }
 }

@@ -31,6 +31,20 @@ use super::{
 };
 use crate::quasistatic::SolverOptions;
 
+/// Where the axial-displacement search takes its first solution from.
+#[derive(Clone, Copy)]
+pub(super) enum AxialStart<'a> {
+    /// The solution at rest: its axial displacement held while the speed
+    /// rises (else the equivalent pure axial load's, taken to speed and
+    /// then to the loads).
+    Rest(&'a Equilibrium),
+    /// A solution at a nearby operating point (a sweep's neighbour): its
+    /// axial displacement held, one solve from its state.
+    Neighbour(&'a Equilibrium),
+    /// The built-in start (at rest).
+    BuiltIn,
+}
+
 /// Largest number of solves of the root search.
 const MAX_SOLVES: usize = 60;
 
@@ -39,16 +53,14 @@ const MAX_SOLVES: usize = 60;
 const MARCH_AFTER_MINIMUM: usize = 4;
 
 impl QuasiStaticSolver {
-    /// The solution with the axial displacement found from its reaction.
-    /// At speed, `rest` is the solution at rest: the first solve holds its
-    /// axial displacement and continues it in speed (every solve at a
-    /// held x is then warm-started from the last); without it the first
-    /// guess is the built-in start's.
+    /// The solution with the axial displacement found from its reaction,
+    /// from `start` (every solve at a held x after the first is
+    /// warm-started from the last).
     pub(super) fn solve_by_axial_displacement(
         &self,
         conditions: &Conditions,
         options: &SolverOptions,
-        rest: Option<&Equilibrium>,
+        start: AxialStart<'_>,
     ) -> Result<Equilibrium, QuasiStaticError> {
         let scale = self
             .scaled_ring(&Self::applied(&conditions.loads))
@@ -85,20 +97,46 @@ impl QuasiStaticSolver {
             eq
         };
         let mut first_iterations = 0;
-        let (mut x, (mut eq, mut r)) = match rest {
-            Some(rest) => {
-                let x = rest.displacement[0];
+        let (mut x, (mut eq, mut r)) = match start {
+            AxialStart::Neighbour(near) => {
+                let x = near.displacement[0];
                 let held = held_at(x);
-                let controls = rest.balls.iter().map(|b| b.control).collect();
-                let from = (Self::state_of(rest), Matrix5::zeros(), 0, 0.0, controls);
+                let guess = Self::at_speed_of(near, conditions);
                 let (state, schur, it, residual, controls) =
-                    self.continue_in_speed_via_outer_control(from, conditions, &held)?;
+                    self.solve_at(guess, conditions, &held)?;
                 let eq = self.solution(&state, &schur, it, residual, &controls, conditions, &held);
                 first_iterations = it;
                 let r = eq.reaction[0];
                 (x, (eq, r))
             }
-            None => {
+            AxialStart::Rest(rest) => {
+                let controls = rest.balls.iter().map(|b| b.control).collect();
+                let from = (Self::state_of(rest), Matrix5::zeros(), 0, 0.0, controls);
+                let (x, (state, schur, it, residual, controls)) = self
+                    .continue_in_speed_via_outer_control(
+                        from,
+                        conditions,
+                        &held_at(rest.displacement[0]),
+                    )
+                    .map(|path| (rest.displacement[0], path))
+                    .or_else(|e| {
+                        self.axial_then_load_at_speed_held(conditions, options)
+                            .map_err(|_| e)
+                    })?;
+                let eq = self.solution(
+                    &state,
+                    &schur,
+                    it,
+                    residual,
+                    &controls,
+                    conditions,
+                    &held_at(x),
+                );
+                first_iterations = it;
+                let r = eq.reaction[0];
+                (x, (eq, r))
+            }
+            AxialStart::BuiltIn => {
                 let x = self.initial_state(&conditions.loads, options, false).ring[0];
                 (x, solve(x, None)?)
             }
@@ -109,9 +147,12 @@ impl QuasiStaticSolver {
         // The last step while searching, and whether it reduced |R|.
         let mut last_step: Option<f64> = None;
         let mut improving = true;
-        // Smallest |R| seen (x, R) and the march steps since |R| last fell.
+        // Smallest |R| seen (x, R), the march steps since |R| last fell,
+        // and every solution before a bracket (for the minimum's
+        // refinement).
         let mut smallest = (x, r);
         let mut growing = 0;
+        let mut samples = vec![(x, r, eq.clone())];
         for _ in 0..MAX_SOLVES {
             if r.abs() <= target {
                 return Ok(finish(eq, r, iterations + first_iterations));
@@ -136,8 +177,12 @@ impl QuasiStaticSolver {
                 Err(_) if bracket.is_none() => solve(0.5 * (x + next), Some(&eq))?,
                 Err(e) => return Err(e),
             };
-            let x_next = eq_next.displacement[0];
+            let mut x_next = eq_next.displacement[0];
+            let (mut eq_next, mut r_next) = (eq_next, r_next);
             improving = r_next.abs() < r.abs();
+            if bracket.is_none() && r_next.signum() == r.signum() {
+                samples.push((x_next, r_next, eq_next.clone()));
+            }
             if r_next.abs() < smallest.1.abs() {
                 smallest = (x_next, r_next);
                 growing = 0;
@@ -147,13 +192,23 @@ impl QuasiStaticSolver {
                 // step that found the minimum) without changing sign: the
                 // reaction has a minimum short of zero. Beyond it the
                 // balls move to the groove's other flank (a branch a
-                // one-shouldered ring does not have): no equilibrium.
+                // one-shouldered ring does not have): no equilibrium,
+                // unless the minimum, refined, crosses zero.
                 if growing >= MARCH_AFTER_MINIMUM {
-                    return Err(QuasiStaticError::AxialLoadTooSmall {
-                        axial_load: conditions.loads.force[0],
-                        least_axial_load: conditions.loads.force[0] + smallest.1,
-                        speed_rpm: conditions.inner_speed * 60.0 / std::f64::consts::TAU,
-                    });
+                    match refine_minimum(&mut samples, max_step, target, &mut solve) {
+                        Minimum::Least(least) => {
+                            return Err(QuasiStaticError::AxialLoadTooSmall {
+                                axial_load: conditions.loads.force[0],
+                                least_axial_load: conditions.loads.force[0] + least,
+                                speed_rpm: conditions.inner_speed * 60.0 / std::f64::consts::TAU,
+                            });
+                        }
+                        Minimum::Crossing((xa, ra), at_b) => {
+                            // Continue the root search in [a, b] from b.
+                            (x, r) = (xa, ra);
+                            (x_next, r_next, eq_next) = *at_b;
+                        }
+                    }
                 }
             }
             last_step = Some(x_next - x);
@@ -185,4 +240,153 @@ impl QuasiStaticSolver {
             speed_rpm: conditions.inner_speed * 60.0 / std::f64::consts::TAU,
         })
     }
+}
+
+/// A refined minimum of the axial reaction.
+enum Minimum {
+    /// The reaction's least value (signed) on the branch: no root.
+    Least(f64),
+    /// Two points (x, R) whose reactions differ in sign, a root between,
+    /// with the solution at the second (or the second is a root).
+    Crossing((f64, f64), Box<(f64, f64, Equilibrium)>),
+}
+
+/// Solves of the minimum's refinement.
+const MAX_REFINE: usize = 16;
+
+/// Refines the minimum of |R(x)| among `samples` (solutions (x, R) whose
+/// reactions have one sign): secant descent from the smallest sample until
+/// it is bracketed by close neighbours (the march that found the minimum
+/// may have jumped between branches of held-x equilibria, so far samples
+/// say little), then successive parabolic interpolation, safeguarded by
+/// golden-section steps. Steps are at most `max_step`; a reaction within
+/// `tolerance` of zero counts as a crossing (the main loop accepts it). Stops at a sign change (a root
+/// lies between), when the parabola through the bracket predicts less
+/// than 1e-4 of the least |R| to gain, or after [`MAX_REFINE`] solves; a failed solve ends the refinement
+/// with the least value found.
+fn refine_minimum(
+    samples: &mut Vec<(f64, f64, Equilibrium)>,
+    max_step: f64,
+    tolerance: f64,
+    solve: &mut impl FnMut(f64, Option<&Equilibrium>) -> Result<(Equilibrium, f64), QuasiStaticError>,
+) -> Minimum {
+    const GOLDEN: f64 = 0.381_966_011_250_105_1;
+    samples.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let sign = samples[0].1.signum();
+    let value = |r: f64| sign * r;
+    let best = |samples: &[(f64, f64, Equilibrium)]| {
+        (0..samples.len())
+            .min_by(|&i, &j| value(samples[i].1).total_cmp(&value(samples[j].1)))
+            .unwrap_or(0)
+    };
+    let mut solves = 0;
+    // A new solution at x from the nearest sample; a sign change ends the
+    // refinement.
+    let mut probe = |samples: &mut Vec<(f64, f64, Equilibrium)>,
+                     x: f64,
+                     solves: &mut usize|
+     -> Result<Option<Minimum>, ()> {
+        *solves += 1;
+        let near = (0..samples.len())
+            .min_by(|&i, &j| {
+                (samples[i].0 - x)
+                    .abs()
+                    .total_cmp(&(samples[j].0 - x).abs())
+            })
+            .unwrap_or(0);
+        let (eq, r) = solve(x, Some(&samples[near].2)).map_err(|_| ())?;
+        let x = eq.displacement[0];
+        if value(r) <= tolerance {
+            let (xa, ra) = (samples[near].0, samples[near].1);
+            return Ok(Some(Minimum::Crossing((xa, ra), Box::new((x, r, eq)))));
+        }
+        let at = samples.partition_point(|s| s.0 < x);
+        samples.insert(at, (x, r, eq));
+        Ok(None)
+    };
+    // Descent: secant steps on the slope from the smallest sample to its
+    // nearest neighbour, away from it, each short of halfway to the next
+    // sample on that side (samples may lie on another branch), until the
+    // smallest sample has a neighbour on each side within four times the
+    // nearer one's distance.
+    while solves < MAX_REFINE {
+        let i = best(samples);
+        let n = samples.len();
+        let (b, fb) = (samples[i].0, value(samples[i].1));
+        let below = (i > 0).then(|| i - 1);
+        let above = (i + 1 < n).then_some(i + 1);
+        let near = match (below, above) {
+            (Some(l), Some(u)) if b - samples[l].0 <= samples[u].0 - b => l,
+            (Some(_), Some(u)) => u,
+            (Some(l), None) => l,
+            (None, Some(u)) => u,
+            (None, None) => match probe(samples, b + 1e-3 * max_step, &mut solves) {
+                Ok(Some(crossing)) => return crossing,
+                Ok(None) => continue,
+                Err(()) => return Minimum::Least(samples[i].1),
+            },
+        };
+        let (xn, fn_) = (samples[near].0, value(samples[near].1));
+        let far = if near + 1 == i { above } else { below };
+        let gap = (xn - b).abs();
+        if far.is_some_and(|k| (samples[k].0 - b).abs() <= 4.0 * gap) {
+            break;
+        }
+        let slope = (fn_ - fb) / (xn - b);
+        let mut step = (-fb / slope).clamp(-max_step, max_step);
+        if !step.is_finite() || step * (xn - b) > 0.0 {
+            step = (b - xn).signum() * gap;
+        }
+        if let Some(k) = far {
+            let room = 0.5 * (samples[k].0 - b);
+            if step.abs() > room.abs() {
+                step = room;
+            }
+        }
+        match probe(samples, b + step, &mut solves) {
+            Ok(Some(crossing)) => return crossing,
+            Ok(None) => {}
+            Err(()) => return Minimum::Least(samples[best(samples)].1),
+        }
+    }
+    while solves < MAX_REFINE {
+        let i = best(samples);
+        if i == 0 || i + 1 >= samples.len() {
+            break;
+        }
+        let (a, b, c) = (samples[i - 1].0, samples[i].0, samples[i + 1].0);
+        let (fa, fb, fc) = (
+            value(samples[i - 1].1),
+            value(samples[i].1),
+            value(samples[i + 1].1),
+        );
+        // Vertex of the parabola through the three points, and the value
+        // it predicts there: converged when that is within 1e-4 of f(b).
+        let p = (b - a) * (b - a) * (fb - fc) - (b - c) * (b - c) * (fb - fa);
+        let q = (b - a) * (fb - fc) - (b - c) * (fb - fa);
+        let vertex = if q != 0.0 { b - 0.5 * p / q } else { f64::NAN };
+        let curvature = 2.0 * ((fc - fb) / (c - b) - (fb - fa) / (b - a)) / (c - a);
+        let predicted = fb - 0.5 * curvature * (vertex - b).powi(2);
+        if vertex.is_finite() && (fb - predicted).abs() <= 1e-4 * fb.abs() {
+            break;
+        }
+        let width = c - a;
+        let x = if vertex.is_finite()
+            && vertex > a
+            && vertex < c
+            && (vertex - b).abs() > 1e-3 * width
+        {
+            vertex
+        } else if c - b > b - a {
+            b + GOLDEN * (c - b)
+        } else {
+            b - GOLDEN * (b - a)
+        };
+        match probe(samples, x, &mut solves) {
+            Ok(Some(crossing)) => return crossing,
+            Ok(None) => {}
+            Err(()) => break,
+        }
+    }
+    Minimum::Least(samples[best(samples)].1)
 }

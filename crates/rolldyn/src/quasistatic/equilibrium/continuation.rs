@@ -208,6 +208,34 @@ impl QuasiStaticSolver {
         conditions: &Conditions,
         options: &SolverOptions,
     ) -> Result<Path, QuasiStaticError> {
+        let (at_speed, axial) = self.equivalent_axial_at_speed(conditions, options)?;
+        self.blend_loads(at_speed, &axial, conditions, options)
+    }
+
+    /// [`Self::axial_then_load_at_speed`] with the axial displacement held
+    /// where the equivalent pure axial load puts it (the first point of
+    /// the axial-displacement search where the solution at rest cannot be
+    /// taken to speed): the held axial displacement returned with the
+    /// path.
+    pub(super) fn axial_then_load_at_speed_held(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<(f64, Path), QuasiStaticError> {
+        let (at_speed, axial) = self.equivalent_axial_at_speed(conditions, options)?;
+        let x = at_speed.0.ring[0];
+        let mut held = *options;
+        held.prescribed_displacement[0] = Some(x);
+        Ok((x, self.blend_loads(at_speed, &axial, conditions, &held)?))
+    }
+
+    /// The solution under the equivalent pure axial load (every ball
+    /// loaded) taken to the conditions' speed, and that load.
+    fn equivalent_axial_at_speed(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<(Path, Loads), QuasiStaticError> {
         let axial = self.equivalent_axial(&conditions.loads);
         let at_rest = Conditions {
             loads: axial,
@@ -227,7 +255,7 @@ impl QuasiStaticSolver {
             },
             options,
         )?;
-        self.blend_loads(at_speed, &axial, conditions, options)
+        Ok((at_speed, axial))
     }
 
     /// [`Self::continue_in_speed`]; where that fails under inner or Harris
@@ -330,22 +358,25 @@ impl QuasiStaticSolver {
         })
     }
 
-    /// First guess at speed for balls that carry no inner load at rest:
-    /// centrifugal force seats them at the bottom of the outer groove,
-    /// compressed by δ_o = (m r ω_m²/K_o)^{2/3} with the pure-rolling ω_m.
+    /// First guess at speed for balls that carry at rest less inner load
+    /// than the centrifugal force at speed (none, or the barely touching
+    /// balls at the edge of the loaded zone, which the centrifugal force
+    /// lifts off the inner race): it seats them at the bottom of the
+    /// outer groove, compressed by δ_o = (m r ω_m²/K_o)^{2/3} with the
+    /// pure-rolling ω_m.
     fn seat_free_balls(&self, state: &State, omega_i: f64, options: &SolverOptions) -> State {
         let g = &self.geometry;
         let ring = RingDisplacement::from_array(state.ring.into());
         let k_o = self.outer_table.stiffness(0.0);
+        let r = g.pitch_diameter / 2.0;
+        let omega_m = 0.5 * omega_i * (1.0 - g.ball_diameter / g.pitch_diameter);
+        let centrifugal = self.ball_mass * r * omega_m * omega_m;
         let mut out = state.clone();
         for (j, y) in out.balls.iter_mut().enumerate() {
             let (_, inner, _) = self.contacts(y, self.azimuth(j, options), &ring);
-            if inner.in_contact() {
+            if inner.in_contact() && inner.load >= centrifugal {
                 continue;
             }
-            let r = g.pitch_diameter / 2.0;
-            let omega_m = 0.5 * omega_i * (1.0 - g.ball_diameter / g.pitch_diameter);
-            let centrifugal = self.ball_mass * r * omega_m * omega_m;
             let approach = (centrifugal / k_o).powf(2.0 / 3.0);
             y[0] = g.outer.groove_centre_axial;
             y[1] = g.outer.groove_centre_radius + g.outer.groove_radius - 0.5 * g.ball_diameter
