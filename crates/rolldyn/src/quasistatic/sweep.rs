@@ -4,11 +4,11 @@
 //! The points are cut, in input order, into chunks of consecutive points
 //! ([`chunk_length`]: at least [`SWEEP_CHUNK`], and at most
 //! [`SWEEP_CHUNKS`] chunks). Each chunk solves its first point from the
-//! built-in start and warm-starts every next point from the nearest point
-//! of the chunk solved so far ([`QuasiStaticSolver::solve_from`], which
-//! falls back to the built-in start): on a grid that is the neighbour
-//! along the fastest axis, or, at the start of a line, the start of the
-//! line before. Chunks run in parallel (rayon). Because the chunking
+//! built-in start and warm-starts every next point from the point solved
+//! last, or from a solved point more than twice as near
+//! ([`QuasiStaticSolver::solve_from`], which falls back to the built-in
+//! start): on a grid, the neighbour along the fastest axis, or, at the
+//! start of a line, the start of the line before. Chunks run in parallel (rayon). Because the chunking
 //! depends on the number of points only, not on the number of threads,
 //! results come back in input order and are bit-identical to a serial run
 //! (VALIDATION B7).
@@ -42,11 +42,16 @@ fn coordinates(c: &Conditions) -> [f64; 6] {
     [c.inner_speed, fx, fy, fz, my, mz]
 }
 
-/// The solved point of the chunk nearest to `point`: the smallest sum of
+/// The solved point of the chunk to warm-start `point` from: the latest,
+/// unless another is more than twice as near. Distances are sums of
 /// coordinate differences, each over the largest magnitude of that
-/// coordinate in the chunk; the latest of equals, points under another
-/// raceway control last. The last [`NEAREST_WINDOW`] solved points are
-/// searched.
+/// coordinate in the chunk, with points under another raceway control
+/// last; the last [`NEAREST_WINDOW`] solved points are searched. On a
+/// grid the latest is the neighbour along the line; at the start of a
+/// line, the start of the line before. (Strictly the nearest would, where
+/// the grid is finer across lines than along them, start each point from
+/// the line before, which may lie on another branch: the light-axial
+/// line of a heavy radial load.)
 fn nearest<'a>(
     point: &Conditions,
     solved: &'a [(Conditions, Equilibrium)],
@@ -65,12 +70,18 @@ fn nearest<'a>(
             d + 1e3
         }
     };
-    solved
+    let (latest_conditions, latest) = solved.last()?;
+    let to_latest = distance(latest_conditions);
+    let (nearest_conditions, nearest) = solved
         .iter()
         .rev()
         .take(NEAREST_WINDOW)
-        .min_by(|a, b| distance(&a.0).total_cmp(&distance(&b.0)))
-        .map(|(_, eq)| eq)
+        .min_by(|a, b| distance(&a.0).total_cmp(&distance(&b.0)))?;
+    Some(if to_latest <= 2.0 * distance(nearest_conditions) {
+        latest
+    } else {
+        nearest
+    })
 }
 
 fn solve_chunk(
@@ -136,8 +147,10 @@ mod tests {
     }
 
     /// On a grid (speed outer, radial load inner), a point warm-starts from
-    /// its neighbour along the line, and the start of a line from the
-    /// start of the line before, not from the end of the last line.
+    /// its neighbour along the line (the point solved last), also where a
+    /// point of the line before is nearer but not twice as near, and the
+    /// start of a line from the start of the line before, not from the
+    /// end of the last line.
     #[test]
     fn warm_starts_come_from_the_nearest_solved_point() {
         let point = |rpm: f64, fz: f64| Conditions {
@@ -168,10 +181,21 @@ mod tests {
                 solved.push((point(rpm, fz), e));
             }
         }
-        let scale = [100.0, 1000.0, 0.0, 1000.0, 0.0, 0.0];
+        let scale = [1000.0, 1000.0, 0.0, 1000.0, 0.0, 0.0];
         let tag = |p: &Conditions| nearest(p, &solved, &scale).map(|e| e.iterations);
         assert_eq!(tag(&point(200.0, 0.0)), Some(100));
         assert_eq!(tag(&point(100.0, 1500.0)), Some(1100));
+        // From (100 rpm, 1500 N): 0.5 to the latest (100 rpm, 1000 N),
+        // 0.3 to (0, 1300 N): the latest…
+        let mut partial = solved.clone();
+        let mut e = eq.clone();
+        e.iterations = 1300;
+        partial.insert(2, (point(0.0, 1300.0), e));
+        let tag_partial = |p: &Conditions| nearest(p, &partial, &scale).map(|e| e.iterations);
+        assert_eq!(tag_partial(&point(100.0, 1500.0)), Some(1100));
+        // …and from (100 rpm, 1350 N): 0.35 to the latest, 0.15 to
+        // (0, 1300 N), more than twice as near.
+        assert_eq!(tag_partial(&point(100.0, 1350.0)), Some(1300));
         assert_eq!(tag(&point(0.0, 500.0)), Some(500));
         assert_eq!(tag(&point(0.0, 0.0)), Some(0));
         assert_eq!(
