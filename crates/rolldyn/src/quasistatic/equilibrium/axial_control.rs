@@ -1,5 +1,7 @@
-//! Axial-displacement control: the last fallback of a quasi-static solve
-//! (issue 16's stress grid).
+//! Axial-displacement control: the first fallback of a quasi-static solve
+//! where the free solve fails, and of a sweep's warm start (issue 16's
+//! stress grids). The caller runs it without the race drive and continues
+//! its solution in the drive's strength (`solve.rs`).
 //!
 //! A light axial load on an angular-contact bearing under a heavy radial
 //! load (7218B: F_x ≤ 100 N with F_z ≥ 10 kN) leaves the ring close to a
@@ -22,9 +24,12 @@
 //! F_x = 10 N, F_z = 50 kN: R_x ≥ 16.7 N), beyond which R_x rises again as
 //! the balls turn over to the groove's other flank (the torus has no
 //! shoulder; docs/geometry.md). When |R_x| keeps growing for
-//! [`MARCH_AFTER_MINIMUM`] doubling steps past its minimum, the search
+//! [`MARCH_AFTER_MINIMUM`] doubling steps past its minimum, the minimum is
+//! refined (`refine_minimum`); where it stays short of zero the search
 //! stops with [`QuasiStaticError::AxialLoadTooSmall`], giving the least
-//! axial load F_x + min R_x.
+//! axial load F_x + min R_x (at a held x the equilibrium does not depend
+//! on F_x, so this is a property of the branch, checked in the tests: at
+//! 1.05 times it the point converges).
 
 use super::{
     Conditions, Equilibrium, Matrix5, QuasiStaticError, QuasiStaticSolver, STAGNATION_ACCEPT,
@@ -259,11 +264,12 @@ const MAX_REFINE: usize = 16;
 /// it is bracketed by close neighbours (the march that found the minimum
 /// may have jumped between branches of held-x equilibria, so far samples
 /// say little), then successive parabolic interpolation, safeguarded by
-/// golden-section steps. Steps are at most `max_step`; a reaction within
-/// `tolerance` of zero counts as a crossing (the main loop accepts it). Stops at a sign change (a root
-/// lies between), when the parabola through the bracket predicts less
-/// than 1e-4 of the least |R| to gain, or after [`MAX_REFINE`] solves; a failed solve ends the refinement
-/// with the least value found.
+/// golden-section steps. Steps are at most `max_step`. Stops at a sign
+/// change, or a reaction within `tolerance` of zero (a root lies between,
+/// or is reached: the caller's root search goes on from there), when the
+/// parabola through the bracket predicts less than 1e-4 of the least |R|
+/// to gain, or after [`MAX_REFINE`] solves; a failed solve ends the
+/// refinement with the least value found.
 fn refine_minimum(
     samples: &mut Vec<(f64, f64, Equilibrium)>,
     max_step: f64,
