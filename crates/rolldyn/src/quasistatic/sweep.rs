@@ -8,10 +8,10 @@
 //! last, or from a solved point more than twice as near
 //! ([`QuasiStaticSolver::solve_from`], which falls back to the built-in
 //! start): on a grid, the neighbour along the fastest axis, or, at the
-//! start of a line, the start of the line before. Chunks run in parallel (rayon). Because the chunking
-//! depends on the number of points only, not on the number of threads,
-//! results come back in input order and are bit-identical to a serial run
-//! (VALIDATION B7).
+//! start of a line, the start of the line before. Chunks run in parallel
+//! (rayon). Because the chunking depends on the number of points only,
+//! not on the number of threads, results come back in input order and are
+//! bit-identical to a serial run (VALIDATION B7).
 
 use super::equilibrium::{
     Conditions, Equilibrium, QuasiStaticError, QuasiStaticSolver, SolverOptions,
@@ -26,8 +26,8 @@ pub const SWEEP_CHUNK: usize = 32;
 /// evenly among the cores of a workstation.
 pub const SWEEP_CHUNKS: usize = 64;
 
-/// Solved points searched for the nearest (the latest ones): on a grid,
-/// more than a line.
+/// Solved points searched for a nearer one than the latest (the latest
+/// ones): on a grid, more than a line.
 const NEAREST_WINDOW: usize = 256;
 
 /// Points per chain for a sweep of `points` points.
@@ -52,7 +52,7 @@ fn coordinates(c: &Conditions) -> [f64; 6] {
 /// the grid is finer across lines than along them, start each point from
 /// the line before, which may lie on another branch: the light-axial
 /// line of a heavy radial load.)
-fn nearest<'a>(
+fn warm_start<'a>(
     point: &Conditions,
     solved: &'a [(Conditions, Equilibrium)],
     scale: &[f64; 6],
@@ -98,7 +98,7 @@ fn solve_chunk(
     let mut out: Vec<Result<Equilibrium, QuasiStaticError>> = Vec::with_capacity(points.len());
     let mut solved: Vec<(Conditions, Equilibrium)> = Vec::with_capacity(points.len());
     for point in points {
-        let result = match nearest(point, &solved, &scale) {
+        let result = match warm_start(point, &solved, &scale) {
             Some(p) => solver.solve_from(p, point, options),
             None => solver.solve(point, options),
         };
@@ -152,7 +152,7 @@ mod tests {
     /// start of a line from the start of the line before, not from the
     /// end of the last line.
     #[test]
-    fn warm_starts_come_from_the_nearest_solved_point() {
+    fn warm_starts_come_from_the_latest_unless_another_is_twice_as_near() {
         let point = |rpm: f64, fz: f64| Conditions {
             loads: Loads {
                 force: [1000.0, 0.0, fz],
@@ -182,7 +182,7 @@ mod tests {
             }
         }
         let scale = [1000.0, 1000.0, 0.0, 1000.0, 0.0, 0.0];
-        let tag = |p: &Conditions| nearest(p, &solved, &scale).map(|e| e.iterations);
+        let tag = |p: &Conditions| warm_start(p, &solved, &scale).map(|e| e.iterations);
         assert_eq!(tag(&point(200.0, 0.0)), Some(100));
         assert_eq!(tag(&point(100.0, 1500.0)), Some(1100));
         // From (100 rpm, 1500 N): 0.5 to the latest (100 rpm, 1000 N),
@@ -191,7 +191,7 @@ mod tests {
         let mut e = eq.clone();
         e.iterations = 1300;
         partial.insert(2, (point(0.0, 1300.0), e));
-        let tag_partial = |p: &Conditions| nearest(p, &partial, &scale).map(|e| e.iterations);
+        let tag_partial = |p: &Conditions| warm_start(p, &partial, &scale).map(|e| e.iterations);
         assert_eq!(tag_partial(&point(100.0, 1500.0)), Some(1100));
         // …and from (100 rpm, 1350 N): 0.35 to the latest, 0.15 to
         // (0, 1300 N), more than twice as near.
@@ -199,7 +199,7 @@ mod tests {
         assert_eq!(tag(&point(0.0, 500.0)), Some(500));
         assert_eq!(tag(&point(0.0, 0.0)), Some(0));
         assert_eq!(
-            nearest(&point(0.0, 0.0), &[], &scale).map(|e| e.iterations),
+            warm_start(&point(0.0, 0.0), &[], &scale).map(|e| e.iterations),
             None
         );
     }
