@@ -412,7 +412,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
 }
 
 fn main() -> ExitCode {
-    match run(Cli::parse()) {
+    let cli = Cli::parse();
+    // The command runs on a thread of rayon's pool, so that the engine's
+    // parallel passes over the balls hand work to the other threads
+    // without waking this one from outside the pool each time.
+    match rayon::scope(|_| run(cli)) {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure::BadInput(msg)) => {
             eprintln!("error: {msg}");

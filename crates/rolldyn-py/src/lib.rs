@@ -304,7 +304,7 @@ fn run_options(force: bool) -> (RunOptions, Arc<AtomicBool>, Arc<AtomicU64>) {
     (options, stop, fraction)
 }
 
-/// Runs `work` on a worker thread with the GIL released; meanwhile, every
+/// Runs `work` on a worker thread (in rayon's pool) with the GIL released; meanwhile, every
 /// [`POLL`], checks for Ctrl-C (raising `stop`) and calls `callback` with
 /// the fraction in `progress`. Returns the work's result and whether a
 /// Ctrl-C stopped it.
@@ -317,7 +317,9 @@ fn watched<T: Send>(
 ) -> PyResult<(T, bool)> {
     let mut interrupted = false;
     let result = std::thread::scope(|scope| -> PyResult<T> {
-        let worker = scope.spawn(work);
+        // The work runs on a thread of rayon's pool (as the CLI does), so
+        // the engine's parallel passes over the balls stay inside the pool.
+        let worker = scope.spawn(|| rayon::scope(|_| work()));
         let mut last = f64::NAN;
         loop {
             let finished = py.detach(|| {

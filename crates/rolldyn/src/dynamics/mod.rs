@@ -14,6 +14,7 @@
 //! |---|---|
 //! | `model` | parameters, state → kinematics, equations of motion |
 //! | `layout` | offsets in the state vector |
+//! | `ball_pass` | the balls' contacts evaluated serially or across threads, summed in ball order |
 //! | `race_contact` | ball–raceway normal force, traction, hysteresis |
 //! | `pocket` | ball–pocket contact |
 //! | `drag` | air–oil drag on balls and cage |
@@ -24,6 +25,7 @@
 //! | `thermal_coupling` | the thermal network advanced alongside a run, oil viscosity fed back |
 //! | `checkpoint` | the model's memory (contact episodes, thermal network) in a run's checkpoint |
 
+mod ball_pass;
 pub mod checkpoint;
 pub mod drag;
 pub mod energy;

@@ -29,6 +29,7 @@
 //! bookkeeping is in [`super::energy`], output quantities in
 //! [`super::outputs`]. Gravity (optional) acts along −z.
 
+use super::ball_pass::BallPass;
 use super::drag::DragParameters;
 use super::layout::StateLayout;
 use super::race_contact::Want;
@@ -141,6 +142,8 @@ pub struct BearingModel {
     pub(super) episodes: Vec<[ContactEpisode; 2]>,
     /// Thermal network advanced alongside a run, if coupled.
     pub(super) thermal: Option<Box<super::thermal_coupling::ThermalCoupling>>,
+    /// The balls' contact evaluations, serial or across threads.
+    ball_pass: BallPass,
 }
 
 impl BearingModel {
@@ -192,6 +195,12 @@ impl BearingModel {
             },
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
             thermal: None,
+            ball_pass: BallPass::new(
+                geometry.ball_count,
+                params
+                    .traction
+                    .integrates_over_a_grid(&params.traction_integration),
+            ),
             geometry: geometry.clone(),
             params,
         })
@@ -376,19 +385,19 @@ impl BearingModel {
 /// rings and the cage, and dissipated power (the coupling vector of the
 /// block split, MODEL §8).
 #[derive(Debug, Clone, Copy, Default)]
-struct BallCoupling {
-    ring_force: Vector3<f64>,
-    ring_moment: Vector3<f64>,
-    outer_force: Vector3<f64>,
-    cage_force: Vector3<f64>,
-    cage_torque: f64,
-    dissipation: f64,
+pub(super) struct BallCoupling {
+    pub(super) ring_force: Vector3<f64>,
+    pub(super) ring_moment: Vector3<f64>,
+    pub(super) outer_force: Vector3<f64>,
+    pub(super) cage_force: Vector3<f64>,
+    pub(super) cage_torque: f64,
+    pub(super) dissipation: f64,
 }
 
 impl BallCoupling {
-    const LEN: usize = 14;
+    pub(super) const LEN: usize = 14;
 
-    fn add(&mut self, other: &Self) {
+    pub(super) fn add(&mut self, other: &Self) {
         self.ring_force += other.ring_force;
         self.ring_moment += other.ring_moment;
         self.outer_force += other.outer_force;
@@ -397,7 +406,7 @@ impl BallCoupling {
         self.dissipation += other.dissipation;
     }
 
-    fn write(&self, out: &mut [f64]) {
+    pub(super) fn write(&self, out: &mut [f64]) {
         out[0..3].copy_from_slice(self.ring_force.as_slice());
         out[3..6].copy_from_slice(self.ring_moment.as_slice());
         out[6..9].copy_from_slice(self.outer_force.as_slice());
@@ -668,20 +677,13 @@ impl BearingModel {
     fn rhs_with(&self, t: f64, y: &[f64], dy: &mut [f64], mut sink: Option<&mut Dissipation>) {
         let l = self.layout;
         let (inner, outer) = self.ring_motion(t, y);
-        let mut balls = BallCoupling::default();
-        for j in 0..l.balls {
-            let b = l.ball(j);
-            let coupling = self.ball_rhs(
-                j,
-                y,
-                &inner,
-                &outer,
-                &mut dy[b..b + l.ball_len()],
-                sink.as_deref_mut(),
-            );
-            balls.add(&coupling);
-        }
-        let (_, border) = dy.split_at_mut(l.ring());
+        let (dy_balls, border) = dy.split_at_mut(l.ring());
+        let balls = self.ball_pass.sum(
+            dy_balls,
+            l.ball_len(),
+            sink.as_deref_mut(),
+            |j, dy_ball, sink| self.ball_rhs(j, y, &inner, &outer, dy_ball, sink),
+        );
         self.border_rhs_with(t, y, &inner, &balls, border, sink);
     }
 
@@ -707,6 +709,10 @@ impl BlockSplit for BearingModel {
 
     fn coupling_len(&self) -> usize {
         BallCoupling::LEN
+    }
+
+    fn parallel(&self) -> bool {
+        self.ball_pass.is_parallel()
     }
 
     fn block_rhs(

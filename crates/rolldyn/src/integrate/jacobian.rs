@@ -16,6 +16,7 @@
 
 use super::OdeSystem;
 use super::linear::{BlockJacobian, BlockLayout};
+use rayon::prelude::*;
 
 /// A system whose right-hand side splits into blocks, each reading only
 /// its own states and the border, and a border part that sees the blocks
@@ -30,7 +31,7 @@ use super::linear::{BlockJacobian, BlockLayout};
 /// grid lost the spin-friction stiffness and cut the steps of a whirling
 /// 7008C cage from ~20 µs to ~1 µs (docs/performance.md), so the bearing
 /// uses its full model.
-pub trait BlockSplit {
+pub trait BlockSplit: Sync {
     /// The shape: blocks first, then the border.
     fn block_layout(&self) -> BlockLayout;
 
@@ -50,6 +51,13 @@ pub trait BlockSplit {
     /// Writes f_B for the summed coupling into `dy_border`.
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]);
 
+    /// Whether the blocks may be evaluated on several threads at once
+    /// (worth it when a block costs microseconds). The Jacobian is the
+    /// same either way. Default: no.
+    fn parallel(&self) -> bool {
+        false
+    }
+
     /// Whether column `state` of the Jacobian may be left zero: f does not
     /// depend on the state, or its derivative is identically zero so it
     /// never changes. Default: no state is inert.
@@ -67,18 +75,22 @@ pub struct JacobianWork {
     f_perturbed: Vec<f64>,
     couplings: Vec<f64>,
     coupling_sum: Vec<f64>,
-    coupling_perturbed: Vec<f64>,
     coupling_trial: Vec<f64>,
+    /// Per block: see [`SAVED`], [`DELTA`], [`SCRATCH`].
+    block_scratch: Vec<f64>,
+    block_stride: usize,
 }
 
 impl JacobianWork {
     /// Work space for `system`.
     pub fn new(system: &impl OdeSystem) -> Self {
         let n = system.dimension();
-        let (blocks, c) = system
+        let (layout, c) = system
             .blocks()
-            .map(|s| (s.block_layout().blocks, s.coupling_len()))
-            .unwrap_or((0, 0));
+            .map(|s| (s.block_layout(), s.coupling_len()))
+            .unwrap_or((BlockLayout::dense(n), 0));
+        let blocks = layout.blocks;
+        let block_stride = SCRATCH + layout.block_size.max(layout.border) + 2 * c;
         let mut scale = vec![0.0; n];
         system.error_scale(&mut scale);
         Self {
@@ -88,16 +100,22 @@ impl JacobianWork {
             f_perturbed: vec![0.0; n],
             couplings: vec![0.0; blocks * c],
             coupling_sum: vec![0.0; c],
-            coupling_perturbed: vec![0.0; c],
             coupling_trial: vec![0.0; c],
+            block_scratch: vec![0.0; blocks * block_stride],
+            block_stride,
         }
     }
 
     fn increment(&self, i: usize) -> f64 {
-        let h = f64::EPSILON.sqrt() * self.y[i].abs().max(self.scale[i]);
-        // An exactly representable increment: (y + δ) − y = δ.
-        (self.y[i] + h) - self.y[i]
+        increment(self.y[i], self.scale[i])
     }
+}
+
+/// Finite-difference increment of a state of value `y` and error scale
+/// `scale`, exactly representable: (y + δ) − y = δ.
+fn increment(y: f64, scale: f64) -> f64 {
+    let h = f64::EPSILON.sqrt() * y.abs().max(scale);
+    (y + h) - y
 }
 
 /// Evaluates ∂f/∂y at (t, y) into `jacobian` by finite differences,
@@ -150,58 +168,79 @@ fn by_blocks(
     debug_assert_eq!(jacobian.layout(), layout);
     let (b, m, start) = (layout.block_size, layout.border, layout.border_start());
     let c = split.coupling_len();
+    let parallel = split.parallel();
+    let stride = work.block_stride;
     let mut cost = 1;
     // Base values f_j, c_j, f_B of the split at the unperturbed point (the
     // split may be an approximation of the system's rhs).
+    let y = &work.y;
+    each_block2(
+        parallel,
+        (&mut work.f[..start], b),
+        (&mut work.couplings, c),
+        |j, f_j, c_j| split.block_rhs(t, y, j, f_j, c_j),
+    );
     work.coupling_sum.fill(0.0);
-    for j in 0..layout.blocks {
-        let cj = &mut work.couplings[j * c..(j + 1) * c];
-        split.block_rhs(t, &work.y, j, &mut work.f[j * b..(j + 1) * b], cj);
-        for (s, v) in work.coupling_sum.iter_mut().zip(cj.iter()) {
+    for cj in work.couplings.chunks(c) {
+        for (s, v) in work.coupling_sum.iter_mut().zip(cj) {
             *s += v;
         }
     }
     let (_, f_border) = work.f.split_at_mut(start);
     split.border_rhs(t, &work.y, &work.coupling_sum, f_border);
-    // Block columns: one sweep over all blocks per column index k.
+    // Block columns: column k of every block perturbed at once (block j's
+    // right-hand side reads only its own states and the border's), each
+    // block evaluated on its own.
     for k in 0..b {
         let mut swept = false;
-        for j in 0..layout.blocks {
+        for (j, scratch) in work.block_scratch.chunks_mut(stride).enumerate() {
             let col = j * b + k;
-            let diag = &mut jacobian.diag[j * b * b..(j + 1) * b * b];
-            let lower = &mut jacobian.lower[j * m * b..(j + 1) * m * b];
             if split.inert(col) {
-                (0..b).for_each(|r| diag[r * b + k] = 0.0);
-                (0..m).for_each(|r| lower[r * b + k] = 0.0);
                 continue;
             }
             swept = true;
-            let delta = work.increment(col);
-            let saved = work.y[col];
+            let delta = increment(work.y[col], work.scale[col]);
+            scratch[SAVED] = work.y[col];
+            scratch[DELTA] = delta;
             work.y[col] += delta;
-            split.block_rhs(
-                t,
-                &work.y,
-                j,
-                &mut work.f_perturbed[..b],
-                &mut work.coupling_perturbed,
-            );
-            work.y[col] = saved;
-            for r in 0..b {
-                diag[r * b + k] = (work.f_perturbed[r] - work.f[j * b + r]) / delta;
-            }
-            let cj = &work.couplings[j * c..(j + 1) * c];
-            for (trial, ((sum, perturbed), base)) in work.coupling_trial.iter_mut().zip(
-                work.coupling_sum
-                    .iter()
-                    .zip(&work.coupling_perturbed)
-                    .zip(cj),
-            ) {
-                *trial = sum + (perturbed - base);
-            }
-            split.border_rhs(t, &work.y, &work.coupling_trial, &mut work.f_perturbed[..m]);
-            for r in 0..m {
-                lower[r * b + k] = (work.f_perturbed[r] - work.f[start + r]) / delta;
+        }
+        let (y, f, couplings, sum) = (&work.y, &work.f, &work.couplings, &work.coupling_sum);
+        each_block3(
+            parallel,
+            (&mut jacobian.diag, b * b),
+            (&mut jacobian.lower, m * b),
+            (&mut work.block_scratch, stride),
+            |j, diag, lower, scratch| {
+                let col = j * b + k;
+                if split.inert(col) {
+                    (0..b).for_each(|r| diag[r * b + k] = 0.0);
+                    (0..m).for_each(|r| lower[r * b + k] = 0.0);
+                    return;
+                }
+                let delta = scratch[DELTA];
+                let (head, rest) = scratch[SCRATCH..].split_at_mut(b.max(m));
+                let (perturbed, trial) = rest.split_at_mut(c);
+                split.block_rhs(t, y, j, &mut head[..b], perturbed);
+                for r in 0..b {
+                    diag[r * b + k] = (head[r] - f[j * b + r]) / delta;
+                }
+                let cj = &couplings[j * c..(j + 1) * c];
+                for (tr, ((s, p), base)) in trial[..c]
+                    .iter_mut()
+                    .zip(sum.iter().zip(perturbed.iter()).zip(cj))
+                {
+                    *tr = s + (p - base);
+                }
+                split.border_rhs(t, y, &trial[..c], &mut head[..m]);
+                for r in 0..m {
+                    lower[r * b + k] = (head[r] - f[start + r]) / delta;
+                }
+            },
+        );
+        for (j, scratch) in work.block_scratch.chunks(stride).enumerate() {
+            let col = j * b + k;
+            if !split.inert(col) {
+                work.y[col] = scratch[SAVED];
             }
         }
         cost += u64::from(swept);
@@ -220,20 +259,23 @@ fn by_blocks(
         let delta = work.increment(col);
         let saved = work.y[col];
         work.y[col] += delta;
+        let (y, f) = (&work.y, &work.f);
+        each_block2(
+            parallel,
+            (&mut jacobian.upper, b * m),
+            (&mut work.block_scratch, stride),
+            |j, upper, scratch| {
+                let (head, rest) = scratch[SCRATCH..].split_at_mut(b.max(m));
+                split.block_rhs(t, y, j, &mut head[..b], &mut rest[..c]);
+                for r in 0..b {
+                    upper[r * m + p] = (head[r] - f[j * b + r]) / delta;
+                }
+            },
+        );
         work.coupling_trial.fill(0.0);
-        for j in 0..layout.blocks {
-            split.block_rhs(
-                t,
-                &work.y,
-                j,
-                &mut work.f_perturbed[..b],
-                &mut work.coupling_perturbed,
-            );
-            for r in 0..b {
-                jacobian.upper[j * b * m + r * m + p] =
-                    (work.f_perturbed[r] - work.f[j * b + r]) / delta;
-            }
-            for (s, v) in work.coupling_trial.iter_mut().zip(&work.coupling_perturbed) {
+        for scratch in work.block_scratch.chunks(stride) {
+            let perturbed = &scratch[SCRATCH + b.max(m)..SCRATCH + b.max(m) + c];
+            for (s, v) in work.coupling_trial.iter_mut().zip(perturbed) {
                 *s += v;
             }
         }
@@ -244,6 +286,61 @@ fn by_blocks(
         }
     }
     cost
+}
+
+/// Offsets in a block's scratch: the perturbed state's saved value and
+/// increment, then its right-hand side (max(b, m)), perturbed coupling (c)
+/// and trial coupling sum (c).
+const SAVED: usize = 0;
+const DELTA: usize = 1;
+const SCRATCH: usize = 2;
+
+/// `per_block(j, a_j, b_j)` for every block j, where a_j and b_j are the
+/// j-th chunks of the given lengths; across threads when `parallel`. Each
+/// block writes only its own chunks, so the result does not depend on the
+/// threads.
+fn each_block2<F>(parallel: bool, a: (&mut [f64], usize), b: (&mut [f64], usize), per_block: F)
+where
+    F: Fn(usize, &mut [f64], &mut [f64]) + Sync,
+{
+    if parallel {
+        a.0.par_chunks_mut(a.1)
+            .zip(b.0.par_chunks_mut(b.1))
+            .enumerate()
+            .for_each(|(j, (x, y))| per_block(j, x, y));
+    } else {
+        for (j, (x, y)) in a.0.chunks_mut(a.1).zip(b.0.chunks_mut(b.1)).enumerate() {
+            per_block(j, x, y);
+        }
+    }
+}
+
+/// [`each_block2`] with three chunked slices.
+fn each_block3<F>(
+    parallel: bool,
+    a: (&mut [f64], usize),
+    b: (&mut [f64], usize),
+    c: (&mut [f64], usize),
+    per_block: F,
+) where
+    F: Fn(usize, &mut [f64], &mut [f64], &mut [f64]) + Sync,
+{
+    if parallel {
+        a.0.par_chunks_mut(a.1)
+            .zip(b.0.par_chunks_mut(b.1))
+            .zip(c.0.par_chunks_mut(c.1))
+            .enumerate()
+            .for_each(|(j, ((x, y), z))| per_block(j, x, y, z));
+    } else {
+        for (j, ((x, y), z)) in
+            a.0.chunks_mut(a.1)
+                .zip(b.0.chunks_mut(b.1))
+                .zip(c.0.chunks_mut(c.1))
+                .enumerate()
+        {
+            per_block(j, x, y, z);
+        }
+    }
 }
 
 #[cfg(test)]

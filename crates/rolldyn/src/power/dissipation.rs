@@ -94,6 +94,19 @@ pub struct Dissipation {
 }
 
 impl Dissipation {
+    /// Adds `other`, component by component.
+    pub fn add(&mut self, other: &Self) {
+        self.inner.add(&other.inner);
+        self.outer.add(&other.outer);
+        self.pocket_friction += other.pocket_friction;
+        self.pocket_damping += other.pocket_damping;
+        self.guide_land += other.guide_land;
+        self.ball_drag += other.ball_drag;
+        self.cage_drag += other.cage_drag;
+        self.support_damping += other.support_damping;
+        self.drive_torque += other.drive_torque;
+    }
+
     /// Total dissipated power \[W\]: the rate of the energy balance's
     /// dissipated-energy accumulator.
     pub fn total(&self) -> f64 {

@@ -145,6 +145,17 @@ impl TractionModel {
         )
     }
 
+    /// Whether one contact's traction is integrated over many points
+    /// (FASTSIM's own grid, or a stress law on the strip grid), i.e. costs
+    /// microseconds rather than nanoseconds.
+    pub fn integrates_over_a_grid(&self, integration: &ellipse::TractionIntegration) -> bool {
+        match self {
+            Self::None => false,
+            Self::Fastsim(_) => true,
+            _ => matches!(integration, ellipse::TractionIntegration::Grid { .. }),
+        }
+    }
+
     /// Traction of one contact: FASTSIM integrates the ellipse itself, the
     /// stress laws are integrated by `integration` ([`ellipse::integrate`]).
     /// `slip_at_point` is the sliding velocity of ball material relative to

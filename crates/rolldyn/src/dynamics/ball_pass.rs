@@ -1,0 +1,187 @@
+//! The pass over the balls: each ball's contacts evaluated, serially or
+//! on all the threads of the current rayon pool, and their couplings to
+//! the rings and cage summed **in ball order**.
+//!
+//! The balls are independent given the ring and cage states (the
+//! bordered block structure of MODEL §8), so their contact evaluations can
+//! run at the same time. Each ball's coupling lands in its own slot and
+//! the slots are summed serially from ball 0, exactly as the serial pass
+//! sums them: the right-hand side is bit-identical whatever the number of
+//! threads, and whether the pass runs in parallel at all (tests below).
+//!
+//! The dissipated power by component (once per output sample) goes the
+//! same way: each ball's share in its slot, summed in ball order into the
+//! caller's sink, which is what the serial pass accumulates.
+//!
+//! Parallel only where it pays: a pass whose contacts integrate traction
+//! over a grid (EHL, traction curve or stress law on the strip grid, or
+//! FASTSIM) costs microseconds per ball, far above rayon's hand-over; a
+//! pass with traction at the contact centre (seed 000's 6304: ~1 µs per
+//! ball) stays serial. The slots are allocated once, with the model.
+
+use super::model::BallCoupling;
+use crate::power::Dissipation;
+use rayon::prelude::*;
+use std::sync::{Mutex, PoisonError};
+
+/// Fewest balls for which the pass runs in parallel.
+const MIN_PARALLEL_BALLS: usize = 4;
+
+/// One coupling slot per ball, reused by every right-hand side.
+#[derive(Debug, Default)]
+pub(super) struct BallPass {
+    /// Whether the balls are evaluated across threads.
+    parallel: bool,
+    slots: Mutex<Vec<(BallCoupling, Dissipation)>>,
+}
+
+impl BallPass {
+    /// Slots for `balls` balls; parallel when `expensive_contacts` (traction
+    /// integrated over a grid) and there are enough balls to share.
+    pub(super) fn new(balls: usize, expensive_contacts: bool) -> Self {
+        Self {
+            parallel: expensive_contacts && balls >= MIN_PARALLEL_BALLS,
+            slots: Mutex::new(vec![Default::default(); balls]),
+        }
+    }
+
+    /// Whether the pass runs across threads: worth it, and the current
+    /// rayon pool has more than one.
+    pub(super) fn is_parallel(&self) -> bool {
+        self.parallel && rayon::current_num_threads() > 1
+    }
+
+    /// Runs `ball(j, dy_j, sink)` for every ball (its derivatives go into
+    /// `dy_balls`' j-th chunk of `ball_len`, its dissipation into `sink`
+    /// when given) and returns the sum of the couplings, added in ball
+    /// order.
+    pub(super) fn sum<F>(
+        &self,
+        dy_balls: &mut [f64],
+        ball_len: usize,
+        mut sink: Option<&mut Dissipation>,
+        ball: F,
+    ) -> BallCoupling
+    where
+        F: Fn(usize, &mut [f64], Option<&mut Dissipation>) -> BallCoupling + Sync,
+    {
+        let mut total = BallCoupling::default();
+        if !self.is_parallel() {
+            for (j, dy) in dy_balls.chunks_mut(ball_len).enumerate() {
+                total.add(&ball(j, dy, sink.as_deref_mut()));
+            }
+            return total;
+        }
+        let split = sink.is_some();
+        // A poisoned lock only means another pass panicked mid-way; every
+        // slot is overwritten before it is read.
+        let mut slots = self.slots.lock().unwrap_or_else(PoisonError::into_inner);
+        slots
+            .par_iter_mut()
+            .zip(dy_balls.par_chunks_mut(ball_len))
+            .enumerate()
+            .for_each(|(j, ((coupling, power), dy))| {
+                *power = Dissipation::default();
+                *coupling = ball(j, dy, split.then_some(power));
+            });
+        for (coupling, power) in slots.iter() {
+            total.add(coupling);
+            if let Some(sink) = sink.as_deref_mut() {
+                sink.add(power);
+            }
+        }
+        total
+    }
+}
+
+impl Clone for BallPass {
+    /// A clone gets its own slots (a model clone evaluates independently).
+    fn clone(&self) -> Self {
+        let balls = self
+            .slots
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .len();
+        Self {
+            parallel: self.parallel,
+            slots: Mutex::new(vec![Default::default(); balls]),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector3;
+
+    /// Couplings whose sum depends on the order of addition in the last
+    /// bits (magnitudes spread over 1e-8…1e8).
+    fn ball(j: usize, dy: &mut [f64], sink: Option<&mut Dissipation>) -> BallCoupling {
+        let x = (j as f64 * 0.7).sin() * 10f64.powi((j % 17) as i32 - 8);
+        dy.fill(x);
+        if let Some(d) = sink {
+            d.inner.spin += x;
+            d.outer.hysteresis += x / 3.0;
+            d.pocket_friction += x * x;
+            d.ball_drag -= x / 5.0;
+        }
+        BallCoupling {
+            ring_force: Vector3::new(x, -x / 3.0, x * 1.1),
+            ring_moment: Vector3::new(x / 7.0, x, -x),
+            outer_force: Vector3::new(0.0, x / 9.0, x),
+            cage_force: Vector3::new(x, x, x / 11.0),
+            cage_torque: x / 13.0,
+            dissipation: x * x,
+        }
+    }
+
+    fn run(pass: &BallPass, balls: usize) -> (BallCoupling, Vec<f64>, Dissipation) {
+        let mut dy = vec![0.0; balls * 9];
+        let mut power = Dissipation::default();
+        let total = pass.sum(&mut dy, 9, Some(&mut power), ball);
+        (total, dy, power)
+    }
+
+    fn bits(c: &BallCoupling) -> Vec<u64> {
+        let mut out = [0.0; BallCoupling::LEN];
+        c.write(&mut out);
+        out.iter().map(|v| v.to_bits()).collect()
+    }
+
+    #[test]
+    fn parallel_pass_is_bit_identical_to_the_serial_one_on_any_pool() {
+        let balls = 40;
+        let (serial, dy_serial, power_serial) = run(&BallPass::new(balls, false), balls);
+        let parallel = BallPass::new(balls, true);
+        for threads in [1, 2, 3, 8] {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let (total, dy, power) = pool.install(|| run(&parallel, balls));
+            assert_eq!(bits(&total), bits(&serial), "{threads} threads");
+            assert_eq!(dy, dy_serial, "{threads} threads");
+            assert_eq!(
+                format!("{power:?}"),
+                format!("{power_serial:?}"),
+                "{threads} threads"
+            );
+        }
+    }
+
+    #[test]
+    fn few_balls_cheap_contacts_or_one_thread_stay_serial() {
+        let pool = |threads| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+        };
+        pool(2).install(|| {
+            assert!(!BallPass::new(3, true).is_parallel());
+            assert!(!BallPass::new(22, false).is_parallel());
+            assert!(BallPass::new(4, true).clone().is_parallel());
+        });
+        pool(1).install(|| assert!(!BallPass::new(22, true).is_parallel()));
+    }
+}
