@@ -127,33 +127,82 @@ impl BlockJacobian {
 }
 
 /// LU factorization of σI − J for a [`BlockJacobian`] J.
+///
+/// States marked **inert** have a zero column in J (nothing reads them, or
+/// they never change): row k of σI − J then reads σ x_k − Σ_c J_kc x_c = r_k
+/// with c over the other states only, and no other row contains x_k. The
+/// factorization leaves them out (a planar 6304 keeps 5 of 9 ball states
+/// and 6 of 22 border states) and the solve recovers them afterwards,
+/// x_k = (r_k + Σ_c J_kc x_c)/σ. A block state is left out when it is inert
+/// in every block.
 #[derive(Debug, Clone)]
 pub struct BlockLu {
     layout: BlockLayout,
-    /// LU of σI − Dⱼ, `blocks` × b × b, and pivots.
+    /// The active states: positions within a block, and within the border.
+    block_active: Vec<usize>,
+    border_active: Vec<usize>,
+    /// The inert ones.
+    block_inert: Vec<usize>,
+    border_inert: Vec<usize>,
+    sigma: f64,
+    /// LU of σI − Dⱼ on the active states, `blocks` × b' × b', and pivots.
     diag: Vec<f64>,
     diag_pivots: Vec<usize>,
-    /// Wⱼ = (σI − Dⱼ)⁻¹ (−Uⱼ), `blocks` × b × m.
+    /// Wⱼ = (σI − Dⱼ)⁻¹ (−Uⱼ), `blocks` × b' × m'.
     coupled: Vec<f64>,
-    /// −Lⱼ, `blocks` × m × b (copied so the Jacobian may change).
+    /// −Lⱼ, `blocks` × m' × b' (copied so the Jacobian may change).
     lower: Vec<f64>,
-    /// LU of the Schur complement, m × m, and pivots.
+    /// LU of the Schur complement, m' × m', and pivots.
     schur: Vec<f64>,
     schur_pivots: Vec<usize>,
+    /// Rows of J of the inert block states on the active states: per block
+    /// and inert state, b' entries of Dⱼ then m' of Uⱼ.
+    inert_block_rows: Vec<f64>,
+    /// Rows of J of the inert border states: per inert state, b' entries of
+    /// each Lⱼ, then m' of A.
+    inert_border_rows: Vec<f64>,
+    /// A block's and the border's active part of the vector being solved.
+    block_work: Vec<f64>,
+    border_work: Vec<f64>,
 }
 
 impl BlockLu {
-    /// Work space for matrices of this shape.
+    /// Work space for matrices of this shape, every state active.
     pub fn new(layout: BlockLayout) -> Self {
-        let (n, b, m) = (layout.blocks, layout.block_size, layout.border);
+        Self::with_inert(layout, |_| false)
+    }
+
+    /// Work space for matrices of this shape whose columns are zero for
+    /// the states `inert` marks (the Jacobian's inert states).
+    pub fn with_inert(layout: BlockLayout, inert: impl Fn(usize) -> bool) -> Self {
+        let (n, b, m, s) = (
+            layout.blocks,
+            layout.block_size,
+            layout.border,
+            layout.border_start(),
+        );
+        let (block_inert, block_active): (Vec<usize>, Vec<usize>) =
+            (0..b).partition(|&k| n > 0 && (0..n).all(|j| inert(j * b + k)));
+        let (border_inert, border_active): (Vec<usize>, Vec<usize>) =
+            (0..m).partition(|&r| inert(s + r));
+        let (ba, ma) = (block_active.len(), border_active.len());
         Self {
             layout,
-            diag: vec![0.0; n * b * b],
-            diag_pivots: vec![0; n * b],
-            coupled: vec![0.0; n * b * m],
-            lower: vec![0.0; n * m * b],
-            schur: vec![0.0; m * m],
-            schur_pivots: vec![0; m],
+            sigma: 0.0,
+            diag: vec![0.0; n * ba * ba],
+            diag_pivots: vec![0; n * ba],
+            coupled: vec![0.0; n * ba * ma],
+            lower: vec![0.0; n * ma * ba],
+            schur: vec![0.0; ma * ma],
+            schur_pivots: vec![0; ma],
+            inert_block_rows: vec![0.0; n * block_inert.len() * (ba + ma)],
+            inert_border_rows: vec![0.0; border_inert.len() * (n * ba + ma)],
+            block_work: vec![0.0; ba],
+            border_work: vec![0.0; ma],
+            block_active,
+            border_active,
+            block_inert,
+            border_inert,
         }
     }
 
@@ -165,84 +214,162 @@ impl BlockLu {
             "factorization and Jacobian shapes differ"
         );
         let (b, m) = (l.block_size, l.border);
-        for (s, a) in self.schur.iter_mut().zip(&jacobian.border) {
-            *s = -a;
+        let (ba, ma) = (self.block_active.len(), self.border_active.len());
+        self.sigma = sigma;
+        for (i, &r) in self.border_active.iter().enumerate() {
+            for (k, &c) in self.border_active.iter().enumerate() {
+                self.schur[i * ma + k] = -jacobian.border[r * m + c];
+            }
+            self.schur[i * ma + i] += sigma;
         }
-        for i in 0..m {
-            self.schur[i * m + i] += sigma;
+        let row_len = ba + ma;
+        for (q, &r) in self.border_inert.iter().enumerate() {
+            let row = &mut self.inert_border_rows[q * (l.blocks * ba + ma)..];
+            for j in 0..l.blocks {
+                for (k, &c) in self.block_active.iter().enumerate() {
+                    row[j * ba + k] = jacobian.lower[j * m * b + r * b + c];
+                }
+            }
+            for (k, &c) in self.border_active.iter().enumerate() {
+                row[l.blocks * ba + k] = jacobian.border[r * m + c];
+            }
         }
         for j in 0..l.blocks {
-            let d = &mut self.diag[j * b * b..(j + 1) * b * b];
-            for (x, a) in d.iter_mut().zip(&jacobian.diag[j * b * b..(j + 1) * b * b]) {
-                *x = -a;
+            let (jd, ju, jl) = (
+                &jacobian.diag[j * b * b..(j + 1) * b * b],
+                &jacobian.upper[j * b * m..(j + 1) * b * m],
+                &jacobian.lower[j * m * b..(j + 1) * m * b],
+            );
+            for (q, &r) in self.block_inert.iter().enumerate() {
+                let row = &mut self.inert_block_rows[(j * self.block_inert.len() + q) * row_len..]
+                    [..row_len];
+                for (k, &c) in self.block_active.iter().enumerate() {
+                    row[k] = jd[r * b + c];
+                }
+                for (k, &c) in self.border_active.iter().enumerate() {
+                    row[ba + k] = ju[r * m + c];
+                }
             }
-            for i in 0..b {
-                d[i * b + i] += sigma;
+            let d = &mut self.diag[j * ba * ba..(j + 1) * ba * ba];
+            for (i, &r) in self.block_active.iter().enumerate() {
+                for (k, &c) in self.block_active.iter().enumerate() {
+                    d[i * ba + k] = -jd[r * b + c];
+                }
+                d[i * ba + i] += sigma;
             }
-            let piv = &mut self.diag_pivots[j * b..(j + 1) * b];
-            lu_factor(d, b, piv)?;
-            let w = &mut self.coupled[j * b * m..(j + 1) * b * m];
-            for (x, u) in w
-                .iter_mut()
-                .zip(&jacobian.upper[j * b * m..(j + 1) * b * m])
-            {
-                *x = -u;
+            let piv = &mut self.diag_pivots[j * ba..(j + 1) * ba];
+            lu_factor(d, ba, piv)?;
+            let w = &mut self.coupled[j * ba * ma..(j + 1) * ba * ma];
+            for (i, &r) in self.block_active.iter().enumerate() {
+                for (k, &c) in self.border_active.iter().enumerate() {
+                    w[i * ma + k] = -ju[r * m + c];
+                }
             }
-            lu_solve_rows(d, b, piv, w, m);
-            let lower = &mut self.lower[j * m * b..(j + 1) * m * b];
-            for (x, v) in lower
-                .iter_mut()
-                .zip(&jacobian.lower[j * m * b..(j + 1) * m * b])
-            {
-                *x = -v;
+            lu_solve_rows(d, ba, piv, w, ma);
+            let lower = &mut self.lower[j * ma * ba..(j + 1) * ma * ba];
+            for (i, &r) in self.border_active.iter().enumerate() {
+                for (k, &c) in self.block_active.iter().enumerate() {
+                    lower[i * ba + k] = -jl[r * b + c];
+                }
             }
             // S −= (−Lⱼ) Wⱼ
-            for r in 0..m {
-                let srow = &mut self.schur[r * m..(r + 1) * m];
-                for k in 0..b {
-                    let coefficient = lower[r * b + k];
+            for r in 0..ma {
+                let srow = &mut self.schur[r * ma..(r + 1) * ma];
+                for k in 0..ba {
+                    let coefficient = lower[r * ba + k];
                     if coefficient != 0.0 {
-                        for (s, wk) in srow.iter_mut().zip(&w[k * m..(k + 1) * m]) {
+                        for (s, wk) in srow.iter_mut().zip(&w[k * ma..(k + 1) * ma]) {
                             *s -= coefficient * wk;
                         }
                     }
                 }
             }
         }
-        lu_factor(&mut self.schur, m, &mut self.schur_pivots)
+        lu_factor(&mut self.schur, ma, &mut self.schur_pivots)
     }
 
     /// Solves (σI − J) x = r in place (`x` holds r on entry).
-    pub fn solve(&self, x: &mut [f64]) {
+    pub fn solve(&mut self, x: &mut [f64]) {
         let l = self.layout;
-        let (b, m, s) = (l.block_size, l.border, l.border_start());
+        let (b, s) = (l.block_size, l.border_start());
+        let (ba, ma) = (self.block_active.len(), self.border_active.len());
         let (blocks, border) = x.split_at_mut(s);
-        // zⱼ = (σI − Dⱼ)⁻¹ rⱼ; r_B −= Σ (−Lⱼ) zⱼ.
+        let xb = &mut self.border_work;
+        for (v, &r) in xb.iter_mut().zip(&self.border_active) {
+            *v = border[r];
+        }
+        // zⱼ = (σI − Dⱼ)⁻¹ rⱼ (kept in x); r_B −= Σ (−Lⱼ) zⱼ.
         for j in 0..l.blocks {
-            let z = &mut blocks[j * b..(j + 1) * b];
+            let block = &mut blocks[j * b..(j + 1) * b];
+            let z = &mut self.block_work;
+            for (v, &k) in z.iter_mut().zip(&self.block_active) {
+                *v = block[k];
+            }
             lu_solve(
-                &self.diag[j * b * b..(j + 1) * b * b],
-                b,
-                &self.diag_pivots[j * b..(j + 1) * b],
+                &self.diag[j * ba * ba..(j + 1) * ba * ba],
+                ba,
+                &self.diag_pivots[j * ba..(j + 1) * ba],
                 z,
             );
-            let lower = &self.lower[j * m * b..(j + 1) * m * b];
-            for (r, xb) in border.iter_mut().enumerate() {
-                let row = &lower[r * b..(r + 1) * b];
-                *xb -= row.iter().zip(z.iter()).map(|(a, z)| a * z).sum::<f64>();
+            for (v, &k) in z.iter().zip(&self.block_active) {
+                block[k] = *v;
+            }
+            let lower = &self.lower[j * ma * ba..(j + 1) * ma * ba];
+            for (r, v) in xb.iter_mut().enumerate() {
+                let row = &lower[r * ba..(r + 1) * ba];
+                *v -= row.iter().zip(z.iter()).map(|(a, z)| a * z).sum::<f64>();
             }
         }
-        lu_solve(&self.schur, m, &self.schur_pivots, border);
-        // xⱼ = zⱼ − Wⱼ x_B.
+        lu_solve(&self.schur, ma, &self.schur_pivots, xb);
+        for (v, &r) in xb.iter().zip(&self.border_active) {
+            border[r] = *v;
+        }
+        // xⱼ = zⱼ − Wⱼ x_B; then the inert states of the block.
+        let row_len = ba + ma;
         for j in 0..l.blocks {
-            let w = &self.coupled[j * b * m..(j + 1) * b * m];
-            for (k, xk) in blocks[j * b..(j + 1) * b].iter_mut().enumerate() {
-                *xk -= w[k * m..(k + 1) * m]
+            let w = &self.coupled[j * ba * ma..(j + 1) * ba * ma];
+            let block = &mut blocks[j * b..(j + 1) * b];
+            for (i, &k) in self.block_active.iter().enumerate() {
+                block[k] -= w[i * ma..(i + 1) * ma]
                     .iter()
-                    .zip(border.iter())
+                    .zip(xb.iter())
                     .map(|(a, x)| a * x)
                     .sum::<f64>();
             }
+            for (q, &k) in self.block_inert.iter().enumerate() {
+                let row =
+                    &self.inert_block_rows[(j * self.block_inert.len() + q) * row_len..][..row_len];
+                let coupled: f64 = row[..ba]
+                    .iter()
+                    .zip(&self.block_active)
+                    .map(|(a, &c)| a * block[c])
+                    .sum::<f64>()
+                    + row[ba..]
+                        .iter()
+                        .zip(xb.iter())
+                        .map(|(a, x)| a * x)
+                        .sum::<f64>();
+                block[k] = (block[k] + coupled) / self.sigma;
+            }
+        }
+        // The inert border states.
+        for (q, &r) in self.border_inert.iter().enumerate() {
+            let row = &self.inert_border_rows[q * (l.blocks * ba + ma)..][..l.blocks * ba + ma];
+            let mut coupled = 0.0;
+            for j in 0..l.blocks {
+                let block = &blocks[j * b..(j + 1) * b];
+                coupled += row[j * ba..(j + 1) * ba]
+                    .iter()
+                    .zip(&self.block_active)
+                    .map(|(a, &c)| a * block[c])
+                    .sum::<f64>();
+            }
+            coupled += row[l.blocks * ba..]
+                .iter()
+                .zip(xb.iter())
+                .map(|(a, x)| a * x)
+                .sum::<f64>();
+            border[r] = (border[r] + coupled) / self.sigma;
         }
     }
 }
@@ -389,6 +516,82 @@ mod tests {
             for sigma in [0.01, 1.0, 100.0] {
                 let r = residual(layout, sigma);
                 assert!(r < 1e-10, "{layout:?} σ {sigma}: residual {r:e}");
+            }
+        }
+    }
+
+    /// With zero Jacobian columns for some states (inert in every block,
+    /// and in the border), the reduced factorization solves the full
+    /// system to round-off, and equals the factorization that keeps them.
+    #[test]
+    fn inert_states_are_left_out_and_recovered() {
+        let layout = BlockLayout {
+            blocks: 4,
+            block_size: 9,
+            border: 22,
+        };
+        let (b, s) = (layout.block_size, layout.border_start());
+        let inert = |state: usize| {
+            if state < s {
+                matches!(state % b, 0 | 3 | 7 | 8)
+            } else {
+                matches!(state - s, 0 | 3 | 4 | 5 | 8 | 9 | 10..=13 | 20 | 21)
+            }
+        };
+        let n = layout.dimension();
+        let mut jac = sample(layout);
+        // Zero the inert columns.
+        let mut full = vec![0.0; n * n];
+        for r in 0..n {
+            for c in 0..n {
+                full[r * n + c] = if inert(c) { 0.0 } else { jac.get(r, c) };
+            }
+        }
+        let mut zeroed = BlockJacobian::zeros(layout);
+        for j in 0..layout.blocks {
+            for r in 0..b {
+                for c in 0..b {
+                    zeroed.diag[j * b * b + r * b + c] = full[(j * b + r) * n + j * b + c];
+                }
+                for c in 0..layout.border {
+                    zeroed.upper[j * b * layout.border + r * layout.border + c] =
+                        full[(j * b + r) * n + s + c];
+                }
+            }
+            for r in 0..layout.border {
+                for c in 0..b {
+                    zeroed.lower[j * layout.border * b + r * b + c] = full[(s + r) * n + j * b + c];
+                }
+            }
+        }
+        for r in 0..layout.border {
+            for c in 0..layout.border {
+                zeroed.border[r * layout.border + c] = full[(s + r) * n + s + c];
+            }
+        }
+        jac = zeroed;
+        let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
+        for sigma in [0.01, 1.0, 100.0] {
+            let mut reduced = BlockLu::with_inert(layout, inert);
+            assert_eq!(reduced.block_active.len(), 5);
+            assert_eq!(reduced.border_active.len(), 10);
+            reduced.factor(&jac, sigma).unwrap();
+            let mut x = rhs.clone();
+            reduced.solve(&mut x);
+            let mut kept = BlockLu::new(layout);
+            kept.factor(&jac, sigma).unwrap();
+            let mut x_kept = rhs.clone();
+            kept.solve(&mut x_kept);
+            let mut jx = vec![0.0; n];
+            jac.multiply(&x, &mut jx);
+            for i in 0..n {
+                let r = (sigma * x[i] - jx[i] - rhs[i]).abs();
+                assert!(r < 1e-10, "σ {sigma}, state {i}: residual {r:e}");
+                let d = (x[i] - x_kept[i]).abs();
+                assert!(
+                    d < 1e-9 * (1.0 + x_kept[i].abs()),
+                    "σ {sigma}, state {i}: {d:e}"
+                );
             }
         }
     }

@@ -257,7 +257,10 @@ impl Rosenbrock {
             error: vec![0.0; n],
             atol,
             jacobian: BlockJacobian::zeros(layout),
-            lu: BlockLu::new(layout),
+            lu: match system.blocks() {
+                Some(split) => BlockLu::with_inert(layout, |state| split.inert(state)),
+                None => BlockLu::new(layout),
+            },
             work: JacobianWork::new(system),
             jacobian_age: None,
             factored_step: None,
