@@ -457,7 +457,7 @@ pub fn evaluate(
             ));
         }
         (m, None) => m.evaluate(
-            integration,
+            &rolldyn::traction::TractionGrid::new(integration),
             &patch,
             &Vector3::zeros(),
             &slip,

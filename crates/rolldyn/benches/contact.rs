@@ -10,7 +10,8 @@ use rolldyn::contact::{GrooveCircle, HertzModel, RingPose};
 use rolldyn::material::{Material, effective_modulus};
 use rolldyn::traction::fastsim::combined_elastic_constants;
 use rolldyn::traction::{
-    ContactConditions, ContactPatch, Fastsim, ModifiedCoulomb, TractionIntegration, TractionModel,
+    ContactConditions, ContactPatch, Fastsim, ModifiedCoulomb, TractionGrid, TractionIntegration,
+    TractionModel,
 };
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, RingKind};
 use std::hint::black_box;
@@ -119,10 +120,11 @@ fn main() {
         stick_speed: 0.0,
         full_speed: 1e-3,
     });
+    let grid = TractionGrid::new(TractionIntegration::default());
     time_per_call("Coulomb stress law on the 12 × 6 grid", 200_000, |i| {
         coulomb
             .evaluate(
-                TractionIntegration::default(),
+                &grid,
                 &patch,
                 &Vector3::zeros(),
                 &slip(i),

@@ -50,8 +50,8 @@ use crate::operating::{LoadProfile, SpeedProfile};
 use crate::power::Dissipation;
 use crate::quasistatic::Equilibrium;
 use crate::surface::SurfaceModel;
-use crate::traction::TractionModel;
 use crate::traction::ellipse::TractionIntegration;
+use crate::traction::{TractionGrid, TractionModel};
 use nalgebra::{Rotation3, Vector3};
 
 /// Everything the dynamic model needs besides geometry and materials.
@@ -144,6 +144,8 @@ pub struct BearingModel {
     pub(super) thermal: Option<Box<super::thermal_coupling::ThermalCoupling>>,
     /// The balls' contact evaluations, serial or across threads.
     ball_pass: BallPass,
+    /// The traction grid of `params.traction_integration`, prepared.
+    pub(super) traction_grid: TractionGrid,
 }
 
 impl BearingModel {
@@ -195,6 +197,7 @@ impl BearingModel {
             },
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
             thermal: None,
+            traction_grid: TractionGrid::new(params.traction_integration),
             ball_pass: BallPass::new(
                 geometry.ball_count,
                 params

@@ -232,7 +232,7 @@ impl BearingModel {
                 f.evaluate_mapped(&patch, q, &slip, &relative_spin, &conditions, map)
             }
             _ => model.evaluate(
-                self.params.traction_integration,
+                &self.traction_grid,
                 &patch,
                 q,
                 &slip,

@@ -128,6 +128,7 @@ impl Dissipation {
 
 #[cfg(test)]
 mod tests {
+    use crate::traction::TractionGrid;
     use crate::traction::ellipse::{ContactPatch, TractionIntegration, integrate};
     use crate::traction::{ContactConditions, ModifiedCoulomb};
     use nalgebra::Vector3;
@@ -155,7 +156,7 @@ mod tests {
         let conditions = ContactConditions::default();
         integrate(
             &law,
-            method,
+            &TractionGrid::new(method),
             &patch,
             &Vector3::zeros(),
             &slip,

@@ -228,6 +228,7 @@ mod tests {
     use crate::contact::{Curvature, HertzCoefficients};
     use crate::material::{Material, effective_modulus};
     use crate::math::roots::brent;
+    use crate::traction::TractionGrid;
     use crate::traction::ellipse::{ContactPatch, TractionIntegration, integrate};
     use crate::traction::{ContactConditions, ModifiedCoulomb};
     use nalgebra::Vector3;
@@ -312,10 +313,11 @@ mod tests {
         };
         let law = coulomb(0.1);
         let cond = ContactConditions::default();
+        let grid = TractionGrid::new(method);
         let eval = |s0: f64| {
             integrate(
                 &law,
-                method,
+                &grid,
                 &p,
                 &Vector3::zeros(),
                 &Vector3::new(0.0, s0, 0.0),
@@ -344,10 +346,10 @@ mod tests {
         let omega_s = 300.0;
         let res = integrate(
             &coulomb(0.1),
-            TractionIntegration::Grid {
+            &TractionGrid::new(TractionIntegration::Grid {
                 across: 48,
                 along: 24,
-            },
+            }),
             &p,
             &Vector3::zeros(),
             &Vector3::zeros(),

@@ -91,13 +91,70 @@ pub struct TractionResult {
     pub creep: Option<Creep>,
 }
 
+/// The strip grid of a [`TractionIntegration`] over the unit ellipse,
+/// prepared once (a model keeps one): per strip its position s and
+/// half-width w = √(1 − s²), per cell its position t along the strip and
+/// the unit Hertz shape √(1 − s² − t²), and Σ shape · w for the
+/// normalisation. These depend on the grid only; [`integrate`] scales
+/// them by the contact's semi-axes and load, with the same arithmetic as
+/// evaluating them in place.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TractionGrid {
+    method: TractionIntegration,
+    /// (s, w) per strip.
+    strips: Vec<(f64, f64)>,
+    /// (t, shape) per cell, strip by strip.
+    cells: Vec<(f64, f64)>,
+    /// Σ shape · w over the cells.
+    shape_sum: f64,
+}
+
+impl TractionGrid {
+    /// Prepares the grid of `method` (nothing for the contact centre).
+    pub fn new(method: TractionIntegration) -> Self {
+        let mut grid = Self {
+            method,
+            strips: Vec::new(),
+            cells: Vec::new(),
+            shape_sum: 0.0,
+        };
+        if let TractionIntegration::Grid { across, along } = method {
+            let (across, along) = (across.max(1), along.max(1));
+            let ds = 2.0 / across as f64;
+            for i in 0..across {
+                let s = -1.0 + (i as f64 + 0.5) * ds;
+                let w = (1.0 - s * s).sqrt();
+                grid.strips.push((s, w));
+                for k in 0..along {
+                    let t = w * (-1.0 + (k as f64 + 0.5) * 2.0 / along as f64);
+                    let shape = (1.0 - s * s - t * t).max(0.0).sqrt();
+                    grid.cells.push((t, shape));
+                    grid.shape_sum += shape * w;
+                }
+            }
+        }
+        grid
+    }
+
+    /// The integration it prepares.
+    pub fn method(&self) -> TractionIntegration {
+        self.method
+    }
+}
+
+impl From<TractionIntegration> for TractionGrid {
+    fn from(method: TractionIntegration) -> Self {
+        Self::new(method)
+    }
+}
+
 /// Integrates `law` over `patch` for ball centre `ball_centre`, sliding
 /// velocity at P `slip_at_point` (ball relative to ring, full vector) and
 /// relative angular velocity `relative_spin` (ω_b − ω_ring), under the
 /// contact's `conditions` (film, entrainment). Allocation-free.
 pub fn integrate<L: TractionLaw>(
     law: &L,
-    method: TractionIntegration,
+    grid: &TractionGrid,
     patch: &ContactPatch,
     ball_centre: &Vector3<f64>,
     slip_at_point: &Vector3<f64>,
@@ -120,7 +177,7 @@ pub fn integrate<L: TractionLaw>(
         out.couple += (x - patch.point).cross(&df);
         out.dissipation -= df.dot(&s_t);
     };
-    match method {
+    match grid.method {
         TractionIntegration::Centre => {
             let area = std::f64::consts::PI * a * b;
             add(patch.point, n, patch.load / area, area);
@@ -128,21 +185,9 @@ pub fn integrate<L: TractionLaw>(
         TractionIntegration::Grid { across, along } => {
             let (across, along) = (across.max(1), along.max(1));
             let ds = 2.0 / across as f64;
-            // Σ p dA with the unscaled Hertz shape (p₀ = 1), to normalise.
-            let mut raw = 0.0;
-            for i in 0..across {
-                let s = -1.0 + (i as f64 + 0.5) * ds;
-                let w = (1.0 - s * s).sqrt();
-                for k in 0..along {
-                    let t = w * (-1.0 + (k as f64 + 0.5) * 2.0 / along as f64);
-                    raw += (1.0 - s * s - t * t).max(0.0).sqrt() * w;
-                }
-            }
             let cell = a * ds * b * 2.0 / along as f64;
-            let p_scale = patch.load / (raw * cell);
-            for i in 0..across {
-                let s = -1.0 + (i as f64 + 0.5) * ds;
-                let w = (1.0 - s * s).sqrt();
+            let p_scale = patch.load / (grid.shape_sum * cell);
+            for (&(s, w), cells) in grid.strips.iter().zip(grid.cells.chunks(along)) {
                 let xi = a * s;
                 let (sin_t, drop) = if patch.deformed_radius.is_finite() {
                     let r = patch.deformed_radius;
@@ -154,10 +199,13 @@ pub fn integrate<L: TractionLaw>(
                 let cos_t = (1.0 - sin_t * sin_t).sqrt();
                 let local_normal = cos_t * n + sin_t * e_across;
                 let base = patch.point + xi * e_across - drop * n;
-                for k in 0..along {
-                    let t = w * (-1.0 + (k as f64 + 0.5) * 2.0 / along as f64);
-                    let pressure = p_scale * (1.0 - s * s - t * t).max(0.0).sqrt();
-                    add(base + b * t * e_roll, local_normal, pressure, cell * w);
+                for &(t, shape) in cells {
+                    add(
+                        base + b * t * e_roll,
+                        local_normal,
+                        p_scale * shape,
+                        cell * w,
+                    );
                 }
             }
         }
@@ -207,7 +255,7 @@ mod tests {
         ] {
             let r = integrate(
                 &coulomb(),
-                method,
+                &TractionGrid::new(method),
                 &p,
                 &q,
                 &slip,
@@ -234,7 +282,7 @@ mod tests {
         let moment = |across, along| {
             let r = integrate(
                 &coulomb(),
-                TractionIntegration::Grid { across, along },
+                &TractionGrid::new(TractionIntegration::Grid { across, along }),
                 &p,
                 &p.point,
                 &Vector3::zeros(),
@@ -269,10 +317,10 @@ mod tests {
         let spin = Vector3::new(0.0, 500.0, 0.0);
         let flat = integrate(
             &coulomb(),
-            TractionIntegration::Grid {
+            &TractionGrid::new(TractionIntegration::Grid {
                 across: 12,
                 along: 6,
-            },
+            }),
             &patch(),
             &Vector3::zeros(),
             &Vector3::zeros(),
@@ -281,10 +329,10 @@ mod tests {
         );
         let curved = integrate(
             &coulomb(),
-            TractionIntegration::Grid {
+            &TractionGrid::new(TractionIntegration::Grid {
                 across: 12,
                 along: 6,
-            },
+            }),
             &p,
             &Vector3::zeros(),
             &Vector3::zeros(),

@@ -47,7 +47,7 @@ pub fn require_friction(
 }
 pub use curve::{SlipMeasure, TractionCurve};
 pub use ehl::EhlRheology;
-pub use ellipse::{ContactPatch, TractionIntegration, TractionResult};
+pub use ellipse::{ContactPatch, TractionGrid, TractionIntegration, TractionResult};
 pub use fastsim::{Creep, Fastsim, TractionBound};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
@@ -157,12 +157,12 @@ impl TractionModel {
     }
 
     /// Traction of one contact: FASTSIM integrates the ellipse itself, the
-    /// stress laws are integrated by `integration` ([`ellipse::integrate`]).
+    /// stress laws are integrated over `grid` ([`ellipse::integrate`]).
     /// `slip_at_point` is the sliding velocity of ball material relative to
     /// ring material at P, `relative_spin` ω_b − ω_ring. Allocation-free.
     pub fn evaluate(
         &self,
-        integration: TractionIntegration,
+        grid: &ellipse::TractionGrid,
         patch: &ContactPatch,
         ball_centre: &Vector3<f64>,
         slip_at_point: &Vector3<f64>,
@@ -173,7 +173,7 @@ impl TractionModel {
             Self::None => TractionResult::default(),
             Self::ModifiedCoulomb(m) => ellipse::integrate(
                 m,
-                integration,
+                grid,
                 patch,
                 ball_centre,
                 slip_at_point,
@@ -182,7 +182,7 @@ impl TractionModel {
             ),
             Self::TractionCurve(c) => ellipse::integrate(
                 c,
-                integration,
+                grid,
                 patch,
                 ball_centre,
                 slip_at_point,
@@ -191,7 +191,7 @@ impl TractionModel {
             ),
             Self::Ehl(e) => ellipse::integrate(
                 e,
-                integration,
+                grid,
                 patch,
                 ball_centre,
                 slip_at_point,
