@@ -24,7 +24,7 @@
 //! area πab. It is exact for Coulomb friction at uniform slip; it ignores
 //! spin and differential slip.
 
-use super::{ContactConditions, Creep, TractionLaw};
+use super::{BATCH, ContactConditions, Creep, TractionLaw};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
@@ -169,18 +169,24 @@ pub fn integrate<L: TractionLaw>(
     let e_roll = patch.rolling_direction;
     let e_across = n.cross(&e_roll);
     let (a, b) = (patch.semi_major, patch.semi_minor);
-    let mut add = |x: Vector3<f64>, normal: Vector3<f64>, pressure: f64, area: f64| {
-        let s = slip_at_point + relative_spin.cross(&(x - patch.point));
-        let s_t = s - s.dot(&normal) * normal;
-        let df = law.shear_stress(pressure, &s_t, conditions) * area;
-        out.force += df;
-        out.couple += (x - patch.point).cross(&df);
-        out.dissipation -= df.dot(&s_t);
-    };
+    // The cell at X with tangential slip s_t takes dF: force, couple about
+    // P and dissipated power.
+    let accumulate =
+        |out: &mut TractionResult, x: Vector3<f64>, s_t: &Vector3<f64>, df: Vector3<f64>| {
+            out.force += df;
+            out.couple += (x - patch.point).cross(&df);
+            out.dissipation -= df.dot(s_t);
+        };
     match grid.method {
         TractionIntegration::Centre => {
             let area = std::f64::consts::PI * a * b;
-            add(patch.point, n, patch.load / area, area);
+            // (The spin term vanishes at P; kept so the arithmetic is the
+            // grid's.)
+            let x = patch.point;
+            let s = slip_at_point + relative_spin.cross(&(x - patch.point));
+            let s_t = s - s.dot(&n) * n;
+            let df = law.shear_stress(patch.load / area, &s_t, conditions) * area;
+            accumulate(&mut out, x, &s_t, df);
         }
         TractionIntegration::Grid { across, along } => {
             let (across, along) = (across.max(1), along.max(1));
@@ -199,13 +205,29 @@ pub fn integrate<L: TractionLaw>(
                 let cos_t = (1.0 - sin_t * sin_t).sqrt();
                 let local_normal = cos_t * n + sin_t * e_across;
                 let base = patch.point + xi * e_across - drop * n;
-                for &(t, shape) in cells {
-                    add(
-                        base + b * t * e_roll,
-                        local_normal,
-                        p_scale * shape,
-                        cell * w,
+                let area = cell * w;
+                for batch in cells.chunks(BATCH) {
+                    let m = batch.len();
+                    let mut points = [Vector3::zeros(); BATCH];
+                    let mut pressures = [0.0; BATCH];
+                    let mut slips = [Vector3::zeros(); BATCH];
+                    let mut stresses = [Vector3::zeros(); BATCH];
+                    for (k, &(t, shape)) in batch.iter().enumerate() {
+                        let x = base + b * t * e_roll;
+                        let s = slip_at_point + relative_spin.cross(&(x - patch.point));
+                        slips[k] = s - s.dot(&local_normal) * local_normal;
+                        points[k] = x;
+                        pressures[k] = p_scale * shape;
+                    }
+                    law.shear_stresses(
+                        &pressures[..m],
+                        &slips[..m],
+                        conditions,
+                        &mut stresses[..m],
                     );
+                    for k in 0..m {
+                        accumulate(&mut out, points[k], &slips[k], stresses[k] * area);
+                    }
                 }
             }
         }

@@ -76,7 +76,27 @@ pub trait TractionLaw {
         slip: &Vector3<f64>,
         conditions: &ContactConditions,
     ) -> Vector3<f64>;
+
+    /// [`Self::shear_stress`] of up to [`BATCH`] cells at once, into
+    /// `stresses` (same length as `pressures` and `slips`). A law may
+    /// override it to evaluate the cells stage by stage (independent
+    /// square roots and divisions overlap in the processor), with the same
+    /// arithmetic per cell. Default: cell by cell.
+    fn shear_stresses(
+        &self,
+        pressures: &[f64],
+        slips: &[Vector3<f64>],
+        conditions: &ContactConditions,
+        stresses: &mut [Vector3<f64>],
+    ) {
+        for ((p, s), out) in pressures.iter().zip(slips).zip(stresses.iter_mut()) {
+            *out = self.shear_stress(*p, s, conditions);
+        }
+    }
 }
+
+/// Most cells a traction law is handed at once ([`TractionLaw::shear_stresses`]).
+pub const BATCH: usize = 8;
 
 /// The built-in traction models (case file: `model.traction`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
