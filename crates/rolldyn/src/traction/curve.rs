@@ -16,7 +16,7 @@
 //! dimensionless load, speed and temperature that the paper does not
 //! define; rolldyn ships no preset from it (MODEL §3).
 
-use super::{ContactConditions, TractionLaw};
+use super::{BATCH, ContactConditions, TractionLaw};
 use crate::error::{InvalidParameter, require_positive};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
@@ -95,6 +95,38 @@ impl TractionLaw for TractionCurve {
         };
         let ramp = (speed / self.full_speed).min(1.0);
         -(ramp * self.coefficient(s) * pressure / speed) * slip
+    }
+
+    /// Slip speeds of all cells first, then the stresses (same arithmetic
+    /// per cell as [`Self::shear_stress`]).
+    #[inline]
+    fn shear_stresses(
+        &self,
+        pressures: &[f64],
+        slips: &[Vector3<f64>],
+        conditions: &ContactConditions,
+        stresses: &mut [Vector3<f64>],
+    ) {
+        let n = pressures.len().min(BATCH);
+        let mut speed = [0.0; BATCH];
+        for k in 0..n {
+            speed[k] = slips[k].norm();
+        }
+        for k in 0..n {
+            let (v, pressure) = (speed[k], pressures[k]);
+            stresses[k] = if v == 0.0 || pressure <= 0.0 {
+                Vector3::zeros()
+            } else {
+                let s = match self.slip {
+                    SlipMeasure::SlideToRoll => {
+                        v / conditions.entrainment_speed.max(self.full_speed)
+                    }
+                    SlipMeasure::SlipSpeed => v,
+                };
+                let ramp = (v / self.full_speed).min(1.0);
+                -(ramp * self.coefficient(s) * pressure / v) * slips[k]
+            };
+        }
     }
 }
 

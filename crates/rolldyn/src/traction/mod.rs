@@ -235,3 +235,91 @@ impl TractionModel {
         }
     }
 }
+
+#[cfg(test)]
+mod batch_tests {
+    use super::*;
+    use crate::lubrication::Lubricant;
+
+    /// Cells spread over slips from 0 to 10 m/s and pressures from 0 to
+    /// 3 GPa, with the edge cases each law guards (zero slip, zero
+    /// pressure).
+    fn cells() -> (Vec<f64>, Vec<Vector3<f64>>) {
+        let (mut p, mut s) = (Vec::new(), Vec::new());
+        for k in 0..23 {
+            let f = k as f64;
+            p.push(if k % 7 == 3 {
+                0.0
+            } else {
+                3e9 * (0.37 * f).sin().abs()
+            });
+            let v = 10f64.powf(-6.0 + 0.33 * f);
+            s.push(if k % 5 == 2 {
+                Vector3::zeros()
+            } else {
+                v * Vector3::new((0.7 * f).cos(), (0.7 * f).sin(), 0.0)
+            });
+        }
+        (p, s)
+    }
+
+    fn assert_batch_is_cell_by_cell(law: &impl TractionLaw, conditions: &ContactConditions) {
+        let (p, s) = cells();
+        for (pc, sc) in p.chunks(BATCH).zip(s.chunks(BATCH)) {
+            let mut batch = [Vector3::zeros(); BATCH];
+            law.shear_stresses(pc, sc, conditions, &mut batch[..pc.len()]);
+            for k in 0..pc.len() {
+                let single = law.shear_stress(pc[k], &sc[k], conditions);
+                for i in 0..3 {
+                    assert_eq!(batch[k][i].to_bits(), single[i].to_bits(), "cell {k}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn batches_are_bit_identical_to_cell_by_cell() {
+        let conditions = ContactConditions {
+            film: 2e-7,
+            entrainment_speed: 10.0,
+            rolling_velocity: 10.0,
+        };
+        let ehl = EhlRheology {
+            eyring_stress: 5e6,
+            limiting_shear_coefficient: 0.08,
+            lubricant: Lubricant {
+                viscosity: 0.0467,
+                pressure_viscosity: 2.2e-8,
+                pressure_model: Default::default(),
+            },
+        };
+        assert_batch_is_cell_by_cell(&ehl, &conditions);
+        assert_batch_is_cell_by_cell(
+            &ehl,
+            &ContactConditions {
+                film: 0.0,
+                ..conditions
+            },
+        );
+        for slip in [
+            curve::SlipMeasure::SlideToRoll,
+            curve::SlipMeasure::SlipSpeed,
+        ] {
+            let curve = TractionCurve {
+                a: -0.06,
+                b: 8.0,
+                c: 60.0,
+                d: 0.02,
+                slip,
+                full_speed: 1e-3,
+            };
+            assert_batch_is_cell_by_cell(&curve, &conditions);
+        }
+        let coulomb = ModifiedCoulomb {
+            friction: 0.1,
+            stick_speed: 1e-5,
+            full_speed: 1e-3,
+        };
+        assert_batch_is_cell_by_cell(&coulomb, &conditions);
+    }
+}
