@@ -6,7 +6,7 @@ use super::checkpoint::{
     Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
 };
 use super::tableau::Tableau;
-use super::{Integrator, OdeSystem};
+use super::{Integrator, OdeSystem, Tolerances};
 
 /// How the step size is chosen.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -88,7 +88,7 @@ pub struct ExplicitRk {
     k: Vec<Vec<f64>>,
     stage: Vec<f64>,
     y_new: Vec<f64>,
-    atol: Vec<f64>,
+    tolerances: Tolerances,
     // Last accepted step, for dense output.
     t_prev: f64,
     h_prev: f64,
@@ -166,8 +166,7 @@ impl PiControl {
         error_terms: impl Iterator<Item = f64>,
         y: &[f64],
         f: &[f64],
-        atol: &[f64],
-        rtol: f64,
+        tolerances: &Tolerances,
     ) -> IntegrationError {
         let largest = |terms: &mut dyn Iterator<Item = f64>| {
             terms
@@ -183,7 +182,7 @@ impl PiControl {
             let state = system.state_name(largest(&mut { error_terms }));
             IntegrationError::StepTooSmall { t, step, state }
         } else {
-            let mut rates = (0..y.len()).map(|k| f[k].abs() / (atol[k] + rtol * y[k].abs()));
+            let mut rates = (0..y.len()).map(|k| f[k].abs() / tolerances.scale(k, y[k].abs()));
             let state = system.state_name(largest(&mut rates));
             IntegrationError::NonFinite { t, state }
         }
@@ -236,14 +235,12 @@ impl ExplicitRk {
             }
             _ => {}
         }
-        let mut atol = vec![0.0; n];
-        system.error_scale(&mut atol);
-        if let StepControl::Adaptive {
-            relative_tolerance, ..
-        } = control
-        {
-            atol.iter_mut().for_each(|a| *a *= relative_tolerance);
-        }
+        let tolerances = match control {
+            StepControl::Adaptive {
+                relative_tolerance, ..
+            } => Tolerances::new(system, relative_tolerance),
+            _ => Tolerances::new(system, 1.0),
+        };
         let mut f = vec![0.0; n];
         system.rhs(t0, y0, &mut f);
         let mut me = Self {
@@ -256,7 +253,7 @@ impl ExplicitRk {
             k: vec![vec![0.0; n]; tableau.c.len()],
             stage: vec![0.0; n],
             y_new: vec![0.0; n],
-            atol,
+            tolerances,
             t_prev: t0,
             h_prev: 0.0,
             y_prev: y0.to_vec(),
@@ -282,22 +279,18 @@ impl ExplicitRk {
                 max_step,
                 ..
             } => h.min(max_step),
-            StepControl::Adaptive {
-                relative_tolerance,
-                max_step,
-                ..
-            } => me.starting_step(system, relative_tolerance).min(max_step),
+            StepControl::Adaptive { max_step, .. } => me.starting_step(system).min(max_step),
         };
         Ok(me)
     }
 
     /// Hairer's starting-step estimate (Solving ODEs I, §II.4).
-    fn starting_step(&mut self, system: &impl OdeSystem, rtol: f64) -> f64 {
+    fn starting_step(&mut self, system: &impl OdeSystem) -> f64 {
         // Weighted RMS norm of a vector, scaled at the current state.
         let norm = |v: &mut dyn Iterator<Item = f64>| {
             let (mut sum, mut n) = (0.0, 0.0);
             for (i, x) in v.enumerate() {
-                sum += (x / (self.atol[i] + rtol * self.y[i].abs())).powi(2);
+                sum += (x / (self.tolerances.scale(i, self.y[i].abs()))).powi(2);
                 n += 1.0;
             }
             (sum / n).sqrt()
@@ -354,20 +347,22 @@ impl ExplicitRk {
             }
             self.y_new[i] = self.y[i] + h * acc;
         }
-        let Some(rtol) = rtol.filter(|_| !tab.error.is_empty()) else {
+        if rtol.is_none() || tab.error.is_empty() {
             return if self.y_new.iter().all(|v| v.is_finite()) {
                 0.0
             } else {
                 f64::INFINITY
             };
-        };
+        }
         let mut sum = 0.0;
         for i in 0..n {
             let mut e = 0.0;
             for (j, w) in tab.error.iter().enumerate() {
                 e += w * self.k[j][i];
             }
-            let scale = self.atol[i] + rtol * self.y[i].abs().max(self.y_new[i].abs());
+            let scale = self
+                .tolerances
+                .scale(i, self.y[i].abs().max(self.y_new[i].abs()));
             sum += (h * e / scale).powi(2);
         }
         let err = (sum / n as f64).sqrt();
@@ -376,7 +371,7 @@ impl ExplicitRk {
 
     /// The scaled error of each component in the last attempt of step h
     /// (the terms of the error norm; the state itself where not finite).
-    fn error_terms(&self, h: f64, rtol: f64) -> impl Iterator<Item = f64> + '_ {
+    fn error_terms(&self, h: f64) -> impl Iterator<Item = f64> + '_ {
         (0..self.y.len()).map(move |i| {
             let e: f64 = self
                 .tableau
@@ -385,7 +380,9 @@ impl ExplicitRk {
                 .enumerate()
                 .map(|(j, w)| w * self.k[j][i])
                 .sum();
-            let scale = self.atol[i] + rtol * self.y[i].abs().max(self.y_new[i].abs());
+            let scale = self
+                .tolerances
+                .scale(i, self.y[i].abs().max(self.y_new[i].abs()));
             if self.y_new[i].is_finite() {
                 (h * e / scale).abs()
             } else {
@@ -507,10 +504,16 @@ impl Integrator for ExplicitRk {
             rejected = true;
             self.h = PiControl::rejected(h, err, self.tableau.order as f64);
             if self.h < min_step {
-                let rtol = rtol.unwrap_or(0.0);
-                let terms = self.error_terms(h, rtol);
+                let terms = self.error_terms(h);
                 return Err(PiControl::too_small(
-                    self.t, self.h, err, system, terms, &self.y, &self.f, &self.atol, rtol,
+                    self.t,
+                    self.h,
+                    err,
+                    system,
+                    terms,
+                    &self.y,
+                    &self.f,
+                    &self.tolerances,
                 ));
             }
         }

@@ -52,6 +52,12 @@ pub trait OdeSystem {
         scale.fill(1.0);
     }
 
+    /// Marks the states whose error is judged against their scale alone,
+    /// without the relative part rtol × |y|: angles that grow without
+    /// bound (an orbital angle after n turns would otherwise be allowed
+    /// an error of rtol × 2πn). Default: none.
+    fn absolute_error(&self, _absolute: &mut [bool]) {}
+
     /// A name for state component `index`, for messages (an integration
     /// failure names the component with the largest error). Default
     /// `y[index]`.
@@ -79,6 +85,35 @@ pub trait OdeSystem {
     /// (a dense Jacobian).
     fn blocks(&self) -> Option<&dyn BlockSplit> {
         None
+    }
+}
+
+/// Error tolerances per state (Hairer, Nørsett & Wanner I §II.4): a
+/// state's error is measured against atol_k + rtol_k |y_k|, with atol_k =
+/// rtol × its [`OdeSystem::error_scale`] and rtol_k = rtol, or 0 for the
+/// states of [`OdeSystem::absolute_error`].
+#[derive(Debug, Clone)]
+pub(crate) struct Tolerances {
+    absolute: Vec<f64>,
+    relative: Vec<f64>,
+}
+
+impl Tolerances {
+    pub(crate) fn new(system: &impl OdeSystem, rtol: f64) -> Self {
+        let n = system.dimension();
+        let mut absolute = vec![0.0; n];
+        system.error_scale(&mut absolute);
+        absolute.iter_mut().for_each(|a| *a *= rtol);
+        let mut flags = vec![false; n];
+        system.absolute_error(&mut flags);
+        let relative = flags.iter().map(|&a| if a { 0.0 } else { rtol }).collect();
+        Self { absolute, relative }
+    }
+
+    /// The error scale of state k whose magnitude is `magnitude`.
+    #[inline]
+    pub(crate) fn scale(&self, k: usize, magnitude: f64) -> f64 {
+        self.absolute[k] + self.relative[k] * magnitude
     }
 }
 
@@ -150,5 +185,38 @@ impl Integrator for Solver {
             Self::Explicit(i) => i.stats(),
             Self::Rosenbrock(i) => i.stats(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An angle turning at 100 rad/s beside a position: the angle is
+    /// judged absolutely.
+    struct Turning;
+    impl OdeSystem for Turning {
+        fn dimension(&self) -> usize {
+            2
+        }
+        fn rhs(&self, _t: f64, _y: &[f64], dy: &mut [f64]) {
+            dy.copy_from_slice(&[1.0, 100.0]);
+        }
+        fn error_scale(&self, scale: &mut [f64]) {
+            scale.copy_from_slice(&[1e-6, 1e-4]);
+        }
+        fn absolute_error(&self, absolute: &mut [bool]) {
+            absolute[1] = true;
+        }
+    }
+
+    #[test]
+    fn absolute_states_have_no_relative_part() {
+        let tol = Tolerances::new(&Turning, 1e-2);
+        // Position: atol + rtol |y|.
+        assert!((tol.scale(0, 3.0) - (1e-8 + 3e-2)).abs() < 1e-15);
+        // Angle after many turns: atol only.
+        assert_eq!(tol.scale(1, 1000.0), tol.scale(1, 0.0));
+        assert!((tol.scale(1, 1000.0) - 1e-6).abs() < 1e-18);
     }
 }

@@ -30,7 +30,7 @@ use super::checkpoint::{
 use super::explicit::{IntegrationError, IntegrationStats, PiControl};
 use super::jacobian::{JacobianWork, finite_difference};
 use super::linear::{BlockJacobian, BlockLayout, BlockLu};
-use super::{Integrator, OdeSystem};
+use super::{Integrator, OdeSystem, Tolerances};
 
 /// Largest number of stages of a Rosenbrock tableau.
 const MAX_STAGES: usize = 6;
@@ -164,7 +164,6 @@ impl Transformed {
 pub struct Rosenbrock {
     tableau: &'static RosenbrockTableau,
     coefficients: Transformed,
-    relative_tolerance: f64,
     max_step: f64,
     t: f64,
     y: Vec<f64>,
@@ -175,7 +174,7 @@ pub struct Rosenbrock {
     stage_y: Vec<f64>,
     y_new: Vec<f64>,
     error: Vec<f64>,
-    atol: Vec<f64>,
+    tolerances: Tolerances,
     jacobian: BlockJacobian,
     lu: BlockLu,
     work: JacobianWork,
@@ -229,9 +228,7 @@ impl Rosenbrock {
                 layout.dimension()
             )));
         }
-        let mut atol = vec![0.0; n];
-        system.error_scale(&mut atol);
-        atol.iter_mut().for_each(|a| *a *= relative_tolerance);
+        let tolerances = Tolerances::new(system, relative_tolerance);
         let mut f = vec![0.0; n];
         system.rhs(t0, y0, &mut f);
         if f.iter().any(|v| !v.is_finite()) {
@@ -245,7 +242,6 @@ impl Rosenbrock {
         let mut me = Self {
             tableau,
             coefficients,
-            relative_tolerance,
             max_step,
             t: t0,
             y: y0.to_vec(),
@@ -255,7 +251,7 @@ impl Rosenbrock {
             stage_y: vec![0.0; n],
             y_new: vec![0.0; n],
             error: vec![0.0; n],
-            atol,
+            tolerances,
             jacobian: BlockJacobian::zeros(layout),
             lu: match system.blocks() {
                 Some(split) => BlockLu::with_inert(layout, |state| split.inert(state)),
@@ -285,10 +281,9 @@ impl Rosenbrock {
     /// (stiff components make that one meaningless); the controller
     /// corrects it within a few steps.
     fn starting_step(&self) -> f64 {
-        let rtol = self.relative_tolerance;
         let mut sum = 0.0;
         for i in 0..self.y.len() {
-            sum += (self.f[i] / (self.atol[i] + rtol * self.y[i].abs())).powi(2);
+            sum += (self.f[i] / (self.tolerances.scale(i, self.y[i].abs()))).powi(2);
         }
         let d1 = (sum / self.y.len() as f64).sqrt();
         if d1 < 1e-5 {
@@ -365,7 +360,6 @@ impl Rosenbrock {
             }
             self.lu.solve(u);
         }
-        let rtol = self.relative_tolerance;
         let mut sum = 0.0;
         for k in 0..n {
             let (mut step, mut err) = (0.0, 0.0);
@@ -375,7 +369,9 @@ impl Rosenbrock {
             }
             self.y_new[k] = self.y[k] + step;
             self.error[k] = err;
-            let scale = self.atol[k] + rtol * self.y[k].abs().max(self.y_new[k].abs());
+            let scale = self
+                .tolerances
+                .scale(k, self.y[k].abs().max(self.y_new[k].abs()));
             sum += (err / scale).powi(2);
         }
         let err = (sum / n as f64).sqrt();
@@ -500,9 +496,10 @@ impl Integrator for Rosenbrock {
             }
             self.h = PiControl::rejected(h, err, q);
             if self.h < min_step {
-                let rtol = self.relative_tolerance;
                 let terms = (0..self.y.len()).map(|k| {
-                    let scale = self.atol[k] + rtol * self.y[k].abs().max(self.y_new[k].abs());
+                    let scale = self
+                        .tolerances
+                        .scale(k, self.y[k].abs().max(self.y_new[k].abs()));
                     if self.y_new[k].is_finite() {
                         (self.error[k] / scale).abs()
                     } else {
@@ -510,7 +507,14 @@ impl Integrator for Rosenbrock {
                     }
                 });
                 return Err(PiControl::too_small(
-                    self.t, self.h, err, system, terms, &self.y, &self.f, &self.atol, rtol,
+                    self.t,
+                    self.h,
+                    err,
+                    system,
+                    terms,
+                    &self.y,
+                    &self.f,
+                    &self.tolerances,
                 ));
             }
         }
