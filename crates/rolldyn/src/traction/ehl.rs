@@ -116,7 +116,7 @@ fn asinh_non_negative(x: f64) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     #[test]
     fn fast_asinh_matches_the_standard_library() {
         for k in -300..=100 {
@@ -132,7 +132,8 @@ mod tests {
 
     use super::*;
 
-    fn law() -> EhlRheology {
+    /// The default case's EHL rheology (also the traction module's batch test).
+    pub(crate) fn law() -> EhlRheology {
         EhlRheology {
             eyring_stress: 5e6,
             limiting_shear_coefficient: 0.08,

@@ -135,17 +135,6 @@ impl TractionGrid {
         }
         grid
     }
-
-    /// The integration it prepares.
-    pub fn method(&self) -> TractionIntegration {
-        self.method
-    }
-}
-
-impl From<TractionIntegration> for TractionGrid {
-    fn from(method: TractionIntegration) -> Self {
-        Self::new(method)
-    }
 }
 
 /// Integrates `law` over `patch` for ball centre `ball_centre`, sliding

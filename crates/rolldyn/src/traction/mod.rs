@@ -239,7 +239,6 @@ impl TractionModel {
 #[cfg(test)]
 mod batch_tests {
     use super::*;
-    use crate::lubrication::Lubricant;
 
     /// Cells spread over slips from 0 to 10 m/s and pressures from 0 to
     /// 3 GPa, with the edge cases each law guards (zero slip, zero
@@ -284,15 +283,7 @@ mod batch_tests {
             entrainment_speed: 10.0,
             rolling_velocity: 10.0,
         };
-        let ehl = EhlRheology {
-            eyring_stress: 5e6,
-            limiting_shear_coefficient: 0.08,
-            lubricant: Lubricant {
-                viscosity: 0.0467,
-                pressure_viscosity: 2.2e-8,
-                pressure_model: Default::default(),
-            },
-        };
+        let ehl = ehl::tests::law();
         assert_batch_is_cell_by_cell(&ehl, &conditions);
         assert_batch_is_cell_by_cell(
             &ehl,
