@@ -8,19 +8,21 @@
 //! (b) the built-in default case (7008C, 10 000 rpm, F_x = 200 N, EHL on
 //!     the 12 × 6 grid, from the Jones–Harris state), 0.05 s simulated;
 //! (c) the 7218B preset on seed 002's speed ramp (1000 → 10 000 rpm,
-//!     FASTSIM traction, μ = 0.1), the full 2.5 s.
-//! Targets of issue 5: (a) ≤ 1 s, (b) ≤ 2 s, (c) ≤ 5 min; figures in
+//!     FASTSIM traction, μ = 0.1), the full 2.5 s;
+//! (d) the default case over 1 s (its cage whirl limit cycle from ~0.06 s).
+//! Targets of issues 5 and 15 (one core: `RAYON_NUM_THREADS=1`): (a) ≤
+//! 0.3 s, (b) ≤ 2 s, (c) ≤ 60 s, (d) ≤ 40 s; figures in
 //! docs/performance.md. Build in release first (`cargo bench` does).
-//! `ROLLDYN_BENCH=a,b` runs a subset.
+//! `ROLLDYN_BENCH=a,b` runs a subset (default a, b, c, d).
 
 use std::process::Command;
 
 fn main() {
     let exe = env!("CARGO_BIN_EXE_rolldyn");
     let dir = std::env::temp_dir().join(format!("rolldyn-bench-{}", std::process::id()));
-    let only = std::env::var("ROLLDYN_BENCH").unwrap_or_else(|_| "a,b,c".into());
+    let only = std::env::var("ROLLDYN_BENCH").unwrap_or_else(|_| "a,b,c,d".into());
     // (key, label, preset (None: built-in default case), extra arguments)
-    let cases: [(&str, &str, Option<&str>, &[&str]); 3] = [
+    let cases: [(&str, &str, Option<&str>, &[&str]); 4] = [
         (
             "a",
             "(a) 6304 preset, 0.2 s",
@@ -29,6 +31,12 @@ fn main() {
         ),
         ("b", "(b) default 7008C case, 0.05 s", None, &[]),
         ("c", "(c) 7218B seed-002 ramp, 2.5 s", Some("7218B"), &[]),
+        (
+            "d",
+            "(d) default 7008C case, 1 s",
+            None,
+            &["--duration", "1 s"],
+        ),
     ];
     for (key, name, preset, extra) in cases {
         if !only.split(',').any(|k| k.trim() == key) {
