@@ -37,6 +37,11 @@ pub const DEFAULT_MAX_STEP: f64 = 1e-5;
 /// Default largest step of the stiff integrator \[s\]: a tenth of a
 /// millisecond, below the ball-pass periods of the presets (≥ 0.3 ms).
 pub const DEFAULT_STIFF_MAX_STEP: f64 = 1e-4;
+/// Steps per period of the cage's undamped film modes that the stiff
+/// integrator takes at least: ROS34PW2's stability function then damps
+/// such a mode by 0.9 % a period, 0.15 % of critical damping (8 steps:
+/// 6 %, 1 %; `integrate::rosenbrock` test).
+pub const STEPS_PER_FILM_PERIOD: f64 = 16.0;
 /// Default relative tolerance of the adaptive integrators.
 pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-3;
 /// `integrator = "auto"` takes ros34pw2 at relative tolerances from this
@@ -44,6 +49,20 @@ pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-3;
 /// cases (docs/performance.md), where dopri5 is stability-bound and
 /// ros34pw2 accuracy-bound.
 pub const STIFF_FROM_TOLERANCE: f64 = 3e-4;
+
+/// Default largest step of the stiff integrator for a cage: 0.1 ms, or
+/// 1/16 of the period of the cage's undamped rattle on `gupta_film`
+/// pocket films ([`rolldyn::cage::CageParameters::film_frequency`]).
+/// With longer steps the L-stable integrator damps that mode numerically
+/// and can hide it: the default case with film pockets rattled at
+/// 3.6–3.8 kHz with 30 µs steps or rtol 1e-4 and whirled smoothly with
+/// 50 µs steps (docs/dynamics.md).
+pub fn stiff_max_step(cage: &rolldyn::cage::CageParameters, balls: usize) -> f64 {
+    cage.film_frequency(balls)
+        .map_or(DEFAULT_STIFF_MAX_STEP, |f| {
+            DEFAULT_STIFF_MAX_STEP.min(1.0 / (STEPS_PER_FILM_PERIOD * f))
+        })
+}
 
 /// `summary.json`.
 #[derive(Serialize)]
@@ -534,7 +553,7 @@ pub fn run_case_series(
     let max_step = case
         .max_step
         .unwrap_or(if choice == IntegratorChoice::Ros34pw2 {
-            DEFAULT_STIFF_MAX_STEP
+            stiff_max_step(&params.cage, g.ball_count)
         } else {
             DEFAULT_MAX_STEP
         });

@@ -52,6 +52,40 @@ impl CageParameters {
         require_non_negative("unbalance", self.unbalance)
     }
 
+    /// Highest natural frequency of the cage on undamped pocket springs
+    /// \[Hz\], or None when every pocket spring is damped or acts only
+    /// beyond the clearance. The `gupta_film` law's film term F_w d/(C_p/2)
+    /// (seed 001 eqs 26–28) is a spring with no damping inside the
+    /// clearance, so the cage can rattle on the films of its `balls`
+    /// pockets. With k = F_w/(C_p/2) per pocket and the balls held by their
+    /// raceway traction:
+    /// - rotation, √(Z k r_cp²/I_c)/2π;
+    /// - whirl (if the centre is free), √(Z k/(2 m_c))/2π for cylindrical
+    ///   pockets (the film acts along the pocket's circumferential offset
+    ///   only), or √(Z k/m_c)/2π for spherical pockets.
+    ///
+    /// A stiff integrator that takes too few steps per period of this mode
+    /// damps it numerically and can hide a rattle (docs/dynamics.md).
+    pub fn film_frequency(&self, balls: usize) -> Option<f64> {
+        let PocketLaw::GuptaFilm { wall_force, .. } = self.pocket_law else {
+            return None;
+        };
+        let stiffness = balls as f64 * wall_force / (0.5 * self.pocket_clearance);
+        if stiffness <= 0.0 {
+            return None;
+        }
+        let rotation = stiffness * self.pitch_radius.powi(2) / self.inertia;
+        let whirl = if !self.whirl {
+            0.0
+        } else {
+            match self.pocket_shape {
+                PocketShape::Cylindrical => 0.5 * stiffness / self.mass,
+                PocketShape::Spherical => stiffness / self.mass,
+            }
+        };
+        Some(rotation.max(whirl).sqrt() / std::f64::consts::TAU)
+    }
+
     /// Unbalance force on the cage (y, z) \[N\] at cage angle θ_c and speed
     /// ω_c: m_u e ω_c² along the unbalance direction (seed 001 eqs 37–38
     /// print ω_c unsquared; MODEL §5). Treated as an external force: its
@@ -59,5 +93,68 @@ impl CageParameters {
     pub fn unbalance_force(&self, angle: f64, speed: f64) -> [f64; 2] {
         let f = self.unbalance * speed * speed;
         [f * angle.cos(), f * angle.sin()]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cage(pocket_law: PocketLaw, pocket_shape: PocketShape, whirl: bool) -> CageParameters {
+        CageParameters {
+            mass: 3.1e-3,
+            inertia: 2.4e-6,
+            pitch_radius: 0.027,
+            pocket_clearance: 0.175e-3,
+            pocket_shape,
+            pocket_law,
+            pocket_friction: ModifiedCoulomb {
+                friction: 0.1,
+                stick_speed: 0.0,
+                full_speed: 1e-3,
+            },
+            whirl,
+            guide: None,
+            unbalance: 0.0,
+        }
+    }
+
+    /// The 7008C's 22 film pockets (F_w = 11 N, C_p = 0.175 mm):
+    /// k = 11 N / 87.5 µm per pocket; rotation √(22 k r²/I)/2π = 4.61 kHz
+    /// is above the whirl √(11 k/m)/2π = 3.36 kHz, the spherical pockets'
+    /// whirl √(22 k/m)/2π = 4.75 kHz above both.
+    #[test]
+    fn film_frequency_of_the_7008c_cage() {
+        let film = PocketLaw::GuptaFilm {
+            wall_force: 11.0,
+            stiffness: 1e9,
+            damping: 0.0,
+        };
+        let k = 11.0 / 87.5e-6;
+        let hz = |x: f64| x.sqrt() / std::f64::consts::TAU;
+        let rotation = hz(22.0 * k * 0.027f64.powi(2) / 2.4e-6);
+        let f = cage(film, PocketShape::Cylindrical, true)
+            .film_frequency(22)
+            .unwrap();
+        assert!(
+            (f - rotation).abs() < 1e-9 * rotation && (f - 4610.0).abs() < 10.0,
+            "{f}"
+        );
+        let f = cage(film, PocketShape::Spherical, true)
+            .film_frequency(22)
+            .unwrap();
+        assert!((f - hz(22.0 * k / 3.1e-3)).abs() < 1e-9 * f, "{f}");
+        let f = cage(film, PocketShape::Spherical, false)
+            .film_frequency(22)
+            .unwrap();
+        assert!((f - rotation).abs() < 1e-9 * f, "{f}");
+        let linear = PocketLaw::Linear {
+            stiffness: 1e7,
+            damping: 20.0,
+        };
+        assert_eq!(
+            cage(linear, PocketShape::Cylindrical, true).film_frequency(22),
+            None
+        );
     }
 }
