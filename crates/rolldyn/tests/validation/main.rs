@@ -14,6 +14,7 @@ mod a6_a8_kinematics;
 mod a7_seed000_geometry;
 mod b1_energy;
 mod b2_energy_balance;
+mod b2_power_balance;
 mod b3_impact;
 mod b6_stays_at_equilibrium;
 mod b7_resume;
