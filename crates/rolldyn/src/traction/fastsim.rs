@@ -114,6 +114,27 @@ struct Strip {
     limit: f64,
 }
 
+/// What a lane group's strip set-up reads from the contact.
+struct SetUp<'a, Y: Fn(usize) -> f64> {
+    strip_y: &'a Y,
+    across: f64,
+    along: f64,
+    dt: f64,
+    curved: bool,
+    deformed_radius: f64,
+    /// Rigid slip at P along x̂ and ŷ \[m/s\].
+    slip: (f64, f64),
+    /// Relative spin about n, x̂, ŷ \[rad/s\].
+    spin: (f64, f64, f64),
+    speed: f64,
+    /// c = √(ab) and the spin creepage φ of Kalker's weight.
+    cc: f64,
+    phi: f64,
+    /// L₁, L₂, L₃.
+    flexibilities: (f64, f64, f64),
+    bound_scale: f64,
+}
+
 /// Largest accepted number of strips or elements per strip.
 pub const MAX_DIVISIONS: usize = 1000;
 
@@ -343,6 +364,81 @@ impl Fastsim {
         out
     }
 
+    /// The strips `first`.. of one lane group, stage by stage across the
+    /// lanes so that their square roots and divisions overlap (one strip's
+    /// chain of six runs at the latency of the divide unit). Each lane
+    /// computes exactly what a strip on its own would; lanes past the last
+    /// strip are zero-width padding.
+    fn set_up_strips<Y: Fn(usize) -> f64>(
+        &self,
+        first: usize,
+        strips: usize,
+        c: SetUp<'_, Y>,
+        separable: &impl Fn(f64) -> f64,
+    ) -> [Strip; LANES] {
+        let (s_x, s_y) = c.slip;
+        let (w_n, w_x, w_y) = c.spin;
+        let (l1, l2, l3) = c.flexibilities;
+        let mut y = [0.0; LANES];
+        let mut k = [0.0; LANES];
+        let mut depth = [0.0; LANES];
+        for l in 0..LANES {
+            y[l] = (c.strip_y)((first + l).min(strips - 1));
+            k[l] = (1.0 - (y[l] / c.across).powi(2)).max(0.0);
+        }
+        if c.curved {
+            let r = c.deformed_radius;
+            for l in 0..LANES {
+                depth[l] = r - (r * r - y[l] * y[l]).max(0.0).sqrt();
+            }
+        }
+        let mut half = [0.0; LANES];
+        let mut slip_x = [0.0; LANES];
+        let mut slip_y = [0.0; LANES];
+        let mut norm = [0.0; LANES];
+        let mut weights = [[0.0; 3]; LANES];
+        for l in 0..LANES {
+            half[l] = c.along * k[l].sqrt();
+            // The strip's translational slip (spin terms apart).
+            slip_x[l] = s_x - depth[l] * w_y;
+            slip_y[l] = s_y + depth[l] * w_x;
+            let (xi, eta) = (slip_x[l] / c.speed, slip_y[l] / c.speed);
+            // Kalker's weights |ξ|, |η|, c|φ|, smoothed over
+            // WEIGHT_SMOOTHING of their norm so that L is differentiable
+            // where one creepage changes sign.
+            norm[l] = (xi * xi + eta * eta + c.cc * c.cc * c.phi * c.phi).sqrt();
+            let eps = WEIGHT_SMOOTHING * norm[l];
+            // √(v² + ε²) directly: creepages are O(1), far from overflow,
+            // and libm's `hypot` (careful scaling) cost 18 % of the
+            // seed-002 ramp.
+            let smooth = |v: f64| (v * v + eps * eps).sqrt();
+            weights[l] = [smooth(xi), smooth(eta), smooth(c.cc * c.phi)];
+        }
+        let mut lane = [Strip::default(); LANES];
+        for l in 0..LANES {
+            let [wx, wy, ws] = weights[l];
+            let flexibility = if norm[l] > 0.0 {
+                (l1 * wx + l2 * wy + l3 * ws) / (wx * wx + wy * wy + ws * ws).sqrt()
+            } else {
+                l1
+            };
+            if first + l < strips {
+                lane[l] = Strip {
+                    active: true,
+                    y: y[l],
+                    half: half[l],
+                    dx: half[l] * c.dt,
+                    depth: depth[l],
+                    gain: half[l] * c.dt / (flexibility * c.speed),
+                    rate_x: slip_x[l] - w_n * y[l],
+                    slip_y: slip_y[l],
+                    limit: c.bound_scale * separable(k[l]),
+                };
+            }
+        }
+        lane
+    }
+
     /// One FASTSIM pass with the flow along `direction` · e_roll.
     #[allow(clippy::too_many_arguments)]
     fn march(
@@ -402,52 +498,26 @@ impl Fastsim {
         // (sequential) element recurrences overlap in the pipeline. Lanes
         // past the last strip have zero width and contribute nothing.
         for first in (0..strips).step_by(LANES) {
-            let mut lane = [Strip::default(); LANES];
-            for (l, st) in lane.iter_mut().enumerate() {
-                let i = first + l;
-                if i >= strips {
-                    continue;
-                }
-                let y = strip_y(i);
-                let k = (1.0 - (y / across).powi(2)).max(0.0);
-                let half = along * k.sqrt();
-                let depth = if curved {
-                    let r = patch.deformed_radius;
-                    r - (r * r - y * y).max(0.0).sqrt()
-                } else {
-                    0.0
-                };
-                // The strip's translational slip (spin terms apart).
-                let slip_x = s_x - depth * w_y;
-                let slip_y = s_y + depth * w_x;
-                let (xi, eta) = (slip_x / speed, slip_y / speed);
-                // Kalker's weights |ξ|, |η|, c|φ|, smoothed over
-                // WEIGHT_SMOOTHING of their norm so that L is
-                // differentiable where one creepage changes sign.
-                let norm = (xi * xi + eta * eta + cc * cc * phi * phi).sqrt();
-                let flexibility = if norm > 0.0 {
-                    let eps = WEIGHT_SMOOTHING * norm;
-                    // √(v² + ε²) directly: creepages are O(1), far from
-                    // overflow, and libm's `hypot` (careful scaling) cost
-                    // 18 % of the seed-002 ramp.
-                    let smooth = |v: f64| (v * v + eps * eps).sqrt();
-                    let (wx, wy, ws) = (smooth(xi), smooth(eta), smooth(cc * phi));
-                    (l1 * wx + l2 * wy + l3 * ws) / (wx * wx + wy * wy + ws * ws).sqrt()
-                } else {
-                    l1
-                };
-                *st = Strip {
-                    active: true,
-                    y,
-                    half,
-                    dx: half * dt,
-                    depth,
-                    gain: half * dt / (flexibility * speed),
-                    rate_x: slip_x - w_n * y,
-                    slip_y,
-                    limit: bound_scale * separable(k),
-                };
-            }
+            let lane = self.set_up_strips(
+                first,
+                strips,
+                SetUp {
+                    strip_y: &strip_y,
+                    across,
+                    along,
+                    dt,
+                    curved,
+                    deformed_radius: patch.deformed_radius,
+                    slip: (s_x, s_y),
+                    spin: (w_n, w_x, w_y),
+                    speed,
+                    cc,
+                    phi,
+                    flexibilities: (l1, l2, l3),
+                    bound_scale,
+                },
+                &separable,
+            );
             let mut px = [0.0; LANES];
             let mut py = [0.0; LANES];
             // Per-lane sums keep the additions out of one serial chain.
