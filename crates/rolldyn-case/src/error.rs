@@ -17,7 +17,8 @@ pub enum Origin {
         /// The text of the line.
         line_text: String,
     },
-    /// A command-line override such as `--set bearing.ball_count=22`.
+    /// An override, described with its source (``command-line override
+    /// `--set bearing.ball_count=22` ``, or a Python `Case.set`).
     Override(String),
     /// A value taken from a built-in preset.
     Preset(String),
@@ -49,7 +50,7 @@ impl fmt::Display for CaseError {
             Origin::File { line, column, .. } => {
                 write!(f, "{}:{line}:{column}: ", self.source_name)?
             }
-            Origin::Override(text) => write!(f, "command-line override `{text}`: ")?,
+            Origin::Override(text) => write!(f, "{text}: ")?,
             Origin::Preset(name) => write!(f, "{} (value from preset {name}): ", self.source_name)?,
             Origin::Unknown => write!(f, "{}: ", self.source_name)?,
         }

@@ -20,7 +20,7 @@ pub mod units;
 
 pub use case::Case;
 pub use error::{CaseError, Origin};
-pub use load::{Override, load_case, load_default};
+pub use load::{Override, OverrideSource, load_case, load_default};
 
 /// The JSON Schema of the case format (for editor completion).
 pub fn json_schema() -> serde_json::Value {

@@ -17,22 +17,48 @@ pub struct Override {
     pub key: String,
     /// New value.
     pub value: Value,
-    /// How the user wrote it (for messages).
+    /// Where it came from and how the user wrote it, for messages
+    /// (``command-line override `--set bearing.ball_count=22` ``).
     pub text: String,
 }
 
+/// Where an assignment override came from, for messages.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum OverrideSource {
+    /// `--set key=value` on the command line.
+    #[default]
+    CommandLine,
+    /// `Case.set(key, value)` in the Python package.
+    Python,
+}
+
+impl OverrideSource {
+    /// How a message names the assignment `text` (`key=value`).
+    fn describe(self, text: &str) -> String {
+        match self {
+            Self::CommandLine => format!("command-line override `--set {text}`"),
+            Self::Python => format!("override `{text}` (Case.set)"),
+        }
+    }
+}
+
 impl Override {
-    /// Parses `dotted.key=value`. The value is read as a TOML value when it
-    /// is one (`22`, `0.52`, `true`, `"6.35 mm"`, `{ law = "hertz" }`) and
-    /// as a plain string otherwise (`6.35 mm`).
+    /// Parses `dotted.key=value` given with `--set`. The value is read as
+    /// a TOML value when it is one (`22`, `0.52`, `true`, `"6.35 mm"`,
+    /// `{ law = "hertz" }`) and as a plain string otherwise (`6.35 mm`).
     pub fn parse_set(arg: &str) -> Result<Self, CaseError> {
+        Self::parse_from(arg, OverrideSource::CommandLine)
+    }
+
+    /// As [`Self::parse_set`], for an assignment from `source`.
+    pub fn parse_from(arg: &str, source: OverrideSource) -> Result<Self, CaseError> {
         let Some((key, raw)) = arg.split_once('=') else {
             return Err(CaseError {
                 source_name: "command line".into(),
-                origin: Box::new(Origin::Override(format!("--set {arg}"))),
+                origin: Box::new(Origin::Override(source.describe(arg))),
                 key: None,
                 value: None,
-                rule: "expected --set dotted.key=value, e.g. --set bearing.ball_count=22".into(),
+                rule: "expected dotted.key=value, e.g. bearing.ball_count=22".into(),
             });
         };
         let key = key.trim();
@@ -44,7 +70,7 @@ impl Override {
         Ok(Self {
             key: key.to_string(),
             value,
-            text: format!("--set {key}={raw}"),
+            text: source.describe(&format!("{key}={raw}")),
         })
     }
 
@@ -53,7 +79,7 @@ impl Override {
         Self {
             key: key.to_string(),
             value: Value::String(value.to_string()),
-            text: format!("{flag} {value}"),
+            text: format!("command-line override `{flag} {value}`"),
         }
     }
 }

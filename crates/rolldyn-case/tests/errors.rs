@@ -3,7 +3,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use rolldyn_case::{CaseError, Origin, Override, load_case, presets};
+use rolldyn_case::{CaseError, Origin, Override, OverrideSource, load_case, presets};
 
 /// A valid minimal case; tests break one thing at a time.
 const BASE: &str = r#"
@@ -338,7 +338,10 @@ fn overrides_are_validated_like_the_file() {
         &[Override::flag("--speed", "operating.speed", "100 N")],
     )
     .unwrap_err();
-    assert_eq!(*e.origin, Origin::Override("--speed 100 N".into()));
+    assert_eq!(
+        *e.origin,
+        Origin::Override("command-line override `--speed 100 N`".into())
+    );
     assert!(e.to_string().contains("unit of force"), "{e}");
     let e = load_case(
         "case.toml",
@@ -350,6 +353,18 @@ fn overrides_are_validated_like_the_file() {
     assert!(
         e.to_string()
             .starts_with("command-line override `--set bearing.ball_cnt=3`"),
+        "{e}"
+    );
+    // From Python's Case.set the same error names its source so.
+    let e = load_case(
+        "case.toml",
+        BASE,
+        &[Override::parse_from("bearing.ball_cnt=3", OverrideSource::Python).unwrap()],
+    )
+    .unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with("override `bearing.ball_cnt=3` (Case.set)"),
         "{e}"
     );
     let ok = load_case(

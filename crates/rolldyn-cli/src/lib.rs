@@ -22,7 +22,7 @@ pub mod vibration;
 
 use clap::Args;
 use rolldyn_case::units::{Angle, Quantity};
-use rolldyn_case::{Case, CaseError, Override, load_case, load_default};
+use rolldyn_case::{Case, CaseError, Override, OverrideSource, load_case, load_default};
 use std::io::{Read, Write};
 
 /// The case to work on, and overrides of its values.
@@ -62,6 +62,11 @@ pub struct CaseOverrides {
     /// Override any key: --set bearing.ball_count=22 (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
+    /// The `set` assignments came from Python's `Case.set`, not `--set`
+    /// (messages name them so).
+    #[arg(skip)]
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub from_python: bool,
 }
 
 /// Output directory of `rolldyn run` when none is given.
@@ -121,8 +126,13 @@ impl CaseOverrides {
         if let Some(a) = &self.misalignment {
             out.push(Override::flag("--misalignment", "operating.tilt_y", a));
         }
+        let source = if self.from_python {
+            OverrideSource::Python
+        } else {
+            OverrideSource::CommandLine
+        };
         for s in &self.set {
-            out.push(Override::parse_set(s)?);
+            out.push(Override::parse_from(s, source)?);
         }
         Ok(out)
     }

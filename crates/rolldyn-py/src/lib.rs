@@ -71,6 +71,7 @@ fn json_text<T: serde::Serialize>(value: &T) -> PyResult<String> {
 fn overrides(sets: Vec<String>) -> CaseOverrides {
     CaseOverrides {
         set: sets,
+        from_python: true,
         ..Default::default()
     }
 }

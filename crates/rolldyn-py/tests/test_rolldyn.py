@@ -76,6 +76,8 @@ def test_set_validates_at_once_and_leaves_the_case_unchanged():
     # The CLI's located message: key, value, rule.
     assert "operating.speed" in str(e.value)
     assert "fast" in str(e.value)
+    # Named as Python gave it, not as the CLI's --set.
+    assert "Case.set" in str(e.value) and "--set" not in str(e.value)
     assert case.overrides == []
     with pytest.raises(rolldyn.CaseError, match="bearing.ball_count"):
         case.set("bearing.ball_count", -3)
