@@ -15,7 +15,7 @@ trap 'rm -rf "$work"' EXIT
 strip_wall() { python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); d.pop("wall_time_s"); print(json.dumps(d, sort_keys=True))' "$1"; }
 declare -A reference
 for integrator in ros34pw2 dopri5; do
-  duration=0.05; [ "$integrator" = dopri5 ] && duration=0.01
+  duration=0.15; [ "$integrator" = dopri5 ] && duration=0.01
   "$bin" run -o "$work/ref-$integrator" --duration "$duration s" --set "solver.integrator=\"$integrator\"" >/dev/null
   reference[$integrator]=$duration
 done

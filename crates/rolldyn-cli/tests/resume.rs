@@ -39,7 +39,7 @@ fn summary(dir: &Path) -> serde_json::Value {
 fn killed_run_is_readable_and_resumes_bit_identically() {
     // Long enough (a few seconds each) for two checkpoints before the kill.
     for (tag, integrator, duration) in [
-        ("ros", "solver.integrator=\"ros34pw2\"", "0.05 s"),
+        ("ros", "solver.integrator=\"ros34pw2\"", "0.15 s"),
         ("dopri", "solver.integrator=\"dopri5\"", "0.02 s"),
     ] {
         let whole = temp_dir(&format!("resume-whole-{tag}"));
