@@ -4,12 +4,12 @@
 //! balance closes to integrator accuracy.
 
 use super::common::{
-    METHODS, Method, bearing_6304, bearing_7008c, dynamics_7008c, integrator, seed000_dynamics,
-    steel_seed000,
+    METHODS, Method, bearing_6304, bearing_7008c, drag_7008c, dynamics_7008c, integrator,
+    seed000_dynamics, steel_seed000,
 };
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{
-    BearingModel, DragParameters, DynamicsParameters, OuterRing, PocketLaw, PocketShape, Support,
+    BearingModel, DynamicsParameters, OuterRing, PocketLaw, PocketShape, Support,
 };
 use rolldyn::integrate::Integrator;
 use rolldyn::lubrication::PressureViscosity;
@@ -141,13 +141,7 @@ fn b2_seed000(configure: impl Fn(&mut DynamicsParameters)) {
 /// and the drag power.
 #[test]
 fn b2_energy_balance_with_ehl_grid_traction() {
-    let drag = DragParameters {
-        effective_density: 860.0,
-        ball_drag_coefficient: 0.5,
-        ball_spin_drag_coefficient: 0.05,
-        cage_viscous: 1e-6,
-        cage_windage: 1e-9,
-    };
+    let drag = drag_7008c();
     let (mut params, eq) = dynamics_7008c(drag);
     if let TractionModel::Ehl(ehl) = &mut params.traction {
         ehl.lubricant.pressure_model = PressureViscosity::Roelands;

@@ -11,10 +11,11 @@
 //! F_z = 100 N with F_x = 200 N; the cage displaced and turned so that
 //! the balls press on their pockets, then 0.2 ms of motion.
 
-use super::common::{Method, bearing_7008c, dynamics_7008c, integrator};
-use rolldyn::RingKind;
+use super::common::{
+    Method, bearing_7008c, drag_7008c, dynamics_7008c, guide_land_7008c, integrator,
+};
 use rolldyn::contact::HertzModel;
-use rolldyn::dynamics::{BearingModel, DragParameters, GuideLand};
+use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::Integrator;
 use rolldyn::material::Material;
 use rolldyn::operating::{LoadProfile, Loads};
@@ -36,23 +37,9 @@ fn power_residual(model: &BearingModel, t: f64, y: &[f64]) -> (f64, f64) {
 
 #[test]
 fn b2_power_balance_holds_at_every_state() {
-    let drag = DragParameters {
-        effective_density: 860.0,
-        ball_drag_coefficient: 0.5,
-        ball_spin_drag_coefficient: 0.05,
-        cage_viscous: 1e-6,
-        cage_windage: 1e-9,
-    };
+    let drag = drag_7008c();
     let (mut params, eq) = dynamics_7008c(drag);
-    params.cage.guide = Some(GuideLand {
-        ring: RingKind::Outer,
-        land_radius: 57.33e-3 / 2.0,
-        width: 10.1e-3,
-        radial_clearance: 0.35e-3 / 2.0,
-        viscosity: 0.0467,
-        max_eccentricity: 0.95,
-        stop_stiffness: 1e8,
-    });
+    params.cage.guide = Some(guide_land_7008c());
     params.loads = LoadProfile::Constant(Loads {
         force: [200.0, 0.0, 100.0],
         moment: [0.0; 2],

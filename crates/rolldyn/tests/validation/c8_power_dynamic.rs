@@ -10,34 +10,21 @@
 //! balls started 2 % slow (the pockets push them). Tolerance: 1e-9 of the
 //! total (the parts are summed in a different order than the total).
 
-use super::common::{Method, bearing_7008c, dynamics_7008c, integrator};
-use rolldyn::RingKind;
+use super::common::{
+    Method, bearing_7008c, drag_7008c, dynamics_7008c, guide_land_7008c, integrator,
+};
 use rolldyn::contact::HertzModel;
-use rolldyn::dynamics::{BearingModel, DragParameters, GuideLand, OuterRing, Support};
+use rolldyn::dynamics::{BearingModel, OuterRing, Support};
 use rolldyn::integrate::{Integrator, OdeSystem};
 use rolldyn::material::Material;
 use rolldyn::operating::{LoadProfile, Loads};
 
 #[test]
 fn c8_components_sum_to_the_dissipated_power_and_drive_torque_gives_drive_power() {
-    let drag = DragParameters {
-        effective_density: 860.0,
-        ball_drag_coefficient: 0.5,
-        ball_spin_drag_coefficient: 0.05,
-        cage_viscous: 1e-6,
-        cage_windage: 1e-9,
-    };
+    let drag = drag_7008c();
     let (mut params, eq) = dynamics_7008c(drag);
     params.rolling_hysteresis = 0.007;
-    params.cage.guide = Some(GuideLand {
-        ring: RingKind::Outer,
-        land_radius: 57.33e-3 / 2.0,
-        width: 10.1e-3,
-        radial_clearance: 0.35e-3 / 2.0,
-        viscosity: 0.0467,
-        max_eccentricity: 0.95,
-        stop_stiffness: 1e8,
-    });
+    params.cage.guide = Some(guide_land_7008c());
     params.outer_ring = Some(OuterRing {
         mass: 0.2,
         housing: Support {

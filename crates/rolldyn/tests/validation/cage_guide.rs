@@ -5,10 +5,9 @@
 //! radius 28.665 mm, G 10.1 mm, C_g 0.35 mm diametral) with F_z = 100 N
 //! added to F_x = 200 N, 2 ms from the Jones–Harris state (axial).
 
-use super::common::{Method, bearing_7008c, dynamics_7008c, integrator};
-use rolldyn::RingKind;
+use super::common::{Method, bearing_7008c, dynamics_7008c, guide_land_7008c, integrator};
 use rolldyn::contact::HertzModel;
-use rolldyn::dynamics::{BearingModel, DragParameters, GuideLand};
+use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::Integrator;
 use rolldyn::material::Material;
 use rolldyn::operating::{LoadProfile, Loads};
@@ -17,15 +16,9 @@ use rolldyn::operating::{LoadProfile, Loads};
 fn guided_cage_stays_within_its_clearance() {
     let (mut params, eq) = dynamics_7008c(DragParameters::default());
     let clearance = 0.35e-3 / 2.0;
-    params.cage.guide = Some(GuideLand {
-        ring: RingKind::Outer,
-        land_radius: 57.33e-3 / 2.0,
-        width: 10.1e-3,
-        radial_clearance: clearance,
-        viscosity: 0.0467,
-        max_eccentricity: 0.95,
-        stop_stiffness: 1e8,
-    });
+    let guide = guide_land_7008c();
+    assert_eq!(guide.radial_clearance, clearance);
+    params.cage.guide = Some(guide);
     params.loads = LoadProfile::Constant(Loads {
         force: [200.0, 0.0, 100.0],
         moment: [0.0; 2],

@@ -199,6 +199,34 @@ pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium)
     (params, eq)
 }
 
+/// Ball and cage drag of the 7008C cases: effective density of the oil
+/// (860 kg/m³, seed 001 Table 1's ρ_e), C_D 0.5, spin drag 0.05, cage
+/// viscous 1e-6 and windage 1e-9 (assumed).
+pub fn drag_7008c() -> DragParameters {
+    DragParameters {
+        effective_density: 860.0,
+        ball_drag_coefficient: 0.5,
+        ball_spin_drag_coefficient: 0.05,
+        cage_viscous: 1e-6,
+        cage_windage: 1e-9,
+    }
+}
+
+/// The 7008C cage's outer-ring guide land, seed 001 Table 1: land radius
+/// d_co/2 = 28.665 mm, width G 10.1 mm, radial clearance C_g/2 = 0.175 mm,
+/// η₀ 0.0467 Pa·s; ε capped at 0.95 with a stop of 1e8 N/m.
+pub fn guide_land_7008c() -> rolldyn::dynamics::GuideLand {
+    rolldyn::dynamics::GuideLand {
+        ring: rolldyn::RingKind::Outer,
+        land_radius: 57.33e-3 / 2.0,
+        width: 10.1e-3,
+        radial_clearance: 0.35e-3 / 2.0,
+        viscosity: 0.0467,
+        max_eccentricity: 0.95,
+        stop_stiffness: 1e8,
+    }
+}
+
 /// The adaptive integrators the dynamic validation cases run with: the
 /// explicit DOPRI5 and the stiff ROS34PW2 (issue 5: both must pass).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
