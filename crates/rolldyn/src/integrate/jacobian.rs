@@ -19,7 +19,7 @@
 //! increment of a ball's azimuth grew with every turn (0.2 µm along the
 //! 7008C's pitch circle after 1 s), and was 1e-14 m for a ball starting
 //! at φ = 0; the poorer Jacobian cost the default case's whirl regime
-//! 13× its steps and drifted its energy balance (docs/performance.md).
+//! 13–18× its steps and drifted its energy balance (docs/performance.md).
 
 use super::OdeSystem;
 use super::linear::{BlockJacobian, BlockLayout};
