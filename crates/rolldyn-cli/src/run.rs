@@ -75,6 +75,8 @@ pub struct Summary {
     pub simulated_time_s: f64,
     pub wall_time_s: f64,
     pub integrator: &'static str,
+    pub relative_tolerance: Option<f64>,
+    pub max_step_s: f64,
     pub steps: u64,
     pub rejected_steps: u64,
     pub rhs_evaluations: u64,
@@ -625,6 +627,15 @@ pub fn run_case_series(
         ),
     };
     let mut solver = solver.map_err(|e| bad(e.to_string()))?;
+    let settings = SolverSettings {
+        integrator,
+        relative_tolerance: (choice != IntegratorChoice::Rk4).then_some(relative_tolerance),
+        max_step: if choice == IntegratorChoice::Rk4 {
+            case.time_step.unwrap_or(1e-7)
+        } else {
+            max_step
+        },
+    };
     let mut channels = Channels::new(
         g.ball_count,
         matches!(params.traction, TractionModel::Fastsim(_)),
@@ -686,7 +697,7 @@ pub fn run_case_series(
         case,
         dir,
         duration,
-        integrator,
+        settings,
         record_hash,
     };
     let channels = RefCell::new(channels);
@@ -785,8 +796,16 @@ struct Output<'a> {
     case: &'a Case,
     dir: &'a Path,
     duration: f64,
-    integrator: &'static str,
+    settings: SolverSettings,
     record_hash: u64,
+}
+
+/// The integrator a run used, with its tolerance and largest step (the
+/// fixed step of rk4), as the summary reports them.
+struct SolverSettings {
+    integrator: &'static str,
+    relative_tolerance: Option<f64>,
+    max_step: f64,
 }
 
 impl Output<'_> {
@@ -812,7 +831,7 @@ impl Output<'_> {
             series,
             self.duration,
             wall,
-            self.integrator,
+            &self.settings,
             solver.stats(),
             end.unwrap_or(&in_progress),
         );
@@ -854,7 +873,7 @@ fn summarise(
     series: &TimeSeries,
     duration: f64,
     wall: f64,
-    integrator: &'static str,
+    settings: &SolverSettings,
     stats: IntegrationStats,
     end: &RunEnd,
 ) -> Summary {
@@ -915,7 +934,9 @@ fn summarise(
         requested_duration_s: duration,
         simulated_time_s: t_end,
         wall_time_s: wall,
-        integrator,
+        integrator: settings.integrator,
+        relative_tolerance: settings.relative_tolerance,
+        max_step_s: settings.max_step,
         steps: stats.steps,
         rejected_steps: stats.rejected_steps,
         rhs_evaluations: stats.rhs_evaluations,

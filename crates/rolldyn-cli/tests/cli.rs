@@ -415,8 +415,11 @@ fn run_writes_parquet_and_summary() {
     ] {
         assert!(summary.get(k).is_some(), "summary lacks {k}");
     }
-    // The default case picks the stiff solver, which reports its work.
+    // The default case picks the stiff solver, which reports its work and
+    // settings (the preset's tolerance, the default largest step).
     assert_eq!(summary["integrator"], "ros34pw2");
+    assert_eq!(summary["relative_tolerance"], 1e-2);
+    assert_eq!(summary["max_step_s"], 1e-4);
     assert!(summary["jacobian_evaluations"].as_u64().unwrap() >= 1);
     assert!(summary["factorizations"].as_u64().unwrap() >= summary["steps"].as_u64().unwrap() / 50);
     // Outer-raceway control start: the outer contacts roll with little
@@ -525,6 +528,48 @@ fn default_case_closes_its_energy_balance_in_the_whirl_limit_cycle() {
     );
     let balance = summary["energy_balance_relative_error"].as_f64().unwrap();
     assert!(balance.abs() <= 1e-3, "energy balance {balance}");
+}
+
+/// Film pockets (seed 001's `gupta_film`) cap the stiff integrator's
+/// default step at 1/16 of the cage's film-mode period, here its rotation
+/// on 22 films of k = 11 N / 87.5 µm: √(22 k r²/I)/2π = 4.61 kHz
+/// (r = 27 mm, I = 2.4e-6 kg·m²); an explicit `solver.max_step` wins.
+#[test]
+fn film_pockets_cap_the_default_step() {
+    let run = |extra: &[&str]| -> Value {
+        let dir = temp_dir(&format!("film-step-{}", extra.len()));
+        let mut args = vec![
+            "run",
+            "--duration",
+            "0.5 ms",
+            "--set",
+            "cage.pocket_law=\"gupta_film\"",
+            "--set",
+            "cage.material={ name = \"phenolic\", elastic_modulus = \"7 GPa\", poisson_ratio = 0.3, density = \"1400 kg/m^3\" }",
+        ];
+        args.extend_from_slice(extra);
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+            .args(&args)
+            .arg("-o")
+            .arg(&dir)
+            .output()
+            .expect("rolldyn runs");
+        assert!(o.status.success(), "{}", stderr(&o));
+        let summary =
+            serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
+                .unwrap();
+        std::fs::remove_dir_all(&dir).ok();
+        summary
+    };
+    let k = 11.0 / 87.5e-6;
+    let film = (22.0 * k * 0.027f64.powi(2) / 2.4e-6).sqrt() / std::f64::consts::TAU;
+    let capped = run(&[])["max_step_s"].as_f64().unwrap();
+    assert!(
+        (capped * 16.0 * film - 1.0).abs() < 1e-9,
+        "max step {capped} s for a {film} Hz film mode"
+    );
+    let given = run(&["--set", "solver.max_step=\"50 us\""]);
+    assert_eq!(given["max_step_s"], 5e-5);
 }
 
 #[test]

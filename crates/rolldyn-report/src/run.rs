@@ -249,6 +249,8 @@ fn solver(data: &RunData) -> Option<Section> {
     let mut table = rows(
         data,
         &[
+            ("relative_tolerance", "relative tolerance"),
+            ("max_step_s", "largest step [s]"),
             ("steps", "accepted steps"),
             ("rejected_steps", "rejected steps"),
             ("rhs_evaluations", "right-hand-side evaluations"),
