@@ -7,19 +7,16 @@
 use crate::Failure;
 use crate::checkpoint::{self, CHECKPOINT_FILE, Position, RECORD_FILE, RunRecord};
 use crate::power_channels::PowerSummary;
+use crate::run_solver::SolverSettings;
 use crate::traction_equilibrium::{jones_harris_state, traction_state};
 use crate::vibration::VibrationSummary;
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::Vector3;
 use rolldyn::dynamics::{BearingModel, ContactSample};
-use rolldyn::integrate::tableau::{DOPRI5, RK4};
-use rolldyn::integrate::{
-    ExplicitRk, IntegrationStats, Integrator, ROS34PW2, Rosenbrock, RunEnd, Sampling, Solver,
-    StepControl, run_from,
-};
+use rolldyn::integrate::{IntegrationStats, Integrator, RunEnd, Sampling, Solver, run_from};
 use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
-use rolldyn_case::raw::{IntegratorChoice, StartChoice};
+use rolldyn_case::raw::StartChoice;
 use rolldyn_io::{TimeSeries, read_parquet, write_atomic, write_parquet};
 use serde::Serialize;
 use std::cell::RefCell;
@@ -32,38 +29,6 @@ use std::time::Instant;
 const RPM: f64 = std::f64::consts::TAU / 60.0;
 /// Default recorder rate when the case gives none \[Hz\].
 pub const DEFAULT_SAMPLE_RATE: f64 = 10_000.0;
-/// Default largest step of the explicit adaptive integrator \[s\].
-pub const DEFAULT_MAX_STEP: f64 = 1e-5;
-/// Default largest step of the stiff integrator \[s\]: a tenth of a
-/// millisecond, below the ball-pass periods of the presets (≥ 0.3 ms).
-pub const DEFAULT_STIFF_MAX_STEP: f64 = 1e-4;
-/// Steps per period of the cage's undamped film modes that the stiff
-/// integrator takes at least: ROS34PW2's stability function then damps
-/// such a mode by 0.9 % a period, 0.15 % of critical damping (8 steps:
-/// 6 %, 1 %; `integrate::rosenbrock` test).
-pub const STEPS_PER_FILM_PERIOD: f64 = 16.0;
-/// Default relative tolerance of the adaptive integrators.
-pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-3;
-/// `integrator = "auto"` takes ros34pw2 at relative tolerances from this
-/// value up and dopri5 below it: the measured crossover on the benchmark
-/// cases (docs/performance.md), where dopri5 is stability-bound and
-/// ros34pw2 accuracy-bound.
-pub const STIFF_FROM_TOLERANCE: f64 = 3e-4;
-
-/// Default largest step of the stiff integrator for a cage: 0.1 ms, or
-/// 1/16 of the period of the cage's undamped rattle on `gupta_film`
-/// pocket films ([`rolldyn::cage::CageParameters::film_frequency`]).
-/// With longer steps the L-stable integrator damps that mode numerically
-/// and can hide it: the default case with film pockets rattled at
-/// 3.6–3.8 kHz with 30 µs steps or rtol 1e-4 and whirled smoothly with
-/// 50 µs steps (docs/dynamics.md).
-pub fn stiff_max_step(cage: &rolldyn::cage::CageParameters, balls: usize) -> f64 {
-    cage.film_frequency(balls)
-        .map_or(DEFAULT_STIFF_MAX_STEP, |f| {
-            DEFAULT_STIFF_MAX_STEP.min(1.0 / (STEPS_PER_FILM_PERIOD * f))
-        })
-}
-
 /// `summary.json`.
 #[derive(Serialize)]
 pub struct Summary {
@@ -542,34 +507,14 @@ pub fn run_case_series(
     if let Some(interval) = case.thermal.run_coupling {
         crate::power_channels::couple(case, &mut model, interval, &y0).map_err(bad)?;
     }
-    let relative_tolerance = case
-        .relative_tolerance
-        .unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
-    let choice = match case.integrator {
-        IntegratorChoice::Auto if relative_tolerance >= STIFF_FROM_TOLERANCE => {
-            IntegratorChoice::Ros34pw2
-        }
-        IntegratorChoice::Auto => IntegratorChoice::Dopri5,
-        other => other,
-    };
-    let max_step = case
-        .max_step
-        .unwrap_or(if choice == IntegratorChoice::Ros34pw2 {
-            stiff_max_step(&params.cage, g.ball_count)
-        } else {
-            DEFAULT_MAX_STEP
-        });
+    let settings = SolverSettings::of(case, &params.cage, g.ball_count);
     if !options.force {
-        let (step, key) = match choice {
-            IntegratorChoice::Rk4 => (case.time_step.unwrap_or(1e-7), "solver.time_step"),
-            _ => (max_step, "solver.max_step"),
-        };
         // Channel count: the fixed channels and per-ball ones (a bound).
         let channels = 60 + g.ball_count * 26;
         check_limits(
             duration,
-            step,
-            key,
+            settings.max_step,
+            settings.step_key(),
             case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE),
             channels,
         )
@@ -582,60 +527,9 @@ pub fn run_case_series(
             )));
         }
     }
-    let (solver, integrator) = match choice {
-        IntegratorChoice::Auto => unreachable!("resolved above"),
-        IntegratorChoice::Rk4 => (
-            ExplicitRk::new(
-                &RK4,
-                StepControl::Fixed {
-                    step: case.time_step.unwrap_or(1e-7),
-                },
-                &model,
-                0.0,
-                &y0,
-            )
-            .map(|e| Solver::Explicit(Box::new(e))),
-            "rk4",
-        ),
-        IntegratorChoice::Dopri5 => (
-            ExplicitRk::new(
-                &DOPRI5,
-                StepControl::Adaptive {
-                    relative_tolerance,
-                    max_step,
-                    initial_step: None,
-                },
-                &model,
-                0.0,
-                &y0,
-            )
-            .map(|e| Solver::Explicit(Box::new(e))),
-            "dopri5",
-        ),
-        IntegratorChoice::Ros34pw2 => (
-            Rosenbrock::new(
-                &ROS34PW2,
-                relative_tolerance,
-                max_step,
-                None,
-                &model,
-                0.0,
-                &y0,
-            )
-            .map(|r| Solver::Rosenbrock(Box::new(r))),
-            "ros34pw2",
-        ),
-    };
-    let mut solver = solver.map_err(|e| bad(e.to_string()))?;
-    let settings = SolverSettings {
-        integrator,
-        relative_tolerance: (choice != IntegratorChoice::Rk4).then_some(relative_tolerance),
-        max_step: if choice == IntegratorChoice::Rk4 {
-            case.time_step.unwrap_or(1e-7)
-        } else {
-            max_step
-        },
-    };
+    let mut solver = settings
+        .build(&model, &y0)
+        .map_err(|e| bad(e.to_string()))?;
     let mut channels = Channels::new(
         g.ball_count,
         matches!(params.traction, TractionModel::Fastsim(_)),
@@ -798,14 +692,6 @@ struct Output<'a> {
     duration: f64,
     settings: SolverSettings,
     record_hash: u64,
-}
-
-/// The integrator a run used, with its tolerance and largest step (the
-/// fixed step of rk4), as the summary reports them.
-struct SolverSettings {
-    integrator: &'static str,
-    relative_tolerance: Option<f64>,
-    max_step: f64,
 }
 
 impl Output<'_> {
