@@ -96,6 +96,8 @@ pub struct Case {
     pub planar: bool,
     /// Gravity along −z.
     pub gravity: bool,
+    /// The lubricant film in the normal approach.
+    pub film_in_approach: bool,
     /// Inner-ring mass \[kg\], if given.
     pub inner_ring_mass: Option<f64>,
     /// Inner-ring tilt inertia \[kg·m²\], if given.
@@ -493,6 +495,13 @@ impl Case {
             rings: material("materials.rings", raw.materials.rings.as_ref())?,
         };
         let traction = traction(raw.model.traction.as_ref(), lubricant.as_ref(), &materials)?;
+        if raw.model.film_in_approach == Some(true) && traction.lubricant().is_none() {
+            return Err(Invalid::new(
+                "model.film_in_approach",
+                Some("true".into()),
+                "the film needs a film model: model.traction = \"ehl\" with a [lubricant] section",
+            ));
+        }
         let inner_ring_mass = checked("inner_ring.mass", &raw.inner_ring.mass, positive)?;
         let inner_ring_tilt_inertia = checked(
             "inner_ring.tilt_inertia",
@@ -615,6 +624,7 @@ impl Case {
             traction_integration: raw.model.traction_integration.unwrap_or_default(),
             planar: raw.model.planar.unwrap_or(false),
             gravity: raw.model.gravity.unwrap_or(false),
+            film_in_approach: raw.model.film_in_approach.unwrap_or(false),
             inner_ring_mass,
             inner_ring_tilt_inertia,
             integrator,

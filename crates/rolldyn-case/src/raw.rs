@@ -461,6 +461,10 @@ pub struct RawModel {
     pub planar: Option<bool>,
     /// Gravity along −z (default false).
     pub gravity: Option<bool>,
+    /// Lubricant film in the normal approach (MODEL §4): elastic
+    /// compression δ + h, the film a state of each contact following its
+    /// steady value (default false; needs a traction law with a lubricant).
+    pub film_in_approach: Option<bool>,
 }
 
 /// A traction model as written in the case file.

@@ -124,6 +124,7 @@ impl Case {
                 .lubricant
                 .as_ref()
                 .map_or(Default::default(), |l| l.supply),
+            film_in_approach: self.film_in_approach,
         })
     }
 }

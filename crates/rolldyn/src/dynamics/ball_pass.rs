@@ -132,6 +132,7 @@ mod tests {
             cage_force: Vector3::new(x, x, x / 11.0),
             cage_torque: x / 13.0,
             dissipation: x * x,
+            film_power: x / 17.0,
         }
     }
 

@@ -8,6 +8,10 @@ pub struct StateLayout {
     /// Whether each ball carries its spin angle ψ (10th ball state, MODEL
     /// §1): only when the balls have surfaces (waviness, spalls).
     pub ball_spin_angle: bool,
+    /// Whether each ball carries the film thickness of its inner and outer
+    /// contact (2 more ball states, and a film-work accumulator): only with
+    /// the film in the normal approach (MODEL §4, `dynamics::film_approach`).
+    pub ball_films: bool,
 }
 
 impl StateLayout {
@@ -21,8 +25,14 @@ impl StateLayout {
     pub const OUTER: usize = 4;
     /// Cage states.
     pub const CAGE: usize = 6;
-    /// States per ball: 9, or 10 with the spin angle.
+    /// States per ball: 9, one more with the spin angle, two more with
+    /// the films.
     pub fn ball_len(&self) -> usize {
+        self.film_offset() + 2 * usize::from(self.ball_films)
+    }
+    /// Offset of the inner contact's film h in a ball's block (the outer
+    /// contact's follows), when present.
+    pub fn film_offset(&self) -> usize {
         Self::BALL + usize::from(self.ball_spin_angle)
     }
     /// First state of ball j.
@@ -50,17 +60,18 @@ impl StateLayout {
             self.ring()..self.cage() + Self::CAGE,
         ]
     }
-    /// The two energy accumulators: drive work and dissipated energy \[J\].
+    /// The energy accumulators: drive work and dissipated energy \[J\],
+    /// then, with the films, the film work.
     pub fn work(&self) -> usize {
         self.cage() + Self::CAGE
     }
     /// Total number of states.
     pub fn len(&self) -> usize {
-        self.work() + 2
+        self.work() + 2 + usize::from(self.ball_films)
     }
     /// What state `index` is, in words (integration failures name it).
     pub fn state_name(&self, index: usize) -> String {
-        const BALL: [&str; 10] = [
+        const BALL: [&str; 12] = [
             "axial position x",
             "radial position r",
             "orbital angle φ",
@@ -71,6 +82,8 @@ impl StateLayout {
             "angular velocity ω_r",
             "angular velocity ω_t",
             "spin angle ψ",
+            "inner film h",
+            "outer film h",
         ];
         const RING: [&str; 10] = [
             "axial position x",
@@ -96,6 +109,12 @@ impl StateLayout {
         let n = self.ball_len() * self.balls;
         if index < n {
             let (j, k) = (index / self.ball_len(), index % self.ball_len());
+            // The films follow the spin angle when there is one.
+            let k = if k >= Self::BALL && !self.ball_spin_angle {
+                k + 1
+            } else {
+                k
+            };
             format!("ball {j} {}", BALL[k])
         } else if index < self.outer() {
             format!("inner ring {}", RING[index - self.ring()])
@@ -107,6 +126,8 @@ impl StateLayout {
             "drive work accumulator".into()
         } else if index == self.work() + 1 {
             "dissipated energy accumulator".into()
+        } else if index == self.work() + 2 && self.ball_films {
+            "film work accumulator".into()
         } else {
             format!("state {index}")
         }
@@ -124,17 +145,30 @@ mod tests {
 
     #[test]
     fn every_state_has_a_name() {
-        let l = StateLayout {
-            balls: 2,
-            ball_spin_angle: true,
-        };
-        let names: Vec<String> = (0..l.len()).map(|i| l.state_name(i)).collect();
-        assert_eq!(names[0], "ball 0 axial position x");
-        assert_eq!(names[l.ball(1) + 9], "ball 1 spin angle ψ");
-        assert_eq!(names[l.ring() + 2], "inner ring position z");
-        assert_eq!(names[l.outer() + 3], "outer ring velocity z");
-        assert_eq!(names[l.cage() + 5], "cage speed");
-        assert_eq!(names[l.work() + 1], "dissipated energy accumulator");
-        assert!(names.iter().all(|n| !n.starts_with("state")));
+        for (spin, films) in [(false, false), (true, false), (false, true), (true, true)] {
+            let l = StateLayout {
+                balls: 2,
+                ball_spin_angle: spin,
+                ball_films: films,
+            };
+            let names: Vec<String> = (0..l.len()).map(|i| l.state_name(i)).collect();
+            assert_eq!(names[0], "ball 0 axial position x");
+            if spin {
+                assert_eq!(names[l.ball(1) + 9], "ball 1 spin angle ψ");
+            }
+            if films {
+                assert_eq!(names[l.ball(1) + l.film_offset()], "ball 1 inner film h");
+                assert_eq!(
+                    names[l.ball(1) + l.film_offset() + 1],
+                    "ball 1 outer film h"
+                );
+                assert_eq!(names[l.work() + 2], "film work accumulator");
+            }
+            assert_eq!(names[l.ring() + 2], "inner ring position z");
+            assert_eq!(names[l.outer() + 3], "outer ring velocity z");
+            assert_eq!(names[l.cage() + 5], "cage speed");
+            assert_eq!(names[l.work() + 1], "dissipated energy accumulator");
+            assert!(names.iter().all(|n| !n.starts_with("state")));
+        }
     }
 }

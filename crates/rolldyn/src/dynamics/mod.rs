@@ -16,6 +16,7 @@
 //! | `layout` | offsets in the state vector |
 //! | `ball_pass` | the balls' contacts evaluated serially or across threads, summed in ball order |
 //! | `race_contact` | ball–raceway normal force, traction, hysteresis |
+//! | `film` | the contacts' steady films, and the film in the normal approach |
 //! | `pocket` | ball–pocket contact |
 //! | `drag` | air–oil drag on balls and cage |
 //! | `supports` | ring spring–dampers |
@@ -29,6 +30,7 @@ mod ball_pass;
 pub mod checkpoint;
 pub mod drag;
 pub mod energy;
+pub mod film;
 pub mod layout;
 pub mod model;
 pub mod outputs;

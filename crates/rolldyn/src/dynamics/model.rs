@@ -94,6 +94,10 @@ pub struct DynamicsParameters {
     /// Oil supply of the inner and outer raceway contacts (starvation of
     /// the EHL film, MODEL §4; default: fully flooded).
     pub film_supply: [crate::lubrication::Supply; 2],
+    /// The lubricant film in the normal approach (MODEL §4): δ_el = δ + h
+    /// with h a state of each contact following its steady film
+    /// ([`crate::lubrication::approach`]). Needs a film model (EHL traction).
+    pub film_in_approach: bool,
 }
 
 /// Kinematic state of a ball (global frame).
@@ -107,6 +111,9 @@ pub(super) struct BallMotion {
     pub(super) omega: Vector3<f64>,
     /// Orbital rate φ̇ of its azimuth frame \[rad/s\].
     pub(super) orbital_rate: f64,
+    /// Film h of the inner and outer contact \[m\] (0 without the film in
+    /// the approach).
+    pub(super) film: [f64; 2],
 }
 
 /// Kinematic state of a ring for contact evaluation.
@@ -173,6 +180,13 @@ impl BearingModel {
         for supply in &params.film_supply {
             supply.validate()?;
         }
+        if params.film_in_approach && params.traction.lubricant().is_none() {
+            return Err(InvalidParameter::new(
+                "film_in_approach",
+                "true",
+                "needs a film model: a traction law with a lubricant (ehl)",
+            ));
+        }
         let ep = effective_modulus(ball, rings);
         let ball_mass = geometry.ball_mass(ball.density);
         Ok(Self {
@@ -194,6 +208,7 @@ impl BearingModel {
             layout: StateLayout {
                 balls: geometry.ball_count,
                 ball_spin_angle: params.surface.has_ball_surfaces(),
+                ball_films: params.film_in_approach,
             },
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
             thermal: None,
@@ -258,6 +273,7 @@ impl BearingModel {
         y[r..r + 5].copy_from_slice(&ring_displacement);
         let c = l.cage();
         y[c + 5] = omega_c;
+        self.settle_films(0.0, &mut y);
         y
     }
 
@@ -280,6 +296,7 @@ impl BearingModel {
         y[r..r + 5].copy_from_slice(&eq.displacement);
         let c = l.cage();
         y[c + 5] = eq.cage_speed();
+        self.settle_films(0.0, &mut y);
         y
     }
 
@@ -351,6 +368,12 @@ impl BearingModel {
                 velocity: v,
                 omega: w,
                 orbital_rate: y[b + 5],
+                film: if self.layout.ball_films {
+                    let f = b + self.layout.film_offset();
+                    [y[f], y[f + 1]]
+                } else {
+                    [0.0; 2]
+                },
             },
             [ex, er, et],
         )
@@ -395,10 +418,12 @@ pub(super) struct BallCoupling {
     pub(super) cage_force: Vector3<f64>,
     pub(super) cage_torque: f64,
     pub(super) dissipation: f64,
+    /// Power the films in the approach do on the contacts \[W\].
+    pub(super) film_power: f64,
 }
 
 impl BallCoupling {
-    pub(super) const LEN: usize = 14;
+    pub(super) const LEN: usize = 15;
 
     pub(super) fn add(&mut self, other: &Self) {
         self.ring_force += other.ring_force;
@@ -407,6 +432,7 @@ impl BallCoupling {
         self.cage_force += other.cage_force;
         self.cage_torque += other.cage_torque;
         self.dissipation += other.dissipation;
+        self.film_power += other.film_power;
     }
 
     pub(super) fn write(&self, out: &mut [f64]) {
@@ -416,6 +442,7 @@ impl BallCoupling {
         out[9..12].copy_from_slice(self.cage_force.as_slice());
         out[12] = self.cage_torque;
         out[13] = self.dissipation;
+        out[14] = self.film_power;
     }
 
     fn read(c: &[f64]) -> Self {
@@ -426,6 +453,7 @@ impl BallCoupling {
             cage_force: Vector3::from_column_slice(&c[9..12]),
             cage_torque: c[12],
             dissipation: c[13],
+            film_power: c[14],
         }
     }
 }
@@ -452,9 +480,14 @@ impl BearingModel {
         let mut moment = Vector3::zeros();
         let mut out = BallCoupling::default();
         let episodes = &self.episodes[j];
+        let films = l.ball_films;
+        // Film rates ḣ of the inner and outer contact (film in the approach).
+        let mut film_rates = [0.0; 2];
         if let Some(cn) =
             self.race_contact(inner, &self.inner_table, &episodes[0], &ball, Want::Forces)
         {
+            film_rates[0] = cn.film_rate;
+            out.film_power += cn.film_power;
             force += cn.force + cn.surface.ball_force;
             moment += cn.moment + cn.surface.ball_moment;
             out.ring_force += cn.surface.ring_force - cn.force;
@@ -465,10 +498,14 @@ impl BearingModel {
             if let Some(d) = sink.as_deref_mut() {
                 d.inner.add(&cn.losses);
             }
+        } else if films {
+            film_rates[0] = self.open_film_rate(inner, &self.inner_table, &ball);
         }
         if let Some(cn) =
             self.race_contact(outer, &self.outer_table, &episodes[1], &ball, Want::Forces)
         {
+            film_rates[1] = cn.film_rate;
+            out.film_power += cn.film_power;
             force += cn.force + cn.surface.ball_force;
             moment += cn.moment + cn.surface.ball_moment;
             out.outer_force += cn.surface.ring_force - cn.force;
@@ -476,6 +513,8 @@ impl BearingModel {
             if let Some(d) = sink.as_deref_mut() {
                 d.outer.add(&cn.losses);
             }
+        } else if films {
+            film_rates[1] = self.open_film_rate(outer, &self.outer_table, &ball);
         }
         if let Some(pc) = self.pocket_contact(j, y, &ball) {
             force += pc.force;
@@ -515,6 +554,10 @@ impl BearingModel {
         dy[6] = moment.dot(&ex) / inertia;
         dy[7] = moment.dot(&er) / inertia + phi_dot * wt;
         dy[8] = moment.dot(&et) / inertia - phi_dot * wr;
+        if films {
+            let f = l.film_offset();
+            dy[f..f + 2].copy_from_slice(&film_rates);
+        }
         if l.ball_spin_angle {
             // ψ̇ = |ω_b − φ̇ e_x|: the ball's turning relative to the cage
             // frame carries its surface past the contacts (MODEL §1, §6).
@@ -553,6 +596,7 @@ impl BearingModel {
             mut cage_force,
             mut cage_torque,
             mut dissipation,
+            film_power,
         } = *balls;
         let mut external_power = 0.0;
         // `dy` starts at the inner ring: ring, outer ring, cage and work
@@ -671,6 +715,9 @@ impl BearingModel {
         let spin_axis = inner.omega - inner.omega_frame;
         dy[dw] = -ring_moment.dot(&spin_axis) + external_power;
         dy[dw + 1] = dissipation;
+        if l.ball_films {
+            dy[dw + 2] = film_power;
+        }
     }
 }
 

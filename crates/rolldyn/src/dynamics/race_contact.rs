@@ -16,12 +16,11 @@
 //! M_h |ω_roll| is dissipated. A ramp over 1 mm/s of rolling speed makes it
 //! continuous at rest.
 
+use super::film::contact_index;
 use super::model::{BallMotion, BearingModel, RingMotion};
 use super::surface_contact::SurfaceEffect;
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
-use crate::contact::{ContactTable, Curvature, TorusContact};
-use crate::geometry::RingKind;
-use crate::lubrication::{FilmConditions, contact_film};
+use crate::contact::{ContactTable, TorusContact};
 use crate::power::ContactLosses;
 use crate::traction::fastsim::MapCell;
 use crate::traction::{ContactConditions, ContactPatch, Creep, TractionModel, TractionResult};
@@ -86,6 +85,10 @@ pub(super) struct RaceContact {
     pub(super) penetration_rate: f64,
     /// Dissipated power: normal damping and traction \[W\].
     pub(super) dissipation: f64,
+    /// Rate ḣ of the film in the approach \[m/s\] (0 without it).
+    pub(super) film_rate: f64,
+    /// Power Q ḣ the film does on the contact \[W\].
+    pub(super) film_power: f64,
     /// The same by mechanism (sums to `dissipation` to rounding).
     pub(super) losses: ContactLosses,
     /// Force on the ball (normal and traction) \[N\].
@@ -101,9 +104,20 @@ pub(super) struct RaceContact {
 
 impl BearingModel {
     /// Contact geometry of a ball with a ring, the penetration including the
-    /// surfaces (MODEL §2.1, §6), and the surfaces' effect per unit load;
-    /// None when the bodies do not touch.
+    /// surfaces (MODEL §2.1, §6) and the film in the approach, and the
+    /// surfaces' effect per unit load; None when the bodies do not touch.
     pub(super) fn race_geometry(
+        &self,
+        ring: &RingMotion,
+        ball: &BallMotion,
+    ) -> Option<(TorusContact, SurfaceEffect)> {
+        self.race_geometry_any(ring, ball)
+            .filter(|(geometry, _)| geometry.penetration > 0.0)
+    }
+
+    /// [`Self::race_geometry`], open or closed (penetration ≤ 0: the gap);
+    /// None only where the torus geometry is degenerate.
+    pub(super) fn race_geometry_any(
         &self,
         ring: &RingMotion,
         ball: &BallMotion,
@@ -114,8 +128,8 @@ impl BearingModel {
         let surface = self
             .surface_effect(ring, ball, &geometry)
             .unwrap_or_default();
-        geometry.penetration += surface.approach;
-        (geometry.penetration > 0.0).then_some((geometry, surface))
+        geometry.penetration += surface.approach + ball.film[contact_index(ring)];
+        Some((geometry, surface))
     }
 
     pub(super) fn race_contact(
@@ -128,29 +142,20 @@ impl BearingModel {
     ) -> Option<RaceContact> {
         let with_output = matches!(want, Want::Output | Want::Map(_));
         let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
-        let orbital_rate = ball.orbital_rate;
         let (geometry, surface) = self.race_geometry(ring, ball)?;
         let n = geometry.normal;
         let groove_velocity = ring.velocity
             + ring
                 .omega_frame
                 .cross(&(geometry.groove_centre - ring.centre));
-        let penetration_rate = (v - groove_velocity).dot(&n) + surface.approach_rate;
+        let mut penetration_rate = (v - groove_velocity).dot(&n) + surface.approach_rate;
         let hertz = table.at(geometry.contact_angle);
         let stiffness = hertz.stiffness;
-        let state = ContactState {
-            stiffness,
-            penetration: geometry.penetration,
-            penetration_rate,
-            impact_speed: episode.impact_speed(penetration_rate, self.params.impact_speed_floor),
-            effective_mass: self.ball_mass,
-        };
-        let load = self.params.normal_law.force(&state);
+        let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
         let point = geometry.contact_point;
         let ball_surface = v + w.cross(&(point - q));
         let ring_surface = ring.velocity + ring.omega.cross(&(point - ring.centre));
         let slip = ball_surface - ring_surface;
-        let ellipse = hertz.at_load(load);
         // Rolling direction: the azimuthal direction at P, tangent to the contact.
         let azimuthal = Vector3::new(0.0, -point.z, point.y);
         let along = azimuthal - azimuthal.dot(&n) * n;
@@ -159,53 +164,41 @@ impl BearingModel {
         } else {
             n.cross(&Vector3::x()).normalize()
         };
-        // The contact point moves with the ball's azimuth frame:
-        // v_P = q̇ + φ̇ e_x × (P − q). Entrainment is the mean surface speed
-        // relative to it (MODEL §3 writes q̇ for v_P, which misses φ̇ e_x ×
-        // (P − q): a factor 1/(1 ± γ cos α) on |u|, 12 % on the 7008C).
         // Computed only where used (film, traction curve, hysteresis, output).
         let hysteresis = self.params.rolling_hysteresis > 0.0;
+        let films = self.layout.ball_films;
         let (entrainment, u) =
-            if with_output || hysteresis || self.params.traction.needs_entrainment() {
-                let contact_velocity = v + orbital_rate * Vector3::x().cross(&(point - q));
-                let e =
-                    0.5 * ((ball_surface - contact_velocity) + (ring_surface - contact_velocity));
-                let e = e - e.dot(&n) * n;
+            if with_output || hysteresis || films || self.params.traction.needs_entrainment() {
+                let e = Self::entrainment(ring, ball, &point, &n);
                 (e, e.norm())
             } else {
                 (Vector3::zeros(), 0.0)
             };
-        // Film (MODEL §4): Hamrock–Dowson, starved by the ring's supply.
-        let film = match self.params.traction.lubricant() {
-            Some(lubricant) => {
-                let curvature = Curvature::of_raceway(
-                    &ring.raceway,
-                    self.geometry.ball_diameter,
-                    self.geometry.pitch_diameter,
-                    geometry.contact_angle,
-                );
-                let k = match ring.raceway.kind {
-                    RingKind::Inner => 0,
-                    RingKind::Outer => 1,
-                };
-                contact_film(
-                    lubricant,
-                    &self.params.film_supply[k],
-                    0.0,
-                    &FilmConditions {
-                        entrainment_speed: u,
-                        load,
-                        rolling_radius: curvature.rolling_radius,
-                        effective_modulus: self.effective_modulus,
-                        ellipticity: hertz.ellipticity,
-                        semi_minor: ellipse.semi_minor,
-                        // Seed 003 eq 27: the inner ring throws the supply film.
-                        ring_speed: ring.shaft_speed,
-                    },
-                )
-                .central
-            }
-            None => 0.0,
+        // Film in the approach (dynamics::film): the film's rate is part of
+        // the elastic approach rate.
+        let film_rate = if films {
+            let (steady, rate) = self.film_target(ring, &hertz, geometry.contact_angle, u, elastic);
+            rate * (steady - ball.film[contact_index(ring)])
+        } else {
+            0.0
+        };
+        penetration_rate += film_rate;
+        let state = ContactState {
+            stiffness,
+            penetration: geometry.penetration,
+            penetration_rate,
+            impact_speed: episode.impact_speed(penetration_rate, self.params.impact_speed_floor),
+            effective_mass: self.ball_mass,
+        };
+        let load = self.params.normal_law.force(&state);
+        let ellipse = hertz.at_load(load);
+        // Film (MODEL §4): the film state with the film in the approach,
+        // else the steady Hamrock–Dowson film, starved by the ring's supply.
+        let film = if films {
+            ball.film[contact_index(ring)]
+        } else {
+            self.steady_film(ring, &hertz, geometry.contact_angle, u, load)
+                .map_or(0.0, |f| f.central)
         };
         let rg = ring.raceway.groove_radius;
         let rb = 0.5 * self.geometry.ball_diameter;
@@ -272,7 +265,6 @@ impl BearingModel {
             dissipation -= m_h.dot(&relative_spin);
             losses.hysteresis = -m_h.dot(&relative_spin);
         }
-        let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
         dissipation += (load - elastic) * penetration_rate;
         losses.damping = (load - elastic) * penetration_rate;
         let output = if with_output {
@@ -306,6 +298,8 @@ impl BearingModel {
             surface,
             penetration_rate,
             dissipation,
+            film_rate,
+            film_power: load * film_rate,
             losses,
             force: -load * n + traction.force,
             moment,

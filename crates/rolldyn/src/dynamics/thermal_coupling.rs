@@ -378,6 +378,7 @@ mod tests {
             drag: DragParameters::default(),
             surface: Default::default(),
             film_supply: Default::default(),
+            film_in_approach: false,
         };
         let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
         let y0 = model.state_from_equilibrium(&eq);

@@ -15,7 +15,8 @@
 //! effective modulus of MODEL §2.2 (E' = 2/[(1−ν₁²)/E₁ + (1−ν₂²)/E₂]), the
 //! one Hamrock & Dowson use.
 //!
-//! [`starvation`]: starved films from the inlet distance or the oil supply
+//! [`approach`]: the film in the normal approach, a state relaxing to
+//! its steady value. [`starvation`]: starved films from the inlet distance or the oil supply
 //! (seed 003 eqs 26–30). [`film`]: a contact's whole film state (flooded
 //! and starved films, Λ = h_min/σ, K_oil). [`film_stiffness`]: the oil film's normal
 //! stiffness K_oil = Q/(0.073 h_min) (seed 003 eq 37).
@@ -23,6 +24,7 @@
 use crate::error::InvalidParameter;
 use serde::{Deserialize, Serialize};
 
+pub mod approach;
 pub mod film;
 pub mod starvation;
 pub use film::{ContactFilm, FilmConditions, contact_film};
