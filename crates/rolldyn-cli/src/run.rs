@@ -85,6 +85,7 @@ pub struct Summary {
     /// The thermal network coupled to the run (null when not coupled).
     pub thermal_coupling: Option<crate::power_channels::ThermalRunSummary>,
     pub drive_work_j: f64,
+    pub film_work_j: f64,
     pub dissipated_energy_j: f64,
     pub mechanical_energy_change_j: f64,
     pub energy_balance_error_j: f64,
@@ -182,6 +183,7 @@ impl Channels {
             ("drive_work_j", "J"),
             ("dissipated_energy_j", "J"),
             ("mechanical_energy_j", "J"),
+            ("film_work_j", "J"),
             ("pure_rolling_cage_speed_ratio", "1"),
         ] {
             series.channel(name, unit);
@@ -268,6 +270,7 @@ impl Channels {
             drive,
             dissipated,
             model.energy(t, y).total(),
+            model.film_work(y),
         ]);
         model.contact_samples(t, y, contacts);
         row.push(model.pure_rolling_ratio(contacts, y));
@@ -796,9 +799,10 @@ fn summarise(
     let last = |name: &str| column(name).last().copied().unwrap_or(0.0);
     let first = |name: &str| column(name).first().copied().unwrap_or(0.0);
     let drive = last("drive_work_j");
+    let film_work = last("film_work_j");
     let dissipated = last("dissipated_energy_j");
     let delta_e = last("mechanical_energy_j") - first("mechanical_energy_j");
-    let imbalance = drive - delta_e - dissipated;
+    let imbalance = drive + film_work - delta_e - dissipated;
     let (status, error) = match end {
         RunEnd::Completed => ("completed", None),
         RunEnd::Interrupted { .. } => (
@@ -883,6 +887,7 @@ fn summarise(
             .thermal()
             .map(crate::power_channels::ThermalRunSummary::from),
         drive_work_j: drive,
+        film_work_j: film_work,
         dissipated_energy_j: dissipated,
         mechanical_energy_change_j: delta_e,
         energy_balance_error_j: imbalance,

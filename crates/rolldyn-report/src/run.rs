@@ -412,24 +412,29 @@ fn energy(data: &RunData) -> Option<Section> {
     let drive = data.channel("drive_work_j")?;
     let dissipated = data.channel("dissipated_energy_j")?;
     let mechanical = data.channel("mechanical_energy_j")?;
+    // Runs written before the film in the approach have no film channel.
+    let zeros = vec![0.0; drive.len()];
+    let film = data.channel("film_work_j").unwrap_or(&zeros);
     let t: Vec<f64> = data.time().iter().map(|t| 1e3 * t).collect();
     let e0 = mechanical.first().copied().unwrap_or(0.0);
     let change: Vec<f64> = mechanical.iter().map(|e| e - e0).collect();
     let error: Vec<f64> = drive
         .iter()
+        .zip(film)
         .zip(dissipated)
         .zip(&change)
-        .map(|((w, d), e)| w - d - e)
+        .map(|(((w, f), d), e)| w + f - d - e)
         .collect();
     Some(
         Section::new("energy", "Energy balance")
-            .paragraph("Work of the drive W = dissipated energy D + change of mechanical energy ΔE; the error W − D − ΔE measures the integration.")
+            .paragraph("Work of the drive W plus the films' work F (film in the approach, else 0) = dissipated energy D + change of mechanical energy ΔE; the error W + F − D − ΔE measures the integration.")
             .table(
                 &["quantity", "value", "summary.json key"],
                 rows(
                     data,
                     &[
                         ("drive_work_j", "drive work [J]"),
+                        ("film_work_j", "film work [J]"),
                         ("dissipated_energy_j", "dissipated energy [J]"),
                         ("mechanical_energy_change_j", "change of mechanical energy [J]"),
                         ("energy_balance_error_j", "balance error [J]"),
@@ -440,6 +445,7 @@ fn energy(data: &RunData) -> Option<Section> {
             .figure(
                 Plot::new("Energy", "time [ms]", "energy [J]")
                     .with(Series::line("drive work W", &t, drive))
+                    .with(Series::line("film work F", &t, film))
                     .with(Series::line("dissipated D", &t, dissipated))
                     .with(Series::line("mechanical change ΔE", &t, &change)),
             )

@@ -133,6 +133,8 @@ mod tests {
             cage_torque: x / 13.0,
             dissipation: x * x,
             film_power: x / 17.0,
+            ring_velocity_gradient: [x, 0.0, -x / 19.0, x / 23.0, 0.0],
+            outer_velocity_gradient: [x / 29.0, x],
         }
     }
 

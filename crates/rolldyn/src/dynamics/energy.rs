@@ -1,8 +1,10 @@
 //! Energy bookkeeping of the dynamic model (MODEL §10).
 //!
 //! [`BearingModel::energy`] gives kinetic energy (balls, ring translation
-//! and tilt, cage), elastic energy (Σ (2/5) K_c δ^{5/2} + ½ k δ_p²) and the
-//! potential of constant applied loads and gravity. With no dissipation and
+//! and tilt, cage), elastic energy (Σ (2/5) K_c δ^{5/2} + ½ k δ_p²; with the
+//! film in the approach each contact stores (2/5) K_c δ_el^{5/2} − Q h +
+//! ∫₀^Q h dq, `dynamics::film`) and the potential of constant applied loads
+//! and gravity. With no dissipation and
 //! a fixed contact angle (planar mode) their sum is conserved (VALIDATION
 //! B1). Where α varies, K_c(α) δ^{3/2} is not the exact gradient of
 //! (2/5) K_c δ^{5/2}; the K_c tables vary by ~1e-3 per degree.
@@ -50,7 +52,9 @@ impl BearingModel {
                 + 0.5 * self.ball_inertia * w.norm_squared();
             e.potential += self.ball_mass * g * q.z;
             for (ring, table) in [(&inner, &self.inner_table), (&outer, &self.outer_table)] {
-                if let Some((c, _)) = self.race_geometry(ring, &ball) {
+                if self.layout.film_work {
+                    e.elastic += self.film_contact_energy(ring, table, &ball);
+                } else if let Some((c, _)) = self.race_geometry(ring, &ball) {
                     e.elastic += 0.4 * table.stiffness(c.contact_angle) * c.penetration.powf(2.5);
                 }
             }

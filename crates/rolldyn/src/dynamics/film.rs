@@ -1,23 +1,36 @@
 //! The lubricant film of the ball–raceway contacts (MODEL §4): the steady
 //! film the EHL traction sees, and the film in the normal approach.
 //!
-//! Steady film: Hamrock–Dowson central film at the contact's load,
+//! Steady film: the Hamrock–Dowson central film at the contact's load,
 //! entrainment speed and curvature, starved by the ring's supply
 //! ([`crate::lubrication`]).
 //!
-//! Film in the normal approach (option `film_in_approach`): each ball
-//! carries the film h of its inner and outer contact as states. The
-//! geometry adds h to the penetration, δ_el = δ + h, and h relaxes to its
-//! steady value at rate |u|/b ([`crate::lubrication::approach`]). The
-//! film's rate adds to the approach rate, so normal damping acts on δ̇_el.
-//! The total contact force Q times ḣ is the power the film does on the
-//! contact. It is accumulated as the film work, and the energy balance reads
-//! drive work + film work = ΔE + dissipated energy.
+//! Film in the normal approach (option `film_in_approach`, MODEL §4): the
+//! elastic approach is δ_el = δ + h(Q), Q = K_c δ_el^{3/2}, solved by Newton
+//! at every evaluation ([`crate::lubrication::approach::FilmLaw`] gives h
+//! and dh/dQ). A contact is closed while δ + h(0) > 0: it carries load
+//! through its film before the surfaces overlap. Normal damping acts on the
+//! bodies' approach rate δ̇. The contact stores
+//! V = (2/5) K_c δ_el^{5/2} − Q h + ∫₀^Q h dq (`dynamics::energy`), and
+//! ∂V/∂δ = Q.
+//!
+//! **The film's work.** At fixed Q, V still changes when the law moves:
+//! with the entrainment speed u and the contact angle. That change,
+//! P_film = ∂/∂t ∫₀^Q h dq at fixed Q, is the work the film does on the
+//! contact (drawn from the entrainment). It is accumulated, and the energy
+//! balance reads drive + film work = ΔE + dissipated energy. The rate is
+//! taken along the motion. A central difference moves the ball's states
+//! by its derivatives, the rings' positions by their velocities, and time.
+//! The rings' accelerations are not known while a ball is evaluated, so the
+//! ball passes ∂(∫h)/∂(ring velocity) to the border, which multiplies it by
+//! the accelerations. The check is `b2_energy_balance` with the film
+//! (tests/validation/c7_film_in_approach.rs): P_drive + P_film −
+//! P_dissipated = dE/dt at every state.
 
 use super::model::{BallMotion, BearingModel, RingMotion};
-use crate::contact::{ContactTable, Curvature, HertzCoefficients};
+use crate::contact::{ContactTable, Curvature, HertzCoefficients, TorusContact};
 use crate::geometry::RingKind;
-use crate::lubrication::approach::{floor_load, relaxation_rate};
+use crate::lubrication::approach::{FilmGeometry, FilmLaw};
 use crate::lubrication::{ContactFilm, FilmConditions, contact_film};
 use nalgebra::Vector3;
 
@@ -27,6 +40,41 @@ pub(super) fn contact_index(ring: &RingMotion) -> usize {
         RingKind::Inner => 0,
         RingKind::Outer => 1,
     }
+}
+
+/// A closed contact with the film in the approach.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct FilmApproach {
+    /// The film law at this state.
+    pub(super) law: FilmLaw,
+    /// Elastic approach δ_el = δ + h \[m\].
+    pub(super) elastic_approach: f64,
+    /// Elastic load Q = K_c δ_el^{3/2} \[N\].
+    pub(super) load: f64,
+    /// Central film h(Q) \[m\].
+    pub(super) film: f64,
+}
+
+impl FilmApproach {
+    /// Stored energy V = (2/5) K_c δ_el^{5/2} − Q h + ∫₀^Q h dq \[J\].
+    pub(super) fn energy(&self) -> f64 {
+        0.4 * self.load * self.elastic_approach - self.load * self.film
+            + self.law.integral(self.load)
+    }
+}
+
+/// What a closed contact's film passes to the power of the films: its
+/// elastic load, and where the entrainment speed meets the ring's velocity.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct FilmWork {
+    /// Elastic load Q \[N\].
+    pub(super) load: f64,
+    /// ∂(∫₀^Q h)/∂u at fixed Q \[N·s\].
+    pub(super) speed_gradient: f64,
+    /// Unit entrainment direction ê.
+    pub(super) direction: Vector3<f64>,
+    /// Contact point P \[m\].
+    pub(super) point: Vector3<f64>,
 }
 
 impl BearingModel {
@@ -49,6 +97,15 @@ impl BearingModel {
         let contact_velocity = v + ball.orbital_rate * Vector3::x().cross(&(point - q));
         let e = 0.5 * ((ball_surface - contact_velocity) + (ring_surface - contact_velocity));
         e - e.dot(normal) * normal
+    }
+
+    fn curvature(&self, ring: &RingMotion, contact_angle: f64) -> Curvature {
+        Curvature::of_raceway(
+            &ring.raceway,
+            self.geometry.ball_diameter,
+            self.geometry.pitch_diameter,
+            contact_angle,
+        )
     }
 
     /// Steady film of a contact with `ring` at contact angle α, entrainment
@@ -81,104 +138,209 @@ impl BearingModel {
         ))
     }
 
-    fn curvature(&self, ring: &RingMotion, contact_angle: f64) -> Curvature {
-        Curvature::of_raceway(
-            &ring.raceway,
-            self.geometry.ball_diameter,
-            self.geometry.pitch_diameter,
-            contact_angle,
-        )
-    }
-
-    /// Steady film h_ss \[m\] and relaxation rate |u|/b \[1/s\] of a contact
-    /// carrying the elastic load Q_el = K_c δ_el^{3/2} (0 when open), both
-    /// at the load max(Q_el, Q_f) ([`crate::lubrication::approach`]); the
-    /// film's rate is ḣ = (|u|/b)(h_ss − h).
-    pub(super) fn film_target(
+    /// The film law of a contact with `ring` at contact angle α and
+    /// entrainment speed u (None without a lubricant, or with a supply the
+    /// law refuses, which [`BearingModel::new`] has ruled out).
+    pub(super) fn film_law(
         &self,
         ring: &RingMotion,
         hertz: &HertzCoefficients,
         contact_angle: f64,
         entrainment_speed: f64,
-        elastic_load: f64,
-    ) -> (f64, f64) {
-        let rolling_radius = self.curvature(ring, contact_angle).rolling_radius;
-        let load = elastic_load.max(floor_load(self.effective_modulus, rolling_radius));
-        let steady = self
-            .steady_film(ring, hertz, contact_angle, entrainment_speed, load)
-            .map_or(0.0, |f| f.central);
-        (
-            steady,
-            relaxation_rate(entrainment_speed, hertz.at_load(load).semi_minor),
+    ) -> Option<FilmLaw> {
+        let lubricant = self.params.traction.lubricant()?;
+        FilmLaw::new(
+            lubricant,
+            &self.params.film_supply[contact_index(ring)],
+            &FilmGeometry {
+                entrainment_speed,
+                rolling_radius: self.curvature(ring, contact_angle).rolling_radius,
+                effective_modulus: self.effective_modulus,
+                ellipticity: hertz.ellipticity,
+                semi_minor_coefficient: hertz.semi_minor_coefficient,
+            },
         )
+        .ok()
     }
 
-    /// [`Self::film_target`] of ball `ball`'s contact with `ring` as the
-    /// state stands: closed (δ + h > 0) or open. An open contact's film
-    /// relaxes towards the steady film at the floor load, with the
-    /// entrainment of the nearest points of ball and groove.
-    pub(super) fn film_target_of(
+    /// The fixed point δ_el = δ + h(K_c δ_el^{3/2}) of a contact with
+    /// geometric overlap δ (`geometry.penetration`, surfaces included);
+    /// None when open (δ + h(0) ≤ 0).
+    pub(super) fn film_approach(
+        &self,
+        ring: &RingMotion,
+        hertz: &HertzCoefficients,
+        geometry: &TorusContact,
+        entrainment_speed: f64,
+    ) -> Option<FilmApproach> {
+        let law = self.film_law(ring, hertz, geometry.contact_angle, entrainment_speed)?;
+        let overlap = geometry.penetration;
+        let stiffness = hertz.stiffness;
+        if overlap + law.film(0.0) <= 0.0 {
+            return None;
+        }
+        // Newton on g(x) = x − δ − h(K x^{3/2}), g' = 1 − h'(Q) 3Q/(2x),
+        // from the film at the geometric load. g' ≥ 1 for a flooded film
+        // and close to 1 for a starved one (lubrication::approach).
+        let load_at = |x: f64| stiffness * x * x.sqrt();
+        let mut x = overlap + law.film(load_at(overlap.max(0.0)));
+        for _ in 0..30 {
+            let load = load_at(x);
+            let g = x - overlap - law.film(load);
+            let slope = 1.0 - law.slope(load) * 1.5 * load / x;
+            let next = x - g / slope.max(0.1);
+            let next = if next > 0.0 { next } else { 0.5 * x };
+            let done = (next - x).abs() <= 1e-15 * x;
+            x = next;
+            if done {
+                break;
+            }
+        }
+        let load = load_at(x);
+        Some(FilmApproach {
+            law,
+            elastic_approach: x,
+            load,
+            film: law.film(load),
+        })
+    }
+
+    /// ∫₀^Q h dq of ball `ball`'s contact with `ring` for a given elastic
+    /// load Q, under the film law of that state (0 when the geometry is
+    /// degenerate) \[N·m\].
+    fn film_integral(
         &self,
         ring: &RingMotion,
         table: &ContactTable,
         ball: &BallMotion,
-    ) -> (f64, f64) {
+        load: f64,
+    ) -> f64 {
         let Some((geometry, _)) = self.race_geometry_any(ring, ball) else {
-            return (0.0, 0.0);
+            return 0.0;
         };
         let hertz = table.at(geometry.contact_angle);
         let u = Self::entrainment(ring, ball, &geometry.contact_point, &geometry.normal).norm();
-        let penetration = geometry.penetration.max(0.0);
-        let elastic = hertz.stiffness * penetration * penetration.sqrt();
-        self.film_target(ring, &hertz, geometry.contact_angle, u, elastic)
+        self.film_law(ring, &hertz, geometry.contact_angle, u)
+            .map_or(0.0, |law| law.integral(load))
     }
 
-    /// Film rate ḣ \[m/s\] of an open contact ([`Self::film_target_of`]).
-    pub(super) fn open_film_rate(
+    /// ∂(∫₀^Q h)/∂u at fixed Q by central differences in u (the law is a
+    /// power of u) \[N·s\].
+    pub(super) fn film_speed_gradient(
+        &self,
+        ring: &RingMotion,
+        hertz: &HertzCoefficients,
+        contact_angle: f64,
+        entrainment_speed: f64,
+        load: f64,
+    ) -> f64 {
+        let du = 1e-4 * entrainment_speed.abs();
+        if du <= 0.0 {
+            return 0.0;
+        }
+        let at = |u: f64| {
+            self.film_law(ring, hertz, contact_angle, u)
+                .map_or(0.0, |law| law.integral(load))
+        };
+        (at(entrainment_speed + du) - at(entrainment_speed - du)) / (2.0 * du)
+    }
+
+    /// The power of the films of ball j's closed contacts along the motion,
+    /// without the rings' accelerations: ∂/∂t ∫₀^Q h dq with the ball's
+    /// states moved by `dy_ball`, the rings' positions by their velocities,
+    /// and time (module doc) \[W\].
+    pub(super) fn film_power(
+        &self,
+        t: f64,
+        y: &[f64],
+        j: usize,
+        dy_ball: &[f64],
+        loads: [Option<f64>; 2],
+    ) -> f64 {
+        if loads.iter().all(Option::is_none) {
+            return 0.0;
+        }
+        let l = self.layout;
+        let eps = 1e-9;
+        let b = l.ball(j);
+        let len = l.ball_len();
+        let (r, o) = (l.ring(), l.outer());
+        let integral_at = |s: f64| {
+            let mut block = [0.0; super::layout::StateLayout::BALL + 1];
+            for k in 0..len {
+                block[k] = y[b + k] + s * dy_ball[k];
+            }
+            let mut ring = [0.0; super::layout::StateLayout::RING];
+            ring.copy_from_slice(&y[r..r + 10]);
+            for k in 0..5 {
+                ring[k] += s * y[r + 5 + k];
+            }
+            let mut outer = [0.0; super::layout::StateLayout::OUTER];
+            outer.copy_from_slice(&y[o..o + 4]);
+            outer[0] += s * y[o + 2];
+            outer[1] += s * y[o + 3];
+            let (inner_ring, outer_ring) = self.ring_motion_of(t + s, &ring, &outer);
+            let (ball, _) = self.ball_motion_of(j, &block[..len]);
+            let mut total = 0.0;
+            if let Some(q) = loads[0] {
+                total += self.film_integral(&inner_ring, &self.inner_table, &ball, q);
+            }
+            if let Some(q) = loads[1] {
+                total += self.film_integral(&outer_ring, &self.outer_table, &ball, q);
+            }
+            total
+        };
+        (integral_at(eps) - integral_at(-eps)) / (2.0 * eps)
+    }
+
+    /// Stored energy of ball `ball`'s contact with `ring` with the film in
+    /// the approach ([`FilmApproach::energy`]; 0 when open) \[J\].
+    pub(super) fn film_contact_energy(
         &self,
         ring: &RingMotion,
         table: &ContactTable,
         ball: &BallMotion,
     ) -> f64 {
-        let (steady, rate) = self.film_target_of(ring, table, ball);
-        rate * (steady - ball.film[contact_index(ring)])
+        let Some((geometry, _)) = self.race_geometry_any(ring, ball) else {
+            return 0.0;
+        };
+        let hertz = table.at(geometry.contact_angle);
+        let u = Self::entrainment(ring, ball, &geometry.contact_point, &geometry.normal).norm();
+        self.film_approach(ring, &hertz, &geometry, u)
+            .map_or(0.0, |a| a.energy())
     }
 
     /// Work the films have done on the contacts, accumulated in state `y`
     /// \[J\] (0 without the film in the approach).
     pub fn film_work(&self, y: &[f64]) -> f64 {
         let l = self.layout;
-        if l.ball_films { y[l.work() + 2] } else { 0.0 }
+        if l.film_work { y[l.work() + 2] } else { 0.0 }
+    }
+}
+
+impl FilmWork {
+    /// ∂(∫₀^Q h)/∂(ring velocity y, z, …): the inner ring's translational
+    /// velocity (x, y, z) and tilt rates (θ̇_y, θ̇_z) about `centre`, with
+    /// `tilt_axis_y` the tilted y axis. u = |ê·(…+ ½ v_ring + ½ ω × (P − c))|.
+    pub(super) fn inner_ring_gradient(
+        &self,
+        centre: &Vector3<f64>,
+        tilt_axis_y: &Vector3<f64>,
+    ) -> [f64; 5] {
+        let g = 0.5 * self.speed_gradient;
+        let arm = self.point - centre;
+        [
+            g * self.direction.x,
+            g * self.direction.y,
+            g * self.direction.z,
+            g * self.direction.dot(&tilt_axis_y.cross(&arm)),
+            g * self.direction.dot(&Vector3::z().cross(&arm)),
+        ]
     }
 
-    /// Sets each contact's film in `y` to its steady value at time t: the
-    /// fixed point h = h_ss(K_c (δ + h)^{3/2}) of MODEL §4, so that a run
-    /// starts with its films in place. Nothing without the film states.
-    pub fn settle_films(&self, t: f64, y: &mut [f64]) {
-        let l = self.layout;
-        if !l.ball_films {
-            return;
-        }
-        let (inner, outer) = self.ring_motion(t, y);
-        for j in 0..l.balls {
-            let f = l.ball(j) + l.film_offset();
-            for (k, (ring, table)) in [(&inner, &self.inner_table), (&outer, &self.outer_table)]
-                .into_iter()
-                .enumerate()
-            {
-                // h ← h_ss(h) contracts by about 0.1 h/δ_el (the film's
-                // compliance against Hertz'): rounding in a few dozen
-                // iterations at worst.
-                for _ in 0..100 {
-                    let (ball, _) = self.ball_kinematics(j, y);
-                    let (steady, _) = self.film_target_of(ring, table, &ball);
-                    let change = steady - y[f + k];
-                    y[f + k] = steady;
-                    if change.abs() <= 1e-14 * steady.abs() {
-                        break;
-                    }
-                }
-            }
-        }
+    /// The same for the outer ring's velocity (y, z).
+    pub(super) fn outer_ring_gradient(&self) -> [f64; 2] {
+        let g = 0.5 * self.speed_gradient;
+        [g * self.direction.y, g * self.direction.z]
     }
 }

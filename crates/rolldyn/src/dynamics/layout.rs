@@ -8,10 +8,9 @@ pub struct StateLayout {
     /// Whether each ball carries its spin angle ψ (10th ball state, MODEL
     /// §1): only when the balls have surfaces (waviness, spalls).
     pub ball_spin_angle: bool,
-    /// Whether each ball carries the film thickness of its inner and outer
-    /// contact (2 more ball states, and a film-work accumulator): only with
-    /// the film in the normal approach (MODEL §4, `dynamics::film_approach`).
-    pub ball_films: bool,
+    /// Whether a third accumulator holds the work of the films: only with
+    /// the film in the normal approach (MODEL §4, `dynamics::film`).
+    pub film_work: bool,
 }
 
 impl StateLayout {
@@ -25,14 +24,8 @@ impl StateLayout {
     pub const OUTER: usize = 4;
     /// Cage states.
     pub const CAGE: usize = 6;
-    /// States per ball: 9, one more with the spin angle, two more with
-    /// the films.
+    /// States per ball: 9, or 10 with the spin angle.
     pub fn ball_len(&self) -> usize {
-        self.film_offset() + 2 * usize::from(self.ball_films)
-    }
-    /// Offset of the inner contact's film h in a ball's block (the outer
-    /// contact's follows), when present.
-    pub fn film_offset(&self) -> usize {
         Self::BALL + usize::from(self.ball_spin_angle)
     }
     /// First state of ball j.
@@ -61,17 +54,17 @@ impl StateLayout {
         ]
     }
     /// The energy accumulators: drive work and dissipated energy \[J\],
-    /// then, with the films, the film work.
+    /// then, with the film in the approach, the films' work.
     pub fn work(&self) -> usize {
         self.cage() + Self::CAGE
     }
     /// Total number of states.
     pub fn len(&self) -> usize {
-        self.work() + 2 + usize::from(self.ball_films)
+        self.work() + 2 + usize::from(self.film_work)
     }
     /// What state `index` is, in words (integration failures name it).
     pub fn state_name(&self, index: usize) -> String {
-        const BALL: [&str; 12] = [
+        const BALL: [&str; 10] = [
             "axial position x",
             "radial position r",
             "orbital angle φ",
@@ -82,8 +75,6 @@ impl StateLayout {
             "angular velocity ω_r",
             "angular velocity ω_t",
             "spin angle ψ",
-            "inner film h",
-            "outer film h",
         ];
         const RING: [&str; 10] = [
             "axial position x",
@@ -109,12 +100,6 @@ impl StateLayout {
         let n = self.ball_len() * self.balls;
         if index < n {
             let (j, k) = (index / self.ball_len(), index % self.ball_len());
-            // The films follow the spin angle when there is one.
-            let k = if k >= Self::BALL && !self.ball_spin_angle {
-                k + 1
-            } else {
-                k
-            };
             format!("ball {j} {}", BALL[k])
         } else if index < self.outer() {
             format!("inner ring {}", RING[index - self.ring()])
@@ -126,7 +111,7 @@ impl StateLayout {
             "drive work accumulator".into()
         } else if index == self.work() + 1 {
             "dissipated energy accumulator".into()
-        } else if index == self.work() + 2 && self.ball_films {
+        } else if index == self.work() + 2 && self.film_work {
             "film work accumulator".into()
         } else {
             format!("state {index}")
@@ -149,7 +134,7 @@ mod tests {
             let l = StateLayout {
                 balls: 2,
                 ball_spin_angle: spin,
-                ball_films: films,
+                film_work: films,
             };
             let names: Vec<String> = (0..l.len()).map(|i| l.state_name(i)).collect();
             assert_eq!(names[0], "ball 0 axial position x");
@@ -157,11 +142,6 @@ mod tests {
                 assert_eq!(names[l.ball(1) + 9], "ball 1 spin angle ψ");
             }
             if films {
-                assert_eq!(names[l.ball(1) + l.film_offset()], "ball 1 inner film h");
-                assert_eq!(
-                    names[l.ball(1) + l.film_offset() + 1],
-                    "ball 1 outer film h"
-                );
                 assert_eq!(names[l.work() + 2], "film work accumulator");
             }
             assert_eq!(names[l.ring() + 2], "inner ring position z");

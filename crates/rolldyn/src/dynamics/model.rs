@@ -45,6 +45,7 @@ use crate::geometry::{BearingGeometry, RingKind};
 use crate::integrate::linear::BlockLayout;
 use crate::integrate::{BlockSplit, OdeSystem};
 use crate::kinematics::cage_speed_ratio;
+use crate::lubrication::Supply;
 use crate::material::{Material, effective_modulus};
 use crate::operating::{LoadProfile, SpeedProfile};
 use crate::power::Dissipation;
@@ -94,9 +95,9 @@ pub struct DynamicsParameters {
     /// Oil supply of the inner and outer raceway contacts (starvation of
     /// the EHL film, MODEL §4; default: fully flooded).
     pub film_supply: [crate::lubrication::Supply; 2],
-    /// The lubricant film in the normal approach (MODEL §4): δ_el = δ + h
-    /// with h a state of each contact following its steady film
-    /// ([`crate::lubrication::approach`]). Needs a film model (EHL traction).
+    /// The lubricant film in the normal approach (MODEL §4): δ_el = δ + h(Q)
+    /// with the steady central film h (`dynamics::film`). Needs a film
+    /// model (EHL traction) and a flooded or inlet-distance supply.
     pub film_in_approach: bool,
 }
 
@@ -111,9 +112,6 @@ pub(super) struct BallMotion {
     pub(super) omega: Vector3<f64>,
     /// Orbital rate φ̇ of its azimuth frame \[rad/s\].
     pub(super) orbital_rate: f64,
-    /// Film h of the inner and outer contact \[m\] (0 without the film in
-    /// the approach).
-    pub(super) film: [f64; 2],
 }
 
 /// Kinematic state of a ring for contact evaluation.
@@ -180,12 +178,23 @@ impl BearingModel {
         for supply in &params.film_supply {
             supply.validate()?;
         }
-        if params.film_in_approach && params.traction.lubricant().is_none() {
-            return Err(InvalidParameter::new(
-                "film_in_approach",
-                "true",
-                "needs a film model: a traction law with a lubricant (ehl)",
-            ));
+        if params.film_in_approach {
+            if params.traction.lubricant().is_none() {
+                return Err(InvalidParameter::new(
+                    "film_in_approach",
+                    "true",
+                    "needs a film model: a traction law with a lubricant (ehl)",
+                ));
+            }
+            for supply in &params.film_supply {
+                if let Supply::Flow { flow, .. } = supply {
+                    return Err(InvalidParameter::new(
+                        "oil_flow",
+                        *flow,
+                        "the film in the normal approach needs a flooded supply or an inlet distance ratio",
+                    ));
+                }
+            }
         }
         let ep = effective_modulus(ball, rings);
         let ball_mass = geometry.ball_mass(ball.density);
@@ -208,7 +217,7 @@ impl BearingModel {
             layout: StateLayout {
                 balls: geometry.ball_count,
                 ball_spin_angle: params.surface.has_ball_surfaces(),
-                ball_films: params.film_in_approach,
+                film_work: params.film_in_approach,
             },
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
             thermal: None,
@@ -273,7 +282,6 @@ impl BearingModel {
         y[r..r + 5].copy_from_slice(&ring_displacement);
         let c = l.cage();
         y[c + 5] = omega_c;
-        self.settle_films(0.0, &mut y);
         y
     }
 
@@ -296,19 +304,34 @@ impl BearingModel {
         y[r..r + 5].copy_from_slice(&eq.displacement);
         let c = l.cage();
         y[c + 5] = eq.cage_speed();
-        self.settle_films(0.0, &mut y);
         y
     }
 
     pub(super) fn ring_motion(&self, t: f64, y: &[f64]) -> (RingMotion, RingMotion) {
-        let r = self.layout.ring();
+        let (r, o) = (self.layout.ring(), self.layout.outer());
+        self.ring_motion_of(
+            t,
+            &y[r..r + StateLayout::RING],
+            &y[o..o + StateLayout::OUTER],
+        )
+    }
+
+    /// [`Self::ring_motion`] from the inner ring's 10 states and the outer
+    /// ring's 4.
+    pub(super) fn ring_motion_of(
+        &self,
+        t: f64,
+        ring: &[f64],
+        outer: &[f64],
+    ) -> (RingMotion, RingMotion) {
+        let y = ring;
+        let r = 0;
         let pose = RingPose {
             translation: Vector3::new(y[r], y[r + 1], y[r + 2]),
             tilt_y: y[r + 3],
             tilt_z: y[r + 4],
         };
-        let rz = Rotation3::from_axis_angle(&Vector3::z_axis(), pose.tilt_z);
-        let omega_frame = y[r + 9] * Vector3::z() + y[r + 8] * (rz * Vector3::y());
+        let omega_frame = y[r + 9] * Vector3::z() + y[r + 8] * tilt_axis_y(pose.tilt_z);
         let axis = pose.rotation() * Vector3::x();
         let spin_speed = self.params.speed.speed_at(t);
         let inner = RingMotion {
@@ -326,7 +349,7 @@ impl BearingModel {
             spin_speed,
             shaft_speed: spin_speed,
         };
-        let o = self.layout.outer();
+        let (y, o) = (outer, 0);
         let outer_pose = RingPose {
             translation: Vector3::new(0.0, y[o], y[o + 1]),
             ..RingPose::default()
@@ -349,6 +372,17 @@ impl BearingModel {
     #[allow(clippy::type_complexity)]
     pub(super) fn ball_kinematics(&self, j: usize, y: &[f64]) -> (BallMotion, [Vector3<f64>; 3]) {
         let b = self.layout.ball(j);
+        self.ball_motion_of(j, &y[b..b + self.layout.ball_len()])
+    }
+
+    /// [`Self::ball_kinematics`] from ball j's block of states.
+    #[allow(clippy::type_complexity)]
+    pub(super) fn ball_motion_of(
+        &self,
+        j: usize,
+        block: &[f64],
+    ) -> (BallMotion, [Vector3<f64>; 3]) {
+        let (y, b) = (block, 0);
         let (s, c) = y[b + 2].sin_cos();
         let ex = Vector3::x();
         let er = Vector3::new(0.0, c, s);
@@ -368,12 +402,6 @@ impl BearingModel {
                 velocity: v,
                 omega: w,
                 orbital_rate: y[b + 5],
-                film: if self.layout.ball_films {
-                    let f = b + self.layout.film_offset();
-                    [y[f], y[f + 1]]
-                } else {
-                    [0.0; 2]
-                },
             },
             [ex, er, et],
         )
@@ -418,12 +446,17 @@ pub(super) struct BallCoupling {
     pub(super) cage_force: Vector3<f64>,
     pub(super) cage_torque: f64,
     pub(super) dissipation: f64,
-    /// Power the films in the approach do on the contacts \[W\].
+    /// Power the films in the approach do on the contacts, the rings'
+    /// accelerations aside \[W\] (dynamics::film).
     pub(super) film_power: f64,
+    /// ∂(Σ∫h)/∂(inner ring velocity x, y, z, tilt rates) \[N·s, N·m·s\].
+    pub(super) ring_velocity_gradient: [f64; 5],
+    /// ∂(Σ∫h)/∂(outer ring velocity y, z) \[N·s\].
+    pub(super) outer_velocity_gradient: [f64; 2],
 }
 
 impl BallCoupling {
-    pub(super) const LEN: usize = 15;
+    pub(super) const LEN: usize = 22;
 
     pub(super) fn add(&mut self, other: &Self) {
         self.ring_force += other.ring_force;
@@ -433,6 +466,20 @@ impl BallCoupling {
         self.cage_torque += other.cage_torque;
         self.dissipation += other.dissipation;
         self.film_power += other.film_power;
+        for (a, b) in self
+            .ring_velocity_gradient
+            .iter_mut()
+            .zip(other.ring_velocity_gradient)
+        {
+            *a += b;
+        }
+        for (a, b) in self
+            .outer_velocity_gradient
+            .iter_mut()
+            .zip(other.outer_velocity_gradient)
+        {
+            *a += b;
+        }
     }
 
     pub(super) fn write(&self, out: &mut [f64]) {
@@ -443,6 +490,8 @@ impl BallCoupling {
         out[12] = self.cage_torque;
         out[13] = self.dissipation;
         out[14] = self.film_power;
+        out[15..20].copy_from_slice(&self.ring_velocity_gradient);
+        out[20..22].copy_from_slice(&self.outer_velocity_gradient);
     }
 
     fn read(c: &[f64]) -> Self {
@@ -454,6 +503,8 @@ impl BallCoupling {
             cage_torque: c[12],
             dissipation: c[13],
             film_power: c[14],
+            ring_velocity_gradient: [c[15], c[16], c[17], c[18], c[19]],
+            outer_velocity_gradient: [c[20], c[21]],
         }
     }
 }
@@ -461,8 +512,10 @@ impl BallCoupling {
 impl BearingModel {
     /// Derivatives of ball j's states (into `dy`, its 9 entries, 10 with
     /// the spin angle ψ) and what its contacts do to the rings and cage.
+    #[allow(clippy::too_many_arguments)]
     fn ball_rhs(
         &self,
+        t: f64,
         j: usize,
         y: &[f64],
         inner: &RingMotion,
@@ -480,14 +533,13 @@ impl BearingModel {
         let mut moment = Vector3::zeros();
         let mut out = BallCoupling::default();
         let episodes = &self.episodes[j];
-        let films = l.ball_films;
-        // Film rates ḣ of the inner and outer contact (film in the approach).
-        let mut film_rates = [0.0; 2];
+        // The film in the approach: each closed contact's share of the
+        // films' work (dynamics::film).
+        let mut film_work = [None; 2];
         if let Some(cn) =
             self.race_contact(inner, &self.inner_table, &episodes[0], &ball, Want::Forces)
         {
-            film_rates[0] = cn.film_rate;
-            out.film_power += cn.film_power;
+            film_work[0] = cn.film_work;
             force += cn.force + cn.surface.ball_force;
             moment += cn.moment + cn.surface.ball_moment;
             out.ring_force += cn.surface.ring_force - cn.force;
@@ -498,14 +550,11 @@ impl BearingModel {
             if let Some(d) = sink.as_deref_mut() {
                 d.inner.add(&cn.losses);
             }
-        } else if films {
-            film_rates[0] = self.open_film_rate(inner, &self.inner_table, &ball);
         }
         if let Some(cn) =
             self.race_contact(outer, &self.outer_table, &episodes[1], &ball, Want::Forces)
         {
-            film_rates[1] = cn.film_rate;
-            out.film_power += cn.film_power;
+            film_work[1] = cn.film_work;
             force += cn.force + cn.surface.ball_force;
             moment += cn.moment + cn.surface.ball_moment;
             out.outer_force += cn.surface.ring_force - cn.force;
@@ -513,8 +562,6 @@ impl BearingModel {
             if let Some(d) = sink.as_deref_mut() {
                 d.outer.add(&cn.losses);
             }
-        } else if films {
-            film_rates[1] = self.open_film_rate(outer, &self.outer_table, &ball);
         }
         if let Some(pc) = self.pocket_contact(j, y, &ball) {
             force += pc.force;
@@ -554,10 +601,6 @@ impl BearingModel {
         dy[6] = moment.dot(&ex) / inertia;
         dy[7] = moment.dot(&er) / inertia + phi_dot * wt;
         dy[8] = moment.dot(&et) / inertia - phi_dot * wr;
-        if films {
-            let f = l.film_offset();
-            dy[f..f + 2].copy_from_slice(&film_rates);
-        }
         if l.ball_spin_angle {
             // ψ̇ = |ω_b − φ̇ e_x|: the ball's turning relative to the cage
             // frame carries its surface past the contacts (MODEL §1, §6).
@@ -568,6 +611,24 @@ impl BearingModel {
             dy[3] = 0.0;
             dy[7] = 0.0;
             dy[8] = 0.0;
+        }
+        if film_work.iter().any(Option::is_some) {
+            let loads = film_work.map(|w| w.map(|w| w.load));
+            out.film_power = self.film_power(t, y, j, dy, loads);
+            let r = l.ring();
+            let tilt_y = tilt_axis_y(y[r + 4]);
+            if let Some(w) = &film_work[0] {
+                let g = w.inner_ring_gradient(&inner.centre, &tilt_y);
+                for (sum, g) in out.ring_velocity_gradient.iter_mut().zip(g) {
+                    *sum += g;
+                }
+            }
+            if let Some(w) = &film_work[1] {
+                let g = w.outer_ring_gradient();
+                for (sum, g) in out.outer_velocity_gradient.iter_mut().zip(g) {
+                    *sum += g;
+                }
+            }
         }
         out
     }
@@ -597,6 +658,8 @@ impl BearingModel {
             mut cage_torque,
             mut dissipation,
             film_power,
+            ring_velocity_gradient,
+            outer_velocity_gradient,
         } = *balls;
         let mut external_power = 0.0;
         // `dy` starts at the inner ring: ring, outer ring, cage and work
@@ -715,8 +778,19 @@ impl BearingModel {
         let spin_axis = inner.omega - inner.omega_frame;
         dy[dw] = -ring_moment.dot(&spin_axis) + external_power;
         dy[dw + 1] = dissipation;
-        if l.ball_films {
-            dy[dw + 2] = film_power;
+        if l.film_work {
+            // The rings' accelerations complete the films' power.
+            dy[dw + 2] = film_power
+                + ring_velocity_gradient
+                    .iter()
+                    .zip(&dy[dr + 5..dr + 10])
+                    .map(|(g, a)| g * a)
+                    .sum::<f64>()
+                + outer_velocity_gradient
+                    .iter()
+                    .zip(&dy[dob + 2..dob + 4])
+                    .map(|(g, a)| g * a)
+                    .sum::<f64>();
         }
     }
 }
@@ -732,7 +806,7 @@ impl BearingModel {
             dy_balls,
             l.ball_len(),
             sink.as_deref_mut(),
-            |j, dy_ball, sink| self.ball_rhs(j, y, &inner, &outer, dy_ball, sink),
+            |j, dy_ball, sink| self.ball_rhs(t, j, y, &inner, &outer, dy_ball, sink),
         );
         self.border_rhs_with(t, y, &inner, &balls, border, sink);
     }
@@ -774,7 +848,7 @@ impl BlockSplit for BearingModel {
         coupling: &mut [f64],
     ) {
         let (inner, outer) = self.ring_motion(t, y);
-        self.ball_rhs(block, y, &inner, &outer, dy_block, None)
+        self.ball_rhs(t, block, y, &inner, &outer, dy_block, None)
             .write(coupling);
     }
 
@@ -909,4 +983,10 @@ impl OdeSystem for BearingModel {
         let thermal = self.thermal_update(t, y);
         (changed && self.params.normal_law.hysteresis_factor().is_some()) || thermal
     }
+}
+
+/// The inner ring's tilted y axis R_z(θ_z) e_y, about which the tilt rate
+/// θ̇_y turns it (MODEL §1).
+pub(super) fn tilt_axis_y(tilt_z: f64) -> Vector3<f64> {
+    Rotation3::from_axis_angle(&Vector3::z_axis(), tilt_z) * Vector3::y()
 }

@@ -4,7 +4,8 @@
 //! Ball–raceway: the exact torus contact of MODEL §2.1 (δ, n, contact
 //! point P, α). The normal law gives Q from δ, δ̇ = (q̇ − ṗ)·n (p: the
 //! groove-centre point, moving with the ring) and the episode's impact
-//! speed. Traction acts at P on the tangential slip of ball material
+//! speed. With the film in the normal approach δ is the elastic approach
+//! δ + h(Q) (`dynamics::film`). Traction acts at P on the tangential slip of ball material
 //! relative to ring material, v_b = q̇ + ω_b × (P − q) and
 //! v_g = ṫ + ω_ring × (P − t), with ω_ring = ω_i a + the tilt rates. Force
 //! on the ball: −Q n + F_T; the ring takes the reaction at P.
@@ -16,7 +17,7 @@
 //! M_h |ω_roll| is dissipated. A ramp over 1 mm/s of rolling speed makes it
 //! continuous at rest.
 
-use super::film::contact_index;
+use super::film::FilmWork;
 use super::model::{BallMotion, BearingModel, RingMotion};
 use super::surface_contact::SurfaceEffect;
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
@@ -85,10 +86,9 @@ pub(super) struct RaceContact {
     pub(super) penetration_rate: f64,
     /// Dissipated power: normal damping and traction \[W\].
     pub(super) dissipation: f64,
-    /// Rate ḣ of the film in the approach \[m/s\] (0 without it).
-    pub(super) film_rate: f64,
-    /// Power Q ḣ the film does on the contact \[W\].
-    pub(super) film_power: f64,
+    /// What the film in the approach passes to the films' power (None
+    /// without it).
+    pub(super) film_work: Option<FilmWork>,
     /// The same by mechanism (sums to `dissipation` to rounding).
     pub(super) losses: ContactLosses,
     /// Force on the ball (normal and traction) \[N\].
@@ -104,8 +104,8 @@ pub(super) struct RaceContact {
 
 impl BearingModel {
     /// Contact geometry of a ball with a ring, the penetration including the
-    /// surfaces (MODEL §2.1, §6) and the film in the approach, and the
-    /// surfaces' effect per unit load; None when the bodies do not touch.
+    /// surfaces (MODEL §2.1, §6), and the surfaces' effect per unit load;
+    /// None when the bodies do not overlap.
     pub(super) fn race_geometry(
         &self,
         ring: &RingMotion,
@@ -115,8 +115,8 @@ impl BearingModel {
             .filter(|(geometry, _)| geometry.penetration > 0.0)
     }
 
-    /// [`Self::race_geometry`], open or closed (penetration ≤ 0: the gap);
-    /// None only where the torus geometry is degenerate.
+    /// [`Self::race_geometry`], overlapping or not (penetration ≤ 0: the
+    /// gap); None only where the torus geometry is degenerate.
     pub(super) fn race_geometry_any(
         &self,
         ring: &RingMotion,
@@ -128,7 +128,7 @@ impl BearingModel {
         let surface = self
             .surface_effect(ring, ball, &geometry)
             .unwrap_or_default();
-        geometry.penetration += surface.approach + ball.film[contact_index(ring)];
+        geometry.penetration += surface.approach;
         Some((geometry, surface))
     }
 
@@ -142,16 +142,20 @@ impl BearingModel {
     ) -> Option<RaceContact> {
         let with_output = matches!(want, Want::Output | Want::Map(_));
         let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
-        let (geometry, surface) = self.race_geometry(ring, ball)?;
+        let films = self.layout.film_work;
+        let (mut geometry, surface) = if films {
+            self.race_geometry_any(ring, ball)?
+        } else {
+            self.race_geometry(ring, ball)?
+        };
         let n = geometry.normal;
         let groove_velocity = ring.velocity
             + ring
                 .omega_frame
                 .cross(&(geometry.groove_centre - ring.centre));
-        let mut penetration_rate = (v - groove_velocity).dot(&n) + surface.approach_rate;
+        let penetration_rate = (v - groove_velocity).dot(&n) + surface.approach_rate;
         let hertz = table.at(geometry.contact_angle);
         let stiffness = hertz.stiffness;
-        let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
         let point = geometry.contact_point;
         let ball_surface = v + w.cross(&(point - q));
         let ring_surface = ring.velocity + ring.omega.cross(&(point - ring.centre));
@@ -166,7 +170,6 @@ impl BearingModel {
         };
         // Computed only where used (film, traction curve, hysteresis, output).
         let hysteresis = self.params.rolling_hysteresis > 0.0;
-        let films = self.layout.ball_films;
         let (entrainment, u) =
             if with_output || hysteresis || films || self.params.traction.needs_entrainment() {
                 let e = Self::entrainment(ring, ball, &point, &n);
@@ -174,15 +177,15 @@ impl BearingModel {
             } else {
                 (Vector3::zeros(), 0.0)
             };
-        // Film in the approach (dynamics::film): the film's rate is part of
-        // the elastic approach rate.
-        let film_rate = if films {
-            let (steady, rate) = self.film_target(ring, &hertz, geometry.contact_angle, u, elastic);
-            rate * (steady - ball.film[contact_index(ring)])
+        // Film in the approach (dynamics::film): the contact is closed while
+        // δ + h > 0 and its elastic approach is δ_el = δ + h(Q).
+        let approach = if films {
+            let a = self.film_approach(ring, &hertz, &geometry, u)?;
+            geometry.penetration = a.elastic_approach;
+            Some(a)
         } else {
-            0.0
+            None
         };
-        penetration_rate += film_rate;
         let state = ContactState {
             stiffness,
             penetration: geometry.penetration,
@@ -192,14 +195,31 @@ impl BearingModel {
         };
         let load = self.params.normal_law.force(&state);
         let ellipse = hertz.at_load(load);
-        // Film (MODEL §4): the film state with the film in the approach,
-        // else the steady Hamrock–Dowson film, starved by the ring's supply.
-        let film = if films {
-            ball.film[contact_index(ring)]
-        } else {
-            self.steady_film(ring, &hertz, geometry.contact_angle, u, load)
-                .map_or(0.0, |f| f.central)
+        // Film (MODEL §4): h(Q) of the elastic load with the film in the
+        // approach, else the steady Hamrock–Dowson film at the load; both
+        // starved by the ring's supply.
+        let film = match &approach {
+            Some(a) => a.film,
+            None => self
+                .steady_film(ring, &hertz, geometry.contact_angle, u, load)
+                .map_or(0.0, |f| f.central),
         };
+        let film_work = approach.map(|a| FilmWork {
+            load: a.load,
+            speed_gradient: self.film_speed_gradient(
+                ring,
+                &hertz,
+                geometry.contact_angle,
+                u,
+                a.load,
+            ),
+            direction: if u > 0.0 {
+                entrainment / u
+            } else {
+                Vector3::zeros()
+            },
+            point,
+        });
         let rg = ring.raceway.groove_radius;
         let rb = 0.5 * self.geometry.ball_diameter;
         let patch = ContactPatch {
@@ -265,6 +285,7 @@ impl BearingModel {
             dissipation -= m_h.dot(&relative_spin);
             losses.hysteresis = -m_h.dot(&relative_spin);
         }
+        let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
         dissipation += (load - elastic) * penetration_rate;
         losses.damping = (load - elastic) * penetration_rate;
         let output = if with_output {
@@ -298,8 +319,7 @@ impl BearingModel {
             surface,
             penetration_rate,
             dissipation,
-            film_rate,
-            film_power: load * film_rate,
+            film_work,
             losses,
             force: -load * n + traction.force,
             moment,

@@ -1,102 +1,312 @@
-//! The lubricant film in the normal approach (MODEL §4, option): the film
-//! as a state of each contact that follows its steady thickness.
+//! The lubricant film in the normal approach (MODEL §4, option): a
+//! contact's central film as a function of its load, its integral, and
+//! the light-load floor.
 //!
 //! MODEL §4 puts the central film into the elastic compression,
-//! δ_el = δ + h_c, so a contact carries load through its film before the
-//! surfaces overlap and the film's own compliance acts in series with
-//! Hertz. It offers h_c from the current load (a fixed point) or from the
-//! previous accepted step. Neither closes the energy balance:
-//! - the step-lagged film pumps energy into contact vibrations at a rate
-//!   set by the integrator's step (docs/lubrication.md);
-//! - the fixed point h_c(Q, u, α) has a potential in Q only. Its work
-//!   ∫Q dh also moves with the entrainment speed u and the contact angle α,
-//!   whose rates need the accelerations of the bodies.
-//!
-//! rolldyn therefore carries h as a state of each ball–raceway contact
-//! that relaxes to its steady value h_ss (Hamrock–Dowson central film,
-//! starved by the ring's supply) over the time the lubricant takes from
-//! the edge of the Hertz zone to its centre:
+//! δ_el = δ + h_c(Q), Q = K_c δ_el^{3/2}, a fixed point in Q. At fixed
+//! entrainment speed u and geometry the film is a function of the load
+//! alone,
 //!
 //! ```text
-//! ḣ = (|u|/b) (h_ss(Q, u, α) − h)
+//! h(q) = H q^a S(q),   a = −0.067                    (Hamrock–Dowson h_c)
+//! S(q) = min(1, ((L − 1)/(L*(q) − 1))^0.25) = min(1, C q^c)     (starved)
+//! L*(q) − 1 = 3.06 (R_x h_fl/b²)^0.56,  b = β q^{1/3}
+//!   ⇒  c = −0.14 (a − 2/3) = 0.10271
 //! ```
+//! (seed 003 eqs 16–30 as in [`super::hamrock_dowson`] and
+//! [`super::starvation`]; H is the flooded film at 1 N, β the Hertz
+//! semi-axis coefficient). [`FilmLaw`] holds H, C and the floor and gives
+//! h(q), dh/dq and ∫₀^q h. The contact then stores
+//! V = (2/5) K_c δ_el^{5/2} − Q h + ∫₀^Q h dq, whose δ-derivative is Q:
+//! the film is a nonlinear spring in series with Hertz (its compliance
+//! dh/dQ is seed 003's 1/K_oil). H, C and the floor change with u and the
+//! contact angle: that change of V at fixed Q, ∂/∂t ∫₀^Q h dq, is the work
+//! the film does on the contact. It is drawn from the entrainment, and the
+//! energy balance counts it (`dynamics::film`).
 //!
-//! b/|u| is the time scale of transient EHL: Venner & Lubrecht
-//! (*Multilevel Methods in Lubrication*, Elsevier 2000) write time as
-//! t u_m/a, the Hertz half-width a being our b. The first-order lag is
-//! rolldyn's assumption, not a paper's equation. Its limit b/|u| → 0 is
-//! MODEL §4's fixed point; at steady conditions h = h_ss exactly. The film
-//! then does the work ∫Q ḣ dt on the contact, an explicit power in the
-//! energy balance. Vibrations faster than |u|/b see a stiffer film.
+//! **Light loads.** h ∝ q^−0.067 grows without bound as q → 0, so a
+//! contact could never open. Below the floor Q_f = W_f E' R_x²
+//! ([`FLOOR_LOAD_PARAMETER`] W_f = 1e-7) the film is held at h(Q_f): a
+//! contact carries load through its film until its gap exceeds h(Q_f).
+//! Hamrock & Dowson fitted their formulas over one decade of W about 1e-6
+//! (Part III, J. Lubr. Technol. 99 (1977) 264–276), so the floor is below
+//! the loads the formula was made for. It also keeps the fixed point
+//! unique: a starved film grows with load (exponent a + c = +0.036), and
+//! the elastic approach must outgrow it, 1.5 (a + c) h/δ_el < 1, which
+//! holds from the floor on for the bearings in `examples/`.
 //!
-//! **Light loads.** Hamrock–Dowson's film grows without bound as Q → 0
-//! (h ∝ W^−0.067) and its semi-axis b vanishes, so h_ss and b are taken
-//! at W ≥ [`FLOOR_LOAD_PARAMETER`] (1e-8): below Q_f = W_f E' R_x² the
-//! film stays at h_ss(Q_f), and an open contact's film relaxes towards it.
-//! Hamrock & Dowson's fits cover W over one decade around 1e-6 (Part III,
-//! J. Lubr. Technol. 99 (1977) 264–276), so the floor lies well below any
-//! film the formula was made for; it bounds the film at about 1.3 times
-//! its 1e-6 value. A contact opens when its gap exceeds its film.
+//! Supplies: flooded and an inlet distance ratio L (seed 003's input). The
+//! oil-flow supply makes L a function of b and h_c that is not a power of
+//! the load; the film in the approach refuses it.
 
-/// Dimensionless load W = Q/(E' R_x²) below which the steady film and the
-/// relaxation rate are held at their values at W (light-load floor).
-pub const FLOOR_LOAD_PARAMETER: f64 = 1e-8;
+use super::starvation::Supply;
+use super::{Lubricant, hamrock_dowson};
+use crate::error::InvalidParameter;
 
-/// The light-load floor Q_f = W_f E' R_x² \[N\] of a contact with
-/// effective modulus E' \[Pa\] and rolling radius R_x \[m\].
-pub fn floor_load(effective_modulus: f64, rolling_radius: f64) -> f64 {
-    FLOOR_LOAD_PARAMETER * effective_modulus * rolling_radius * rolling_radius
+/// Dimensionless load W = Q/(E' R_x²) below which a contact's film is
+/// held at its value there (light-load floor).
+pub const FLOOR_LOAD_PARAMETER: f64 = 1e-7;
+
+/// Load exponent of the flooded central film (Hamrock–Dowson h_c ∝ W^−0.067).
+pub const FLOODED_EXPONENT: f64 = -0.067;
+
+/// Load exponent of the starvation factor at a fixed inlet distance ratio,
+/// S ∝ q^c: c = −0.25 · 0.56 (a − 2/3).
+pub const STARVATION_EXPONENT: f64 = -0.25 * 0.56 * (FLOODED_EXPONENT - 2.0 / 3.0);
+
+/// What a contact's film depends on besides its load.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilmGeometry {
+    /// Entrainment speed u \[m/s\].
+    pub entrainment_speed: f64,
+    /// Rolling-direction radius R_x \[m\].
+    pub rolling_radius: f64,
+    /// Effective modulus E' \[Pa\].
+    pub effective_modulus: f64,
+    /// Ellipticity κ = a/b.
+    pub ellipticity: f64,
+    /// Hertz semi-axis coefficient β along the rolling direction,
+    /// b = β Q^{1/3} \[m/N^{1/3}\].
+    pub semi_minor_coefficient: f64,
 }
 
-/// Relaxation rate |u|/b \[1/s\] of the film of a contact with entrainment
-/// speed u \[m/s\] and semi-axis b along the rolling direction \[m\]
-/// (0 when b is not positive: no film response).
-pub fn relaxation_rate(entrainment_speed: f64, semi_minor: f64) -> f64 {
-    if semi_minor > 0.0 {
-        entrainment_speed.abs() / semi_minor
-    } else {
-        0.0
+/// A contact's central film as a function of its load (module doc).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilmLaw {
+    /// Flooded film at 1 N, H \[m\].
+    flooded: f64,
+    /// Starvation coefficient C (S = min(1, C q^c)); ∞ when flooded.
+    starvation: f64,
+    /// Floor load Q_f \[N\].
+    floor: f64,
+}
+
+impl FilmLaw {
+    /// The law of a contact with `geometry`, lubricated by `lubricant`
+    /// through `supply`. The oil-flow supply is refused.
+    pub fn new(
+        lubricant: &Lubricant,
+        supply: &Supply,
+        geometry: &FilmGeometry,
+    ) -> Result<Self, InvalidParameter> {
+        let g = geometry;
+        let flooded = hamrock_dowson(
+            lubricant,
+            g.entrainment_speed,
+            1.0,
+            g.rolling_radius,
+            g.effective_modulus,
+            g.ellipticity,
+        )
+        .central;
+        let starvation = match *supply {
+            Supply::Flooded => f64::INFINITY,
+            Supply::InletDistance(l) => {
+                // L*(q) − 1 = 3.06 (R_x H/β²)^0.56 q^{0.56(a − 2/3)}.
+                let scale = 3.06
+                    * (g.rolling_radius * flooded / g.semi_minor_coefficient.powi(2)).powf(0.56);
+                if scale > 0.0 {
+                    ((l - 1.0).max(0.0) / scale).powf(0.25)
+                } else {
+                    f64::INFINITY
+                }
+            }
+            Supply::Flow { flow, .. } => {
+                return Err(InvalidParameter::new(
+                    "oil_flow",
+                    flow,
+                    "the film in the normal approach needs a flooded supply or an inlet distance ratio",
+                ));
+            }
+        };
+        Ok(Self {
+            flooded,
+            starvation,
+            floor: FLOOR_LOAD_PARAMETER * g.effective_modulus * g.rolling_radius.powi(2),
+        })
     }
-}
 
-/// Film rate ḣ = (|u|/b)(h_ss − h) \[m/s\].
-pub fn film_rate(steady: f64, film: f64, entrainment_speed: f64, semi_minor: f64) -> f64 {
-    relaxation_rate(entrainment_speed, semi_minor) * (steady - film)
+    /// Floor load Q_f \[N\].
+    pub fn floor(&self) -> f64 {
+        self.floor
+    }
+
+    /// Load q* above which the film is flooded (0 when always flooded).
+    fn flooded_from(&self) -> f64 {
+        if self.starvation.is_finite() && self.starvation > 0.0 {
+            self.starvation.powf(-1.0 / STARVATION_EXPONENT)
+        } else if self.starvation.is_finite() {
+            f64::INFINITY
+        } else {
+            0.0
+        }
+    }
+
+    /// Central film h(q) \[m\] at load q \[N\].
+    pub fn film(&self, load: f64) -> f64 {
+        let q = load.max(self.floor);
+        let flooded = self.flooded * q.powf(FLOODED_EXPONENT);
+        if q >= self.flooded_from() {
+            flooded
+        } else {
+            flooded * self.starvation * q.powf(STARVATION_EXPONENT)
+        }
+    }
+
+    /// Compliance of the film dh/dq \[m/N\] (minus 1/K_oil of the central
+    /// film): 0 below the floor.
+    pub fn slope(&self, load: f64) -> f64 {
+        if load <= self.floor {
+            return 0.0;
+        }
+        let exponent = if load >= self.flooded_from() {
+            FLOODED_EXPONENT
+        } else {
+            FLOODED_EXPONENT + STARVATION_EXPONENT
+        };
+        exponent * self.film(load) / load
+    }
+
+    /// ∫₀^q h dq' \[N·m\].
+    pub fn integral(&self, load: f64) -> f64 {
+        let q = load.max(0.0);
+        if q <= self.floor {
+            return q * self.film(self.floor);
+        }
+        let knee = self.flooded_from().clamp(self.floor, q);
+        // ∫ k x^e dx from x0 to x1.
+        let power = |k: f64, e: f64, x0: f64, x1: f64| {
+            k * (x1.powf(e + 1.0) - x0.powf(e + 1.0)) / (e + 1.0)
+        };
+        let mut total = self.floor * self.film(self.floor);
+        if knee > self.floor {
+            total += power(
+                self.flooded * self.starvation,
+                FLOODED_EXPONENT + STARVATION_EXPONENT,
+                self.floor,
+                knee,
+            );
+        }
+        if q > knee {
+            total += power(self.flooded, FLOODED_EXPONENT, knee, q);
+        }
+        total
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::lubrication::PressureViscosity;
+    use crate::lubrication::film::{FilmConditions, contact_film};
 
-    #[test]
-    fn the_film_relaxes_over_the_transit_time_and_stops_at_its_steady_value() {
-        // 10 m/s over b = 0.1 mm: τ = 10 µs.
-        let (u, b) = (10.0, 1e-4);
-        assert_eq!(relaxation_rate(u, b), 1e5);
-        assert_eq!(relaxation_rate(-u, b), 1e5);
-        assert_eq!(film_rate(0.3e-6, 0.3e-6, u, b), 0.0);
-        assert!((film_rate(0.3e-6, 0.1e-6, u, b) - 0.2e-6 * 1e5).abs() < 1e-18);
-        // Integrated exactly over one τ from h = 0: 1 − 1/e of the way.
-        let (steady, tau) = (0.3e-6, b / u);
-        let mut h = 0.0;
-        let n = 100_000;
-        let dt = tau / n as f64;
-        for _ in 0..n {
-            // Midpoint rule.
-            let half = h + 0.5 * dt * film_rate(steady, h, u, b);
-            h += dt * film_rate(steady, half, u, b);
+    fn oil() -> Lubricant {
+        Lubricant {
+            viscosity: 0.0467,
+            pressure_viscosity: 2.2e-8,
+            pressure_model: PressureViscosity::Barus,
         }
-        let exact = steady * (1.0 - (-1.0f64).exp());
-        assert!((h - exact).abs() < 1e-9 * steady, "{h} vs {exact}");
-        // No entrainment or no contact: the film does not move.
-        assert_eq!(film_rate(0.3e-6, 0.1e-6, 0.0, b), 0.0);
-        assert_eq!(film_rate(0.3e-6, 0.1e-6, u, 0.0), 0.0);
+    }
+
+    const GEOMETRY: FilmGeometry = FilmGeometry {
+        entrainment_speed: 10.0,
+        rolling_radius: 2.8e-3,
+        effective_modulus: 2.29e11,
+        ellipticity: 5.1,
+        semi_minor_coefficient: 2.5e-5,
+    };
+
+    fn reference(supply: &Supply, load: f64) -> f64 {
+        contact_film(
+            &oil(),
+            supply,
+            0.0,
+            &FilmConditions {
+                entrainment_speed: GEOMETRY.entrainment_speed,
+                load,
+                rolling_radius: GEOMETRY.rolling_radius,
+                effective_modulus: GEOMETRY.effective_modulus,
+                ellipticity: GEOMETRY.ellipticity,
+                semi_minor: GEOMETRY.semi_minor_coefficient * load.cbrt(),
+                ring_speed: 1000.0,
+            },
+        )
+        .central
     }
 
     #[test]
-    fn the_floor_load_is_the_floor_parameter_in_hamrock_dowson_units() {
-        // E' = 2.29e11 Pa, R_x = 4 mm: Q_f = 1e-8 · 2.29e11 · 1.6e-5 N.
-        let q = floor_load(2.29e11, 4e-3);
-        assert!((q - 0.03664).abs() < 1e-12);
+    fn the_law_is_the_starved_hamrock_dowson_film_above_the_floor() {
+        for supply in [
+            Supply::Flooded,
+            Supply::InletDistance(1.1),
+            Supply::InletDistance(1.9),
+            Supply::InletDistance(20.0),
+        ] {
+            let law = FilmLaw::new(&oil(), &supply, &GEOMETRY).unwrap();
+            assert!((law.floor() - 1e-7 * 2.29e11 * 2.8e-3f64.powi(2)).abs() < 1e-15);
+            for q in [0.2, 1.0, 5.0, 30.0, 300.0, 3000.0] {
+                let (h, expected) = (law.film(q), reference(&supply, q));
+                assert!(
+                    (h / expected - 1.0).abs() < 1e-12,
+                    "{supply:?} {q}: {h} {expected}"
+                );
+            }
+            // Held below the floor.
+            assert_eq!(law.film(0.0), law.film(law.floor()));
+            assert_eq!(law.film(0.5 * law.floor()), law.film(law.floor()));
+        }
+    }
+
+    #[test]
+    fn slope_and_integral_are_the_derivative_and_antiderivative_of_the_film() {
+        for supply in [Supply::Flooded, Supply::InletDistance(1.5)] {
+            let law = FilmLaw::new(&oil(), &supply, &GEOMETRY).unwrap();
+            let knee = law.flooded_from();
+            for q in [0.3, 2.0, 40.0, 900.0] {
+                if (q / knee - 1.0).abs() < 1e-3 {
+                    continue;
+                }
+                let d = 1e-6 * q;
+                let slope = (law.film(q + d) - law.film(q - d)) / (2.0 * d);
+                assert!((law.slope(q) / slope - 1.0).abs() < 1e-8, "{q}");
+                let rate = (law.integral(q + d) - law.integral(q - d)) / (2.0 * d);
+                assert!((rate / law.film(q) - 1.0).abs() < 1e-8, "{q}");
+            }
+            // Simpson on a fine log grid from the floor.
+            let q: f64 = 500.0;
+            let n = 20_000;
+            let (x0, x1) = (law.floor().ln(), q.ln());
+            let hstep = (x1 - x0) / n as f64;
+            let f = |x: f64| law.film(x.exp()) * x.exp();
+            let mut sum = f(x0) + f(x1);
+            for k in 1..n {
+                sum += f(x0 + k as f64 * hstep) * if k % 2 == 1 { 4.0 } else { 2.0 };
+            }
+            let expected = law.floor() * law.film(law.floor()) + sum * hstep / 3.0;
+            assert!(
+                (law.integral(q) / expected - 1.0).abs() < 1e-9,
+                "{supply:?}: {} {expected}",
+                law.integral(q)
+            );
+        }
+    }
+
+    #[test]
+    fn the_film_in_the_approach_refuses_an_oil_flow_supply() {
+        let flow = Supply::Flow {
+            flow: 1e-8,
+            kinematic_viscosity: 3e-5,
+            radius: 0.02,
+        };
+        let e = FilmLaw::new(&oil(), &flow, &GEOMETRY).unwrap_err();
+        assert!(e.to_string().contains("inlet distance"), "{e}");
+        // No entrainment: no film.
+        let still = FilmGeometry {
+            entrainment_speed: 0.0,
+            ..GEOMETRY
+        };
+        let law = FilmLaw::new(&oil(), &Supply::InletDistance(1.5), &still).unwrap();
+        assert_eq!(law.film(10.0), 0.0);
+        assert_eq!(law.integral(10.0), 0.0);
     }
 }
