@@ -495,12 +495,26 @@ impl Case {
             rings: material("materials.rings", raw.materials.rings.as_ref())?,
         };
         let traction = traction(raw.model.traction.as_ref(), lubricant.as_ref(), &materials)?;
-        if raw.model.film_in_approach == Some(true) && traction.lubricant().is_none() {
-            return Err(Invalid::new(
-                "model.film_in_approach",
-                Some("true".into()),
-                "the film needs a film model: model.traction = \"ehl\" with a [lubricant] section",
-            ));
+        if raw.model.film_in_approach == Some(true) {
+            if traction.lubricant().is_none() {
+                return Err(Invalid::new(
+                    "model.film_in_approach",
+                    Some("true".into()),
+                    "the film needs a film model: model.traction = \"ehl\" with a [lubricant] section",
+                ));
+            }
+            let flow = lubricant.as_ref().is_some_and(|l| {
+                l.supply
+                    .iter()
+                    .any(|s| matches!(s, rolldyn::lubrication::Supply::Flow { .. }))
+            });
+            if flow {
+                return Err(Invalid::new(
+                    "model.film_in_approach",
+                    Some("true".into()),
+                    "the film in the approach needs a flooded supply or lubricant.inlet_distance_ratio, not lubricant.oil_flow (docs/lubrication.md)",
+                ));
+            }
         }
         let inner_ring_mass = checked("inner_ring.mass", &raw.inner_ring.mass, positive)?;
         let inner_ring_tilt_inertia = checked(

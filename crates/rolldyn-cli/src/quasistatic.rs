@@ -226,6 +226,18 @@ pub struct ConventionalStiffness {
     pub tilt_z_n_m_per_rad: f64,
 }
 
+impl From<[f64; 5]> for ConventionalStiffness {
+    fn from(c: [f64; 5]) -> Self {
+        Self {
+            axial_n_per_m: c[0],
+            radial_y_n_per_m: c[1],
+            radial_z_n_per_m: c[2],
+            tilt_y_n_m_per_rad: c[3],
+            tilt_z_n_m_per_rad: c[4],
+        }
+    }
+}
+
 /// `rolldyn quasistatic --json` output for one operating point.
 #[derive(Serialize)]
 pub struct QuasiStaticReport {
@@ -272,6 +284,14 @@ pub struct QuasiStaticReport {
     pub rating_life: Option<RatingLife>,
     /// Per ball films (null without a `[lubricant]`).
     pub films: Option<Vec<crate::quasistatic_films::FilmRow>>,
+    /// The film in the normal approach (`model.film_in_approach`): the
+    /// solution, its stiffness and the modes carry it.
+    pub film_in_approach: bool,
+    /// The dry solution's stiffness (null unless `film_in_approach`).
+    pub stiffness_matrix_without_film: Option<[[f64; 5]; 5]>,
+    /// The dry solution's 1/C_ii (null unless `film_in_approach`, or
+    /// where K is singular).
+    pub conventional_stiffness_without_film: Option<ConventionalStiffness>,
     /// Natural modes of the inner ring (null without its mass and tilt inertia).
     pub modes: Option<crate::quasistatic_films::ModesReport>,
 }
@@ -312,13 +332,9 @@ impl QuasiStaticReport {
             },
             stiffness_matrix: k,
             compliance_matrix: sol.compliance(),
-            conventional_stiffness: sol.conventional_stiffness().map(|c| ConventionalStiffness {
-                axial_n_per_m: c[0],
-                radial_y_n_per_m: c[1],
-                radial_z_n_per_m: c[2],
-                tilt_y_n_m_per_rad: c[3],
-                tilt_z_n_m_per_rad: c[4],
-            }),
+            conventional_stiffness: sol
+                .conventional_stiffness()
+                .map(ConventionalStiffness::from),
             radial_load_n: conditions.loads.force[1].hypot(conditions.loads.force[2]),
             radial_load_angle_deg: conditions.loads.force[2]
                 .atan2(conditions.loads.force[1])
@@ -351,8 +367,22 @@ impl QuasiStaticReport {
             balls: sol.balls.iter().map(BallRow::from).collect(),
             rating_life: None,
             films: None,
+            film_in_approach: false,
+            stiffness_matrix_without_film: None,
+            conventional_stiffness_without_film: None,
             modes: None,
         }
+    }
+
+    /// Marks the report as solved with the film in the approach, `dry` being
+    /// the same point without it.
+    pub fn with_dry_stiffness(mut self, dry: &Equilibrium) -> Self {
+        self.film_in_approach = true;
+        self.stiffness_matrix_without_film = Some(dry.stiffness);
+        self.conventional_stiffness_without_film = dry
+            .conventional_stiffness()
+            .map(ConventionalStiffness::from);
+        self
     }
 
     /// With the films and natural modes the case allows.
@@ -441,16 +471,27 @@ impl QuasiStaticReport {
             self.tilt_stiffness_n_m_per_rad.y,
             self.tilt_stiffness_n_m_per_rad.z
         );
-        if let Some(c) = &self.conventional_stiffness {
+        let conventional = |out: &mut String, what: &str, c: &ConventionalStiffness| {
             let _ = writeln!(
                 out,
-                "  stiffness, 1/C_ii (other loads held): axial {:.4e} N/m, radial y {:.4e} N/m, radial z {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
+                "  stiffness, 1/C_ii (other loads held){what}: axial {:.4e} N/m, radial y {:.4e} N/m, radial z {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
                 c.axial_n_per_m,
                 c.radial_y_n_per_m,
                 c.radial_z_n_per_m,
                 c.tilt_y_n_m_per_rad,
                 c.tilt_z_n_m_per_rad
             );
+        };
+        if let Some(c) = &self.conventional_stiffness {
+            let what = if self.film_in_approach {
+                ", film in the approach"
+            } else {
+                ""
+            };
+            conventional(&mut out, what, c);
+        }
+        if let Some(c) = &self.conventional_stiffness_without_film {
+            conventional(&mut out, ", without the film", c);
         }
         let _ = writeln!(
             out,
@@ -784,12 +825,21 @@ pub fn solve(case: &Case, control: ControlChoice) -> Result<QuasiStaticOutput, c
         ControlChoice::Raceway(control) => {
             let solver = solver(case).map_err(Failure::BadInput)?;
             let conditions = conditions(case, control);
-            let sol = solver
+            let dry = solver
                 .solve(&conditions, &case.solver_options())
                 .map_err(crate::quasistatic_failure)?;
             let held = case.prescribed_displacement.map(|p| p.is_some());
             let report =
-                QuasiStaticReport::new(&sol, &conditions, held).with_films_and_modes(case, &sol);
+                match crate::quasistatic_films::solve_with_films(case, &solver, &conditions) {
+                    Some(wet) => {
+                        let wet = wet.map_err(crate::quasistatic_failure)?;
+                        QuasiStaticReport::new(&wet, &conditions, held)
+                            .with_films_and_modes(case, &wet)
+                            .with_dry_stiffness(&dry)
+                    }
+                    None => QuasiStaticReport::new(&dry, &conditions, held)
+                        .with_films_and_modes(case, &dry),
+                };
             Ok(QuasiStaticOutput::Raceway(Box::new(report)))
         }
     }

@@ -7,9 +7,9 @@
 //! in docs/cli.md.
 
 use rolldyn::material::effective_modulus;
-use rolldyn::quasistatic::Equilibrium;
 use rolldyn::quasistatic::films::{FilmInputs, equilibrium_films};
 use rolldyn::quasistatic::modes::natural_modes;
+use rolldyn::quasistatic::{Conditions, Equilibrium, QuasiStaticError, QuasiStaticSolver};
 use rolldyn::{RingKind, lubrication};
 use rolldyn_case::Case;
 use serde::Serialize;
@@ -109,10 +109,10 @@ impl ContactFilmRow {
     }
 }
 
-/// The films of `sol` when the case has a lubricant.
-pub fn films(case: &Case, sol: &Equilibrium) -> Option<Vec<FilmRow>> {
+/// What the films need from the case (None without a `[lubricant]`).
+pub fn film_inputs(case: &Case) -> Option<FilmInputs> {
     let lub = case.lubricant.as_ref()?;
-    let inputs = FilmInputs {
+    Some(FilmInputs {
         lubricant: lubrication::Lubricant {
             viscosity: lub.viscosity,
             pressure_viscosity: lub.pressure_viscosity,
@@ -127,7 +127,26 @@ pub fn films(case: &Case, sol: &Equilibrium) -> Option<Vec<FilmRow>> {
             &case.materials.ball.material,
             &case.materials.rings.material,
         ),
-    };
+    })
+}
+
+/// The equilibrium with the film in the normal approach when the case asks
+/// for it (`model.film_in_approach`; None otherwise).
+pub fn solve_with_films(
+    case: &Case,
+    solver: &QuasiStaticSolver,
+    conditions: &Conditions,
+) -> Option<Result<Equilibrium, QuasiStaticError>> {
+    if !case.film_in_approach {
+        return None;
+    }
+    let inputs = film_inputs(case)?;
+    Some(solver.solve_with_films(conditions, &case.solver_options(), &inputs))
+}
+
+/// The films of `sol` when the case has a lubricant.
+pub fn films(case: &Case, sol: &Equilibrium) -> Option<Vec<FilmRow>> {
+    let inputs = film_inputs(case)?;
     Some(
         equilibrium_films(&case.bearing.geometry, sol, &inputs)
             .iter()

@@ -25,15 +25,14 @@ pub fn jones_harris_state(case: &Case, model: &BearingModel, t: f64) -> Result<V
         case.contact_stiffness,
     )
     .map_err(|e| e.to_string())?;
-    let eq = qs
-        .solve(
-            &Conditions {
-                loads: p.loads.at(t),
-                inner_speed: p.speed.speed_at(t),
-                control: case.raceway_control,
-            },
-            &case.solver_options(),
-        )
+    let conditions = Conditions {
+        loads: p.loads.at(t),
+        inner_speed: p.speed.speed_at(t),
+        control: case.raceway_control,
+    };
+    // With the film in the approach, the equilibrium with the film.
+    let eq = crate::quasistatic_films::solve_with_films(case, &qs, &conditions)
+        .unwrap_or_else(|| qs.solve(&conditions, &case.solver_options()))
         .map_err(|e| e.to_string())?;
     Ok(model.state_from_equilibrium(&eq))
 }

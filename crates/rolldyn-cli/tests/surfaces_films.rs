@@ -356,3 +356,69 @@ fn contact_with_films_and_explicit_contacts() {
         assert!(stderr(&o).contains(fragment), "{}", stderr(&o));
     }
 }
+
+/// The film in the normal approach (issue 12 item 3): `quasistatic` solves
+/// with it and reports the dry stiffness beside; `run` starts from that
+/// equilibrium, records the films' work and closes its energy balance;
+/// cases it cannot serve are refused naming the key.
+#[test]
+fn the_film_in_the_approach_in_quasistatic_and_run() {
+    let film = ["--set", "model.film_in_approach=true"];
+    let dry = json(&["quasistatic", "--json"], None);
+    let wet = json(&["quasistatic", "--json", film[0], film[1]], None);
+    assert_eq!(dry["film_in_approach"], false);
+    assert!(dry["stiffness_matrix_without_film"].is_null());
+    assert_eq!(wet["film_in_approach"], true);
+    assert_eq!(
+        wet["stiffness_matrix_without_film"],
+        dry["stiffness_matrix"]
+    );
+    assert_eq!(
+        wet["conventional_stiffness_without_film"],
+        dry["conventional_stiffness"]
+    );
+    let g = |v: &Value| v.as_f64().unwrap();
+    // Under the preset's axial load the film adds its compliance.
+    let axial = |v: &Value| g(&v["conventional_stiffness"]["axial_n_per_m"]);
+    assert!(axial(&wet) < axial(&dry), "{} {}", axial(&wet), axial(&dry));
+    let text = stdout(&rolldyn(&["quasistatic", film[0], film[1]], None));
+    assert!(text.contains("without the film"), "{text}");
+
+    let dir = temp_dir("film-approach");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(
+        &["run", "--duration", "4 ms", "-o", &d, film[0], film[1]],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert!(summary["film_work_j"].is_f64());
+    let balance = g(&summary["energy_balance_relative_error"]);
+    assert!(balance.abs() < 1e-3, "{balance}");
+    std::fs::remove_dir_all(&dir).ok();
+
+    for (set, rule) in [
+        ("model.traction=\"none\"", "needs a film model"),
+        ("lubricant.oil_flow=\"0.1 L/min\"", "not lubricant.oil_flow"),
+    ] {
+        let o = rolldyn(
+            &[
+                "quasistatic",
+                film[0],
+                film[1],
+                "--set",
+                set,
+                "--set",
+                "lubricant.density=\"860 kg/m^3\"",
+            ],
+            None,
+        );
+        assert!(!o.status.success());
+        let e = stderr(&o);
+        assert!(
+            e.contains("model.film_in_approach") && e.contains(rule),
+            "{e}"
+        );
+    }
+}

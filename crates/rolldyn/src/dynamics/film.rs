@@ -174,34 +174,12 @@ impl BearingModel {
         entrainment_speed: f64,
     ) -> Option<FilmApproach> {
         let law = self.film_law(ring, hertz, geometry.contact_angle, entrainment_speed)?;
-        let overlap = geometry.penetration;
-        let stiffness = hertz.stiffness;
-        if overlap + law.film(0.0) <= 0.0 {
-            return None;
-        }
-        // Newton on g(x) = x − δ − h(K x^{3/2}), g' = 1 − h'(Q) 3Q/(2x),
-        // from the film at the geometric load. g' ≥ 1 for a flooded film
-        // and close to 1 for a starved one (lubrication::approach).
-        let load_at = |x: f64| stiffness * x * x.sqrt();
-        let mut x = overlap + law.film(load_at(overlap.max(0.0)));
-        for _ in 0..30 {
-            let load = load_at(x);
-            let g = x - overlap - law.film(load);
-            let slope = 1.0 - law.slope(load) * 1.5 * load / x;
-            let next = x - g / slope.max(0.1);
-            let next = if next > 0.0 { next } else { 0.5 * x };
-            let done = (next - x).abs() <= 1e-15 * x;
-            x = next;
-            if done {
-                break;
-            }
-        }
-        let load = load_at(x);
+        let a = law.elastic_approach(hertz.stiffness, geometry.penetration)?;
         Some(FilmApproach {
             law,
-            elastic_approach: x,
-            load,
-            film: law.film(load),
+            elastic_approach: a.approach,
+            load: a.load,
+            film: a.film,
         })
     }
 

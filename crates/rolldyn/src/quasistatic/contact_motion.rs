@@ -62,6 +62,24 @@ pub fn contact_motions<'a>(
     geometry: &'a BearingGeometry,
     eq: &'a Equilibrium,
 ) -> Vec<[Option<ContactMotion<'a>>; 2]> {
+    motions(geometry, eq, false)
+}
+
+/// [`contact_motions`] of every contact, loaded or not: an open contact's
+/// point is the ball's nearest point to the groove (None only where the
+/// geometry is degenerate).
+pub fn all_contact_motions<'a>(
+    geometry: &'a BearingGeometry,
+    eq: &'a Equilibrium,
+) -> Vec<[Option<ContactMotion<'a>>; 2]> {
+    motions(geometry, eq, true)
+}
+
+fn motions<'a>(
+    geometry: &'a BearingGeometry,
+    eq: &'a Equilibrium,
+    open_too: bool,
+) -> Vec<[Option<ContactMotion<'a>>; 2]> {
     let d = eq.displacement;
     let pose = RingPose {
         translation: Vector3::new(d[0], d[1], d[2]),
@@ -99,7 +117,7 @@ pub fn contact_motions<'a>(
             for (k, ((raceway, circle, centre, omega), solution)) in
                 rings.iter().zip([&ball.inner, &ball.outer]).enumerate()
             {
-                if solution.load <= 0.0 {
+                if solution.load <= 0.0 && !open_too {
                     continue;
                 }
                 let Some(contact) = circle.contact(&q, geometry.ball_diameter, 0.0) else {

@@ -76,6 +76,7 @@ use super::ring_contact::{RingContactEval, RingDisplacement, evaluate};
 use crate::contact::{ContactTable, HertzModel, HertzResult, RacewayContactModel};
 use crate::error::InvalidParameter;
 use crate::geometry::{BearingGeometry, RingKind};
+use crate::lubrication::approach::FilmLaw;
 use crate::material::{Material, effective_modulus};
 use crate::math::roots::brent;
 use crate::operating::Loads;
@@ -247,6 +248,9 @@ pub struct QuasiStaticSolver {
     outer_table: ContactTable,
     ball_mass: f64,
     ball_inertia: f64,
+    /// The film law of each ball's inner and outer contact, for the film
+    /// in the approach (empty: dry Hertz; `films::solve_with_films`).
+    films: Vec<[Option<FilmLaw>; 2]>,
 }
 
 /// Unknowns: per ball (x, r, ω_m, ω_x, ω_r), ring u.
@@ -328,7 +332,18 @@ impl QuasiStaticSolver {
             ))?,
             ball_mass,
             ball_inertia: ball_mass * geometry.ball_diameter.powi(2) / 10.0,
+            films: Vec::new(),
         })
+    }
+
+    /// This solver with the film `films[j][k]` in the approach of ball j's
+    /// inner (k = 0) and outer contact (MODEL §4; `ring_contact`); empty:
+    /// dry Hertz.
+    pub(crate) fn with_films(&self, films: Vec<[Option<FilmLaw>; 2]>) -> Self {
+        Self {
+            films,
+            ..self.clone()
+        }
     }
 
     /// The bearing geometry.
@@ -375,6 +390,7 @@ impl QuasiStaticSolver {
 
     fn contacts(
         &self,
+        j: usize,
         y: &Vector5,
         phi: f64,
         ring: &RingDisplacement,
@@ -382,7 +398,16 @@ impl QuasiStaticSolver {
         let (ex, er) = Self::basis(phi);
         let q = y[0] * ex + y[1] * er;
         let d = self.geometry.ball_diameter;
-        let inner = evaluate(&self.geometry.inner, &self.inner_table, d, &q, ring, true);
+        let films = self.films.get(j);
+        let inner = evaluate(
+            &self.geometry.inner,
+            &self.inner_table,
+            d,
+            &q,
+            ring,
+            true,
+            films.and_then(|f| f[0].as_ref()),
+        );
         let outer = evaluate(
             &self.geometry.outer,
             &self.outer_table,
@@ -390,6 +415,7 @@ impl QuasiStaticSolver {
             &q,
             &RingDisplacement::default(),
             true,
+            films.and_then(|f| f[1].as_ref()),
         );
         (q, inner, outer)
     }
@@ -403,7 +429,7 @@ impl QuasiStaticSolver {
             let (ex, er) = Self::basis(phi);
             let e = SMatrix::<f64, 3, 2>::from_columns(&[ex, er]);
             for _ in 0..50 {
-                let (_, inner, outer) = self.contacts(y, phi, &ring);
+                let (_, inner, outer) = self.contacts(j, y, phi, &ring);
                 let r = e.transpose() * (inner.force + outer.force);
                 let scale = inner.force.norm().max(outer.force.norm()).max(1e-12);
                 if r.amax() <= 1e-13 * scale {
@@ -509,7 +535,8 @@ impl QuasiStaticSolver {
                     .iter()
                     .enumerate()
                     .map(|(j, y)| {
-                        let (_, inner, outer) = self.contacts(y, self.azimuth(j, options), &ring);
+                        let (_, inner, outer) =
+                            self.contacts(j, y, self.azimuth(j, options), &ring);
                         let moment = |c: &RingContactEval, table: &ContactTable| {
                             let h = table.at(c.contact_angle);
                             c.load * h.at_load(c.load).semi_major * h.elliptic_e
@@ -574,7 +601,7 @@ impl QuasiStaticSolver {
             .map(|(j, y)| {
                 let phi = self.azimuth(j, options);
                 let (ex, er) = Self::basis(phi);
-                let (_, inner, outer) = self.contacts(y, phi, &ring);
+                let (_, inner, outer) = self.contacts(j, y, phi, &ring);
                 let omega_b = y[3] * ex + y[4] * er;
                 let contact = |eval: &RingContactEval, table: &ContactTable, ring_speed: f64| {
                     let relative = omega_b - ring_speed * ex;

@@ -4,12 +4,114 @@
 //!
 //! The entrainment speed is the dynamic model's, from
 //! [`super::contact_motion`] (docs/dynamics.md).
+//!
+//! [`QuasiStaticSolver::solve_with_films`]: the equilibrium with the film
+//! in the normal approach (MODEL §4, `lubrication::approach`). Each contact's
+//! film law (entrainment speed and curvature) is taken from the previous
+//! solution, starting from the dry one, and the solve is repeated until the
+//! loads settle. Its bearing stiffness has the films' compliance in series
+//! with Hertz; the law's own dependence on the displacements (through u
+//! and α) is left out of the derivatives.
 
-use super::Equilibrium;
-use super::contact_motion::contact_motions;
+use super::contact_motion::{all_contact_motions, contact_motions};
+use super::{Conditions, Equilibrium, QuasiStaticError, QuasiStaticSolver, SolverOptions};
 use crate::contact::Curvature;
-use crate::geometry::BearingGeometry;
+use crate::geometry::{BearingGeometry, RingKind};
+use crate::lubrication::approach::{FilmGeometry, FilmLaw};
 use crate::lubrication::{ContactFilm, FilmConditions, Lubricant, Supply, contact_film};
+
+/// Re-solves of [`QuasiStaticSolver::solve_with_films`] at most.
+pub const FILM_ITERATIONS: usize = 20;
+
+/// Relative change of the largest load at which the film iteration stops.
+pub const FILM_TOLERANCE: f64 = 1e-10;
+
+impl QuasiStaticSolver {
+    /// The equilibrium with the film in the normal approach (module doc):
+    /// each contact's film from the previous solution's entrainment
+    /// speed and contact angle, repeated until the loads change by less than
+    /// [`FILM_TOLERANCE`] of the largest. At rest there is no film and this
+    /// is [`Self::solve`]. An oil-flow supply is refused.
+    pub fn solve_with_films(
+        &self,
+        conditions: &Conditions,
+        options: &SolverOptions,
+        inputs: &FilmInputs,
+    ) -> Result<Equilibrium, QuasiStaticError> {
+        let mut eq = self.solve(conditions, options)?;
+        for _ in 0..FILM_ITERATIONS {
+            let laws = self.film_laws(&eq, inputs)?;
+            let next = self.with_films(laws).solve_from(&eq, conditions, options)?;
+            let largest = next
+                .balls
+                .iter()
+                .map(|b| b.inner.load.max(b.outer.load))
+                .fold(0.0, f64::max);
+            let change = next
+                .balls
+                .iter()
+                .zip(&eq.balls)
+                .map(|(a, b)| {
+                    (a.inner.load - b.inner.load)
+                        .abs()
+                        .max((a.outer.load - b.outer.load).abs())
+                })
+                .fold(0.0, f64::max);
+            eq = next;
+            if change <= FILM_TOLERANCE * largest {
+                return Ok(eq);
+            }
+        }
+        Err(QuasiStaticError::Unsupported {
+            reason: format!(
+                "the film in the approach did not settle in {FILM_ITERATIONS} re-solves"
+            ),
+        })
+    }
+
+    /// The film laws of the contacts of `eq`.
+    fn film_laws(
+        &self,
+        eq: &Equilibrium,
+        inputs: &FilmInputs,
+    ) -> Result<Vec<[Option<FilmLaw>; 2]>, QuasiStaticError> {
+        let g = self.geometry();
+        let mut out = Vec::with_capacity(eq.balls.len());
+        // Open contacts too: a film may close them.
+        for contacts in all_contact_motions(g, eq) {
+            let mut laws = [None, None];
+            for (k, motion) in contacts.iter().enumerate() {
+                let Some(m) = motion else { continue };
+                let angle = m.contact.contact_angle;
+                let ring = if k == 0 {
+                    RingKind::Inner
+                } else {
+                    RingKind::Outer
+                };
+                let hertz = self.table(ring).at(angle);
+                let curvature =
+                    Curvature::of_raceway(m.raceway, g.ball_diameter, g.pitch_diameter, angle);
+                let law = FilmLaw::new(
+                    &inputs.lubricant,
+                    &inputs.supply[k],
+                    &FilmGeometry {
+                        entrainment_speed: m.entrainment_speed(),
+                        rolling_radius: curvature.rolling_radius,
+                        effective_modulus: inputs.effective_modulus,
+                        ellipticity: hertz.ellipticity,
+                        semi_minor_coefficient: hertz.semi_minor_coefficient,
+                    },
+                )
+                .map_err(|e| QuasiStaticError::Unsupported {
+                    reason: e.to_string(),
+                })?;
+                laws[k] = Some(law);
+            }
+            out.push(laws);
+        }
+        Ok(out)
+    }
+}
 
 /// What the films need besides the solution.
 #[derive(Debug, Clone, Copy, PartialEq)]

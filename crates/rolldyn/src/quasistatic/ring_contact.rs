@@ -21,6 +21,14 @@
 //! plus the derivative of R for the tilts (∂R/∂θ_y = R_z [e_y×] R_y,
 //! ∂R/∂θ_z = [e_z×] R).
 //!
+//! **Film in the approach** (MODEL §4; `lubrication::approach`). With a
+//! film law the bodies are compressed by δ_el = δ + h(Q): Q = K_c δ_el^{3/2}
+//! by Newton, and `penetration` is δ_el. Then
+//! dQ/dδ = K_H/(1 − K_H dh/dQ) (Hertz and film in series) and
+//! dQ/dα = K_c' δ_el^{3/2}/(1 − K_H dh/dQ). The law itself (entrainment
+//! speed, curvature at α) is held: the solver sets it from the previous
+//! solution (`QuasiStaticSolver::solve_with_films`).
+//!
 //! **Signed extension.** With `extend` the force law continues to δ < 0 as
 //! Q = K_c δ|δ|^{1/2} (a pull). The static solver uses it only in the ball
 //! equations at zero speed, where a ball that carries no load has no
@@ -29,6 +37,7 @@
 
 use crate::contact::ContactTable;
 use crate::geometry::Raceway;
+use crate::lubrication::approach::FilmLaw;
 use nalgebra::{Matrix3, Rotation3, SMatrix, Vector3};
 
 /// 3 × 5 matrix: derivative of a 3-vector with respect to the ring DOFs
@@ -93,7 +102,8 @@ fn cross_matrix(v: &Vector3<f64>) -> Matrix3<f64> {
 }
 
 /// Evaluates the contact of a ball (diameter D, centre q) with `raceway` on
-/// a ring displaced by `ring`, using `table` for K_c(α).
+/// a ring displaced by `ring`, using `table` for K_c(α), with the film
+/// `film` in the approach if given.
 pub fn evaluate(
     raceway: &Raceway,
     table: &ContactTable,
@@ -101,6 +111,7 @@ pub fn evaluate(
     ball_centre: &Vector3<f64>,
     ring: &RingDisplacement,
     extend: bool,
+    film: Option<&FilmLaw>,
 ) -> RingContactEval {
     let rz = Rotation3::from_axis_angle(&Vector3::z_axis(), ring.tilt_z);
     let ry = Rotation3::from_axis_angle(&Vector3::y_axis(), ring.tilt_y);
@@ -117,15 +128,25 @@ pub fn evaluate(
     let a = s.x - raceway.groove_centre_axial;
     let b = r_yz - raceway.groove_centre_radius;
     let d = a.hypot(b);
-    let delta = d - (raceway.groove_radius - 0.5 * ball_diameter);
+    let overlap = d - (raceway.groove_radius - 0.5 * ball_diameter);
     let n = Vector3::new(a / d, b / d * s_hat.y, b / d * s_hat.z);
     let alpha = a.abs().atan2(b.abs());
 
     let (k, dk) = table.stiffness_with_derivative(alpha);
+    // The elastic approach, and the film's series factor 1/(1 − K_H h').
+    let (delta, series) = match film.map(|law| (law, law.elastic_approach(k, overlap))) {
+        Some((_, Some(a))) => (a.approach, a.series_factor),
+        Some((law, None)) => (overlap + law.film(0.0), 1.0),
+        None => (overlap, 1.0),
+    };
     let active = delta > 0.0 || extend;
     let root = delta.abs().sqrt();
     let (q_signed, dq_ddelta, dq_dalpha) = if active {
-        (k * delta * root, 1.5 * k * root, dk * delta * root)
+        (
+            k * delta * root,
+            series * 1.5 * k * root,
+            series * dk * delta * root,
+        )
     } else {
         (0.0, 0.0, 0.0)
     };
@@ -196,6 +217,7 @@ mod tests {
                     q,
                     &RingDisplacement::from_array(u),
                     extend,
+                    None,
                 )
             };
             let base = eval(&q0, u0);

@@ -212,3 +212,76 @@ fn b2_energy_balance_closes_with_the_film_in_the_approach() {
         "{imbalance} J of {drive} J"
     );
 }
+
+/// The 7008C at 10 000 rpm and F_x = 200 N, flooded, solved with the film
+/// in the approach (`QuasiStaticSolver::solve_with_films`).
+fn quasistatic_with_films(
+    force: [f64; 3],
+) -> (
+    rolldyn::quasistatic::Equilibrium,
+    rolldyn::quasistatic::Equilibrium,
+) {
+    use rolldyn::lubrication::Supply;
+    use rolldyn::operating::Loads;
+    use rolldyn::quasistatic::films::FilmInputs;
+    use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let (params, _) = dynamics_7008c(DragParameters::default());
+    let TractionModel::Ehl(ehl) = params.traction else {
+        panic!("EHL traction");
+    };
+    let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
+    let conditions = Conditions {
+        loads: Loads {
+            force,
+            moment: [0.0; 2],
+        },
+        inner_speed: 10_000.0 * std::f64::consts::TAU / 60.0,
+        control: RacewayControl::Outer,
+    };
+    let options = SolverOptions::default();
+    let inputs = FilmInputs {
+        lubricant: ehl.lubricant,
+        supply: [Supply::Flooded; 2],
+        roughness: [0.0; 2],
+        effective_modulus: effective_modulus(&steel, &steel),
+    };
+    (
+        qs.solve(&conditions, &options).unwrap(),
+        qs.solve_with_films(&conditions, &options, &inputs).unwrap(),
+    )
+}
+
+#[test]
+fn c7_quasistatic_films_carry_the_dynamic_models_loads_and_stiffness() {
+    let (dry, wet) = quasistatic_with_films([200.0, 0.0, 0.0]);
+    // The dynamic model with the film, started from the wet solution,
+    // carries the same loads: one film law, one entrainment speed.
+    let (_, film, _) = models();
+    let y = film.state_from_equilibrium(&wet);
+    let s = samples(&film, &y);
+    let mut worst = 0.0f64;
+    for (b, s) in wet.balls.iter().zip(&s) {
+        worst = worst
+            .max(rel(s.inner.load, b.inner.load))
+            .max(rel(s.outer.load, b.outer.load));
+    }
+    // The film takes up clearance: loads and stiffness grow.
+    let (q_dry, q_wet) = (dry.balls[0].inner.load, wet.balls[0].inner.load);
+    // Axial compliance: the stiffness matrix against re-solves at ±1 % F_x.
+    let c = wet.compliance().unwrap()[0][0];
+    let (_, plus) = quasistatic_with_films([202.0, 0.0, 0.0]);
+    let (_, minus) = quasistatic_with_films([198.0, 0.0, 0.0]);
+    let measured = (plus.displacement[0] - minus.displacement[0]) / 4.0;
+    let c_dry = dry.compliance().unwrap()[0][0];
+    eprintln!(
+        "C7 quasi-static film: loads vs dynamic model {worst:.1e}; inner load {q_dry:.2} → {q_wet:.2} N; \
+         axial compliance {c:.4e} m/N (dry {c_dry:.4e}), re-solves {measured:.4e} ({:.1e})",
+        rel(c, measured)
+    );
+    assert!(worst < 1e-6, "{worst}");
+    assert!(q_wet > q_dry);
+    // Measured 1.5e-3: the stiffness holds the film law (u, α) fixed.
+    assert!(rel(c, measured) < 5e-3, "{c} vs {measured}");
+}

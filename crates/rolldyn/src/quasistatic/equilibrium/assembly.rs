@@ -89,7 +89,7 @@ impl QuasiStaticSolver {
         let phi = self.azimuth(j, setup.options);
         let (ex, er) = Self::basis(phi);
         let e = SMatrix::<f64, 3, 2>::from_columns(&[ex, er]);
-        let (q, inner, outer) = self.contacts(y, phi, ring);
+        let (q, inner, outer) = self.contacts(j, y, phi, ring);
         let largest_load = inner.load.max(outer.load);
         let (r, wm, wx, wr) = (y[1], y[2], y[3], y[4]);
         // How far the inner raceway drives the ball (`race_drive`): 1 while
@@ -344,14 +344,14 @@ mod tests {
             for _ in 0..200 {
                 let mut y = state.balls[j];
                 y[1] = 0.5 * (outside + inside);
-                if solver.contacts(&y, phi, &ring).1.penetration > -gap {
+                if solver.contacts(j, &y, phi, &ring).1.penetration > -gap {
                     outside = y[1];
                 } else {
                     inside = y[1];
                 }
             }
             state.balls[j][1] = 0.5 * (outside + inside);
-            let (_, inner, outer) = solver.contacts(&state.balls[j], phi, &ring);
+            let (_, inner, outer) = solver.contacts(j, &state.balls[j], phi, &ring);
             assert!((inner.penetration + gap).abs() < 1e-3 * gap, "ball {j}");
             assert!(outer.in_contact(), "ball {j}: outer contact open");
         }

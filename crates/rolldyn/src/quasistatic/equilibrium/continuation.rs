@@ -373,7 +373,7 @@ impl QuasiStaticSolver {
         let centrifugal = self.ball_mass * r * omega_m * omega_m;
         let mut out = state.clone();
         for (j, y) in out.balls.iter_mut().enumerate() {
-            let (_, inner, _) = self.contacts(y, self.azimuth(j, options), &ring);
+            let (_, inner, _) = self.contacts(j, y, self.azimuth(j, options), &ring);
             if inner.in_contact() && inner.load >= centrifugal {
                 continue;
             }

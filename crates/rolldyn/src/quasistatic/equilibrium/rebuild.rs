@@ -41,6 +41,7 @@ impl QuasiStaticSolver {
             outer_table: table(&self.outer_table, RingKind::Outer)?,
             ball_mass: self.ball_mass,
             ball_inertia: self.ball_inertia,
+            films: Vec::new(),
         })
     }
 }

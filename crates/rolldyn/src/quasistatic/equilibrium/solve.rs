@@ -283,7 +283,7 @@ impl QuasiStaticSolver {
     fn any_contact(&self, state: &State, options: &SolverOptions) -> bool {
         let ring = RingDisplacement::from_array(state.ring.into());
         state.balls.iter().enumerate().any(|(j, y)| {
-            let (_, inner, outer) = self.contacts(y, self.azimuth(j, options), &ring);
+            let (_, inner, outer) = self.contacts(j, y, self.azimuth(j, options), &ring);
             inner.in_contact() || outer.in_contact()
         })
     }
