@@ -67,10 +67,12 @@ impl FilmApproach {
 /// elastic load, and where the entrainment speed meets the ring's velocity.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct FilmWork {
+    /// The film law at this state.
+    pub(super) law: FilmLaw,
     /// Elastic load Q \[N\].
     pub(super) load: f64,
-    /// ∂(∫₀^Q h)/∂u at fixed Q \[N·s\].
-    pub(super) speed_gradient: f64,
+    /// Entrainment speed u \[m/s\].
+    pub(super) speed: f64,
     /// Unit entrainment direction ê.
     pub(super) direction: Vector3<f64>,
     /// Contact point P \[m\].
@@ -202,27 +204,6 @@ impl BearingModel {
             .map_or(0.0, |law| law.integral(load))
     }
 
-    /// ∂(∫₀^Q h)/∂u at fixed Q by central differences in u (the law is a
-    /// power of u) \[N·s\].
-    pub(super) fn film_speed_gradient(
-        &self,
-        ring: &RingMotion,
-        hertz: &HertzCoefficients,
-        contact_angle: f64,
-        entrainment_speed: f64,
-        load: f64,
-    ) -> f64 {
-        let du = 1e-4 * entrainment_speed.abs();
-        if du <= 0.0 {
-            return 0.0;
-        }
-        let at = |u: f64| {
-            self.film_law(ring, hertz, contact_angle, u)
-                .map_or(0.0, |law| law.integral(load))
-        };
-        (at(entrainment_speed + du) - at(entrainment_speed - du)) / (2.0 * du)
-    }
-
     /// The power of the films of ball j's closed contacts along the motion,
     /// without the rings' accelerations: ∂/∂t ∫₀^Q h dq with the ball's
     /// states moved by `dy_ball`, the rings' positions by their velocities,
@@ -297,6 +278,15 @@ impl BearingModel {
 }
 
 impl FilmWork {
+    /// ∂(∫₀^Q h)/∂u at fixed Q \[N·s\] (0 at rest).
+    fn speed_gradient(&self) -> f64 {
+        if self.speed > 0.0 {
+            self.law.integral_speed_derivative(self.load) / self.speed
+        } else {
+            0.0
+        }
+    }
+
     /// ∂(∫₀^Q h)/∂(ring velocity y, z, …): the inner ring's translational
     /// velocity (x, y, z) and tilt rates (θ̇_y, θ̇_z) about `centre`, with
     /// `tilt_axis_y` the tilted y axis. u = |ê·(…+ ½ v_ring + ½ ω × (P − c))|.
@@ -305,7 +295,7 @@ impl FilmWork {
         centre: &Vector3<f64>,
         tilt_axis_y: &Vector3<f64>,
     ) -> [f64; 5] {
-        let g = 0.5 * self.speed_gradient;
+        let g = 0.5 * self.speed_gradient();
         let arm = self.point - centre;
         [
             g * self.direction.x,
@@ -318,7 +308,7 @@ impl FilmWork {
 
     /// The same for the outer ring's velocity (y, z).
     pub(super) fn outer_ring_gradient(&self) -> [f64; 2] {
-        let g = 0.5 * self.speed_gradient;
+        let g = 0.5 * self.speed_gradient();
         [g * self.direction.y, g * self.direction.z]
     }
 }

@@ -521,6 +521,7 @@ impl BearingModel {
         inner: &RingMotion,
         outer: &RingMotion,
         dy: &mut [f64],
+        films_power: bool,
         mut sink: Option<&mut Dissipation>,
     ) -> BallCoupling {
         let l = self.layout;
@@ -612,7 +613,9 @@ impl BearingModel {
             dy[7] = 0.0;
             dy[8] = 0.0;
         }
-        if film_work.iter().any(Option::is_some) {
+        // Only the film-work accumulator needs this, and no Jacobian reads
+        // it (`inert`): `block_rhs` leaves it out.
+        if films_power && film_work.iter().any(Option::is_some) {
             let loads = film_work.map(|w| w.map(|w| w.load));
             out.film_power = self.film_power(t, y, j, dy, loads);
             let r = l.ring();
@@ -806,7 +809,7 @@ impl BearingModel {
             dy_balls,
             l.ball_len(),
             sink.as_deref_mut(),
-            |j, dy_ball, sink| self.ball_rhs(t, j, y, &inner, &outer, dy_ball, sink),
+            |j, dy_ball, sink| self.ball_rhs(t, j, y, &inner, &outer, dy_ball, true, sink),
         );
         self.border_rhs_with(t, y, &inner, &balls, border, sink);
     }
@@ -848,7 +851,7 @@ impl BlockSplit for BearingModel {
         coupling: &mut [f64],
     ) {
         let (inner, outer) = self.ring_motion(t, y);
-        self.ball_rhs(t, block, y, &inner, &outer, dy_block, None)
+        self.ball_rhs(t, block, y, &inner, &outer, dy_block, false, None)
             .write(coupling);
     }
 

@@ -205,14 +205,9 @@ impl BearingModel {
                 .map_or(0.0, |f| f.central),
         };
         let film_work = approach.map(|a| FilmWork {
+            law: a.law,
             load: a.load,
-            speed_gradient: self.film_speed_gradient(
-                ring,
-                &hertz,
-                geometry.contact_angle,
-                u,
-                a.load,
-            ),
+            speed: u,
             direction: if u > 0.0 {
                 entrainment / u
             } else {

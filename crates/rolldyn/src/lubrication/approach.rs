@@ -54,6 +54,13 @@ pub const FLOODED_EXPONENT: f64 = -0.067;
 /// S ∝ q^c: c = −0.25 · 0.56 (a − 2/3).
 pub const STARVATION_EXPONENT: f64 = -0.25 * 0.56 * (FLOODED_EXPONENT - 2.0 / 3.0);
 
+/// Speed exponent of the flooded film (Hamrock–Dowson h_c ∝ U^0.67).
+pub const SPEED_EXPONENT: f64 = 0.67;
+
+/// Exponent of the flooded film in the starvation factor, S ∝ H^−0.14
+/// (S = ((L − 1)/(L* − 1))^0.25, L* − 1 ∝ (R_x H/β²)^0.56).
+pub const STARVATION_FILM_EXPONENT: f64 = 0.25 * 0.56;
+
 /// What a contact's film depends on besides its load.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FilmGeometry {
@@ -79,6 +86,8 @@ pub struct FilmLaw {
     starvation: f64,
     /// Floor load Q_f \[N\].
     floor: f64,
+    /// Load q* from which the film is flooded (0: always flooded).
+    knee: f64,
 }
 
 impl FilmLaw {
@@ -123,6 +132,13 @@ impl FilmLaw {
             flooded,
             starvation,
             floor: FLOOR_LOAD_PARAMETER * g.effective_modulus * g.rolling_radius.powi(2),
+            knee: if starvation.is_finite() && starvation > 0.0 {
+                starvation.powf(-1.0 / STARVATION_EXPONENT)
+            } else if starvation.is_finite() {
+                f64::INFINITY
+            } else {
+                0.0
+            },
         })
     }
 
@@ -133,54 +149,69 @@ impl FilmLaw {
 
     /// Load q* above which the film is flooded (0 when always flooded).
     fn flooded_from(&self) -> f64 {
-        if self.starvation.is_finite() && self.starvation > 0.0 {
-            self.starvation.powf(-1.0 / STARVATION_EXPONENT)
-        } else if self.starvation.is_finite() {
-            f64::INFINITY
-        } else {
-            0.0
-        }
+        self.knee
     }
 
     /// Central film h(q) \[m\] at load q \[N\].
     pub fn film(&self, load: f64) -> f64 {
+        self.film_and_exponent(load).0
+    }
+
+    /// h(q) and its local load exponent d ln h/d ln q (0 below the floor).
+    fn film_and_exponent(&self, load: f64) -> (f64, f64) {
         let q = load.max(self.floor);
-        let flooded = self.flooded * q.powf(FLOODED_EXPONENT);
-        if q >= self.flooded_from() {
-            flooded
+        let (h, exponent) = if q >= self.knee {
+            (self.flooded * q.powf(FLOODED_EXPONENT), FLOODED_EXPONENT)
         } else {
-            flooded * self.starvation * q.powf(STARVATION_EXPONENT)
-        }
+            let e = FLOODED_EXPONENT + STARVATION_EXPONENT;
+            (self.flooded * self.starvation * q.powf(e), e)
+        };
+        (h, if load > self.floor { exponent } else { 0.0 })
     }
 
     /// Compliance of the film dh/dq \[m/N\] (minus 1/K_oil of the central
     /// film): 0 below the floor.
     pub fn slope(&self, load: f64) -> f64 {
-        if load <= self.floor {
-            return 0.0;
-        }
-        let exponent = if load >= self.flooded_from() {
-            FLOODED_EXPONENT
+        let (h, exponent) = self.film_and_exponent(load);
+        if exponent == 0.0 {
+            0.0
         } else {
-            FLOODED_EXPONENT + STARVATION_EXPONENT
-        };
-        exponent * self.film(load) / load
+            exponent * h / load
+        }
     }
 
     /// ∫₀^q h dq' \[N·m\].
     pub fn integral(&self, load: f64) -> f64 {
+        let (flooded, starved) = self.integral_parts(load);
+        flooded + starved
+    }
+
+    /// ∂(∫₀^q h dq')/∂ ln u at fixed q \[N·m\]: h ∝ U^0.67 where flooded,
+    /// and S ∝ H^−0.14 (L* − 1 ∝ H^0.56) where starved, so the starved part
+    /// goes as u^{0.67 · 0.86}. The knee between the parts moves with u,
+    /// but h is continuous there, so it adds nothing.
+    pub fn integral_speed_derivative(&self, load: f64) -> f64 {
+        let (flooded, starved) = self.integral_parts(load);
+        SPEED_EXPONENT * (flooded + (1.0 - STARVATION_FILM_EXPONENT) * starved)
+    }
+
+    /// ∫₀^q h dq' split into its flooded and starved parts \[N·m\].
+    fn integral_parts(&self, load: f64) -> (f64, f64) {
         let q = load.max(0.0);
+        let knee = self.flooded_from();
+        let floor_flooded = self.floor >= knee;
+        let split = |part: f64, flooded: bool| if flooded { (part, 0.0) } else { (0.0, part) };
         if q <= self.floor {
-            return q * self.film(self.floor);
+            return split(q * self.film(self.floor), floor_flooded);
         }
-        let knee = self.flooded_from().clamp(self.floor, q);
+        let knee = knee.clamp(self.floor, q);
         // ∫ k x^e dx from x0 to x1.
         let power = |k: f64, e: f64, x0: f64, x1: f64| {
             k * (x1.powf(e + 1.0) - x0.powf(e + 1.0)) / (e + 1.0)
         };
-        let mut total = self.floor * self.film(self.floor);
+        let (mut flooded, mut starved) = split(self.floor * self.film(self.floor), floor_flooded);
         if knee > self.floor {
-            total += power(
+            starved += power(
                 self.flooded * self.starvation,
                 FLOODED_EXPONENT + STARVATION_EXPONENT,
                 self.floor,
@@ -188,9 +219,9 @@ impl FilmLaw {
             );
         }
         if q > knee {
-            total += power(self.flooded, FLOODED_EXPONENT, knee, q);
+            flooded += power(self.flooded, FLOODED_EXPONENT, knee, q);
         }
-        total
+        (flooded, starved)
     }
 }
 
@@ -224,8 +255,10 @@ impl FilmLaw {
         let mut slope = 1.0;
         for _ in 0..30 {
             let load = load_at(x);
-            let g = x - overlap - self.film(load);
-            slope = (1.0 - self.slope(load) * 1.5 * load / x).max(0.1);
+            let (h, exponent) = self.film_and_exponent(load);
+            let g = x - overlap - h;
+            // h' 3Q/(2x) = 1.5 (d ln h/d ln Q) h/x.
+            slope = (1.0 - 1.5 * exponent * h / x).max(0.1);
             let next = x - g / slope;
             let next = if next > 0.0 { next } else { 0.5 * x };
             let done = (next - x).abs() <= 1e-15 * x;
@@ -338,6 +371,37 @@ mod tests {
                 "{supply:?}: {} {expected}",
                 law.integral(q)
             );
+        }
+    }
+
+    #[test]
+    fn the_speed_derivative_of_the_integral_is_the_laws() {
+        for supply in [
+            Supply::Flooded,
+            Supply::InletDistance(1.5),
+            Supply::InletDistance(4.0),
+        ] {
+            let at = |u: f64| {
+                FilmLaw::new(
+                    &oil(),
+                    &supply,
+                    &FilmGeometry {
+                        entrainment_speed: u,
+                        ..GEOMETRY
+                    },
+                )
+                .unwrap()
+            };
+            let u = GEOMETRY.entrainment_speed;
+            let du = 1e-5 * u;
+            for q in [0.05, 0.3, 5.0, 60.0, 900.0] {
+                let fd = (at(u + du).integral(q) - at(u - du).integral(q)) / (2.0 * du / u);
+                let exact = at(u).integral_speed_derivative(q);
+                assert!(
+                    (exact / fd - 1.0).abs() < 1e-7,
+                    "{supply:?} {q}: {exact} {fd}"
+                );
+            }
         }
     }
 
