@@ -7,10 +7,17 @@
 //! factor, the oil-film stiffness K_oil (eq 37), the Hertz stiffness
 //! dQ/dδ and the two in series.
 //!
+//! Then, with the film in the normal approach (MODEL §4; seed 003 eqs
+//! 39–46): the equilibrium solved with each contact compressed by δ + h(Q),
+//! the radial stiffness K_zz (the film's compliance in series with Hertz,
+//! and its take-up of clearance), and the radial natural frequency
+//! f_z = √(K_zz/M)/2π (seed 003 eq 46, which prints 0.5π for 1/2π) against
+//! the dry bearing's. M = 0.088 kg is an assumed inner ring (45 × 54 × 16 mm
+//! steel; seed 003 gives no mass).
+//!
 //! `cargo run --release --example seed003 [-- OUT_DIR]` (default
-//! `examples/seed003/out`). The dynamic part of seed 003 (vibration against
-//! L) needs the film in the normal approach, which this release does not
-//! have (docs/lubrication.md); see examples/seed003/README.md.
+//! `examples/seed003/out`). Seed 003's vibration amplitudes against L from
+//! dynamic runs are not reproduced here; see examples/seed003/README.md.
 
 use rolldyn::RingKind;
 use rolldyn::lubrication;
@@ -22,8 +29,12 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 const RADIAL_LOADS: [f64; 3] = [10.0, 20.0, 30.0];
+/// Assumed inner-ring mass \[kg\]: 45 × 54 × 16 mm of steel.
+const RING_MASS: f64 = 0.088;
 /// Inlet distance ratios of seed 003 §3, and ∞ (fully flooded).
 const RATIOS: [f64; 6] = [1.1, 1.3, 1.5, 1.7, 1.9, f64::INFINITY];
+/// The film-in-the-approach table adds ratios up to and past L* (8–12).
+const APPROACH_RATIOS: [f64; 10] = [1.1, 1.3, 1.5, 1.7, 1.9, 3.0, 5.0, 8.0, 12.0, f64::INFINITY];
 
 fn main() -> Result<(), String> {
     let out = PathBuf::from(std::env::args().nth(1).unwrap_or_else(|| {
@@ -37,6 +48,13 @@ fn main() -> Result<(), String> {
     );
     let mut csv = String::from(
         "radial_load_n,inlet_distance_ratio,load_inner_n,critical_inlet_distance_ratio,flooded_central_film_m,central_film_m,starvation_factor,film_stiffness_n_per_m,contact_stiffness_n_per_m,series_stiffness_n_per_m\n",
+    );
+    let mut approach = String::from(
+        "\nFilm in the normal approach (MODEL §4): radial stiffness K_zz and f_z = √(K_zz/M)/2π, M = 0.088 kg (assumed)\n\
+         F_z [N]      L   loaded balls  max Q_i [N]  K_zz [N/m]  f_z [Hz]  dry K_zz [N/m]  dry f_z [Hz]\n",
+    );
+    let mut approach_csv = String::from(
+        "radial_load_n,inlet_distance_ratio,loaded_balls,max_load_inner_n,radial_stiffness_n_per_m,radial_frequency_hz,dry_radial_stiffness_n_per_m,dry_radial_frequency_hz\n",
     );
     for fz in RADIAL_LOADS {
         let overrides = [Override::flag(
@@ -53,15 +71,13 @@ fn main() -> Result<(), String> {
         );
         let solver = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
             .map_err(|e| e.to_string())?;
+        let conditions = Conditions {
+            loads: case.loads,
+            inner_speed: case.speed.as_ref().map_or(0.0, |s| s.final_speed()),
+            control: case.raceway_control,
+        };
         let eq = solver
-            .solve(
-                &Conditions {
-                    loads: case.loads,
-                    inner_speed: case.speed.as_ref().map_or(0.0, |s| s.final_speed()),
-                    control: case.raceway_control,
-                },
-                &SolverOptions::default(),
-            )
+            .solve(&conditions, &SolverOptions::default())
             .map_err(|e| e.to_string())?;
         let lub = case
             .lubricant
@@ -118,8 +134,66 @@ fn main() -> Result<(), String> {
                 film.stiffness
             );
         }
+        // The film in the approach, tilts held (seed 003's ring moves in
+        // its radial plane only; under a pure radial load at 15 000 rpm the
+        // free-tilt solution is not found with the film).
+        let options = SolverOptions {
+            prescribed_displacement: [None, None, None, Some(0.0), Some(0.0)],
+            ..SolverOptions::default()
+        };
+        let frequency = |k: f64| (k / RING_MASS).sqrt() / std::f64::consts::TAU;
+        let dry = solver
+            .solve(&conditions, &options)
+            .map_err(|e| e.to_string())?;
+        let dry_k = dry.stiffness[2][2];
+        for l in APPROACH_RATIOS {
+            let supply = if l.is_finite() {
+                lubrication::Supply::InletDistance(l)
+            } else {
+                lubrication::Supply::Flooded
+            };
+            let inputs = FilmInputs {
+                lubricant: lubrication::Lubricant {
+                    viscosity: lub.viscosity,
+                    pressure_viscosity: lub.pressure_viscosity,
+                    pressure_model: lub.pressure_viscosity_model,
+                },
+                supply: [supply, supply],
+                roughness: [0.0; 2],
+                effective_modulus: effective_modulus(ball, rings),
+            };
+            let label = if l.is_finite() {
+                format!("{l:.1}")
+            } else {
+                "∞".into()
+            };
+            match solver.solve_with_films(&conditions, &options, &inputs) {
+                Ok(wet) => {
+                    let k = wet.stiffness[2][2];
+                    let loaded = wet.balls.iter().filter(|b| b.inner.load > 0.0).count();
+                    let max_q = wet.balls.iter().map(|b| b.inner.load).fold(0.0, f64::max);
+                    let _ = writeln!(
+                        approach,
+                        "{fz:>7.0} {label:>6} {loaded:>13} {max_q:>12.3} {k:>11.4e} {:>9.1} {dry_k:>15.4e} {:>13.1}",
+                        frequency(k),
+                        frequency(dry_k)
+                    );
+                    let _ = writeln!(
+                        approach_csv,
+                        "{fz},{l},{loaded},{max_q},{k},{},{dry_k},{}",
+                        frequency(k),
+                        frequency(dry_k)
+                    );
+                }
+                Err(e) => {
+                    let _ = writeln!(approach, "{fz:>7.0} {label:>6}  no equilibrium: {e}");
+                }
+            }
+        }
     }
+    table.push_str(&approach);
     print!("{table}");
     std::fs::write(out.join("table.txt"), &table).map_err(|e| e.to_string())?;
-    std::fs::write(out.join("films.csv"), &csv).map_err(|e| e.to_string())
+    std::fs::write(out.join("films.csv"), &csv).map_err(|e| e.to_string())?;
+    std::fs::write(out.join("approach.csv"), &approach_csv).map_err(|e| e.to_string())
 }

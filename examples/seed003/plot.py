@@ -1,6 +1,7 @@
-"""Seed 003 (C7, quasi-static part): central film of the most loaded inner
-contact against the inlet distance ratio L, one curve per radial load,
-with the critical ratio L* above which the contact is flooded.
+"""Seed 003 (C7): central film of the most loaded inner contact against the
+inlet distance ratio L, one curve per radial load, with the critical ratio
+L* above which the contact is flooded; and, with the film in the normal
+approach, the radial natural frequency against L (dashed: dry).
 
     cargo run --release --example seed003      # writes examples/seed003/out
     python3 examples/seed003/plot.py [OUT_DIR]
@@ -18,7 +19,7 @@ here = pathlib.Path(__file__).parent
 out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else here / "out"
 rows = list(csv.DictReader(open(out / "films.csv")))
 rows = [r for r in rows if r["inlet_distance_ratio"] not in ("", "inf")]
-fig, ax = plt.subplots(figsize=(7, 4))
+fig, (ax, axf) = plt.subplots(1, 2, figsize=(12, 4))
 for k, fz in enumerate(sorted({r["radial_load_n"] for r in rows}, key=float)):
     group = [r for r in rows if r["radial_load_n"] == fz]
     ax.plot([float(r["inlet_distance_ratio"]) for r in group], [1e6 * float(r["central_film_m"]) for r in group], "o-", color=f"C{k}", label=f"F_z = {fz} N")
@@ -27,6 +28,18 @@ ax.set_xlabel("inlet distance ratio L")
 ax.set_ylabel("central film h_c [µm]")
 ax.set_title("Ceramic 45x75 at 15 000 rpm: starved film (seed 003); dotted: L*")
 ax.legend(fontsize=8)
+approach = list(csv.DictReader(open(out / "approach.csv")))
+approach = [r for r in approach if r["inlet_distance_ratio"] != "inf"]
+for k, fz in enumerate(sorted({r["radial_load_n"] for r in approach}, key=float)):
+    group = [r for r in approach if r["radial_load_n"] == fz]
+    ls = [float(r["inlet_distance_ratio"]) for r in group]
+    axf.plot(ls, [float(r["radial_frequency_hz"]) for r in group], "o-", color=f"C{k}", label=f"F_z = {fz} N")
+    axf.axhline(float(group[0]["dry_radial_frequency_hz"]), color=f"C{k}", ls="--", lw=0.8)
+axf.set_xscale("log")
+axf.set_xlabel("inlet distance ratio L")
+axf.set_ylabel("radial natural frequency f_z [Hz]")
+axf.set_title("film in the approach (dashed: dry)")
+axf.legend(fontsize=8)
 fig.tight_layout()
 fig.savefig(out / "seed003.png", dpi=150)
 print(f"wrote {out / 'seed003.png'}")

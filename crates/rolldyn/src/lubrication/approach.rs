@@ -147,6 +147,15 @@ impl FilmLaw {
         self.floor
     }
 
+    /// The same law with every film times `factor` (a continuation path
+    /// from the dry contact, factor 0, to this law, factor 1).
+    pub fn scaled(&self, factor: f64) -> Self {
+        Self {
+            flooded: factor * self.flooded,
+            ..*self
+        }
+    }
+
     /// Load q* above which the film is flooded (0 when always flooded).
     fn flooded_from(&self) -> f64 {
         self.knee
@@ -336,6 +345,11 @@ mod tests {
             }
             // Held below the floor.
             assert_eq!(law.film(0.0), law.film(law.floor()));
+            let half = law.scaled(0.5);
+            assert!((half.film(7.0) - 0.5 * law.film(7.0)).abs() < 1e-15 * law.film(7.0));
+            assert!(
+                (half.integral(7.0) - 0.5 * law.integral(7.0)).abs() < 1e-15 * law.integral(7.0)
+            );
             assert_eq!(law.film(0.5 * law.floor()), law.film(law.floor()));
         }
     }

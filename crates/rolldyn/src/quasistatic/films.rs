@@ -39,8 +39,13 @@ impl QuasiStaticSolver {
         inputs: &FilmInputs,
     ) -> Result<Equilibrium, QuasiStaticError> {
         let mut eq = self.solve(conditions, options)?;
-        for _ in 0..FILM_ITERATIONS {
+        for iteration in 0..FILM_ITERATIONS {
             let laws = self.film_laws(&eq, inputs)?;
+            if iteration == 0 {
+                // A thick film on light loads is a large preload: reach it
+                // from the dry solution with the films scaled up.
+                eq = self.continue_in_film(&eq, &laws, conditions, options)?;
+            }
             let next = self.with_films(laws).solve_from(&eq, conditions, options)?;
             let largest = next
                 .balls
@@ -67,6 +72,38 @@ impl QuasiStaticSolver {
                 "the film in the approach did not settle in {FILM_ITERATIONS} re-solves"
             ),
         })
+    }
+
+    /// From the solution `dry` to the one with the films `laws` times a
+    /// factor growing from 0 to 1, each solve started from the last; a
+    /// step that fails is halved (down to 1/64).
+    fn continue_in_film(
+        &self,
+        dry: &Equilibrium,
+        laws: &[[Option<FilmLaw>; 2]],
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Equilibrium, QuasiStaticError> {
+        let scaled = |factor: f64| {
+            self.with_films(
+                laws.iter()
+                    .map(|pair| pair.map(|law| law.map(|l| l.scaled(factor))))
+                    .collect(),
+            )
+        };
+        let (mut eq, mut factor, mut step): (Equilibrium, f64, f64) = (dry.clone(), 0.0, 0.25);
+        while factor < 1.0 {
+            let next = (factor + step).min(1.0);
+            match scaled(next).solve_from(&eq, conditions, options) {
+                Ok(solved) => {
+                    eq = solved;
+                    factor = next;
+                }
+                Err(e) if step <= 1.0 / 64.0 => return Err(e),
+                Err(_) => step *= 0.5,
+            }
+        }
+        Ok(eq)
     }
 
     /// The film laws of the contacts of `eq`.
