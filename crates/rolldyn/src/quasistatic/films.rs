@@ -43,8 +43,10 @@ impl QuasiStaticSolver {
             let laws = self.film_laws(&eq, inputs)?;
             if iteration == 0 {
                 // A thick film on light loads is a large preload: reach it
-                // from the dry solution with the films scaled up.
+                // from the dry solution with the films scaled up; then the
+                // laws of that solution.
                 eq = self.continue_in_film(&eq, &laws, conditions, options)?;
+                continue;
             }
             let next = self.with_films(laws).solve_from(&eq, conditions, options)?;
             let largest = next
