@@ -10,7 +10,8 @@
 //!    be resolved (2., reported, not a cost of the implementation).
 //! 2. `rolldyn run` of the default case, 0.05 s, smooth and wavy: wall time
 //!    and steps from summary.json.
-//!    Also the RHS with the EHL films starved (issue 12: ≤ 5 %).
+//!    Also the RHS with the EHL films starved (issue 12: ≤ 5 %), and with
+//!    the film in the normal approach.
 //! 3. Spectra of 1 s of 50 kHz data (50 000 samples): amplitude, Welch
 //!    (4096-sample segments, ½ overlap), envelope; and `rolldyn spectrum`
 //!    end to end on a written run directory.
@@ -126,6 +127,18 @@ fn main() {
         "RHS, default case starved (L = 1.3): {:.1} µs ({:+.1} % against flooded)",
         starved * 1e6,
         100.0 * (starved / smooth - 1.0)
+    );
+    // Issue 12 item 3: the film in the normal approach (fixed point per
+    // contact and the films' power).
+    let approach = rhs_time(&case_text(false).replacen(
+        "\n[model]\n",
+        "\n[model]\nfilm_in_approach = true\n",
+        1,
+    ));
+    println!(
+        "RHS, default case with the film in the approach: {:.1} µs ({:+.1} % against without)",
+        approach * 1e6,
+        100.0 * (approach / smooth - 1.0)
     );
 
     let dir = std::env::temp_dir().join(format!("rolldyn-bench-surface-{}", std::process::id()));

@@ -76,9 +76,10 @@ impl QuasiStaticSolver {
         })
     }
 
-    /// From the solution `dry` to the one with the films `laws` times a
-    /// factor growing from 0 to 1, each solve started from the last; a
-    /// step that fails is halved (down to 1/64).
+    /// From the solution `dry` to the one with the films `laws`: in one
+    /// solve, or where that fails with the films times a factor growing
+    /// from 0 to 1, each solve started from the last, a failed step halved
+    /// (down to 1/64).
     fn continue_in_film(
         &self,
         dry: &Equilibrium,
@@ -93,7 +94,7 @@ impl QuasiStaticSolver {
                     .collect(),
             )
         };
-        let (mut eq, mut factor, mut step): (Equilibrium, f64, f64) = (dry.clone(), 0.0, 0.25);
+        let (mut eq, mut factor, mut step): (Equilibrium, f64, f64) = (dry.clone(), 0.0, 1.0);
         while factor < 1.0 {
             let next = (factor + step).min(1.0);
             match scaled(next).solve_from(&eq, conditions, options) {
