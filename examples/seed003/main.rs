@@ -88,13 +88,14 @@ fn main() -> Result<(), String> {
             .ok_or("no balls")?;
         let contact = eq.balls[j].inner;
         let hertz_stiffness = 1.5 * contact.load / contact.penetration;
-        for l in RATIOS {
+        // Both rings supplied at inlet distance ratio L (∞: flooded).
+        let inputs_at = |l: f64| {
             let supply = if l.is_finite() {
                 lubrication::Supply::InletDistance(l)
             } else {
                 lubrication::Supply::Flooded
             };
-            let inputs = FilmInputs {
+            FilmInputs {
                 lubricant: lubrication::Lubricant {
                     viscosity: lub.viscosity,
                     pressure_viscosity: lub.pressure_viscosity,
@@ -103,17 +104,16 @@ fn main() -> Result<(), String> {
                 supply: [supply, supply],
                 roughness: [case.surface.composite_roughness(RingKind::Inner), 0.0],
                 effective_modulus: effective_modulus(ball, rings),
-            };
+            }
+        };
+        for l in RATIOS {
+            let inputs = inputs_at(l);
             let film = equilibrium_films(g, &eq, &inputs)[j].films[0];
             let series = lubrication::series_stiffness(hertz_stiffness, film.stiffness);
             let _ = writeln!(
                 table,
                 "{fz:>7.0} {:>6} {:>9.3} {:>7.3} {:>17.4} {:>9.4} {:>7.4} {:>12.4e} {:>12.4e} {:>13.4e}",
-                if l.is_finite() {
-                    format!("{l:.1}")
-                } else {
-                    "∞".into()
-                },
+                ratio_label(l),
                 contact.load,
                 film.critical_ratio,
                 film.flooded_central * 1e6,
@@ -147,27 +147,8 @@ fn main() -> Result<(), String> {
             .map_err(|e| e.to_string())?;
         let dry_k = dry.stiffness[2][2];
         for l in APPROACH_RATIOS {
-            let supply = if l.is_finite() {
-                lubrication::Supply::InletDistance(l)
-            } else {
-                lubrication::Supply::Flooded
-            };
-            let inputs = FilmInputs {
-                lubricant: lubrication::Lubricant {
-                    viscosity: lub.viscosity,
-                    pressure_viscosity: lub.pressure_viscosity,
-                    pressure_model: lub.pressure_viscosity_model,
-                },
-                supply: [supply, supply],
-                roughness: [0.0; 2],
-                effective_modulus: effective_modulus(ball, rings),
-            };
-            let label = if l.is_finite() {
-                format!("{l:.1}")
-            } else {
-                "∞".into()
-            };
-            match solver.solve_with_films(&conditions, &options, &inputs) {
+            let label = ratio_label(l);
+            match solver.solve_with_films(&conditions, &options, &inputs_at(l)) {
                 Ok(wet) => {
                     let k = wet.stiffness[2][2];
                     let loaded = wet.balls.iter().filter(|b| b.inner.load > 0.0).count();
@@ -196,4 +177,13 @@ fn main() -> Result<(), String> {
     std::fs::write(out.join("table.txt"), &table).map_err(|e| e.to_string())?;
     std::fs::write(out.join("films.csv"), &csv).map_err(|e| e.to_string())?;
     std::fs::write(out.join("approach.csv"), &approach_csv).map_err(|e| e.to_string())
+}
+
+/// L as the tables print it (∞: flooded).
+fn ratio_label(l: f64) -> String {
+    if l.is_finite() {
+        format!("{l:.1}")
+    } else {
+        "∞".into()
+    }
 }

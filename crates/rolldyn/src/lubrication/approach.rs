@@ -289,16 +289,7 @@ impl FilmLaw {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lubrication::PressureViscosity;
-    use crate::lubrication::film::{FilmConditions, contact_film};
-
-    fn oil() -> Lubricant {
-        Lubricant {
-            viscosity: 0.0467,
-            pressure_viscosity: 2.2e-8,
-            pressure_model: PressureViscosity::Barus,
-        }
-    }
+    use crate::lubrication::film::{FilmConditions, contact_film, test_oil as oil};
 
     const GEOMETRY: FilmGeometry = FilmGeometry {
         entrainment_speed: 10.0,
@@ -326,14 +317,17 @@ mod tests {
         .central
     }
 
+    /// Flooded, starved at seed 003's extremes, and flooded by a far inlet.
+    const SUPPLIES: [Supply; 4] = [
+        Supply::Flooded,
+        Supply::InletDistance(1.1),
+        Supply::InletDistance(1.9),
+        Supply::InletDistance(20.0),
+    ];
+
     #[test]
     fn the_law_is_the_starved_hamrock_dowson_film_above_the_floor() {
-        for supply in [
-            Supply::Flooded,
-            Supply::InletDistance(1.1),
-            Supply::InletDistance(1.9),
-            Supply::InletDistance(20.0),
-        ] {
+        for supply in SUPPLIES {
             let law = FilmLaw::new(&oil(), &supply, &GEOMETRY).unwrap();
             assert!((law.floor() - 1e-7 * 2.29e11 * 2.8e-3f64.powi(2)).abs() < 1e-15);
             for q in [0.2, 1.0, 5.0, 30.0, 300.0, 3000.0] {
@@ -356,7 +350,7 @@ mod tests {
 
     #[test]
     fn slope_and_integral_are_the_derivative_and_antiderivative_of_the_film() {
-        for supply in [Supply::Flooded, Supply::InletDistance(1.5)] {
+        for supply in SUPPLIES {
             let law = FilmLaw::new(&oil(), &supply, &GEOMETRY).unwrap();
             let knee = law.flooded_from();
             for q in [0.3, 2.0, 40.0, 900.0] {
@@ -390,11 +384,7 @@ mod tests {
 
     #[test]
     fn the_speed_derivative_of_the_integral_is_the_laws() {
-        for supply in [
-            Supply::Flooded,
-            Supply::InletDistance(1.5),
-            Supply::InletDistance(4.0),
-        ] {
+        for supply in SUPPLIES {
             let at = |u: f64| {
                 FilmLaw::new(
                     &oil(),

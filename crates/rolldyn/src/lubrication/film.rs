@@ -95,17 +95,22 @@ pub fn contact_film(
     }
 }
 
+/// A mineral oil for the module tests (η₀ 46.7 mPa·s, α_p 2.2e-8 1/Pa).
+#[cfg(test)]
+pub(crate) fn test_oil() -> Lubricant {
+    Lubricant {
+        viscosity: 0.0467,
+        pressure_viscosity: 2.2e-8,
+        pressure_model: super::PressureViscosity::Barus,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lubrication::PressureViscosity;
 
     fn oil() -> Lubricant {
-        Lubricant {
-            viscosity: 0.0467,
-            pressure_viscosity: 2.2e-8,
-            pressure_model: PressureViscosity::Barus,
-        }
+        test_oil()
     }
 
     fn conditions() -> FilmConditions {

@@ -122,20 +122,10 @@ fn c7_films_are_hamrock_dowson_at_their_load_and_carry_it_in_series_with_hertz()
     assert!(worst_stiffness < 1e-3, "{worst_stiffness}");
 }
 
-/// (P_drive + P_film − P_dissipated − dE/dt, P_drive + P_dissipated) \[W\].
+/// `b2_power_balance`'s residual with the K_c(α) term added \[W\].
 fn power_residual(model: &BearingModel, t: f64, y: &[f64]) -> (f64, f64) {
-    let mut f = vec![0.0; y.len()];
-    model.rhs_with_power(t, y, &mut f);
-    let w = model.layout().work();
-    let eps = 1e-9;
-    let along = |s: f64| -> Vec<f64> { y.iter().zip(&f).map(|(y, f)| y + s * f).collect() };
-    let rate = (model.energy(t + eps, &along(eps)).total()
-        - model.energy(t - eps, &along(-eps)).total())
-        / (2.0 * eps);
-    (
-        f[w] + f[w + 2] - f[w + 1] - rate + stiffness_gradient_power(model, t, y, &f),
-        f[w].abs() + f[w + 1].abs(),
-    )
+    let (residual, scale, f) = super::b2_power_balance::power_residual(model, t, y);
+    (residual + stiffness_gradient_power(model, t, y, &f), scale)
 }
 
 /// Σ (2/5) dK_c/dα α̇ δ_el^{5/2} over the contacts \[W\]: the part of
