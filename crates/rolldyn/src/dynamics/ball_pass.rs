@@ -19,7 +19,7 @@
 //! pass with traction at the contact centre (seed 000's 6304: ~1 µs per
 //! ball) stays serial. The slots are allocated once, with the model.
 
-use super::model::BallCoupling;
+use super::coupling::BallCoupling;
 use crate::power::Dissipation;
 use rayon::prelude::*;
 use std::sync::{Mutex, PoisonError};

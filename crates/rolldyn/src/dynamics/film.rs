@@ -27,7 +27,8 @@
 //! (tests/validation/c7_film_in_approach.rs): P_drive + P_film −
 //! P_dissipated = dE/dt at every state.
 
-use super::model::{BallMotion, BearingModel, RingMotion};
+use super::coupling::{BallCoupling, add_to};
+use super::model::{BallMotion, BearingModel, RingMotion, tilt_axis_y};
 use crate::contact::{ContactTable, Curvature, HertzCoefficients, TorusContact};
 use crate::geometry::RingKind;
 use crate::lubrication::approach::{FilmGeometry, FilmLaw};
@@ -208,7 +209,7 @@ impl BearingModel {
     /// without the rings' accelerations: ∂/∂t ∫₀^Q h dq with the ball's
     /// states moved by `dy_ball`, the rings' positions by their velocities,
     /// and time (module doc) \[W\].
-    pub(super) fn film_power(
+    fn film_power(
         &self,
         t: f64,
         y: &[f64],
@@ -267,6 +268,38 @@ impl BearingModel {
         let u = Self::entrainment(ring, ball, &geometry.contact_point, &geometry.normal).norm();
         self.film_approach(ring, &hertz, &geometry, u)
             .map_or(0.0, |a| a.energy())
+    }
+
+    /// Adds ball j's share of the films' power to `out`: the power along
+    /// the motion without the rings' accelerations, and the gradients the
+    /// border multiplies by them (module doc). `dy_ball`: the ball's
+    /// derivatives.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn add_film_work(
+        &self,
+        t: f64,
+        y: &[f64],
+        j: usize,
+        dy_ball: &[f64],
+        film_work: &[Option<FilmWork>; 2],
+        inner: &RingMotion,
+        out: &mut BallCoupling,
+    ) {
+        if film_work.iter().all(Option::is_none) {
+            return;
+        }
+        let loads = film_work.map(|w| w.map(|w| w.load));
+        out.film_power = self.film_power(t, y, j, dy_ball, loads);
+        if let Some(w) = &film_work[0] {
+            let tilt_y = tilt_axis_y(y[self.layout.ring() + 4]);
+            add_to(
+                &mut out.ring_velocity_gradient,
+                &w.inner_ring_gradient(&inner.centre, &tilt_y),
+            );
+        }
+        if let Some(w) = &film_work[1] {
+            add_to(&mut out.outer_velocity_gradient, &w.outer_ring_gradient());
+        }
     }
 
     /// Work the films have done on the contacts, accumulated in state `y`

@@ -15,6 +15,7 @@
 //! | `model` | parameters, state → kinematics, equations of motion |
 //! | `layout` | offsets in the state vector |
 //! | `ball_pass` | the balls' contacts evaluated serially or across threads, summed in ball order |
+//! | `coupling` | what a ball's contacts pass to the rings, cage and energy accumulators |
 //! | `race_contact` | ball–raceway normal force, traction, hysteresis |
 //! | `film` | the contacts' steady films, and the film in the normal approach |
 //! | `pocket` | ball–pocket contact |
@@ -28,6 +29,7 @@
 
 mod ball_pass;
 pub mod checkpoint;
+mod coupling;
 pub mod drag;
 pub mod energy;
 pub mod film;

@@ -30,6 +30,7 @@
 //! [`super::outputs`]. Gravity (optional) acts along −z.
 
 use super::ball_pass::BallPass;
+use super::coupling::BallCoupling;
 use super::drag::DragParameters;
 use super::layout::StateLayout;
 use super::race_contact::Want;
@@ -435,80 +436,6 @@ impl BearingModel {
     }
 }
 
-/// What one ball's contacts do to the border: forces and moments on the
-/// rings and the cage, and dissipated power (the coupling vector of the
-/// block split, MODEL §8).
-#[derive(Debug, Clone, Copy, Default)]
-pub(super) struct BallCoupling {
-    pub(super) ring_force: Vector3<f64>,
-    pub(super) ring_moment: Vector3<f64>,
-    pub(super) outer_force: Vector3<f64>,
-    pub(super) cage_force: Vector3<f64>,
-    pub(super) cage_torque: f64,
-    pub(super) dissipation: f64,
-    /// Power the films in the approach do on the contacts, the rings'
-    /// accelerations aside \[W\] (dynamics::film).
-    pub(super) film_power: f64,
-    /// ∂(Σ∫h)/∂(inner ring velocity x, y, z, tilt rates) \[N·s, N·m·s\].
-    pub(super) ring_velocity_gradient: [f64; 5],
-    /// ∂(Σ∫h)/∂(outer ring velocity y, z) \[N·s\].
-    pub(super) outer_velocity_gradient: [f64; 2],
-}
-
-impl BallCoupling {
-    pub(super) const LEN: usize = 22;
-
-    pub(super) fn add(&mut self, other: &Self) {
-        self.ring_force += other.ring_force;
-        self.ring_moment += other.ring_moment;
-        self.outer_force += other.outer_force;
-        self.cage_force += other.cage_force;
-        self.cage_torque += other.cage_torque;
-        self.dissipation += other.dissipation;
-        self.film_power += other.film_power;
-        for (a, b) in self
-            .ring_velocity_gradient
-            .iter_mut()
-            .zip(other.ring_velocity_gradient)
-        {
-            *a += b;
-        }
-        for (a, b) in self
-            .outer_velocity_gradient
-            .iter_mut()
-            .zip(other.outer_velocity_gradient)
-        {
-            *a += b;
-        }
-    }
-
-    pub(super) fn write(&self, out: &mut [f64]) {
-        out[0..3].copy_from_slice(self.ring_force.as_slice());
-        out[3..6].copy_from_slice(self.ring_moment.as_slice());
-        out[6..9].copy_from_slice(self.outer_force.as_slice());
-        out[9..12].copy_from_slice(self.cage_force.as_slice());
-        out[12] = self.cage_torque;
-        out[13] = self.dissipation;
-        out[14] = self.film_power;
-        out[15..20].copy_from_slice(&self.ring_velocity_gradient);
-        out[20..22].copy_from_slice(&self.outer_velocity_gradient);
-    }
-
-    fn read(c: &[f64]) -> Self {
-        Self {
-            ring_force: Vector3::from_column_slice(&c[0..3]),
-            ring_moment: Vector3::from_column_slice(&c[3..6]),
-            outer_force: Vector3::from_column_slice(&c[6..9]),
-            cage_force: Vector3::from_column_slice(&c[9..12]),
-            cage_torque: c[12],
-            dissipation: c[13],
-            film_power: c[14],
-            ring_velocity_gradient: [c[15], c[16], c[17], c[18], c[19]],
-            outer_velocity_gradient: [c[20], c[21]],
-        }
-    }
-}
-
 impl BearingModel {
     /// Derivatives of ball j's states (into `dy`, its 9 entries, 10 with
     /// the spin angle ψ) and what its contacts do to the rings and cage.
@@ -615,23 +542,8 @@ impl BearingModel {
         }
         // Only the film-work accumulator needs this, and no Jacobian reads
         // it (`inert`): `block_rhs` leaves it out.
-        if films_power && film_work.iter().any(Option::is_some) {
-            let loads = film_work.map(|w| w.map(|w| w.load));
-            out.film_power = self.film_power(t, y, j, dy, loads);
-            let r = l.ring();
-            let tilt_y = tilt_axis_y(y[r + 4]);
-            if let Some(w) = &film_work[0] {
-                let g = w.inner_ring_gradient(&inner.centre, &tilt_y);
-                for (sum, g) in out.ring_velocity_gradient.iter_mut().zip(g) {
-                    *sum += g;
-                }
-            }
-            if let Some(w) = &film_work[1] {
-                let g = w.outer_ring_gradient();
-                for (sum, g) in out.outer_velocity_gradient.iter_mut().zip(g) {
-                    *sum += g;
-                }
-            }
+        if films_power {
+            self.add_film_work(t, y, j, dy, &film_work, inner, &mut out);
         }
         out
     }
@@ -783,17 +695,10 @@ impl BearingModel {
         dy[dw + 1] = dissipation;
         if l.film_work {
             // The rings' accelerations complete the films' power.
+            let dot = |g: &[f64], a: &[f64]| g.iter().zip(a).map(|(g, a)| g * a).sum::<f64>();
             dy[dw + 2] = film_power
-                + ring_velocity_gradient
-                    .iter()
-                    .zip(&dy[dr + 5..dr + 10])
-                    .map(|(g, a)| g * a)
-                    .sum::<f64>()
-                + outer_velocity_gradient
-                    .iter()
-                    .zip(&dy[dob + 2..dob + 4])
-                    .map(|(g, a)| g * a)
-                    .sum::<f64>();
+                + dot(&ring_velocity_gradient, &dy[dr + 5..dr + 10])
+                + dot(&outer_velocity_gradient, &dy[dob + 2..dob + 4]);
         }
     }
 }
