@@ -32,8 +32,11 @@
 //! (Part III, J. Lubr. Technol. 99 (1977) 264–276), so the floor is below
 //! the loads the formula was made for. It also keeps the fixed point
 //! unique: a starved film grows with load (exponent a + c = +0.036), and
-//! the elastic approach must outgrow it, 1.5 (a + c) h/δ_el < 1, which
-//! holds from the floor on for the bearings in `examples/`.
+//! the elastic approach must outgrow it, 1.5 (a + c) h/δ_el < 1, i.e.
+//! δ_el > 0.054 h. At the floor that is δ_el ≈ 0.1 µm against 0.054 h ≈
+//! 0.03 µm (seed 003's bearing, h ≈ 0.5 µm) and 0.07 µm (7008C at
+//! 10 000 rpm, h ≈ 1.3 µm). Newton's slope is bounded below (0.1) as a
+//! guard.
 //!
 //! Supplies: flooded and an inlet distance ratio L (seed 003's input). The
 //! oil-flow supply makes L a function of b and h_c that is not a power of
