@@ -70,3 +70,28 @@ fn every_plot_script_is_valid_python() {
         assert!(o.status.success(), "{name}: {}", stderr(&o));
     }
 }
+
+/// Every preset is a complete case: `rolldyn new --preset P` runs as it
+/// is (cage, ring mass or width, traction given or assumed in the preset).
+#[test]
+fn every_preset_runs() {
+    for preset in rolldyn_case::presets::PRESETS {
+        let o = rolldyn(&["new", "--preset", preset.name], None);
+        assert!(o.status.success(), "{}: {}", preset.name, stderr(&o));
+        let case = String::from_utf8(o.stdout).unwrap();
+        let out = temp_dir(&format!("preset-{}", preset.name));
+        let o = rolldyn(
+            &[
+                "run",
+                "-",
+                "--duration",
+                "1 ms",
+                "-o",
+                out.to_str().unwrap(),
+            ],
+            Some(&case),
+        );
+        assert!(o.status.success(), "{}: {}", preset.name, stderr(&o));
+        std::fs::remove_dir_all(&out).ok();
+    }
+}
