@@ -471,10 +471,14 @@ fn dynamics_parameters_defaults_and_missing_values() {
         p.traction,
         rolldyn::traction::TractionModel::Ehl(_)
     ));
-    // A catalogue preset without cage data: the missing key is named.
+    // A bearing given by its geometry, without cage data: the missing key
+    // is named.
     let case = load_case(
         "case.toml",
-        "[bearing]\npreset = \"6205\"\n[operating]\nspeed = \"1797 rpm\"\n",
+        "[bearing]\nball_diameter = \"7.94 mm\"\nball_count = 9\npitch_diameter = \"39 mm\"\n\
+         diametral_clearance = \"0.012 mm\"\ninner_groove_curvature = 0.52\n\
+         outer_groove_curvature = 0.52\nbore = \"25 mm\"\nwidth = \"15 mm\"\n\
+         [operating]\nspeed = \"1797 rpm\"\n",
         &[],
     )
     .unwrap();

@@ -482,7 +482,13 @@ fn run_reports_missing_dynamic_data() {
     let d = dir.to_string_lossy().into_owned();
     let o = rolldyn(
         &["run", "-", "--duration", "1 ms", "-o", &d],
-        Some("[bearing]\npreset = \"6205\"\n[operating]\nspeed = \"1797 rpm\"\n"),
+        // A bearing given by its geometry, without a cage.
+        Some(
+            "[bearing]\nball_diameter = \"7.94 mm\"\nball_count = 9\npitch_diameter = \"39 mm\"\n\
+             diametral_clearance = \"0.012 mm\"\ninner_groove_curvature = 0.52\n\
+             outer_groove_curvature = 0.52\nbore = \"25 mm\"\noutside_diameter = \"52 mm\"\n\
+             width = \"15 mm\"\n[operating]\nspeed = \"1797 rpm\"\nforce_z = \"100 N\"\n",
+        ),
     );
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("cage.mass"), "{}", stderr(&o));
