@@ -24,7 +24,7 @@ use crate::lubrication::{ContactFilm, FilmConditions, Lubricant, Supply, contact
 pub const FILM_ITERATIONS: usize = 20;
 
 /// Relative change of the largest load at which the film iteration stops.
-pub const FILM_TOLERANCE: f64 = 1e-10;
+pub const FILM_TOLERANCE: f64 = 1e-8;
 
 impl QuasiStaticSolver {
     /// The equilibrium with the film in the normal approach (module doc):
