@@ -112,8 +112,8 @@ impl BearingModel {
     }
 
     /// Steady film of a contact with `ring` at contact angle α, entrainment
-    /// speed u \[m/s\] and load Q \[N\], starved by the ring's supply; None
-    /// without a lubricant.
+    /// speed u \[m/s\] and load Q \[N\] (Hertz semi-axis b at that load),
+    /// starved by the ring's supply; None without a lubricant.
     pub(super) fn steady_film(
         &self,
         ring: &RingMotion,
@@ -121,6 +121,7 @@ impl BearingModel {
         contact_angle: f64,
         entrainment_speed: f64,
         load: f64,
+        semi_minor: f64,
     ) -> Option<ContactFilm> {
         let lubricant = self.params.traction.lubricant()?;
         let curvature = self.curvature(ring, contact_angle);
@@ -134,7 +135,7 @@ impl BearingModel {
                 rolling_radius: curvature.rolling_radius,
                 effective_modulus: self.effective_modulus,
                 ellipticity: hertz.ellipticity,
-                semi_minor: hertz.at_load(load).semi_minor,
+                semi_minor,
                 // Seed 003 eq 27: the inner ring throws the supply film.
                 ring_speed: ring.shaft_speed,
             },

@@ -201,7 +201,14 @@ impl BearingModel {
         let film = match &approach {
             Some(a) => a.film,
             None => self
-                .steady_film(ring, &hertz, geometry.contact_angle, u, load)
+                .steady_film(
+                    ring,
+                    &hertz,
+                    geometry.contact_angle,
+                    u,
+                    load,
+                    ellipse.semi_minor,
+                )
                 .map_or(0.0, |f| f.central),
         };
         let film_work = approach.map(|a| FilmWork {
