@@ -94,13 +94,30 @@ pub const DEFAULT_TABLE_INTERVALS: usize = 1800;
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContactTable {
     model: RacewayContactModel,
-    ellipticity: UniformPchip,
-    elliptic_k: UniformPchip,
-    elliptic_e: UniformPchip,
-    semi_major: UniformPchip,
-    semi_minor: UniformPchip,
-    approach: UniformPchip,
+    /// K_c(α) (its grid locates every lookup; its derivative for Jacobians).
     stiffness: UniformPchip,
+    /// Every column of each node side by side (a lookup reads two nodes'
+    /// cache lines, not fourteen columns'), in [`COLUMNS`] order.
+    nodes: Vec<TableNode>,
+}
+
+/// The columns of the table: κ, K(e), E(e), a*, b*, δ*, K_c.
+const COLUMNS: [fn(&HertzCoefficients) -> f64; 7] = [
+    |c| c.ellipticity,
+    |c| c.elliptic_k,
+    |c| c.elliptic_e,
+    |c| c.semi_major_coefficient,
+    |c| c.semi_minor_coefficient,
+    |c| c.approach_coefficient,
+    |c| c.stiffness,
+];
+
+/// One node of the table: each column's value and PCHIP slope times the
+/// spacing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct TableNode {
+    value: [f64; 7],
+    slope_h: [f64; 7],
 }
 
 impl ContactTable {
@@ -116,21 +133,27 @@ impl ContactTable {
     ) -> Result<Self, InvalidParameter> {
         let intervals = intervals.max(2);
         let h = FRAC_PI_2 / intervals as f64;
-        let nodes = (0..=intervals)
+        let samples = (0..=intervals)
             .map(|i| model.coefficients(i as f64 * h))
             .collect::<Result<Vec<_>, _>>()?;
-        let column = |f: fn(&HertzCoefficients) -> f64| {
-            UniformPchip::new(0.0, h, nodes.iter().map(f).collect())
-        };
+        let columns = COLUMNS.map(|f| UniformPchip::new(0.0, h, samples.iter().map(f).collect()));
+        let nodes = (0..=intervals)
+            .map(|i| {
+                let mut node = TableNode {
+                    value: [0.0; 7],
+                    slope_h: [0.0; 7],
+                };
+                for (k, column) in columns.iter().enumerate() {
+                    (node.value[k], node.slope_h[k]) = column.node(i);
+                }
+                node
+            })
+            .collect();
+        let [.., stiffness] = columns;
         Ok(Self {
             model,
-            ellipticity: column(|c| c.ellipticity),
-            elliptic_k: column(|c| c.elliptic_k),
-            elliptic_e: column(|c| c.elliptic_e),
-            semi_major: column(|c| c.semi_major_coefficient),
-            semi_minor: column(|c| c.semi_minor_coefficient),
-            approach: column(|c| c.approach_coefficient),
-            stiffness: column(|c| c.stiffness),
+            stiffness,
+            nodes,
         })
     }
 
@@ -140,18 +163,28 @@ impl ContactTable {
     }
 
     /// Interpolated Hertz constants at contact angle α \[rad\] (clamped to
-    /// [0, π/2]). Allocation-free.
+    /// [0, π/2]). Allocation-free; each column the same arithmetic as its
+    /// own [`UniformPchip::eval`].
     #[inline]
     pub fn at(&self, contact_angle: f64) -> HertzCoefficients {
-        let a = contact_angle;
+        let cell = self.stiffness.locate(contact_angle);
+        let (left, right) = (&self.nodes[cell.index()], &self.nodes[cell.index() + 1]);
+        let v: [f64; 7] = std::array::from_fn(|k| {
+            cell.combine(
+                left.value[k],
+                left.slope_h[k],
+                right.value[k],
+                right.slope_h[k],
+            )
+        });
         HertzCoefficients {
-            ellipticity: self.ellipticity.eval(a),
-            elliptic_k: self.elliptic_k.eval(a),
-            elliptic_e: self.elliptic_e.eval(a),
-            semi_major_coefficient: self.semi_major.eval(a),
-            semi_minor_coefficient: self.semi_minor.eval(a),
-            approach_coefficient: self.approach.eval(a),
-            stiffness: self.stiffness.eval(a),
+            ellipticity: v[0],
+            elliptic_k: v[1],
+            elliptic_e: v[2],
+            semi_major_coefficient: v[3],
+            semi_minor_coefficient: v[4],
+            approach_coefficient: v[5],
+            stiffness: v[6],
         }
     }
 

@@ -71,18 +71,69 @@ impl UniformPchip {
     /// Interpolated value at x; x outside the grid is clamped to its ends.
     #[inline]
     pub fn eval(&self, x: f64) -> f64 {
+        self.eval_in(&self.locate(x))
+    }
+
+    /// The cell of x (clamped to the grid) and its Hermite basis, which
+    /// every interpolant on the same grid (same x0, h and length) shares:
+    /// locate once, then [`Self::eval_in`] each of them.
+    #[inline]
+    pub fn locate(&self, x: f64) -> GridCell {
         let last = self.y.len() - 1;
         let s = ((x - self.x0) / self.h).clamp(0.0, last as f64);
-        let i = (s as usize).min(last - 1);
-        let t = s - i as f64;
-        let (y0, y1) = (self.y[i], self.y[i + 1]);
-        let (m0, m1) = (self.slope[i] * self.h, self.slope[i + 1] * self.h);
+        let index = (s as usize).min(last - 1);
+        let t = s - index as f64;
         let t2 = t * t;
         let t3 = t2 * t;
-        (2.0 * t3 - 3.0 * t2 + 1.0) * y0
-            + (t3 - 2.0 * t2 + t) * m0
-            + (-2.0 * t3 + 3.0 * t2) * y1
-            + (t3 - t2) * m1
+        GridCell {
+            index,
+            basis: [
+                2.0 * t3 - 3.0 * t2 + 1.0,
+                t3 - 2.0 * t2 + t,
+                -2.0 * t3 + 3.0 * t2,
+                t3 - t2,
+            ],
+        }
+    }
+
+    /// The value in a cell from [`Self::locate`] of an interpolant on the
+    /// same grid; the same arithmetic as [`Self::eval`].
+    #[inline]
+    pub fn eval_in(&self, cell: &GridCell) -> f64 {
+        let i = cell.index;
+        let (y0, y1) = (self.y[i], self.y[i + 1]);
+        let (m0, m1) = (self.slope[i] * self.h, self.slope[i + 1] * self.h);
+        cell.combine(y0, m0, y1, m1)
+    }
+
+    /// Node i's value y_i and slope times the spacing, m_i h (what
+    /// [`GridCell::combine`] takes).
+    pub fn node(&self, i: usize) -> (f64, f64) {
+        (self.y[i], self.slope[i] * self.h)
+    }
+}
+
+/// A point's cell on a uniform grid and its cubic Hermite basis
+/// (h₀₀, h₁₀, h₀₁, h₁₁ at the cell's local coordinate).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GridCell {
+    index: usize,
+    basis: [f64; 4],
+}
+
+impl GridCell {
+    /// The cell's left node.
+    #[inline]
+    pub fn index(&self) -> usize {
+        self.index
+    }
+
+    /// The cubic through the cell's left and right nodes (values y₀, y₁,
+    /// slopes times the spacing m₀, m₁) at the located point.
+    #[inline]
+    pub fn combine(&self, y0: f64, m0: f64, y1: f64, m1: f64) -> f64 {
+        let [b0, b1, b2, b3] = self.basis;
+        b0 * y0 + b1 * m0 + b2 * y1 + b3 * m1
     }
 }
 
