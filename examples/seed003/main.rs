@@ -12,12 +12,21 @@
 //! the radial stiffness K_zz (the film's compliance in series with Hertz,
 //! and its take-up of clearance), and the radial natural frequency
 //! f_z = √(K_zz/M)/2π (seed 003 eq 46, which prints 0.5π for 1/2π) against
-//! the dry bearing's. M = 0.088 kg is an assumed inner ring (45 × 54 × 16 mm
-//! steel; seed 003 gives no mass).
+//! the dry bearing's. M is the inner-ring mass of the dynamic runs below
+//! (the preset's estimate: a steel annulus from the bore to the inner
+//! raceway, 16 mm wide; seed 003 gives no mass).
+//!
+//!
+//! Last, the dynamic part ([`dynamic`]): the inner ring's vibration
+//! velocity (RMS, largest, and the spectral peak frequency) from dynamic
+//! runs with the film in the approach against L, dry and flooded, at an
+//! assumed contact damping ratio (seed 003 gives none).
 //!
 //! `cargo run --release --example seed003 [-- OUT_DIR]` (default
-//! `examples/seed003/out`). Seed 003's vibration amplitudes against L from
-//! dynamic runs are not reproduced here; see examples/seed003/README.md.
+//! `examples/seed003/out`; about two minutes on two cores, the dynamic
+//! runs). See examples/seed003/README.md.
+
+mod dynamic;
 
 use rolldyn::RingKind;
 use rolldyn::lubrication;
@@ -29,8 +38,6 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 const RADIAL_LOADS: [f64; 3] = [10.0, 20.0, 30.0];
-/// Assumed inner-ring mass \[kg\]: 45 × 54 × 16 mm of steel.
-const RING_MASS: f64 = 0.088;
 /// Inlet distance ratios of seed 003 §3, and ∞ (fully flooded).
 const RATIOS: [f64; 6] = [1.1, 1.3, 1.5, 1.7, 1.9, f64::INFINITY];
 /// The film-in-the-approach table adds ratios up to and past L* (8–12).
@@ -49,9 +56,16 @@ fn main() -> Result<(), String> {
     let mut csv = String::from(
         "radial_load_n,inlet_distance_ratio,load_inner_n,critical_inlet_distance_ratio,flooded_central_film_m,central_film_m,starvation_factor,film_stiffness_n_per_m,contact_stiffness_n_per_m,series_stiffness_n_per_m\n",
     );
-    let mut approach = String::from(
-        "\nFilm in the normal approach (MODEL §4): radial stiffness K_zz and f_z = √(K_zz/M)/2π, M = 0.088 kg (assumed)\n\
+    // The inner-ring mass of the dynamic runs (the preset's estimate).
+    let ring_mass = load_case("ceramic_45x75 preset", preset.text, &[])
+        .map_err(|e| e.to_string())?
+        .dynamics_parameters()
+        .map_err(|e| format!("{}: {}", e.key, e.rule))?
+        .inner_ring_mass;
+    let mut approach = format!(
+        "\nFilm in the normal approach (MODEL §4): radial stiffness K_zz and f_z = √(K_zz/M)/2π, M = {:.1} g (the preset's inner ring)\n\
          F_z [N]      L   loaded balls  max Q_i [N]  K_zz [N/m]  f_z [Hz]  dry K_zz [N/m]  dry f_z [Hz]\n",
+        ring_mass * 1e3
     );
     let mut approach_csv = String::from(
         "radial_load_n,inlet_distance_ratio,loaded_balls,max_load_inner_n,radial_stiffness_n_per_m,radial_frequency_hz,dry_radial_stiffness_n_per_m,dry_radial_frequency_hz\n",
@@ -141,7 +155,7 @@ fn main() -> Result<(), String> {
             prescribed_displacement: [None, None, None, Some(0.0), Some(0.0)],
             ..SolverOptions::default()
         };
-        let frequency = |k: f64| (k / RING_MASS).sqrt() / std::f64::consts::TAU;
+        let frequency = |k: f64| (k / ring_mass).sqrt() / std::f64::consts::TAU;
         let dry = solver
             .solve(&conditions, &options)
             .map_err(|e| e.to_string())?;
@@ -173,10 +187,15 @@ fn main() -> Result<(), String> {
         }
     }
     table.push_str(&approach);
+    let jobs = dynamic::jobs(&RADIAL_LOADS, &RATIOS);
+    let results = dynamic::run_all(preset.text, &jobs);
+    let (vibration, vibration_csv) = dynamic::tables(&results, &jobs);
+    table.push_str(&vibration);
     print!("{table}");
     std::fs::write(out.join("table.txt"), &table).map_err(|e| e.to_string())?;
     std::fs::write(out.join("films.csv"), &csv).map_err(|e| e.to_string())?;
-    std::fs::write(out.join("approach.csv"), &approach_csv).map_err(|e| e.to_string())
+    std::fs::write(out.join("approach.csv"), &approach_csv).map_err(|e| e.to_string())?;
+    std::fs::write(out.join("vibration.csv"), &vibration_csv).map_err(|e| e.to_string())
 }
 
 /// L as the tables print it (∞: flooded).

@@ -19,7 +19,7 @@ const EXAMPLES: [(&str, &[&str]); 6] = [
     ("seed000", &["run", "--duration", "2 ms"]),
     ("seed001", &["run", "--duration", "2 ms"]),
     ("seed002", &["run", "--duration", "2 ms"]),
-    // Seed 003's example is quasi-static (its dynamic part: issue 12).
+    // Seed 003's case shortened: its quasi-static point (the example adds dynamic runs).
     ("seed003", &["quasistatic", "--radial-load", "20 N"]),
     ("seed004", &["run", "--duration", "2 ms"]),
     ("cwru6205", &["run", "--duration", "2 ms"]),
