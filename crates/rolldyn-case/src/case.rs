@@ -98,6 +98,8 @@ pub struct Case {
     pub gravity: bool,
     /// The lubricant film in the normal approach.
     pub film_in_approach: bool,
+    /// Mixed lubrication (`[model.mixed_lubrication]`; None: off).
+    pub mixed_lubrication: Option<rolldyn::lubrication::mixed::MixedLubrication>,
     /// Inner-ring mass \[kg\], if given.
     pub inner_ring_mass: Option<f64>,
     /// Inner-ring tilt inertia \[kg·m²\], if given.
@@ -617,6 +619,8 @@ impl Case {
         };
 
         let surface = surface::surface(&raw.surface, bearing.geometry.ball_count)?;
+        let mixed_lubrication =
+            traction::mixed_lubrication(raw.model.mixed_lubrication.as_ref(), &traction, &surface)?;
         let materials_ball_name = materials.ball.name.clone();
         Ok(Self {
             title: raw.title.clone(),
@@ -639,6 +643,7 @@ impl Case {
             planar: raw.model.planar.unwrap_or(false),
             gravity: raw.model.gravity.unwrap_or(false),
             film_in_approach: raw.model.film_in_approach.unwrap_or(false),
+            mixed_lubrication,
             inner_ring_mass,
             inner_ring_tilt_inertia,
             integrator,

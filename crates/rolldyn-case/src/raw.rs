@@ -465,6 +465,25 @@ pub struct RawModel {
     /// compression δ + h, the film a state of each contact following its
     /// steady value (default false; needs a traction law with a lubricant).
     pub film_in_approach: Option<bool>,
+    /// Mixed lubrication (MODEL §3, model 5): boundary friction on the
+    /// asperities' share of each contact's load, from Λ = h_min/σ
+    /// (Greenwood–Tripp load sharing; needs traction law ehl and the
+    /// surfaces' roughness).
+    pub mixed_lubrication: Option<RawMixedLubrication>,
+}
+
+/// `[model.mixed_lubrication]`.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawMixedLubrication {
+    /// Boundary friction coefficient μ_b of the asperity contacts.
+    pub boundary_friction: f64,
+    /// Roughness parameter σβη (summit density η, summit radius β).
+    pub sigma_beta_eta: f64,
+    /// Composite roughness over summit radius, σ/β.
+    pub sigma_over_beta: f64,
+    /// Slip speed from which the boundary friction is full (default 1 mm/s).
+    pub full_speed: Option<Quantity<Velocity>>,
 }
 
 /// A traction model as written in the case file.

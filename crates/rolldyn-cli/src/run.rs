@@ -145,12 +145,20 @@ struct Channels {
     creep: bool,
     /// Whether the per-ball power channels are recorded.
     power_per_ball: bool,
+    /// Whether the per-ball asperity shares are recorded (mixed lubrication).
+    mixed: bool,
     /// Scratch derivative vector (accelerations of the rings).
     derivative: Vec<f64>,
 }
 
 impl Channels {
-    fn new(balls: usize, creep: bool, thermal: bool, power_per_ball: bool, states: usize) -> Self {
+    fn new(
+        balls: usize,
+        creep: bool,
+        thermal: bool,
+        [power_per_ball, mixed]: [bool; 2],
+        states: usize,
+    ) -> Self {
         let mut series = TimeSeries::default();
         for (name, unit) in [
             ("time_s", "s"),
@@ -202,12 +210,17 @@ impl Channels {
                 series.channel(format!("ball{j}_power_inner_w"), "W");
                 series.channel(format!("ball{j}_power_outer_w"), "W");
             }
+            if mixed {
+                series.channel(format!("ball{j}_asperity_share_inner"), "1");
+                series.channel(format!("ball{j}_asperity_share_outer"), "1");
+            }
         }
         Self {
             series,
             balls,
             creep,
             power_per_ball,
+            mixed,
             derivative: vec![0.0; states],
         }
     }
@@ -312,6 +325,9 @@ impl Channels {
             }
             if self.power_per_ball {
                 row.extend_from_slice(&[c.inner.losses.total(), c.outer.losses.total()]);
+            }
+            if self.mixed {
+                row.extend_from_slice(&[c.inner.asperity_share, c.outer.asperity_share]);
             }
         }
         self.series.push(row);
@@ -537,7 +553,7 @@ pub fn run_case_series(
         g.ball_count,
         matches!(params.traction, TractionModel::Fastsim(_)),
         model.thermal().is_some(),
-        case.power_per_ball,
+        [case.power_per_ball, params.mixed_lubrication.is_some()],
         model.layout().len(),
     );
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);

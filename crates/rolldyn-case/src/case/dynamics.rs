@@ -125,6 +125,7 @@ impl Case {
                 .as_ref()
                 .map_or(Default::default(), |l| l.supply),
             film_in_approach: self.film_in_approach,
+            mixed_lubrication: self.mixed_lubrication,
         })
     }
 }

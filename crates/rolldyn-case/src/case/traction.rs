@@ -3,7 +3,9 @@
 //! from the ball and ring materials.
 
 use super::{Invalid, Lubricant, Materials};
-use crate::raw::{RawTraction, TractionChoice};
+use crate::raw::{RawMixedLubrication, RawTraction, TractionChoice};
+use rolldyn::RingKind;
+use rolldyn::lubrication::mixed::MixedLubrication;
 use rolldyn::traction::fastsim::combined_elastic_constants;
 use rolldyn::traction::{EhlRheology, Fastsim, ModifiedCoulomb, TractionCurve, TractionModel};
 
@@ -102,4 +104,53 @@ pub(super) fn traction(
             TractionModel::Fastsim(law)
         }
     })
+}
+
+/// `[model.mixed_lubrication]` (MODEL §3, model 5): needs the EHL traction
+/// law (the fluid it blends with, and the film) and a roughness at both
+/// raceways' contacts (the film parameter Λ = h_min/σ).
+pub(super) fn mixed_lubrication(
+    raw: Option<&RawMixedLubrication>,
+    traction: &TractionModel,
+    surface: &rolldyn::surface::SurfaceModel,
+) -> Result<Option<MixedLubrication>, Invalid> {
+    let Some(raw) = raw else {
+        return Ok(None);
+    };
+    let key = "model.mixed_lubrication";
+    let mixed = MixedLubrication {
+        boundary: ModifiedCoulomb {
+            friction: raw.boundary_friction,
+            stick_speed: 0.0,
+            full_speed: raw.full_speed.as_ref().map_or(1e-3, |q| q.si),
+        },
+        sigma_beta_eta: raw.sigma_beta_eta,
+        sigma_over_beta: raw.sigma_over_beta,
+    };
+    mixed.validate().map_err(|e| {
+        let field = match e.field {
+            "friction" => "boundary_friction",
+            other => other,
+        };
+        Invalid::new(format!("{key}.{field}"), Some(e.value), e.rule)
+    })?;
+    if !matches!(traction, TractionModel::Ehl(_)) {
+        return Err(Invalid::new(
+            key,
+            None,
+            "mixed lubrication blends boundary friction with the fluid's traction: it needs model.traction law \"ehl\" with a [lubricant] section (the film h_min)",
+        ));
+    }
+    for (ring, name) in [(RingKind::Inner, "inner"), (RingKind::Outer, "outer")] {
+        if surface.composite_roughness(ring) <= 0.0 {
+            return Err(Invalid::new(
+                key,
+                None,
+                format!(
+                    "mixed lubrication needs the film parameter Λ = h_min/σ at every contact: give surface.{name}.roughness or surface.balls.roughness"
+                ),
+            ));
+        }
+    }
+    Ok(Some(mixed))
 }

@@ -34,6 +34,7 @@ pub mod drag;
 pub mod energy;
 pub mod film;
 pub mod layout;
+mod mixed;
 pub mod model;
 pub mod outputs;
 pub mod pocket;

@@ -100,6 +100,11 @@ pub struct DynamicsParameters {
     /// with the steady central film h (`dynamics::film`). Needs a film
     /// model (EHL traction) and a flooded or inlet-distance supply.
     pub film_in_approach: bool,
+    /// Mixed lubrication (MODEL §3, model 5): boundary friction on the
+    /// asperities' share of each contact's load, from the film parameter
+    /// Λ = h_min/σ (`lubrication::mixed`). Needs a film model (EHL
+    /// traction) and the raceways' and balls' roughness (`surface`).
+    pub mixed_lubrication: Option<crate::lubrication::mixed::MixedLubrication>,
 }
 
 /// Kinematic state of a ball (global frame).
@@ -196,6 +201,9 @@ impl BearingModel {
                     ));
                 }
             }
+        }
+        if let Some(mixed) = &params.mixed_lubrication {
+            crate::dynamics::mixed::validate(mixed, &params)?;
         }
         let ep = effective_modulus(ball, rings);
         let ball_mass = geometry.ball_mass(ball.density);

@@ -49,6 +49,8 @@ pub struct ContactOutput {
     pub spin_to_roll: f64,
     /// Central film thickness h_c \[m\] (0 without a film model).
     pub film: f64,
+    /// Asperities' share φ of the load (0 without mixed lubrication).
+    pub asperity_share: f64,
     /// FASTSIM creepages (ξ, η \[-\], φ \[1/m\]) and stick fraction
     /// (None with the stress-law traction models).
     pub creep: Option<Creep>,
@@ -198,19 +200,31 @@ impl BearingModel {
         // Film (MODEL §4): h(Q) of the elastic load with the film in the
         // approach, else the steady Hamrock–Dowson film at the load; both
         // starved by the ring's supply.
+        let steady = match &approach {
+            Some(_) => None,
+            None => self.steady_film(
+                ring,
+                &hertz,
+                geometry.contact_angle,
+                u,
+                load,
+                ellipse.semi_minor,
+            ),
+        };
         let film = match &approach {
             Some(a) => a.film,
-            None => self
-                .steady_film(
-                    ring,
-                    &hertz,
-                    geometry.contact_angle,
-                    u,
-                    load,
-                    ellipse.semi_minor,
-                )
-                .map_or(0.0, |f| f.central),
+            None => steady.map_or(0.0, |f| f.central),
         };
+        // Mixed lubrication (dynamics::mixed): the asperities' share.
+        let asperity_share = self.asperity_share(
+            ring,
+            &hertz,
+            geometry.contact_angle,
+            u,
+            load,
+            &ellipse,
+            steady.as_ref(),
+        );
         let film_work = approach.map(|a| FilmWork {
             law: a.law,
             load: a.load,
@@ -246,14 +260,26 @@ impl BearingModel {
             (Want::Map(map), TractionModel::Fastsim(f)) => {
                 f.evaluate_mapped(&patch, q, &slip, &relative_spin, &conditions, map)
             }
-            _ => model.evaluate(
-                &self.traction_grid,
-                &patch,
-                q,
-                &slip,
-                &relative_spin,
-                &conditions,
-            ),
+            _ => match &self.params.mixed_lubrication {
+                Some(mixed) => model.evaluate_blended(
+                    &mixed.boundary,
+                    asperity_share,
+                    &self.traction_grid,
+                    &patch,
+                    q,
+                    &slip,
+                    &relative_spin,
+                    &conditions,
+                ),
+                None => model.evaluate(
+                    &self.traction_grid,
+                    &patch,
+                    q,
+                    &slip,
+                    &relative_spin,
+                    &conditions,
+                ),
+            },
         };
         // Rolling axis e_a = n × û and the rolling rate about it.
         let rolling_axis = if u > 0.0 {
@@ -304,6 +330,7 @@ impl BearingModel {
                     0.0
                 },
                 film,
+                asperity_share,
                 creep: traction.creep,
                 losses,
             }

@@ -378,6 +378,7 @@ mod tests {
             drag: DragParameters::default(),
             surface: Default::default(),
             film_supply: Default::default(),
+            mixed_lubrication: None,
             film_in_approach: false,
         };
         let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();

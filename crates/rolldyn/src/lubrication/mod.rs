@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 
 pub mod approach;
 pub mod film;
+pub mod mixed;
 pub mod starvation;
 pub use film::{ContactFilm, FilmConditions, contact_film};
 pub use starvation::{Supply, critical_inlet_ratio, starvation_factor};

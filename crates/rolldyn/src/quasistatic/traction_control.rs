@@ -500,6 +500,7 @@ mod tests {
             drag: DragParameters::default(),
             surface: crate::surface::SurfaceModel::default(),
             film_supply: Default::default(),
+            mixed_lubrication: None,
             film_in_approach: false,
             inner_support: Support::default(),
             outer_ring: None,

@@ -22,6 +22,7 @@ pub mod ehl;
 pub mod ellipse;
 pub mod fastsim;
 pub mod kalker;
+pub mod mixed;
 
 pub use coulomb::ModifiedCoulomb;
 
@@ -221,6 +222,68 @@ impl TractionModel {
             Self::Fastsim(f) => {
                 f.evaluate(patch, ball_centre, slip_at_point, relative_spin, conditions)
             }
+        }
+    }
+
+    /// [`Self::evaluate`] in mixed lubrication: the fluid law blended with
+    /// `boundary` friction at asperity share φ = `share` ([`mixed`]). Only
+    /// the fluid stress laws blend (EHL, traction curve); the others, and
+    /// φ = 0, are [`Self::evaluate`].
+    #[allow(clippy::too_many_arguments)]
+    pub fn evaluate_blended(
+        &self,
+        boundary: &ModifiedCoulomb,
+        share: f64,
+        grid: &ellipse::TractionGrid,
+        patch: &ContactPatch,
+        ball_centre: &Vector3<f64>,
+        slip_at_point: &Vector3<f64>,
+        relative_spin: &Vector3<f64>,
+        conditions: &ContactConditions,
+    ) -> TractionResult {
+        match self {
+            _ if share <= 0.0 => self.evaluate(
+                grid,
+                patch,
+                ball_centre,
+                slip_at_point,
+                relative_spin,
+                conditions,
+            ),
+            Self::Ehl(fluid) => ellipse::integrate(
+                &mixed::Blended {
+                    fluid,
+                    boundary,
+                    share,
+                },
+                grid,
+                patch,
+                ball_centre,
+                slip_at_point,
+                relative_spin,
+                conditions,
+            ),
+            Self::TractionCurve(fluid) => ellipse::integrate(
+                &mixed::Blended {
+                    fluid,
+                    boundary,
+                    share,
+                },
+                grid,
+                patch,
+                ball_centre,
+                slip_at_point,
+                relative_spin,
+                conditions,
+            ),
+            _ => self.evaluate(
+                grid,
+                patch,
+                ball_centre,
+                slip_at_point,
+                relative_spin,
+                conditions,
+            ),
         }
     }
 

@@ -75,6 +75,7 @@ fn model(configure: impl Fn(&mut DynamicsParameters)) -> BearingModel {
         drag: DragParameters::default(),
         surface: rolldyn::surface::SurfaceModel::default(),
         film_supply: Default::default(),
+        mixed_lubrication: None,
         film_in_approach: false,
         inner_support: Support::default(),
         outer_ring: None,

@@ -123,7 +123,7 @@ fn c7_films_are_hamrock_dowson_at_their_load_and_carry_it_in_series_with_hertz()
 }
 
 /// `b2_power_balance`'s residual with the K_c(α) term added \[W\].
-fn power_residual(model: &BearingModel, t: f64, y: &[f64]) -> (f64, f64) {
+pub(super) fn power_residual(model: &BearingModel, t: f64, y: &[f64]) -> (f64, f64) {
     let (residual, scale, f) = super::b2_power_balance::power_residual(model, t, y);
     (residual + stiffness_gradient_power(model, t, y, &f), scale)
 }

@@ -23,6 +23,7 @@ mod c1_seed000;
 mod c4_seed001_surfaces;
 mod c5_seed002_table1;
 mod c7_film_in_approach;
+mod c7_mixed_lubrication;
 mod c7_starvation;
 mod c8_power_dynamic;
 mod c8_seed004_thermal;

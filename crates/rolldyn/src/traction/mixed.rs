@@ -1,0 +1,112 @@
+//! Mixed-lubrication traction (MODEL §3, model 5): the fluid's stress law
+//! and boundary friction on the asperities, weighted by the asperities'
+//! share φ of the contact's load (`lubrication::mixed`, Greenwood–Tripp
+//! load sharing after Johnson, Greenwood & Poon 1972):
+//! ```text
+//! τ = (1 − φ) τ_fluid(p, v, h) + φ τ_b(p, v),   τ_b = −c_d(|v|) μ_b p v/|v|
+//! ```
+//! The share is one number per contact, so the same φ weights every cell of
+//! the ellipse. φ = 0 gives the fluid law's stresses exactly, φ = 1 the
+//! modified Coulomb law's. Both parts oppose the slip, so the blend
+//! dissipates and the energy balance (B2) needs nothing more.
+
+use super::{BATCH, ContactConditions, ModifiedCoulomb, TractionLaw};
+use nalgebra::Vector3;
+
+/// A fluid stress law blended with boundary friction at one contact.
+pub struct Blended<'a, L: TractionLaw> {
+    /// The fluid's law (EHL rheology or traction curve).
+    pub fluid: &'a L,
+    /// Boundary friction of the asperity contacts.
+    pub boundary: &'a ModifiedCoulomb,
+    /// Asperity share φ of the contact's load, in [0, 1].
+    pub share: f64,
+}
+
+impl<L: TractionLaw> TractionLaw for Blended<'_, L> {
+    #[inline]
+    fn shear_stress(
+        &self,
+        pressure: f64,
+        slip: &Vector3<f64>,
+        conditions: &ContactConditions,
+    ) -> Vector3<f64> {
+        (1.0 - self.share) * self.fluid.shear_stress(pressure, slip, conditions)
+            + self.share * self.boundary.shear_stress(pressure, slip, conditions)
+    }
+
+    /// The fluid's cells in its own batches, then the boundary's.
+    #[inline]
+    fn shear_stresses(
+        &self,
+        pressures: &[f64],
+        slips: &[Vector3<f64>],
+        conditions: &ContactConditions,
+        stresses: &mut [Vector3<f64>],
+    ) {
+        let n = pressures.len().min(BATCH);
+        self.fluid
+            .shear_stresses(pressures, slips, conditions, &mut stresses[..n]);
+        for k in 0..n {
+            stresses[k] = (1.0 - self.share) * stresses[k]
+                + self.share
+                    * self
+                        .boundary
+                        .shear_stress(pressures[k], &slips[k], conditions);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_blend_ends_at_its_two_laws() {
+        let fluid = super::super::ehl::tests::law();
+        let boundary = ModifiedCoulomb {
+            friction: 0.1,
+            stick_speed: 0.0,
+            full_speed: 1e-3,
+        };
+        let c = ContactConditions {
+            film: 2e-7,
+            entrainment_speed: 10.0,
+            rolling_velocity: 10.0,
+        };
+        let (p, v) = (1.2e9, Vector3::new(0.3, -0.1, 0.0));
+        let at = |share: f64| {
+            Blended {
+                fluid: &fluid,
+                boundary: &boundary,
+                share,
+            }
+            .shear_stress(p, &v, &c)
+        };
+        assert_eq!(at(0.0), fluid.shear_stress(p, &v, &c));
+        assert_eq!(at(1.0), boundary.shear_stress(p, &v, &c));
+        // Linear in the share, and every blend opposes the slip.
+        let (f, b) = (at(0.0), at(1.0));
+        for share in [0.1, 0.5, 0.9] {
+            assert!((at(share) - ((1.0 - share) * f + share * b)).norm() < 1e-9 * b.norm());
+            assert!(at(share).dot(&v) < 0.0);
+        }
+        // Batches are cell by cell.
+        let law = Blended {
+            fluid: &fluid,
+            boundary: &boundary,
+            share: 0.3,
+        };
+        let pressures = [0.0, 5e8, 1.2e9, 2e9];
+        let slips = [v, v * 1e-4, Vector3::zeros(), -v];
+        let mut out = [Vector3::zeros(); 4];
+        law.shear_stresses(&pressures, &slips, &c, &mut out);
+        for k in 0..4 {
+            let single = law.shear_stress(pressures[k], &slips[k], &c);
+            assert!(
+                (out[k] - single).norm() <= 1e-12 * single.norm().max(1.0),
+                "cell {k}"
+            );
+        }
+    }
+}
