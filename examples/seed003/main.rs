@@ -7,6 +7,9 @@
 //! factor, the oil-film stiffness K_oil (eq 37), the Hertz stiffness
 //! dQ/dδ and the two in series.
 //!
+//! With assumed surfaces, that contact's film parameter Λ = h_min/σ and
+//! its asperity share φ (mixed lubrication, MODEL §3 model 5).
+//!
 //! Then, with the film in the normal approach (MODEL §4; seed 003 eqs
 //! 39–46): the equilibrium solved with each contact compressed by δ + h(Q),
 //! the radial stiffness K_zz (the film's compliance in series with Hertz,
@@ -38,6 +41,21 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 const RADIAL_LOADS: [f64; 3] = [10.0, 20.0, 30.0];
+/// Composite roughness of the mixed-lubrication table \[m\]: assumed
+/// (seed 003 gives none), steel raceways R_q 0.1 µm and Si3N4 balls 0.02 µm.
+const MIXED_ROUGHNESS: f64 = 0.101_98e-6;
+/// Mixed-lubrication parameters of that table: assumed typical values
+/// (docs/lubrication.md), boundary friction 0.1.
+const MIXED: rolldyn::lubrication::mixed::MixedLubrication =
+    rolldyn::lubrication::mixed::MixedLubrication {
+        boundary: rolldyn::traction::ModifiedCoulomb {
+            friction: 0.1,
+            stick_speed: 0.0,
+            full_speed: 1e-3,
+        },
+        sigma_beta_eta: 0.04,
+        sigma_over_beta: 1e-3,
+    };
 /// Inlet distance ratios of seed 003 §3, and ∞ (fully flooded).
 const RATIOS: [f64; 6] = [1.1, 1.3, 1.5, 1.7, 1.9, f64::INFINITY];
 /// The film-in-the-approach table adds ratios up to and past L* (8–12).
@@ -62,6 +80,13 @@ fn main() -> Result<(), String> {
         .dynamics_parameters()
         .map_err(|e| format!("{}: {}", e.key, e.rule))?
         .inner_ring_mass;
+    let mut mixed = format!(
+        "\nMixed lubrication (MODEL §3 model 5, assumed surfaces: σ = {:.3} µm, σβη = {}, σ/β = {}): film parameter and asperity share of the same contact\n\
+         F_z [N]      L  h_min [µm]        Λ         φ\n",
+        MIXED_ROUGHNESS * 1e6,
+        MIXED.sigma_beta_eta,
+        MIXED.sigma_over_beta
+    );
     let mut approach = format!(
         "\nFilm in the normal approach (MODEL §4): radial stiffness K_zz and f_z = √(K_zz/M)/2π, M = {:.1} g (the preset's inner ring)\n\
          F_z [N]      L   loaded balls  max Q_i [N]  K_zz [N/m]  f_z [Hz]  dry K_zz [N/m]  dry f_z [Hz]\n",
@@ -101,6 +126,7 @@ fn main() -> Result<(), String> {
             .max_by(|&a, &b| eq.balls[a].inner.load.total_cmp(&eq.balls[b].inner.load))
             .ok_or("no balls")?;
         let contact = eq.balls[j].inner;
+
         let hertz_stiffness = 1.5 * contact.load / contact.penetration;
         // Both rings supplied at inlet distance ratio L (∞: flooded).
         let inputs_at = |l: f64| {
@@ -136,6 +162,20 @@ fn main() -> Result<(), String> {
                 film.stiffness,
                 hertz_stiffness,
                 series
+            );
+            // Mixed lubrication (MODEL §3 model 5) with assumed surfaces.
+            let lambda = film.minimum / MIXED_ROUGHNESS;
+            let e = contact.hertz;
+            let share = MIXED.asperity_share(
+                lambda,
+                contact.load / (std::f64::consts::PI * e.semi_major * e.semi_minor),
+                effective_modulus(ball, rings),
+            );
+            let _ = writeln!(
+                mixed,
+                "{fz:>7.0} {:>6} {:>13.4} {lambda:>7.2} {share:>9.2e}",
+                ratio_label(l),
+                film.minimum * 1e6
             );
             let _ = writeln!(
                 csv,
@@ -186,6 +226,7 @@ fn main() -> Result<(), String> {
             }
         }
     }
+    table.push_str(&mixed);
     table.push_str(&approach);
     let jobs = dynamic::jobs(&RADIAL_LOADS, &RATIOS);
     let results = dynamic::run_all(preset.text, &jobs);

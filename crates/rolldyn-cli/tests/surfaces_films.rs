@@ -422,3 +422,68 @@ fn the_film_in_the_approach_in_quasistatic_and_run() {
         );
     }
 }
+
+/// `[model.mixed_lubrication]` on the default case: the run records each
+/// contact's asperity share, and a case without what the model needs is
+/// refused naming the key and the rule.
+#[test]
+fn mixed_lubrication_in_run_and_its_refusals() {
+    let mixed = "model.mixed_lubrication={ boundary_friction = 0.1, sigma_beta_eta = 0.04, sigma_over_beta = 0.001 }";
+    let rough = [
+        "--set",
+        "surface.inner.roughness=\"0.15 um\"",
+        "--set",
+        "surface.outer.roughness=\"0.15 um\"",
+    ];
+    let dir = temp_dir("mixed-lubrication");
+    let d = dir.to_string_lossy().into_owned();
+    let mut args = vec!["run", "--duration", "2 ms", "-o", &d, "--set", mixed];
+    args.extend_from_slice(&rough);
+    let o = rolldyn(&args, None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let table = parquet::file::reader::SerializedFileReader::new(
+        std::fs::File::open(dir.join("timeseries.parquet")).unwrap(),
+    )
+    .unwrap();
+    use parquet::file::reader::FileReader;
+    let schema = table.metadata().file_metadata().schema_descr();
+    let names: Vec<String> = schema
+        .columns()
+        .iter()
+        .map(|c| c.name().to_string())
+        .collect();
+    assert!(
+        names.iter().any(|n| n == "ball0_asperity_share_inner"),
+        "{names:?}"
+    );
+    assert!(names.iter().any(|n| n == "ball0_asperity_share_outer"));
+    std::fs::remove_dir_all(&dir).ok();
+
+    for (extra, rule) in [
+        (vec![], "surface.inner.roughness"),
+        (
+            vec![
+                "--set",
+                "model.traction={ law = \"modified_coulomb\", friction = 0.1 }",
+            ],
+            "needs model.traction law \"ehl\"",
+        ),
+        (
+            vec!["--set", "model.mixed_lubrication.sigma_over_beta=2.0"],
+            "sigma_over_beta",
+        ),
+    ] {
+        let mut args = vec!["check", "--set", mixed];
+        if rule != "surface.inner.roughness" {
+            args.extend_from_slice(&rough);
+        }
+        args.extend(extra);
+        let o = rolldyn(&args, None);
+        assert!(!o.status.success(), "{args:?}");
+        let e = stderr(&o);
+        assert!(
+            e.contains("model.mixed_lubrication") && e.contains(rule),
+            "{e}"
+        );
+    }
+}

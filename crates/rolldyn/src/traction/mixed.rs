@@ -15,7 +15,7 @@ use nalgebra::Vector3;
 
 /// A fluid stress law blended with boundary friction at one contact.
 pub struct Blended<'a, L: TractionLaw> {
-    /// The fluid's law (EHL rheology or traction curve).
+    /// The fluid's law (the EHL rheology).
     pub fluid: &'a L,
     /// Boundary friction of the asperity contacts.
     pub boundary: &'a ModifiedCoulomb,

@@ -225,10 +225,10 @@ impl TractionModel {
         }
     }
 
-    /// [`Self::evaluate`] in mixed lubrication: the fluid law blended with
-    /// `boundary` friction at asperity share φ = `share` ([`mixed`]). Only
-    /// the fluid stress laws blend (EHL, traction curve); the others, and
-    /// φ = 0, are [`Self::evaluate`].
+    /// [`Self::evaluate`] in mixed lubrication: the EHL law blended with
+    /// `boundary` friction at asperity share φ = `share` ([`mixed`]). The
+    /// other models have no film to share the load with (the case refuses
+    /// them); for them, and at φ = 0, this is [`Self::evaluate`].
     #[allow(clippy::too_many_arguments)]
     pub fn evaluate_blended(
         &self,
@@ -242,28 +242,7 @@ impl TractionModel {
         conditions: &ContactConditions,
     ) -> TractionResult {
         match self {
-            _ if share <= 0.0 => self.evaluate(
-                grid,
-                patch,
-                ball_centre,
-                slip_at_point,
-                relative_spin,
-                conditions,
-            ),
-            Self::Ehl(fluid) => ellipse::integrate(
-                &mixed::Blended {
-                    fluid,
-                    boundary,
-                    share,
-                },
-                grid,
-                patch,
-                ball_centre,
-                slip_at_point,
-                relative_spin,
-                conditions,
-            ),
-            Self::TractionCurve(fluid) => ellipse::integrate(
+            Self::Ehl(fluid) if share > 0.0 => ellipse::integrate(
                 &mixed::Blended {
                     fluid,
                     boundary,
