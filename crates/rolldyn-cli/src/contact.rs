@@ -116,7 +116,7 @@ pub fn command(args: ContactArgs) -> Result<(), Failure> {
 #[serde(untagged)]
 pub enum ContactOutput {
     Raceways(Box<ContactReport>),
-    Explicit(ExplicitReport),
+    Explicit(Box<ExplicitReport>),
 }
 
 impl ContactOutput {
@@ -210,7 +210,7 @@ pub fn evaluate(args: &ContactArgs, case: &Case) -> Result<ContactOutput, Failur
     match explicit {
         Some(curvature) => {
             explicit_report(case, curvature, ep, load, speed, args.inlet_distance_ratio)
-                .map(ContactOutput::Explicit)
+                .map(|r| ContactOutput::Explicit(Box::new(r)))
         }
         None => {
             if args.inlet_distance_ratio.is_some() {

@@ -32,6 +32,8 @@ pub struct ContactFilmRow {
     pub film_parameter: Option<f64>,
     /// K_oil (null without a film).
     pub film_stiffness_n_per_m: Option<f64>,
+    /// Asperity share φ of the load (null without `[model.mixed_lubrication]`).
+    pub asperity_share: Option<f64>,
 }
 
 /// Films of one ball.
@@ -78,7 +80,28 @@ impl ContactFilmRow {
             critical_inlet_distance_ratio: finite(f.critical_ratio),
             film_parameter: f.lambda,
             film_stiffness_n_per_m: finite(f.stiffness),
+            asperity_share: None,
         }
+    }
+
+    /// The row with the asperity share φ of mixed lubrication at this
+    /// contact's load and Hertz ellipse (docs/lubrication.md).
+    fn with_share(
+        mut self,
+        mixed: Option<&rolldyn::lubrication::mixed::MixedLubrication>,
+        contact: &rolldyn::quasistatic::ContactSolution,
+        effective_modulus: f64,
+    ) -> Self {
+        self.asperity_share = mixed.zip(self.film_parameter).map(|(m, lambda)| {
+            let e = &contact.hertz;
+            let area = std::f64::consts::PI * e.semi_major * e.semi_minor;
+            if area > 0.0 {
+                m.asperity_share(lambda, contact.load / area, effective_modulus)
+            } else {
+                0.0
+            }
+        });
+        self
     }
 
     /// Text lines of the film.
@@ -151,10 +174,19 @@ pub fn films(case: &Case, sol: &Equilibrium) -> Option<Vec<FilmRow>> {
         equilibrium_films(&case.bearing.geometry, sol, &inputs)
             .iter()
             .zip(&sol.balls)
-            .map(|(f, b)| FilmRow {
-                azimuth_deg: b.azimuth.to_degrees(),
-                inner: ContactFilmRow::new(&f.films[0], f.entrainment_speed[0]),
-                outer: ContactFilmRow::new(&f.films[1], f.entrainment_speed[1]),
+            .map(|(f, b)| {
+                let row = |k: usize, contact| {
+                    ContactFilmRow::new(&f.films[k], f.entrainment_speed[k]).with_share(
+                        case.mixed_lubrication.as_ref(),
+                        contact,
+                        inputs.effective_modulus,
+                    )
+                };
+                FilmRow {
+                    azimuth_deg: b.azimuth.to_degrees(),
+                    inner: row(0, &b.inner),
+                    outer: row(1, &b.outer),
+                }
             })
             .collect(),
     )
@@ -221,6 +253,21 @@ pub fn text(films: Option<&[FilmRow]>, modes: Option<&ModesReport>, out: &mut St
                 f.outer.starvation_factor,
                 lambda(f.outer.film_parameter),
                 stiffness(f.outer.film_stiffness_n_per_m),
+            );
+        }
+        let largest = |share: fn(&FilmRow) -> Option<f64>| {
+            films
+                .iter()
+                .filter_map(share)
+                .fold(None, |m: Option<f64>, s| Some(m.map_or(s, |m| m.max(s))))
+        };
+        if let (Some(inner), Some(outer)) = (
+            largest(|f| f.inner.asperity_share),
+            largest(|f| f.outer.asperity_share),
+        ) {
+            let _ = writeln!(
+                out,
+                "  mixed lubrication (Greenwood–Tripp load sharing): asperity share φ of the load up to {inner:.3e} (inner), {outer:.3e} (outer)"
             );
         }
     }

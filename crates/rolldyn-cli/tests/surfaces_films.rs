@@ -33,9 +33,11 @@ fn quasistatic_films_and_modes() {
         "critical_inlet_distance_ratio",
         "film_parameter",
         "film_stiffness_n_per_m",
+        "asperity_share",
     ] {
         assert!(f["inner"].get(k).is_some(), "films lack {k}");
     }
+    assert!(f["inner"]["asperity_share"].is_null());
     assert_eq!(f["inner"]["starvation_factor"], 1.0);
     assert!(f["inner"]["inlet_distance_ratio"].is_null());
     assert!(f["inner"]["film_parameter"].is_null());
@@ -458,6 +460,27 @@ fn mixed_lubrication_in_run_and_its_refusals() {
     );
     assert!(names.iter().any(|n| n == "ball0_asperity_share_outer"));
     std::fs::remove_dir_all(&dir).ok();
+    // The quasi-static films give each contact's share: φ = min(1, p_a/p̄)
+    // falls as Λ rises, between the balls of a loaded bearing.
+    let mut args = vec![
+        "quasistatic",
+        "--json",
+        "--speed",
+        "2000 rpm",
+        "--set",
+        mixed,
+    ];
+    args.extend_from_slice(&rough);
+    let q = json(&args, None);
+    let g = |v: &Value| v.as_f64().unwrap();
+    let films = q["films"].as_array().unwrap();
+    for f in films {
+        let share = g(&f["inner"]["asperity_share"]);
+        assert!(share > 0.0 && share < 1.0, "{share}");
+    }
+    let text_args: Vec<&str> = args.iter().copied().filter(|a| *a != "--json").collect();
+    let text = stdout(&rolldyn(&text_args, None));
+    assert!(text.contains("asperity share"), "{text}");
 
     for (extra, rule) in [
         (vec![], "surface.inner.roughness"),
