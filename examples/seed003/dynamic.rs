@@ -187,25 +187,7 @@ fn simulate(preset: &str, job: &Job) -> Result<Vibration, String> {
     let eq = match job.ratio {
         None => solver.solve(&conditions, &options),
         Some(l) => {
-            let lub = case
-                .lubricant
-                .as_ref()
-                .ok_or("the preset has no [lubricant]")?;
-            let supply = if l.is_finite() {
-                lubrication::Supply::InletDistance(l)
-            } else {
-                lubrication::Supply::Flooded
-            };
-            let inputs = FilmInputs {
-                lubricant: lubrication::Lubricant {
-                    viscosity: lub.viscosity,
-                    pressure_viscosity: lub.pressure_viscosity,
-                    pressure_model: lub.pressure_viscosity_model,
-                },
-                supply: [supply, supply],
-                roughness: [0.0, 0.0],
-                effective_modulus: rolldyn::material::effective_modulus(ball, rings),
-            };
+            let inputs = film_inputs(&case, l)?;
             solver.solve_with_films(&conditions, &options, &inputs)
         }
     }
@@ -280,6 +262,37 @@ fn simulate(preset: &str, job: &Job) -> Result<Vibration, String> {
         ball_pass_amplitude,
         peak_frequency,
         status,
+    })
+}
+
+/// The films' inputs of the case with both rings supplied at inlet
+/// distance ratio L (∞: flooded).
+pub fn film_inputs(case: &rolldyn_case::Case, l: f64) -> Result<FilmInputs, String> {
+    let lub = case
+        .lubricant
+        .as_ref()
+        .ok_or("the preset has no [lubricant]")?;
+    let supply = if l.is_finite() {
+        lubrication::Supply::InletDistance(l)
+    } else {
+        lubrication::Supply::Flooded
+    };
+    let (ball, rings) = (
+        &case.materials.ball.material,
+        &case.materials.rings.material,
+    );
+    Ok(FilmInputs {
+        lubricant: lubrication::Lubricant {
+            viscosity: lub.viscosity,
+            pressure_viscosity: lub.pressure_viscosity,
+            pressure_model: lub.pressure_viscosity_model,
+        },
+        supply: [supply, supply],
+        roughness: [
+            case.surface.composite_roughness(rolldyn::RingKind::Inner),
+            case.surface.composite_roughness(rolldyn::RingKind::Outer),
+        ],
+        effective_modulus: rolldyn::material::effective_modulus(ball, rings),
     })
 }
 

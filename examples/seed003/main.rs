@@ -31,10 +31,9 @@
 
 mod dynamic;
 
-use rolldyn::RingKind;
 use rolldyn::lubrication;
 use rolldyn::material::effective_modulus;
-use rolldyn::quasistatic::films::{FilmInputs, equilibrium_films};
+use rolldyn::quasistatic::films::equilibrium_films;
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
 use rolldyn_case::{Override, load_case, presets};
 use std::fmt::Write as _;
@@ -118,36 +117,15 @@ fn main() -> Result<(), String> {
         let eq = solver
             .solve(&conditions, &SolverOptions::default())
             .map_err(|e| e.to_string())?;
-        let lub = case
-            .lubricant
-            .as_ref()
-            .ok_or("the preset has no [lubricant]")?;
         let j = (0..eq.balls.len())
             .max_by(|&a, &b| eq.balls[a].inner.load.total_cmp(&eq.balls[b].inner.load))
             .ok_or("no balls")?;
         let contact = eq.balls[j].inner;
 
         let hertz_stiffness = 1.5 * contact.load / contact.penetration;
-        // Both rings supplied at inlet distance ratio L (∞: flooded).
-        let inputs_at = |l: f64| {
-            let supply = if l.is_finite() {
-                lubrication::Supply::InletDistance(l)
-            } else {
-                lubrication::Supply::Flooded
-            };
-            FilmInputs {
-                lubricant: lubrication::Lubricant {
-                    viscosity: lub.viscosity,
-                    pressure_viscosity: lub.pressure_viscosity,
-                    pressure_model: lub.pressure_viscosity_model,
-                },
-                supply: [supply, supply],
-                roughness: [case.surface.composite_roughness(RingKind::Inner), 0.0],
-                effective_modulus: effective_modulus(ball, rings),
-            }
-        };
+        let inputs_at = |l: f64| dynamic::film_inputs(&case, l);
         for l in RATIOS {
-            let inputs = inputs_at(l);
+            let inputs = inputs_at(l)?;
             let film = equilibrium_films(g, &eq, &inputs)[j].films[0];
             let series = lubrication::series_stiffness(hertz_stiffness, film.stiffness);
             let _ = writeln!(
@@ -202,7 +180,7 @@ fn main() -> Result<(), String> {
         let dry_k = dry.stiffness[2][2];
         for l in APPROACH_RATIOS {
             let label = ratio_label(l);
-            match solver.solve_with_films(&conditions, &options, &inputs_at(l)) {
+            match solver.solve_with_films(&conditions, &options, &inputs_at(l)?) {
                 Ok(wet) => {
                     let k = wet.stiffness[2][2];
                     let loaded = wet.balls.iter().filter(|b| b.inner.load > 0.0).count();
