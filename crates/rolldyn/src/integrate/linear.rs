@@ -206,15 +206,31 @@ impl BlockLu {
         }
     }
 
-    /// Factors σI − J.
+    /// Factors σI − J (constant-size copies for the common active block
+    /// sizes, as [`Self::solve`]; bit-identical).
     pub fn factor(&mut self, jacobian: &BlockJacobian, sigma: f64) -> Result<(), Singular> {
+        match self.block_active.len() {
+            5 => self.factor_sized(jacobian, sigma, 5),
+            9 => self.factor_sized(jacobian, sigma, 9),
+            ba => self.factor_sized(jacobian, sigma, ba),
+        }
+    }
+
+    /// [`Self::factor`]'s body for `ba` active block states.
+    #[inline(always)]
+    fn factor_sized(
+        &mut self,
+        jacobian: &BlockJacobian,
+        sigma: f64,
+        ba: usize,
+    ) -> Result<(), Singular> {
         let l = self.layout;
         assert_eq!(
             l, jacobian.layout,
             "factorization and Jacobian shapes differ"
         );
         let (b, m) = (l.block_size, l.border);
-        let (ba, ma) = (self.block_active.len(), self.border_active.len());
+        let ma = self.border_active.len();
         self.sigma = sigma;
         for (i, &r) in self.border_active.iter().enumerate() {
             for (k, &c) in self.border_active.iter().enumerate() {
@@ -288,11 +304,23 @@ impl BlockLu {
         lu_factor(&mut self.schur, ma, &mut self.schur_pivots)
     }
 
-    /// Solves (σI − J) x = r in place (`x` holds r on entry).
+    /// Solves (σI − J) x = r in place (`x` holds r on entry). The common
+    /// sizes of the active ball blocks (5: planar, 9: a free ball) get
+    /// their own constant-size copies, as [`lu_factor`]; bit-identical.
     pub fn solve(&mut self, x: &mut [f64]) {
+        match self.block_active.len() {
+            5 => self.solve_sized(x, 5),
+            9 => self.solve_sized(x, 9),
+            ba => self.solve_sized(x, ba),
+        }
+    }
+
+    /// [`Self::solve`]'s body for `ba` active block states.
+    #[inline(always)]
+    fn solve_sized(&mut self, x: &mut [f64], ba: usize) {
         let l = self.layout;
         let (b, s) = (l.block_size, l.border_start());
-        let (ba, ma) = (self.block_active.len(), self.border_active.len());
+        let ma = self.border_active.len();
         let (blocks, border) = x.split_at_mut(s);
         let xb = &mut self.border_work;
         for (v, &r) in xb.iter_mut().zip(&self.border_active) {
@@ -375,7 +403,25 @@ impl BlockLu {
 }
 
 /// In-place LU with partial pivoting of the row-major n × n matrix `a`.
+///
+/// The small sizes of the ball blocks and borders (4 to 8 active states)
+/// get their own copies, compiled for a constant n (unrolled, without
+/// bounds checks); each runs the same operations in the same order as the
+/// general one, so the results are bit-identical.
 fn lu_factor(a: &mut [f64], n: usize, pivots: &mut [usize]) -> Result<(), Singular> {
+    match n {
+        4 => lu_factor_n(a, 4, pivots),
+        5 => lu_factor_n(a, 5, pivots),
+        6 => lu_factor_n(a, 6, pivots),
+        7 => lu_factor_n(a, 7, pivots),
+        8 => lu_factor_n(a, 8, pivots),
+        _ => lu_factor_n(a, n, pivots),
+    }
+}
+
+/// [`lu_factor`]'s body, inlined into each size.
+#[inline(always)]
+fn lu_factor_n(a: &mut [f64], n: usize, pivots: &mut [usize]) -> Result<(), Singular> {
     for k in 0..n {
         let (p, max) = (k..n)
             .map(|i| (i, a[i * n + k].abs()))
@@ -404,7 +450,21 @@ fn lu_factor(a: &mut [f64], n: usize, pivots: &mut [usize]) -> Result<(), Singul
 }
 
 /// Solves with an LU from [`lu_factor`]; `x` holds the right-hand side.
+/// Small sizes get constant-n copies, as [`lu_factor`].
 fn lu_solve(lu: &[f64], n: usize, pivots: &[usize], x: &mut [f64]) {
+    match n {
+        4 => lu_solve_n(lu, 4, pivots, x),
+        5 => lu_solve_n(lu, 5, pivots, x),
+        6 => lu_solve_n(lu, 6, pivots, x),
+        7 => lu_solve_n(lu, 7, pivots, x),
+        8 => lu_solve_n(lu, 8, pivots, x),
+        _ => lu_solve_n(lu, n, pivots, x),
+    }
+}
+
+/// [`lu_solve`]'s body, inlined into each size.
+#[inline(always)]
+fn lu_solve_n(lu: &[f64], n: usize, pivots: &[usize], x: &mut [f64]) {
     for (k, &p) in pivots.iter().enumerate().take(n) {
         x.swap(k, p);
     }
