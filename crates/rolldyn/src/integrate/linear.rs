@@ -306,7 +306,7 @@ impl BlockLu {
 
     /// Solves (σI − J) x = r in place (`x` holds r on entry). The common
     /// sizes of the active ball blocks (5: planar, 9: a free ball) get
-    /// their own constant-size copies, as [`lu_factor`]; bit-identical.
+    /// their own constant-size copies, as the small dense LU; bit-identical.
     pub fn solve(&mut self, x: &mut [f64]) {
         match self.block_active.len() {
             5 => self.solve_sized(x, 5),
