@@ -99,6 +99,9 @@ pub struct ContactTable {
     /// Every column of each node side by side (a lookup reads two nodes'
     /// cache lines, not fourteen columns'), in [`COLUMNS`] order.
     nodes: Vec<TableNode>,
+    /// The constants when they do not depend on α (`hertz_circular`): a
+    /// lookup returns them as computed, without interpolating.
+    uniform: Option<HertzCoefficients>,
 }
 
 /// The columns of the table: κ, K(e), E(e), a*, b*, δ*, K_c.
@@ -150,10 +153,15 @@ impl ContactTable {
             })
             .collect();
         let [.., stiffness] = columns;
+        let uniform = match model.model {
+            HertzModel::HertzCircular => Some(model.coefficients(0.0)?),
+            HertzModel::Exact | HertzModel::HamrockBrewe => None,
+        };
         Ok(Self {
             model,
             stiffness,
             nodes,
+            uniform,
         })
     }
 
@@ -164,9 +172,13 @@ impl ContactTable {
 
     /// Interpolated Hertz constants at contact angle α \[rad\] (clamped to
     /// [0, π/2]). Allocation-free; each column the same arithmetic as its
-    /// own [`UniformPchip::eval`].
+    /// own [`UniformPchip::eval`]. Constants independent of α are returned
+    /// as computed.
     #[inline]
     pub fn at(&self, contact_angle: f64) -> HertzCoefficients {
+        if let Some(uniform) = self.uniform {
+            return uniform;
+        }
         let cell = self.stiffness.locate(contact_angle);
         let (left, right) = (&self.nodes[cell.index()], &self.nodes[cell.index() + 1]);
         let v: [f64; 7] = std::array::from_fn(|k| {
@@ -192,12 +204,58 @@ impl ContactTable {
     /// (for analytic Jacobians).
     #[inline]
     pub fn stiffness_with_derivative(&self, contact_angle: f64) -> (f64, f64) {
-        self.stiffness.eval_with_derivative(contact_angle)
+        match self.uniform {
+            Some(uniform) => (uniform.stiffness, 0.0),
+            None => self.stiffness.eval_with_derivative(contact_angle),
+        }
     }
 
     /// Interpolated K_c only (the time loop's most frequent lookup).
     #[inline]
     pub fn stiffness(&self, contact_angle: f64) -> f64 {
-        self.stiffness.eval(contact_angle)
+        match self.uniform {
+            Some(uniform) => uniform.stiffness,
+            None => self.stiffness.eval(contact_angle),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::test_bearing;
+    use crate::material::{Material, effective_modulus};
+
+    fn model(ring: RingKind, law: HertzModel) -> RacewayContactModel {
+        let ep = effective_modulus(&Material::STEEL_52100, &Material::STEEL_52100);
+        RacewayContactModel::new(&test_bearing(22), ring, ep, law)
+    }
+
+    #[test]
+    fn circular_constants_are_returned_as_computed_at_every_angle() {
+        for ring in [RingKind::Inner, RingKind::Outer] {
+            let m = model(ring, HertzModel::HertzCircular);
+            let table = ContactTable::new(m).unwrap();
+            let direct = m.coefficients(0.0).unwrap();
+            for angle in [0.0, 0.1234, 0.5, 1.2, FRAC_PI_2, -0.3] {
+                assert_eq!(table.at(angle), direct);
+                assert_eq!(table.stiffness(angle), direct.stiffness);
+                assert_eq!(
+                    table.stiffness_with_derivative(angle),
+                    (direct.stiffness, 0.0)
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn angle_dependent_constants_are_interpolated() {
+        let m = model(RingKind::Inner, HertzModel::Exact);
+        let table = ContactTable::new(m).unwrap();
+        let (low, high) = (table.at(0.1), table.at(0.6));
+        assert_ne!(low.stiffness, high.stiffness);
+        let direct = m.coefficients(0.6).unwrap();
+        assert!((high.stiffness / direct.stiffness - 1.0).abs() < 1e-6);
+        assert!((high.semi_major_coefficient / direct.semi_major_coefficient - 1.0).abs() < 1e-6);
     }
 }

@@ -35,10 +35,19 @@ pub struct RingPose {
 }
 
 impl RingPose {
-    /// The rotation matrix of the tilts.
+    /// The rotation matrix of the tilts (the identity, without sines and
+    /// cosines, when both are zero: a planar model's rings never tilt).
     pub fn rotation(&self) -> Rotation3<f64> {
+        if self.tilt_y == 0.0 && self.tilt_z == 0.0 {
+            return Rotation3::identity();
+        }
         Rotation3::from_axis_angle(&Vector3::z_axis(), self.tilt_z)
             * Rotation3::from_axis_angle(&Vector3::y_axis(), self.tilt_y)
+    }
+
+    /// The ring's unit axis, R x̂.
+    pub fn axis(&self) -> Unit<Vector3<f64>> {
+        Unit::new_unchecked(self.rotation() * Vector3::x())
     }
 }
 
@@ -58,10 +67,18 @@ pub struct GrooveCircle {
 impl GrooveCircle {
     /// The groove-centre circle of `raceway` on a ring at `pose`.
     pub fn of(raceway: &Raceway, pose: &RingPose) -> Self {
-        let rot = pose.rotation();
-        let axis = Unit::new_unchecked(rot * Vector3::x());
+        Self::with_axis(raceway, &pose.translation, pose.axis())
+    }
+
+    /// The groove-centre circle of `raceway` on a ring centred at
+    /// `translation` with unit axis `axis` (from [`RingPose::axis`]).
+    pub fn with_axis(
+        raceway: &Raceway,
+        translation: &Vector3<f64>,
+        axis: Unit<Vector3<f64>>,
+    ) -> Self {
         Self {
-            centre: pose.translation + raceway.groove_centre_axial * axis.into_inner(),
+            centre: translation + raceway.groove_centre_axial * axis.into_inner(),
             axis,
             radius: raceway.groove_centre_radius,
             groove_radius: raceway.groove_radius,

@@ -341,11 +341,12 @@ impl BearingModel {
             tilt_z: y[r + 4],
         };
         let omega_frame = y[r + 9] * Vector3::z() + y[r + 8] * tilt_axis_y(pose.tilt_z);
-        let axis = pose.rotation() * Vector3::x();
+        let unit_axis = pose.axis();
+        let axis = unit_axis.into_inner();
         let spin_speed = self.params.speed.speed_at(t);
         let inner = RingMotion {
             raceway: self.geometry.inner,
-            circle: GrooveCircle::of(&self.geometry.inner, &pose),
+            circle: GrooveCircle::with_axis(&self.geometry.inner, &pose.translation, unit_axis),
             centre: pose.translation,
             velocity: Vector3::new(y[r + 5], y[r + 6], y[r + 7]),
             omega: spin_speed * axis + omega_frame,
@@ -904,5 +905,8 @@ impl OdeSystem for BearingModel {
 /// The inner ring's tilted y axis R_z(θ_z) e_y, about which the tilt rate
 /// θ̇_y turns it (MODEL §1).
 pub(super) fn tilt_axis_y(tilt_z: f64) -> Vector3<f64> {
+    if tilt_z == 0.0 {
+        return Vector3::y();
+    }
     Rotation3::from_axis_angle(&Vector3::z_axis(), tilt_z) * Vector3::y()
 }
