@@ -161,6 +161,18 @@ pub struct BlockLu {
     /// Rows of J of the inert border states: per inert state, b' entries of
     /// each Lⱼ, then m' of A.
     inert_border_rows: Vec<f64>,
+    /// Whether each inert row above (blocks' first, block by block, then
+    /// the border's) is zero on the active states: such a state's solution
+    /// is rᵢ/σ, without the dot product. Most are (a planar model's frozen
+    /// states, angles no force depends on, accumulators of unused powers).
+    inert_row_is_zero: Vec<bool>,
+    /// Per block: whether Uⱼ (so Wⱼ) has a nonzero entry, and per block and
+    /// active border state whether that row of Lⱼ has one. A ball out of
+    /// contact with the rings is decoupled from the border (both zero);
+    /// a loaded one couples to a few border states. The solve skips the
+    /// zero products (their sums are ±0, so the results are unchanged).
+    coupled_nonzero: Vec<bool>,
+    lower_row_nonzero: Vec<bool>,
     /// A block's and the border's active part of the vector being solved.
     block_work: Vec<f64>,
     border_work: Vec<f64>,
@@ -197,6 +209,9 @@ impl BlockLu {
             schur_pivots: vec![0; ma],
             inert_block_rows: vec![0.0; n * block_inert.len() * (ba + ma)],
             inert_border_rows: vec![0.0; border_inert.len() * (n * ba + ma)],
+            inert_row_is_zero: vec![false; n * block_inert.len() + border_inert.len()],
+            coupled_nonzero: vec![true; n],
+            lower_row_nonzero: vec![true; n * border_active.len()],
             block_work: vec![0.0; ba],
             border_work: vec![0.0; ma],
             block_active,
@@ -281,15 +296,24 @@ impl BlockLu {
                     w[i * ma + k] = -ju[r * m + c];
                 }
             }
-            lu_solve_rows(d, ba, piv, w, ma);
+            let coupled = w.iter().any(|&v| v != 0.0);
+            self.coupled_nonzero[j] = coupled;
+            if coupled {
+                lu_solve_rows(d, ba, piv, w, ma);
+            }
             let lower = &mut self.lower[j * ma * ba..(j + 1) * ma * ba];
             for (i, &r) in self.border_active.iter().enumerate() {
                 for (k, &c) in self.block_active.iter().enumerate() {
                     lower[i * ba + k] = -jl[r * b + c];
                 }
+                self.lower_row_nonzero[j * ma + i] =
+                    lower[i * ba..(i + 1) * ba].iter().any(|&v| v != 0.0);
             }
             // S −= (−Lⱼ) Wⱼ
             for r in 0..ma {
+                if !coupled || !self.lower_row_nonzero[j * ma + r] {
+                    continue;
+                }
                 let srow = &mut self.schur[r * ma..(r + 1) * ma];
                 for k in 0..ba {
                     let coefficient = lower[r * ba + k];
@@ -300,6 +324,17 @@ impl BlockLu {
                     }
                 }
             }
+        }
+        let block_rows = self.inert_block_rows.chunks_exact(row_len.max(1));
+        let border_rows = self
+            .inert_border_rows
+            .chunks_exact((l.blocks * ba + ma).max(1));
+        for (zero, row) in self
+            .inert_row_is_zero
+            .iter_mut()
+            .zip(block_rows.chain(border_rows))
+        {
+            *zero = row.iter().all(|&v| v == 0.0);
         }
         lu_factor(&mut self.schur, ma, &mut self.schur_pivots)
     }
@@ -343,7 +378,13 @@ impl BlockLu {
                 block[k] = *v;
             }
             let lower = &self.lower[j * ma * ba..(j + 1) * ma * ba];
-            for (r, v) in xb.iter_mut().enumerate() {
+            let nonzero = &self.lower_row_nonzero[j * ma..(j + 1) * ma];
+            for ((r, v), _) in xb
+                .iter_mut()
+                .enumerate()
+                .zip(nonzero)
+                .filter(|(_, nz)| **nz)
+            {
                 let row = &lower[r * ba..(r + 1) * ba];
                 *v -= row.iter().zip(z.iter()).map(|(a, z)| a * z).sum::<f64>();
             }
@@ -357,7 +398,12 @@ impl BlockLu {
         for j in 0..l.blocks {
             let w = &self.coupled[j * ba * ma..(j + 1) * ba * ma];
             let block = &mut blocks[j * b..(j + 1) * b];
-            for (i, &k) in self.block_active.iter().enumerate() {
+            for (i, &k) in self
+                .block_active
+                .iter()
+                .enumerate()
+                .filter(|_| self.coupled_nonzero[j])
+            {
                 block[k] -= w[i * ma..(i + 1) * ma]
                     .iter()
                     .zip(xb.iter())
@@ -365,8 +411,12 @@ impl BlockLu {
                     .sum::<f64>();
             }
             for (q, &k) in self.block_inert.iter().enumerate() {
-                let row =
-                    &self.inert_block_rows[(j * self.block_inert.len() + q) * row_len..][..row_len];
+                let index = j * self.block_inert.len() + q;
+                if self.inert_row_is_zero[index] {
+                    block[k] = (block[k] + 0.0) / self.sigma;
+                    continue;
+                }
+                let row = &self.inert_block_rows[index * row_len..][..row_len];
                 let coupled: f64 = row[..ba]
                     .iter()
                     .zip(&self.block_active)
@@ -381,7 +431,12 @@ impl BlockLu {
             }
         }
         // The inert border states.
+        let first_border_row = l.blocks * self.block_inert.len();
         for (q, &r) in self.border_inert.iter().enumerate() {
+            if self.inert_row_is_zero[first_border_row + q] {
+                border[r] = (border[r] + 0.0) / self.sigma;
+                continue;
+            }
             let row = &self.inert_border_rows[q * (l.blocks * ba + ma)..][..l.blocks * ba + ma];
             let mut coupled = 0.0;
             for j in 0..l.blocks {
@@ -580,79 +635,120 @@ mod tests {
         }
     }
 
+    /// The test layout of the inert-state tests: a free ball's 9 states,
+    /// 22 border states, and which of them have zero Jacobian columns.
+    const INERT_LAYOUT: BlockLayout = BlockLayout {
+        blocks: 4,
+        block_size: 9,
+        border: 22,
+    };
+
+    fn inert(state: usize) -> bool {
+        let (b, s) = (INERT_LAYOUT.block_size, INERT_LAYOUT.border_start());
+        if state < s {
+            matches!(state % b, 0 | 3 | 7 | 8)
+        } else {
+            matches!(state - s, 0 | 3 | 4 | 5 | 8 | 9 | 10..=13 | 20 | 21)
+        }
+    }
+
+    /// `jac` with the entries (row, col) where `zero` holds set to 0.
+    fn zeroed(jac: &BlockJacobian, zero: impl Fn(usize, usize) -> bool) -> BlockJacobian {
+        let layout = jac.layout();
+        let (b, m, s) = (layout.block_size, layout.border, layout.border_start());
+        let at = |r: usize, c: usize| if zero(r, c) { 0.0 } else { jac.get(r, c) };
+        let mut out = BlockJacobian::zeros(layout);
+        for j in 0..layout.blocks {
+            for r in 0..b {
+                for c in 0..b {
+                    out.diag[j * b * b + r * b + c] = at(j * b + r, j * b + c);
+                }
+                for c in 0..m {
+                    out.upper[j * b * m + r * m + c] = at(j * b + r, s + c);
+                }
+            }
+            for r in 0..m {
+                for c in 0..b {
+                    out.lower[j * m * b + r * b + c] = at(s + r, j * b + c);
+                }
+            }
+        }
+        for r in 0..m {
+            for c in 0..m {
+                out.border[r * m + c] = at(s + r, s + c);
+            }
+        }
+        out
+    }
+
+    /// Solves with the reduced factorization and with the one that keeps
+    /// every state; checks the residual of the full system and that both
+    /// agree.
+    fn check_reduced(reduced: &mut BlockLu, jac: &BlockJacobian, sigma: f64) {
+        let layout = jac.layout();
+        let n = layout.dimension();
+        let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
+        reduced.factor(jac, sigma).unwrap();
+        let mut x = rhs.clone();
+        reduced.solve(&mut x);
+        let mut kept = BlockLu::new(layout);
+        kept.factor(jac, sigma).unwrap();
+        let mut x_kept = rhs.clone();
+        kept.solve(&mut x_kept);
+        let mut jx = vec![0.0; n];
+        jac.multiply(&x, &mut jx);
+        for i in 0..n {
+            let r = (sigma * x[i] - jx[i] - rhs[i]).abs();
+            assert!(r < 1e-10, "σ {sigma}, state {i}: residual {r:e}");
+            let d = (x[i] - x_kept[i]).abs();
+            assert!(
+                d < 1e-9 * (1.0 + x_kept[i].abs()),
+                "σ {sigma}, state {i}: {d:e}"
+            );
+        }
+    }
+
     /// With zero Jacobian columns for some states (inert in every block,
     /// and in the border), the reduced factorization solves the full
     /// system to round-off, and equals the factorization that keeps them.
     #[test]
     fn inert_states_are_left_out_and_recovered() {
-        let layout = BlockLayout {
-            blocks: 4,
-            block_size: 9,
-            border: 22,
-        };
-        let (b, s) = (layout.block_size, layout.border_start());
-        let inert = |state: usize| {
-            if state < s {
-                matches!(state % b, 0 | 3 | 7 | 8)
-            } else {
-                matches!(state - s, 0 | 3 | 4 | 5 | 8 | 9 | 10..=13 | 20 | 21)
-            }
-        };
-        let n = layout.dimension();
-        let mut jac = sample(layout);
-        // Zero the inert columns.
-        let mut full = vec![0.0; n * n];
-        for r in 0..n {
-            for c in 0..n {
-                full[r * n + c] = if inert(c) { 0.0 } else { jac.get(r, c) };
-            }
-        }
-        let mut zeroed = BlockJacobian::zeros(layout);
-        for j in 0..layout.blocks {
-            for r in 0..b {
-                for c in 0..b {
-                    zeroed.diag[j * b * b + r * b + c] = full[(j * b + r) * n + j * b + c];
-                }
-                for c in 0..layout.border {
-                    zeroed.upper[j * b * layout.border + r * layout.border + c] =
-                        full[(j * b + r) * n + s + c];
-                }
-            }
-            for r in 0..layout.border {
-                for c in 0..b {
-                    zeroed.lower[j * layout.border * b + r * b + c] = full[(s + r) * n + j * b + c];
-                }
-            }
-        }
-        for r in 0..layout.border {
-            for c in 0..layout.border {
-                zeroed.border[r * layout.border + c] = full[(s + r) * n + s + c];
-            }
-        }
-        jac = zeroed;
-        let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
+        let jac = zeroed(&sample(INERT_LAYOUT), |_, c| inert(c));
+        let mut reduced = BlockLu::with_inert(INERT_LAYOUT, inert);
+        assert_eq!(reduced.block_active.len(), 5);
+        assert_eq!(reduced.border_active.len(), 10);
         for sigma in [0.01, 1.0, 100.0] {
-            let mut reduced = BlockLu::with_inert(layout, inert);
-            assert_eq!(reduced.block_active.len(), 5);
-            assert_eq!(reduced.border_active.len(), 10);
-            reduced.factor(&jac, sigma).unwrap();
-            let mut x = rhs.clone();
-            reduced.solve(&mut x);
-            let mut kept = BlockLu::new(layout);
-            kept.factor(&jac, sigma).unwrap();
-            let mut x_kept = rhs.clone();
-            kept.solve(&mut x_kept);
-            let mut jx = vec![0.0; n];
-            jac.multiply(&x, &mut jx);
-            for i in 0..n {
-                let r = (sigma * x[i] - jx[i] - rhs[i]).abs();
-                assert!(r < 1e-10, "σ {sigma}, state {i}: residual {r:e}");
-                let d = (x[i] - x_kept[i]).abs();
-                assert!(
-                    d < 1e-9 * (1.0 + x_kept[i].abs()),
-                    "σ {sigma}, state {i}: {d:e}"
-                );
-            }
+            check_reduced(&mut reduced, &jac, sigma);
+        }
+    }
+
+    /// Zero couplings, as a ball out of contact has: block 1 decoupled
+    /// from the border (Uⱼ = Lⱼ = 0), block 2 reaching only border state 2,
+    /// and inert states whose rows are zero. The same factorization then
+    /// refactors the fully coupled matrix (the flags follow the matrix).
+    #[test]
+    fn zero_couplings_and_rows_are_skipped_exactly() {
+        let (b, s) = (INERT_LAYOUT.block_size, INERT_LAYOUT.border_start());
+        let block = |state: usize| (state < s).then_some(state / b);
+        let coupled = zeroed(&sample(INERT_LAYOUT), |_, c| inert(c));
+        let sparse = zeroed(&coupled, |r, c| {
+            let across = block(r) != block(c);
+            (across && (block(r) == Some(1) || block(c) == Some(1)))
+                || (block(c) == Some(2) && r >= s && r != s + 2)
+                || (inert(r) && r % 2 == 0)
+        });
+        let mut reduced = BlockLu::with_inert(INERT_LAYOUT, inert);
+        for sigma in [0.01, 1.0, 100.0] {
+            check_reduced(&mut reduced, &sparse, sigma);
+            assert!(!reduced.coupled_nonzero[1] && reduced.coupled_nonzero[2]);
+            let ma = reduced.border_active.len();
+            let rows = |j: usize| reduced.lower_row_nonzero[j * ma..(j + 1) * ma].to_vec();
+            assert!(rows(1).iter().all(|nz| !nz));
+            assert_eq!(rows(2).iter().filter(|nz| **nz).count(), 1);
+            assert!(reduced.inert_row_is_zero.iter().any(|z| *z));
+            check_reduced(&mut reduced, &coupled, sigma);
+            assert!(reduced.coupled_nonzero.iter().all(|c| *c));
+            assert!(reduced.inert_row_is_zero.iter().all(|z| !z));
         }
     }
 
