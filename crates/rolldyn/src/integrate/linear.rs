@@ -224,26 +224,92 @@ impl BlockLu {
     /// Factors σI − J (constant-size copies for the common active block
     /// sizes, as [`Self::solve`]; bit-identical).
     pub fn factor(&mut self, jacobian: &BlockJacobian, sigma: f64) -> Result<(), Singular> {
+        self.gather(jacobian);
+        self.refactor(jacobian, sigma)
+    }
+
+    /// Factors σI − J for a new σ, where J is the Jacobian of the last
+    /// [`Self::factor`]: the parts of the factorization that do not depend
+    /// on σ (the inert states' rows, −Lⱼ, which couplings are zero) are
+    /// reused. The same result as [`Self::factor`], bit for bit; a
+    /// W-method refactors at every new step size between Jacobians.
+    pub fn refactor(&mut self, jacobian: &BlockJacobian, sigma: f64) -> Result<(), Singular> {
+        assert_eq!(
+            self.layout, jacobian.layout,
+            "factorization and Jacobian shapes differ"
+        );
         match self.block_active.len() {
-            5 => self.factor_sized(jacobian, sigma, 5),
-            9 => self.factor_sized(jacobian, sigma, 9),
-            ba => self.factor_sized(jacobian, sigma, ba),
+            5 => self.refactor_sized(jacobian, sigma, 5),
+            9 => self.refactor_sized(jacobian, sigma, 9),
+            ba => self.refactor_sized(jacobian, sigma, ba),
         }
     }
 
-    /// [`Self::factor`]'s body for `ba` active block states.
+    /// The σ-independent parts of the factorization of J: the rows of the
+    /// inert states on the active ones, −Lⱼ on the active states, and
+    /// which of them, and which Uⱼ, are zero.
+    fn gather(&mut self, jacobian: &BlockJacobian) {
+        let l = self.layout;
+        assert_eq!(
+            l, jacobian.layout,
+            "factorization and Jacobian shapes differ"
+        );
+        let (b, m) = (l.block_size, l.border);
+        let (ba, ma) = (self.block_active.len(), self.border_active.len());
+        let (bi, border_row_len) = (self.block_inert.len(), l.blocks * ba + ma);
+        let row_len = ba + ma;
+        for (q, &r) in self.border_inert.iter().enumerate() {
+            let row = &mut self.inert_border_rows[q * border_row_len..][..border_row_len];
+            for j in 0..l.blocks {
+                for (k, &c) in self.block_active.iter().enumerate() {
+                    row[j * ba + k] = jacobian.lower[j * m * b + r * b + c];
+                }
+            }
+            for (k, &c) in self.border_active.iter().enumerate() {
+                row[l.blocks * ba + k] = jacobian.border[r * m + c];
+            }
+            self.inert_row_is_zero[l.blocks * bi + q] = row.iter().all(|&v| v == 0.0);
+        }
+        for j in 0..l.blocks {
+            let (jd, ju, jl) = (
+                &jacobian.diag[j * b * b..(j + 1) * b * b],
+                &jacobian.upper[j * b * m..(j + 1) * b * m],
+                &jacobian.lower[j * m * b..(j + 1) * m * b],
+            );
+            for (q, &r) in self.block_inert.iter().enumerate() {
+                let row = &mut self.inert_block_rows[(j * bi + q) * row_len..][..row_len];
+                for (k, &c) in self.block_active.iter().enumerate() {
+                    row[k] = jd[r * b + c];
+                }
+                for (k, &c) in self.border_active.iter().enumerate() {
+                    row[ba + k] = ju[r * m + c];
+                }
+                self.inert_row_is_zero[j * bi + q] = row.iter().all(|&v| v == 0.0);
+            }
+            self.coupled_nonzero[j] = self
+                .block_active
+                .iter()
+                .any(|&r| self.border_active.iter().any(|&c| ju[r * m + c] != 0.0));
+            let lower = &mut self.lower[j * ma * ba..(j + 1) * ma * ba];
+            for (i, &r) in self.border_active.iter().enumerate() {
+                for (k, &c) in self.block_active.iter().enumerate() {
+                    lower[i * ba + k] = -jl[r * b + c];
+                }
+                self.lower_row_nonzero[j * ma + i] =
+                    lower[i * ba..(i + 1) * ba].iter().any(|&v| v != 0.0);
+            }
+        }
+    }
+
+    /// [`Self::refactor`]'s body for `ba` active block states.
     #[inline(always)]
-    fn factor_sized(
+    fn refactor_sized(
         &mut self,
         jacobian: &BlockJacobian,
         sigma: f64,
         ba: usize,
     ) -> Result<(), Singular> {
         let l = self.layout;
-        assert_eq!(
-            l, jacobian.layout,
-            "factorization and Jacobian shapes differ"
-        );
         let (b, m) = (l.block_size, l.border);
         let ma = self.border_active.len();
         self.sigma = sigma;
@@ -253,34 +319,11 @@ impl BlockLu {
             }
             self.schur[i * ma + i] += sigma;
         }
-        let row_len = ba + ma;
-        for (q, &r) in self.border_inert.iter().enumerate() {
-            let row = &mut self.inert_border_rows[q * (l.blocks * ba + ma)..];
-            for j in 0..l.blocks {
-                for (k, &c) in self.block_active.iter().enumerate() {
-                    row[j * ba + k] = jacobian.lower[j * m * b + r * b + c];
-                }
-            }
-            for (k, &c) in self.border_active.iter().enumerate() {
-                row[l.blocks * ba + k] = jacobian.border[r * m + c];
-            }
-        }
         for j in 0..l.blocks {
-            let (jd, ju, jl) = (
+            let (jd, ju) = (
                 &jacobian.diag[j * b * b..(j + 1) * b * b],
                 &jacobian.upper[j * b * m..(j + 1) * b * m],
-                &jacobian.lower[j * m * b..(j + 1) * m * b],
             );
-            for (q, &r) in self.block_inert.iter().enumerate() {
-                let row = &mut self.inert_block_rows[(j * self.block_inert.len() + q) * row_len..]
-                    [..row_len];
-                for (k, &c) in self.block_active.iter().enumerate() {
-                    row[k] = jd[r * b + c];
-                }
-                for (k, &c) in self.border_active.iter().enumerate() {
-                    row[ba + k] = ju[r * m + c];
-                }
-            }
             let d = &mut self.diag[j * ba * ba..(j + 1) * ba * ba];
             for (i, &r) in self.block_active.iter().enumerate() {
                 for (k, &c) in self.block_active.iter().enumerate() {
@@ -290,28 +333,22 @@ impl BlockLu {
             }
             let piv = &mut self.diag_pivots[j * ba..(j + 1) * ba];
             lu_factor(d, ba, piv)?;
+            // A block decoupled from the border (Uⱼ = 0) has Wⱼ = 0 and no
+            // share in the Schur complement; the solve skips it.
+            if !self.coupled_nonzero[j] {
+                continue;
+            }
             let w = &mut self.coupled[j * ba * ma..(j + 1) * ba * ma];
             for (i, &r) in self.block_active.iter().enumerate() {
                 for (k, &c) in self.border_active.iter().enumerate() {
                     w[i * ma + k] = -ju[r * m + c];
                 }
             }
-            let coupled = w.iter().any(|&v| v != 0.0);
-            self.coupled_nonzero[j] = coupled;
-            if coupled {
-                lu_solve_rows(d, ba, piv, w, ma);
-            }
-            let lower = &mut self.lower[j * ma * ba..(j + 1) * ma * ba];
-            for (i, &r) in self.border_active.iter().enumerate() {
-                for (k, &c) in self.block_active.iter().enumerate() {
-                    lower[i * ba + k] = -jl[r * b + c];
-                }
-                self.lower_row_nonzero[j * ma + i] =
-                    lower[i * ba..(i + 1) * ba].iter().any(|&v| v != 0.0);
-            }
+            lu_solve_rows(d, ba, piv, w, ma);
+            let lower = &self.lower[j * ma * ba..(j + 1) * ma * ba];
             // S −= (−Lⱼ) Wⱼ
             for r in 0..ma {
-                if !coupled || !self.lower_row_nonzero[j * ma + r] {
+                if !self.lower_row_nonzero[j * ma + r] {
                     continue;
                 }
                 let srow = &mut self.schur[r * ma..(r + 1) * ma];
@@ -324,17 +361,6 @@ impl BlockLu {
                     }
                 }
             }
-        }
-        let block_rows = self.inert_block_rows.chunks_exact(row_len.max(1));
-        let border_rows = self
-            .inert_border_rows
-            .chunks_exact((l.blocks * ba + ma).max(1));
-        for (zero, row) in self
-            .inert_row_is_zero
-            .iter_mut()
-            .zip(block_rows.chain(border_rows))
-        {
-            *zero = row.iter().all(|&v| v == 0.0);
         }
         lu_factor(&mut self.schur, ma, &mut self.schur_pivots)
     }
@@ -749,6 +775,27 @@ mod tests {
             check_reduced(&mut reduced, &coupled, sigma);
             assert!(reduced.coupled_nonzero.iter().all(|c| *c));
             assert!(reduced.inert_row_is_zero.iter().all(|z| !z));
+        }
+    }
+
+    /// Refactoring for a new σ gives the bits of a fresh factorization.
+    #[test]
+    fn refactor_equals_factor_bit_for_bit() {
+        let jac = zeroed(&sample(INERT_LAYOUT), |r, c| {
+            inert(c) || (inert(r) && r % 3 == 0) || (r < 9 && c >= 36)
+        });
+        let n = INERT_LAYOUT.dimension();
+        let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.3).cos()).collect();
+        let mut reused = BlockLu::with_inert(INERT_LAYOUT, inert);
+        reused.factor(&jac, 5.0).unwrap();
+        for sigma in [0.01, 1.0, 100.0] {
+            reused.refactor(&jac, sigma).unwrap();
+            let mut fresh = BlockLu::with_inert(INERT_LAYOUT, inert);
+            fresh.factor(&jac, sigma).unwrap();
+            let (mut x, mut y) = (rhs.clone(), rhs.clone());
+            reused.solve(&mut x);
+            fresh.solve(&mut y);
+            assert!(x.iter().zip(&y).all(|(a, b)| a.to_bits() == b.to_bits()));
         }
     }
 

@@ -182,6 +182,9 @@ pub struct Rosenbrock {
     jacobian_age: Option<u32>,
     /// Step size of the current factorization.
     factored_step: Option<f64>,
+    /// Whether the factorization has gathered the current Jacobian (a new
+    /// step size then only refactors, [`BlockLu::refactor`]).
+    gathered: bool,
     t_prev: f64,
     h_prev: f64,
     y_prev: Vec<f64>,
@@ -260,6 +263,7 @@ impl Rosenbrock {
             work: JacobianWork::new(system),
             jacobian_age: None,
             factored_step: None,
+            gathered: false,
             t_prev: t0,
             h_prev: 0.0,
             y_prev: y0.to_vec(),
@@ -316,6 +320,7 @@ impl Rosenbrock {
         self.stats.jacobian_rhs_evaluations += cost;
         self.jacobian_age = Some(0);
         self.factored_step = None;
+        self.gathered = false;
     }
 
     /// Stages and candidate for step h; the scaled error norm (∞ when the
@@ -325,11 +330,14 @@ impl Rosenbrock {
         let n = self.y.len();
         if self.factored_step != Some(h) {
             self.stats.factorizations += 1;
-            if self
-                .lu
-                .factor(&self.jacobian, 1.0 / (h * co.gamma))
-                .is_err()
-            {
+            let sigma = 1.0 / (h * co.gamma);
+            let factored = if self.gathered {
+                self.lu.refactor(&self.jacobian, sigma)
+            } else {
+                self.gathered = true;
+                self.lu.factor(&self.jacobian, sigma)
+            };
+            if factored.is_err() {
                 self.factored_step = None;
                 return f64::INFINITY;
             }
@@ -431,6 +439,7 @@ impl Checkpoint for Rosenbrock {
             })?),
         };
         self.factored_step = input.opt_f64()?;
+        self.gathered = false;
         let j = &mut self.jacobian;
         input.f64s_into("jacobian diagonal blocks", &mut j.diag)?;
         input.f64s_into("jacobian upper border", &mut j.upper)?;
@@ -438,6 +447,7 @@ impl Checkpoint for Rosenbrock {
         input.f64s_into("jacobian corner", &mut j.border)?;
         self.stats.restore(input)?;
         if let Some(h) = self.factored_step {
+            self.gathered = true;
             if self
                 .lu
                 .factor(&self.jacobian, 1.0 / (h * self.coefficients.gamma))
