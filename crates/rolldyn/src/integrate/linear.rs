@@ -485,7 +485,7 @@ impl BlockLu {
 
 /// In-place LU with partial pivoting of the row-major n × n matrix `a`.
 ///
-/// The small sizes of the ball blocks and borders (4 to 8 active states)
+/// The small sizes of the ball blocks and borders (4 to 12 active states)
 /// get their own copies, compiled for a constant n (unrolled, without
 /// bounds checks); each runs the same operations in the same order as the
 /// general one, so the results are bit-identical.
@@ -496,6 +496,10 @@ fn lu_factor(a: &mut [f64], n: usize, pivots: &mut [usize]) -> Result<(), Singul
         6 => lu_factor_n(a, 6, pivots),
         7 => lu_factor_n(a, 7, pivots),
         8 => lu_factor_n(a, 8, pivots),
+        9 => lu_factor_n(a, 9, pivots),
+        10 => lu_factor_n(a, 10, pivots),
+        11 => lu_factor_n(a, 11, pivots),
+        12 => lu_factor_n(a, 12, pivots),
         _ => lu_factor_n(a, n, pivots),
     }
 }
@@ -539,6 +543,10 @@ fn lu_solve(lu: &[f64], n: usize, pivots: &[usize], x: &mut [f64]) {
         6 => lu_solve_n(lu, 6, pivots, x),
         7 => lu_solve_n(lu, 7, pivots, x),
         8 => lu_solve_n(lu, 8, pivots, x),
+        9 => lu_solve_n(lu, 9, pivots, x),
+        10 => lu_solve_n(lu, 10, pivots, x),
+        11 => lu_solve_n(lu, 11, pivots, x),
+        12 => lu_solve_n(lu, 12, pivots, x),
         _ => lu_solve_n(lu, n, pivots, x),
     }
 }
