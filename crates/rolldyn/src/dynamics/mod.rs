@@ -27,6 +27,7 @@
 //! | `thermal_coupling` | the thermal network advanced alongside a run, oil viscosity fed back |
 //! | `checkpoint` | the model's memory (contact episodes, thermal network) in a run's checkpoint |
 
+mod ball_equations;
 mod ball_pass;
 pub mod checkpoint;
 mod coupling;

@@ -29,6 +29,7 @@
 //! bookkeeping is in [`super::energy`], output quantities in
 //! [`super::outputs`]. Gravity (optional) acts along −z.
 
+use super::ball_equations::{BallContact, ContactShare, Shares};
 use super::ball_pass::BallPass;
 use super::coupling::BallCoupling;
 use super::drag::DragParameters;
@@ -446,117 +447,6 @@ impl BearingModel {
 }
 
 impl BearingModel {
-    /// Derivatives of ball j's states (into `dy`, its 9 entries, 10 with
-    /// the spin angle ψ) and what its contacts do to the rings and cage.
-    #[allow(clippy::too_many_arguments)]
-    fn ball_rhs(
-        &self,
-        t: f64,
-        j: usize,
-        y: &[f64],
-        inner: &RingMotion,
-        outer: &RingMotion,
-        dy: &mut [f64],
-        films_power: bool,
-        mut sink: Option<&mut Dissipation>,
-    ) -> BallCoupling {
-        let l = self.layout;
-        let p = &self.params;
-        let g = p.gravity;
-        let c = l.cage();
-        let (ball, [ex, er, et]) = self.ball_kinematics(j, y);
-        let w = ball.omega;
-        let mut force = Vector3::new(0.0, 0.0, -self.ball_mass * g);
-        let mut moment = Vector3::zeros();
-        let mut out = BallCoupling::default();
-        let episodes = &self.episodes[j];
-        // The film in the approach: each closed contact's share of the
-        // films' work (dynamics::film).
-        let mut film_work = [None; 2];
-        if let Some(cn) =
-            self.race_contact(inner, &self.inner_table, &episodes[0], &ball, Want::Forces)
-        {
-            film_work[0] = cn.film_work;
-            force += cn.force + cn.surface.ball_force;
-            moment += cn.moment + cn.surface.ball_moment;
-            out.ring_force += cn.surface.ring_force - cn.force;
-            out.ring_moment += (cn.geometry.contact_point - inner.centre).cross(&(-cn.force))
-                - cn.couple
-                + (ball.centre - inner.centre).cross(&cn.surface.ring_force);
-            out.dissipation += cn.dissipation;
-            if let Some(d) = sink.as_deref_mut() {
-                d.inner.add(&cn.losses);
-            }
-        }
-        if let Some(cn) =
-            self.race_contact(outer, &self.outer_table, &episodes[1], &ball, Want::Forces)
-        {
-            film_work[1] = cn.film_work;
-            force += cn.force + cn.surface.ball_force;
-            moment += cn.moment + cn.surface.ball_moment;
-            out.outer_force += cn.surface.ring_force - cn.force;
-            out.dissipation += cn.dissipation;
-            if let Some(d) = sink.as_deref_mut() {
-                d.outer.add(&cn.losses);
-            }
-        }
-        if let Some(pc) = self.pocket_contact(j, y, &ball) {
-            force += pc.force;
-            moment += pc.moment;
-            out.cage_force -= pc.force;
-            let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
-            out.cage_torque += (pc.point - cage_centre).cross(&(-pc.force)).x;
-            out.dissipation += pc.dissipation;
-            if let Some(d) = sink.as_deref_mut() {
-                d.pocket_friction += pc.friction_power;
-                d.pocket_damping += pc.dissipation - pc.friction_power;
-            }
-        }
-        let b = l.ball(j);
-        let drag = &p.drag;
-        if drag.effective_density > 0.0 {
-            let v_t = y[b + 1] * y[b + 5];
-            let w_rel = w - y[b + 5] * ex;
-            let (f, m) = drag.ball(self.geometry.ball_diameter, v_t, &w_rel);
-            force += f * et;
-            moment += m;
-            out.dissipation -= f * v_t + m.dot(&w);
-            if let Some(d) = sink {
-                d.ball_drag -= f * v_t + m.dot(&w);
-            }
-        }
-        let (r, phi_dot, vr) = (y[b + 1], y[b + 5], y[b + 4]);
-        let (wr, wt) = (y[b + 7], y[b + 8]);
-        let m = self.ball_mass;
-        let inertia = self.ball_inertia;
-        dy[0] = y[b + 3];
-        dy[1] = vr;
-        dy[2] = phi_dot;
-        dy[3] = force.dot(&ex) / m;
-        dy[4] = force.dot(&er) / m + r * phi_dot * phi_dot;
-        dy[5] = (force.dot(&et) / m - 2.0 * vr * phi_dot) / r;
-        dy[6] = moment.dot(&ex) / inertia;
-        dy[7] = moment.dot(&er) / inertia + phi_dot * wt;
-        dy[8] = moment.dot(&et) / inertia - phi_dot * wr;
-        if l.ball_spin_angle {
-            // ψ̇ = |ω_b − φ̇ e_x|: the ball's turning relative to the cage
-            // frame carries its surface past the contacts (MODEL §1, §6).
-            dy[StateLayout::SPIN_ANGLE] = (w - phi_dot * ex).norm();
-        }
-        if p.planar {
-            dy[0] = 0.0;
-            dy[3] = 0.0;
-            dy[7] = 0.0;
-            dy[8] = 0.0;
-        }
-        // Only the film-work accumulator needs this, and no Jacobian reads
-        // it (`inert`): `block_rhs` leaves it out.
-        if films_power {
-            self.add_film_work(t, y, j, dy, &film_work, inner, &mut out);
-        }
-        out
-    }
-
     /// Derivatives of the border states (rings, cage, energy accumulators;
     /// into `dy`, which starts at the inner ring's first state) for the
     /// summed ball couplings.
@@ -772,6 +662,46 @@ impl BlockSplit for BearingModel {
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
         let (inner, _) = self.ring_motion(t, y);
         self.border_rhs_with(t, y, &inner, &BallCoupling::read(coupling), dy_border, None);
+    }
+
+    fn memo_len(&self) -> usize {
+        ContactShare::MEMO_LEN
+    }
+
+    fn block_rhs_memo(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+        memo: &mut [f64],
+    ) {
+        let (inner, outer) = self.ring_motion(t, y);
+        let shares = Shares::Evaluate(Some(memo));
+        self.ball_rhs_with(t, block, y, (&inner, &outer), dy_block, false, None, shares)
+            .write(coupling);
+    }
+
+    /// Only the contact the border state touches is evaluated again
+    /// ([`super::ball_equations`]).
+    fn block_rhs_border_column(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        column: usize,
+        memo: &[f64],
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+    ) {
+        let (inner, outer) = self.ring_motion(t, y);
+        let shares = Shares::Reuse {
+            memo,
+            contact: BallContact::touched_by(&self.layout, column),
+        };
+        self.ball_rhs_with(t, block, y, (&inner, &outer), dy_block, false, None, shares)
+            .write(coupling);
     }
 
     /// Frozen states (planar motion, a locked cage whirl, a fixed outer

@@ -58,6 +58,45 @@ pub trait BlockSplit: Sync {
     /// Writes f_B for the summed coupling into `dy_border`.
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]);
 
+    /// Length of a block's memo (0: the split keeps none): what
+    /// [`Self::block_rhs_memo`] stores of the unperturbed point for
+    /// [`Self::block_rhs_border_column`].
+    fn memo_len(&self) -> usize {
+        0
+    }
+
+    /// [`Self::block_rhs`] at the Jacobian's unperturbed point, also
+    /// filling the block's `memo`.
+    fn block_rhs_memo(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+        _memo: &mut [f64],
+    ) {
+        self.block_rhs(t, y, block, dy_block, coupling);
+    }
+
+    /// [`Self::block_rhs`] with border state `column` (counted from the
+    /// border's first state) perturbed in `y` and the block's `memo` of the
+    /// unperturbed point: a split may reuse there what the perturbed state
+    /// does not reach. Must give the bits of [`Self::block_rhs`].
+    #[allow(clippy::too_many_arguments)]
+    fn block_rhs_border_column(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        _column: usize,
+        _memo: &[f64],
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+    ) {
+        self.block_rhs(t, y, block, dy_block, coupling);
+    }
+
     /// Whether the blocks may be evaluated on several threads at once
     /// (worth it when a block costs microseconds). The Jacobian is the
     /// same either way. Default: no.
@@ -83,6 +122,9 @@ pub struct JacobianWork {
     f: Vec<f64>,
     f_perturbed: Vec<f64>,
     couplings: Vec<f64>,
+    /// Per block: the split's memo of the unperturbed point.
+    memos: Vec<f64>,
+    memo_len: usize,
     coupling_sum: Vec<f64>,
     coupling_trial: Vec<f64>,
     /// Per block: see [`SAVED`], [`DELTA`], [`SCRATCH`].
@@ -94,10 +136,10 @@ impl JacobianWork {
     /// Work space for `system`.
     pub fn new(system: &impl OdeSystem) -> Self {
         let n = system.dimension();
-        let (layout, c) = system
+        let (layout, c, memo_len) = system
             .blocks()
-            .map(|s| (s.block_layout(), s.coupling_len()))
-            .unwrap_or((BlockLayout::dense(n), 0));
+            .map(|s| (s.block_layout(), s.coupling_len(), s.memo_len()))
+            .unwrap_or((BlockLayout::dense(n), 0, 0));
         let blocks = layout.blocks;
         let block_stride = SCRATCH + layout.block_size.max(layout.border) + 2 * c;
         let mut scale = vec![0.0; n];
@@ -114,6 +156,8 @@ impl JacobianWork {
             f: vec![0.0; n],
             f_perturbed: vec![0.0; n],
             couplings: vec![0.0; blocks * c],
+            memos: vec![0.0; blocks * memo_len],
+            memo_len,
             coupling_sum: vec![0.0; c],
             coupling_trial: vec![0.0; c],
             block_scratch: vec![0.0; blocks * block_stride],
@@ -191,12 +235,23 @@ fn by_blocks(
     // Base values f_j, c_j, f_B of the split at the unperturbed point (the
     // split may be an approximation of the system's rhs).
     let y = &work.y;
-    each_block2(
-        parallel,
-        (&mut work.f[..start], b),
-        (&mut work.couplings, c),
-        |j, f_j, c_j| split.block_rhs(t, y, j, f_j, c_j),
-    );
+    let memo_len = work.memo_len;
+    if memo_len > 0 {
+        each_block3(
+            parallel,
+            (&mut work.f[..start], b),
+            (&mut work.couplings, c),
+            (&mut work.memos, memo_len),
+            |j, f_j, c_j, memo| split.block_rhs_memo(t, y, j, f_j, c_j, memo),
+        );
+    } else {
+        each_block2(
+            parallel,
+            (&mut work.f[..start], b),
+            (&mut work.couplings, c),
+            |j, f_j, c_j| split.block_rhs(t, y, j, f_j, c_j),
+        );
+    }
     work.coupling_sum.fill(0.0);
     for cj in work.couplings.chunks(c) {
         for (s, v) in work.coupling_sum.iter_mut().zip(cj) {
@@ -276,14 +331,15 @@ fn by_blocks(
         let delta = work.increment(col);
         let saved = work.y[col];
         work.y[col] += delta;
-        let (y, f) = (&work.y, &work.f);
+        let (y, f, memos) = (&work.y, &work.f, &work.memos);
         each_block2(
             parallel,
             (&mut jacobian.upper, b * m),
             (&mut work.block_scratch, stride),
             |j, upper, scratch| {
                 let (head, rest) = scratch[SCRATCH..].split_at_mut(b.max(m));
-                split.block_rhs(t, y, j, &mut head[..b], &mut rest[..c]);
+                let memo = &memos[j * memo_len..(j + 1) * memo_len];
+                split.block_rhs_border_column(t, y, j, p, memo, &mut head[..b], &mut rest[..c]);
                 for r in 0..b {
                     upper[r * m + p] = (head[r] - f[j * b + r]) / delta;
                 }

@@ -31,6 +31,7 @@ mod cage_guide;
 mod common;
 mod convergence;
 mod efficiency;
+mod jacobian_reuse;
 mod life_reference;
 mod quasistatic_fixed_tilt;
 mod quasistatic_high_speed;
