@@ -27,7 +27,8 @@
 //! ([`super::race_contact`]), ball–pocket ([`super::pocket`]), drag
 //! ([`super::drag`]), ring supports ([`super::supports`]); the energy
 //! bookkeeping is in [`super::energy`], output quantities in
-//! [`super::outputs`]. Gravity (optional) acts along −z.
+//! [`super::outputs`]; a ball's equations sum its contacts' shares in
+//! [`super::ball_equations`]. Gravity (optional) acts along −z.
 
 use super::ball_equations::{BallContact, ContactShare, Shares};
 use super::ball_pass::BallPass;
