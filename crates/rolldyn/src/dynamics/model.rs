@@ -28,7 +28,7 @@
 //! ([`super::drag`]), ring supports ([`super::supports`]); the energy
 //! bookkeeping is in [`super::energy`], output quantities in
 //! [`super::outputs`]; a ball's equations sum its contacts' shares in
-//! [`super::ball_equations`]. Gravity (optional) acts along −z.
+//! `dynamics::ball_equations`. Gravity (optional) acts along −z.
 
 use super::ball_equations::{BallContact, ContactShare, Shares};
 use super::ball_pass::BallPass;
@@ -685,7 +685,7 @@ impl BlockSplit for BearingModel {
     }
 
     /// Only the contact the border state touches is evaluated again
-    /// ([`super::ball_equations`]).
+    /// (`dynamics::ball_equations`).
     fn block_rhs_border_column(
         &self,
         t: f64,
