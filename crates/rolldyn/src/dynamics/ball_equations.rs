@@ -135,6 +135,22 @@ impl BearingModel {
         )
     }
 
+    /// A ball's block of the block split (`BlockSplit::block_rhs` and its
+    /// memo variants): no films' work, no losses, the shares from `shares`.
+    pub(super) fn block_rhs_from(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+        shares: Shares<'_>,
+    ) {
+        let (inner, outer) = self.ring_motion(t, y);
+        self.ball_rhs_with(t, block, y, (&inner, &outer), dy_block, false, None, shares)
+            .write(coupling);
+    }
+
     /// [`Self::ball_rhs`] with the contact shares from `shares`.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn ball_rhs_with(

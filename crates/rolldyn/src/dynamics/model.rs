@@ -655,9 +655,7 @@ impl BlockSplit for BearingModel {
         dy_block: &mut [f64],
         coupling: &mut [f64],
     ) {
-        let (inner, outer) = self.ring_motion(t, y);
-        self.ball_rhs(t, block, y, &inner, &outer, dy_block, false, None)
-            .write(coupling);
+        self.block_rhs_from(t, y, block, dy_block, coupling, Shares::Evaluate(None));
     }
 
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
@@ -678,10 +676,8 @@ impl BlockSplit for BearingModel {
         coupling: &mut [f64],
         memo: &mut [f64],
     ) {
-        let (inner, outer) = self.ring_motion(t, y);
         let shares = Shares::Evaluate(Some(memo));
-        self.ball_rhs_with(t, block, y, (&inner, &outer), dy_block, false, None, shares)
-            .write(coupling);
+        self.block_rhs_from(t, y, block, dy_block, coupling, shares);
     }
 
     /// Only the contact the border state touches is evaluated again
@@ -696,13 +692,11 @@ impl BlockSplit for BearingModel {
         dy_block: &mut [f64],
         coupling: &mut [f64],
     ) {
-        let (inner, outer) = self.ring_motion(t, y);
         let shares = Shares::Reuse {
             memo,
             contact: BallContact::touched_by(&self.layout, column),
         };
-        self.ball_rhs_with(t, block, y, (&inner, &outer), dy_block, false, None, shares)
-            .write(coupling);
+        self.block_rhs_from(t, y, block, dy_block, coupling, shares);
     }
 
     /// Frozen states (planar motion, a locked cage whirl, a fixed outer
