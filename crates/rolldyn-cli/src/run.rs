@@ -188,6 +188,8 @@ impl Channels {
             ("housing_force_z_n", "N"),
             ("cage_velocity_y_m_s", "m/s"),
             ("cage_velocity_z_m_s", "m/s"),
+            ("pocket_force_sum_n", "N"),
+            ("pocket_force_max_n", "N"),
             ("drive_work_j", "J"),
             ("dissipated_energy_j", "J"),
             ("mechanical_energy_j", "J"),
@@ -251,6 +253,7 @@ impl Channels {
                     &Vector3::new(0.0, y[o + 2], y[o + 3]),
                 )
             });
+        let (pocket_sum, pocket_max) = model.pocket_forces(y);
         row.clear();
         row.extend_from_slice(&[
             t,
@@ -280,6 +283,8 @@ impl Channels {
             housing.z,
             y[c + 3],
             y[c + 4],
+            pocket_sum,
+            pocket_max,
             drive,
             dissipated,
             model.energy(t, y).total(),

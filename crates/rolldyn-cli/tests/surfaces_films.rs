@@ -138,6 +138,8 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
         "outer_ring_acceleration_z_m_s2 [m/s^2]",
         "housing_force_y_n [N]",
         "cage_velocity_z_m_s [m/s]",
+        "pocket_force_max_n [N]",
+        "pocket_force_sum_n [N]",
     ] {
         assert!(list.contains(channel), "--list lacks {channel}");
     }

@@ -30,6 +30,19 @@ impl BearingModel {
         }
     }
 
+    /// The ball–pocket normal forces at state `y`: their sum over the
+    /// balls and the largest \[N\] (the cage's impact history, MODEL §5).
+    pub fn pocket_forces(&self, y: &[f64]) -> (f64, f64) {
+        (0..self.layout.balls)
+            .filter_map(|j| {
+                let (ball, _) = self.ball_kinematics(j, y);
+                self.pocket_contact(j, y, &ball)
+            })
+            .fold((0.0, 0.0), |(sum, largest), c| {
+                (sum + c.normal_force, f64::max(largest, c.normal_force))
+            })
+    }
+
     /// The FASTSIM stick/slip map of ball j's contact with `ring` at state
     /// `y`: `map` receives every element (seed 002 Fig. 11); returns the
     /// contact's output, or None when the contact is open. Other traction

@@ -15,6 +15,8 @@ pub(super) struct PocketContact {
     pub(super) offset: f64,
     /// Force on the ball \[N\].
     pub(super) force: Vector3<f64>,
+    /// Its normal part (the pocket law's force, elastic and damping) \[N\].
+    pub(super) normal_force: f64,
     /// Moment on the ball about its centre \[N·m\].
     pub(super) moment: Vector3<f64>,
     /// Contact point on the ball \[m\].
@@ -64,6 +66,7 @@ impl BearingModel {
         let friction = cage.pocket_friction.force(normal, &slip_t);
         Some(PocketContact {
             force: -normal * n + friction,
+            normal_force: normal,
             moment: arm.cross(&friction),
             point,
             offset,

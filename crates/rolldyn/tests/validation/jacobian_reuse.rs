@@ -33,6 +33,8 @@ fn border_columns_with_the_contacts_memo_are_bit_identical() {
     });
     let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
     let mut y = model.state_from_equilibrium(&eq);
+    // At the quasi-static state the balls sit mid-pocket.
+    assert_eq!(model.pocket_forces(&y), (0.0, 0.0));
     let layout = model.layout();
     // Cage turned by 0.1 mm at its pitch radius (half clearance 87.5 µm)
     // and moved off centre: every pocket pushes its ball.
@@ -78,4 +80,9 @@ fn border_columns_with_the_contacts_memo_are_bit_identical() {
         })
         .sum();
     assert!(cage_torque.abs() > 1e-3, "cage torque {cage_torque}");
+    let (sum, largest) = model.pocket_forces(&y);
+    assert!(
+        largest > 0.0 && sum >= largest * 2.0,
+        "{sum} N, {largest} N"
+    );
 }
