@@ -21,8 +21,8 @@ mod traction;
 pub use bearing::PARAMETRIZATIONS;
 use bearing::bearing;
 pub use dynamics::{
-    DEFAULT_POCKET_FRICTION, GUIDE_MAX_ECCENTRICITY, GUIDE_STOP_STIFFNESS, GUPTA_WALL_FORCE,
-    STANDARD_GRAVITY,
+    DEFAULT_POCKET_FRICTION, DEFAULT_POCKET_MIN_FILM, GUIDE_MAX_ECCENTRICITY, GUIDE_STOP_STIFFNESS,
+    GUPTA_WALL_FORCE, STANDARD_GRAVITY,
 };
 pub use life::{Life, MAX_VISCOSITY_RATIO};
 pub use lubricant::Lubricant;
@@ -191,6 +191,10 @@ pub struct Cage {
     pub pocket_law: PocketLawChoice,
     /// Film force at the pocket wall (gupta_film) \[N\].
     pub pocket_wall_force: f64,
+    /// Whether the pocket oil film damps by squeeze.
+    pub pocket_squeeze_film: bool,
+    /// Least pocket film of the squeeze damping \[m\].
+    pub pocket_min_film: f64,
     /// Cage material, if given.
     pub material: Option<NamedMaterial>,
     /// Unbalance m_u e \[kg·m\].
@@ -763,6 +767,9 @@ fn cage(c: &RawCage) -> Result<Cage, Invalid> {
         pocket_law: c.pocket_law.unwrap_or(PocketLawChoice::Linear),
         pocket_wall_force: checked("cage.pocket_wall_force", &c.pocket_wall_force, non_negative)?
             .unwrap_or(GUPTA_WALL_FORCE),
+        pocket_squeeze_film: c.pocket_squeeze_film.unwrap_or(false),
+        pocket_min_film: checked("cage.pocket_min_film", &c.pocket_min_film, positive)?
+            .unwrap_or(DEFAULT_POCKET_MIN_FILM),
         material: c
             .material
             .as_ref()

@@ -155,6 +155,12 @@ pub struct RawCage {
     /// Film force at the pocket wall F_w of the gupta_film law (default
     /// 11 N, seed 001 eq 28).
     pub pocket_wall_force: Option<Quantity<Force>>,
+    /// Squeeze-film damping of the pocket oil film (default false; needs
+    /// `[lubricant]`; a rolldyn extension, docs/dynamics.md).
+    pub pocket_squeeze_film: Option<bool>,
+    /// Least oil film in the pocket for the squeeze damping (default
+    /// 1 µm, of the order of the pocket's composite roughness).
+    pub pocket_min_film: Option<Quantity<Length>>,
     /// Cage material (needed by the hertz and gupta_film pocket laws).
     pub material: Option<MaterialChoice>,
     /// Unbalance m_u e of the cage (mass × radius), at the cage angle.

@@ -539,6 +539,34 @@ fn pocket_laws_supports_and_load_tables() {
         "{BASE}{CAGE}pocket_law = \"gupta_film\"\npocket_wall_force = \"-1 N\"\n"
     ));
     check(&e, "cage.pocket_wall_force", 23, &["must not be negative"]);
+    // The pocket squeeze film needs the lubricant's viscosity; its least
+    // film defaults to 1 µm and must be positive.
+    let squeeze = format!(
+        "{BASE}{CAGE}pocket_stiffness = \"1e7 N/m\"\npocket_squeeze_film = true\n"
+    );
+    let case = load_case("case.toml", &squeeze, &[]).unwrap();
+    let e = case.dynamics_parameters().unwrap_err();
+    assert_eq!(e.key, "cage.pocket_squeeze_film");
+    assert!(e.rule.contains("[lubricant]"), "{}", e.rule);
+    let lubricated = format!(
+        "{squeeze}\n[lubricant]\nviscosity = \"0.05 Pa.s\"\npressure_viscosity = \"2e-8 1/Pa\"\n"
+    );
+    let p = load_case("case.toml", &lubricated, &[])
+        .unwrap()
+        .dynamics_parameters()
+        .unwrap();
+    let s = p.cage.pocket_squeeze.unwrap();
+    assert_eq!((s.viscosity, s.min_film), (0.05, 1e-6));
+    assert!((s.ball_radius - 3.175e-3).abs() < 1e-15);
+    let off = load_case(
+        "case.toml",
+        &format!("{BASE}{CAGE}pocket_stiffness = \"1e7 N/m\"\n"),
+        &[],
+    )
+    .unwrap();
+    assert!(off.dynamics_parameters().unwrap().cage.pocket_squeeze.is_none());
+    let e = err(&format!("{BASE}{CAGE}pocket_min_film = \"0 um\"\n"));
+    check(&e, "cage.pocket_min_film", 22, &["must be positive"]);
     // Constant loads and a load table exclude each other.
     let e = err(&format!(
         "{BASE}load_profile = [{{ time = \"0 s\", force_x = \"100 N\" }}]\n"

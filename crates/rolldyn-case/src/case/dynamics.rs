@@ -5,8 +5,8 @@
 use super::{Case, Invalid};
 use crate::raw::{CageGuidance, PocketLawChoice};
 use rolldyn::RingKind;
-use rolldyn::cage::PocketLaw;
 use rolldyn::cage::pocket::hertz_pocket_stiffness;
+use rolldyn::cage::{PocketLaw, PocketSqueeze};
 use rolldyn::dynamics::{CageParameters, DynamicsParameters, GuideLand};
 use rolldyn::operating::LoadProfile;
 use rolldyn::traction::ModifiedCoulomb;
@@ -14,6 +14,12 @@ use rolldyn::traction::ModifiedCoulomb;
 /// Film force at the pocket wall of the gupta_film law \[N\] (seed 001
 /// eq 28: K'_c = 11/C_p with C_p the per-side clearance).
 pub const GUPTA_WALL_FORCE: f64 = 11.0;
+
+/// Default least pocket film of the squeeze damping \[m\]: of the order
+/// of the composite roughness of a ball (R_q ≈ 0.02 µm) and a machined
+/// polymer pocket (R_a 0.4–1.6 µm). An assumption; only used with
+/// `cage.pocket_squeeze_film`.
+pub const DEFAULT_POCKET_MIN_FILM: f64 = 1e-6;
 
 /// Default ball–pocket friction coefficient (lubricated steel on cage
 /// material; seeds 001 and 002 use 0.01–0.1).
@@ -91,6 +97,7 @@ impl Case {
             )?,
             pocket_shape: c.pocket_shape,
             pocket_law: self.pocket_law()?,
+            pocket_squeeze: self.pocket_squeeze()?,
             unbalance: c.unbalance,
             pocket_friction: ModifiedCoulomb {
                 friction: c.pocket_friction,
@@ -179,6 +186,27 @@ impl Case {
                 damping,
             },
         })
+    }
+
+    /// The pocket film's squeeze damping, if asked for: η₀ from the
+    /// lubricant, R = D/2.
+    fn pocket_squeeze(&self) -> Result<Option<PocketSqueeze>, Invalid> {
+        let c = &self.cage;
+        if !c.pocket_squeeze_film {
+            return Ok(None);
+        }
+        let lubricant = self.lubricant.as_ref().ok_or_else(|| {
+            Invalid::new(
+                "cage.pocket_squeeze_film",
+                Some("true".into()),
+                "the pocket squeeze film needs a [lubricant] section (its viscosity)",
+            )
+        })?;
+        Ok(Some(PocketSqueeze {
+            viscosity: lubricant.viscosity,
+            ball_radius: 0.5 * self.bearing.geometry.ball_diameter,
+            min_film: c.pocket_min_film,
+        }))
     }
 
     /// The cage guide land, when the cage is ring-guided and whirls: land

@@ -1,5 +1,6 @@
 //! The cage (MODEL §5): ball–pocket contact laws and pocket shapes
-//! ([`pocket`]), the hydrodynamic guide land ([`guide`]) and the cage data
+//! ([`pocket`]), the pocket oil film's squeeze damping ([`squeeze`]), the
+//! hydrodynamic guide land ([`guide`]) and the cage data
 //! the dynamic model needs, including a rotating unbalance.
 //!
 //! Sources: seed 001 (Gupta-type cage model: eqs 25–39), seed 002 (linear
@@ -7,9 +8,11 @@
 
 pub mod guide;
 pub mod pocket;
+pub mod squeeze;
 
 pub use guide::{GuideForces, GuideLand};
 pub use pocket::{PocketLaw, PocketShape};
+pub use squeeze::PocketSqueeze;
 
 use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use crate::traction::ModifiedCoulomb;
@@ -29,6 +32,9 @@ pub struct CageParameters {
     pub pocket_shape: PocketShape,
     /// Ball–pocket normal force law.
     pub pocket_law: PocketLaw,
+    /// Squeeze-film damping of the pocket oil film, if lubricated and
+    /// asked for (a rolldyn extension; [`squeeze`]).
+    pub pocket_squeeze: Option<PocketSqueeze>,
     /// Pocket friction.
     pub pocket_friction: ModifiedCoulomb,
     /// Whether the cage centre may whirl (false: rotation only, seed 002).
@@ -48,6 +54,9 @@ impl CageParameters {
         require_positive("cage_pitch_radius", self.pitch_radius)?;
         require_positive("pocket_clearance", self.pocket_clearance)?;
         self.pocket_law.validate()?;
+        if let Some(squeeze) = &self.pocket_squeeze {
+            squeeze.validate()?;
+        }
         self.pocket_friction.validate()?;
         require_non_negative("unbalance", self.unbalance)
     }
@@ -108,6 +117,7 @@ mod tests {
             pocket_clearance: 0.175e-3,
             pocket_shape,
             pocket_law,
+            pocket_squeeze: None,
             pocket_friction: ModifiedCoulomb {
                 friction: 0.1,
                 stick_speed: 0.0,

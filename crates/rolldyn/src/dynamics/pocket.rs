@@ -3,7 +3,9 @@
 //! Ball–pocket (MODEL §5; [`crate::cage::pocket`]): cylindrical or
 //! spherical pockets at the cage pitch radius, `linear`, `hertz` or
 //! `gupta_film` normal law, modified-Coulomb friction on the slip at the
-//! contact point.
+//! contact point, and optionally the oil film's squeeze damping
+//! ([`crate::cage::squeeze`]). Friction follows the law's normal force
+//! only: the squeeze film is a pressure, its shear is left out.
 
 use super::model::{BallMotion, BearingModel};
 use crate::cage::PocketShape;
@@ -15,7 +17,9 @@ pub(super) struct PocketContact {
     pub(super) offset: f64,
     /// Force on the ball \[N\].
     pub(super) force: Vector3<f64>,
-    /// Its normal part (the pocket law's force, elastic and damping) \[N\].
+    /// Its normal part (the pocket law's force, elastic and damping, plus
+    /// the squeeze film's, which is negative when the ball leaves the wall)
+    /// \[N\].
     pub(super) normal_force: f64,
     /// Moment on the ball about its centre \[N·m\].
     pub(super) moment: Vector3<f64>,
@@ -51,7 +55,8 @@ impl BearingModel {
         };
         let offset = perp.norm();
         let half_clearance = 0.5 * cage.pocket_clearance;
-        if !cage.pocket_law.acts(offset, half_clearance) {
+        let squeezed = cage.pocket_squeeze.is_some() && offset > 0.0;
+        if !squeezed && !cage.pocket_law.acts(offset, half_clearance) {
             return None;
         }
         let n = perp / offset;
@@ -59,11 +64,14 @@ impl BearingModel {
         let pocket_point_velocity = velocity + spin.cross(&(q - centre));
         let rate = (v - pocket_point_velocity).dot(&n);
         let law = cage.pocket_law.force(offset, half_clearance, rate);
-        let normal = law.total;
+        let squeeze = cage.pocket_squeeze.map_or(0.0, |s| {
+            s.force(cage.pocket_shape, offset, half_clearance, rate)
+        });
+        let normal = law.total + squeeze;
         let arm = point - q;
         let slip = (v + w.cross(&arm)) - (velocity + spin.cross(&(point - centre)));
         let slip_t = slip - slip.dot(&n) * n;
-        let friction = cage.pocket_friction.force(normal, &slip_t);
+        let friction = cage.pocket_friction.force(law.total, &slip_t);
         Some(PocketContact {
             force: -normal * n + friction,
             normal_force: normal,

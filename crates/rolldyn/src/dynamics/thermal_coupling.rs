@@ -17,7 +17,8 @@
 //!    milliseconds);
 //! 4. sets η₀ of the EHL traction to the Walther viscosity at the contact
 //!    inlet, taken as the mean of the ball and mean-ring temperatures, and
-//!    the guide land's to the viscosity at the oil node.
+//!    the guide land's and the pocket squeeze film's to the viscosity at
+//!    the oil node.
 //!
 //! The step that changes the viscosity tells the integrator
 //! (`accept_step` returns true), which re-evaluates the right-hand side.
@@ -188,7 +189,8 @@ impl BearingModel {
         self.thermal.as_deref()
     }
 
-    /// η₀ of the EHL traction and of the guide land, if `viscosities`.
+    /// η₀ of the EHL traction, and of the guide land and the pocket
+    /// squeeze film (the oil node's), if `viscosities`.
     pub(super) fn apply_viscosities(&mut self, viscosities: Option<(f64, f64)>) {
         let Some((contact, land)) = viscosities else {
             return;
@@ -198,6 +200,9 @@ impl BearingModel {
         }
         if let Some(guide) = &mut self.params.cage.guide {
             guide.viscosity = land;
+        }
+        if let Some(squeeze) = &mut self.params.cage.pocket_squeeze {
+            squeeze.viscosity = land;
         }
     }
 
@@ -349,6 +354,7 @@ mod tests {
                     damping: 20.0,
                 },
                 unbalance: 0.0,
+                pocket_squeeze: None,
                 pocket_friction: ModifiedCoulomb {
                     friction: 0.05,
                     stick_speed: 0.0,

@@ -485,6 +485,7 @@ mod tests {
                     damping: 20.0,
                 },
                 unbalance: 0.0,
+                pocket_squeeze: None,
                 pocket_friction: friction,
                 whirl: false,
                 guide: None,

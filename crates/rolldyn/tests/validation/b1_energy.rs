@@ -53,6 +53,7 @@ fn model(configure: impl Fn(&mut DynamicsParameters)) -> BearingModel {
                 damping: 0.0,
             },
             unbalance: 0.0,
+            pocket_squeeze: None,
             pocket_friction: ModifiedCoulomb {
                 friction: 0.0,
                 stick_speed: 0.0,

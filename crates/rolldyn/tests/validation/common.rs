@@ -101,6 +101,7 @@ pub fn seed000_dynamics(radial_load: f64) -> DynamicsParameters {
                 damping: 20.0,
             },
             unbalance: 0.0,
+            pocket_squeeze: None,
             pocket_friction: friction,
             whirl: true,
             guide: None,
@@ -164,6 +165,7 @@ pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium)
                 damping: 20.0,
             },
             unbalance: 0.0,
+            pocket_squeeze: None,
             pocket_friction: ModifiedCoulomb {
                 friction: 0.05,
                 stick_speed: 0.0,

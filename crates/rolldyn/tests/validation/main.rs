@@ -32,6 +32,7 @@ mod common;
 mod convergence;
 mod efficiency;
 mod jacobian_reuse;
+mod pocket_squeeze;
 mod life_reference;
 mod quasistatic_fixed_tilt;
 mod quasistatic_high_speed;

@@ -1,0 +1,323 @@
+//! Squeeze-film damping of a ball in its lubricated pocket (a rolldyn
+//! extension of MODEL §5; none of the seeds has it).
+//!
+//! Seed 001's `gupta_film` law (eqs 26–28) gives the pocket oil film a
+//! stiffness but no damping, so a cage on its pocket films has an
+//! undamped mode (the 3.6–3.8 kHz rattle of docs/validation.md). An oil
+//! film between approaching surfaces resists the approach: this module
+//! adds that squeeze-film force, from the isoviscous Reynolds equation for
+//! rigid surfaces with the half-Sommerfeld (Gümbel) condition, i.e. only
+//! the film being squeezed carries pressure; the one being opened cavitates.
+//!
+//! Ball radius R, per-side clearance c, ball-centre offset d = ε c
+//! towards the wall, approach rate ḋ. The gap at angle φ from the
+//! direction of offset is h = c (1 − ε cos φ), so the wall there is
+//! approached at ḋ cos φ.
+//!
+//! **Cylindrical pocket** (axis along the cage radius). Along the pocket
+//! axis the wall is straight and the ball's surface recedes as z²/(2R):
+//! at each φ the film is that of a cylinder of radius R approaching a
+//! plane, whose load per unit length is 3√2 π η V R^{3/2} / h^{3/2}
+//! (short-bearing approximation; Hamrock, Schmid & Jacobson,
+//! *Fundamentals of Fluid Film Lubrication*, 2nd ed., ch. 10, rigid
+//! cylinder in normal approach). Summed over the approached half of the
+//! pocket (R dφ, component cos φ):
+//! ```text
+//! F = 3√2 π η R^{5/2} c^{−3/2} ḋ I(ε),   I(ε) = ∫_{−π/2}^{π/2} cos²φ (1 − ε cos φ)^{−3/2} dφ
+//! ```
+//! The band that carries the film is √(2Rh) wide against a circumferential
+//! length scale R√(2h/c), a ratio √(c/R) (0.15 for the 7008C), so the
+//! short-bearing approximation holds to O(c/R). The pocket must be longer
+//! than the band (√(2Rc) ≈ 0.8 mm for the 7008C).
+//!
+//! **Spherical pocket.** On the sphere h = c (1 − ε cos θ); the
+//! axisymmetric Reynolds equation integrates in closed form over the
+//! approached hemisphere (regular at the pole, p = 0 at its rim):
+//! ```text
+//! F = 6π η R⁴ c^{−3} ḋ J(ε),   J(ε) = ∫₀¹ (1 − u²)/(1 − ε u)³ du = Σ_k (k+2)/(k+3) ε^k
+//!                                    = 1/(1 − ε) + (ln(1 − ε) + ε + ε²/2)/ε³
+//! ```
+//! Both tend to the sphere–plane result 6π η R_eq² ḋ/h (R_eq = R²/c,
+//! h = c(1 − ε)) for the spherical pocket, and to 12π η R^{5/2} ḋ /
+//! (c^{3/2}(1 − ε)) for the cylindrical one, as the ball nears the wall.
+//!
+//! Moving away from the near wall (ḋ < 0) squeezes the far one: the same
+//! formulas with ε → −ε. The film on the approached side is held at
+//! h ≥ h_min (`min_film`, e.g. the composite roughness), i.e. ε ≤ 1 −
+//! h_min/c; beyond the wall (d > c, the solid contact of the normal law)
+//! the squeeze damping stays at its h_min value. The force is purely
+//! dissipative: it stores no energy, and its power F ḋ ≥ 0 is dissipated.
+//!
+//! I(ε) is an incomplete elliptic integral: it is tabulated once per
+//! process, as (1 − ε) I(ε), which is bounded (2√2 at the wall), against
+//! (1 − ε)^¼, in which it is smooth, and interpolated (monotone cubic) in
+//! the time loop.
+
+use super::PocketShape;
+use crate::error::{InvalidParameter, require_non_negative, require_positive};
+use crate::math::interp::UniformPchip;
+use std::f64::consts::{PI, SQRT_2};
+use std::sync::OnceLock;
+
+/// Squeeze-film damping of the pocket oil film.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PocketSqueeze {
+    /// Oil viscosity η \[Pa·s\] (the lubricant's η₀; the thermal coupling
+    /// updates it with the guide land's).
+    pub viscosity: f64,
+    /// Ball radius R \[m\].
+    pub ball_radius: f64,
+    /// Least film h_min on the approached side \[m\].
+    pub min_film: f64,
+}
+
+impl PocketSqueeze {
+    /// Checks the parameters.
+    pub fn validate(&self) -> Result<(), InvalidParameter> {
+        require_non_negative("pocket_squeeze_viscosity", self.viscosity)?;
+        require_positive("ball_radius", self.ball_radius)?;
+        require_positive("pocket_min_film", self.min_film)
+    }
+
+    /// Squeeze-film force on the ball \[N\] at offset d from the pocket
+    /// centre, per-side clearance c and approach rate ḋ (towards the wall
+    /// the ball is offset to): positive pushes the ball back towards the
+    /// pocket centre. Its sign is that of ḋ, so F ḋ ≥ 0.
+    #[inline]
+    pub fn force(&self, shape: PocketShape, offset: f64, half_clearance: f64, rate: f64) -> f64 {
+        self.damping(shape, offset, half_clearance, rate) * rate
+    }
+
+    /// Damping coefficient F/ḋ \[N·s/m\] for an approach rate of the sign
+    /// of `rate` (the film on the approached side).
+    #[inline]
+    pub fn damping(&self, shape: PocketShape, offset: f64, half_clearance: f64, rate: f64) -> f64 {
+        let c = half_clearance;
+        let r = self.ball_radius;
+        let most = 1.0 - self.min_film / c;
+        let toward = (offset / c).min(1.0);
+        let eccentricity = if rate >= 0.0 { toward } else { -toward }.min(most);
+        match shape {
+            PocketShape::Cylindrical => {
+                // I(ε) = f(√(1−ε))/(1−ε), the film on the approached side c(1−ε).
+                let film = c * (1.0 - eccentricity);
+                3.0 * SQRT_2
+                    * PI
+                    * self.viscosity
+                    * r
+                    * r
+                    * (r / c).sqrt()
+                    * cylinder_film_integral((1.0 - eccentricity).sqrt())
+                    / film
+            }
+            PocketShape::Spherical => {
+                6.0 * PI * self.viscosity * (r * r / c).powi(2) / c
+                    * sphere_film_integral(eccentricity)
+            }
+        }
+    }
+}
+
+/// (1 − ε) I(ε) of the cylindrical pocket at x = √(1 − ε), x ∈ [0, √2]
+/// (clamped), from the table. The table's abscissa is √x: near the wall
+/// the function goes as 2√2 + O(x² ln x), which is C³ in √x and not in x.
+#[inline]
+pub fn cylinder_film_integral(x: f64) -> f64 {
+    cylinder_table().eval(x.sqrt())
+}
+
+/// J(ε) of the spherical pocket, ε ∈ [−1, 1): the power series (k+2)/(k+3)
+/// εᵏ near 0, where the closed form cancels, the closed form elsewhere.
+#[inline]
+pub fn sphere_film_integral(eccentricity: f64) -> f64 {
+    let e = eccentricity;
+    if e.abs() < 0.05 {
+        // Terms to k = 12: the remainder is below 0.05¹³ ≈ 1e-17.
+        let mut sum = 0.0;
+        for k in (0..=12).rev() {
+            sum = sum * e + (k as f64 + 2.0) / (k as f64 + 3.0);
+        }
+        sum
+    } else {
+        1.0 / (1.0 - e) + ((-e).ln_1p() + e + 0.5 * e * e) / (e * e * e)
+    }
+}
+
+/// Nodes of the cylindrical table on √x ∈ [0, 2^¼].
+const TABLE_NODES: usize = 1025;
+
+fn cylinder_table() -> &'static UniformPchip {
+    static TABLE: OnceLock<UniformPchip> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        let h = SQRT_2.sqrt() / (TABLE_NODES - 1) as f64;
+        let y = (0..TABLE_NODES)
+            .map(|i| cylinder_film_quadrature((i as f64 * h).powi(2)))
+            .collect();
+        UniformPchip::new(0.0, h, y)
+    })
+}
+
+/// (1 − ε) I(ε) at x = √(1 − ε) by quadrature (the table's source).
+/// For ε > 0 the peak of the integrand at φ = 0, of width √(1 − ε), is
+/// spread out by t = tan(φ/2) = a tan ϑ, a = √((1 − ε)/(1 + ε)):
+/// (1 − ε) I = 4/√(1 + ε) ∫₀^{atan(1/a)} cos²φ √(1 + t²) cos ϑ dϑ.
+pub fn cylinder_film_quadrature(x: f64) -> f64 {
+    let e = 1.0 - x * x;
+    if x <= 0.0 {
+        return 2.0 * SQRT_2;
+    }
+    if e > 0.0 {
+        let a = x / (2.0 - x * x).sqrt();
+        let integrand = |theta: f64| {
+            let t = a * theta.tan();
+            let cos_phi = (1.0 - t * t) / (1.0 + t * t);
+            cos_phi * cos_phi * (1.0 + t * t).sqrt() * theta.cos()
+        };
+        4.0 / (1.0 + e).sqrt() * simpson(integrand, 0.0, (1.0 / a).atan())
+    } else {
+        let integrand = |phi: f64| {
+            let c = phi.cos();
+            c * c / (1.0 - e * c).powf(1.5)
+        };
+        (1.0 - e) * 2.0 * simpson(integrand, 0.0, 0.5 * PI)
+    }
+}
+
+/// Composite Simpson rule, 2000 intervals (smooth integrands: error
+/// below 1e-12).
+fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+    const N: usize = 2000;
+    let h = (b - a) / N as f64;
+    let inner: f64 = (1..N)
+        .map(|i| f(a + i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 })
+        .sum();
+    (f(a) + f(b) + inner) * h / 3.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Brute-force I(ε) by the midpoint rule on φ, 2·10⁵ cells.
+    fn brute_cylinder(e: f64) -> f64 {
+        let n = 200_000;
+        let h = PI / n as f64;
+        (0..n)
+            .map(|i| {
+                let c = (-0.5 * PI + (i as f64 + 0.5) * h).cos();
+                c * c / (1.0 - e * c).powf(1.5)
+            })
+            .sum::<f64>()
+            * h
+    }
+
+    #[test]
+    fn cylinder_integral_known_values() {
+        // ε = 0: ∫ cos² over a half turn = π/2.
+        assert!((cylinder_film_quadrature(1.0) - 0.5 * PI).abs() < 1e-12);
+        for e in [-1.0, -0.5, 0.3, 0.9, 0.99, 0.999] {
+            let x = (1.0f64 - e).sqrt();
+            let want = (1.0 - e) * brute_cylinder(e);
+            let got = cylinder_film_quadrature(x);
+            assert!((got - want).abs() < 1e-7 * want, "ε {e}: {got} vs {want}");
+        }
+        // The wall limit 2√2 is approached continuously.
+        let near = cylinder_film_quadrature(1e-4);
+        assert!((near - 2.0 * SQRT_2).abs() < 1e-3, "{near}");
+    }
+
+    #[test]
+    fn cylinder_table_matches_quadrature_between_nodes() {
+        let mut worst: f64 = 0.0;
+        for i in 0..997 {
+            let x = SQRT_2 * (i as f64 + 0.37) / 997.0;
+            let want = cylinder_film_quadrature(x);
+            worst = worst.max((cylinder_film_integral(x) - want).abs() / want);
+        }
+        assert!(worst < 1e-7, "worst relative table error {worst:e}");
+    }
+
+    #[test]
+    fn sphere_integral_series_and_closed_form_agree() {
+        assert!((sphere_film_integral(0.0) - 2.0 / 3.0).abs() < 1e-15);
+        // Direct quadrature of ∫₀¹ (1 − u²)/(1 − εu)³ du.
+        for e in [-1.0, -0.3, -0.049, 0.049, 0.051, 0.5, 0.9, 0.99] {
+            let want = if e < 0.95 {
+                simpson(|u| (1.0 - u * u) / (1.0 - e * u).powi(3), 0.0, 1.0)
+            } else {
+                // Simpson misses the peak at u = 1; the series, 2·10⁴ terms.
+                (0..20_000)
+                    .map(|k| (k as f64 + 2.0) / (k as f64 + 3.0) * e.powi(k))
+                    .sum()
+            };
+            let got = sphere_film_integral(e);
+            assert!((got - want).abs() < 1e-9 * want, "ε {e}: {got} vs {want}");
+        }
+    }
+
+    fn squeeze() -> PocketSqueeze {
+        PocketSqueeze {
+            viscosity: 0.02,
+            ball_radius: 4e-3,
+            min_film: 1e-8,
+        }
+    }
+
+    #[test]
+    fn near_the_wall_both_tend_to_their_plane_limits() {
+        let s = squeeze();
+        let c = 1e-4;
+        let d = c - 1e-7;
+        let h = c - d;
+        let r = s.ball_radius;
+        // Sphere in a sphere → sphere–plane with R_eq = R²/c.
+        let sphere = s.damping(PocketShape::Spherical, d, c, 1.0);
+        let plane = 6.0 * PI * s.viscosity * (r * r / c).powi(2) / h;
+        assert!((sphere / plane - 1.0).abs() < 0.02, "{}", sphere / plane);
+        // Cylindrical pocket → 12π η R^{5/2} /(c^{3/2}(1 − ε)).
+        let cylinder = s.damping(PocketShape::Cylindrical, d, c, 1.0);
+        let limit = 12.0 * PI * s.viscosity * r.powf(2.5) / (c.powf(1.5) * (h / c));
+        assert!(
+            (cylinder / limit - 1.0).abs() < 0.02,
+            "{}",
+            cylinder / limit
+        );
+    }
+
+    #[test]
+    fn force_opposes_the_motion_and_is_held_at_the_least_film() {
+        let s = squeeze();
+        let c = 1e-4;
+        for shape in [PocketShape::Cylindrical, PocketShape::Spherical] {
+            for d in [0.0, 0.3 * c, 0.9 * c, 1.2 * c] {
+                assert!(s.force(shape, d, c, 1e-3) > 0.0);
+                assert!(s.force(shape, d, c, -1e-3) < 0.0);
+                // Approaching the near wall is damped more than the far one.
+                if d > 0.0 {
+                    assert!(s.damping(shape, d, c, 1.0) > s.damping(shape, d, c, -1.0));
+                }
+            }
+            // At and beyond the wall: the h_min value.
+            let at_floor = s.damping(shape, c - s.min_film, c, 1.0);
+            assert_eq!(s.damping(shape, c, c, 1.0), at_floor);
+            assert_eq!(s.damping(shape, 1.5 * c, c, 1.0), at_floor);
+            // Centred, the two directions are the same film.
+            assert_eq!(
+                s.damping(shape, 0.0, c, 1.0),
+                s.damping(shape, 0.0, c, -1.0)
+            );
+        }
+    }
+
+    #[test]
+    fn damping_is_proportional_to_viscosity() {
+        let s = squeeze();
+        let double = PocketSqueeze {
+            viscosity: 2.0 * s.viscosity,
+            ..s
+        };
+        let shape = PocketShape::Cylindrical;
+        let ratio = double.damping(shape, 5e-5, 1e-4, 1.0) / s.damping(shape, 5e-5, 1e-4, 1.0);
+        assert!((ratio - 2.0).abs() < 1e-14);
+    }
+}
