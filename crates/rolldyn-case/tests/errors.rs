@@ -541,9 +541,8 @@ fn pocket_laws_supports_and_load_tables() {
     check(&e, "cage.pocket_wall_force", 23, &["must not be negative"]);
     // The pocket squeeze film needs the lubricant's viscosity; its least
     // film defaults to 1 µm and must be positive.
-    let squeeze = format!(
-        "{BASE}{CAGE}pocket_stiffness = \"1e7 N/m\"\npocket_squeeze_film = true\n"
-    );
+    let squeeze =
+        format!("{BASE}{CAGE}pocket_stiffness = \"1e7 N/m\"\npocket_squeeze_film = true\n");
     let case = load_case("case.toml", &squeeze, &[]).unwrap();
     let e = case.dynamics_parameters().unwrap_err();
     assert_eq!(e.key, "cage.pocket_squeeze_film");
@@ -564,7 +563,13 @@ fn pocket_laws_supports_and_load_tables() {
         &[],
     )
     .unwrap();
-    assert!(off.dynamics_parameters().unwrap().cage.pocket_squeeze.is_none());
+    assert!(
+        off.dynamics_parameters()
+            .unwrap()
+            .cage
+            .pocket_squeeze
+            .is_none()
+    );
     let e = err(&format!("{BASE}{CAGE}pocket_min_film = \"0 um\"\n"));
     check(&e, "cage.pocket_min_film", 22, &["must be positive"]);
     // Constant loads and a load table exclude each other.

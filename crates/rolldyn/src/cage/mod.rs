@@ -65,8 +65,8 @@ impl CageParameters {
     /// \[Hz\], or None when every pocket spring is damped or acts only
     /// beyond the clearance. The `gupta_film` law's film term F_w d/(C_p/2)
     /// (seed 001 eqs 26–28) is a spring with no damping inside the
-    /// clearance, so the cage can rattle on the films of its `balls`
-    /// pockets. With k = F_w/(C_p/2) per pocket and the balls held by their
+    /// clearance (unless `pocket_squeeze` damps it), so the cage can
+    /// rattle on the films of its `balls` pockets. With k = F_w/(C_p/2) per pocket and the balls held by their
     /// raceway traction:
     /// - rotation, √(Z k r_cp²/I_c)/2π;
     /// - whirl (if the centre is free), √(Z k/(2 m_c))/2π for cylindrical
