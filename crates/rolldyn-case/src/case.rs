@@ -195,6 +195,8 @@ pub struct Cage {
     pub pocket_squeeze_film: bool,
     /// Least pocket film of the squeeze damping \[m\].
     pub pocket_min_film: f64,
+    /// Cavitation condition of the squeeze damping.
+    pub pocket_squeeze_cavitation: rolldyn::cage::SqueezeCavitation,
     /// Cage material, if given.
     pub material: Option<NamedMaterial>,
     /// Unbalance m_u e \[kg·m\].
@@ -770,6 +772,7 @@ fn cage(c: &RawCage) -> Result<Cage, Invalid> {
         pocket_squeeze_film: c.pocket_squeeze_film.unwrap_or(false),
         pocket_min_film: checked("cage.pocket_min_film", &c.pocket_min_film, positive)?
             .unwrap_or(DEFAULT_POCKET_MIN_FILM),
+        pocket_squeeze_cavitation: c.pocket_squeeze_cavitation.unwrap_or_default(),
         material: c
             .material
             .as_ref()

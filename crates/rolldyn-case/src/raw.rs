@@ -161,6 +161,10 @@ pub struct RawCage {
     /// Least oil film in the pocket for the squeeze damping (default
     /// 1 µm, of the order of the pocket's composite roughness).
     pub pocket_min_film: Option<Quantity<Length>>,
+    /// Which side of the pocket film carries pressure in the squeeze
+    /// damping: "half_sommerfeld" (default; the opened side cavitates) or
+    /// "full_film".
+    pub pocket_squeeze_cavitation: Option<rolldyn::cage::SqueezeCavitation>,
     /// Cage material (needed by the hertz and gupta_film pocket laws).
     pub material: Option<MaterialChoice>,
     /// Unbalance m_u e of the cage (mass × radius), at the cage angle.

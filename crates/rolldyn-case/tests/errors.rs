@@ -556,6 +556,29 @@ fn pocket_laws_supports_and_load_tables() {
         .unwrap();
     let s = p.cage.pocket_squeeze.unwrap();
     assert_eq!((s.viscosity, s.min_film), (0.05, 1e-6));
+    assert_eq!(
+        s.cavitation,
+        rolldyn::cage::SqueezeCavitation::HalfSommerfeld
+    );
+    let full = lubricated.replace(
+        "pocket_squeeze_film = true\n",
+        "pocket_squeeze_film = true\npocket_squeeze_cavitation = \"full_film\"\n",
+    );
+    let p = load_case("case.toml", &full, &[])
+        .unwrap()
+        .dynamics_parameters()
+        .unwrap();
+    assert_eq!(
+        p.cage.pocket_squeeze.unwrap().cavitation,
+        rolldyn::cage::SqueezeCavitation::FullFilm
+    );
+    let e = err(&full.replace("\"full_film\"", "\"gumbel\""));
+    assert_eq!(
+        e.key.as_deref(),
+        Some("cage.pocket_squeeze_cavitation"),
+        "{e}"
+    );
+    assert!(e.to_string().contains("half_sommerfeld"), "{e}");
     assert!((s.ball_radius - 3.175e-3).abs() < 1e-15);
     let off = load_case(
         "case.toml",

@@ -206,6 +206,7 @@ impl Case {
             viscosity: lubricant.viscosity,
             ball_radius: 0.5 * self.bearing.geometry.ball_diameter,
             min_film: c.pocket_min_film,
+            cavitation: c.pocket_squeeze_cavitation,
         }))
     }
 

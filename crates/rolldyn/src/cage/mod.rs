@@ -12,7 +12,7 @@ pub mod squeeze;
 
 pub use guide::{GuideForces, GuideLand};
 pub use pocket::{PocketLaw, PocketShape};
-pub use squeeze::PocketSqueeze;
+pub use squeeze::{PocketSqueeze, SqueezeCavitation};
 
 use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use crate::traction::ModifiedCoulomb;

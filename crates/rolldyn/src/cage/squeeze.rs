@@ -42,7 +42,13 @@
 //! (c^{3/2}(1 − ε)) for the cylindrical one, as the ball nears the wall.
 //!
 //! Moving away from the near wall (ḋ < 0) squeezes the far one: the same
-//! formulas with ε → −ε. The film on the approached side is held at
+//! formulas with ε → −ε. Without cavitation (`SqueezeCavitation::FullFilm`,
+//! the full-Sommerfeld condition: the film holds tension) both sides carry
+//! pressure, and since the cylindrical film is solved angle by angle and
+//! the spherical one has the same pressure gradient on both hemispheres,
+//! the damping is the sum of the two sides' (full sphere at ε = 0:
+//! 8π η R⁴/c³). It is smooth in ḋ; the half-Sommerfeld damping changes
+//! at ḋ = 0 from one side's film to the other's. The film on the approached side is held at
 //! h ≥ h_min (`min_film`, e.g. the composite roughness), i.e. ε ≤ 1 −
 //! h_min/c; beyond the wall (d > c, the solid contact of the normal law)
 //! the squeeze damping stays at its h_min value. The force is purely
@@ -56,8 +62,22 @@
 use super::PocketShape;
 use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use crate::math::interp::UniformPchip;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::{PI, SQRT_2};
 use std::sync::OnceLock;
+
+/// Which side of the pocket film carries pressure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum SqueezeCavitation {
+    /// Half-Sommerfeld (Gümbel): only the squeezed side; the opened side
+    /// cavitates.
+    #[default]
+    HalfSommerfeld,
+    /// Full-Sommerfeld: both sides, the opened one in tension.
+    FullFilm,
+}
 
 /// Squeeze-film damping of the pocket oil film.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -69,6 +89,8 @@ pub struct PocketSqueeze {
     pub ball_radius: f64,
     /// Least film h_min on the approached side \[m\].
     pub min_film: f64,
+    /// Which side of the film carries pressure.
+    pub cavitation: SqueezeCavitation,
 }
 
 impl PocketSqueeze {
@@ -89,9 +111,24 @@ impl PocketSqueeze {
     }
 
     /// Damping coefficient F/ḋ \[N·s/m\] for an approach rate of the sign
-    /// of `rate` (the film on the approached side).
+    /// of `rate`.
     #[inline]
     pub fn damping(&self, shape: PocketShape, offset: f64, half_clearance: f64, rate: f64) -> f64 {
+        match self.cavitation {
+            SqueezeCavitation::HalfSommerfeld => {
+                self.side_damping(shape, offset, half_clearance, rate)
+            }
+            SqueezeCavitation::FullFilm => {
+                self.side_damping(shape, offset, half_clearance, 1.0)
+                    + self.side_damping(shape, offset, half_clearance, -1.0)
+            }
+        }
+    }
+
+    /// The damping of one side's film: the side approached at a rate of
+    /// the sign of `rate` (the near wall for ḋ ≥ 0).
+    #[inline]
+    fn side_damping(&self, shape: PocketShape, offset: f64, half_clearance: f64, rate: f64) -> f64 {
         let c = half_clearance;
         let r = self.ball_radius;
         let most = 1.0 - self.min_film / c;
@@ -260,6 +297,7 @@ mod tests {
             viscosity: 0.02,
             ball_radius: 4e-3,
             min_film: 1e-8,
+            cavitation: SqueezeCavitation::HalfSommerfeld,
         }
     }
 
@@ -306,6 +344,31 @@ mod tests {
                 s.damping(shape, 0.0, c, 1.0),
                 s.damping(shape, 0.0, c, -1.0)
             );
+        }
+    }
+
+    #[test]
+    fn full_film_sums_both_sides_and_is_smooth_in_the_rate() {
+        let half = squeeze();
+        let full = PocketSqueeze {
+            cavitation: SqueezeCavitation::FullFilm,
+            ..half
+        };
+        let (c, r, eta) = (1e-4, half.ball_radius, half.viscosity);
+        // Centred: the full sphere 8π η R⁴/c³ (Reynolds on the whole
+        // sphere) and the full circle 3√2 π η R^{5/2} c^{−3/2} · π.
+        let sphere = full.damping(PocketShape::Spherical, 0.0, c, 1.0);
+        let want = 8.0 * PI * eta * r.powi(4) / c.powi(3);
+        assert!((sphere / want - 1.0).abs() < 1e-14, "{}", sphere / want);
+        let cylinder = full.damping(PocketShape::Cylindrical, 0.0, c, 1.0);
+        let want = 3.0 * SQRT_2 * PI * eta * r.powf(2.5) / c.powf(1.5) * PI;
+        assert!((cylinder / want - 1.0).abs() < 1e-7, "{}", cylinder / want);
+        for shape in [PocketShape::Cylindrical, PocketShape::Spherical] {
+            for d in [0.0, 0.4 * c, 0.95 * c] {
+                let both = half.damping(shape, d, c, 1.0) + half.damping(shape, d, c, -1.0);
+                assert_eq!(full.damping(shape, d, c, 1.0), both);
+                assert_eq!(full.damping(shape, d, c, -1.0), both);
+            }
         }
     }
 

@@ -15,7 +15,7 @@
 use super::b2_power_balance::{power_residual, worst_power_residual};
 use super::common::{bearing_7008c, drag_7008c, dynamics_7008c, guide_land_7008c};
 use rolldyn::cage::pocket::hertz_pocket_stiffness;
-use rolldyn::cage::{PocketLaw, PocketShape, PocketSqueeze};
+use rolldyn::cage::{PocketLaw, PocketShape, PocketSqueeze, SqueezeCavitation};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::material::{Material, effective_modulus};
@@ -50,6 +50,7 @@ fn model(squeeze: bool) -> BearingModel {
         viscosity: 0.0467,
         ball_radius: 0.5 * g.ball_diameter,
         min_film: 1e-6,
+        cavitation: SqueezeCavitation::HalfSommerfeld,
     });
     BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap()
 }
