@@ -572,6 +572,20 @@ fn pocket_laws_supports_and_load_tables() {
         p.cage.pocket_squeeze.unwrap().cavitation,
         rolldyn::cage::SqueezeCavitation::FullFilm
     );
+    let thick = lubricated.replace(
+        "pocket_squeeze_film = true\n",
+        "pocket_squeeze_film = true\npocket_min_film = \"0.1 mm\"\n",
+    );
+    let e = load_case("case.toml", &thick, &[])
+        .unwrap()
+        .dynamics_parameters()
+        .unwrap_err();
+    assert_eq!(e.key, "cage.pocket_min_film");
+    assert!(
+        e.rule.contains("half of cage.pocket_clearance"),
+        "{}",
+        e.rule
+    );
     let e = err(&full.replace("\"full_film\"", "\"gumbel\""));
     assert_eq!(
         e.key.as_deref(),

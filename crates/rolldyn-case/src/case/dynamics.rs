@@ -202,6 +202,18 @@ impl Case {
                 "the pocket squeeze film needs a [lubricant] section (its viscosity)",
             )
         })?;
+        if let Some(clearance) = c.pocket_clearance
+            && c.pocket_min_film >= 0.5 * clearance
+        {
+            return Err(Invalid::new(
+                "cage.pocket_min_film",
+                Some(format!("{} m", c.pocket_min_film)),
+                format!(
+                    "must be less than half of cage.pocket_clearance ({} m per side)",
+                    0.5 * clearance
+                ),
+            ));
+        }
         Ok(Some(PocketSqueeze {
             viscosity: lubricant.viscosity,
             ball_radius: 0.5 * self.bearing.geometry.ball_diameter,

@@ -56,6 +56,16 @@ impl CageParameters {
         self.pocket_law.validate()?;
         if let Some(squeeze) = &self.pocket_squeeze {
             squeeze.validate()?;
+            if squeeze.min_film >= 0.5 * self.pocket_clearance {
+                return Err(InvalidParameter::new(
+                    "pocket_min_film",
+                    squeeze.min_film,
+                    format!(
+                        "must be less than the per-side pocket clearance C_p/2 = {} m",
+                        0.5 * self.pocket_clearance
+                    ),
+                ));
+            }
         }
         self.pocket_friction.validate()?;
         require_non_negative("unbalance", self.unbalance)
@@ -133,6 +143,26 @@ mod tests {
     /// k = 11 N / 87.5 µm per pocket; rotation √(22 k r²/I)/2π = 4.61 kHz
     /// is above the whirl √(11 k/m)/2π = 3.36 kHz, the spherical pockets'
     /// whirl √(22 k/m)/2π = 4.75 kHz above both.
+    #[test]
+    fn squeeze_film_thinner_than_the_clearance() {
+        let linear = PocketLaw::Linear {
+            stiffness: 1e7,
+            damping: 0.0,
+        };
+        let mut c = cage(linear, PocketShape::Cylindrical, true);
+        c.pocket_squeeze = Some(PocketSqueeze {
+            viscosity: 0.02,
+            ball_radius: 4e-3,
+            min_film: 1e-6,
+            cavitation: SqueezeCavitation::HalfSommerfeld,
+        });
+        c.validate().unwrap();
+        c.pocket_squeeze.as_mut().unwrap().min_film = 0.0875e-3;
+        let e = c.validate().unwrap_err();
+        assert_eq!(e.field, "pocket_min_film");
+        assert!(e.rule.contains("per-side pocket clearance"), "{}", e.rule);
+    }
+
     #[test]
     fn film_frequency_of_the_7008c_cage() {
         let film = PocketLaw::GuptaFilm {
