@@ -543,43 +543,41 @@ fn pocket_laws_supports_and_load_tables() {
     // film defaults to 1 µm and must be positive.
     let squeeze =
         format!("{BASE}{CAGE}pocket_stiffness = \"1e7 N/m\"\npocket_squeeze_film = true\n");
-    let case = load_case("case.toml", &squeeze, &[]).unwrap();
-    let e = case.dynamics_parameters().unwrap_err();
+    let dynamics = |text: &str| {
+        load_case("case.toml", text, &[])
+            .unwrap()
+            .dynamics_parameters()
+    };
+    let e = dynamics(&squeeze).unwrap_err();
     assert_eq!(e.key, "cage.pocket_squeeze_film");
     assert!(e.rule.contains("[lubricant]"), "{}", e.rule);
     let lubricated = format!(
         "{squeeze}\n[lubricant]\nviscosity = \"0.05 Pa.s\"\npressure_viscosity = \"2e-8 1/Pa\"\n"
     );
-    let p = load_case("case.toml", &lubricated, &[])
-        .unwrap()
-        .dynamics_parameters()
-        .unwrap();
-    let s = p.cage.pocket_squeeze.unwrap();
+    let s = dynamics(&lubricated).unwrap().cage.pocket_squeeze.unwrap();
     assert_eq!((s.viscosity, s.min_film), (0.05, 1e-6));
+    assert!((s.ball_radius - 3.175e-3).abs() < 1e-15);
     assert_eq!(
         s.cavitation,
         rolldyn::cage::SqueezeCavitation::HalfSommerfeld
     );
-    let full = lubricated.replace(
-        "pocket_squeeze_film = true\n",
-        "pocket_squeeze_film = true\npocket_squeeze_cavitation = \"full_film\"\n",
-    );
-    let p = load_case("case.toml", &full, &[])
-        .unwrap()
-        .dynamics_parameters()
-        .unwrap();
+    let with = |line: &str| {
+        lubricated.replace(
+            "pocket_squeeze_film = true\n",
+            &format!("pocket_squeeze_film = true\n{line}\n"),
+        )
+    };
+    let full = with("pocket_squeeze_cavitation = \"full_film\"");
     assert_eq!(
-        p.cage.pocket_squeeze.unwrap().cavitation,
+        dynamics(&full)
+            .unwrap()
+            .cage
+            .pocket_squeeze
+            .unwrap()
+            .cavitation,
         rolldyn::cage::SqueezeCavitation::FullFilm
     );
-    let thick = lubricated.replace(
-        "pocket_squeeze_film = true\n",
-        "pocket_squeeze_film = true\npocket_min_film = \"0.1 mm\"\n",
-    );
-    let e = load_case("case.toml", &thick, &[])
-        .unwrap()
-        .dynamics_parameters()
-        .unwrap_err();
+    let e = dynamics(&with("pocket_min_film = \"0.1 mm\"")).unwrap_err();
     assert_eq!(e.key, "cage.pocket_min_film");
     assert!(
         e.rule.contains("half of cage.pocket_clearance"),
@@ -593,20 +591,8 @@ fn pocket_laws_supports_and_load_tables() {
         "{e}"
     );
     assert!(e.to_string().contains("half_sommerfeld"), "{e}");
-    assert!((s.ball_radius - 3.175e-3).abs() < 1e-15);
-    let off = load_case(
-        "case.toml",
-        &format!("{BASE}{CAGE}pocket_stiffness = \"1e7 N/m\"\n"),
-        &[],
-    )
-    .unwrap();
-    assert!(
-        off.dynamics_parameters()
-            .unwrap()
-            .cage
-            .pocket_squeeze
-            .is_none()
-    );
+    let off = format!("{BASE}{CAGE}pocket_stiffness = \"1e7 N/m\"\n");
+    assert!(dynamics(&off).unwrap().cage.pocket_squeeze.is_none());
     let e = err(&format!("{BASE}{CAGE}pocket_min_film = \"0 um\"\n"));
     check(&e, "cage.pocket_min_film", 22, &["must be positive"]);
     // Constant loads and a load table exclude each other.

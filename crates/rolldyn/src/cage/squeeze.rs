@@ -180,6 +180,13 @@ pub fn sphere_film_integral(eccentricity: f64) -> f64 {
     }
 }
 
+/// Builds the cylindrical pocket's table now (once per process; a model
+/// with the squeeze film calls it when it is made, so the time loop only
+/// reads it).
+pub fn build_tables() {
+    cylinder_table();
+}
+
 /// Nodes of the cylindrical table on √x ∈ [0, 2^¼].
 const TABLE_NODES: usize = 1025;
 

@@ -173,6 +173,10 @@ impl BearingModel {
         require_positive("inner_ring_mass", params.inner_ring_mass)?;
         require_positive("inner_ring_tilt_inertia", params.inner_ring_tilt_inertia)?;
         params.cage.validate()?;
+        if params.cage.pocket_squeeze.is_some() {
+            // Built here, not at the first force evaluation in the time loop.
+            crate::cage::squeeze::build_tables();
+        }
         params.normal_law.validate()?;
         require_positive("impact_speed_floor", params.impact_speed_floor)?;
         params.traction.validate()?;
