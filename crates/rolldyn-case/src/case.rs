@@ -118,6 +118,8 @@ pub struct Case {
     pub duration: Option<f64>,
     /// Relative tolerance of adaptive integrators.
     pub relative_tolerance: Option<f64>,
+    /// Energy-balance tolerance of adaptive integrators (0: off).
+    pub energy_tolerance: Option<f64>,
     /// Largest integrator step \[s\].
     pub max_step: Option<f64>,
     /// Recorder sample rate \[Hz\].
@@ -468,6 +470,12 @@ impl Case {
             |x| (1e-12..=0.5).contains(&x),
             "must lie in [1e-12, 0.5] (below 1e-12 the steps stall at round-off)",
         )?;
+        let energy_tolerance = positive_number(
+            "solver.energy_tolerance",
+            s.energy_tolerance,
+            |x| x == 0.0 || (1e-9..=0.1).contains(&x),
+            "must be 0 (off) or lie in [1e-9, 0.1]",
+        )?;
         let sample_rate = checked("output.sample_rate", &raw.output.sample_rate, |v| {
             if v > 0.0 && v <= 1e7 {
                 Ok(())
@@ -659,6 +667,7 @@ impl Case {
             surface,
             duration,
             relative_tolerance,
+            energy_tolerance,
             max_step,
             sample_rate,
             power_per_ball: raw.output.power_per_ball.unwrap_or(false),

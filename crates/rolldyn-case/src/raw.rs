@@ -660,10 +660,13 @@ pub struct RawSolver {
     pub duration: Option<Quantity<Time>>,
     /// Relative error tolerance of adaptive integrators (default 1e-3).
     pub relative_tolerance: Option<f64>,
+    /// Error allowed in the energy balance per unit of energy turned over
+    /// in a step (default 1e-4; 0 turns the energy error control off).
+    pub energy_tolerance: Option<f64>,
     /// Largest step the integrator may take.
     pub max_step: Option<Quantity<Time>>,
-    /// "auto" (default: the faster of ros34pw2 and dopri5 for the
-    /// tolerance), "ros34pw2" (stiff), "dopri5" (explicit) or "rk4" (fixed step).
+    /// "auto" (default: ros34pw2, docs/dynamics.md), "ros34pw2" (stiff),
+    /// "dopri5" (explicit) or "rk4" (fixed step).
     pub integrator: Option<IntegratorChoice>,
     /// Step of the fixed-step integrator (rk4).
     pub time_step: Option<Quantity<Time>>,
@@ -676,8 +679,8 @@ pub struct RawSolver {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum IntegratorChoice {
-    /// The fastest of ros34pw2 and dopri5 at the requested tolerance
-    /// (measured crossover, docs/performance.md).
+    /// ros34pw2 at every tolerance: dopri5 is stability-bound by the
+    /// traction slopes, 34× slower at low speed (docs/performance.md).
     Auto,
     /// Linearly implicit Rosenbrock–W 3(2) (Rang & Angermann) for stiff
     /// systems: block-structured Jacobian, reused across steps.

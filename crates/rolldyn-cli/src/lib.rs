@@ -3,6 +3,7 @@
 //! cases, sweeps and reports with exactly the CLI's code. The binary
 //! (`main.rs`) only parses arguments and maps [`Failure`] to exit codes.
 
+pub mod accuracy;
 pub mod checkpoint;
 pub mod contact;
 pub mod finite;

@@ -112,6 +112,12 @@ enum Command {
         /// Also write DIR/report.html (as `rolldyn report DIR`).
         #[arg(long)]
         report: bool,
+        /// After the run, run the case again into DIR/verify/ at ten times
+        /// tighter tolerances and report how much the cage speed, loads,
+        /// power loss and vibration RMS moved (summary.json's
+        /// accuracy.verify)
+        #[arg(long)]
+        verify: bool,
         /// Run a sweep: speed=0rpm..20000rpm/5 (linear range) or
         /// axial=100N,1kN (list); also radial=... Repeat for a grid. The
         /// points run in parallel, each into DIR/point-NNNN/, with a
@@ -260,6 +266,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             resume,
             checkpoint_interval,
             report: with_report,
+            verify,
             sweep,
         } => {
             let checkpoint_interval = match &checkpoint_interval {
@@ -334,6 +341,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 force: record.force,
                 checkpoint_interval,
                 resume: resuming,
+                verify,
                 ..Default::default()
             };
             let summary = run::run_case(&record, &case, dir, &options)?;
@@ -359,6 +367,27 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 output
             );
             emit(&text)?;
+            if let Some(v) = &summary.accuracy.verify {
+                let worst = v.changes.iter().max_by(|a, b| {
+                    (a.relative_change / a.limit).total_cmp(&(b.relative_change / b.limit))
+                });
+                emit(&format!(
+                    "verify ({}): at rtol {} the largest change is {}; energy balance error {:.2e}\n",
+                    v.status,
+                    v.relative_tolerance
+                        .map_or("-".into(), |r| format!("{r:e}")),
+                    worst.map_or("none".into(), |c| format!(
+                        "{} {:.3} % (limit {} %)",
+                        c.key,
+                        100.0 * c.relative_change,
+                        100.0 * c.limit
+                    )),
+                    v.energy_balance_relative_error
+                ))?;
+            }
+            if let Some(text) = rolldyn_cli::accuracy::warning(&summary.accuracy) {
+                eprint!("{text}");
+            }
             if with_report {
                 let path = html_report::write(dir)?;
                 emit(&format!("wrote {}\n", path.display()))?;

@@ -41,6 +41,8 @@ pub struct Summary {
     pub wall_time_s: f64,
     pub integrator: &'static str,
     pub relative_tolerance: Option<f64>,
+    /// Energy-balance tolerance of the step control (null: off).
+    pub energy_tolerance: Option<f64>,
     pub max_step_s: f64,
     pub steps: u64,
     pub rejected_steps: u64,
@@ -90,6 +92,8 @@ pub struct Summary {
     pub mechanical_energy_change_j: f64,
     pub energy_balance_error_j: f64,
     pub energy_balance_relative_error: f64,
+    /// How accurate the run is (docs/cli.md).
+    pub accuracy: crate::accuracy::Accuracy,
 }
 
 /// Means of the FASTSIM channels over loaded contacts in the averaging
@@ -457,6 +461,10 @@ pub struct RunOptions {
     /// simulated, as `f64::to_bits` (the Python package reads it from
     /// another thread for its progress callback).
     pub progress: Option<Arc<AtomicU64>>,
+    /// After a completed run, run the case again into `DIR/verify/` at ten
+    /// times tighter tolerances and report the changes in the summary's
+    /// `accuracy.verify`.
+    pub verify: bool,
 }
 
 impl RunOptions {
@@ -498,6 +506,86 @@ pub fn run_case(
 
 /// As [`run_case`], also returning the time series.
 pub fn run_case_series(
+    record: &RunRecord,
+    case: &Case,
+    dir: &Path,
+    options: &RunOptions,
+) -> Result<RunOutput, Failure> {
+    let options = RunOptions {
+        stop: Some(options.stop_flag()),
+        ..options.clone()
+    };
+    let mut output = run_once(record, case, dir, &options)?;
+    if options.verify && output.summary.status == "completed" {
+        verify(record, dir, &options, &mut output.summary)?;
+    }
+    Ok(output)
+}
+
+/// `--verify`: the run's case again, into `DIR/verify/`, at ten times
+/// tighter tolerances (the relative and energy tolerances, or rk4's step);
+/// the comparison goes into `summary.accuracy.verify` and `summary.json`
+/// is written again.
+fn verify(
+    record: &RunRecord,
+    dir: &Path,
+    options: &RunOptions,
+    summary: &mut Summary,
+) -> Result<(), Failure> {
+    use crate::accuracy::VERIFY_TIGHTENING;
+    let mut tight = record.clone();
+    let sets = &mut tight.overrides.set;
+    match summary.relative_tolerance {
+        Some(rtol) => {
+            sets.push(format!(
+                "solver.relative_tolerance={:e}",
+                (rtol / VERIFY_TIGHTENING).max(1e-12)
+            ));
+            if let Some(eps) = summary.energy_tolerance {
+                sets.push(format!(
+                    "solver.energy_tolerance={:e}",
+                    (eps / VERIFY_TIGHTENING).max(1e-9)
+                ));
+            }
+        }
+        None => sets.push(format!(
+            "solver.time_step={:e} s",
+            (summary.max_step_s / VERIFY_TIGHTENING).max(1e-10)
+        )),
+    }
+    let case = tight
+        .overrides
+        .load_text(&tight.source, tight.case_text.as_deref())?;
+    let verify_dir = dir.join("verify");
+    let quiet = RunOptions {
+        resume: false,
+        quiet: true,
+        progress: None,
+        verify: false,
+        ..options.clone()
+    };
+    let reference = run_once(&tight, &case, &verify_dir, &quiet)?.summary;
+    if reference.status != "completed" {
+        return Err(Failure::Model(format!(
+            "--verify: the run at ten times tighter tolerances in {} ended {}: {}",
+            verify_dir.display(),
+            reference.status,
+            reference.error.unwrap_or_default()
+        )));
+    }
+    summary.accuracy.verify = Some(crate::accuracy::verify(
+        summary,
+        &reference,
+        verify_dir.display().to_string(),
+        reference.energy_tolerance,
+    ));
+    let json = crate::finite::to_json(&*summary).map_err(|e| Failure::Internal(e.to_string()))?;
+    write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes())
+        .map_err(|e| Failure::BadInput(e.to_string()))
+}
+
+/// One run of the case into `dir` ([`run_case_series`] without `--verify`).
+fn run_once(
     record: &RunRecord,
     case: &Case,
     dir: &Path,
@@ -824,6 +912,11 @@ fn summarise(
     let dissipated = last("dissipated_energy_j");
     let delta_e = last("mechanical_energy_j") - first("mechanical_energy_j");
     let imbalance = drive + film_work - delta_e - dissipated;
+    let relative_error = if drive.abs() + dissipated.abs() > 0.0 {
+        imbalance / drive.abs().max(dissipated.abs())
+    } else {
+        0.0
+    };
     let (status, error) = match end {
         RunEnd::Completed => ("completed", None),
         RunEnd::Interrupted { .. } => (
@@ -847,6 +940,7 @@ fn summarise(
         wall_time_s: wall,
         integrator: settings.integrator,
         relative_tolerance: settings.relative_tolerance,
+        energy_tolerance: settings.energy_tolerance,
         max_step_s: settings.max_step,
         steps: stats.steps,
         rejected_steps: stats.rejected_steps,
@@ -912,10 +1006,12 @@ fn summarise(
         dissipated_energy_j: dissipated,
         mechanical_energy_change_j: delta_e,
         energy_balance_error_j: imbalance,
-        energy_balance_relative_error: if drive.abs() + dissipated.abs() > 0.0 {
-            imbalance / drive.abs().max(dissipated.abs())
-        } else {
-            0.0
-        },
+        energy_balance_relative_error: relative_error,
+        accuracy: crate::accuracy::assess(
+            relative_error,
+            settings.integrator,
+            settings.relative_tolerance,
+            settings.energy_tolerance,
+        ),
     }
 }

@@ -1,12 +1,15 @@
-//! The integrator of a run: `solver.integrator` resolved (`auto` picks by
-//! tolerance), its relative tolerance and largest step with their
+//! The integrator of a run: `solver.integrator` resolved (`auto` is
+//! ros34pw2), its relative tolerance and largest step with their
 //! defaults, and its construction. The stiff integrator's default step
 //! resolves the cage's undamped film modes (docs/dynamics.md).
 
 use rolldyn::cage::CageParameters;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
-use rolldyn::integrate::{ExplicitRk, IntegrationError, ROS34PW2, Rosenbrock, Solver, StepControl};
+use rolldyn::integrate::{
+    DEFAULT_ENERGY_TOLERANCE, ExplicitRk, IntegrationError, ROS34PW2, Rosenbrock, Solver,
+    StepControl,
+};
 use rolldyn_case::Case;
 use rolldyn_case::raw::IntegratorChoice;
 
@@ -24,11 +27,6 @@ pub const DEFAULT_RK4_STEP: f64 = 1e-7;
 pub const STEPS_PER_FILM_PERIOD: f64 = 16.0;
 /// Default relative tolerance of the adaptive integrators.
 pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-3;
-/// `integrator = "auto"` takes ros34pw2 at relative tolerances from this
-/// value up and dopri5 below it: the measured crossover on the benchmark
-/// cases (docs/performance.md), where dopri5 is stability-bound and
-/// ros34pw2 accuracy-bound.
-pub const STIFF_FROM_TOLERANCE: f64 = 3e-4;
 
 /// Default largest step of the stiff integrator for a cage: 0.1 ms, or
 /// 1/16 of the period of the cage's undamped rattle on `gupta_film`
@@ -54,6 +52,9 @@ pub(crate) struct SolverSettings {
     pub(crate) relative_tolerance: Option<f64>,
     /// Largest step, or rk4's fixed step \[s\].
     pub(crate) max_step: f64,
+    /// Tolerance of the energy-balance error control; None: off (rk4, or
+    /// `solver.energy_tolerance = 0`).
+    pub(crate) energy_tolerance: Option<f64>,
 }
 
 impl SolverSettings {
@@ -63,9 +64,12 @@ impl SolverSettings {
         let rtol = case
             .relative_tolerance
             .unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
+        // `auto` is ros34pw2 at every tolerance. Below rtol 3e-4 dopri5
+        // was up to 1.4× cheaper on the default case at 10 000 rpm, but
+        // 34× dearer at 500 rpm, where the EHL traction slopes bound its
+        // step (docs/performance.md, "Accuracy at default settings").
         let choice = match case.integrator {
-            IntegratorChoice::Auto if rtol >= STIFF_FROM_TOLERANCE => IntegratorChoice::Ros34pw2,
-            IntegratorChoice::Auto => IntegratorChoice::Dopri5,
+            IntegratorChoice::Auto => IntegratorChoice::Ros34pw2,
             other => other,
         };
         let (integrator, relative_tolerance, max_step) = match choice {
@@ -81,11 +85,17 @@ impl SolverSettings {
                 case.max_step.unwrap_or(DEFAULT_MAX_STEP),
             ),
         };
+        let energy_tolerance = relative_tolerance
+            .and(Some(
+                case.energy_tolerance.unwrap_or(DEFAULT_ENERGY_TOLERANCE),
+            ))
+            .filter(|&e| e > 0.0);
         Self {
             choice,
             integrator,
             relative_tolerance,
             max_step,
+            energy_tolerance,
         }
     }
 
@@ -116,26 +126,30 @@ impl SolverSettings {
                 0.0,
                 y0,
             )?)),
-            IntegratorChoice::Ros34pw2 => Solver::Rosenbrock(Box::new(Rosenbrock::new(
-                &ROS34PW2,
-                rtol,
-                self.max_step,
-                None,
-                model,
-                0.0,
-                y0,
-            )?)),
-            _ => Solver::Explicit(Box::new(ExplicitRk::new(
-                &DOPRI5,
-                StepControl::Adaptive {
-                    relative_tolerance: rtol,
-                    max_step: self.max_step,
-                    initial_step: None,
-                },
-                model,
-                0.0,
-                y0,
-            )?)),
+            IntegratorChoice::Ros34pw2 => {
+                let r = Rosenbrock::new(&ROS34PW2, rtol, self.max_step, None, model, 0.0, y0)?;
+                Solver::Rosenbrock(Box::new(match self.energy_tolerance {
+                    Some(eps) => r.with_energy_control(model, eps),
+                    None => r,
+                }))
+            }
+            _ => {
+                let r = ExplicitRk::new(
+                    &DOPRI5,
+                    StepControl::Adaptive {
+                        relative_tolerance: rtol,
+                        max_step: self.max_step,
+                        initial_step: None,
+                    },
+                    model,
+                    0.0,
+                    y0,
+                )?;
+                Solver::Explicit(Box::new(match self.energy_tolerance {
+                    Some(eps) => r.with_energy_control(model, eps),
+                    None => r,
+                }))
+            }
         })
     }
 }

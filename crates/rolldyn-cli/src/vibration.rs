@@ -29,6 +29,37 @@ pub struct VibrationSummary {
     pub outer_ring_velocity_rms_z_mm_s: Option<f64>,
 }
 
+impl VibrationSummary {
+    /// The ring velocity RMS values that were computed, by summary key.
+    pub fn rms_values(&self) -> Vec<(&'static str, f64)> {
+        [
+            (
+                "inner_ring_velocity_rms_x_mm_s",
+                self.inner_ring_velocity_rms_x_mm_s,
+            ),
+            (
+                "inner_ring_velocity_rms_y_mm_s",
+                self.inner_ring_velocity_rms_y_mm_s,
+            ),
+            (
+                "inner_ring_velocity_rms_z_mm_s",
+                self.inner_ring_velocity_rms_z_mm_s,
+            ),
+            (
+                "outer_ring_velocity_rms_y_mm_s",
+                self.outer_ring_velocity_rms_y_mm_s,
+            ),
+            (
+                "outer_ring_velocity_rms_z_mm_s",
+                self.outer_ring_velocity_rms_z_mm_s,
+            ),
+        ]
+        .into_iter()
+        .filter_map(|(key, value)| value.map(|v| (key, v)))
+        .collect()
+    }
+}
+
 /// The keys over samples `from..` of `series`; `outer_ring` when the outer
 /// ring moves (else its RMS keys are null).
 pub fn summarise(series: &TimeSeries, from: usize, outer_ring: bool) -> VibrationSummary {

@@ -291,7 +291,7 @@ impl ArrowStream {
 
 /// Options of a run from Python: its own stop flag (never the process's
 /// Ctrl-C handler: Python owns SIGINT) and progress fraction, no bar.
-fn run_options(force: bool) -> (RunOptions, Arc<AtomicBool>, Arc<AtomicU64>) {
+fn run_options(force: bool, verify: bool) -> (RunOptions, Arc<AtomicBool>, Arc<AtomicU64>) {
     let stop = Arc::new(AtomicBool::new(false));
     let fraction = Arc::new(AtomicU64::new(0f64.to_bits()));
     let options = RunOptions {
@@ -300,6 +300,7 @@ fn run_options(force: bool) -> (RunOptions, Arc<AtomicBool>, Arc<AtomicU64>) {
         stop: Some(stop.clone()),
         quiet: true,
         progress: Some(fraction.clone()),
+        verify,
         ..Default::default()
     };
     (options, stop, fraction)
@@ -359,10 +360,13 @@ fn watched<T: Send>(
     Ok((result, interrupted))
 }
 
-/// `rolldyn run`: runs the case into `directory`. Returns the summary
-/// (JSON), the time series and whether a Ctrl-C stopped the run.
+/// `rolldyn run`: runs the case into `directory` (with `verify`, also at
+/// ten times tighter tolerances into `directory/verify`, as `--verify`).
+/// Returns the summary (JSON), the time series and whether a Ctrl-C
+/// stopped the run.
 #[pyfunction]
-#[pyo3(signature = (source, text, sets, directory, force=false, progress=None))]
+#[pyo3(signature = (source, text, sets, directory, force=false, progress=None, verify=false))]
+#[allow(clippy::too_many_arguments)]
 fn run(
     py: Python<'_>,
     source: String,
@@ -371,13 +375,14 @@ fn run(
     directory: &str,
     force: bool,
     progress: Option<Bound<'_, PyAny>>,
+    verify: bool,
 ) -> PyResult<(String, ArrowStream, bool)> {
     let overrides = overrides(sets);
     let case = overrides
         .load_text(&source, text.as_deref())
         .map_err(to_py)?;
     let record = RunRecord::new(source, text, overrides, force);
-    let (options, stop, fraction) = run_options(force);
+    let (options, stop, fraction) = run_options(force, verify);
     let dir = Path::new(directory);
     let (output, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
         run_case_series(&record, &case, dir, &options)
@@ -422,7 +427,7 @@ fn run_points(
         .into_iter()
         .map(|p| overrides(sets.iter().cloned().chain(p).collect()))
         .collect();
-    let (options, stop, fraction) = run_options(force);
+    let (options, stop, fraction) = run_options(force, false);
     let dir = Path::new(directory);
     let (rows, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
         run_sweep::run(&source, text.as_deref(), &points, dir, &options)
@@ -448,7 +453,7 @@ fn run_point(
 ) -> PyResult<String> {
     let overrides = overrides(sets);
     let case = overrides.load_text(source, text).map_err(to_py)?;
-    let (options, stop, fraction) = run_options(force);
+    let (options, stop, fraction) = run_options(force, false);
     let dir = Path::new(directory);
     let (row, _) = watched(py, &stop, &fraction, None, || {
         run_sweep::run_point(name, source, text, &overrides, &case, dir, &options)

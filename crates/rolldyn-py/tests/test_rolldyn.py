@@ -157,6 +157,22 @@ def test_run_equals_the_cli_bit_for_bit(tmp_path):
     assert Path(result.report()).is_file()
 
 
+def test_a_run_says_how_accurate_it_is_and_verify_matches_the_cli(tmp_path):
+    result = rolldyn.run(duration="2 ms", output=tmp_path / "py", verify=True)
+    accuracy = result.summary["accuracy"]
+    assert accuracy["status"] in ("ok", "warning")
+    assert accuracy["energy_balance_relative_error"] == result.summary["energy_balance_relative_error"]
+    verify = accuracy["verify"]
+    assert verify["relative_tolerance"] == pytest.approx(result.summary["relative_tolerance"] / 10)
+    assert (tmp_path / "py" / "verify" / "summary.json").is_file()
+    keys = {c["key"] for c in verify["changes"]}
+    assert "mean_cage_speed_rpm" in keys
+    cli("run", "--duration", "2 ms", "--verify", "-o", str(tmp_path / "cli"))
+    expected = json.loads((tmp_path / "cli" / "summary.json").read_text())
+    changes = lambda s: [(c["key"], c["value"], c["reference"]) for c in s["accuracy"]["verify"]["changes"]]
+    assert changes(result.summary) == changes(expected)
+
+
 def test_channels_are_numpy_arrays_with_units_without_copies():
     before = pa.total_allocated_bytes()
     result = rolldyn.run(duration="5 ms")

@@ -120,6 +120,8 @@ pub struct Report {
     pub title: String,
     /// Line under the title (source, status).
     pub subtitle: String,
+    /// Warnings shown in a banner under the title (an unconverged run).
+    pub warnings: Vec<String>,
     /// Sections in order.
     pub sections: Vec<Section>,
 }
@@ -133,7 +135,8 @@ pre{background:#f7f7f7;padding:0.6em;overflow-x:auto;font-size:0.85em}\
 svg.plot{display:block;max-width:100%;height:auto;margin:0.8em 0;font-size:11px;font-family:system-ui,sans-serif}\
 svg .grid{stroke:#e4e4e4;stroke-width:1}svg .frame{fill:none;stroke:#555;stroke-width:1}\
 svg .title{font-size:13px;font-weight:600}svg .legend-box{fill:#fff;fill-opacity:0.85;stroke:#ccc}svg text{fill:#222}\
-footer{color:#777;font-size:0.85em;margin-top:2em}";
+footer{color:#777;font-size:0.85em;margin-top:2em}\
+div.warning{background:#fff4e5;border:1px solid #e8a33d;border-left:6px solid #e8a33d;padding:0.5em 1em;margin:0.8em 0}";
 
 impl Report {
     /// The page: well-formed, self-contained HTML.
@@ -146,10 +149,18 @@ impl Report {
         );
         let _ = write!(
             out,
-            "<h1>{}</h1><p class=\"subtitle\">{}</p><nav><ul>",
+            "<h1>{}</h1><p class=\"subtitle\">{}</p>",
             escape(&self.title),
             escape(&self.subtitle)
         );
+        for w in &self.warnings {
+            let _ = write!(
+                out,
+                "<div class=\"warning\" role=\"alert\"><strong>Warning:</strong> {}</div>",
+                escape(w)
+            );
+        }
+        out.push_str("<nav><ul>");
         for s in &self.sections {
             let _ = write!(
                 out,

@@ -140,12 +140,60 @@ pub fn build(data: &RunData) -> Report {
     Report {
         title,
         subtitle,
+        warnings: accuracy_warnings(data),
         sections: SECTIONS
             .iter()
             .filter_map(|f| f(data))
             .filter(|s| !s.blocks.is_empty())
             .collect(),
     }
+}
+
+/// The banner of a run that is not converged: its `accuracy` object's
+/// reason and hint, and a failed `--verify`.
+fn accuracy_warnings(data: &RunData) -> Vec<String> {
+    let Some(accuracy) = data.summary.get("accuracy") else {
+        return Vec::new();
+    };
+    let text = |v: &Value, key: &str| v.get(key).and_then(Value::as_str).map(str::to_string);
+    let mut out = Vec::new();
+    if text(accuracy, "status").as_deref() == Some("warning") {
+        out.push(format!(
+            "{}. {}.",
+            text(accuracy, "reason").unwrap_or_default(),
+            text(accuracy, "hint").unwrap_or_default()
+        ));
+    }
+    if let Some(verify) = accuracy
+        .get("verify")
+        .filter(|v| text(v, "status").as_deref() == Some("warning"))
+    {
+        let moved: Vec<String> = verify
+            .get("changes")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+            .filter(|c| {
+                let f = |k: &str| c.get(k).and_then(Value::as_f64).unwrap_or(0.0);
+                f("relative_change") > f("limit")
+            })
+            .map(|c| {
+                format!(
+                    "{} by {:.2} %",
+                    text(c, "key").unwrap_or_default(),
+                    100.0
+                        * c.get("relative_change")
+                            .and_then(Value::as_f64)
+                            .unwrap_or(0.0)
+                )
+            })
+            .collect();
+        out.push(format!(
+            "at ten times tighter tolerances (--verify) {} moved beyond their limits: the results are not converged at these settings.",
+            moved.join(", ")
+        ));
+    }
+    out
 }
 
 fn rows(data: &RunData, keys: &[(&str, &str)]) -> Vec<Vec<String>> {

@@ -168,8 +168,35 @@ pub fn build(rows: &[Map<String, Value>], source: &str) -> Report {
     Report {
         title: "rolldyn sweep".into(),
         subtitle: format!("{source} · {} points", rows.len()),
+        warnings: unconverged(rows),
         sections: vec![points, figures],
     }
+}
+
+/// The banner for points whose energy balance did not close.
+fn unconverged(rows: &[Map<String, Value>]) -> Vec<String> {
+    let warned: Vec<&str> = rows
+        .iter()
+        .filter(|r| {
+            let balance = r
+                .get("accuracy.energy_balance_relative_error")
+                .and_then(Value::as_f64);
+            let limit = r
+                .get("accuracy.energy_balance_limit")
+                .and_then(Value::as_f64);
+            matches!((balance, limit), (Some(b), Some(l)) if b.abs() > l)
+        })
+        .map(|r| r.get("point").and_then(Value::as_str).unwrap_or("?"))
+        .collect();
+    if warned.is_empty() {
+        return Vec::new();
+    }
+    vec![format!(
+        "{} of {} points are not converged at their settings (their energy balance does not close to accuracy.energy_balance_limit of the drive work): {}",
+        warned.len(),
+        rows.len(),
+        warned.join(", ")
+    )]
 }
 
 fn distinct(rows: &[Map<String, Value>], key: &str) -> usize {

@@ -199,10 +199,15 @@ fn sections_are_added_as_data() {
     let report = Report {
         title: "t".into(),
         subtitle: "s".into(),
+        warnings: vec!["not converged".into()],
         sections: vec![Section::new("spectrum", "Spectrum").paragraph("p").figure(
             Plot::new("PSD", "f [Hz]", "PSD").with(Series::line("x", &[1.0, 2.0], &[3.0, 4.0])),
         )],
     };
-    let (sections, plots) = check_page(&report.to_html());
+    let html = report.to_html();
+    assert!(html.contains(
+        "<div class=\"warning\" role=\"alert\"><strong>Warning:</strong> not converged</div>"
+    ));
+    let (sections, plots) = check_page(&html);
     assert_eq!((sections, plots), (vec!["spectrum".to_string()], 1));
 }

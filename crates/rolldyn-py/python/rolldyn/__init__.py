@@ -385,18 +385,21 @@ def _with_duration(case: Case, duration: Optional[str]) -> Case:
 
 def run(case: Optional[Case] = None, duration: Optional[str] = None, *,
         output: Optional[Union[str, os.PathLike]] = None, force: bool = False,
-        progress: Progress = None) -> Result:
+        progress: Progress = None, verify: bool = False) -> Result:
     """``rolldyn run``: simulates the case (``duration`` e.g. ``"0.01 s"``
     overrides ``solver.duration``). With ``output`` the run directory is
     kept (timeseries.parquet, summary.json, run.json); otherwise a
     temporary one is used and removed. ``progress(fraction)`` is called
     about ten times a second. A failed integration returns a result with
     status ``failed`` and the ``error`` in the summary, as the CLI's files
-    do."""
+    do. ``summary["accuracy"]`` says how accurate the run is; with
+    ``verify=True`` the case also runs at ten times tighter tolerances
+    (``--verify``) and ``summary["accuracy"]["verify"]`` holds the
+    changes."""
     case = _with_duration(_case(case), duration)
     with _Directory(output) as d:
         summary, stream, interrupted = _rolldyn.run(
-            *case._args(), d.path, force, progress)
+            *case._args(), d.path, force, progress, verify)
         result = Result(json.loads(summary), _table(stream), d.path if d.given else None)
     if interrupted:
         raise RunInterrupted(result)

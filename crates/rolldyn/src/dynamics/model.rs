@@ -46,7 +46,7 @@ use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use crate::geometry::Raceway;
 use crate::geometry::{BearingGeometry, RingKind};
 use crate::integrate::linear::BlockLayout;
-use crate::integrate::{BlockSplit, OdeSystem};
+use crate::integrate::{BlockSplit, EnergyBalance, OdeSystem};
 use crate::kinematics::cage_speed_ratio;
 use crate::lubrication::Supply;
 use crate::material::{Material, effective_modulus};
@@ -795,6 +795,18 @@ impl OdeSystem for BearingModel {
             }
         }
         absolute[l.cage() + 2] = true;
+    }
+
+    /// Drive and external work (with the films' work), dissipated energy
+    /// and mechanical energy: the balance `rolldyn run` reports, for the
+    /// integrators' energy error control.
+    fn energy_balance(&self, t: f64, y: &[f64]) -> Option<EnergyBalance> {
+        let (work, dissipated) = self.work(y);
+        Some(EnergyBalance {
+            work: work + self.film_work(y),
+            dissipated,
+            mechanical: self.energy(t, y).total(),
+        })
     }
 
     /// Spalls: the step may not carry a contact across one unseen.

@@ -5,6 +5,7 @@
 use super::checkpoint::{
     Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
 };
+use super::energy_control::EnergyControl;
 use super::tableau::Tableau;
 use super::{Integrator, OdeSystem, Tolerances};
 
@@ -97,6 +98,8 @@ pub struct ExplicitRk {
     dense: Vec<f64>,
     stats: IntegrationStats,
     control_state: PiControl,
+    /// Error control of the energy balance, if asked for.
+    energy: Option<EnergyControl>,
 }
 
 /// Weight β of the previous error in the PI step-size controller
@@ -264,6 +267,7 @@ impl ExplicitRk {
                 ..Default::default()
             },
             control_state: PiControl::new(),
+            energy: None,
         };
         if me.f.iter().any(|v| !v.is_finite()) {
             let first = me.f.iter().position(|v| !v.is_finite()).unwrap_or(0);
@@ -317,6 +321,17 @@ impl ExplicitRk {
         (100.0 * h0).min(h1)
     }
 
+    /// Also controls the error of the system's energy balance to
+    /// `tolerance` per unit of energy turned over in a step
+    /// ([`super::energy_control`]); adaptive steps only, no effect for a
+    /// system that keeps no balance. Call before the first step.
+    pub fn with_energy_control(mut self, system: &impl OdeSystem, tolerance: f64) -> Self {
+        if matches!(self.control, StepControl::Adaptive { .. }) && !self.tableau.error.is_empty() {
+            self.energy = EnergyControl::new(system, tolerance, self.t, &self.y);
+        }
+        self
+    }
+
     /// Step size the next step will try.
     pub fn step_size(&self) -> f64 {
         self.h
@@ -366,7 +381,19 @@ impl ExplicitRk {
             sum += (h * e / scale).powi(2);
         }
         let err = (sum / n as f64).sqrt();
-        if err.is_finite() { err } else { f64::INFINITY }
+        if !err.is_finite() {
+            return f64::INFINITY;
+        }
+        match &mut self.energy {
+            // Only a step the states pass needs the energy's verdict.
+            Some(energy) if err <= 1.0 => {
+                let (k, weights) = (&self.k, tab.error);
+                let error =
+                    |i: usize| h * weights.iter().zip(k).map(|(w, k)| w * k[i]).sum::<f64>();
+                err.max(energy.scaled_error(system, self.t, &self.y, h, &self.y_new, error))
+            }
+            _ => err,
+        }
     }
 
     /// The scaled error of each component in the last attempt of step h
@@ -418,6 +445,9 @@ impl ExplicitRk {
             self.stats.rhs_evaluations += 1;
         }
         self.stats.steps += 1;
+        if let Some(energy) = &mut self.energy {
+            energy.accepted();
+        }
         if system.accept_step(self.t, &self.y) {
             system.rhs(self.t, &self.y, &mut self.f);
             self.stats.rhs_evaluations += 1;
@@ -447,6 +477,9 @@ impl Checkpoint for ExplicitRk {
         )?;
         input.f64s_into("dense", &mut self.dense)?;
         self.control_state.err_prev = input.f64()?;
+        if let Some(energy) = &mut self.energy {
+            energy.reset();
+        }
         self.stats.restore(input)
     }
 }

@@ -24,6 +24,7 @@
 
 pub mod checkpoint;
 pub mod driver;
+pub mod energy_control;
 pub mod explicit;
 pub mod jacobian;
 pub mod linear;
@@ -32,6 +33,7 @@ pub mod tableau;
 
 pub use checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
 pub use driver::{RunEnd, RunReport, Sampling, run, run_from};
+pub use energy_control::{DEFAULT_ENERGY_TOLERANCE, EnergyBalance};
 pub use explicit::{ExplicitRk, IntegrationError, IntegrationStats, StepControl};
 pub use jacobian::BlockSplit;
 pub use rosenbrock::{ROS34PW2, Rosenbrock, RosenbrockTableau};
@@ -78,6 +80,15 @@ pub trait OdeSystem {
     /// integrator re-evaluates f at the new point. Default: nothing.
     fn accept_step(&mut self, _t: f64, _y: &[f64]) -> bool {
         false
+    }
+
+    /// The system's energy balance at (t, y), if it keeps one: work done on
+    /// it and energy dissipated since the start (accumulated as states) and
+    /// its mechanical energy. Integrators given an energy tolerance control
+    /// the error of W − D − E as well as the states' ([`energy_control`]).
+    /// Must not allocate. Default: none.
+    fn energy_balance(&self, _t: f64, _y: &[f64]) -> Option<EnergyBalance> {
+        None
     }
 
     /// The block structure of the right-hand side, if it has one: implicit

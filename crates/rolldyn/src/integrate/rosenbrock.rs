@@ -27,6 +27,7 @@
 use super::checkpoint::{
     Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
 };
+use super::energy_control::EnergyControl;
 use super::explicit::{IntegrationError, IntegrationStats, PiControl};
 use super::jacobian::{JacobianWork, finite_difference};
 use super::linear::{BlockJacobian, BlockLayout, BlockLu};
@@ -191,6 +192,8 @@ pub struct Rosenbrock {
     f_prev: Vec<f64>,
     stats: IntegrationStats,
     control_state: PiControl,
+    /// Error control of the energy balance, if asked for.
+    energy: Option<EnergyControl>,
 }
 
 impl Rosenbrock {
@@ -273,6 +276,7 @@ impl Rosenbrock {
                 ..Default::default()
             },
             control_state: PiControl::new(),
+            energy: None,
         };
         me.h = initial_step
             .unwrap_or_else(|| me.starting_step())
@@ -295,6 +299,15 @@ impl Rosenbrock {
         } else {
             (0.01 / d1).clamp(1e-12, 1e-3)
         }
+    }
+
+    /// Also controls the error of the system's energy balance to
+    /// `tolerance` per unit of energy turned over in a step
+    /// ([`super::energy_control`]); no effect for a system that keeps no
+    /// balance. Call before the first step.
+    pub fn with_energy_control(mut self, system: &impl OdeSystem, tolerance: f64) -> Self {
+        self.energy = EnergyControl::new(system, tolerance, self.t, &self.y);
+        self
     }
 
     /// Step size the next step will try.
@@ -383,7 +396,17 @@ impl Rosenbrock {
             sum += (err / scale).powi(2);
         }
         let err = (sum / n as f64).sqrt();
-        if err.is_finite() { err } else { f64::INFINITY }
+        if !err.is_finite() {
+            return f64::INFINITY;
+        }
+        match &mut self.energy {
+            // Only a step the states pass needs the energy's verdict.
+            Some(energy) if err <= 1.0 => {
+                let e = &self.error;
+                err.max(energy.scaled_error(system, self.t, &self.y, h, &self.y_new, |k| e[k]))
+            }
+            _ => err,
+        }
     }
 
     fn finish_step(&mut self, system: &mut impl OdeSystem, h: f64) {
@@ -397,6 +420,9 @@ impl Rosenbrock {
         system.rhs(self.t, &self.y, &mut self.f);
         self.stats.rhs_evaluations += 1;
         self.stats.steps += 1;
+        if let Some(energy) = &mut self.energy {
+            energy.accepted();
+        }
         if let Some(age) = &mut self.jacobian_age {
             *age += 1;
         }
@@ -440,6 +466,9 @@ impl Checkpoint for Rosenbrock {
         };
         self.factored_step = input.opt_f64()?;
         self.gathered = false;
+        if let Some(energy) = &mut self.energy {
+            energy.reset();
+        }
         let j = &mut self.jacobian;
         input.f64s_into("jacobian diagonal blocks", &mut j.diag)?;
         input.f64s_into("jacobian upper border", &mut j.upper)?;

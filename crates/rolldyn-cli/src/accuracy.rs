@@ -1,0 +1,253 @@
+//! How accurate a run is: the `accuracy` object of `summary.json`, the
+//! warning on stderr and the report's banner, and `run --verify` (the same
+//! case again at ten times tighter tolerances, and how much the summary's
+//! main quantities moved). docs/dynamics.md, "Accuracy at default
+//! settings", explains the measures and their limits.
+
+use crate::run::Summary;
+use serde::Serialize;
+
+/// Largest energy-balance error, relative to the drive work, that a run
+/// reports as `ok`.
+pub const ENERGY_BALANCE_LIMIT: f64 = 1e-3;
+
+/// Largest relative change under `--verify` of the cage speed, the contact
+/// loads and the power loss that passes.
+pub const VERIFY_LIMIT_MEANS: f64 = 0.01;
+
+/// Largest relative change under `--verify` of the vibration RMS values and
+/// the cage-whirl radius that passes.
+pub const VERIFY_LIMIT_VIBRATION: f64 = 0.05;
+
+/// Vibration RMS values below this many times the run's velocity
+/// tolerance (rtol × 1 mm/s, the integrator's absolute tolerance of the
+/// ring velocities) are integration noise, not vibration: `--verify`
+/// does not compare them (an axially loaded bearing without defects).
+pub const VIBRATION_NOISE_FACTOR: f64 = 10.0;
+
+/// Factor by which `--verify` tightens the tolerances.
+pub const VERIFY_TIGHTENING: f64 = 10.0;
+
+/// The `accuracy` object of `summary.json`.
+#[derive(Debug, Clone, Serialize)]
+pub struct Accuracy {
+    /// The energy balance error relative to the drive work (the same value
+    /// as the summary's `energy_balance_relative_error`).
+    pub energy_balance_relative_error: f64,
+    /// The limit above which the status is `warning`.
+    pub energy_balance_limit: f64,
+    /// `ok` or `warning`.
+    pub status: &'static str,
+    /// Why the status is `warning` (null when `ok`).
+    pub reason: Option<String>,
+    /// What to do about it (null when `ok`).
+    pub hint: Option<String>,
+    /// The `--verify` comparison (null without `--verify`).
+    pub verify: Option<Verification>,
+}
+
+/// One quantity compared by `--verify`.
+#[derive(Debug, Clone, Serialize)]
+pub struct Change {
+    /// Summary key.
+    pub key: &'static str,
+    /// Value of the run.
+    pub value: f64,
+    /// Value at the tighter tolerances.
+    pub reference: f64,
+    /// |value − reference| / |reference|.
+    pub relative_change: f64,
+    /// The limit it is held to.
+    pub limit: f64,
+}
+
+/// The result of `run --verify`.
+#[derive(Debug, Clone, Serialize)]
+pub struct Verification {
+    /// Relative tolerance of the verifying run.
+    pub relative_tolerance: Option<f64>,
+    /// Energy tolerance of the verifying run (null: off).
+    pub energy_tolerance: Option<f64>,
+    /// Where the verifying run was written.
+    pub directory: String,
+    /// Its wall time \[s\].
+    pub wall_time_s: f64,
+    /// Its energy-balance error relative to the drive work.
+    pub energy_balance_relative_error: f64,
+    /// The compared quantities.
+    pub changes: Vec<Change>,
+    /// The largest relative change over the limits, as a fraction of its
+    /// limit (≤ 1 passes).
+    pub worst_ratio_to_limit: f64,
+    /// `ok` or `warning`.
+    pub status: &'static str,
+}
+
+/// The accuracy of a run from its summary's energy balance. `settings`
+/// names the tolerances for the hint.
+pub fn assess(
+    relative_error: f64,
+    integrator: &str,
+    relative_tolerance: Option<f64>,
+    energy_tolerance: Option<f64>,
+) -> Accuracy {
+    let ok = relative_error.abs() <= ENERGY_BALANCE_LIMIT;
+    let (reason, hint) = if ok {
+        (None, None)
+    } else {
+        let reason = format!(
+            "the energy balance closes to {relative_error:.2e} of the drive work, above the {ENERGY_BALANCE_LIMIT:.0e} of a converged run: the integration error is large"
+        );
+        let hint = match (relative_tolerance, energy_tolerance) {
+            (None, _) => format!(
+                "{integrator} has a fixed step: take a smaller solver.time_step, or an adaptive solver.integrator"
+            ),
+            (Some(rtol), Some(eps)) => format!(
+                "tighten the tolerances ten-fold (--set solver.relative_tolerance={:e} --set solver.energy_tolerance={:e}) and compare, or run with --verify",
+                rtol / VERIFY_TIGHTENING,
+                eps / VERIFY_TIGHTENING
+            ),
+            (Some(rtol), None) => format!(
+                "the energy error control is off (solver.energy_tolerance = 0): remove that setting, or tighten solver.relative_tolerance to {:e}; --verify compares",
+                rtol / VERIFY_TIGHTENING
+            ),
+        };
+        (Some(reason), Some(hint))
+    };
+    Accuracy {
+        energy_balance_relative_error: relative_error,
+        energy_balance_limit: ENERGY_BALANCE_LIMIT,
+        status: if ok { "ok" } else { "warning" },
+        reason,
+        hint,
+        verify: None,
+    }
+}
+
+/// The quantities `--verify` compares, their limits and the magnitude
+/// below which a value is not compared.
+fn compared(summary: &Summary) -> Vec<(&'static str, f64, f64, f64)> {
+    let v = &summary.vibration;
+    let (means, vibration) = (VERIFY_LIMIT_MEANS, VERIFY_LIMIT_VIBRATION);
+    let zero = 1e-12;
+    let noise_mm_s = VIBRATION_NOISE_FACTOR * summary.relative_tolerance.unwrap_or(0.0);
+    let mut out = vec![
+        (
+            "mean_cage_speed_rpm",
+            summary.mean_cage_speed_rpm,
+            means,
+            zero,
+        ),
+        ("mean_load_inner_n", summary.mean_load_inner_n, means, zero),
+        ("max_load_inner_n", summary.max_load_inner_n, means, zero),
+        ("mean_load_outer_n", summary.mean_load_outer_n, means, zero),
+        ("max_load_outer_n", summary.max_load_outer_n, means, zero),
+        // The exact mean (the dissipated energy's increase over the
+        // window), not the mean of the sampled components: impacts make
+        // those depend on where the samples fall.
+        (
+            "mean_dissipated_power_w",
+            summary.power.mean_dissipated_power_w,
+            means,
+            zero,
+        ),
+    ];
+    for (key, value) in v.rms_values() {
+        out.push((key, value, vibration, noise_mm_s.max(zero)));
+    }
+    // A whirl below the position tolerance (rtol × 1 µm) is noise too.
+    let noise_m = 1e-6 * VIBRATION_NOISE_FACTOR * summary.relative_tolerance.unwrap_or(0.0);
+    out.push((
+        "cage_whirl_radius_mean_m",
+        v.cage_whirl_radius_mean_m,
+        vibration,
+        noise_m.max(zero),
+    ));
+    out
+}
+
+/// Compares a run with its verifying run. Quantities below their noise
+/// magnitude in both runs are left out: a planar run's axial vibration, an
+/// unloaded ring, the integration noise of a bearing without vibration.
+pub fn verify(
+    run: &Summary,
+    reference: &Summary,
+    directory: String,
+    energy_tolerance: Option<f64>,
+) -> Verification {
+    let mut changes = Vec::new();
+    let mut worst: f64 = 0.0;
+    for ((key, value, limit, noise), (_, reference_value, _, _)) in
+        compared(run).into_iter().zip(compared(reference))
+    {
+        let quiet = value.abs() < noise && reference_value.abs() < noise;
+        if !value.is_finite() || !reference_value.is_finite() || quiet || reference_value == 0.0 {
+            continue;
+        }
+        let relative_change = (value - reference_value).abs() / reference_value.abs();
+        worst = worst.max(relative_change / limit);
+        changes.push(Change {
+            key,
+            value,
+            reference: reference_value,
+            relative_change,
+            limit,
+        });
+    }
+    Verification {
+        relative_tolerance: reference.relative_tolerance,
+        energy_tolerance,
+        directory,
+        wall_time_s: reference.wall_time_s,
+        energy_balance_relative_error: reference.energy_balance_relative_error,
+        changes,
+        worst_ratio_to_limit: worst,
+        status: if worst <= 1.0 { "ok" } else { "warning" },
+    }
+}
+
+/// The warning for stderr, if the run's accuracy needs one.
+pub fn warning(accuracy: &Accuracy) -> Option<String> {
+    let mut lines = Vec::new();
+    if let (Some(reason), Some(hint)) = (&accuracy.reason, &accuracy.hint) {
+        lines.push(format!("warning: {reason}; {hint}"));
+    }
+    if let Some(v) = accuracy.verify.as_ref().filter(|v| v.status != "ok") {
+        let moved: Vec<String> = v
+            .changes
+            .iter()
+            .filter(|c| c.relative_change > c.limit)
+            .map(|c| format!("{} by {:.2} %", c.key, 100.0 * c.relative_change))
+            .collect();
+        lines.push(format!(
+            "warning: --verify: at ten times tighter tolerances {} moved beyond their limits ({} % for means and loads, {} % for vibration); the results are not converged at these settings",
+            moved.join(", "),
+            100.0 * VERIFY_LIMIT_MEANS,
+            100.0 * VERIFY_LIMIT_VIBRATION
+        ));
+    }
+    (!lines.is_empty()).then(|| lines.join("\n") + "\n")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_closed_balance_is_ok_and_an_open_one_warns_with_a_hint() {
+        let ok = assess(-5e-4, "ros34pw2", Some(1e-3), Some(1e-4));
+        assert_eq!(ok.status, "ok");
+        assert!(ok.reason.is_none() && ok.hint.is_none());
+        assert!(warning(&ok).is_none());
+        let bad = assess(0.25, "ros34pw2", Some(1e-3), Some(1e-4));
+        assert_eq!(bad.status, "warning");
+        let hint = bad.hint.clone().unwrap();
+        assert!(hint.contains("solver.relative_tolerance=1e-4"), "{hint}");
+        assert!(hint.contains("solver.energy_tolerance=1e-5"), "{hint}");
+        assert!(warning(&bad).unwrap().contains("2.50e-1"));
+        let fixed = assess(0.25, "rk4", None, None);
+        assert!(fixed.hint.unwrap().contains("solver.time_step"));
+        let off = assess(-0.1, "dopri5", Some(1e-3), None);
+        assert!(off.hint.unwrap().contains("energy_tolerance = 0"));
+    }
+}

@@ -1,0 +1,189 @@
+//! The accuracy regression suite: regimes bearing engineers run, at the
+//! default settings of their case, held to the bounds a converged run
+//! keeps (docs/dynamics.md, "Accuracy at default settings"):
+//!
+//! * the energy balance closes to 1e-3 of the drive work
+//!   (`accuracy.status` = `ok`);
+//! * `--verify` (the same case at ten times tighter tolerances) moves the
+//!   cage speed and the mean and maximum contact loads by less than 1 %
+//!   and the ring vibration RMS by less than 5 %.
+//!
+//! Every case here failed the balance before the energy-balance step
+//! control (docs/performance.md has the before/after table). The regime
+//! that is still not converged at its defaults, a deep sharp spall with
+//! undamped Hertz contacts, is held to its warning: the run must say so.
+
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{rolldyn, stderr, temp_dir};
+use serde_json::Value;
+
+/// Runs `rolldyn run` with `args` (and the case text on stdin when
+/// given) into a fresh directory; returns the summary and stderr.
+fn run(tag: &str, args: &[&str], case: Option<&str>) -> (Value, String) {
+    let dir = temp_dir(&format!("accuracy-{tag}"));
+    let dir_text = dir.display().to_string();
+    let mut all = vec!["run"];
+    if case.is_some() {
+        all.push("-");
+    }
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["-o", &dir_text]);
+    let o = rolldyn(&all, case);
+    assert!(o.status.success(), "{tag}: {}", stderr(&o));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    (summary, stderr(&o))
+}
+
+/// The energy balance closes and, with `verify`, the main results stay
+/// within their limits at ten times tighter tolerances.
+fn assert_converged(tag: &str, summary: &Value, quantities: &[&str]) {
+    let accuracy = &summary["accuracy"];
+    let balance = accuracy["energy_balance_relative_error"].as_f64().unwrap();
+    assert!(
+        balance.abs() <= 1e-3 && accuracy["status"] == "ok",
+        "{tag}: energy balance {balance:e} ({})",
+        accuracy["reason"]
+    );
+    let Some(changes) = accuracy["verify"]["changes"].as_array() else {
+        return;
+    };
+    for key in quantities {
+        let change = changes
+            .iter()
+            .find(|c| c["key"] == *key)
+            .unwrap_or_else(|| panic!("{tag}: --verify compared no {key}"));
+        let (relative, limit) = (
+            change["relative_change"].as_f64().unwrap(),
+            change["limit"].as_f64().unwrap(),
+        );
+        assert!(
+            relative <= limit,
+            "{tag}: {key} moved by {relative:e} at ten times tighter tolerances (limit {limit})"
+        );
+    }
+}
+
+const MEANS: [&str; 5] = [
+    "mean_cage_speed_rpm",
+    "mean_load_inner_n",
+    "max_load_inner_n",
+    "mean_load_outer_n",
+    "max_load_outer_n",
+];
+
+/// The default case (7008C, EHL traction, rtol 1e-2) at low speed: the
+/// balance was −0.37 of the drive work at 500 rpm and −0.13 at 100 rpm,
+/// the power loss at 100 rpm 82 % too high.
+#[test]
+fn low_speed_ehl_closes_its_balance() {
+    let (s, _) = run("500rpm", &["--speed", "500 rpm", "--verify"], None);
+    assert_converged("500 rpm", &s, &MEANS);
+    let (s, _) = run(
+        "100rpm",
+        &["--speed", "100 rpm", "--duration", "10 ms", "--verify"],
+        None,
+    );
+    assert_converged("100 rpm", &s, &MEANS);
+}
+
+/// Heavy load on the default case.
+#[test]
+fn heavy_load_closes_its_balance() {
+    let (s, _) = run("heavy", &["--axial-load", "2 kN", "--verify"], None);
+    assert_converged("2 kN", &s, &MEANS);
+}
+
+/// A start at 1 rpm under 5 kN (EHL traction near zero entrainment): ran
+/// at nanosecond steps for minutes before; the balance only (the
+/// verifying run at rtol 1e-3 takes minutes).
+#[test]
+fn a_one_rpm_start_closes_its_balance() {
+    let (s, _) = run(
+        "1rpm",
+        &[
+            "--speed",
+            "1 rpm",
+            "--radial-load",
+            "5 kN",
+            "--duration",
+            "10 ms",
+        ],
+        None,
+    );
+    assert_converged("1 rpm", &s, &[]);
+}
+
+/// Seed 000's 6304 (clearance, pocket impacts, modified Coulomb traction):
+/// the first 20 ms, where the pockets and the rings settle.
+#[test]
+fn pocket_impacts_close_their_balance() {
+    let case = String::from_utf8(rolldyn(&["new", "--preset", "6304"], None).stdout).unwrap();
+    let (s, _) = run("6304", &["--duration", "20 ms", "--verify"], Some(&case));
+    assert_converged("6304", &s, &MEANS);
+}
+
+/// The CWRU example's bridged sharp outer-race spall (Lankarani–Nikravesh
+/// contacts): −2.0e-2 before over 0.3 s; here its first 0.1 s.
+#[test]
+fn a_bridged_spall_with_damped_contacts_closes_its_balance() {
+    let case = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/cwru6205/case.toml"
+    ))
+    .unwrap();
+    let (s, _) = run("cwru", &["--duration", "0.1 s", "--verify"], Some(&case));
+    let vibration = [
+        "inner_ring_velocity_rms_y_mm_s",
+        "inner_ring_velocity_rms_z_mm_s",
+    ];
+    assert_converged("cwru", &s, &[&MEANS[..], &vibration[..]].concat());
+}
+
+/// The known gap: a 0.533 mm × 0.28 mm outer-race spall under 1 kN on the
+/// 6205 preset (undamped Hertz contacts, dry Coulomb friction). The ball
+/// drops into the pit and strikes its far edge; the contact vibrations it
+/// excites are undamped in the model, and the drive exchanges ~170 times
+/// more energy back and forth than it supplies net. The defaults do not
+/// close this balance (docs/dynamics.md); the run must say so.
+#[test]
+fn an_unconverged_deep_spall_says_so() {
+    let mut case = String::from_utf8(rolldyn(&["new", "--preset", "6205"], None).stdout).unwrap();
+    case.push_str(
+        "\n[surface.outer]\n[[surface.outer.spall]]\nposition = \"270 deg\"\nlength = \"0.533 mm\"\ndepth = \"0.28 mm\"\n",
+    );
+    let (s, err) = run(
+        "deep-spall",
+        &[
+            "--radial-load",
+            "-1 kN",
+            "--speed",
+            "1772 rpm",
+            "--duration",
+            "20 ms",
+        ],
+        Some(&case),
+    );
+    let balance = s["accuracy"]["energy_balance_relative_error"]
+        .as_f64()
+        .unwrap();
+    assert!(
+        balance.abs() > 1e-3,
+        "now converged ({balance:e}): move it to the converged regimes"
+    );
+    assert_eq!(s["accuracy"]["status"], "warning");
+    assert!(
+        s["accuracy"]["hint"]
+            .as_str()
+            .unwrap()
+            .contains("solver.relative_tolerance=")
+    );
+    assert!(
+        err.contains("warning: the energy balance closes to"),
+        "{err}"
+    );
+}
