@@ -23,7 +23,8 @@ use common::{rolldyn, stderr, temp_dir};
 use serde_json::Value;
 
 /// Runs `rolldyn run` with `args` (and the case text on stdin when
-/// given) into a fresh directory; returns the summary and stderr.
+/// given) into a fresh directory; returns the summary and stderr (and the
+/// report, when `--report` wrote one, appended to stderr's text).
 fn run(tag: &str, args: &[&str], case: Option<&str>) -> (Value, String) {
     let dir = temp_dir(&format!("accuracy-{tag}"));
     let dir_text = dir.display().to_string();
@@ -37,8 +38,9 @@ fn run(tag: &str, args: &[&str], case: Option<&str>) -> (Value, String) {
     assert!(o.status.success(), "{tag}: {}", stderr(&o));
     let summary: Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let report = std::fs::read_to_string(dir.join("report.html")).unwrap_or_default();
     std::fs::remove_dir_all(&dir).ok();
-    (summary, stderr(&o))
+    (summary, stderr(&o) + &report)
 }
 
 /// The energy balance closes and, with `verify`, the main results stay
@@ -164,7 +166,10 @@ fn a_bridged_spall_with_damped_contacts_closes_its_balance() {
         .find(|c| c["key"] == "inner_ring_velocity_rms_z_mm_s")
         .unwrap();
     let moved = vertical["relative_change"].as_f64().unwrap();
-    assert!(moved > 0.05, "now converged ({moved:e}): hold it to its limit");
+    assert!(
+        moved > 0.05,
+        "now converged ({moved:e}): hold it to its limit"
+    );
     assert_eq!(verify["status"], "warning");
     assert!(err.contains("warning: --verify:"), "{err}");
 }
@@ -190,6 +195,7 @@ fn an_unconverged_deep_spall_says_so() {
             "1772 rpm",
             "--duration",
             "20 ms",
+            "--report",
         ],
         Some(&case),
     );
@@ -210,5 +216,12 @@ fn an_unconverged_deep_spall_says_so() {
     assert!(
         err.contains("warning: the energy balance closes to"),
         "{err}"
+    );
+    // The report's banner.
+    assert!(
+        err.contains(
+            "<div class=\"warning\" role=\"alert\"><strong>Warning:</strong> The energy balance closes to"
+        ),
+        "no banner in the report"
     );
 }

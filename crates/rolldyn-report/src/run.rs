@@ -160,8 +160,8 @@ fn accuracy_warnings(data: &RunData) -> Vec<String> {
     if text(accuracy, "status").as_deref() == Some("warning") {
         out.push(format!(
             "{}. {}.",
-            text(accuracy, "reason").unwrap_or_default(),
-            text(accuracy, "hint").unwrap_or_default()
+            sentence(&text(accuracy, "reason").unwrap_or_default()),
+            sentence(&text(accuracy, "hint").unwrap_or_default())
         ));
     }
     if let Some(verify) = accuracy
@@ -189,11 +189,20 @@ fn accuracy_warnings(data: &RunData) -> Vec<String> {
             })
             .collect();
         out.push(format!(
-            "at ten times tighter tolerances (--verify) {} moved beyond their limits: the results are not converged at these settings.",
+            "At ten times tighter tolerances (--verify) {} moved beyond their limits: the results are not converged at these settings.",
             moved.join(", ")
         ));
     }
     out
+}
+
+/// `text` with its first letter in upper case.
+fn sentence(text: &str) -> String {
+    let mut chars = text.chars();
+    chars
+        .next()
+        .map(|c| c.to_uppercase().chain(chars).collect())
+        .unwrap_or_default()
 }
 
 fn rows(data: &RunData, keys: &[(&str, &str)]) -> Vec<Vec<String>> {

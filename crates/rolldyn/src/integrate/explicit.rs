@@ -465,6 +465,9 @@ impl Checkpoint for ExplicitRk {
         );
         out.f64s(&self.dense);
         out.f64(self.control_state.err_prev);
+        if let Some(energy) = &self.energy {
+            energy.save(out);
+        }
         self.stats.save(out);
     }
 
@@ -478,7 +481,7 @@ impl Checkpoint for ExplicitRk {
         input.f64s_into("dense", &mut self.dense)?;
         self.control_state.err_prev = input.f64()?;
         if let Some(energy) = &mut self.energy {
-            energy.reset();
+            energy.restore(input)?;
         }
         self.stats.restore(input)
     }

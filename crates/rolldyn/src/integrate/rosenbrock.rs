@@ -445,6 +445,9 @@ impl Checkpoint for Rosenbrock {
         for part in [&j.diag, &j.upper, &j.lower, &j.border] {
             out.f64s(part);
         }
+        if let Some(energy) = &self.energy {
+            energy.save(out);
+        }
         self.stats.save(out);
     }
 
@@ -466,14 +469,14 @@ impl Checkpoint for Rosenbrock {
         };
         self.factored_step = input.opt_f64()?;
         self.gathered = false;
-        if let Some(energy) = &mut self.energy {
-            energy.reset();
-        }
         let j = &mut self.jacobian;
         input.f64s_into("jacobian diagonal blocks", &mut j.diag)?;
         input.f64s_into("jacobian upper border", &mut j.upper)?;
         input.f64s_into("jacobian lower border", &mut j.lower)?;
         input.f64s_into("jacobian corner", &mut j.border)?;
+        if let Some(energy) = &mut self.energy {
+            energy.restore(input)?;
+        }
         self.stats.restore(input)?;
         if let Some(h) = self.factored_step {
             self.gathered = true;
