@@ -83,10 +83,13 @@ pub struct Verification {
     pub status: &'static str,
 }
 
-/// The accuracy of a run from its summary's energy balance. `settings`
-/// names the tolerances for the hint.
+/// The accuracy of a run from its summary's energy balance (relative, and
+/// the error and drive work in joules for the message); the integrator and
+/// tolerances name what to tighten in the hint.
 pub fn assess(
     relative_error: f64,
+    error_j: f64,
+    drive_j: f64,
     integrator: &str,
     relative_tolerance: Option<f64>,
     energy_tolerance: Option<f64>,
@@ -96,7 +99,7 @@ pub fn assess(
         (None, None)
     } else {
         let reason = format!(
-            "the energy balance closes to {relative_error:.2e} of the drive work, above the {ENERGY_BALANCE_LIMIT:.0e} of a converged run: the integration error is large"
+            "the energy balance closes to {relative_error:.2e} of the drive work ({error_j:.3e} J of {drive_j:.3e} J), above the {ENERGY_BALANCE_LIMIT:.0e} of a converged run: the integration error is large"
         );
         let hint = match (relative_tolerance, energy_tolerance) {
             (None, _) => format!(
@@ -235,19 +238,20 @@ mod tests {
 
     #[test]
     fn a_closed_balance_is_ok_and_an_open_one_warns_with_a_hint() {
-        let ok = assess(-5e-4, "ros34pw2", Some(1e-3), Some(1e-4));
+        let ok = assess(-5e-4, -5e-7, 1e-3, "ros34pw2", Some(1e-3), Some(1e-4));
         assert_eq!(ok.status, "ok");
         assert!(ok.reason.is_none() && ok.hint.is_none());
         assert!(warning(&ok).is_none());
-        let bad = assess(0.25, "ros34pw2", Some(1e-3), Some(1e-4));
+        let bad = assess(0.25, 2.5e-4, 1e-3, "ros34pw2", Some(1e-3), Some(1e-4));
         assert_eq!(bad.status, "warning");
         let hint = bad.hint.clone().unwrap();
         assert!(hint.contains("solver.relative_tolerance=1e-4"), "{hint}");
         assert!(hint.contains("solver.energy_tolerance=1e-5"), "{hint}");
-        assert!(warning(&bad).unwrap().contains("2.50e-1"));
-        let fixed = assess(0.25, "rk4", None, None);
+        let text = warning(&bad).unwrap();
+        assert!(text.contains("2.50e-1 of the drive work (2.500e-4 J of 1.000e-3 J)"), "{text}");
+        let fixed = assess(0.25, 2.5e-4, 1e-3, "rk4", None, None);
         assert!(fixed.hint.unwrap().contains("solver.time_step"));
-        let off = assess(-0.1, "dopri5", Some(1e-3), None);
+        let off = assess(-0.1, -1e-4, 1e-3, "dopri5", Some(1e-3), None);
         assert!(off.hint.unwrap().contains("energy_tolerance = 0"));
     }
 }

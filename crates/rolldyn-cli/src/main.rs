@@ -286,6 +286,11 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 }
             };
             if !sweep.is_empty() {
+                if verify {
+                    return Err(Failure::BadInput(
+                        "argument --verify: not with --sweep: each point's summary.json holds its accuracy; to verify a point, run its case alone with --verify".into(),
+                    ));
+                }
                 if let Some(dir) = resume {
                     return Err(bad_arg(
                         "--resume",

@@ -1009,6 +1009,8 @@ fn summarise(
         energy_balance_relative_error: relative_error,
         accuracy: crate::accuracy::assess(
             relative_error,
+            imbalance,
+            drive,
             settings.integrator,
             settings.relative_tolerance,
             settings.energy_tolerance,

@@ -225,3 +225,33 @@ fn an_unconverged_deep_spall_says_so() {
         "no banner in the report"
     );
 }
+
+/// Bad settings get a clear error naming the key or flag and the rule.
+#[test]
+fn bad_accuracy_settings_are_refused() {
+    let o = rolldyn(
+        &[
+            "run",
+            "--set",
+            "solver.energy_tolerance=0.5",
+            "--duration",
+            "1 ms",
+        ],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(
+        err.contains("solver.energy_tolerance")
+            && err.contains("0.5")
+            && err.contains("[1e-9, 0.1]"),
+        "{err}"
+    );
+    let o = rolldyn(&["run", "--sweep", "axial=100N,200N", "--verify"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("--verify: not with --sweep"),
+        "{}",
+        stderr(&o)
+    );
+}
