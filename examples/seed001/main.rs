@@ -16,7 +16,7 @@
 //! (C3, C4) reports the numbers.
 
 use rolldyn::dynamics::{BearingModel, ContactSample};
-use rolldyn::integrate::{OdeSystem, ROS34PW2, Rosenbrock, RunEnd, run};
+use rolldyn::integrate::{DEFAULT_ENERGY_TOLERANCE, OdeSystem, ROS34PW2, Rosenbrock, RunEnd, run};
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
 use rolldyn::signal::{CharacteristicFrequencies, Window, amplitude_spectrum};
 use rolldyn_case::{Override, load_case, presets};
@@ -295,7 +295,8 @@ fn simulate(label: &str, axial: f64, surface: &str, duration: f64) -> Result<Out
     // The preset's tolerance (1e-2); steps ≤ 20 µs resolve the kHz lines.
     let rtol = case.relative_tolerance.unwrap_or(1e-3);
     let mut solver = Rosenbrock::new(&ROS34PW2, rtol, 2e-5, None, &model, 0.0, &y0)
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| e.to_string())?
+        .with_energy_control(&model, DEFAULT_ENERGY_TOLERANCE);
     let l = model.layout();
     let (r, c) = (l.ring(), l.cage());
     let mut dy = vec![0.0; y0.len()];

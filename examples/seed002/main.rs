@@ -15,7 +15,9 @@
 
 use rolldyn::RingKind;
 use rolldyn::dynamics::{BearingModel, ContactSample};
-use rolldyn::integrate::{ROS34PW2, Rosenbrock, RunEnd, run};
+use rolldyn::integrate::{
+    DEFAULT_ENERGY_TOLERANCE, Integrator, OdeSystem, ROS34PW2, Rosenbrock, RunEnd, run,
+};
 use rolldyn::quasistatic::{
     Conditions, QuasiStaticSolver, SolverOptions, TractionSolveOptions, solve_traction_consistent,
 };
@@ -108,7 +110,8 @@ fn simulate(mu: f64, duration: f64, out: &Path) -> Result<Vec<Row>, String> {
     };
     eprintln!("μ = {mu}: start from the {start}");
     let mut solver = Rosenbrock::new(&ROS34PW2, 1e-3, 1e-4, None, &model, 0.0, &y0)
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| e.to_string())?
+        .with_energy_control(&model, DEFAULT_ENERGY_TOLERANCE);
     let balls = g.ball_count;
     let mut samples = vec![ContactSample::default(); balls];
     let mut rows = Vec::new();
@@ -170,8 +173,10 @@ fn simulate(mu: f64, duration: f64, out: &Path) -> Result<Vec<Row>, String> {
         RunEnd::Interrupted { t } => format!("interrupted at {t} s"),
         RunEnd::Failed { error } => format!("failed: {error}"),
     };
+    let balance = |t: f64, y: &[f64]| model.energy_balance(t, y).unwrap_or_default();
+    let energy_error = balance(solver.t(), solver.y()).relative_error_since(&balance(0.0, &y0));
     eprintln!(
-        "μ = {mu}: {status}, {:.1} s wall, {} steps",
+        "μ = {mu}: {status}, {:.1} s wall, {} steps, energy balance error {energy_error:.1e} of the drive work",
         started.elapsed().as_secs_f64(),
         report.stats.steps
     );

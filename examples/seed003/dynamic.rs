@@ -21,7 +21,7 @@
 //! [`SENSITIVITY`] to show what depends on it.
 
 use rolldyn::dynamics::BearingModel;
-use rolldyn::integrate::{ROS34PW2, Rosenbrock, RunEnd, run};
+use rolldyn::integrate::{DEFAULT_ENERGY_TOLERANCE, ROS34PW2, Rosenbrock, RunEnd, run};
 use rolldyn::lubrication;
 use rolldyn::quasistatic::films::FilmInputs;
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
@@ -195,7 +195,8 @@ fn simulate(preset: &str, job: &Job) -> Result<Vibration, String> {
     let y0 = model.state_from_equilibrium(&eq);
     let rtol = case.relative_tolerance.unwrap_or(1e-3);
     let mut integrator = Rosenbrock::new(&ROS34PW2, rtol, MAX_STEP, None, &model, 0.0, &y0)
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| e.to_string())?
+        .with_energy_control(&model, DEFAULT_ENERGY_TOLERANCE);
     let (r, c) = (model.layout().ring(), model.layout().cage());
     let mut velocity: [Vec<f64>; 3] = Default::default();
     let mut cage_speed = Vec::new();

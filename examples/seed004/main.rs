@@ -13,7 +13,7 @@
 //! and `power_temperature.csv`.
 
 use rolldyn::dynamics::BearingModel;
-use rolldyn::integrate::{Integrator, OdeSystem, ROS34PW2, Rosenbrock};
+use rolldyn::integrate::{DEFAULT_ENERGY_TOLERANCE, Integrator, OdeSystem, ROS34PW2, Rosenbrock};
 use rolldyn::thermal::coupled::{CoupledOptions, CoupledProblem, coupled_steady};
 use rolldyn_case::{Override, load_case, presets};
 use std::fmt::Write as _;
@@ -134,7 +134,8 @@ fn main() -> Result<(), String> {
         .map_err(|e| e.to_string())?;
     let y0 = model.state_from_equilibrium(&eq);
     let mut rk = Rosenbrock::new(&ROS34PW2, 1e-3, 1e-4, None, &model, 0.0, &y0)
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| e.to_string())?
+        .with_energy_control(&model, DEFAULT_ENERGY_TOLERANCE);
     let (t_end, window) = (0.04, 0.02);
     let mut dy = vec![0.0; model.dimension()];
     let mut mean = rolldyn::power::Dissipation::default();

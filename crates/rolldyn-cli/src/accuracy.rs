@@ -248,7 +248,10 @@ mod tests {
         assert!(hint.contains("solver.relative_tolerance=1e-4"), "{hint}");
         assert!(hint.contains("solver.energy_tolerance=1e-5"), "{hint}");
         let text = warning(&bad).unwrap();
-        assert!(text.contains("2.50e-1 of the drive work (2.500e-4 J of 1.000e-3 J)"), "{text}");
+        assert!(
+            text.contains("2.50e-1 of the drive work (2.500e-4 J of 1.000e-3 J)"),
+            "{text}"
+        );
         let fixed = assess(0.25, 2.5e-4, 1e-3, "rk4", None, None);
         assert!(fixed.hint.unwrap().contains("solver.time_step"));
         let off = assess(-0.1, -1e-4, 1e-3, "dopri5", Some(1e-3), None);

@@ -53,6 +53,19 @@ impl EnergyBalance {
     pub fn residual(&self) -> f64 {
         self.work - self.dissipated - self.mechanical
     }
+
+    /// The balance's error since `start`, ΔW − ΔD − ΔE, relative to the
+    /// larger of the drive work and the dissipated energy (as `rolldyn
+    /// run` reports it; 0 when both are 0).
+    pub fn relative_error_since(&self, start: &EnergyBalance) -> f64 {
+        let (work, dissipated) = (self.work - start.work, self.dissipated - start.dissipated);
+        let scale = work.abs().max(dissipated.abs());
+        if scale > 0.0 {
+            (self.residual() - start.residual()) / scale
+        } else {
+            0.0
+        }
+    }
 }
 
 /// Power below which a step's allowance does not shrink: a system with
@@ -283,6 +296,23 @@ mod tests {
         // Without the control the state tolerance alone leaves the balance
         // far looser (the test can fail).
         assert!(loose > 1e-2, "without control: {loose:e}");
+    }
+
+    #[test]
+    fn relative_error_is_over_the_larger_of_work_and_dissipation() {
+        let start = EnergyBalance {
+            work: 1.0,
+            dissipated: 0.5,
+            mechanical: 2.0,
+        };
+        let end = EnergyBalance {
+            work: 3.0,
+            dissipated: 1.4,
+            mechanical: 3.0,
+        };
+        // ΔW 2, ΔD 0.9, ΔE 1: error 0.1 of 2.
+        assert!((end.relative_error_since(&start) - 0.05).abs() < 1e-12);
+        assert_eq!(start.relative_error_since(&start), 0.0);
     }
 
     #[test]
