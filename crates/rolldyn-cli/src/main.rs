@@ -351,7 +351,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             };
             let summary = run::run_case(&record, &case, dir, &options)?;
             let text = format!(
-                "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS, {} Jacobians costing {} RHS, {} factorizations)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e}\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
+                "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS, {} Jacobians costing {} RHS, {} factorizations)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e} (accuracy {})\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
                 summary.status,
                 summary.simulated_time_s,
                 summary.requested_duration_s,
@@ -367,6 +367,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 summary.pure_rolling_cage_speed_rpm,
                 summary.cage_sliding_rate,
                 summary.energy_balance_relative_error,
+                summary.accuracy.status,
                 output,
                 summary.samples,
                 output
