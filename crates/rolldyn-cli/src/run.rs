@@ -565,6 +565,13 @@ fn verify(
         ..options.clone()
     };
     let reference = run_once(&tight, &case, &verify_dir, &quiet)?.summary;
+    if reference.status == "interrupted" {
+        return Err(Failure::Interrupted(format!(
+            "--verify interrupted; {} holds the completed run, {} what the verifying run computed",
+            dir.display(),
+            verify_dir.display()
+        )));
+    }
     if reference.status != "completed" {
         return Err(Failure::Model(format!(
             "--verify: the run at ten times tighter tolerances in {} ended {}: {}",
