@@ -4,8 +4,12 @@
 //! main quantities moved). docs/dynamics.md, "Accuracy at default
 //! settings", explains the measures and their limits.
 
-use crate::run::Summary;
+use crate::Failure;
+use crate::checkpoint::RunRecord;
+use crate::run::{RunOptions, Summary};
+use rolldyn_io::write_atomic;
 use serde::Serialize;
+use std::path::Path;
 
 /// Largest energy-balance error, relative to the drive work, that a run
 /// reports as `ok`.
@@ -207,6 +211,74 @@ pub fn verify(
         worst_ratio_to_limit: worst,
         status: if worst <= 1.0 { "ok" } else { "warning" },
     }
+}
+
+/// `--verify`: the run's case again, into `DIR/verify/`, at ten times
+/// tighter tolerances (the relative and energy tolerances, or rk4's step);
+/// the comparison goes into `summary.accuracy.verify` and `summary.json`
+/// is written again.
+pub(crate) fn verify_run(
+    record: &RunRecord,
+    dir: &Path,
+    options: &RunOptions,
+    summary: &mut Summary,
+) -> Result<(), Failure> {
+    let mut tight = record.clone();
+    let sets = &mut tight.overrides.set;
+    match summary.relative_tolerance {
+        Some(rtol) => {
+            sets.push(format!(
+                "solver.relative_tolerance={:e}",
+                (rtol / VERIFY_TIGHTENING).max(1e-12)
+            ));
+            if let Some(eps) = summary.energy_tolerance {
+                sets.push(format!(
+                    "solver.energy_tolerance={:e}",
+                    (eps / VERIFY_TIGHTENING).max(1e-9)
+                ));
+            }
+        }
+        None => sets.push(format!(
+            "solver.time_step={:e} s",
+            (summary.max_step_s / VERIFY_TIGHTENING).max(1e-10)
+        )),
+    }
+    let case = tight
+        .overrides
+        .load_text(&tight.source, tight.case_text.as_deref())?;
+    let verify_dir = dir.join("verify");
+    let quiet = RunOptions {
+        resume: false,
+        quiet: true,
+        progress: None,
+        verify: false,
+        ..options.clone()
+    };
+    let reference = crate::run::run_once(&tight, &case, &verify_dir, &quiet)?.summary;
+    if reference.status == "interrupted" {
+        return Err(Failure::Interrupted(format!(
+            "--verify interrupted; {} holds the completed run, {} what the verifying run computed",
+            dir.display(),
+            verify_dir.display()
+        )));
+    }
+    if reference.status != "completed" {
+        return Err(Failure::Model(format!(
+            "--verify: the run at ten times tighter tolerances in {} ended {}: {}",
+            verify_dir.display(),
+            reference.status,
+            reference.error.unwrap_or_default()
+        )));
+    }
+    summary.accuracy.verify = Some(verify(
+        summary,
+        &reference,
+        verify_dir.display().to_string(),
+        reference.energy_tolerance,
+    ));
+    let json = crate::finite::to_json(&*summary).map_err(|e| Failure::Internal(e.to_string()))?;
+    write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes())
+        .map_err(|e| Failure::BadInput(e.to_string()))
 }
 
 /// The warning for stderr, if the run's accuracy needs one.
