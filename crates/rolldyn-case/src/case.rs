@@ -632,7 +632,11 @@ impl Case {
                 .unwrap_or(0.0),
         };
 
-        let surface = surface::surface(&raw.surface, bearing.geometry.ball_count)?;
+        let surface = surface::surface(
+            &raw.surface,
+            bearing.geometry.ball_count,
+            bearing.geometry.ball_diameter,
+        )?;
         let mixed_lubrication =
             traction::mixed_lubrication(raw.model.mixed_lubrication.as_ref(), &traction, &surface)?;
         let materials_ball_name = materials.ball.name.clone();

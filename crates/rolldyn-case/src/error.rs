@@ -130,6 +130,17 @@ impl SpanMap {
         }
     }
 
+    /// The innermost key whose value spans byte offset `at` (a value
+    /// the TOML reader refused after parsing, e.g. a float that
+    /// overflows).
+    pub fn key_at(&self, at: usize) -> Option<String> {
+        self.spans
+            .iter()
+            .filter(|(_, span)| span.contains(&at))
+            .min_by_key(|(key, span)| (span.len(), key.len()))
+            .map(|(key, _)| key.clone())
+    }
+
     /// Whether `path` itself (not a parent) appears in the document.
     pub fn contains(&self, path: &str) -> bool {
         self.spans.contains_key(path)

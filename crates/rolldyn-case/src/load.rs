@@ -273,8 +273,23 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
         overrides: BTreeMap::new(),
         preset: None,
     };
-    let mut table: Table =
-        toml::from_str(text).map_err(|e| sources.error(None, None, e.message().to_string()))?;
+    let mut table: Table = toml::from_str(text).map_err(|e| {
+        // Located by its span: a number that overflows passes the parse.
+        let key = e.span().and_then(|s| sources.spans.key_at(s.start));
+        let message = e.message().trim();
+        let rule = if message.contains("overflowed") {
+            "the number is too large for a 64-bit float (largest 1.8e308)".to_string()
+        } else if message.contains("as i128") {
+            "the integer is too large (largest 9223372036854775807)".to_string()
+        } else {
+            message.to_string()
+        };
+        let mut error = sources.error(key, None, rule);
+        if let (Origin::Unknown, Some(span)) = (error.origin.as_ref(), e.span()) {
+            error.origin = Box::new(position(text, span.start));
+        }
+        error
+    })?;
 
     for o in overrides {
         set_path(&mut table, &o.key, o.value.clone())

@@ -25,10 +25,10 @@ pub struct ContactArgs {
     #[command(flatten)]
     pub case: CaseArgs,
     /// Normal load per contact, e.g. "500 N".
-    #[arg(long, value_name = "FORCE")]
+    #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
     pub load: String,
     /// Contact angle, e.g. "20 deg" (raceway contacts; default: nominal angle).
-    #[arg(long, value_name = "ANGLE")]
+    #[arg(long, value_name = "ANGLE", allow_hyphen_values = true)]
     pub angle: Option<String>,
     /// Entrainment (mean rolling) speed u, e.g. "10 m/s": adds the
     /// lubricant film (needs a `[lubricant]`).
@@ -37,14 +37,14 @@ pub struct ContactArgs {
     /// Explicit contact instead of the raceways: radii of relative
     /// curvature along and across the rolling direction, "R_x,R_y", e.g.
     /// "2.8 mm,20 mm" (R_y ≥ R_x); ball material against ring material.
-    #[arg(long, value_name = "RX,RY")]
+    #[arg(long, value_name = "RX,RY", allow_hyphen_values = true)]
     pub radii: Option<String>,
     /// Explicit contact: a ball of this diameter on a flat, e.g. "19.05 mm".
-    #[arg(long, value_name = "DIAMETER")]
+    #[arg(long, value_name = "DIAMETER", allow_hyphen_values = true)]
     pub ball_on_flat: Option<String>,
     /// Inlet distance ratio L of an explicit contact (starvation; raceway
     /// contacts use the case's `[lubricant]` supply).
-    #[arg(long, value_name = "L")]
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub inlet_distance_ratio: Option<f64>,
     /// Print JSON instead of text.
     #[arg(long)]

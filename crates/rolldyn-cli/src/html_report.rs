@@ -27,6 +27,6 @@ pub fn write(dir: &Path) -> Result<PathBuf, Failure> {
         report_for(dir, case_description(dir)).map_err(|e| Failure::BadInput(e.to_string()))?;
     let path = dir.join(REPORT_FILE);
     rolldyn_io::write_atomic(&path, report.to_html().as_bytes())
-        .map_err(|e| Failure::BadInput(format!("cannot write {}: {e}", path.display())))?;
+        .map_err(|e| Failure::BadInput(e.to_string()))?;
     Ok(path)
 }

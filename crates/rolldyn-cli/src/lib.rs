@@ -46,7 +46,7 @@ pub struct CaseArgs {
 #[derive(Args, Debug, Clone, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct CaseOverrides {
     /// Override the inner-ring speed, e.g. "8000 rpm".
-    #[arg(long, value_name = "SPEED")]
+    #[arg(long, value_name = "SPEED", allow_hyphen_values = true)]
     pub speed: Option<String>,
     /// Override the axial load F_x, e.g. "500 N" (negative values allowed).
     #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
@@ -62,7 +62,7 @@ pub struct CaseOverrides {
     #[arg(long, value_name = "ANGLE", allow_hyphen_values = true)]
     pub misalignment: Option<String>,
     /// Override any key: --set bearing.ball_count=22 (repeatable).
-    #[arg(long = "set", value_name = "KEY=VALUE")]
+    #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
     pub set: Vec<String>,
     /// The `set` assignments came from Python's `Case.set`, not `--set`
     /// (messages name them so).

@@ -39,7 +39,7 @@ enum Command {
         #[command(flatten)]
         case: CaseArgs,
         /// Contact angle to use, e.g. "15 deg" (default: nominal angle).
-        #[arg(long, value_name = "ANGLE")]
+        #[arg(long, value_name = "ANGLE", allow_hyphen_values = true)]
         angle: Option<String>,
         /// Print JSON instead of text.
         #[arg(long)]
@@ -63,7 +63,7 @@ enum Command {
         control: Option<String>,
         /// Sweep a variable: speed=0rpm..20000rpm/11 (linear range) or
         /// axial=10N,100N,1kN (list); also radial=... Repeat for a grid.
-        #[arg(long, value_name = "NAME=VALUES")]
+        #[arg(long, value_name = "NAME=VALUES", allow_hyphen_values = true)]
         sweep: Vec<String>,
         /// Output directory of a sweep (sweep.csv, sweep.json).
         #[arg(short, long, value_name = "DIR", default_value = "quasistatic-sweep")]
@@ -93,7 +93,7 @@ enum Command {
         #[arg(short, long, value_name = "DIR", default_value = DEFAULT_RUN_DIR)]
         output: String,
         /// Simulated time, e.g. "0.01 s" (overrides solver.duration).
-        #[arg(long, value_name = "TIME")]
+        #[arg(long, value_name = "TIME", allow_hyphen_values = true)]
         duration: Option<String>,
         /// Run even when the estimated steps or time-series memory exceed
         /// the limits (docs/cli.md).
@@ -107,7 +107,7 @@ enum Command {
         /// Wall time between checkpoints (time series, state), e.g.
         /// "10 s"; default 30 s. Never more often than keeps their cost
         /// under 5 % of the run.
-        #[arg(long, value_name = "TIME")]
+        #[arg(long, value_name = "TIME", allow_hyphen_values = true)]
         checkpoint_interval: Option<String>,
         /// Also write DIR/report.html (as `rolldyn report DIR`).
         #[arg(long)]
@@ -122,7 +122,7 @@ enum Command {
         /// axial=100N,1kN (list); also radial=... Repeat for a grid. The
         /// points run in parallel, each into DIR/point-NNNN/, with a
         /// combined DIR/sweep.csv and DIR/sweep.json.
-        #[arg(long, value_name = "NAME=VALUES")]
+        #[arg(long, value_name = "NAME=VALUES", allow_hyphen_values = true)]
         sweep: Vec<String>,
     },
     /// Write DIR/report.html: one self-contained HTML file (inline SVG, no
@@ -235,9 +235,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 let json_text = rolldyn_cli::finite::to_json(&rows)
                     .map_err(|e| Failure::Internal(e.to_string()))?;
                 let write = |name: &str, text: &str| {
-                    rolldyn_io::write_atomic(&dir.join(name), text.as_bytes()).map_err(|e| {
-                        Failure::BadInput(format!("cannot write {output}/{name}: {e}"))
-                    })
+                    rolldyn_io::write_atomic(&dir.join(name), text.as_bytes())
+                        .map_err(|e| Failure::BadInput(e.to_string()))
                 };
                 write("sweep.csv", &quasistatic::sweep_csv(&rows))?;
                 write("sweep.json", &json_text)?;

@@ -318,9 +318,8 @@ pub fn write_tables(dir: &Path, rows: &[Map<String, Value>]) -> Result<(), Failu
         csv.push('\n');
     }
     for (name, text) in [("sweep.json", json), ("sweep.csv", csv)] {
-        rolldyn_io::write_atomic(&dir.join(name), text.as_bytes()).map_err(|e| {
-            Failure::BadInput(format!("cannot write {}/{name}: {e}", dir.display()))
-        })?;
+        rolldyn_io::write_atomic(&dir.join(name), text.as_bytes())
+            .map_err(|e| Failure::BadInput(e.to_string()))?;
     }
     Ok(())
 }

@@ -33,24 +33,24 @@ pub struct SpectrumArgs {
     pub window: String,
     /// Welch segment length in samples (psd; default: a power of two near
     /// an eighth of the record).
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub segment: Option<usize>,
     /// Welch overlap fraction (psd).
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
     pub overlap: f64,
     /// Envelope band "LOW:HIGH" in Hz (envelope; default: 0.1 to 0.4 of the
     /// sample rate).
-    #[arg(long, value_name = "LOW:HIGH")]
+    #[arg(long, value_name = "LOW:HIGH", allow_hyphen_values = true)]
     pub band: Option<String>,
     /// Analyse samples from this time in s (default: the summary's
     /// averaging window, the second half of the run).
-    #[arg(long, value_name = "SECONDS")]
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
     pub from: Option<f64>,
     /// Harmonics of each characteristic frequency to mark.
-    #[arg(long, default_value_t = 5)]
+    #[arg(long, default_value_t = 5, allow_hyphen_values = true)]
     pub harmonics: usize,
     /// Number of peaks to list.
-    #[arg(long, default_value_t = 10)]
+    #[arg(long, default_value_t = 10, allow_hyphen_values = true)]
     pub peaks: usize,
     /// List the channels and exit.
     #[arg(long)]
@@ -124,6 +124,22 @@ pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
         let dir = Path::new(&args.dir);
         let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet"))
             .map_err(|e| Failure::BadInput(e.to_string()))?;
+        if args.json {
+            #[derive(serde::Serialize)]
+            struct Channel<'a> {
+                name: &'a str,
+                unit: &'a str,
+            }
+            let channels: Vec<Channel> = series
+                .names()
+                .iter()
+                .map(|name| Channel {
+                    name,
+                    unit: series.unit(name).unwrap_or(""),
+                })
+                .collect();
+            return json(&channels);
+        }
         let mut text = String::new();
         for name in series.names() {
             let _ = writeln!(text, "{name} [{}]", series.unit(name).unwrap_or(""));
@@ -173,14 +189,20 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         .unwrap_or(time.len());
     let (time, record) = (&time[from..], &values[from..]);
     if record.len() < 16 {
-        return Err(bad_arg(
-            "--from",
-            &from_time.to_string(),
-            format!(
-                "leaves {} samples; a spectrum needs at least 16",
-                record.len()
-            ),
-        ));
+        let rule = format!(
+            "leaves {} samples; a spectrum needs at least 16",
+            record.len()
+        );
+        return Err(match args.from {
+            Some(_) => bad_arg("--from", &from_time.to_string(), rule),
+            // The user gave no --from: the window is the summary's.
+            None => Failure::BadInput(format!(
+                "{}: the run's averaging window (from t = {from_time} s, its second half) holds {} samples of {}; a spectrum needs at least 16: run longer or at a higher output.sample_rate, or pass --from 0 for the whole record",
+                dir.display(),
+                record.len(),
+                args.channel
+            )),
+        });
     }
     let sample_rate = (time.len() - 1) as f64 / (time[time.len() - 1] - time[0]);
     let window = match args.window.as_str() {

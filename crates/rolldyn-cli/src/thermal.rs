@@ -29,10 +29,10 @@ pub struct ThermalArgs {
     pub case: CaseArgs,
     /// Also the warm-up from the reference temperature over this time,
     /// e.g. "30 min" (heat sources of the steady state, held constant).
-    #[arg(long, value_name = "TIME")]
+    #[arg(long, value_name = "TIME", allow_hyphen_values = true)]
     pub transient: Option<String>,
     /// Time steps of the transient.
-    #[arg(long, default_value_t = 600)]
+    #[arg(long, default_value_t = 600, allow_hyphen_values = true)]
     pub steps: usize,
     /// Print JSON instead of text.
     #[arg(long)]

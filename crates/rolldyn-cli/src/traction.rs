@@ -33,13 +33,13 @@ pub struct TractionArgs {
     #[arg(long, value_name = "RING", default_value = "inner")]
     pub ring: String,
     /// Normal load, e.g. "2 kN".
-    #[arg(long, value_name = "FORCE")]
+    #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
     pub load: Option<String>,
     /// Elastic approach instead of the load, e.g. "10 um" (with a case).
-    #[arg(long, value_name = "LENGTH")]
+    #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
     pub approach: Option<String>,
     /// Contact angle, e.g. "40 deg" (default: nominal angle).
-    #[arg(long, value_name = "ANGLE")]
+    #[arg(long, value_name = "ANGLE", allow_hyphen_values = true)]
     pub angle: Option<String>,
     /// Rolling speed V along the rolling direction, e.g. "10 m/s".
     #[arg(long, value_name = "SPEED", allow_hyphen_values = true)]
@@ -58,16 +58,16 @@ pub struct TractionArgs {
     /// Explicit contact without a bearing: semi-axes along and across
     /// the rolling direction, e.g. "0.3 mm,2 mm" (FASTSIM; needs --load,
     /// --shear-modulus, --poisson-ratio, --friction).
-    #[arg(long, value_name = "ALONG,ACROSS")]
+    #[arg(long, value_name = "ALONG,ACROSS", allow_hyphen_values = true)]
     pub semi_axes: Option<String>,
     /// Combined shear modulus G of the explicit contact, e.g. "80 GPa".
-    #[arg(long, value_name = "MODULUS")]
+    #[arg(long, value_name = "MODULUS", allow_hyphen_values = true)]
     pub shear_modulus: Option<String>,
     /// Combined Poisson ratio ν of the explicit contact (0 … 0.5).
-    #[arg(long, value_name = "NU")]
+    #[arg(long, value_name = "NU", allow_hyphen_values = true)]
     pub poisson_ratio: Option<f64>,
     /// Friction coefficient μ of the explicit contact.
-    #[arg(long, value_name = "MU")]
+    #[arg(long, value_name = "MU", allow_hyphen_values = true)]
     pub friction: Option<f64>,
     /// Write the FASTSIM stick/slip map (one row per element) to FILE as CSV.
     #[arg(long, value_name = "FILE")]
@@ -229,7 +229,7 @@ pub fn report(args: &TractionArgs) -> Result<TractionReport, Failure> {
     let report = evaluate(&contact, &inputs, map_text.as_mut()).map_err(Failure::BadInput)?;
     if let (Some(path), Some(text)) = (&args.map, &map_text) {
         rolldyn_io::write_atomic(std::path::Path::new(path), text.as_bytes())
-            .map_err(|e| Failure::BadInput(format!("cannot write {path}: {e}")))?;
+            .map_err(|e| Failure::BadInput(e.to_string()))?;
     }
     Ok(report)
 }

@@ -60,6 +60,21 @@ const REGRESSIONS: &[(&str, &[&str], i32)] = &[
         ],
         0,
     ),
+    // A plotted series flat to round-off (ring displacements over 0.1 ms)
+    // made the report's tick labels panic.
+    (
+        "6304",
+        &[
+            "run",
+            "-",
+            "-o",
+            "{dir}",
+            "--duration",
+            "0.1 ms",
+            "--report",
+        ],
+        0,
+    ),
     // 100 MN on a 7008C (99 GPa) was accepted and the run crawled for ever.
     (
         "7008C",
@@ -549,5 +564,145 @@ fn regressions_found_by_fuzzing_stay_fixed() {
         let code = check_case(&args, case, &dir, true).unwrap_or_else(|e| panic!("{args:?}: {e}"));
         assert_eq!(code, *expected, "{args:?}");
     }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// What an independent fuzzing campaign (17 000 cases) found, each as the
+/// user met it: the command, its exit code and what the message must say.
+#[test]
+fn findings_of_independent_fuzzing_stay_fixed() {
+    let dir = common::temp_dir("fuzz-findings");
+    std::fs::create_dir_all(&dir).unwrap();
+    let d = |name: &str| dir.join(name).to_string_lossy().into_owned();
+    let preset = |name: &str| PRESETS.iter().find(|p| p.name == name).unwrap().text;
+    let expect = |args: &[&str], stdin: Option<&str>, code: i32, says: &[&str]| {
+        let o = common::rolldyn(args, stdin);
+        let err = common::stderr(&o);
+        assert_eq!(o.status.code(), Some(code), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        for s in says {
+            assert!(err.contains(s), "{args:?}: {err:?} lacks {s:?}");
+        }
+    };
+    // A quasi-static sweep whose plotted contact angle is constant: the
+    // report's tick labels panicked on a range flat to round-off.
+    let sweep = d("sweep");
+    expect(
+        &[
+            "quasistatic",
+            "--sweep",
+            "radial=100N,-100N",
+            "--sweep",
+            "axial=1e6N",
+            "-o",
+            &sweep,
+        ],
+        None,
+        0,
+        &[],
+    );
+    expect(&["report", &sweep], None, 0, &[]);
+    // A final rename that fails leaves no temporary file, and says so once.
+    let taken = d("taken");
+    std::fs::create_dir_all(Path::new(&taken).join("summary.json")).unwrap();
+    expect(
+        &["run", "--duration", "0.1 ms", "-o", &taken],
+        None,
+        2,
+        &["summary.json"],
+    );
+    let left: Vec<String> = std::fs::read_dir(&taken)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".tmp"))
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
+    let o = common::rolldyn(&["run", "--duration", "0.1 ms", "-o", &taken], None);
+    assert_eq!(common::stderr(&o).matches("cannot write").count(), 1);
+    // Absurd inputs are refused before any work, naming the key.
+    let wavy = format!(
+        "{}\n[surface.outer]\nradial_waviness = [{{ order = 22, amplitude = \"20 mm\" }}]\n",
+        preset("7008C")
+    );
+    expect(
+        &["run", "-", "--duration", "1 ms", "-o", &d("wavy")],
+        Some(&wavy),
+        2,
+        &["surface.outer.radial_waviness", "1 % of the ball diameter"],
+    );
+    let curve = preset("6304").replace(
+        "law = \"modified_coulomb\", friction = 0.1",
+        "law = \"traction_curve\", a = -0.06, b = 8.0, c = 60.0, d = 1e9",
+    );
+    assert!(curve.contains("d = 1e9"));
+    expect(
+        &["run", "-", "--duration", "1 ms", "-o", &d("curve")],
+        Some(&curve),
+        2,
+        &["model.traction.d", "reaches mu"],
+    );
+    // No load at all on an angular-contact bearing at speed: a reason,
+    // exit 2, as for the deep-groove bearing.
+    for name in ["7008C", "6205"] {
+        expect(
+            &[
+                "quasistatic",
+                "-",
+                "--axial-load",
+                "0 N",
+                "--radial-load",
+                "0 N",
+                "--speed",
+                "10000 rpm",
+            ],
+            Some(preset(name)),
+            2,
+            &["cannot carry this load"],
+        );
+    }
+    // Negative values in the separated form of every value flag.
+    expect(
+        &["quasistatic", "-", "--speed", "-1000 rpm", "--json"],
+        Some(preset("7008C")),
+        0,
+        &[],
+    );
+    expect(
+        &[
+            "run",
+            "-",
+            "--speed",
+            "-1000 rpm",
+            "--duration",
+            "0.2 ms",
+            "-o",
+            &d("negative"),
+        ],
+        Some(preset("7008C")),
+        0,
+        &[],
+    );
+    // A spectrum of a run too short for one: the averaging window is
+    // blamed, not a --from the user did not give; --list --json is JSON.
+    let short = d("short");
+    expect(&["run", "--duration", "0.1 ms", "-o", &short], None, 0, &[]);
+    expect(
+        &["spectrum", &short],
+        None,
+        2,
+        &["averaging window", "--from 0"],
+    );
+    let o = common::rolldyn(&["spectrum", &short, "--list", "--json"], None);
+    let list: Value = serde_json::from_str(&common::stdout(&o)).unwrap();
+    assert_eq!(list[0]["name"], "time_s");
+    assert_eq!(list[0]["unit"], "s");
+    // Numbers that overflow in the TOML are located.
+    let overflow = "title = \"x\"\n[solver]\nrelative_tolerance = 1e999\n";
+    expect(
+        &["run", "-", "-o", &d("overflow")],
+        Some(overflow),
+        2,
+        &["<stdin>:3:22", "solver.relative_tolerance", "too large"],
+    );
     std::fs::remove_dir_all(&dir).ok();
 }

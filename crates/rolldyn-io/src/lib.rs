@@ -176,11 +176,19 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
         path.file_name()
             .map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned())
     ));
-    let mut file = std::fs::File::create(&tmp).map_err(io)?;
-    file.write_all(bytes).map_err(io)?;
-    file.sync_all().map_err(io)?;
-    drop(file);
-    std::fs::rename(&tmp, path).map_err(io)?;
+    let written = (|| {
+        let mut file = std::fs::File::create(&tmp)?;
+        file.write_all(bytes)?;
+        file.sync_all()?;
+        drop(file);
+        std::fs::rename(&tmp, path)
+    })();
+    if let Err(source) = written {
+        // Nothing of a failed write stays behind (the target a directory,
+        // the disk full, …).
+        let _ = std::fs::remove_file(&tmp);
+        return Err(io(source));
+    }
     // The rename itself reaches the disk with the directory (best effort:
     // not every platform opens directories).
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
@@ -321,6 +329,23 @@ mod tests {
             Err(InputError::Io { .. })
         ));
         assert!(!dir.join(".series.parquet.tmp").exists());
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_failed_write_leaves_nothing_behind() {
+        let dir = std::env::temp_dir().join(format!("rolldyn-io-fail-{}", std::process::id()));
+        std::fs::create_dir_all(dir.join("taken")).unwrap();
+        // The target is a directory: the rename fails.
+        let err = write_atomic(&dir.join("taken"), b"x")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.starts_with("cannot write ") && err.contains("taken"),
+            "{err}"
+        );
+        assert_eq!(err.matches("cannot write").count(), 1, "{err}");
+        assert!(!dir.join(".taken.tmp").exists());
         std::fs::remove_dir_all(&dir).ok();
     }
 }

@@ -270,14 +270,17 @@ impl Plot {
     }
 }
 
-/// A degenerate or empty range made drawable.
+/// A degenerate or empty range made drawable. A range flat to round-off
+/// (narrower than 1e-9 of its values) counts as constant: its ticks would
+/// not be distinguishable in print.
 fn widen((lo, hi): (f64, f64)) -> (f64, f64) {
     if !lo.is_finite() || !hi.is_finite() {
         return (0.0, 1.0);
     }
-    if hi > lo {
+    if hi - lo > 1e-9 * lo.abs().max(hi.abs()) {
         return (lo, hi);
     }
+    let (lo, hi) = (0.5 * (lo + hi), 0.5 * (lo + hi));
     let pad = if lo == 0.0 { 1.0 } else { 0.05 * lo.abs() };
     (lo - pad, hi + pad)
 }
@@ -402,11 +405,15 @@ fn number(v: f64, ticks: &[f64]) -> String {
     if v == 0.0 {
         return "0".into();
     }
+    // Ticks that round-off made equal have no step: print the value as is.
+    if !(step > 0.0 && step.is_finite()) {
+        return format!("{v:e}");
+    }
     if !(1e-3..1e6).contains(&largest) {
-        let digits = ((largest.log10().floor() - step.log10().floor()) as usize).min(6);
+        let digits = (largest.log10().floor() - step.log10().floor()).clamp(0.0, 6.0) as usize;
         return format!("{v:.digits$e}");
     }
-    let decimals = (-step.log10().floor()).max(0.0) as usize;
+    let decimals = (-step.log10().floor()).clamp(0.0, 17.0) as usize;
     format!("{v:.decimals$}")
 }
 
@@ -471,6 +478,23 @@ mod tests {
             .to_svg();
         assert_eq!(svg.matches("<polyline").count(), 2);
         assert!(!svg.contains("NaN") && !svg.contains("inf"));
+    }
+
+    #[test]
+    fn series_flat_to_round_off_draw() {
+        // A 6304 run of 0.1 ms has ring displacements flat to 1e-16; a
+        // sweep over 1e6 N of axial load has a constant contact angle.
+        for (base, wiggle) in [(100.0, 1e-13), (0.0, 1e-300), (1e-20, 1e-36), (-5e5, 1e-10)] {
+            let x = [0.0, 1.0, 2.0];
+            let y = [base, base + wiggle, base - wiggle];
+            let svg = Plot::new("t", "x", "y")
+                .with(Series::line("s", &x, &y))
+                .to_svg();
+            assert!(svg.contains("<polyline"), "{base} {wiggle}");
+        }
+        for ticks in [vec![7.0, 7.0], vec![0.0, 0.0, 0.0], vec![1e-300, 1e-300]] {
+            assert!(!number(ticks[0], &ticks).is_empty());
+        }
     }
 
     #[test]

@@ -18,19 +18,71 @@ fn located(key: &str) -> impl Fn(InvalidParameter) -> Invalid + '_ {
     move |e| Invalid::new(format!("{key}.{}", e.field), Some(e.value), e.rule)
 }
 
-pub(super) fn surface(raw: &RawSurface, ball_count: usize) -> Result<SurfaceModel, Invalid> {
+pub(super) fn surface(
+    raw: &RawSurface,
+    ball_count: usize,
+    ball_diameter: f64,
+) -> Result<SurfaceModel, Invalid> {
     let mut model = SurfaceModel::default();
     if let Some(inner) = &raw.inner {
         model.inner = race("surface.inner", inner)?;
+        small(
+            "surface.inner.radial_waviness",
+            &model.inner.radial,
+            ball_diameter,
+        )?;
+        small(
+            "surface.inner.axial_waviness",
+            &model.inner.axial,
+            ball_diameter,
+        )?;
     }
     if let Some(outer) = &raw.outer {
         model.outer = race("surface.outer", outer)?;
+        small(
+            "surface.outer.radial_waviness",
+            &model.outer.radial,
+            ball_diameter,
+        )?;
+        small(
+            "surface.outer.axial_waviness",
+            &model.outer.axial,
+            ball_diameter,
+        )?;
     }
     if let Some(balls) = &raw.balls {
         model.balls = ball_surfaces(balls, ball_count)?;
         model.ball_roughness = roughness("surface.balls.roughness", &balls.roughness)?;
+        for ball in &model.balls {
+            small("surface.balls.waviness", &ball.waviness, ball_diameter)?;
+        }
     }
     Ok(model)
+}
+
+/// Largest sum of waviness amplitudes on one surface, as a fraction of the
+/// ball diameter. Waviness is a small deviation from the geometry (0.01–1
+/// µm on bearing raceways and balls, tens of µm for a ring's ovality in its
+/// housing); beyond 1 % of the ball diameter the contacts would be crushed
+/// by geometry, not loaded, and the run would never advance.
+const MAX_WAVINESS_SHARE: f64 = 0.01;
+
+/// Checks that a surface's waviness (its terms and random terms together)
+/// is small against the ball.
+fn small(key: &str, waviness: &Waviness, ball_diameter: f64) -> Result<(), Invalid> {
+    let sum: f64 = waviness.terms.iter().map(|t| t.amplitude.abs()).sum();
+    let limit = MAX_WAVINESS_SHARE * ball_diameter;
+    if sum > limit {
+        return Err(Invalid::new(
+            key,
+            Some(format!("{:.4} mm summed over its terms", sum * 1e3)),
+            format!(
+                "the amplitudes of a surface's waviness must sum to at most 1 % of the ball diameter ({:.4} mm here); waviness is a deviation of 0.01-1 um, not a change of the geometry",
+                limit * 1e3
+            ),
+        ));
+    }
+    Ok(())
 }
 
 fn roughness(

@@ -51,8 +51,12 @@ pub struct TractionCurve {
     pub full_speed: f64,
 }
 
+/// Largest traction coefficient the curve may reach (as the friction of
+/// the other laws).
+const MAX_COEFFICIENT: f64 = 5.0;
+
 impl TractionCurve {
-    /// Checks the parameters.
+    /// Checks the parameters: finite, C ≥ 0, and μ(S) ≤ 5 for every S ≥ 0.
     pub fn validate(&self) -> Result<(), InvalidParameter> {
         for (field, v) in [("a", self.a), ("b", self.b), ("d", self.d)] {
             if !v.is_finite() {
@@ -67,7 +71,51 @@ impl TractionCurve {
             ));
         }
         require_positive("full_speed", self.full_speed)?;
+        let (largest, field) = self.largest_coefficient();
+        if largest > MAX_COEFFICIENT {
+            let value = match field {
+                "a" => self.a,
+                "b" => self.b,
+                _ => self.d,
+            };
+            return Err(InvalidParameter::new(
+                field,
+                value,
+                format!(
+                    "the curve reaches mu = {largest:.3e}; a traction coefficient above {MAX_COEFFICIENT} is not a physical friction (the other laws bound mu to [0, 5])"
+                ),
+            ));
+        }
         Ok(())
+    }
+
+    /// The supremum of μ(S) over S ≥ 0 and the parameter that sets it:
+    /// μ(0) = A + D, the stationary point S* = 1/C − A/B of (A + BS)e^{−CS}
+    /// when it lies at S* > 0, and the asymptote D (C > 0) or a line
+    /// growing without bound (C = 0, B > 0).
+    fn largest_coefficient(&self) -> (f64, &'static str) {
+        let Self { a, b, c, d, .. } = *self;
+        if c == 0.0 {
+            return if b > 0.0 {
+                (f64::INFINITY, "b")
+            } else {
+                (a + d, "a")
+            };
+        }
+        let mut largest = if a + d >= d { (a + d, "a") } else { (d, "d") };
+        if b != 0.0 {
+            let stationary = 1.0 / c - a / b;
+            if stationary > 0.0 {
+                let peak = (a + b * stationary) * (-c * stationary).exp() + d;
+                if peak > largest.0 {
+                    largest = (peak, "b");
+                }
+            }
+        }
+        if d > MAX_COEFFICIENT {
+            largest.1 = "d";
+        }
+        largest
     }
 
     /// Traction coefficient μ(S), floored at 0.
@@ -144,6 +192,39 @@ mod tests {
             slip: SlipMeasure::SlideToRoll,
             full_speed: 1e-3,
         }
+    }
+
+    #[test]
+    fn the_largest_coefficient_is_found_and_bounded() {
+        // Seed curve: peak at S* = 1/60 + 0.06/8, checked against a scan.
+        let c = curve();
+        let scanned = (0..200_000)
+            .map(|k| c.coefficient(k as f64 * 1e-5))
+            .fold(0.0, f64::max);
+        let (peak, field) = c.largest_coefficient();
+        assert!((peak - scanned).abs() < 1e-9, "{peak} {scanned}");
+        assert_eq!(field, "b");
+        assert!(c.validate().is_ok());
+        // d = 1e9 was accepted once, and the run never left t = 0.
+        for (bad, field) in [
+            (TractionCurve { d: 1e9, ..c }, "d"),
+            (TractionCurve { b: 1e6, ..c }, "b"),
+            (TractionCurve { a: 6.0, ..c }, "a"),
+            (TractionCurve { c: 0.0, ..c }, "b"),
+        ] {
+            let e = bad.validate().unwrap_err();
+            assert_eq!(e.field, field, "{bad:?}: {e}");
+        }
+        // A falling line (C = 0, B < 0) is bounded by A + D.
+        assert!(
+            TractionCurve {
+                c: 0.0,
+                b: -1.0,
+                ..c
+            }
+            .validate()
+            .is_ok()
+        );
     }
 
     #[test]

@@ -45,18 +45,35 @@ impl QuasiStaticSolver {
                 ),
             });
         }
-        self.solve_with_drive(conditions, options).or_else(|e| {
-            if matches!(e, QuasiStaticError::AxialLoadTooSmall { .. }) {
-                return Err(e);
-            }
-            match self.via_jones_harris_kinematics(conditions, options, |without| {
-                self.solve_with_drive(conditions, without)
-            }) {
-                Some(Err(refusal @ QuasiStaticError::AxialLoadTooSmall { .. })) => Err(refusal),
-                Some(Ok(eq)) => Ok(eq),
-                _ => Err(e),
-            }
-        })
+        let unloaded = conditions.loads.force.iter().all(|f| *f == 0.0)
+            && conditions.loads.moment.iter().all(|m| *m == 0.0);
+        self.solve_with_drive(conditions, options)
+            .or_else(|e| {
+                if matches!(e, QuasiStaticError::AxialLoadTooSmall { .. }) {
+                    return Err(e);
+                }
+                match self.via_jones_harris_kinematics(conditions, options, |without| {
+                    self.solve_with_drive(conditions, without)
+                }) {
+                    Some(Err(refusal @ QuasiStaticError::AxialLoadTooSmall { .. })) => {
+                        Err(refusal)
+                    }
+                    Some(Ok(eq)) => Ok(eq),
+                    _ => Err(e),
+                }
+            })
+            .map_err(|e| {
+                // Without any load the ring's position is not determined
+                // (at speed the balls leave the inner raceway): say so
+                // rather than how Newton failed.
+                if unloaded {
+                    QuasiStaticError::Unsupported {
+                        reason: "no load is applied (all forces and moments are zero), so the inner ring's position is not determined; give a load (an angular-contact bearing runs under an axial load or preload)".into(),
+                    }
+                } else {
+                    e
+                }
+            })
     }
 
     /// `solve` without the race drive (σ = 0: Jones–Harris kinematics for
