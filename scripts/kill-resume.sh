@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Issue 17 acceptance: kill -9 `rolldyn run` at random moments, N times
-# (default 20), alternating ROS34PW2 and DOPRI5; after each kill the run
-# directory must hold a readable time series (rolldyn spectrum reads it)
-# and `rolldyn run --resume` must finish with a time series byte-identical
-# to the uninterrupted run's and the same summary (wall time aside).
+# Kill -9 `rolldyn run` at random moments, N times (default 20),
+# alternating ROS34PW2 and DOPRI5; after each kill the run directory must
+# hold a readable time series (rolldyn spectrum reads it) and
+# `rolldyn run --resume` must finish with a time series whose part files
+# are byte-identical to the uninterrupted run's and the same summary
+# (wall time aside).
 # Usage: scripts/kill-resume.sh [N]   (release build; a few minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,7 +32,7 @@ for i in $(seq 1 "$runs"); do
   sleep "0.$(printf '%03d' $((RANDOM % 900 + 50)))"
   if kill -9 "$pid" 2>/dev/null; then killed=yes; else killed="no (finished first)"; fi
   wait "$pid" 2>/dev/null || true
-  if [ -f "$dir/timeseries.parquet" ]; then
+  if [ -d "$dir/timeseries.parquet" ]; then
     "$bin" spectrum "$dir" --list >/dev/null 2>&1 \
       || { echo "run $i: time series after the kill not readable"; exit 1; }
   fi
@@ -41,7 +42,7 @@ for i in $(seq 1 "$runs"); do
     # Killed before its first checkpoint: nothing to resume; start again.
     "$bin" run -o "$dir" --duration "$duration s" --set "solver.integrator=\"$integrator\"" >/dev/null
   fi
-  cmp -s "$dir/timeseries.parquet" "$work/ref-$integrator/timeseries.parquet" \
+  diff -r -q "$dir/timeseries.parquet" "$work/ref-$integrator/timeseries.parquet" >/dev/null \
     || { echo "run $i ($integrator): resumed time series differs"; exit 1; }
   [ "$(strip_wall "$dir/summary.json")" = "$(strip_wall "$work/ref-$integrator/summary.json")" ] \
     || { echo "run $i ($integrator): resumed summary differs"; exit 1; }

@@ -15,6 +15,7 @@ pub mod quasistatic_films;
 pub mod report;
 pub mod run;
 pub mod run_solver;
+pub mod run_stats;
 pub mod run_sweep;
 pub mod spectrum;
 pub mod thermal;

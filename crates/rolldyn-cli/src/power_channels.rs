@@ -134,37 +134,27 @@ pub struct PowerSummary {
     pub mean_power_loss_by_component_w: BTreeMap<String, f64>,
 }
 
-/// The keys over samples `from..` of `series`.
-pub fn summarise(series: &TimeSeries, from: usize) -> PowerSummary {
-    let window = |name: &str| {
-        series
-            .column(name)
-            .and_then(|c| c.get(from..))
-            .unwrap_or(&[])
-    };
-    let mean = |name: &str| {
-        let c = window(name);
-        if c.is_empty() {
-            0.0
-        } else {
-            c.iter().sum::<f64>() / c.len() as f64
-        }
-    };
+/// The keys over the averaging window.
+pub fn summarise(
+    window: &crate::run_stats::Window,
+    stats: &crate::run_stats::RunStatistics,
+) -> PowerSummary {
     let by_component: BTreeMap<String, f64> = components(&Dissipation::default())
         .map(|(name, _)| {
-            let m = mean(&format!("{PREFIX}{name}_w"));
+            let m = window.mean(&format!("{PREFIX}{name}_w"));
             (name, m)
         })
         .collect();
-    let (time, energy) = (window("time_s"), window("dissipated_energy_j"));
-    let mean_dissipated_power_w = match (time, energy) {
-        ([t0, .., t1], [e0, .., e1]) if t1 > t0 => (e1 - e0) / (t1 - t0),
-        _ => 0.0,
+    let [t0, t1] = window.span();
+    let mean_dissipated_power_w = if t1 > t0 {
+        (stats.last("dissipated_energy_j") - window.first("dissipated_energy_j")) / (t1 - t0)
+    } else {
+        0.0
     };
     PowerSummary {
         mean_power_loss_w: by_component.values().sum(),
         mean_dissipated_power_w,
-        mean_friction_torque_n_m: mean("friction_torque_n_m"),
+        mean_friction_torque_n_m: window.mean("friction_torque_n_m"),
         mean_power_loss_by_component_w: by_component,
     }
 }

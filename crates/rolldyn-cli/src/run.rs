@@ -1,13 +1,17 @@
 //! `rolldyn run`: a dynamic simulation of a case. Writes
 //! `DIR/timeseries.parquet` (one row per sample; units in the column
-//! metadata) and `DIR/summary.json`, atomically, also after Ctrl-C or an
-//! integration failure (with what was computed). A progress bar shows on a
-//! terminal. Keys are documented in docs/cli.md.
+//! metadata), a Parquet dataset of part files written as the run goes
+//! ([`rolldyn_io::SeriesWriter`]), and `DIR/summary.json`, whose
+//! statistics are accumulated while running ([`crate::run_stats`]): memory
+//! does not grow with the simulated time. Also after Ctrl-C or an
+//! integration failure the files hold what was computed. A progress bar
+//! shows on a terminal. Keys are documented in docs/cli.md.
 
 use crate::Failure;
 use crate::checkpoint::{self, CHECKPOINT_FILE, Position, RECORD_FILE, RunRecord};
 use crate::power_channels::PowerSummary;
 use crate::run_solver::SolverSettings;
+use crate::run_stats::RunStatistics;
 use crate::traction_equilibrium::{jones_harris_state, traction_state};
 use crate::vibration::VibrationSummary;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -17,7 +21,7 @@ use rolldyn::integrate::{IntegrationStats, Integrator, RunEnd, Sampling, Solver,
 use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
 use rolldyn_case::raw::StartChoice;
-use rolldyn_io::{TimeSeries, read_parquet, write_atomic, write_parquet};
+use rolldyn_io::{OutputError, SeriesWriter, TimeSeries, for_each_row, write_atomic};
 use serde::Serialize;
 use std::cell::RefCell;
 use std::io::IsTerminal;
@@ -141,9 +145,18 @@ const CREEP_CHANNELS: [(&str, &str); 8] = [
     ("stick_fraction_outer", "1"),
 ];
 
-/// Channel layout of the recorder.
+/// The time series' directory (a Parquet dataset) in a run directory.
+pub const SERIES_DIR: &str = "timeseries.parquet";
+
+/// Channel layout of the recorder, and where its rows go: the writer of
+/// the time series and the summary's statistics.
 struct Channels {
+    /// The channels' names and units (no rows).
     series: TimeSeries,
+    stats: RunStatistics,
+    writer: Option<SeriesWriter>,
+    /// The first failure to write a part (the run then stops).
+    write_error: Option<OutputError>,
     balls: usize,
     /// Whether the FASTSIM channels are recorded.
     creep: bool,
@@ -162,6 +175,7 @@ impl Channels {
         thermal: bool,
         [power_per_ball, mixed]: [bool; 2],
         states: usize,
+        [duration, sample_rate]: [f64; 2],
     ) -> Self {
         let mut series = TimeSeries::default();
         for (name, unit) in [
@@ -222,7 +236,10 @@ impl Channels {
             }
         }
         Self {
+            stats: RunStatistics::new(&series, duration, sample_rate),
             series,
+            writer: None,
+            write_error: None,
             balls,
             creep,
             power_per_ball,
@@ -339,15 +356,22 @@ impl Channels {
                 row.extend_from_slice(&[c.inner.asperity_share, c.outer.asperity_share]);
             }
         }
-        self.series.push(row);
+        self.sink(row);
     }
-}
 
-fn mean(values: &[f64]) -> f64 {
-    if values.is_empty() {
-        0.0
-    } else {
-        values.iter().sum::<f64>() / values.len() as f64
+    /// A recorded row: into the statistics and the time series.
+    fn sink(&mut self, row: &[f64]) {
+        self.stats.push(row);
+        if let Some(writer) = &mut self.writer {
+            if self.write_error.is_none() {
+                self.write_error = writer.push(row).err();
+            }
+        }
+    }
+
+    /// Rows recorded.
+    fn rows(&self) -> u64 {
+        self.stats.samples()
     }
 }
 
@@ -356,9 +380,11 @@ fn mean(values: &[f64]) -> f64 {
 /// Most steps a run may need at least (duration / largest step) before
 /// it is refused without `--force`.
 pub const MAX_STEPS: f64 = 1e9;
-/// Most memory the recorded time series may take before a run is refused
-/// without `--force` \[bytes\].
-pub const MAX_SERIES_BYTES: f64 = 4.0 * 1024.0 * 1024.0 * 1024.0;
+/// Most disk space the recorded samples may take (uncompressed; Parquet's
+/// compression usually halves it) before a run is refused without
+/// `--force` \[bytes\]. The series is written as the run goes, so this
+/// guards the disk against a mistyped sample rate, not the memory.
+pub const MAX_SERIES_BYTES: f64 = 32.0 * 1024.0 * 1024.0 * 1024.0;
 
 /// Largest Hertz pressure a run accepts without `--force` \[Pa\]: 2.4 times
 /// ISO 76's static limit for ball bearings (4.2 GPa, permanent deformation
@@ -427,7 +453,7 @@ fn check_limits(
     let bytes = (duration * rate + 1.0) * channels as f64 * 8.0;
     if bytes > MAX_SERIES_BYTES {
         return Err(format!(
-            "output.sample_rate: the time series would take {:.1} GiB ({:.2e} rows × {channels} channels), above the limit of {:.0} GiB; lower the sample rate, shorten the run, or pass --force",
+            "output.sample_rate: the time series would take {:.1} GiB on disk before compression ({:.2e} rows × {channels} channels), above the limit of {:.0} GiB; lower the sample rate, shorten the run, or pass --force",
             bytes / 1024f64.powi(3),
             duration * rate + 1.0,
             MAX_SERIES_BYTES / 1024f64.powi(3)
@@ -484,10 +510,9 @@ impl RunOptions {
     }
 }
 
-/// A run's summary and its time series (as written to the run directory).
+/// A run's summary (its time series is in the run directory).
 pub struct RunOutput {
     pub summary: Summary,
-    pub series: TimeSeries,
 }
 
 /// Runs the case (from `record`) and writes the results into `dir`:
@@ -504,7 +529,7 @@ pub fn run_case(
     run_case_series(record, case, dir, options).map(|o| o.summary)
 }
 
-/// As [`run_case`], also returning the time series.
+/// As [`run_case`], also running `--verify` when the options ask.
 pub fn run_case_series(
     record: &RunRecord,
     case: &Case,
@@ -586,23 +611,27 @@ pub(crate) fn run_once(
         model.thermal().is_some(),
         [case.power_per_ball, params.mixed_lubrication.is_some()],
         model.layout().len(),
+        [duration, case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE)],
     );
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
     let record_hash = record.hash();
+    let series_dir = dir.join(SERIES_DIR);
+    let metadata = [
+        ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
+        ("case", source.to_string()),
+        ("title", case.title.clone().unwrap_or_default()),
+    ];
     let (next_sample, wall_before) = if options.resume {
         let position =
             checkpoint::restore(dir, record_hash, &mut solver, &mut model).map_err(bad)?;
-        let path = dir.join("timeseries.parquet");
-        let mut series = read_parquet(&path).map_err(|e| bad(format!("--resume: {e}")))?;
-        if series.names() != channels.series.names() || (series.len() as u64) < position.rows {
-            return Err(bad(format!(
-                "--resume: {} does not hold the checkpoint's {} rows of this run's channels",
-                path.display(),
-                position.rows
-            )));
-        }
-        series.truncate(position.rows as usize);
-        channels.series = series;
+        let writer = SeriesWriter::resume(&series_dir, &channels.series, &metadata, position.rows)
+            .map_err(|e| bad(format!("--resume: {e}")))?;
+        // The summary's statistics from the rows the checkpoint keeps, in
+        // order: as if the run had never stopped.
+        let stats = &mut channels.stats;
+        for_each_row(&series_dir, Some(position.rows), |row| stats.push(row))
+            .map_err(|e| bad(format!("--resume: {e}")))?;
+        channels.writer = Some(writer);
         (position.next_sample, position.wall_time)
     } else {
         std::fs::create_dir_all(dir)
@@ -611,6 +640,10 @@ pub(crate) fn run_once(
         remove_checkpoint(dir)?;
         let text = record.to_json().map_err(Failure::Internal)?;
         write_atomic(&dir.join(RECORD_FILE), text.as_bytes()).map_err(|e| bad(e.to_string()))?;
+        channels.writer = Some(
+            SeriesWriter::create(&series_dir, &channels.series, &metadata)
+                .map_err(|e| bad(e.to_string()))?,
+        );
         (0, 0.0)
     };
     let sampling = Sampling {
@@ -634,6 +667,7 @@ pub(crate) fn run_once(
     };
 
     let mut row = Vec::with_capacity(channels.series.width());
+    let write_stop = stop.clone();
     let mut loads = vec![ContactSample::default(); g.ball_count];
     let start = Instant::now();
     let output = Output {
@@ -657,7 +691,14 @@ pub(crate) fn run_once(
         duration,
         sampling,
         &stop,
-        |m, t, y| channels.borrow_mut().record(m, t, y, &mut row, &mut loads),
+        |m, t, y| {
+            let mut channels = channels.borrow_mut();
+            channels.record(m, t, y, &mut row, &mut loads);
+            // A part that cannot be written stops the run (reported below).
+            if channels.write_error.is_some() {
+                write_stop.store(true, Ordering::Relaxed);
+            }
+        },
         |m, s, next| {
             next_sample = next;
             let t = s.t();
@@ -680,14 +721,14 @@ pub(crate) fn run_once(
             {
                 let begun = Instant::now();
                 let wall = wall_before + start.elapsed().as_secs_f64();
-                let series = channels.borrow();
+                let mut channels = channels.borrow_mut();
                 let position = Position {
                     next_sample: next,
-                    rows: series.series.len() as u64,
+                    rows: channels.rows(),
                     wall_time: wall,
                 };
                 checkpoint_error = output
-                    .write(m, s, &series.series, None, Some(position), wall)
+                    .write(m, s, &mut channels, None, Some(position), wall)
                     .err();
                 checkpoint_cost = begun.elapsed().as_secs_f64();
                 last_checkpoint = Instant::now();
@@ -701,15 +742,28 @@ pub(crate) fn run_once(
         return Err(e);
     }
     let wall = wall_before + start.elapsed().as_secs_f64();
-    let series = channels.into_inner().series;
+    let mut channels = channels.into_inner();
+    if let Some(e) = channels.write_error.take() {
+        return Err(bad(format!(
+            "{e}; the run stopped at t = {:.6} s (the checkpoint before it, if any, resumes it)",
+            solver.t()
+        )));
+    }
     // An interrupted run keeps a checkpoint at its last step; a completed
     // one needs none; a failed one keeps its last periodic checkpoint.
     let position = matches!(report.end, RunEnd::Interrupted { .. }).then_some(Position {
         next_sample,
-        rows: series.len() as u64,
+        rows: channels.rows(),
         wall_time: wall,
     });
-    let summary = output.write(&model, &solver, &series, Some(&report.end), position, wall)?;
+    let summary = output.write(
+        &model,
+        &solver,
+        &mut channels,
+        Some(&report.end),
+        position,
+        wall,
+    )?;
     if report.end == RunEnd::Completed {
         remove_checkpoint(dir)?;
     }
@@ -719,7 +773,7 @@ pub(crate) fn run_once(
             Ordering::Relaxed,
         );
     }
-    Ok(RunOutput { summary, series })
+    Ok(RunOutput { summary })
 }
 
 /// Removes `DIR/checkpoint.bin` if there is one.
@@ -745,14 +799,15 @@ struct Output<'a> {
 }
 
 impl Output<'_> {
-    /// Writes the time series, the checkpoint (when `position` is given)
-    /// and `summary.json`, each atomically, in that order. `end` is None
-    /// for a checkpoint during the run: the summary then says `partial`.
+    /// Writes the time series' rows not yet on disk, the checkpoint (when
+    /// `position` is given) and `summary.json`, each atomically, in that
+    /// order. `end` is None for a checkpoint during the run: the summary
+    /// then says `partial`.
     fn write(
         &self,
         model: &BearingModel,
         solver: &Solver,
-        series: &TimeSeries,
+        channels: &mut Channels,
         end: Option<&RunEnd>,
         position: Option<Position>,
         wall: f64,
@@ -764,7 +819,7 @@ impl Output<'_> {
             self.source,
             self.case,
             model,
-            series,
+            &channels.stats,
             self.duration,
             wall,
             &self.settings,
@@ -779,15 +834,10 @@ impl Output<'_> {
                 self.dir.display()
             ));
         }
-        let metadata = [
-            ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
-            ("case", self.source.to_string()),
-            ("title", self.case.title.clone().unwrap_or_default()),
-            ("status", summary.status.to_string()),
-        ];
         let bad = |e: String| Failure::BadInput(e);
-        write_parquet(&self.dir.join("timeseries.parquet"), series, &metadata)
-            .map_err(|e| bad(e.to_string()))?;
+        if let Some(writer) = &mut channels.writer {
+            writer.sync().map_err(|e| bad(e.to_string()))?;
+        }
         if let Some(position) = position {
             let bytes = checkpoint::encode(self.record_hash, position, solver, model);
             write_atomic(&self.dir.join(CHECKPOINT_FILE), &bytes)
@@ -806,49 +856,26 @@ fn summarise(
     source: &str,
     case: &Case,
     model: &BearingModel,
-    series: &TimeSeries,
+    stats: &RunStatistics,
     duration: f64,
     wall: f64,
     settings: &SolverSettings,
-    stats: IntegrationStats,
+    integration: IntegrationStats,
     end: &RunEnd,
 ) -> Summary {
-    let column = |name: &str| series.column(name).unwrap_or(&[]);
-    let time = column("time_s");
-    let t_end = time.last().copied().unwrap_or(0.0);
     // Means over the second half of the run (the first half is transient).
-    let from = time.iter().position(|&t| t >= 0.5 * t_end).unwrap_or(0);
-    let window = |name: &str| column(name).get(from..).unwrap_or(&[]).to_vec();
-    let inner_speed = mean(&window("inner_ring_speed_rpm"));
-    let cage_speed = mean(&window("cage_speed_rpm"));
+    let window = stats.window();
+    let [window_start, t_end] = window.span();
+    let inner_speed = window.mean("inner_ring_speed_rpm");
+    let cage_speed = window.mean("cage_speed_rpm");
     let g = &case.bearing.geometry;
-    let rolling_ratio = mean(&window("pure_rolling_cage_speed_ratio"));
+    let rolling_ratio = window.mean("pure_rolling_cage_speed_ratio");
     let balls = g.ball_count;
-    // All balls' samples of one per-ball channel over the window.
-    let pooled = |suffix: &str| -> Vec<f64> {
-        (0..balls)
-            .flat_map(|j| window(&format!("ball{j}_{suffix}")))
-            .collect()
-    };
-    let inner_loads = pooled("load_inner_n");
-    let outer_loads = pooled("load_outer_n");
-    // Ratios over loaded contacts only (an open contact has none).
-    let loaded_mean = |ratio: &str, load: &[f64]| {
-        let values: Vec<f64> = pooled(ratio)
-            .into_iter()
-            .zip(load)
-            .filter(|(_, q)| **q > 0.0)
-            .map(|(v, _)| v)
-            .collect();
-        mean(&values)
-    };
-    let yaw = pooled("yaw_deg");
-    let last = |name: &str| column(name).last().copied().unwrap_or(0.0);
-    let first = |name: &str| column(name).first().copied().unwrap_or(0.0);
-    let drive = last("drive_work_j");
-    let film_work = last("film_work_j");
-    let dissipated = last("dissipated_energy_j");
-    let delta_e = last("mechanical_energy_j") - first("mechanical_energy_j");
+    let loaded_mean = |suffix: &str| window.loaded_mean(suffix);
+    let drive = stats.last("drive_work_j");
+    let film_work = stats.last("film_work_j");
+    let dissipated = stats.last("dissipated_energy_j");
+    let delta_e = stats.last("mechanical_energy_j") - stats.first("mechanical_energy_j");
     let imbalance = drive + film_work - delta_e - dissipated;
     let relative_error = if drive.abs() + dissipated.abs() > 0.0 {
         imbalance / drive.abs().max(dissipated.abs())
@@ -880,20 +907,20 @@ fn summarise(
         relative_tolerance: settings.relative_tolerance,
         energy_tolerance: settings.energy_tolerance,
         max_step_s: settings.max_step,
-        steps: stats.steps,
-        rejected_steps: stats.rejected_steps,
-        rhs_evaluations: stats.rhs_evaluations,
-        jacobian_evaluations: stats.jacobian_evaluations,
-        jacobian_rhs_evaluations: stats.jacobian_rhs_evaluations,
-        factorizations: stats.factorizations,
-        samples: series.len(),
+        steps: integration.steps,
+        rejected_steps: integration.rejected_steps,
+        rhs_evaluations: integration.rhs_evaluations,
+        jacobian_evaluations: integration.jacobian_evaluations,
+        jacobian_rhs_evaluations: integration.jacobian_rhs_evaluations,
+        factorizations: integration.factorizations,
+        samples: stats.samples() as usize,
         sample_rate_hz: case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE),
-        averaging_window_s: [time.get(from).copied().unwrap_or(0.0), t_end],
+        averaging_window_s: [window_start, t_end],
         ball_count: balls,
         ball_diameter_m: g.ball_diameter,
         pitch_diameter_m: g.pitch_diameter,
-        mean_contact_angle_inner_deg: loaded_mean("contact_angle_inner_deg", &inner_loads),
-        mean_contact_angle_outer_deg: loaded_mean("contact_angle_outer_deg", &outer_loads),
+        mean_contact_angle_inner_deg: loaded_mean("contact_angle_inner_deg"),
+        mean_contact_angle_outer_deg: loaded_mean("contact_angle_outer_deg"),
         inner_ring_speed_rpm: inner_speed,
         mean_cage_speed_rpm: cage_speed,
         pure_rolling_cage_speed_rpm: rolling_ratio * inner_speed,
@@ -904,38 +931,29 @@ fn summarise(
         } else {
             0.0
         },
-        mean_load_inner_n: mean(&inner_loads),
-        max_load_inner_n: inner_loads.iter().copied().fold(0.0, f64::max),
-        mean_load_outer_n: mean(&outer_loads),
-        max_load_outer_n: outer_loads.iter().copied().fold(0.0, f64::max),
-        mean_slide_to_roll_inner: loaded_mean("slide_to_roll_inner", &inner_loads),
-        mean_slide_to_roll_outer: loaded_mean("slide_to_roll_outer", &outer_loads),
-        mean_spin_to_roll_inner: loaded_mean("spin_to_roll_inner", &inner_loads),
-        mean_spin_to_roll_outer: loaded_mean("spin_to_roll_outer", &outer_loads),
-        creep: series
-            .column("ball0_stick_fraction_inner")
-            .is_some()
-            .then(|| CreepMeans {
-                mean_creepage_longitudinal_inner: loaded_mean(
-                    "creepage_longitudinal_inner",
-                    &inner_loads,
-                ),
-                mean_creepage_longitudinal_outer: loaded_mean(
-                    "creepage_longitudinal_outer",
-                    &outer_loads,
-                ),
-                mean_creepage_lateral_inner: loaded_mean("creepage_lateral_inner", &inner_loads),
-                mean_creepage_lateral_outer: loaded_mean("creepage_lateral_outer", &outer_loads),
-                mean_creepage_spin_inner_1_m: loaded_mean("creepage_spin_inner_1_m", &inner_loads),
-                mean_creepage_spin_outer_1_m: loaded_mean("creepage_spin_outer_1_m", &outer_loads),
-                mean_stick_fraction_inner: loaded_mean("stick_fraction_inner", &inner_loads),
-                mean_stick_fraction_outer: loaded_mean("stick_fraction_outer", &outer_loads),
-            }),
-        mean_attitude_deg: mean(&pooled("attitude_deg")),
-        mean_yaw_deg: mean(&yaw),
-        max_abs_yaw_deg: yaw.iter().fold(0.0, |m, v| v.abs().max(m)),
-        vibration: crate::vibration::summarise(series, from, case.outer_ring.is_some()),
-        power: crate::power_channels::summarise(series, from),
+        mean_load_inner_n: window.pooled_mean("load_inner_n"),
+        max_load_inner_n: window.pooled_max("load_inner_n"),
+        mean_load_outer_n: window.pooled_mean("load_outer_n"),
+        max_load_outer_n: window.pooled_max("load_outer_n"),
+        mean_slide_to_roll_inner: loaded_mean("slide_to_roll_inner"),
+        mean_slide_to_roll_outer: loaded_mean("slide_to_roll_outer"),
+        mean_spin_to_roll_inner: loaded_mean("spin_to_roll_inner"),
+        mean_spin_to_roll_outer: loaded_mean("spin_to_roll_outer"),
+        creep: stats.has("ball0_stick_fraction_inner").then(|| CreepMeans {
+            mean_creepage_longitudinal_inner: loaded_mean("creepage_longitudinal_inner"),
+            mean_creepage_longitudinal_outer: loaded_mean("creepage_longitudinal_outer"),
+            mean_creepage_lateral_inner: loaded_mean("creepage_lateral_inner"),
+            mean_creepage_lateral_outer: loaded_mean("creepage_lateral_outer"),
+            mean_creepage_spin_inner_1_m: loaded_mean("creepage_spin_inner_1_m"),
+            mean_creepage_spin_outer_1_m: loaded_mean("creepage_spin_outer_1_m"),
+            mean_stick_fraction_inner: loaded_mean("stick_fraction_inner"),
+            mean_stick_fraction_outer: loaded_mean("stick_fraction_outer"),
+        }),
+        mean_attitude_deg: window.pooled_mean("attitude_deg"),
+        mean_yaw_deg: window.pooled_mean("yaw_deg"),
+        max_abs_yaw_deg: window.pooled_max_abs("yaw_deg"),
+        vibration: crate::vibration::summarise(&window.signal(), 0, case.outer_ring.is_some()),
+        power: crate::power_channels::summarise(&window, stats),
         thermal_coupling: model
             .thermal()
             .map(crate::power_channels::ThermalRunSummary::from),

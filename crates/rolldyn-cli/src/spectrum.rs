@@ -122,7 +122,7 @@ struct RunSummary {
 pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
     if args.list {
         let dir = Path::new(&args.dir);
-        let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet"))
+        let series = rolldyn_io::read_schema(&dir.join(crate::run::SERIES_DIR))
             .map_err(|e| Failure::BadInput(e.to_string()))?;
         if args.json {
             #[derive(serde::Serialize)]
@@ -157,7 +157,23 @@ pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
 /// files into the run directory.
 pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     let dir = Path::new(&args.dir);
-    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet"))
+    // Only the time and the channel analysed: a long record is not
+    // loaded whole.
+    let path = dir.join(crate::run::SERIES_DIR);
+    let channels = rolldyn_io::read_schema(&path).map_err(|e| Failure::BadInput(e.to_string()))?;
+    if channels.unit(&args.channel).is_none() {
+        return Err(bad_arg(
+            "--channel",
+            &args.channel,
+            "no such channel (rolldyn spectrum DIR --list shows them)",
+        ));
+    }
+    if channels.unit("time_s").is_none() {
+        return Err(Failure::BadInput(
+            "timeseries.parquet has no time_s column".into(),
+        ));
+    }
+    let series = rolldyn_io::read_columns(&path, Some(&["time_s", args.channel.as_str()]))
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     let summary_path = dir.join("summary.json");
     let summary: RunSummary = std::fs::read_to_string(&summary_path)

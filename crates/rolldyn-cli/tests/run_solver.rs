@@ -23,7 +23,7 @@ fn run_is_deterministic_whatever_the_thread_count() {
                 .output()
                 .expect("rolldyn runs");
             assert!(o.status.success(), "{}", stderr(&o));
-            let parquet = std::fs::read(dir.join("timeseries.parquet")).unwrap();
+            let parquet = common::series_bytes(&dir);
             let mut summary: Value =
                 serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
                     .unwrap();

@@ -446,7 +446,7 @@ fn mixed_lubrication_in_run_and_its_refusals() {
     let o = rolldyn(&args, None);
     assert!(o.status.success(), "{}", stderr(&o));
     let table = parquet::file::reader::SerializedFileReader::new(
-        std::fs::File::open(dir.join("timeseries.parquet")).unwrap(),
+        std::fs::File::open(common::first_part(&dir)).unwrap(),
     )
     .unwrap();
     use parquet::file::reader::FileReader;

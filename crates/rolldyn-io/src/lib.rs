@@ -5,8 +5,11 @@
 //!   carries its unit in the field metadata (`unit`), and the file carries
 //!   key–value metadata (rolldyn version, case). pandas, polars and
 //!   pyarrow read it.
-//! * [`read_parquet`]: such a file back into a [`TimeSeries`] (the
-//!   post-processing commands, e.g. `rolldyn spectrum`).
+//! * [`SeriesWriter`]: a run's time series written as it is produced, a
+//!   Parquet dataset of part files (`dataset`'s module doc has the layout).
+//! * [`read_parquet`], [`read_columns`], [`for_each_batch`],
+//!   [`for_each_row`]: a file or dataset back, whole, by columns or
+//!   streamed (the post-processing commands, e.g. `rolldyn spectrum`).
 //! * [`write_atomic`]: any bytes, written to a temporary file in the same
 //!   directory and renamed, so a reader never sees a half-written result.
 
@@ -16,6 +19,12 @@ use parquet::arrow::ArrowWriter;
 use parquet::basic::{Compression, ZstdLevel};
 use parquet::file::metadata::KeyValue;
 use parquet::file::properties::WriterProperties;
+mod dataset;
+
+pub use dataset::{
+    SeriesWriter, float_columns, for_each_batch, for_each_row, part_files, part_rows, read_columns,
+    read_parquet, read_schema, row_count,
+};
 use std::collections::HashMap;
 use std::path::Path;
 use std::sync::Arc;
@@ -104,6 +113,27 @@ impl TimeSeries {
     pub fn push(&mut self, row: &[f64]) {
         for (c, v) in self.columns.iter_mut().zip(row) {
             c.push(*v);
+        }
+    }
+
+    /// Replaces the samples (one vector per channel, in channel order, of
+    /// equal lengths).
+    pub(crate) fn set_columns(&mut self, columns: Vec<Vec<f64>>) {
+        self.columns = columns;
+        self.columns.resize(self.names.len(), Vec::new());
+    }
+
+    /// Reserves room for `rows` more samples in every channel.
+    pub fn reserve(&mut self, rows: usize) {
+        for c in &mut self.columns {
+            c.reserve_exact(rows);
+        }
+    }
+
+    /// Appends the samples of `other` (same channels, in order).
+    pub fn append(&mut self, other: &TimeSeries) {
+        for (c, o) in self.columns.iter_mut().zip(&other.columns) {
+            c.extend_from_slice(o);
         }
     }
 
@@ -202,7 +232,8 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
 /// Rows per Parquet row group: readers can stream a long run's file.
 pub const ROW_GROUP_ROWS: usize = 16_384;
 
-/// Writes `series` as Parquet to `path` atomically, with file metadata.
+/// Writes `series` as one Parquet file to `path` atomically, with file
+/// metadata (one row group per [`ROW_GROUP_ROWS`] rows).
 pub fn write_parquet(
     path: &Path,
     series: &TimeSeries,
@@ -216,7 +247,6 @@ pub fn write_parquet(
         .clone()
         .into_record_batch()
         .map_err(|e| encode(e.to_string()))?;
-    let schema = batch.schema();
     let kv: Vec<KeyValue> = metadata
         .iter()
         .map(|(k, v)| KeyValue::new(k.to_string(), v.clone()))
@@ -228,54 +258,12 @@ pub fn write_parquet(
         .build();
     let mut bytes = Vec::new();
     {
-        let mut writer = ArrowWriter::try_new(&mut bytes, schema, Some(props))
+        let mut writer = ArrowWriter::try_new(&mut bytes, batch.schema(), Some(props))
             .map_err(|e| encode(e.to_string()))?;
         writer.write(&batch).map_err(|e| encode(e.to_string()))?;
         writer.close().map_err(|e| encode(e.to_string()))?;
     }
     write_atomic(path, &bytes)
-}
-
-/// Reads a Parquet file written by [`write_parquet`]: every column must be
-/// Float64; units from the field metadata ("" when absent).
-pub fn read_parquet(path: &Path) -> Result<TimeSeries, InputError> {
-    use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
-    let decode = |message: String| InputError::Decode {
-        path: path.display().to_string(),
-        message,
-    };
-    let file = std::fs::File::open(path).map_err(|source| InputError::Io {
-        path: path.display().to_string(),
-        source,
-    })?;
-    let builder =
-        ParquetRecordBatchReaderBuilder::try_new(file).map_err(|e| decode(e.to_string()))?;
-    let schema = builder.schema().clone();
-    let mut series = TimeSeries::default();
-    for field in schema.fields() {
-        if field.data_type() != &DataType::Float64 {
-            return Err(decode(format!(
-                "column {} is {}, not Float64",
-                field.name(),
-                field.data_type()
-            )));
-        }
-        series.channel(
-            field.name().clone(),
-            field.metadata().get("unit").cloned().unwrap_or_default(),
-        );
-    }
-    for batch in builder.build().map_err(|e| decode(e.to_string()))? {
-        let batch = batch.map_err(|e| decode(e.to_string()))?;
-        for (i, column) in batch.columns().iter().enumerate() {
-            let values = column
-                .as_any()
-                .downcast_ref::<Float64Array>()
-                .ok_or_else(|| decode(format!("column {i} is not Float64")))?;
-            series.columns[i].extend(values.values().iter().copied());
-        }
-    }
-    Ok(series)
 }
 
 #[cfg(test)]

@@ -6,9 +6,9 @@
 //! numbers from Python as from the CLI. A case crosses the boundary as its
 //! source name, its TOML text (None: the built-in default case) and its
 //! `KEY=VALUE` overrides, as `run.json` records it; reports come back as
-//! JSON text (the CLI's `--json` output, keys in docs/cli.md), time
-//! series as Arrow record batches handed to pyarrow through the Arrow C
-//! stream interface, without a copy.
+//! JSON text (the CLI's `--json` output, keys in docs/cli.md); time
+//! series stay in the run directory's Parquet dataset, which the Python
+//! half reads with pyarrow, a column at a time.
 //!
 //! Runs and sweeps release the GIL. They execute on a worker thread while
 //! the calling thread waits in slices of 100 ms: between slices it takes
@@ -16,13 +16,9 @@
 //! polls at every step, so the run ends cleanly and keeps what it
 //! computed) and to call the progress callback.
 
-use arrow_array::ffi_stream::FFI_ArrowArrayStream;
-use arrow_array::{RecordBatch, RecordBatchIterator};
-use arrow_schema::SchemaRef;
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyCapsule;
 use rolldyn_case::{Case, presets};
 use rolldyn_cli::checkpoint::RunRecord;
 use rolldyn_cli::contact::{ContactArgs, evaluate};
@@ -247,48 +243,6 @@ fn quasistatic_sweep(
     json_text(&rows)
 }
 
-/// A time series as Arrow record batches; pyarrow takes it through the
-/// Arrow PyCapsule interface (`pyarrow.table(stream)`), sharing the
-/// buffers (no copy). Every call of `__arrow_c_stream__` gives a new
-/// stream over the same batches.
-#[pyclass(frozen)]
-struct ArrowStream {
-    schema: SchemaRef,
-    batches: Vec<RecordBatch>,
-}
-
-#[pymethods]
-impl ArrowStream {
-    #[pyo3(signature = (requested_schema=None))]
-    fn __arrow_c_stream__<'py>(
-        &self,
-        py: Python<'py>,
-        requested_schema: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyCapsule>> {
-        // The schema is fixed (Float64 columns); a requested one is ignored,
-        // as the interface allows.
-        let _ = requested_schema;
-        let reader = RecordBatchIterator::new(
-            self.batches.clone().into_iter().map(Ok),
-            self.schema.clone(),
-        );
-        let stream = FFI_ArrowArrayStream::new(Box::new(reader));
-        PyCapsule::new_with_value(py, stream, c"arrow_array_stream")
-    }
-}
-
-impl ArrowStream {
-    fn new(series: rolldyn_io::TimeSeries) -> PyResult<Self> {
-        let batch = series
-            .into_record_batch()
-            .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
-        Ok(ArrowStream {
-            schema: batch.schema(),
-            batches: vec![batch],
-        })
-    }
-}
-
 /// Options of a run from Python: its own stop flag (never the process's
 /// Ctrl-C handler: Python owns SIGINT) and progress fraction, no bar.
 fn run_options(force: bool, verify: bool) -> (RunOptions, Arc<AtomicBool>, Arc<AtomicU64>) {
@@ -376,7 +330,7 @@ fn run(
     force: bool,
     progress: Option<Bound<'_, PyAny>>,
     verify: bool,
-) -> PyResult<(String, ArrowStream, bool)> {
+) -> PyResult<(String, bool)> {
     let overrides = overrides(sets);
     let case = overrides
         .load_text(&source, text.as_deref())
@@ -388,22 +342,19 @@ fn run(
         run_case_series(&record, &case, dir, &options)
     })?;
     let output = output.map_err(to_py)?;
-    Ok((
-        json_text(&output.summary)?,
-        ArrowStream::new(output.series)?,
-        interrupted,
-    ))
+    Ok((json_text(&output.summary)?, interrupted))
 }
 
-/// Opens a run directory: its summary (JSON) and time series.
+/// Opens a run directory: its summary (JSON); checks that its time series
+/// reads (the channels, not the samples).
 #[pyfunction]
-fn open_run(directory: &str) -> PyResult<(String, ArrowStream)> {
+fn open_run(directory: &str) -> PyResult<String> {
     let dir = Path::new(directory);
     let summary = std::fs::read_to_string(dir.join(rolldyn_report::run::SUMMARY_FILE))
         .map_err(|e| CaseError::new_err(format!("{directory}: no summary.json: {e}")))?;
-    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet"))
+    rolldyn_io::read_schema(&dir.join(rolldyn_cli::run::SERIES_DIR))
         .map_err(|e| CaseError::new_err(e.to_string()))?;
-    Ok((summary, ArrowStream::new(series)?))
+    Ok(summary)
 }
 
 /// `rolldyn run --sweep`: runs the points (each a list of overrides added
@@ -488,7 +439,6 @@ fn _rolldyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CaseError", m.py().get_type::<CaseError>())?;
     m.add("ModelError", m.py().get_type::<ModelError>())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
-    m.add_class::<ArrowStream>()?;
     m.add_function(wrap_pyfunction!(preset_names, m)?)?;
     m.add_function(wrap_pyfunction!(preset_text, m)?)?;
     m.add_function(wrap_pyfunction!(check, m)?)?;

@@ -173,59 +173,50 @@ def test_a_run_says_how_accurate_it_is_and_verify_matches_the_cli(tmp_path):
     assert changes(result.summary) == changes(expected)
 
 
-def test_channels_are_numpy_arrays_with_units_without_copies():
+def test_channels_are_numpy_arrays_with_units_read_one_at_a_time(tmp_path):
+    result = rolldyn.run(duration="5 ms", output=tmp_path)
+    # A channel is read from the run's Parquet dataset alone, not the
+    # whole series.
     before = pa.total_allocated_bytes()
-    result = rolldyn.run(duration="5 ms")
-    # The table's buffers are the engine's, imported through the C stream
-    # interface: pyarrow's pool did not allocate them.
-    assert result.timeseries.nbytes > 100_000
-    assert pa.total_allocated_bytes() - before < 0.01 * result.timeseries.nbytes
     speed = result["cage_speed_rpm"]
+    assert pa.total_allocated_bytes() - before < 10 * speed.nbytes + 65_536
+    assert result._table is None
     assert isinstance(speed, np.ndarray) and speed.dtype == np.float64
     assert speed.unit == "rpm" and speed.name == "cage_speed_rpm"
+    assert len(speed) == result.summary["samples"]
     assert result["time_s"].unit == "s"
-    column = result.timeseries.column("cage_speed_rpm").chunk(0)
-    assert speed.ctypes.data == column.buffers()[1].address
     assert result.units["time_s"] == "s"
     with pytest.raises(KeyError, match="no such channel"):
         result["nope"]
+    # The whole table on demand, and the same values.
+    assert np.array_equal(result.timeseries.column("cage_speed_rpm").to_numpy(), speed)
     frame = result.to_pandas()
     assert list(frame.columns) == result.channels
+    # Without an output directory the series is read before the temporary
+    # directory goes.
+    temporary = rolldyn.run(duration="1 ms")
+    assert temporary.directory is None
+    assert temporary.timeseries.num_rows == temporary.summary["samples"]
 
 
-def test_bad_input_is_a_case_error_naming_the_key():
-    with pytest.raises(rolldyn.CaseError, match="solver.duration"):
-        rolldyn.run(duration="soon")
-
-
-def test_progress_callback_and_gil_released():
-    seen = []
-    counter = [0]
-    done = threading.Event()
-
-    def work():
-        rolldyn.run(duration="20 ms", progress=seen.append)
-        done.set()
-
-    thread = threading.Thread(target=work)
-    thread.start()
-    # The run holds no GIL: this thread keeps running Python meanwhile.
-    while not done.is_set():
-        counter[0] += 1
-    thread.join()
-    assert counter[0] > 10_000
-    assert seen and seen[-1] == pytest.approx(1.0)
-    assert all(b >= a for a, b in zip(seen, seen[1:]))
-
-
-def test_an_exception_in_the_progress_callback_stops_the_run():
-    def fail(fraction):
-        raise ValueError("stop here")
-
-    t0 = time.time()
-    with pytest.raises(ValueError, match="stop here"):
-        rolldyn.run(duration="1 s", progress=fail)
-    assert time.time() - t0 < 30
+def test_the_time_series_reads_as_one_table_with_pyarrow_and_pandas(tmp_path):
+    # 40 kHz over 0.1 s: several part files.
+    cli("run", "--duration", "0.1 s", "--set", 'output.sample_rate="40 kHz"',
+        "-o", str(tmp_path))
+    series = tmp_path / "timeseries.parquet"
+    assert len(list(series.glob("part-*.parquet"))) > 1
+    import pyarrow.dataset as ds
+    table = ds.dataset(series, format="parquet").to_table()
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert table.num_rows == summary["samples"]
+    assert table.schema.field("cage_speed_rpm").metadata[b"unit"] == b"rpm"
+    time = table.column("time_s").to_numpy()
+    assert np.all(np.diff(time) > 0)
+    assert pq.read_table(series).equals(table)
+    pandas = pytest.importorskip("pandas")
+    frame = pandas.read_parquet(series)
+    assert frame.shape == (table.num_rows, table.num_columns)
+    assert frame["time_s"].is_monotonic_increasing
 
 
 def test_ctrl_c_stops_a_run_and_keeps_the_partial_result(tmp_path):

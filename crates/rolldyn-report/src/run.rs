@@ -10,8 +10,9 @@
 
 use crate::svg::{Plot, Series, Style};
 use crate::{Block, Report, ReportError, Section, cell, read_json};
-use rolldyn_io::{TimeSeries, read_parquet};
+use rolldyn_io::{TimeSeries, float_columns, for_each_batch, read_schema, row_count};
 use serde_json::Value;
+use std::collections::{HashMap, VecDeque};
 use std::path::Path;
 
 /// File names of a run directory.
@@ -25,8 +26,14 @@ pub const RECORD_FILE: &str = "run.json";
 pub struct RunData {
     /// `summary.json`.
     pub summary: Value,
-    /// `timeseries.parquet`.
+    /// `timeseries.parquet`'s channels for the plots: every sample, or for
+    /// a long record the extremes of [`PLOT_ROWS`]/2 equal buckets (what
+    /// a plot of it shows); the other balls' channels are left out.
     pub series: TimeSeries,
+    /// Each channel's mean over the summary's averaging window.
+    pub window_means: HashMap<String, f64>,
+    /// The cage centre's (y, z) over the last [`PLOT_ROWS`] samples.
+    pub orbit: Option<(Vec<f64>, Vec<f64>)>,
     /// `run.json`, when present.
     pub record: Option<Value>,
     /// The case as `rolldyn check` describes it, when known.
@@ -53,27 +60,15 @@ impl RunData {
     fn ball_count(&self) -> usize {
         (0..)
             .take_while(|j| {
-                self.series
-                    .column(&format!("ball{j}_load_inner_n"))
-                    .is_some()
+                self.window_means
+                    .contains_key(&format!("ball{j}_load_inner_n"))
             })
             .count()
     }
 
     /// Mean of a channel over the summary's averaging window.
     fn window_mean(&self, name: &str) -> Option<f64> {
-        let values = self.channel(name)?;
-        let [t0, t1] = match self.summary.get("averaging_window_s") {
-            Some(Value::Array(w)) if w.len() == 2 => [w[0].as_f64()?, w[1].as_f64()?],
-            _ => return None,
-        };
-        let (sum, n) = self
-            .time()
-            .iter()
-            .zip(values)
-            .filter(|(t, v)| **t >= t0 && **t <= t1 && v.is_finite())
-            .fold((0.0, 0usize), |(s, n), (_, v)| (s + v, n + 1));
-        (n > 0).then(|| sum / n as f64)
+        self.window_means.get(name).copied()
     }
 
     /// Per-ball window means of a per-ball channel (`ball{j}_{suffix}`).
@@ -107,10 +102,18 @@ pub const SECTIONS: [SectionBuilder; 10] = [
 pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, ReportError> {
     let summary = read_json(&dir.join(SUMMARY_FILE))?;
     let series_path = dir.join(TIMESERIES_FILE);
-    let series = read_parquet(&series_path).map_err(|e| ReportError::Read {
-        path: series_path.display().to_string(),
-        message: e.to_string(),
-    })?;
+    let window = match summary.get("averaging_window_s") {
+        Some(Value::Array(w)) if w.len() == 2 => [
+            w[0].as_f64().unwrap_or(f64::NAN),
+            w[1].as_f64().unwrap_or(f64::NAN),
+        ],
+        _ => [f64::NAN; 2],
+    };
+    let (series, window_means, orbit) =
+        read_for_plots(&series_path, window).map_err(|e| ReportError::Read {
+            path: series_path.display().to_string(),
+            message: e.to_string(),
+        })?;
     let record = dir
         .join(RECORD_FILE)
         .is_file()
@@ -119,9 +122,131 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
     Ok(build(&RunData {
         summary,
         series,
+        window_means,
+        orbit,
         record,
         case_description,
     }))
+}
+
+/// Most rows of a channel the report holds (see [`RunData::series`]).
+pub const PLOT_ROWS: usize = 65_536;
+
+/// Whether a channel is another ball's than ball 0 (window means only).
+fn other_ball(name: &str) -> bool {
+    name.strip_prefix("ball")
+        .and_then(|rest| rest.split_once('_'))
+        .is_some_and(|(j, _)| j != "0")
+}
+
+/// One pass over the time series at `path`, one batch in memory: the
+/// channels to plot (reduced to bucket extremes when longer than
+/// [`PLOT_ROWS`]), every channel's mean over `window` (finite values with
+/// t in it) and the cage orbit's last [`PLOT_ROWS`] samples.
+#[allow(clippy::type_complexity)]
+pub fn read_for_plots(
+    path: &Path,
+    [t0, t1]: [f64; 2],
+) -> Result<
+    (
+        TimeSeries,
+        HashMap<String, f64>,
+        Option<(Vec<f64>, Vec<f64>)>,
+    ),
+    rolldyn_io::InputError,
+> {
+    let all = read_schema(path)?;
+    let rows = row_count(path)? as usize;
+    let names = all.names().to_vec();
+    let plotted: Vec<usize> = (0..names.len())
+        .filter(|&i| !other_ball(&names[i]))
+        .collect();
+    let mut series = TimeSeries::default();
+    for &i in &plotted {
+        series.channel(names[i].clone(), all.units()[i].clone());
+    }
+    let time = names.iter().position(|n| n == "time_s");
+    let orbit_columns = (
+        names.iter().position(|n| n == "cage_y_m"),
+        names.iter().position(|n| n == "cage_z_m"),
+    );
+    // Rows per bucket; each bucket gives two rows (its extremes in order).
+    let bucket = if rows > PLOT_ROWS {
+        rows.div_ceil(PLOT_ROWS / 2)
+    } else {
+        1
+    };
+    // Per plotted channel: (min, its row, max, its row) over the bucket.
+    let mut extremes = vec![(f64::INFINITY, 0usize, f64::NEG_INFINITY, 0usize); plotted.len()];
+    let mut in_bucket = 0usize;
+    let mut sums = vec![(0.0f64, 0usize); names.len()];
+    let mut orbit = VecDeque::new();
+    let mut row = vec![0.0; plotted.len()];
+    let mut second = vec![0.0; plotted.len()];
+    let mut seen = 0usize;
+    let mut flush = |extremes: &mut [(f64, usize, f64, usize)], series: &mut TimeSeries| {
+        for (k, e) in extremes.iter().enumerate() {
+            let (first, last) = if e.1 <= e.3 { (e.0, e.2) } else { (e.2, e.0) };
+            row[k] = first;
+            second[k] = last;
+        }
+        series.push(&row);
+        series.push(&second);
+        extremes.fill((f64::INFINITY, 0, f64::NEG_INFINITY, 0));
+    };
+    for_each_batch(path, None, |batch| {
+        let columns = float_columns(batch)?;
+        for r in 0..batch.num_rows() {
+            let t = time.map_or(f64::NAN, |i| columns[i][r]);
+            if t >= t0 && t <= t1 {
+                for (sum, column) in sums.iter_mut().zip(&columns) {
+                    if column[r].is_finite() {
+                        sum.0 += column[r];
+                        sum.1 += 1;
+                    }
+                }
+            }
+            if let (Some(y), Some(z)) = orbit_columns {
+                if orbit.len() == PLOT_ROWS {
+                    orbit.pop_front();
+                }
+                orbit.push_back((columns[y][r], columns[z][r]));
+            }
+            if bucket == 1 {
+                let values: Vec<f64> = plotted.iter().map(|&i| columns[i][r]).collect();
+                series.push(&values);
+            } else {
+                for (e, &i) in extremes.iter_mut().zip(&plotted) {
+                    // NaN never compares: a bucket of NaN stays a gap.
+                    let v = columns[i][r];
+                    if v < e.0 {
+                        (e.0, e.1) = (v, seen);
+                    }
+                    if v > e.2 {
+                        (e.2, e.3) = (v, seen);
+                    }
+                }
+                in_bucket += 1;
+                if in_bucket == bucket {
+                    flush(&mut extremes, &mut series);
+                    in_bucket = 0;
+                }
+            }
+            seen += 1;
+        }
+        Ok(())
+    })?;
+    if in_bucket > 0 {
+        flush(&mut extremes, &mut series);
+    }
+    let means = names
+        .iter()
+        .zip(&sums)
+        .filter(|(_, (_, n))| *n > 0)
+        .map(|(name, (sum, n))| (name.clone(), sum / *n as f64))
+        .collect();
+    let orbit = (!orbit.is_empty()).then(|| orbit.into_iter().unzip());
+    Ok((series, means, orbit))
 }
 
 /// The report of a run's data.
@@ -438,8 +563,9 @@ fn slip(data: &RunData) -> Option<Section> {
 }
 
 fn cage_orbit(data: &RunData) -> Option<Section> {
-    let y: Vec<f64> = data.channel("cage_y_m")?.iter().map(|v| 1e6 * v).collect();
-    let z: Vec<f64> = data.channel("cage_z_m")?.iter().map(|v| 1e6 * v).collect();
+    let (y, z) = data.orbit.as_ref()?;
+    let y: Vec<f64> = y.iter().map(|v| 1e6 * v).collect();
+    let z: Vec<f64> = z.iter().map(|v| 1e6 * v).collect();
     let mut plot = Plot::new("Cage centre orbit", "y [µm]", "z [µm]").with(Series::line(
         "cage centre",
         &y,

@@ -53,3 +53,21 @@ pub fn temp_dir(tag: &str) -> std::path::PathBuf {
     std::fs::remove_dir_all(&dir).ok();
     dir
 }
+
+/// The first part file of a run's time series (a Parquet dataset).
+pub fn first_part(run: &std::path::Path) -> std::path::PathBuf {
+    run.join("timeseries.parquet").join("part-000000.parquet")
+}
+
+/// The bytes of a run's time series: its part files in order, each
+/// preceded by its name.
+pub fn series_bytes(run: &std::path::Path) -> Vec<u8> {
+    let parts = rolldyn_io::part_files(&run.join("timeseries.parquet")).unwrap();
+    assert!(!parts.is_empty(), "{}: no part file", run.display());
+    let mut bytes = Vec::new();
+    for part in parts {
+        bytes.extend_from_slice(part.file_name().unwrap().to_string_lossy().as_bytes());
+        bytes.extend(std::fs::read(part).unwrap());
+    }
+    bytes
+}

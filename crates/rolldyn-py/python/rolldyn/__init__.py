@@ -274,11 +274,14 @@ def quasistatic_sweep(case: Optional[Case], grid: Mapping[str, Union[str, Iterab
     return SweepResult(rows, None)
 
 
-def _table(stream: Any) -> pa.Table:
-    """The engine's record batches as a Table, sharing their buffers (the
-    Arrow C stream interface; not ``pa.table``, which imports pandas to
-    look for a DataFrame)."""
-    return pa.RecordBatchReader.from_stream(stream).read_all()
+SERIES_DIR = "timeseries.parquet"
+
+
+def _dataset(directory: str):
+    """The run's time series: a Parquet dataset of part files, read lazily
+    (docs/cli.md)."""
+    import pyarrow.dataset as ds
+    return ds.dataset(os.path.join(directory, SERIES_DIR), format="parquet")
 
 
 class Channel(np.ndarray):
@@ -296,19 +299,44 @@ class Channel(np.ndarray):
 
 class Result:
     """A dynamic run: ``summary`` (dict, the run's summary.json),
-    ``timeseries`` (pyarrow Table, each field's unit in its metadata) and
-    ``result[name]`` (a :class:`Channel`: NumPy array with ``.unit``)."""
+    ``result[name]`` (a :class:`Channel`: NumPy array with ``.unit``, read
+    from disk one channel at a time) and ``timeseries`` (the whole series as
+    a pyarrow Table, each field's unit in its metadata; read on first use,
+    which for a long run can be large: prefer ``result[name]`` or
+    :meth:`dataset`)."""
 
-    def __init__(self, summary: dict, timeseries: pa.Table, directory: Optional[str]):
+    def __init__(self, summary: dict, directory: Optional[str],
+                 timeseries: Optional[pa.Table] = None):
         self.summary = summary
-        self.timeseries = timeseries
         self.directory = directory
+        self._table = timeseries
+        self._schema = timeseries.schema if timeseries is not None else None
 
     @classmethod
     def load(cls, directory: Union[str, os.PathLike]) -> "Result":
         """Opens a run directory written by ``rolldyn run`` or :func:`run`."""
-        summary, stream = _rolldyn.open_run(str(directory))
-        return cls(json.loads(summary), _table(stream), str(directory))
+        summary = _rolldyn.open_run(str(directory))
+        return cls(json.loads(summary), str(directory))
+
+    def dataset(self):
+        """The time series as a ``pyarrow.dataset.Dataset`` (streams: scan
+        it by columns, rows or batches without loading it whole)."""
+        if self.directory is None:
+            raise CaseError("dataset: this run has no directory; run with output=DIR")
+        return _dataset(self.directory)
+
+    @property
+    def timeseries(self) -> pa.Table:
+        if self._table is None:
+            self._table = self.dataset().to_table()
+        return self._table
+
+    @property
+    def schema(self) -> pa.Schema:
+        if self._schema is None:
+            self._schema = self.timeseries.schema if self.directory is None \
+                else self.dataset().schema
+        return self._schema
 
     @property
     def status(self) -> str:
@@ -317,17 +345,19 @@ class Result:
 
     @property
     def channels(self) -> list:
-        return self.timeseries.column_names
+        return self.schema.names
 
     @property
     def units(self) -> dict:
         """Channel name -> unit."""
-        return {f.name: (f.metadata or {}).get(b"unit", b"").decode() for f in self.timeseries.schema}
+        return {f.name: (f.metadata or {}).get(b"unit", b"").decode() for f in self.schema}
 
     def __getitem__(self, name: str) -> Channel:
-        if name not in self.timeseries.column_names:
+        if name not in self.schema.names:
             raise KeyError(f"{name}: no such channel; channels: {', '.join(self.channels)}")
-        column = self.timeseries.column(name)
+        table = self._table if self._table is not None \
+            else self.dataset().to_table(columns=[name])
+        column = table.column(name)
         values = column.chunk(0).to_numpy(zero_copy_only=True) if column.num_chunks == 1 \
             else column.to_numpy()
         return Channel(values, name, self.units[name])
@@ -351,7 +381,7 @@ class Result:
     def __repr__(self) -> str:
         s = self.summary
         return (f"<rolldyn.Result {s['status']}: {s['simulated_time_s']:.4g} s simulated, "
-                f"{self.timeseries.num_rows} samples x {self.timeseries.num_columns} channels>")
+                f"{s['samples']} samples x {len(self.channels)} channels>")
 
 
 class RunInterrupted(KeyboardInterrupt):
@@ -398,9 +428,13 @@ def run(case: Optional[Case] = None, duration: Optional[str] = None, *,
     changes."""
     case = _with_duration(_case(case), duration)
     with _Directory(output) as d:
-        summary, stream, interrupted = _rolldyn.run(
+        summary, interrupted = _rolldyn.run(
             *case._args(), d.path, force, progress, verify)
-        result = Result(json.loads(summary), _table(stream), d.path if d.given else None)
+        if d.given:
+            result = Result(json.loads(summary), d.path)
+        else:
+            # The temporary directory goes: read the series now.
+            result = Result(json.loads(summary), None, _dataset(d.path).to_table())
     if interrupted:
         raise RunInterrupted(result)
     return result

@@ -1,0 +1,578 @@
+//! A time series written as it is produced: a Parquet dataset.
+//!
+//! `DIR/timeseries.parquet` is a directory of part files
+//! `part-000000.parquet`, `part-000001.parquet`, … in time order, each a
+//! complete Parquet file of one row group (the layout Spark, pyarrow's
+//! `dataset`, pandas, polars and DuckDB read as one table). Part `k` holds
+//! rows `k·n … (k+1)·n − 1`, `n` = [`part_rows`] of the series' width, so
+//! the parts of a run do not depend on when it was checkpointed or
+//! interrupted. The rows of the last, growing part are kept in memory and
+//! written (atomically, as a provisional part under its final name) at
+//! every [`SeriesWriter::sync`]; memory is bounded by one part whatever the
+//! run's length, and a checkpoint writes only what is new.
+//!
+//! After a kill at any moment every part on disk is whole (each is written
+//! to a temporary file and renamed), and the rows up to the last
+//! [`SeriesWriter::sync`] read back. [`SeriesWriter::resume`] keeps the
+//! first `rows` rows (the ones a checkpoint vouches for) and drops the rest.
+
+use crate::{InputError, OutputError, TimeSeries, write_atomic};
+use arrow_array::{Float64Array, RecordBatch};
+use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
+use parquet::arrow::{ArrowWriter, ProjectionMask};
+use parquet::basic::{Compression, ZstdLevel};
+use parquet::file::metadata::KeyValue;
+use parquet::file::properties::WriterProperties;
+use std::path::{Path, PathBuf};
+
+/// Largest part in memory \[bytes of f64 samples\].
+const PART_BYTES: usize = 4 * 1024 * 1024;
+
+/// Rows per part of a series of `width` channels: 4 MiB of samples,
+/// between 1 024 and 65 536 rows.
+pub fn part_rows(width: usize) -> usize {
+    (PART_BYTES / (8 * width.max(1))).clamp(1024, 65_536)
+}
+
+/// The file name of part `index`.
+fn part_name(index: usize) -> String {
+    format!("part-{index:06}.parquet")
+}
+
+/// The part files of a dataset directory, in order (by name).
+pub fn part_files(dir: &Path) -> Result<Vec<PathBuf>, InputError> {
+    let io = |source| InputError::Io {
+        path: dir.display().to_string(),
+        source,
+    };
+    let mut parts: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(io)?
+        .filter_map(|entry| entry.ok().map(|e| e.path()))
+        .filter(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.starts_with("part-") && n.ends_with(".parquet"))
+        })
+        .collect();
+    parts.sort();
+    Ok(parts)
+}
+
+/// Encodes `series` as one Parquet file of one row group (zstd, units in
+/// the field metadata, `metadata` as key–value pairs).
+pub(crate) fn encode(
+    series: TimeSeries,
+    metadata: &[(String, String)],
+    path: &Path,
+) -> Result<Vec<u8>, OutputError> {
+    let encode = |message: String| OutputError::Encode {
+        path: path.display().to_string(),
+        message,
+    };
+    let rows = series.len().max(1);
+    let batch = series
+        .into_record_batch()
+        .map_err(|e| encode(e.to_string()))?;
+    let kv: Vec<KeyValue> = metadata
+        .iter()
+        .map(|(k, v)| KeyValue::new(k.clone(), v.clone()))
+        .collect();
+    let props = WriterProperties::builder()
+        .set_compression(Compression::ZSTD(ZstdLevel::default()))
+        .set_key_value_metadata(Some(kv))
+        .set_max_row_group_row_count(Some(rows))
+        // Samples rarely repeat: a dictionary per column costs memory and
+        // time for nothing (zstd still shrinks constant channels).
+        .set_dictionary_enabled(false)
+        .build();
+    let mut bytes = Vec::new();
+    let mut writer = ArrowWriter::try_new(&mut bytes, batch.schema(), Some(props))
+        .map_err(|e| encode(e.to_string()))?;
+    writer.write(&batch).map_err(|e| encode(e.to_string()))?;
+    writer.close().map_err(|e| encode(e.to_string()))?;
+    Ok(bytes)
+}
+
+/// Writes a time series part by part into a dataset directory.
+#[derive(Debug)]
+pub struct SeriesWriter {
+    dir: PathBuf,
+    /// Rows not yet in a complete part (channels as the series').
+    pending: TimeSeries,
+    part_rows: usize,
+    /// Complete parts written.
+    complete: usize,
+    metadata: Vec<(String, String)>,
+    /// Whether the provisional part on disk is behind `pending`.
+    dirty: bool,
+}
+
+impl SeriesWriter {
+    /// Starts a new dataset at `dir` with the channels of `template` (its
+    /// rows are ignored): whatever was at `dir` (an older run's dataset, or
+    /// a single file of earlier versions) is removed.
+    pub fn create(
+        dir: &Path,
+        template: &TimeSeries,
+        metadata: &[(&str, String)],
+    ) -> Result<Self, OutputError> {
+        let io = |source| OutputError::Io {
+            path: dir.display().to_string(),
+            source,
+        };
+        if dir.is_dir() {
+            std::fs::remove_dir_all(dir).map_err(io)?;
+        } else if dir.exists() {
+            std::fs::remove_file(dir).map_err(io)?;
+        }
+        std::fs::create_dir_all(dir).map_err(io)?;
+        // An empty first part: the dataset reads (its channels, no rows)
+        // from the start, even if the run is killed before any sync.
+        let mut writer = Self::new(dir, template, metadata);
+        writer.write_pending(false)?;
+        Ok(writer)
+    }
+
+    fn new(dir: &Path, template: &TimeSeries, metadata: &[(&str, String)]) -> Self {
+        let part_rows = part_rows(template.width());
+        Self {
+            dir: dir.to_path_buf(),
+            part_rows,
+            pending: empty_like(template, part_rows),
+            complete: 0,
+            metadata: metadata
+                .iter()
+                .map(|(k, v)| (k.to_string(), v.clone()))
+                .collect(),
+            dirty: false,
+        }
+    }
+
+    /// Continues the dataset at `dir` after its first `rows` rows: later
+    /// parts are removed and the rows of the last, partial part are read
+    /// back into memory. The channels must be `template`'s.
+    pub fn resume(
+        dir: &Path,
+        template: &TimeSeries,
+        metadata: &[(&str, String)],
+        rows: u64,
+    ) -> Result<Self, InputError> {
+        let mut writer = Self::new(dir, template, metadata);
+        let corrupt = |message: String| InputError::Decode {
+            path: dir.display().to_string(),
+            message,
+        };
+        if !dir.is_dir() {
+            return Err(corrupt(
+                "not a dataset directory of part files (written by an older rolldyn, or removed); start the run again".into(),
+            ));
+        }
+        let n = writer.part_rows as u64;
+        let complete = (rows / n) as usize;
+        let remainder = (rows % n) as usize;
+        let parts = part_files(dir)?;
+        for k in 0..complete + usize::from(remainder > 0) {
+            let expected = dir.join(part_name(k));
+            if parts.get(k) != Some(&expected) {
+                return Err(corrupt(format!(
+                    "{} is missing: the checkpoint's {rows} rows are not all on disk",
+                    expected.display()
+                )));
+            }
+        }
+        for part in &parts[..complete] {
+            if read_schema(part)?.names() != template.names() {
+                return Err(corrupt(format!(
+                    "{} holds other channels than this run records",
+                    part.display()
+                )));
+            }
+        }
+        if remainder > 0 {
+            let part = read_parquet(&parts[complete])?;
+            if part.names() != template.names() || part.len() < remainder {
+                return Err(corrupt(format!(
+                    "{} holds {} rows of other channels, not the checkpoint's {remainder}",
+                    parts[complete].display(),
+                    part.len()
+                )));
+            }
+            let mut part = part;
+            part.truncate(remainder);
+            writer.pending = empty_like(template, writer.part_rows);
+            writer.pending.append(&part);
+        }
+        for path in parts.iter().skip(complete + usize::from(remainder > 0)) {
+            std::fs::remove_file(path).map_err(|source| InputError::Io {
+                path: path.display().to_string(),
+                source,
+            })?;
+        }
+        writer.complete = complete;
+        Ok(writer)
+    }
+
+    /// Rows written so far (complete parts and pending rows).
+    pub fn rows(&self) -> u64 {
+        (self.complete * self.part_rows + self.pending.len()) as u64
+    }
+
+    /// Rows per part.
+    pub fn part_rows(&self) -> usize {
+        self.part_rows
+    }
+
+    /// Appends one row (one value per channel, in channel order); writes a
+    /// part when one is full.
+    pub fn push(&mut self, row: &[f64]) -> Result<(), OutputError> {
+        self.pending.push(row);
+        self.dirty = true;
+        if self.pending.len() >= self.part_rows {
+            self.write_pending(true)?;
+        }
+        Ok(())
+    }
+
+    /// Makes every row pushed so far readable on disk: the pending rows as
+    /// a provisional part (rewritten as it grows; at most one part).
+    pub fn sync(&mut self) -> Result<(), OutputError> {
+        if self.dirty {
+            self.write_pending(false)?;
+        }
+        Ok(())
+    }
+
+    /// Writes the pending rows as part `complete`; a full part moves on.
+    fn write_pending(&mut self, full: bool) -> Result<(), OutputError> {
+        let path = self.dir.join(part_name(self.complete));
+        let series = if full {
+            // Moved out: the next part's room is taken only after this one
+            // is encoded, so the two are never in memory together.
+            std::mem::take(&mut self.pending)
+        } else {
+            self.pending.clone()
+        };
+        let template = full.then(|| empty_like(&series, 0));
+        let bytes = encode(series, &self.metadata, &path)?;
+        write_atomic(&path, &bytes)?;
+        drop(bytes);
+        if let Some(template) = template {
+            self.pending = empty_like(&template, self.part_rows);
+            self.complete += 1;
+        }
+        self.dirty = false;
+        Ok(())
+    }
+}
+
+/// A series with the channels of `template` and no rows, with room for
+/// `rows` (the columns do not grow, and fragment the heap, sample by
+/// sample).
+fn empty_like(template: &TimeSeries, rows: usize) -> TimeSeries {
+    let mut series = TimeSeries::default();
+    for (name, unit) in template.names().iter().zip(template.units()) {
+        series.channel(name.clone(), unit.clone());
+    }
+    series.reserve(rows);
+    series
+}
+
+/// The channels (names and units, no rows) of a series file or dataset.
+pub fn read_schema(path: &Path) -> Result<TimeSeries, InputError> {
+    let first = first_file(path)?;
+    let builder = open(&first)?;
+    schema_series(&first, builder.schema())
+}
+
+fn first_file(path: &Path) -> Result<PathBuf, InputError> {
+    if path.is_dir() {
+        part_files(path)?
+            .into_iter()
+            .next()
+            .ok_or_else(|| InputError::Decode {
+                path: path.display().to_string(),
+                message: "holds no part file (part-NNNNNN.parquet)".into(),
+            })
+    } else {
+        Ok(path.to_path_buf())
+    }
+}
+
+fn open(path: &Path) -> Result<ParquetRecordBatchReaderBuilder<std::fs::File>, InputError> {
+    let file = std::fs::File::open(path).map_err(|source| InputError::Io {
+        path: path.display().to_string(),
+        source,
+    })?;
+    ParquetRecordBatchReaderBuilder::try_new(file).map_err(|e| InputError::Decode {
+        path: path.display().to_string(),
+        message: e.to_string(),
+    })
+}
+
+fn schema_series(path: &Path, schema: &arrow_schema::Schema) -> Result<TimeSeries, InputError> {
+    let mut series = TimeSeries::default();
+    for field in schema.fields() {
+        if field.data_type() != &arrow_schema::DataType::Float64 {
+            return Err(InputError::Decode {
+                path: path.display().to_string(),
+                message: format!(
+                    "column {} is {}, not Float64",
+                    field.name(),
+                    field.data_type()
+                ),
+            });
+        }
+        series.channel(
+            field.name().clone(),
+            field.metadata().get("unit").cloned().unwrap_or_default(),
+        );
+    }
+    Ok(series)
+}
+
+/// The files of a series: the file itself, or a dataset's parts.
+fn files(path: &Path) -> Result<Vec<PathBuf>, InputError> {
+    if path.is_dir() {
+        part_files(path)
+    } else {
+        Ok(vec![path.to_path_buf()])
+    }
+}
+
+/// Rows of the series at `path` (a file or a dataset directory), from
+/// the files' footers.
+pub fn row_count(path: &Path) -> Result<u64, InputError> {
+    let mut rows = 0;
+    for file in files(path)? {
+        rows += open(&file)?.metadata().file_metadata().num_rows() as u64;
+    }
+    Ok(rows)
+}
+
+/// Calls `f` with each record batch of the series at `path` (a file or a
+/// dataset directory), in order, holding one batch in memory; `columns`
+/// selects channels by name (None: all). Every part must have the first
+/// part's channels.
+pub fn for_each_batch(
+    path: &Path,
+    columns: Option<&[&str]>,
+    mut f: impl FnMut(&RecordBatch) -> Result<(), InputError>,
+) -> Result<TimeSeries, InputError> {
+    let decode = |p: &Path, message: String| InputError::Decode {
+        path: p.display().to_string(),
+        message,
+    };
+    let all = read_schema(path)?;
+    let selected: Vec<usize> = match columns {
+        None => (0..all.width()).collect(),
+        Some(names) => names
+            .iter()
+            .map(|n| {
+                all.names()
+                    .iter()
+                    .position(|m| m == n)
+                    .ok_or_else(|| decode(path, format!("has no channel {n}")))
+            })
+            .collect::<Result<_, _>>()?,
+    };
+    let mut schema = TimeSeries::default();
+    for &i in &selected {
+        schema.channel(all.names()[i].clone(), all.units()[i].clone());
+    }
+    for file in files(path)? {
+        let builder = open(&file)?;
+        let names: Vec<&String> = builder.schema().fields().iter().map(|f| f.name()).collect();
+        if names.len() != all.width() || names.iter().zip(all.names()).any(|(a, b)| *a != b) {
+            return Err(decode(
+                &file,
+                "holds other channels than the first part".into(),
+            ));
+        }
+        let mask = ProjectionMask::roots(builder.parquet_schema(), selected.iter().copied());
+        let reader = builder
+            .with_projection(mask)
+            .build()
+            .map_err(|e| decode(&file, e.to_string()))?;
+        for batch in reader {
+            let batch = batch.map_err(|e| decode(&file, e.to_string()))?;
+            f(&batch)?;
+        }
+    }
+    Ok(schema)
+}
+
+/// The float columns of a batch.
+pub fn float_columns(batch: &RecordBatch) -> Result<Vec<&[f64]>, InputError> {
+    batch
+        .columns()
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            c.as_any()
+                .downcast_ref::<Float64Array>()
+                .map(|a| a.values().as_ref())
+                .ok_or_else(|| InputError::Decode {
+                    path: String::new(),
+                    message: format!("column {i} is not Float64"),
+                })
+        })
+        .collect()
+}
+
+/// Reads the series at `path` (a file or a dataset directory) whole, or
+/// only the `columns` named.
+pub fn read_columns(path: &Path, columns: Option<&[&str]>) -> Result<TimeSeries, InputError> {
+    let mut data: Vec<Vec<f64>> = Vec::new();
+    let schema = for_each_batch(path, columns, |batch| {
+        let cols = float_columns(batch)?;
+        data.resize(cols.len(), Vec::new());
+        for (d, c) in data.iter_mut().zip(cols) {
+            d.extend_from_slice(c);
+        }
+        Ok(())
+    })?;
+    let mut series = schema;
+    series.set_columns(data);
+    Ok(series)
+}
+
+/// Reads a whole series: a Parquet file written by [`crate::write_parquet`]
+/// or a dataset of [`SeriesWriter`]. Every column must be Float64; units
+/// from the field metadata ("" when absent).
+pub fn read_parquet(path: &Path) -> Result<TimeSeries, InputError> {
+    read_columns(path, None)
+}
+
+/// Calls `f` with each of the first `rows` rows of the series at `path`
+/// (all rows when None), in order, one batch in memory.
+pub fn for_each_row(
+    path: &Path,
+    rows: Option<u64>,
+    mut f: impl FnMut(&[f64]),
+) -> Result<u64, InputError> {
+    let mut seen = 0u64;
+    let mut row = Vec::new();
+    for_each_batch(path, None, |batch| {
+        let cols = float_columns(batch)?;
+        for r in 0..batch.num_rows() {
+            if rows.is_some_and(|n| seen >= n) {
+                return Ok(());
+            }
+            row.clear();
+            row.extend(cols.iter().map(|c| c[r]));
+            f(&row);
+            seen += 1;
+        }
+        Ok(())
+    })?;
+    Ok(seen)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn series(rows: std::ops::Range<usize>) -> TimeSeries {
+        let mut ts = TimeSeries::default();
+        ts.channel("time_s", "s");
+        ts.channel("x_m", "m");
+        for i in rows {
+            ts.push(&[i as f64 * 1e-3, (i as f64).sin()]);
+        }
+        ts
+    }
+
+    fn temp(tag: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("rolldyn-ds-{tag}-{}", std::process::id()));
+        std::fs::remove_dir_all(&dir).ok();
+        dir
+    }
+
+    #[test]
+    fn parts_hold_fixed_row_ranges_and_read_back_as_one_series() {
+        let dir = temp("parts");
+        let template = series(0..0);
+        let n = part_rows(2);
+        let total = 2 * n + 17;
+        let mut w = SeriesWriter::create(&dir, &template, &[("case", "t".into())]).unwrap();
+        let whole = series(0..total);
+        for i in 0..total {
+            w.push(&[
+                whole.column("time_s").unwrap()[i],
+                whole.column("x_m").unwrap()[i],
+            ])
+            .unwrap();
+            if i % 1000 == 7 {
+                w.sync().unwrap();
+            }
+        }
+        w.sync().unwrap();
+        assert_eq!(w.rows(), total as u64);
+        let parts = part_files(&dir).unwrap();
+        assert_eq!(parts.len(), 3);
+        assert_eq!(read_parquet(&parts[0]).unwrap().len(), n);
+        let back = read_parquet(&dir).unwrap();
+        assert_eq!(back, whole);
+        assert_eq!(back.unit("x_m"), Some("m"));
+        // Projection: one column, same values.
+        let x = read_columns(&dir, Some(&["x_m"])).unwrap();
+        assert_eq!(x.names(), ["x_m"]);
+        assert_eq!(x.column("x_m"), whole.column("x_m"));
+        // Row streaming stops where asked.
+        let mut count = 0;
+        for_each_row(&dir, Some(5), |r| {
+            assert_eq!(r.len(), 2);
+            count += 1;
+        })
+        .unwrap();
+        assert_eq!(count, 5);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn resume_keeps_the_checkpointed_rows_and_gives_the_same_parts() {
+        let n = part_rows(2);
+        let total = 3 * n + 5;
+        let whole = series(0..total);
+        let row = |i: usize| {
+            [
+                whole.column("time_s").unwrap()[i],
+                whole.column("x_m").unwrap()[i],
+            ]
+        };
+        // Uninterrupted.
+        let straight = temp("straight");
+        let mut w = SeriesWriter::create(&straight, &whole, &[]).unwrap();
+        for i in 0..total {
+            w.push(&row(i)).unwrap();
+        }
+        w.sync().unwrap();
+        // Checkpointed at n + 3 rows, then written on to 2n + 9 and killed.
+        let killed = temp("killed");
+        let mut w = SeriesWriter::create(&killed, &whole, &[]).unwrap();
+        let checkpoint = n + 3;
+        for i in 0..2 * n + 9 {
+            w.push(&row(i)).unwrap();
+            if i + 1 == checkpoint {
+                w.sync().unwrap();
+            }
+        }
+        drop(w);
+        let mut w = SeriesWriter::resume(&killed, &whole, &[], checkpoint as u64).unwrap();
+        assert_eq!(w.rows(), checkpoint as u64);
+        for i in checkpoint..total {
+            w.push(&row(i)).unwrap();
+        }
+        w.sync().unwrap();
+        let (a, b) = (part_files(&straight).unwrap(), part_files(&killed).unwrap());
+        assert_eq!(a.len(), b.len());
+        for (x, y) in a.iter().zip(&b) {
+            assert_eq!(std::fs::read(x).unwrap(), std::fs::read(y).unwrap());
+        }
+        // More rows than on disk: refused with the missing part named.
+        let e = SeriesWriter::resume(&killed, &whole, &[], 10 * n as u64).unwrap_err();
+        assert!(e.to_string().contains("missing"), "{e}");
+        std::fs::remove_dir_all(&straight).ok();
+        std::fs::remove_dir_all(&killed).ok();
+    }
+}
