@@ -1,5 +1,5 @@
-//! Nothing lost (issue 17): the files that let `rolldyn run --resume DIR`
-//! continue an interrupted run bit-identically.
+//! Nothing lost: the files that let `rolldyn run --resume DIR` continue
+//! an interrupted run bit-identically.
 //!
 //! * `DIR/run.json` ([`RunRecord`]): how the run was asked for — the case
 //!   text as read (not its path: the file may change), the command-line
@@ -9,11 +9,12 @@
 //!   the number of rows of `timeseries.parquet` that belong to it and the
 //!   wall time so far, tied to `run.json` by a hash.
 //!
-//! A checkpoint writes `timeseries.parquet` (every row so far),
+//! A checkpoint writes the rows of `timeseries.parquet` not yet on disk
+//! (the dataset's last, growing part: [`rolldyn_io::SeriesWriter::sync`]),
 //! `checkpoint.bin` and `summary.json` (status `partial`), each
-//! atomically and in that order: after a kill at any moment the Parquet
-//! file holds at least the checkpoint's rows, and a resume reads back
-//! exactly those.
+//! atomically and in that order: after a kill at any moment the dataset
+//! holds at least the checkpoint's rows, and a resume keeps exactly those
+//! and replays them into the summary's statistics.
 
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::{Checkpoint, Solver, StateReader, StateWriter};
