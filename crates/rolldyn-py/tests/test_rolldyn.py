@@ -257,7 +257,7 @@ def test_sweep_rows_equal_the_clis_run_sweep(tmp_path):
         cli_row.pop("wall_time_s")
         assert {k: v for k, v in row.items() if k not in GRID} == cli_row
     assert (tmp_path / "py" / "sweep.json").is_file()
-    assert (tmp_path / "py" / "point-0003" / "timeseries.parquet").is_file()
+    assert (tmp_path / "py" / "point-0003" / "timeseries.parquet").is_dir()
     assert result.column("mean_cage_speed_rpm").shape == (4,)
 
 
