@@ -36,7 +36,7 @@ for i in $(seq 1 "$runs"); do
     "$bin" spectrum "$dir" --list >/dev/null 2>&1 \
       || { echo "run $i: time series after the kill not readable"; exit 1; }
   fi
-  if [ -f "$dir/checkpoint.bin" ]; then
+  if [ -f "$dir/checkpoint.bin" ] && ! grep -q '"completed"' "$dir/summary.json" 2>/dev/null; then
     "$bin" run --resume "$dir" >/dev/null
   elif [ ! -f "$dir/summary.json" ] || ! grep -q '"completed"' "$dir/summary.json"; then
     # Killed before its first checkpoint: nothing to resume; start again.

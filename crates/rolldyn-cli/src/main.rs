@@ -104,6 +104,10 @@ enum Command {
         /// DIR/run.json (give no case, overrides or --output).
         #[arg(long, value_name = "DIR")]
         resume: Option<String>,
+        /// With --resume: extend the run (finished or not) to this
+        /// simulated time, e.g. "2 s" (its new solver.duration).
+        #[arg(long, value_name = "TIME", allow_hyphen_values = true)]
+        until: Option<String>,
         /// Wall time between checkpoints (time series, state), e.g.
         /// "10 s"; default 30 s. Never more often than keeps their cost
         /// under 5 % of the run.
@@ -263,11 +267,19 @@ fn run(cli: Cli) -> Result<(), Failure> {
             duration,
             force,
             resume,
+            until,
             checkpoint_interval,
             report: with_report,
             verify,
             sweep,
         } => {
+            if let (Some(t), None) = (&until, &resume) {
+                return Err(bad_arg(
+                    "--until",
+                    t,
+                    "extends a run: give it with --resume DIR",
+                ));
+            }
             let checkpoint_interval = match &checkpoint_interval {
                 None => run::DEFAULT_CHECKPOINT_INTERVAL,
                 Some(t) => {
@@ -305,6 +317,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 return run_sweep::command(case, &sweep, duration, &output, &options, with_report);
             }
             let resuming = resume.is_some();
+            let mut extends = None;
             let (record, output) = match resume {
                 Some(dir) => {
                     let given = case.case.is_some()
@@ -319,11 +332,21 @@ fn run(cli: Cli) -> Result<(), Failure> {
                             "takes the case, overrides, duration and output directory from DIR/run.json; give none of them",
                         ));
                     }
-                    (
-                        checkpoint::RunRecord::read(std::path::Path::new(&dir))
-                            .map_err(Failure::BadInput)?,
-                        dir,
-                    )
+                    let mut record = checkpoint::RunRecord::read(std::path::Path::new(&dir))
+                        .map_err(Failure::BadInput)?;
+                    if let Some(t) = &until {
+                        let v = Quantity::<Time>::parse(t)
+                            .map_err(|e| bad_arg("--until", t, e))?
+                            .si;
+                        if !(v.is_finite() && v > 0.0) {
+                            return Err(bad_arg("--until", t, "must be a positive time"));
+                        }
+                        // The record the checkpoint belongs to, then the
+                        // extended one (its duration overridden last).
+                        extends = Some(record.hash());
+                        record.overrides.set.push(format!("solver.duration={v} s"));
+                    }
+                    (record, dir)
                 }
                 None => {
                     if let Some(d) = duration {
@@ -345,6 +368,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 force: record.force,
                 checkpoint_interval,
                 resume: resuming,
+                extends,
                 verify,
                 ..Default::default()
             };

@@ -478,6 +478,10 @@ pub struct RunOptions {
     pub checkpoint_interval: f64,
     /// Continue from `DIR/checkpoint.bin` instead of starting.
     pub resume: bool,
+    /// With `resume`: the run is extended (`--until`); the checkpoint
+    /// belongs to the record of this hash (the record before the new
+    /// duration), and the extended record replaces `DIR/run.json`.
+    pub extends: Option<u64>,
     /// The flag that stops the run (a sweep shares one among its points);
     /// None: a Ctrl-C handler of its own.
     pub stop: Option<Arc<AtomicBool>>,
@@ -622,8 +626,35 @@ pub(crate) fn run_once(
         ("title", case.title.clone().unwrap_or_default()),
     ];
     let (next_sample, wall_before) = if options.resume {
-        let position =
-            checkpoint::restore(dir, record_hash, &mut solver, &mut model).map_err(bad)?;
+        let position = checkpoint::restore(
+            dir,
+            options.extends.unwrap_or(record_hash),
+            &mut solver,
+            &mut model,
+        )
+        .map_err(bad)?;
+        let reached = solver.t();
+        match options.extends {
+            Some(_) if reached >= duration => {
+                return Err(bad(format!(
+                    "--until {duration} s: the run in {} is already at t = {reached} s; extend it beyond that",
+                    dir.display()
+                )));
+            }
+            Some(_) => {
+                // From now on the checkpoints belong to the extended record.
+                let text = record.to_json().map_err(Failure::Internal)?;
+                write_atomic(&dir.join(RECORD_FILE), text.as_bytes())
+                    .map_err(|e| bad(e.to_string()))?;
+            }
+            None if reached >= duration => {
+                return Err(bad(format!(
+                    "--resume {}: the run is complete (t = {reached} s); `--until T` extends it",
+                    dir.display()
+                )));
+            }
+            None => {}
+        }
         let writer = SeriesWriter::resume(&series_dir, &channels.series, &metadata, position.rows)
             .map_err(|e| bad(format!("--resume: {e}")))?;
         // The summary's statistics from the rows the checkpoint keeps, in
@@ -749,9 +780,10 @@ pub(crate) fn run_once(
             solver.t()
         )));
     }
-    // An interrupted run keeps a checkpoint at its last step; a completed
-    // one needs none; a failed one keeps its last periodic checkpoint.
-    let position = matches!(report.end, RunEnd::Interrupted { .. }).then_some(Position {
+    // An interrupted or completed run keeps a checkpoint at its last step
+    // (to continue, or to extend with `--until`); a failed one keeps its
+    // last periodic checkpoint.
+    let position = (!matches!(report.end, RunEnd::Failed { .. })).then_some(Position {
         next_sample,
         rows: channels.rows(),
         wall_time: wall,
@@ -764,9 +796,6 @@ pub(crate) fn run_once(
         position,
         wall,
     )?;
-    if report.end == RunEnd::Completed {
-        remove_checkpoint(dir)?;
-    }
     if let Some(progress) = &options.progress {
         progress.store(
             (summary.simulated_time_s / duration).to_bits(),

@@ -706,3 +706,96 @@ fn findings_of_independent_fuzzing_stay_fixed() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The streaming writer's files, killed and then damaged as a disk or a
+/// user might: `spectrum`, `report` and `--resume` answer each with a
+/// located error (exit 2), never a panic or a silent gap.
+#[test]
+fn damaged_time_series_give_clear_errors() {
+    let dir = common::temp_dir("fuzz-damaged");
+    let killed = dir.join("killed");
+    let k = killed.to_string_lossy().into_owned();
+    // 200 kHz: a part file (1 448 rows of the default case) every 7 ms.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .args([
+            "run",
+            "-o",
+            &k,
+            "--duration",
+            "0.1 s",
+            "--checkpoint-interval",
+            "0 s",
+        ])
+        .args(["--set", "output.sample_rate=\"200 kHz\""])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let series = killed.join("timeseries.parquet");
+    let begun = Instant::now();
+    loop {
+        let parts = rolldyn_io::part_files(&series).map_or(0, |p| p.len());
+        if parts >= 3 && killed.join("checkpoint.bin").is_file() {
+            break;
+        }
+        assert!(child.try_wait().unwrap().is_none(), "the run ended first");
+        assert!(begun.elapsed() < Duration::from_secs(300));
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    child.kill().unwrap(); // SIGKILL
+    child.wait().unwrap();
+    // What the kill left reads.
+    assert!(!rolldyn_io::read_parquet(&series).unwrap().is_empty());
+    let part = |d: &Path, k: usize| {
+        d.join("timeseries.parquet")
+            .join(format!("part-{k:06}.parquet"))
+    };
+    let damages: [(&str, fn(&Path)); 5] = [
+        ("truncated", |p| {
+            let bytes = std::fs::read(p).unwrap();
+            std::fs::write(p, &bytes[..bytes.len() / 2]).unwrap();
+        }),
+        ("garbage", |p| std::fs::write(p, b"not parquet").unwrap()),
+        ("empty", |p| std::fs::write(p, b"").unwrap()),
+        ("missing", |p| std::fs::remove_file(p).unwrap()),
+        ("a directory", |p| {
+            std::fs::remove_file(p).unwrap();
+            std::fs::create_dir(p).unwrap();
+        }),
+    ];
+    for (what, damage) in damages {
+        for k in [0, 1] {
+            let copy = dir.join(format!("{}-{k}", what.replace(' ', "-")));
+            std::fs::remove_dir_all(&copy).ok();
+            std::fs::create_dir_all(copy.join("timeseries.parquet")).unwrap();
+            for name in ["run.json", "summary.json", "checkpoint.bin"] {
+                std::fs::copy(killed.join(name), copy.join(name)).unwrap();
+            }
+            for p in rolldyn_io::part_files(&series).unwrap() {
+                std::fs::copy(
+                    &p,
+                    copy.join("timeseries.parquet").join(p.file_name().unwrap()),
+                )
+                .unwrap();
+            }
+            damage(&part(&copy, k));
+            let c = copy.to_string_lossy().into_owned();
+            let mut commands = vec![vec!["spectrum", c.as_str()], vec!["report", &c]];
+            // Part 0 holds rows of every checkpoint; a later part may lie
+            // beyond the last one, which a resume rightly drops.
+            if k == 0 {
+                commands.push(vec!["run", "--resume", &c]);
+            }
+            for args in commands {
+                let o = common::rolldyn(&args, None);
+                let err = common::stderr(&o);
+                assert_eq!(o.status.code(), Some(2), "{what} part {k}, {args:?}: {err}");
+                assert!(
+                    err.starts_with("error: ") && err.contains("part-00000"),
+                    "{what} part {k}, {args:?}: {err}"
+                );
+            }
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

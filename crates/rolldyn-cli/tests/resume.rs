@@ -52,8 +52,8 @@ fn killed_run_is_readable_and_resumes_bit_identically() {
         let o = rolldyn(&args(w, integrator, duration), None);
         assert!(o.status.success(), "{}", stderr(&o));
         assert!(
-            !whole.join("checkpoint.bin").exists(),
-            "a completed run keeps no checkpoint"
+            whole.join("checkpoint.bin").exists(),
+            "a completed run keeps its last state (for --until)"
         );
 
         // Kill the same run once two checkpoints have been written.
@@ -116,7 +116,6 @@ fn killed_run_is_readable_and_resumes_bit_identically() {
             "{tag}: the resumed time series differs from the uninterrupted one"
         );
         assert_eq!(summary(&killed), summary(&whole), "{tag}");
-        assert!(!killed.join("checkpoint.bin").exists());
         std::fs::remove_dir_all(&whole).ok();
         std::fs::remove_dir_all(&killed).ok();
     }
@@ -130,20 +129,67 @@ fn resume_refuses_what_it_cannot_continue() {
     let o = rolldyn(&["run", "--resume", d], None);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("run.json"), "{}", stderr(&o));
-    // A completed run has no checkpoint.
+    // A completed run is complete: --until extends it, not --resume alone.
     let o = rolldyn(&["run", "-o", d, "--duration", "0.2 ms"], None);
     assert!(o.status.success(), "{}", stderr(&o));
     let o = rolldyn(&["run", "--resume", d], None);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("checkpoint.bin"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--until"), "{}", stderr(&o));
+    // --until must go beyond where the run is, and only with --resume.
+    let o = rolldyn(&["run", "--resume", d, "--until", "0.1 ms"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("already at"), "{}", stderr(&o));
+    let o = rolldyn(&["run", "--until", "1 ms"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--resume"), "{}", stderr(&o));
     // The case comes from the directory, not the command line.
     let o = rolldyn(&["run", "--resume", d, "--speed", "1000 rpm"], None);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--resume"), "{}", stderr(&o));
+    // No checkpoint at all (removed): refused, naming it.
+    std::fs::remove_file(dir.join("checkpoint.bin")).unwrap();
+    let o = rolldyn(&["run", "--resume", d], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("checkpoint.bin"), "{}", stderr(&o));
     // A damaged checkpoint is refused with the reason.
     std::fs::write(dir.join("checkpoint.bin"), b"not a checkpoint").unwrap();
     let o = rolldyn(&["run", "--resume", d], None);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("checkpoint"), "{}", stderr(&o));
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `--resume DIR --until T` extends a finished run: the time series goes
+/// on without a gap, the summary is over the new duration, and the cage
+/// speed is the one of a run asked for T from the start.
+#[test]
+fn until_extends_a_finished_run() {
+    let dir = temp_dir("resume-until");
+    let straight = temp_dir("resume-until-straight");
+    let (d, s) = (dir.to_str().unwrap(), straight.to_str().unwrap());
+    let o = rolldyn(&["run", "-o", d, "--duration", "2 ms"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = rolldyn(&["run", "--resume", d, "--until", "4 ms"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = rolldyn(&["run", "-o", s, "--duration", "4 ms"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (extended, whole) = (summary(&dir), summary(&straight));
+    assert_eq!(extended["status"], "completed");
+    assert_eq!(extended["requested_duration_s"], 0.004);
+    assert_eq!(extended["samples"], whole["samples"]);
+    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
+    let time = series.column("time_s").unwrap();
+    assert_eq!(time.len() as u64, extended["samples"].as_u64().unwrap());
+    assert!(time.windows(2).all(|w| w[1] > w[0]), "time runs on");
+    // The same motion, integrated with one more step boundary at 2 ms.
+    let cage = |v: &serde_json::Value| v["mean_cage_speed_rpm"].as_f64().unwrap();
+    assert!((cage(&extended) - cage(&whole)).abs() < 1e-4 * cage(&whole));
+    // The record now says 4 ms, and the run extends again from there.
+    let record = std::fs::read_to_string(dir.join("run.json")).unwrap();
+    assert!(record.contains("solver.duration=0.004 s"), "{record}");
+    let o = rolldyn(&["run", "--resume", d, "--until", "5 ms"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(summary(&dir)["requested_duration_s"], 0.005);
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::remove_dir_all(&straight).ok();
 }

@@ -294,6 +294,7 @@ fn empty_like(template: &TimeSeries, rows: usize) -> TimeSeries {
 
 /// The channels (names and units, no rows) of a series file or dataset.
 pub fn read_schema(path: &Path) -> Result<TimeSeries, InputError> {
+    files(path)?;
     let first = first_file(path)?;
     let builder = open(&first)?;
     schema_series(&first, builder.schema())
@@ -345,13 +346,27 @@ fn schema_series(path: &Path, schema: &arrow_schema::Schema) -> Result<TimeSerie
     Ok(series)
 }
 
-/// The files of a series: the file itself, or a dataset's parts.
+/// The files of a series: the file itself, or a dataset's parts, which
+/// must run from part 0 without a gap (a missing part would be a silent
+/// jump in time).
 fn files(path: &Path) -> Result<Vec<PathBuf>, InputError> {
-    if path.is_dir() {
-        part_files(path)
-    } else {
-        Ok(vec![path.to_path_buf()])
+    if !path.is_dir() {
+        return Ok(vec![path.to_path_buf()]);
     }
+    let parts = part_files(path)?;
+    for (k, part) in parts.iter().enumerate() {
+        let expected = path.join(part_name(k));
+        if *part != expected {
+            return Err(InputError::Decode {
+                path: path.display().to_string(),
+                message: format!(
+                    "{} is missing (the parts must run from part-000000 without a gap)",
+                    part_name(k)
+                ),
+            });
+        }
+    }
+    Ok(parts)
 }
 
 /// Rows of the series at `path` (a file or a dataset directory), from
@@ -533,6 +548,11 @@ mod tests {
         let x = read_columns(&dir, Some(&["x_m"])).unwrap();
         assert_eq!(x.names(), ["x_m"]);
         assert_eq!(x.column("x_m"), whole.column("x_m"));
+        // A missing part is a gap in time: refused, naming it.
+        std::fs::rename(&parts[1], dir.join("moved")).unwrap();
+        let e = read_parquet(&dir).unwrap_err().to_string();
+        assert!(e.contains("part-000001.parquet is missing"), "{e}");
+        std::fs::rename(dir.join("moved"), &parts[1]).unwrap();
         // Row streaming stops where asked.
         let mut count = 0;
         for_each_row(&dir, Some(5), |r| {
