@@ -750,7 +750,8 @@ fn damaged_time_series_give_clear_errors() {
         d.join("timeseries.parquet")
             .join(format!("part-{k:06}.parquet"))
     };
-    let damages: [(&str, fn(&Path)); 5] = [
+    type Damage = (&'static str, fn(&Path));
+    let damages: [Damage; 5] = [
         ("truncated", |p| {
             let bytes = std::fs::read(p).unwrap();
             std::fs::write(p, &bytes[..bytes.len() / 2]).unwrap();
