@@ -15,6 +15,7 @@ mod bearing;
 mod dynamics;
 mod life;
 mod lubricant;
+mod output;
 mod surface;
 mod thermal;
 mod traction;
@@ -27,6 +28,7 @@ pub use dynamics::{
 pub use life::{Life, MAX_VISCOSITY_RATIO};
 pub use lubricant::Lubricant;
 use lubricant::lubricant;
+pub use output::{ChannelGroup, OutputSelection};
 pub use thermal::{DEFAULT_AIR_CONVECTION, DEFAULT_OIL, DEFAULT_OIL_VISCOSITY, Power, Thermal};
 use traction::traction;
 
@@ -126,6 +128,8 @@ pub struct Case {
     pub sample_rate: Option<f64>,
     /// Per-ball power channels.
     pub power_per_ball: bool,
+    /// What the run records (`output.channels`, `balls`, `precision`).
+    pub output: OutputSelection,
     /// Azimuth of ball 0 \[rad\].
     pub first_ball_azimuth: f64,
     /// Prescribed ring displacements (x, y, z \[m\], θ_y, θ_z \[rad\]);
@@ -640,6 +644,7 @@ impl Case {
         let mixed_lubrication =
             traction::mixed_lubrication(raw.model.mixed_lubrication.as_ref(), &traction, &surface)?;
         let materials_ball_name = materials.ball.name.clone();
+        let output = output::selection(&raw.output, bearing.geometry.ball_count)?;
         Ok(Self {
             title: raw.title.clone(),
             bearing,
@@ -675,6 +680,7 @@ impl Case {
             max_step,
             sample_rate,
             power_per_ball: raw.output.power_per_ball.unwrap_or(false),
+            output,
             first_ball_azimuth: op.first_ball_azimuth.as_ref().map_or(0.0, |a| a.si),
             prescribed_displacement: prescribed(op)?,
             output_directory: raw.output.directory.clone(),

@@ -716,4 +716,21 @@ pub struct RawOutput {
     /// Record each ball's dissipated power at its inner and outer contact
     /// (`ball{j}_power_inner_w`, `…_outer_w`; default false).
     pub power_per_ball: Option<bool>,
+    /// Channel groups to record: "rings", "cage", "balls", "contacts",
+    /// "energy", "power", "thermal" (default all).
+    pub channels: Option<Vec<String>>,
+    /// Balls whose per-ball channels are recorded (default all).
+    pub balls: Option<Vec<i64>>,
+    /// Storage precision of the samples (default float64).
+    pub precision: Option<RawPrecision>,
+}
+
+/// Storage precision of the recorded samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum RawPrecision {
+    /// 64-bit floats (16 significant digits).
+    Float64,
+    /// 32-bit floats (7 significant digits): half the size.
+    Float32,
 }

@@ -16,6 +16,7 @@
 //! holds at least the checkpoint's rows, and a resume keeps exactly those
 //! and replays them into the summary's statistics.
 
+use crate::run_stats::RunStatistics;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::{Checkpoint, Solver, StateReader, StateWriter};
 use serde::{Deserialize, Serialize};
@@ -25,8 +26,9 @@ use std::path::Path;
 pub const RECORD_FILE: &str = "run.json";
 /// The checkpoint's file name.
 pub const CHECKPOINT_FILE: &str = "checkpoint.bin";
-/// Version of `run.json` and `checkpoint.bin`.
-const FORMAT: u64 = 1;
+/// Version of `run.json` and `checkpoint.bin` (2: with the summary's
+/// statistics).
+const FORMAT: u64 = 2;
 /// First part of a checkpoint.
 const TAG: &str = "rolldyn-run-checkpoint";
 
@@ -126,6 +128,7 @@ pub fn encode(
     position: Position,
     solver: &Solver,
     model: &BearingModel,
+    stats: &RunStatistics,
 ) -> Vec<u8> {
     let mut w = StateWriter::new();
     w.tag(TAG);
@@ -136,6 +139,7 @@ pub fn encode(
     w.f64(position.wall_time);
     solver.save(&mut w);
     model.save(&mut w);
+    stats.save(&mut w);
     w.into_bytes()
 }
 
@@ -146,6 +150,7 @@ pub fn restore(
     record_hash: u64,
     solver: &mut Solver,
     model: &mut BearingModel,
+    stats: &mut RunStatistics,
 ) -> Result<Position, String> {
     let path = dir.join(CHECKPOINT_FILE);
     let bytes = std::fs::read(&path).map_err(|e| {
@@ -181,6 +186,7 @@ pub fn restore(
     };
     solver.restore(&mut r).map_err(bad)?;
     model.restore(&mut r).map_err(bad)?;
+    stats.restore(&mut r).map_err(bad)?;
     if !r.is_done() {
         return Err(format!(
             "--resume {}: {} has trailing bytes",

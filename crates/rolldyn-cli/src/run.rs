@@ -21,7 +21,7 @@ use rolldyn::integrate::{IntegrationStats, Integrator, RunEnd, Sampling, Solver,
 use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
 use rolldyn_case::raw::StartChoice;
-use rolldyn_io::{OutputError, SeriesWriter, TimeSeries, for_each_row, write_atomic};
+use rolldyn_io::{OutputError, SeriesWriter, TimeSeries, write_atomic};
 use serde::Serialize;
 use std::cell::RefCell;
 use std::io::IsTerminal;
@@ -153,6 +153,12 @@ pub const SERIES_DIR: &str = "timeseries.parquet";
 struct Channels {
     /// The channels' names and units (no rows).
     series: TimeSeries,
+    /// The recorded ones (`output.channels`, `output.balls`).
+    recorded: TimeSeries,
+    /// Their indices in a row (None: every channel is recorded).
+    selected: Option<Vec<usize>>,
+    /// Scratch row of the recorded channels.
+    projected: Vec<f64>,
     stats: RunStatistics,
     writer: Option<SeriesWriter>,
     /// The first failure to write a part (the run then stops).
@@ -176,6 +182,7 @@ impl Channels {
         [power_per_ball, mixed]: [bool; 2],
         states: usize,
         [duration, sample_rate]: [f64; 2],
+        selection: &rolldyn_case::case::OutputSelection,
     ) -> Self {
         let mut series = TimeSeries::default();
         for (name, unit) in [
@@ -235,8 +242,18 @@ impl Channels {
                 series.channel(format!("ball{j}_asperity_share_outer"), "1");
             }
         }
+        let selected: Vec<usize> = (0..series.width())
+            .filter(|&i| crate::channel_groups::recorded(selection, &series.names()[i]))
+            .collect();
+        let mut recorded = TimeSeries::default();
+        for &i in &selected {
+            recorded.channel(series.names()[i].clone(), series.units()[i].clone());
+        }
         Self {
             stats: RunStatistics::new(&series, duration, sample_rate),
+            projected: Vec::with_capacity(selected.len()),
+            selected: (selected.len() < series.width()).then_some(selected),
+            recorded,
             series,
             writer: None,
             write_error: None,
@@ -362,9 +379,17 @@ impl Channels {
     /// A recorded row: into the statistics and the time series.
     fn sink(&mut self, row: &[f64]) {
         self.stats.push(row);
+        let recorded = match &self.selected {
+            None => row,
+            Some(selected) => {
+                self.projected.clear();
+                self.projected.extend(selected.iter().map(|&i| row[i]));
+                &self.projected
+            }
+        };
         if let Some(writer) = &mut self.writer {
             if self.write_error.is_none() {
-                self.write_error = writer.push(row).err();
+                self.write_error = writer.push(recorded).err();
             }
         }
     }
@@ -616,6 +641,7 @@ pub(crate) fn run_once(
         [case.power_per_ball, params.mixed_lubrication.is_some()],
         model.layout().len(),
         [duration, case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE)],
+        &case.output,
     );
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
     let record_hash = record.hash();
@@ -631,6 +657,7 @@ pub(crate) fn run_once(
             options.extends.unwrap_or(record_hash),
             &mut solver,
             &mut model,
+            &mut channels.stats,
         )
         .map_err(bad)?;
         let reached = solver.t();
@@ -655,14 +682,17 @@ pub(crate) fn run_once(
             }
             None => {}
         }
-        let writer = SeriesWriter::resume(&series_dir, &channels.series, &metadata, position.rows)
-            .map_err(|e| bad(format!("--resume: {e}")))?;
-        // The summary's statistics from the rows the checkpoint keeps, in
-        // order: as if the run had never stopped.
-        let stats = &mut channels.stats;
-        for_each_row(&series_dir, Some(position.rows), |row| stats.push(row))
-            .map_err(|e| bad(format!("--resume: {e}")))?;
-        channels.writer = Some(writer);
+        // The summary's statistics came with the checkpoint.
+        channels.writer = Some(
+            SeriesWriter::resume(
+                &series_dir,
+                &channels.recorded,
+                &metadata,
+                position.rows,
+                case.output.float32,
+            )
+            .map_err(|e| bad(format!("--resume: {e}")))?,
+        );
         (position.next_sample, position.wall_time)
     } else {
         std::fs::create_dir_all(dir)
@@ -672,8 +702,13 @@ pub(crate) fn run_once(
         let text = record.to_json().map_err(Failure::Internal)?;
         write_atomic(&dir.join(RECORD_FILE), text.as_bytes()).map_err(|e| bad(e.to_string()))?;
         channels.writer = Some(
-            SeriesWriter::create(&series_dir, &channels.series, &metadata)
-                .map_err(|e| bad(e.to_string()))?,
+            SeriesWriter::create(
+                &series_dir,
+                &channels.recorded,
+                &metadata,
+                case.output.float32,
+            )
+            .map_err(|e| bad(e.to_string()))?,
         );
         (0, 0.0)
     };
@@ -868,7 +903,8 @@ impl Output<'_> {
             writer.sync().map_err(|e| bad(e.to_string()))?;
         }
         if let Some(position) = position {
-            let bytes = checkpoint::encode(self.record_hash, position, solver, model);
+            let bytes =
+                checkpoint::encode(self.record_hash, position, solver, model, &channels.stats);
             write_atomic(&self.dir.join(CHECKPOINT_FILE), &bytes)
                 .map_err(|e| bad(e.to_string()))?;
         }

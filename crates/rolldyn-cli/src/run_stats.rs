@@ -1,28 +1,36 @@
 //! The statistics of a run's summary, accumulated sample by sample while
 //! the run goes (the time series itself is on disk, not in memory).
 //!
-//! The requested duration is cut into [`BLOCKS`] blocks of equal length;
-//! each block keeps, per channel, the count, sum, extremes and the sum
-//! and count over loaded contacts (for the per-ball channels of one
-//! raceway: samples where that ball's load on it is positive), and its
-//! first row. Any window that starts on a block boundary is the merge of
-//! its blocks: the summary's averaging window, the second half of the
-//! run, is blocks `BLOCKS/2 …` for a completed run and, for an interrupted
-//! or partial one, the blocks from the one holding half its simulated time.
-//! Memory: `BLOCKS` × 5 numbers per channel, whatever the duration.
+//! Time is cut into blocks of equal length, [`BLOCKS`] of them over the
+//! requested duration; each block keeps, per channel, the count, sum,
+//! extremes and the sum and count over loaded contacts (for the per-ball
+//! channels of one raceway: samples where that ball's load on it is
+//! positive), and its first row. Any window that starts on a block
+//! boundary is the merge of its blocks: the summary's averaging window,
+//! the second half of the run, is blocks `BLOCKS/2 …` for a completed run
+//! and, for an interrupted or partial one, the blocks from the one holding
+//! half its simulated time. A run extended beyond its duration (`--until`)
+//! goes on with more blocks; beyond [`MAX_BLOCKS`] neighbours merge in
+//! pairs (the blocks double in length). Memory: at most `MAX_BLOCKS` × 5
+//! numbers per channel, whatever the duration.
 //!
 //! The vibration RMS and the cage-whirl metrics need the signal itself
 //! (a band filter, the orbit's centre): the few channels they use are kept
 //! for the last half of the duration, at most [`SIGNAL_SAMPLES`] samples.
 //!
-//! A resumed run rebuilds its statistics by replaying the recorded rows in
-//! order, so it ends with the same numbers as a run never interrupted.
+//! The statistics are part of a run's checkpoint ([`RunStatistics::save`]),
+//! so a resumed run ends with the same numbers as a run never interrupted,
+//! whatever channels it chose to record, without reading its series back.
 
+use rolldyn::integrate::{CheckpointError, StateReader, StateWriter};
 use rolldyn_io::TimeSeries;
 use std::collections::VecDeque;
 
 /// Blocks of the requested duration.
 pub const BLOCKS: usize = 64;
+
+/// Most blocks kept (an extended run merges pairs beyond it).
+pub const MAX_BLOCKS: usize = 2 * BLOCKS;
 
 /// Most samples of the vibration and whirl channels kept (1.6 s at the
 /// default case's 20 kHz: 16 periods of the RMS band's 10 Hz edge, over a
@@ -58,6 +66,24 @@ struct Block {
 }
 
 impl Block {
+    /// Adds `other`, the block that follows this one.
+    fn merge(&mut self, other: &Block) {
+        if other.count == 0 {
+            return;
+        }
+        if self.count == 0 {
+            self.first = other.first.clone();
+        }
+        self.count += other.count;
+        for i in 0..self.sum.len() {
+            self.sum[i] += other.sum[i];
+            self.max[i] = self.max[i].max(other.max[i]);
+            self.min[i] = self.min[i].min(other.min[i]);
+            self.loaded_sum[i] += other.loaded_sum[i];
+            self.loaded_count[i] += other.loaded_count[i];
+        }
+    }
+
     fn new(width: usize) -> Self {
         Self {
             count: 0,
@@ -76,7 +102,8 @@ impl Block {
 pub struct RunStatistics {
     names: Vec<String>,
     units: Vec<String>,
-    duration: f64,
+    /// Length of a block \[s\].
+    block_length: f64,
     blocks: Vec<Block>,
     /// For each channel, the load channel that says whether it is loaded.
     load_of: Vec<Option<usize>>,
@@ -123,7 +150,7 @@ impl RunStatistics {
             blocks: vec![Block::new(names.len()); BLOCKS],
             units: template.units().to_vec(),
             names,
-            duration,
+            block_length: duration / BLOCKS as f64,
             load_of,
             first: Vec::new(),
             last: Vec::new(),
@@ -136,9 +163,9 @@ impl RunStatistics {
 
     /// The block of time `t`.
     fn block_of(&self, t: f64) -> usize {
-        let k = (BLOCKS as f64 * t / self.duration).floor();
+        let k = (t / self.block_length).floor();
         if k.is_finite() && k > 0.0 {
-            (k as usize).min(BLOCKS - 1)
+            k as usize
         } else {
             0
         }
@@ -147,7 +174,27 @@ impl RunStatistics {
     /// Adds one sample (the recorder's row; its first value is the time).
     pub fn push(&mut self, row: &[f64]) {
         let t = row.first().copied().unwrap_or(0.0);
-        let b = self.block_of(t);
+        let mut b = self.block_of(t);
+        while b >= MAX_BLOCKS {
+            // Pairs merge: blocks twice as long, half as many.
+            let merged: Vec<Block> = self
+                .blocks
+                .chunks(2)
+                .map(|pair| {
+                    let mut block = pair[0].clone();
+                    if let Some(next) = pair.get(1) {
+                        block.merge(next);
+                    }
+                    block
+                })
+                .collect();
+            self.blocks = merged;
+            self.block_length *= 2.0;
+            b = self.block_of(t);
+        }
+        if self.blocks.len() <= b {
+            self.blocks.resize(b + 1, Block::new(self.names.len()));
+        }
         let block = &mut self.blocks[b];
         if block.count == 0 {
             block.first = row.to_vec();
@@ -178,6 +225,101 @@ impl RunStatistics {
             self.signal.pop_front();
         }
         self.signal.push_back(signal);
+    }
+
+    /// Writes the statistics into a checkpoint.
+    pub fn save(&self, w: &mut StateWriter) {
+        w.tag("run-statistics");
+        w.u64(self.names.len() as u64);
+        w.u64(self.samples);
+        let optional = |w: &mut StateWriter, row: &[f64]| {
+            w.u64(u64::from(!row.is_empty()));
+            if !row.is_empty() {
+                w.f64s(row);
+            }
+        };
+        optional(w, &self.first);
+        optional(w, &self.last);
+        w.f64(self.block_length);
+        w.u64(self.blocks.len() as u64);
+        for block in &self.blocks {
+            w.u64(block.count);
+            optional(w, &block.first);
+            for values in [&block.sum, &block.max, &block.min, &block.loaded_sum] {
+                w.f64s(values);
+            }
+            for &n in &block.loaded_count {
+                w.u64(n);
+            }
+        }
+        w.u64(self.signal.len() as u64);
+        for row in &self.signal {
+            w.f64s(row);
+        }
+    }
+
+    /// Restores the statistics of a checkpoint (of a run with the same
+    /// channels).
+    pub fn restore(&mut self, r: &mut StateReader) -> Result<(), CheckpointError> {
+        r.tag("run-statistics")?;
+        let width = self.names.len();
+        let stored = r.u64()?;
+        if stored != width as u64 {
+            return Err(CheckpointError::Mismatch(format!(
+                "statistics of {stored} channels, this run {width}"
+            )));
+        }
+        self.samples = r.u64()?;
+        let optional = |r: &mut StateReader, what: &str| -> Result<Vec<f64>, CheckpointError> {
+            if r.u64()? == 0 {
+                return Ok(Vec::new());
+            }
+            let mut row = vec![0.0; width];
+            r.f64s_into(what, &mut row)?;
+            Ok(row)
+        };
+        self.first = optional(r, "first sample")?;
+        self.last = optional(r, "last sample")?;
+        // The checkpoint's blocks (a run extended with --until goes on
+        // with them).
+        self.block_length = r.f64()?;
+        let blocks = r.u64()? as usize;
+        if !(self.block_length > 0.0 && (1..=MAX_BLOCKS).contains(&blocks)) {
+            return Err(CheckpointError::Mismatch(format!(
+                "{blocks} statistics blocks of {} s",
+                self.block_length
+            )));
+        }
+        self.blocks = vec![Block::new(width); blocks];
+        for block in &mut self.blocks {
+            block.count = r.u64()?;
+            block.first = optional(r, "block's first sample")?;
+            for (what, values) in [
+                ("sums", &mut block.sum),
+                ("maxima", &mut block.max),
+                ("minima", &mut block.min),
+                ("loaded sums", &mut block.loaded_sum),
+            ] {
+                r.f64s_into(what, values)?;
+            }
+            for n in &mut block.loaded_count {
+                *n = r.u64()?;
+            }
+        }
+        let kept = r.u64()? as usize;
+        if kept > self.signal_capacity {
+            return Err(CheckpointError::Mismatch(format!(
+                "{kept} signal samples, this run keeps {}",
+                self.signal_capacity
+            )));
+        }
+        self.signal.clear();
+        for _ in 0..kept {
+            let mut row = [0.0; SIGNAL_CHANNELS.len()];
+            r.f64s_into("signal sample", &mut row)?;
+            self.signal.push_back(row);
+        }
+        Ok(())
     }
 
     /// Samples pushed.
@@ -214,23 +356,10 @@ impl RunStatistics {
     /// holding half the last sample's time).
     pub fn window(&self) -> Window<'_> {
         let t_end = self.last.first().copied().unwrap_or(0.0);
-        let from = self.block_of(0.5 * t_end);
+        let from = self.block_of(0.5 * t_end).min(self.blocks.len());
         let mut merged = Block::new(self.names.len());
         for block in &self.blocks[from..] {
-            if block.count == 0 {
-                continue;
-            }
-            if merged.count == 0 {
-                merged.first = block.first.clone();
-            }
-            merged.count += block.count;
-            for i in 0..self.names.len() {
-                merged.sum[i] += block.sum[i];
-                merged.max[i] = merged.max[i].max(block.max[i]);
-                merged.min[i] = merged.min[i].min(block.min[i]);
-                merged.loaded_sum[i] += block.loaded_sum[i];
-                merged.loaded_count[i] += block.loaded_count[i];
-            }
+            merged.merge(block);
         }
         Window {
             stats: self,
@@ -416,6 +545,65 @@ mod tests {
         );
         // No contact is loaded: loaded means are 0, not NaN.
         assert_eq!(w.loaded_mean("slide_to_roll_inner"), 0.0);
+    }
+
+    /// A checkpoint's statistics restore to the same numbers.
+    #[test]
+    fn statistics_survive_a_checkpoint() {
+        let mut stats = RunStatistics::new(&template(), 0.064, 1000.0);
+        for k in 0..40 {
+            let t = k as f64 * 1e-3;
+            stats.push(&[t, k as f64, (t * 300.0).sin(), 0.1, 0.0, -0.2]);
+        }
+        let mut w = StateWriter::new();
+        stats.save(&mut w);
+        let bytes = w.into_bytes();
+        let mut back = RunStatistics::new(&template(), 0.064, 1000.0);
+        let mut r = StateReader::new(&bytes);
+        back.restore(&mut r).unwrap();
+        assert!(r.is_done());
+        for s in [&mut stats, &mut back] {
+            for k in 40..65 {
+                let t = k as f64 * 1e-3;
+                s.push(&[t, k as f64, (t * 300.0).sin(), 0.1, 0.0, -0.2]);
+            }
+        }
+        let (a, b) = (stats.window(), back.window());
+        assert_eq!(a.mean("cage_speed_rpm"), b.mean("cage_speed_rpm"));
+        assert_eq!(
+            a.loaded_mean("slide_to_roll_inner"),
+            b.loaded_mean("slide_to_roll_inner")
+        );
+        assert_eq!(a.signal(), b.signal());
+        assert_eq!(stats.samples(), back.samples());
+        // Another run's statistics are refused.
+        let mut other = TimeSeries::default();
+        other.channel("time_s", "s");
+        let mut r = StateReader::new(&bytes);
+        assert!(
+            RunStatistics::new(&other, 1.0, 1.0)
+                .restore(&mut r)
+                .is_err()
+        );
+    }
+
+    /// A run extended far beyond its duration keeps at most MAX_BLOCKS
+    /// blocks, and its window is still the second half of the run.
+    #[test]
+    fn an_extended_run_merges_blocks_and_keeps_its_window() {
+        let mut stats = RunStatistics::new(&template(), 0.064, 1000.0);
+        for k in 0..=1000 {
+            stats.push(&[k as f64 / 1000.0, k as f64, 0.0, 0.0, 0.0, 0.0]);
+        }
+        assert!(stats.blocks.len() <= MAX_BLOCKS);
+        let w = stats.window();
+        let [from, to] = w.span();
+        assert_eq!(to, 1.0);
+        // The window starts at the block boundary at or before 0.5 s.
+        assert!(from <= 0.5 && from > 0.5 - stats.block_length, "{from}");
+        let first = (from * 1000.0).round() as i32;
+        let mean = (first..=1000).sum::<i32>() as f64 / (1001 - first) as f64;
+        assert!((w.mean("cage_speed_rpm") - mean).abs() < 1e-9);
     }
 
     /// The kept signal is bounded.

@@ -17,11 +17,12 @@
 //! first `rows` rows (the ones a checkpoint vouches for) and drops the rest.
 
 use crate::{InputError, OutputError, TimeSeries, write_atomic};
-use arrow_array::{Float64Array, RecordBatch};
+use arrow_array::{Array, ArrayRef, Float32Array, Float64Array, RecordBatch};
+use arrow_schema::DataType;
 use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
 use parquet::arrow::{ArrowSchemaConverter, ProjectionMask, add_encoded_arrow_schema_to_metadata};
 use parquet::basic::{Compression, ZstdLevel};
-use parquet::data_type::DoubleType;
+use parquet::data_type::{DoubleType, FloatType};
 use parquet::file::metadata::KeyValue;
 use parquet::file::properties::WriterProperties;
 use parquet::file::writer::SerializedFileWriter;
@@ -71,12 +72,17 @@ pub(crate) fn encode(
     series: &TimeSeries,
     metadata: &[(String, String)],
     path: &Path,
+    float32: bool,
 ) -> Result<Vec<u8>, OutputError> {
     let encode = |message: String| OutputError::Encode {
         path: path.display().to_string(),
         message,
     };
-    let schema = series.schema();
+    let schema = series.schema_of(if float32 {
+        DataType::Float32
+    } else {
+        DataType::Float64
+    });
     let kv: Vec<KeyValue> = metadata
         .iter()
         .map(|(k, v)| KeyValue::new(k.clone(), v.clone()))
@@ -105,10 +111,18 @@ pub(crate) fn encode(
             .next_column()
             .map_err(|e| encode(e.to_string()))?
             .ok_or_else(|| encode("fewer columns in the schema than in the series".into()))?;
-        column
-            .typed::<DoubleType>()
-            .write_batch(values, None, None)
-            .map_err(|e| encode(e.to_string()))?;
+        if float32 {
+            let narrow: Vec<f32> = values.iter().map(|&v| v as f32).collect();
+            column
+                .typed::<FloatType>()
+                .write_batch(&narrow, None, None)
+                .map_err(|e| encode(e.to_string()))?;
+        } else {
+            column
+                .typed::<DoubleType>()
+                .write_batch(values, None, None)
+                .map_err(|e| encode(e.to_string()))?;
+        }
         column.close().map_err(|e| encode(e.to_string()))?;
     }
     group.close().map_err(|e| encode(e.to_string()))?;
@@ -128,6 +142,8 @@ pub struct SeriesWriter {
     metadata: Vec<(String, String)>,
     /// Whether the provisional part on disk is behind `pending`.
     dirty: bool,
+    /// Samples stored as 32-bit floats.
+    float32: bool,
 }
 
 impl SeriesWriter {
@@ -138,6 +154,7 @@ impl SeriesWriter {
         dir: &Path,
         template: &TimeSeries,
         metadata: &[(&str, String)],
+        float32: bool,
     ) -> Result<Self, OutputError> {
         let io = |source| OutputError::Io {
             path: dir.display().to_string(),
@@ -151,12 +168,12 @@ impl SeriesWriter {
         std::fs::create_dir_all(dir).map_err(io)?;
         // An empty first part: the dataset reads (its channels, no rows)
         // from the start, even if the run is killed before any sync.
-        let mut writer = Self::new(dir, template, metadata);
+        let mut writer = Self::new(dir, template, metadata, float32);
         writer.write_pending(false)?;
         Ok(writer)
     }
 
-    fn new(dir: &Path, template: &TimeSeries, metadata: &[(&str, String)]) -> Self {
+    fn new(dir: &Path, template: &TimeSeries, metadata: &[(&str, String)], float32: bool) -> Self {
         let part_rows = part_rows(template.width());
         Self {
             dir: dir.to_path_buf(),
@@ -168,6 +185,7 @@ impl SeriesWriter {
                 .map(|(k, v)| (k.to_string(), v.clone()))
                 .collect(),
             dirty: false,
+            float32,
         }
     }
 
@@ -179,8 +197,9 @@ impl SeriesWriter {
         template: &TimeSeries,
         metadata: &[(&str, String)],
         rows: u64,
+        float32: bool,
     ) -> Result<Self, InputError> {
-        let mut writer = Self::new(dir, template, metadata);
+        let mut writer = Self::new(dir, template, metadata, float32);
         let corrupt = |message: String| InputError::Decode {
             path: dir.display().to_string(),
             message,
@@ -269,7 +288,7 @@ impl SeriesWriter {
     /// (its rows are cleared, their room kept for the next part).
     fn write_pending(&mut self, full: bool) -> Result<(), OutputError> {
         let path = self.dir.join(part_name(self.complete));
-        let bytes = encode(&self.pending, &self.metadata, &path)?;
+        let bytes = encode(&self.pending, &self.metadata, &path, self.float32)?;
         write_atomic(&path, &bytes)?;
         if full {
             self.pending.truncate(0);
@@ -328,11 +347,11 @@ fn open(path: &Path) -> Result<ParquetRecordBatchReaderBuilder<std::fs::File>, I
 fn schema_series(path: &Path, schema: &arrow_schema::Schema) -> Result<TimeSeries, InputError> {
     let mut series = TimeSeries::default();
     for field in schema.fields() {
-        if field.data_type() != &arrow_schema::DataType::Float64 {
+        if !matches!(field.data_type(), DataType::Float64 | DataType::Float32) {
             return Err(InputError::Decode {
                 path: path.display().to_string(),
                 message: format!(
-                    "column {} is {}, not Float64",
+                    "column {} is {}, not Float64 or Float32",
                     field.name(),
                     field.data_type()
                 ),
@@ -424,11 +443,45 @@ pub fn for_each_batch(
             .build()
             .map_err(|e| decode(&file, e.to_string()))?;
         for batch in reader {
-            let batch = batch.map_err(|e| decode(&file, e.to_string()))?;
+            let batch = widened(batch.map_err(|e| decode(&file, e.to_string()))?)
+                .map_err(|e| decode(&file, e))?;
             f(&batch)?;
         }
     }
     Ok(schema)
+}
+
+/// A batch with its Float32 columns (`output.precision = "float32"`)
+/// widened to Float64, the type every reader sees.
+fn widened(batch: RecordBatch) -> Result<RecordBatch, String> {
+    if !batch
+        .columns()
+        .iter()
+        .any(|c| c.data_type() == &DataType::Float32)
+    {
+        return Ok(batch);
+    }
+    let mut fields = Vec::with_capacity(batch.num_columns());
+    let mut columns: Vec<ArrayRef> = Vec::with_capacity(batch.num_columns());
+    for (field, column) in batch.schema().fields().iter().zip(batch.columns()) {
+        match column.as_any().downcast_ref::<Float32Array>() {
+            Some(narrow) => {
+                let wide: Float64Array = narrow
+                    .values()
+                    .iter()
+                    .map(|&v| Some(f64::from(v)))
+                    .collect();
+                fields.push(field.as_ref().clone().with_data_type(DataType::Float64));
+                columns.push(Arc::new(wide));
+            }
+            None => {
+                fields.push(field.as_ref().clone());
+                columns.push(column.clone());
+            }
+        }
+    }
+    RecordBatch::try_new(Arc::new(arrow_schema::Schema::new(fields)), columns)
+        .map_err(|e| e.to_string())
 }
 
 /// The float columns of a batch.
@@ -524,7 +577,7 @@ mod tests {
         let template = series(0..0);
         let n = part_rows(2);
         let total = 2 * n + 17;
-        let mut w = SeriesWriter::create(&dir, &template, &[("case", "t".into())]).unwrap();
+        let mut w = SeriesWriter::create(&dir, &template, &[("case", "t".into())], false).unwrap();
         let whole = series(0..total);
         for i in 0..total {
             w.push(&[
@@ -565,6 +618,32 @@ mod tests {
     }
 
     #[test]
+    fn float32_parts_read_back_as_float64_rounded_to_float32() {
+        let dir = temp("f32");
+        let whole = series(0..100);
+        let mut w = SeriesWriter::create(&dir, &whole, &[], true).unwrap();
+        for i in 0..100 {
+            w.push(&[
+                whole.column("time_s").unwrap()[i],
+                whole.column("x_m").unwrap()[i],
+            ])
+            .unwrap();
+        }
+        w.sync().unwrap();
+        let back = read_parquet(&dir).unwrap();
+        assert_eq!(back.unit("x_m"), Some("m"));
+        for (a, b) in back
+            .column("x_m")
+            .unwrap()
+            .iter()
+            .zip(whole.column("x_m").unwrap())
+        {
+            assert_eq!(*a, f64::from(*b as f32));
+        }
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
     fn resume_keeps_the_checkpointed_rows_and_gives_the_same_parts() {
         let n = part_rows(2);
         let total = 3 * n + 5;
@@ -577,14 +656,14 @@ mod tests {
         };
         // Uninterrupted.
         let straight = temp("straight");
-        let mut w = SeriesWriter::create(&straight, &whole, &[]).unwrap();
+        let mut w = SeriesWriter::create(&straight, &whole, &[], false).unwrap();
         for i in 0..total {
             w.push(&row(i)).unwrap();
         }
         w.sync().unwrap();
         // Checkpointed at n + 3 rows, then written on to 2n + 9 and killed.
         let killed = temp("killed");
-        let mut w = SeriesWriter::create(&killed, &whole, &[]).unwrap();
+        let mut w = SeriesWriter::create(&killed, &whole, &[], false).unwrap();
         let checkpoint = n + 3;
         for i in 0..2 * n + 9 {
             w.push(&row(i)).unwrap();
@@ -593,7 +672,7 @@ mod tests {
             }
         }
         drop(w);
-        let mut w = SeriesWriter::resume(&killed, &whole, &[], checkpoint as u64).unwrap();
+        let mut w = SeriesWriter::resume(&killed, &whole, &[], checkpoint as u64, false).unwrap();
         assert_eq!(w.rows(), checkpoint as u64);
         for i in checkpoint..total {
             w.push(&row(i)).unwrap();
@@ -605,7 +684,7 @@ mod tests {
             assert_eq!(std::fs::read(x).unwrap(), std::fs::read(y).unwrap());
         }
         // More rows than on disk: refused with the missing part named.
-        let e = SeriesWriter::resume(&killed, &whole, &[], 10 * n as u64).unwrap_err();
+        let e = SeriesWriter::resume(&killed, &whole, &[], 10 * n as u64, false).unwrap_err();
         assert!(e.to_string().contains("missing"), "{e}");
         std::fs::remove_dir_all(&straight).ok();
         std::fs::remove_dir_all(&killed).ok();

@@ -166,12 +166,17 @@ impl TimeSeries {
     /// The Arrow schema: one non-null Float64 field per channel, its unit
     /// in the field metadata (`unit`).
     pub fn schema(&self) -> Arc<Schema> {
+        self.schema_of(DataType::Float64)
+    }
+
+    /// The Arrow schema with fields of `data_type` (Float64 or Float32).
+    pub fn schema_of(&self, data_type: DataType) -> Arc<Schema> {
         let fields: Vec<Field> = self
             .names
             .iter()
             .zip(&self.units)
             .map(|(n, u)| {
-                Field::new(n, DataType::Float64, false)
+                Field::new(n, data_type.clone(), false)
                     .with_metadata(HashMap::from([("unit".to_string(), u.clone())]))
             })
             .collect();

@@ -1,0 +1,142 @@
+//! What `rolldyn run` records (`[output]`): the channel groups, the balls
+//! whose channels are kept, and the storage precision, checked with the
+//! key of the offending entry.
+
+use super::Invalid;
+use crate::raw::{RawOutput, RawPrecision};
+
+/// A group of time-series channels (`output.channels`). The summary's
+/// statistics use every channel whatever is recorded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum ChannelGroup {
+    /// Ring speeds, displacements, velocities, accelerations, housing force.
+    Rings,
+    /// Cage angle, speed, orbit, pocket forces, pure-rolling cage ratio.
+    Cage,
+    /// Per ball: azimuth, orbital speed, attitude and yaw.
+    Balls,
+    /// Per ball and contact: loads, angles, slip, films, creepages, power.
+    Contacts,
+    /// Drive work, dissipated energy, mechanical energy, film work.
+    Energy,
+    /// Dissipated power by component and friction torque.
+    Power,
+    /// Temperatures and oil viscosity of a thermally coupled run.
+    Thermal,
+}
+
+impl ChannelGroup {
+    /// Every group, in the order of their names.
+    pub const ALL: [ChannelGroup; 7] = [
+        Self::Rings,
+        Self::Cage,
+        Self::Balls,
+        Self::Contacts,
+        Self::Energy,
+        Self::Power,
+        Self::Thermal,
+    ];
+
+    /// Name in case files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Rings => "rings",
+            Self::Cage => "cage",
+            Self::Balls => "balls",
+            Self::Contacts => "contacts",
+            Self::Energy => "energy",
+            Self::Power => "power",
+            Self::Thermal => "thermal",
+        }
+    }
+}
+
+/// What a run records.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OutputSelection {
+    /// Recorded groups (all by default); `time_s` always is.
+    pub groups: Vec<ChannelGroup>,
+    /// Balls whose per-ball channels are recorded (None: all).
+    pub balls: Option<Vec<usize>>,
+    /// Samples stored as 32-bit floats (7 significant digits).
+    pub float32: bool,
+}
+
+impl Default for OutputSelection {
+    fn default() -> Self {
+        Self {
+            groups: ChannelGroup::ALL.to_vec(),
+            balls: None,
+            float32: false,
+        }
+    }
+}
+
+impl OutputSelection {
+    /// Whether `group` is recorded.
+    pub fn records(&self, group: ChannelGroup) -> bool {
+        self.groups.contains(&group)
+    }
+
+    /// Whether ball `j`'s channels are recorded.
+    pub fn records_ball(&self, j: usize) -> bool {
+        self.balls.as_ref().is_none_or(|b| b.contains(&j))
+    }
+}
+
+pub(super) fn selection(raw: &RawOutput, ball_count: usize) -> Result<OutputSelection, Invalid> {
+    let mut out = OutputSelection::default();
+    if let Some(names) = &raw.channels {
+        if names.is_empty() {
+            return Err(Invalid::new(
+                "output.channels",
+                Some("[]".into()),
+                "give at least one group (time_s is always recorded)",
+            ));
+        }
+        let mut groups = Vec::with_capacity(names.len());
+        for (i, name) in names.iter().enumerate() {
+            let group = ChannelGroup::ALL
+                .into_iter()
+                .find(|g| g.name() == name)
+                .ok_or_else(|| {
+                    Invalid::new(
+                        format!("output.channels[{i}]"),
+                        Some(format!("\"{name}\"")),
+                        format!(
+                            "unknown group; expected {}",
+                            ChannelGroup::ALL.map(ChannelGroup::name).join(", ")
+                        ),
+                    )
+                })?;
+            groups.push(group);
+        }
+        groups.sort();
+        groups.dedup();
+        out.groups = groups;
+    }
+    if let Some(balls) = &raw.balls {
+        let mut indices = Vec::with_capacity(balls.len());
+        for (k, &b) in balls.iter().enumerate() {
+            let j = usize::try_from(b)
+                .ok()
+                .filter(|&j| j < ball_count)
+                .ok_or_else(|| {
+                    Invalid::new(
+                        format!("output.balls[{k}]"),
+                        Some(b.to_string()),
+                        format!(
+                            "ball indices run from 0 to {} (Z = {ball_count})",
+                            ball_count - 1
+                        ),
+                    )
+                })?;
+            indices.push(j);
+        }
+        indices.sort_unstable();
+        indices.dedup();
+        out.balls = Some(indices);
+    }
+    out.float32 = matches!(raw.precision, Some(RawPrecision::Float32));
+    Ok(out)
+}
