@@ -110,7 +110,7 @@ enum Command {
         until: Option<String>,
         /// Wall time between checkpoints (time series, state), e.g.
         /// "10 s"; default 30 s. Never more often than keeps their cost
-        /// under 5 % of the run.
+        /// under 2 % of the run.
         #[arg(long, value_name = "TIME", allow_hyphen_values = true)]
         checkpoint_interval: Option<String>,
         /// Also write DIR/report.html (as `rolldyn report DIR`).

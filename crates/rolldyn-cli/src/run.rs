@@ -491,8 +491,8 @@ fn check_limits(
 /// given \[s\].
 pub const DEFAULT_CHECKPOINT_INTERVAL: f64 = 30.0;
 /// A checkpoint waits at least this many times as long as the last one
-/// took, so that checkpoints cost at most ~5 % of a run.
-const CHECKPOINT_COST_FACTOR: f64 = 20.0;
+/// took, so that checkpoints cost at most ~2 % of a run.
+const CHECKPOINT_COST_FACTOR: f64 = 50.0;
 
 /// How `run_case` runs.
 #[derive(Debug, Clone, Default)]

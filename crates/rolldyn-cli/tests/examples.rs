@@ -1,4 +1,5 @@
-//! Every directory of `examples/` (one per seed paper and the CWRU 6205)
+//! Every directory of `examples/` (one per seed paper, the CWRU 6205 and
+//! the minute-long warm-up)
 //! holds a README, its case file and a matplotlib script; its case is
 //! valid and runs, shortened (issue 14, item 4). The full reproductions
 //! are the commands in each README.
@@ -15,7 +16,7 @@ fn examples() -> PathBuf {
 }
 
 /// (directory, the shortened command after the case path).
-const EXAMPLES: [(&str, &[&str]); 6] = [
+const EXAMPLES: [(&str, &[&str]); 7] = [
     ("seed000", &["run", "--duration", "2 ms"]),
     ("seed001", &["run", "--duration", "2 ms"]),
     ("seed002", &["run", "--duration", "2 ms"]),
@@ -23,6 +24,8 @@ const EXAMPLES: [(&str, &[&str]); 6] = [
     ("seed003", &["quasistatic", "--radial-load", "20 N"]),
     ("seed004", &["run", "--duration", "2 ms"]),
     ("cwru6205", &["run", "--duration", "2 ms"]),
+    // The minute-long warm-up, shortened (its run-up starts at 1000 rpm).
+    ("warmup60s", &["run", "--duration", "1 ms"]),
 ];
 
 #[test]

@@ -289,6 +289,49 @@ fn run_with_thermal_coupling() {
         "{}",
         stderr(&o)
     );
+    // From cold: every part at the ambient temperature, warming.
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "3 ms",
+            "-o",
+            &d,
+            "--set",
+            "thermal.run_coupling=true",
+            "--set",
+            "thermal.run_start=\"ambient\"",
+            "--set",
+            "thermal.ambient_temperature=\"25 degC\"",
+        ],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let t = &s["thermal_coupling"];
+    for node in ["ball", "inner_ring", "outer_ring", "housing", "oil"] {
+        let start = t["initial_temperatures_c"][node].as_f64().unwrap();
+        let end = t["final_temperatures_c"][node].as_f64().unwrap();
+        assert!((start - 25.0).abs() < 1e-9, "{node} starts at {start}");
+        assert!(end > start, "{node} warms: {start} → {end}");
+    }
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "1 ms",
+            "-o",
+            &p,
+            "--set",
+            "thermal.run_start=\"ambient\"",
+        ],
+        Some(&case),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("thermal.run_start"), "{}", stderr(&o));
     std::fs::remove_dir_all(&dir).ok();
     std::fs::remove_dir_all(&plain).ok();
 }

@@ -50,6 +50,9 @@ pub struct Thermal {
     pub expansion: Expansion,
     /// Coupled to `rolldyn run`: the update interval \[s\] (None: not coupled).
     pub run_coupling: Option<f64>,
+    /// A coupled run starts with every part at the ambient temperature
+    /// (`thermal.run_start = "ambient"`) instead of the steady state.
+    pub run_from_ambient: bool,
 }
 
 /// Default update interval of the run coupling \[s\].
@@ -89,6 +92,13 @@ fn positive_or<D: Dimension>(
 }
 
 pub(super) fn thermal(t: &RawThermal, ball_material: &str) -> Result<Thermal, Invalid> {
+    if t.run_start.is_some() && !t.run_coupling.unwrap_or(false) {
+        return Err(Invalid::new(
+            "thermal.run_start",
+            None,
+            "is used only with thermal.run_coupling = true",
+        ));
+    }
     if t.update_interval.is_some() && !t.run_coupling.unwrap_or(false) {
         return Err(Invalid::new(
             "thermal.update_interval",
@@ -173,6 +183,7 @@ pub(super) fn thermal(t: &RawThermal, ball_material: &str) -> Result<Thermal, In
         } else {
             None
         },
+        run_from_ambient: matches!(t.run_start, Some(crate::raw::RawThermalStart::Ambient)),
         expansion: Expansion {
             ring: checked(
                 "thermal.ring_expansion",

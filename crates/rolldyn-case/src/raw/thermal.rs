@@ -61,4 +61,18 @@ pub struct RawThermal {
     pub run_coupling: Option<bool>,
     /// Update interval of the run coupling (default 1 ms).
     pub update_interval: Option<Quantity<Time>>,
+    /// Where the coupled network starts: "steady_state" (default: the
+    /// quasi-static coupled steady state) or "ambient" (every part at the
+    /// ambient temperature: a warm-up from cold).
+    pub run_start: Option<RawThermalStart>,
+}
+
+/// Initial temperatures of a coupled run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RawThermalStart {
+    /// The quasi-static coupled steady state (`rolldyn thermal`).
+    SteadyState,
+    /// Every part at the ambient temperature, the oil supply at its own.
+    Ambient,
 }
