@@ -13,6 +13,7 @@ pub mod power;
 pub mod power_channels;
 pub mod quasistatic;
 pub mod quasistatic_films;
+pub mod recorder;
 pub mod report;
 pub mod run;
 pub mod run_solver;

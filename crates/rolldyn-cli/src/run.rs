@@ -10,18 +10,18 @@
 use crate::Failure;
 use crate::checkpoint::{self, CHECKPOINT_FILE, Position, RECORD_FILE, RunRecord};
 use crate::power_channels::PowerSummary;
+use crate::recorder::Channels;
 use crate::run_solver::SolverSettings;
 use crate::run_stats::RunStatistics;
 use crate::traction_equilibrium::{jones_harris_state, traction_state};
 use crate::vibration::VibrationSummary;
 use indicatif::{ProgressBar, ProgressStyle};
-use nalgebra::Vector3;
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::{IntegrationStats, Integrator, RunEnd, Sampling, Solver, run_from};
 use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
 use rolldyn_case::raw::StartChoice;
-use rolldyn_io::{OutputError, SeriesWriter, TimeSeries, write_atomic};
+use rolldyn_io::{SeriesWriter, write_atomic};
 use serde::Serialize;
 use std::cell::RefCell;
 use std::io::IsTerminal;
@@ -30,7 +30,6 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::Instant;
 
-const RPM: f64 = std::f64::consts::TAU / 60.0;
 /// Default recorder rate when the case gives none \[Hz\].
 pub const DEFAULT_SAMPLE_RATE: f64 = 10_000.0;
 /// `summary.json`.
@@ -114,291 +113,8 @@ pub struct CreepMeans {
     pub mean_stick_fraction_outer: f64,
 }
 
-/// Per-ball channels (name suffix, unit), in the order `record` writes them.
-const BALL_CHANNELS: [(&str, &str); 14] = [
-    ("azimuth_rad", "rad"),
-    ("orbital_speed_rpm", "rpm"),
-    ("load_inner_n", "N"),
-    ("load_outer_n", "N"),
-    ("contact_angle_inner_deg", "deg"),
-    ("contact_angle_outer_deg", "deg"),
-    ("slide_to_roll_inner", "1"),
-    ("slide_to_roll_outer", "1"),
-    ("spin_to_roll_inner", "1"),
-    ("spin_to_roll_outer", "1"),
-    ("film_inner_m", "m"),
-    ("film_outer_m", "m"),
-    ("attitude_deg", "deg"),
-    ("yaw_deg", "deg"),
-];
-
-/// Per-ball FASTSIM channels (name suffix, unit), after [`BALL_CHANNELS`]
-/// when the traction model is FASTSIM.
-const CREEP_CHANNELS: [(&str, &str); 8] = [
-    ("creepage_longitudinal_inner", "1"),
-    ("creepage_longitudinal_outer", "1"),
-    ("creepage_lateral_inner", "1"),
-    ("creepage_lateral_outer", "1"),
-    ("creepage_spin_inner_1_m", "1/m"),
-    ("creepage_spin_outer_1_m", "1/m"),
-    ("stick_fraction_inner", "1"),
-    ("stick_fraction_outer", "1"),
-];
-
 /// The time series' directory (a Parquet dataset) in a run directory.
 pub const SERIES_DIR: &str = "timeseries.parquet";
-
-/// Channel layout of the recorder, and where its rows go: the writer of
-/// the time series and the summary's statistics.
-struct Channels {
-    /// The channels' names and units (no rows).
-    series: TimeSeries,
-    /// The recorded ones (`output.channels`, `output.balls`).
-    recorded: TimeSeries,
-    /// Their indices in a row (None: every channel is recorded).
-    selected: Option<Vec<usize>>,
-    /// Scratch row of the recorded channels.
-    projected: Vec<f64>,
-    stats: RunStatistics,
-    writer: Option<SeriesWriter>,
-    /// The first failure to write a part (the run then stops).
-    write_error: Option<OutputError>,
-    balls: usize,
-    /// Whether the FASTSIM channels are recorded.
-    creep: bool,
-    /// Whether the per-ball power channels are recorded.
-    power_per_ball: bool,
-    /// Whether the per-ball asperity shares are recorded (mixed lubrication).
-    mixed: bool,
-    /// Scratch derivative vector (accelerations of the rings).
-    derivative: Vec<f64>,
-}
-
-impl Channels {
-    fn new(
-        balls: usize,
-        creep: bool,
-        thermal: bool,
-        [power_per_ball, mixed]: [bool; 2],
-        states: usize,
-        [duration, sample_rate]: [f64; 2],
-        selection: &rolldyn_case::case::OutputSelection,
-    ) -> Self {
-        let mut series = TimeSeries::default();
-        for (name, unit) in [
-            ("time_s", "s"),
-            ("inner_ring_speed_rpm", "rpm"),
-            ("cage_angle_rad", "rad"),
-            ("cage_speed_rpm", "rpm"),
-            ("cage_y_m", "m"),
-            ("cage_z_m", "m"),
-            ("inner_ring_x_m", "m"),
-            ("inner_ring_y_m", "m"),
-            ("inner_ring_z_m", "m"),
-            ("inner_ring_tilt_y_rad", "rad"),
-            ("inner_ring_tilt_z_rad", "rad"),
-            ("inner_ring_velocity_y_m_s", "m/s"),
-            ("inner_ring_velocity_z_m_s", "m/s"),
-            ("outer_ring_y_m", "m"),
-            ("outer_ring_z_m", "m"),
-            ("inner_ring_velocity_x_m_s", "m/s"),
-            ("inner_ring_acceleration_x_m_s2", "m/s^2"),
-            ("inner_ring_acceleration_y_m_s2", "m/s^2"),
-            ("inner_ring_acceleration_z_m_s2", "m/s^2"),
-            ("outer_ring_velocity_y_m_s", "m/s"),
-            ("outer_ring_velocity_z_m_s", "m/s"),
-            ("outer_ring_acceleration_y_m_s2", "m/s^2"),
-            ("outer_ring_acceleration_z_m_s2", "m/s^2"),
-            ("housing_force_y_n", "N"),
-            ("housing_force_z_n", "N"),
-            ("cage_velocity_y_m_s", "m/s"),
-            ("cage_velocity_z_m_s", "m/s"),
-            ("pocket_force_sum_n", "N"),
-            ("pocket_force_max_n", "N"),
-            ("drive_work_j", "J"),
-            ("dissipated_energy_j", "J"),
-            ("mechanical_energy_j", "J"),
-            ("film_work_j", "J"),
-            ("pure_rolling_cage_speed_ratio", "1"),
-        ] {
-            series.channel(name, unit);
-        }
-        crate::power_channels::add_channels(&mut series, thermal);
-        for j in 0..balls {
-            for (name, unit) in BALL_CHANNELS {
-                series.channel(format!("ball{j}_{name}"), unit);
-            }
-            if creep {
-                for (name, unit) in CREEP_CHANNELS {
-                    series.channel(format!("ball{j}_{name}"), unit);
-                }
-            }
-            if power_per_ball {
-                series.channel(format!("ball{j}_power_inner_w"), "W");
-                series.channel(format!("ball{j}_power_outer_w"), "W");
-            }
-            if mixed {
-                series.channel(format!("ball{j}_asperity_share_inner"), "1");
-                series.channel(format!("ball{j}_asperity_share_outer"), "1");
-            }
-        }
-        let selected: Vec<usize> = (0..series.width())
-            .filter(|&i| crate::channel_groups::recorded(selection, &series.names()[i]))
-            .collect();
-        let mut recorded = TimeSeries::default();
-        for &i in &selected {
-            recorded.channel(series.names()[i].clone(), series.units()[i].clone());
-        }
-        Self {
-            stats: RunStatistics::new(&series, duration, sample_rate),
-            projected: Vec::with_capacity(selected.len()),
-            selected: (selected.len() < series.width()).then_some(selected),
-            recorded,
-            series,
-            writer: None,
-            write_error: None,
-            balls,
-            creep,
-            power_per_ball,
-            mixed,
-            derivative: vec![0.0; states],
-        }
-    }
-
-    fn record(
-        &mut self,
-        model: &BearingModel,
-        t: f64,
-        y: &[f64],
-        row: &mut Vec<f64>,
-        contacts: &mut [ContactSample],
-    ) {
-        let l = model.layout();
-        let (c, r) = (l.cage(), l.ring());
-        let (drive, dissipated) = model.work(y);
-        // Accelerations and the dissipated power by component: one
-        // evaluation of the equations of motion per sample.
-        let power = model.rhs_with_power(t, y, &mut self.derivative);
-        let dy = &self.derivative;
-        let o = l.outer();
-        let housing = model
-            .parameters()
-            .outer_ring
-            .as_ref()
-            .map_or(Vector3::zeros(), |ring| {
-                -ring.housing.force(
-                    &Vector3::new(0.0, y[o], y[o + 1]),
-                    &Vector3::new(0.0, y[o + 2], y[o + 3]),
-                )
-            });
-        let (pocket_sum, pocket_max) = model.pocket_forces(y);
-        row.clear();
-        row.extend_from_slice(&[
-            t,
-            model.parameters().speed.speed_at(t) / RPM,
-            y[c + 2],
-            y[c + 5] / RPM,
-            y[c],
-            y[c + 1],
-            y[r],
-            y[r + 1],
-            y[r + 2],
-            y[r + 3],
-            y[r + 4],
-            y[r + 6],
-            y[r + 7],
-            y[o],
-            y[o + 1],
-            y[r + 5],
-            dy[r + 5],
-            dy[r + 6],
-            dy[r + 7],
-            y[o + 2],
-            y[o + 3],
-            dy[o + 2],
-            dy[o + 3],
-            housing.y,
-            housing.z,
-            y[c + 3],
-            y[c + 4],
-            pocket_sum,
-            pocket_max,
-            drive,
-            dissipated,
-            model.energy(t, y).total(),
-            model.film_work(y),
-        ]);
-        model.contact_samples(t, y, contacts);
-        row.push(model.pure_rolling_ratio(contacts, y));
-        crate::power_channels::push(row, &power, model);
-        for (j, c) in contacts.iter().enumerate().take(self.balls) {
-            let b = l.ball(j);
-            let (attitude, yaw) = model.ball_attitude(j, y);
-            row.extend_from_slice(&[
-                y[b + 2],
-                y[b + 5] / RPM,
-                c.inner.load,
-                c.outer.load,
-                c.inner.angle.to_degrees(),
-                c.outer.angle.to_degrees(),
-                c.inner.slide_to_roll,
-                c.outer.slide_to_roll,
-                c.inner.spin_to_roll,
-                c.outer.spin_to_roll,
-                c.inner.film,
-                c.outer.film,
-                attitude.to_degrees(),
-                yaw.to_degrees(),
-            ]);
-            if self.creep {
-                let (i, o) = (
-                    c.inner.creep.unwrap_or_default(),
-                    c.outer.creep.unwrap_or_default(),
-                );
-                row.extend_from_slice(&[
-                    i.longitudinal,
-                    o.longitudinal,
-                    i.lateral,
-                    o.lateral,
-                    i.spin,
-                    o.spin,
-                    i.stick_fraction,
-                    o.stick_fraction,
-                ]);
-            }
-            if self.power_per_ball {
-                row.extend_from_slice(&[c.inner.losses.total(), c.outer.losses.total()]);
-            }
-            if self.mixed {
-                row.extend_from_slice(&[c.inner.asperity_share, c.outer.asperity_share]);
-            }
-        }
-        self.sink(row);
-    }
-
-    /// A recorded row: into the statistics and the time series.
-    fn sink(&mut self, row: &[f64]) {
-        self.stats.push(row);
-        let recorded = match &self.selected {
-            None => row,
-            Some(selected) => {
-                self.projected.clear();
-                self.projected.extend(selected.iter().map(|&i| row[i]));
-                &self.projected
-            }
-        };
-        if let Some(writer) = &mut self.writer {
-            if self.write_error.is_none() {
-                self.write_error = writer.push(recorded).err();
-            }
-        }
-    }
-
-    /// Rows recorded.
-    fn rows(&self) -> u64 {
-        self.stats.samples()
-    }
-}
 
 /// Runs the case and writes the results into `dir`. Returns the summary;
 /// `Err` is bad input (no files written).

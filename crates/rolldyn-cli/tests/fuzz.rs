@@ -149,6 +149,14 @@ const STRINGS: &[&str] = &[
     "[1, 2]",
     "{}",
     "[[0, 1], [1, 2]]",
+    "[\"cage\"]",
+    "[\"rings\", \"contacts\"]",
+    "[\"sensor\"]",
+    "[0, 99]",
+    "[-1]",
+    "\"float32\"",
+    "\"float16\"",
+    "\"ambient\"",
 ];
 /// Factors applied to the number of a quantity ("6.35 mm" → "…e300 mm").
 const FACTORS: &[f64] = &[0.0, -1.0, 1e-300, 1e300, 1e6, 1e-6, 1e3, 1e-3, 2.0, 0.5];
@@ -239,6 +247,10 @@ fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
                 "operating.radial_load_angle",
                 "life.contamination_factor",
                 "life.viscosity_ratio",
+                "output.channels",
+                "output.balls",
+                "output.precision",
+                "thermal.run_start",
             ]);
             let value = if rng.below(2) == 0 {
                 *rng.pick(NUMBERS)
