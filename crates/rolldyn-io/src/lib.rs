@@ -15,10 +15,6 @@
 
 use arrow_array::{ArrayRef, Float64Array, RecordBatch};
 use arrow_schema::{DataType, Field, Schema};
-use parquet::arrow::ArrowWriter;
-use parquet::basic::{Compression, ZstdLevel};
-use parquet::file::metadata::KeyValue;
-use parquet::file::properties::WriterProperties;
 mod dataset;
 
 pub use dataset::{
@@ -234,41 +230,18 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
     Ok(())
 }
 
-/// Rows per Parquet row group: readers can stream a long run's file.
-pub const ROW_GROUP_ROWS: usize = 16_384;
-
-/// Writes `series` as one Parquet file to `path` atomically, with file
-/// metadata (one row group per [`ROW_GROUP_ROWS`] rows).
+/// Writes `series` as one Parquet file (one row group, as a part of a
+/// [`SeriesWriter`] dataset) to `path` atomically, with file metadata.
 pub fn write_parquet(
     path: &Path,
     series: &TimeSeries,
     metadata: &[(&str, String)],
 ) -> Result<(), OutputError> {
-    let encode = |message: String| OutputError::Encode {
-        path: path.display().to_string(),
-        message,
-    };
-    let batch = series
-        .clone()
-        .into_record_batch()
-        .map_err(|e| encode(e.to_string()))?;
-    let kv: Vec<KeyValue> = metadata
+    let metadata: Vec<(String, String)> = metadata
         .iter()
-        .map(|(k, v)| KeyValue::new(k.to_string(), v.clone()))
+        .map(|(k, v)| (k.to_string(), v.clone()))
         .collect();
-    let props = WriterProperties::builder()
-        .set_compression(Compression::ZSTD(ZstdLevel::default()))
-        .set_key_value_metadata(Some(kv))
-        .set_max_row_group_row_count(Some(ROW_GROUP_ROWS))
-        .build();
-    let mut bytes = Vec::new();
-    {
-        let mut writer = ArrowWriter::try_new(&mut bytes, batch.schema(), Some(props))
-            .map_err(|e| encode(e.to_string()))?;
-        writer.write(&batch).map_err(|e| encode(e.to_string()))?;
-        writer.close().map_err(|e| encode(e.to_string()))?;
-    }
-    write_atomic(path, &bytes)
+    write_atomic(path, &dataset::encode(series, &metadata, path, false)?)
 }
 
 #[cfg(test)]
