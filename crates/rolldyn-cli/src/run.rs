@@ -328,15 +328,22 @@ pub(crate) fn run_once(
         crate::power_channels::couple(case, &mut model, interval, &y0).map_err(bad)?;
     }
     let settings = SolverSettings::of(case, &params.cage, g.ball_count);
+    let mut channels = Channels::new(
+        g.ball_count,
+        matches!(params.traction, TractionModel::Fastsim(_)),
+        model.thermal().is_some(),
+        [case.power_per_ball, params.mixed_lubrication.is_some()],
+        model.layout().len(),
+        [duration, case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE)],
+        &case.output,
+    );
     if !options.force {
-        // Channel count: the fixed channels and per-ball ones (a bound).
-        let channels = 60 + g.ball_count * 26;
         check_limits(
             duration,
             settings.max_step,
             settings.step_key(),
             case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE),
-            channels,
+            channels.recorded.width(),
         )
         .map_err(bad)?;
         if let Some((q, p)) = pressure_estimate(case).filter(|(_, p)| *p > MAX_CONTACT_PRESSURE) {
@@ -350,15 +357,6 @@ pub(crate) fn run_once(
     let mut solver = settings
         .build(&model, &y0)
         .map_err(|e| bad(e.to_string()))?;
-    let mut channels = Channels::new(
-        g.ball_count,
-        matches!(params.traction, TractionModel::Fastsim(_)),
-        model.thermal().is_some(),
-        [case.power_per_ball, params.mixed_lubrication.is_some()],
-        model.layout().len(),
-        [duration, case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE)],
-        &case.output,
-    );
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
     let record_hash = record.hash();
     let series_dir = dir.join(SERIES_DIR);
