@@ -132,6 +132,10 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
 /// Most rows of a channel the report holds (see [`RunData::series`]).
 pub const PLOT_ROWS: usize = 65_536;
 
+/// The report's own channel: the energy balance's error W + F − D − ΔE
+/// row by row \[J\].
+const BALANCE_ERROR: &str = "energy_balance_error_j";
+
 /// Whether a channel is another ball's than ball 0 (window means only).
 fn other_ball(name: &str) -> bool {
     name.strip_prefix("ball")
@@ -165,7 +169,24 @@ pub fn read_for_plots(
     for &i in &plotted {
         series.channel(names[i].clone(), all.units()[i].clone());
     }
-    let time = names.iter().position(|n| n == "time_s");
+    let index = |name: &str| names.iter().position(|n| n == name);
+    // The energy balance's error is computed row by row, before any
+    // reduction (extremes of its terms at different instants would not
+    // difference to it).
+    let balance = match (
+        index("drive_work_j"),
+        index("dissipated_energy_j"),
+        index("mechanical_energy_j"),
+    ) {
+        (Some(w), Some(d), Some(e)) => {
+            series.channel(BALANCE_ERROR, "J");
+            Some((w, index("film_work_j"), d, e))
+        }
+        _ => None,
+    };
+    let width = series.width();
+    let mut first_energy = None;
+    let time = index("time_s");
     let orbit_columns = (
         names.iter().position(|n| n == "cage_y_m"),
         names.iter().position(|n| n == "cage_z_m"),
@@ -177,12 +198,13 @@ pub fn read_for_plots(
         1
     };
     // Per plotted channel: (min, its row, max, its row) over the bucket.
-    let mut extremes = vec![(f64::INFINITY, 0usize, f64::NEG_INFINITY, 0usize); plotted.len()];
+    let mut extremes = vec![(f64::INFINITY, 0usize, f64::NEG_INFINITY, 0usize); width];
     let mut in_bucket = 0usize;
     let mut sums = vec![(0.0f64, 0usize); names.len()];
     let mut orbit = VecDeque::new();
-    let mut row = vec![0.0; plotted.len()];
-    let mut second = vec![0.0; plotted.len()];
+    let mut row = vec![0.0; width];
+    let mut second = vec![0.0; width];
+    let mut values = Vec::with_capacity(width);
     let mut seen = 0usize;
     let mut flush = |extremes: &mut [(f64, usize, f64, usize)], series: &mut TimeSeries| {
         for (k, e) in extremes.iter().enumerate() {
@@ -212,13 +234,18 @@ pub fn read_for_plots(
                 }
                 orbit.push_back((columns[y][r], columns[z][r]));
             }
+            values.clear();
+            values.extend(plotted.iter().map(|&i| columns[i][r]));
+            if let Some((w, f, d, e)) = balance {
+                let e0 = *first_energy.get_or_insert(columns[e][r]);
+                let film = f.map_or(0.0, |f| columns[f][r]);
+                values.push(columns[w][r] + film - columns[d][r] - (columns[e][r] - e0));
+            }
             if bucket == 1 {
-                let values: Vec<f64> = plotted.iter().map(|&i| columns[i][r]).collect();
                 series.push(&values);
             } else {
-                for (e, &i) in extremes.iter_mut().zip(&plotted) {
+                for (e, &v) in extremes.iter_mut().zip(&values) {
                     // NaN never compares: a bucket of NaN stays a gap.
-                    let v = columns[i][r];
                     if v < e.0 {
                         (e.0, e.1) = (v, seen);
                     }
@@ -601,13 +628,7 @@ fn energy(data: &RunData) -> Option<Section> {
     let t: Vec<f64> = data.time().iter().map(|t| 1e3 * t).collect();
     let e0 = mechanical.first().copied().unwrap_or(0.0);
     let change: Vec<f64> = mechanical.iter().map(|e| e - e0).collect();
-    let error: Vec<f64> = drive
-        .iter()
-        .zip(film)
-        .zip(dissipated)
-        .zip(&change)
-        .map(|(((w, f), d), e)| w + f - d - e)
-        .collect();
+    let error = data.channel(BALANCE_ERROR)?;
     Some(
         Section::new("energy", "Energy balance")
             .paragraph("Work of the drive W plus the films' work F (film in the approach, else 0) = dissipated energy D + change of mechanical energy ΔE; the error W + F − D − ΔE measures the integration.")
@@ -632,7 +653,7 @@ fn energy(data: &RunData) -> Option<Section> {
                     .with(Series::line("dissipated D", &t, dissipated))
                     .with(Series::line("mechanical change ΔE", &t, &change)),
             )
-            .figure(Plot::new("Energy balance error W − D − ΔE", "time [ms]", "error [J]").with(Series::line("error", &t, &error))),
+            .figure(Plot::new("Energy balance error W − D − ΔE", "time [ms]", "error [J]").with(Series::line("error", &t, error))),
     )
 }
 

@@ -211,3 +211,57 @@ fn sections_are_added_as_data() {
     let (sections, plots) = check_page(&html);
     assert_eq!((sections, plots), (vec!["spectrum".to_string()], 1));
 }
+
+/// A record longer than the report holds is reduced to bucket extremes:
+/// a one-sample spike survives, the window means are exact, and the
+/// energy balance's error is computed row by row before the reduction.
+#[test]
+fn long_records_are_reduced_without_losing_spikes_or_the_balance() {
+    use rolldyn_report::run::{PLOT_ROWS, read_for_plots};
+    let dir = std::env::temp_dir().join(format!("rolldyn-report-long-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut s = TimeSeries::default();
+    for (name, unit) in [
+        ("time_s", "s"),
+        ("ball0_load_inner_n", "N"),
+        ("ball1_load_inner_n", "N"),
+        ("drive_work_j", "J"),
+        ("dissipated_energy_j", "J"),
+        ("mechanical_energy_j", "J"),
+    ] {
+        s.channel(name, unit);
+    }
+    let rows = 3 * PLOT_ROWS + 17;
+    for k in 0..rows {
+        let t = k as f64 * 1e-4;
+        let spike = if k == 77_777 { 500.0 } else { 0.0 };
+        // W − D − ΔE = 1e-9 k: a drift the extremes of W, D and E alone
+        // (each swinging by ±1 J) would bury.
+        let swing = (k as f64 * 0.37).sin();
+        s.push(&[t, 10.0 + spike, 20.0, 5.0 + swing, swing, -1e-9 * k as f64]);
+    }
+    let path = dir.join("timeseries.parquet");
+    write_parquet(&path, &s, &[]).unwrap();
+    let window = [0.5 * (rows - 1) as f64 * 1e-4, (rows - 1) as f64 * 1e-4];
+    let (plot, means, _) = read_for_plots(&path, window).unwrap();
+    assert!(plot.len() <= PLOT_ROWS, "{} rows", plot.len());
+    assert!(
+        plot.column("ball1_load_inner_n").is_none(),
+        "other balls: means only"
+    );
+    let load = plot.column("ball0_load_inner_n").unwrap();
+    assert_eq!(load.iter().copied().fold(0.0, f64::max), 510.0);
+    let error = plot.column("energy_balance_error_j").unwrap();
+    let last = error.iter().copied().fold(f64::MIN, f64::max);
+    assert!(
+        (last - 5.0 - 1e-9 * (rows - 1) as f64).abs() < 1e-9,
+        "{last}"
+    );
+    let from = (rows - 1).div_ceil(2);
+    let exact = (from..rows).count() as f64;
+    assert_eq!(means["ball1_load_inner_n"], 20.0);
+    assert!(
+        (means["time_s"] - (from..rows).map(|k| k as f64 * 1e-4).sum::<f64>() / exact).abs() < 1e-9
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
