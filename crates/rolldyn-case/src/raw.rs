@@ -723,6 +723,11 @@ pub struct RawOutput {
     pub balls: Option<Vec<i64>>,
     /// Storage precision of the samples (default float64).
     pub precision: Option<RawPrecision>,
+    /// Channel groups recorded at `slow_rate` into a second dataset
+    /// (`timeseries_slow.parquet`) instead of at the sample rate.
+    pub slow_channels: Option<Vec<String>>,
+    /// Sample rate of the slow channels.
+    pub slow_rate: Option<Quantity<Frequency>>,
 }
 
 /// Storage precision of the recorded samples.

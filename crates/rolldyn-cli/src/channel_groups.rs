@@ -48,12 +48,15 @@ pub fn group_of(name: &str) -> Option<(ChannelGroup, Option<usize>)> {
     Some((group, None))
 }
 
-/// Whether `selection` records channel `name`.
-pub fn recorded(selection: &OutputSelection, name: &str) -> bool {
+/// Whether `selection` records channel `name` at the sample rate
+/// (`slow`: false) or at the slow rate (`slow`: true); `time_s` is in both.
+pub fn recorded(selection: &OutputSelection, name: &str, slow: bool) -> bool {
     match group_of(name) {
         None => true,
         Some((group, ball)) => {
-            selection.records(group) && ball.is_none_or(|j| selection.records_ball(j))
+            selection.records(group)
+                && selection.is_slow(group) == slow
+                && ball.is_none_or(|j| selection.records_ball(j))
         }
     }
 }
@@ -92,12 +95,15 @@ mod tests {
             groups: vec![ChannelGroup::Cage, ChannelGroup::Contacts],
             balls: Some(vec![2]),
             float32: false,
+            slow: Some((vec![ChannelGroup::Cage], 100.0)),
         };
-        assert!(recorded(&only, "time_s"));
-        assert!(recorded(&only, "cage_speed_rpm"));
-        assert!(recorded(&only, "ball2_load_outer_n"));
-        assert!(!recorded(&only, "ball1_load_outer_n"));
-        assert!(!recorded(&only, "ball2_yaw_deg"));
-        assert!(!recorded(&only, "drive_work_j"));
+        assert!(recorded(&only, "time_s", false) && recorded(&only, "time_s", true));
+        assert!(recorded(&only, "cage_speed_rpm", true));
+        assert!(!recorded(&only, "cage_speed_rpm", false));
+        assert!(recorded(&only, "ball2_load_outer_n", false));
+        assert!(!recorded(&only, "ball2_load_outer_n", true));
+        assert!(!recorded(&only, "ball1_load_outer_n", false));
+        assert!(!recorded(&only, "ball2_yaw_deg", false));
+        assert!(!recorded(&only, "drive_work_j", false));
     }
 }

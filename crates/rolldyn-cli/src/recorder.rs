@@ -43,6 +43,38 @@ const CREEP_CHANNELS: [(&str, &str); 8] = [
     ("stick_fraction_outer", "1"),
 ];
 
+/// The channels recorded at the slow rate, into their own dataset.
+pub(crate) struct SlowChannels {
+    /// Their names and units (`time_s` first).
+    pub(crate) recorded: TimeSeries,
+    /// Their indices in a row.
+    selected: Vec<usize>,
+    /// Scratch row.
+    projected: Vec<f64>,
+    /// One sample in `every` is recorded (the first one included).
+    pub(crate) every: u64,
+    pub(crate) writer: Option<SeriesWriter>,
+}
+
+impl SlowChannels {
+    /// Rows of the slow dataset when the main one has `rows`.
+    pub(crate) fn rows_for(&self, rows: u64) -> u64 {
+        rows.div_ceil(self.every)
+    }
+}
+
+/// The channels of `series` that `keep` names, as a series and indices.
+fn subset(series: &TimeSeries, keep: impl Fn(&str) -> bool) -> (TimeSeries, Vec<usize>) {
+    let selected: Vec<usize> = (0..series.width())
+        .filter(|&i| keep(&series.names()[i]))
+        .collect();
+    let mut recorded = TimeSeries::default();
+    for &i in &selected {
+        recorded.channel(series.names()[i].clone(), series.units()[i].clone());
+    }
+    (recorded, selected)
+}
+
 /// Channel layout of the recorder, and where its rows go: the writer of
 /// the time series and the summary's statistics.
 pub(crate) struct Channels {
@@ -58,6 +90,8 @@ pub(crate) struct Channels {
     pub(crate) writer: Option<SeriesWriter>,
     /// The first failure to write a part (the run then stops).
     pub(crate) write_error: Option<OutputError>,
+    /// The channels recorded at the slow rate (`output.slow_channels`).
+    pub(crate) slow: Option<SlowChannels>,
     balls: usize,
     /// Whether the FASTSIM channels are recorded.
     creep: bool,
@@ -137,14 +171,24 @@ impl Channels {
                 series.channel(format!("ball{j}_asperity_share_outer"), "1");
             }
         }
-        let selected: Vec<usize> = (0..series.width())
-            .filter(|&i| crate::channel_groups::recorded(selection, &series.names()[i]))
-            .collect();
-        let mut recorded = TimeSeries::default();
-        for &i in &selected {
-            recorded.channel(series.names()[i].clone(), series.units()[i].clone());
-        }
+        let recorded_at = |slow: bool| {
+            subset(&series, |name| {
+                crate::channel_groups::recorded(selection, name, slow)
+            })
+        };
+        let (recorded, selected) = recorded_at(false);
+        let slow = selection.slow.as_ref().map(|(_, rate)| {
+            let (recorded, selected) = recorded_at(true);
+            SlowChannels {
+                projected: Vec::with_capacity(selected.len()),
+                recorded,
+                selected,
+                every: (sample_rate / rate).round().max(1.0) as u64,
+                writer: None,
+            }
+        });
         Self {
+            slow,
             stats: RunStatistics::new(&series, duration, sample_rate),
             projected: Vec::with_capacity(selected.len()),
             selected: (selected.len() < series.width()).then_some(selected),
@@ -285,6 +329,15 @@ impl Channels {
         if let Some(writer) = &mut self.writer {
             if self.write_error.is_none() {
                 self.write_error = writer.push(recorded).err();
+            }
+        }
+        if let Some(slow) = &mut self.slow {
+            if (self.stats.samples() - 1) % slow.every == 0 {
+                slow.projected.clear();
+                slow.projected.extend(slow.selected.iter().map(|&i| row[i]));
+                if let (Some(writer), None) = (&mut slow.writer, &self.write_error) {
+                    self.write_error = writer.push(&slow.projected).err();
+                }
             }
         }
     }

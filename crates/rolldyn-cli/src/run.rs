@@ -115,6 +115,8 @@ pub struct CreepMeans {
 
 /// The time series' directory (a Parquet dataset) in a run directory.
 pub const SERIES_DIR: &str = "timeseries.parquet";
+/// The dataset of the channels recorded at `output.slow_rate`.
+pub const SLOW_SERIES_DIR: &str = "timeseries_slow.parquet";
 
 /// Runs the case and writes the results into `dir`. Returns the summary;
 /// `Err` is bad input (no files written).
@@ -407,6 +409,18 @@ pub(crate) fn run_once(
             )
             .map_err(|e| bad(format!("--resume: {e}")))?,
         );
+        if let Some(slow) = &mut channels.slow {
+            slow.writer = Some(
+                SeriesWriter::resume(
+                    &dir.join(SLOW_SERIES_DIR),
+                    &slow.recorded,
+                    &metadata,
+                    slow.rows_for(position.rows),
+                    case.output.float32,
+                )
+                .map_err(|e| bad(format!("--resume: {e}")))?,
+            );
+        }
         (position.next_sample, position.wall_time)
     } else {
         std::fs::create_dir_all(dir)
@@ -424,6 +438,19 @@ pub(crate) fn run_once(
             )
             .map_err(|e| bad(e.to_string()))?,
         );
+        let slow_dir = dir.join(SLOW_SERIES_DIR);
+        match &mut channels.slow {
+            Some(slow) => {
+                slow.writer = Some(
+                    SeriesWriter::create(&slow_dir, &slow.recorded, &metadata, case.output.float32)
+                        .map_err(|e| bad(e.to_string()))?,
+                );
+            }
+            // An older run's slow channels do not belong to this one.
+            None if slow_dir.exists() => std::fs::remove_dir_all(&slow_dir)
+                .map_err(|e| bad(format!("cannot remove {}: {e}", slow_dir.display())))?,
+            None => {}
+        }
         (0, 0.0)
     };
     let sampling = Sampling {
@@ -614,6 +641,9 @@ impl Output<'_> {
         }
         let bad = |e: String| Failure::BadInput(e);
         if let Some(writer) = &mut channels.writer {
+            writer.sync().map_err(|e| bad(e.to_string()))?;
+        }
+        if let Some(writer) = channels.slow.as_mut().and_then(|s| s.writer.as_mut()) {
             writer.sync().map_err(|e| bad(e.to_string()))?;
         }
         if let Some(position) = position {

@@ -122,8 +122,16 @@ struct RunSummary {
 pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
     if args.list {
         let dir = Path::new(&args.dir);
-        let series = rolldyn_io::read_schema(&dir.join(crate::run::SERIES_DIR))
+        let mut series = rolldyn_io::read_schema(&dir.join(crate::run::SERIES_DIR))
             .map_err(|e| Failure::BadInput(e.to_string()))?;
+        let slow = dir.join(crate::run::SLOW_SERIES_DIR);
+        if slow.is_dir() {
+            let more =
+                rolldyn_io::read_schema(&slow).map_err(|e| Failure::BadInput(e.to_string()))?;
+            for (name, unit) in more.names().iter().zip(more.units()).skip(1) {
+                series.channel(name.clone(), unit.clone());
+            }
+        }
         if args.json {
             #[derive(serde::Serialize)]
             struct Channel<'a> {
@@ -159,8 +167,15 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     let dir = Path::new(&args.dir);
     // Only the time and the channel analysed: a long record is not
     // loaded whole.
-    let path = dir.join(crate::run::SERIES_DIR);
-    let channels = rolldyn_io::read_schema(&path).map_err(|e| Failure::BadInput(e.to_string()))?;
+    let mut path = dir.join(crate::run::SERIES_DIR);
+    let mut channels =
+        rolldyn_io::read_schema(&path).map_err(|e| Failure::BadInput(e.to_string()))?;
+    let slow = dir.join(crate::run::SLOW_SERIES_DIR);
+    if channels.unit(&args.channel).is_none() && slow.is_dir() {
+        // A channel recorded at output.slow_rate.
+        path = slow;
+        channels = rolldyn_io::read_schema(&path).map_err(|e| Failure::BadInput(e.to_string()))?;
+    }
     if channels.unit(&args.channel).is_none() {
         return Err(bad_arg(
             "--channel",

@@ -1004,3 +1004,49 @@ fn recorded_channels_are_chosen_and_the_summary_does_not_change() {
     std::fs::remove_dir_all(&all).ok();
     std::fs::remove_dir_all(&some).ok();
 }
+
+/// `output.slow_channels` at `output.slow_rate` go into
+/// `timeseries_slow.parquet` (one sample in every rate / slow_rate, the
+/// first included), also across a resume; spectrum and report find them.
+#[test]
+fn slow_channels_are_recorded_at_their_rate_and_resume() {
+    let dir = temp_dir("record-slow");
+    let d = dir.to_str().unwrap();
+    let o = rolldyn(
+        &[
+            "run",
+            "--duration",
+            "2 ms",
+            "-o",
+            d,
+            "--set",
+            "output.sample_rate=\"20 kHz\"",
+            "--set",
+            "output.slow_channels=[\"energy\", \"power\"]",
+            "--set",
+            "output.slow_rate=\"2 kHz\"",
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = rolldyn(&["run", "--resume", d, "--until", "3 ms", "--report"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let main = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
+    let slow = rolldyn_io::read_parquet(&dir.join("timeseries_slow.parquet")).unwrap();
+    assert_eq!(main.len(), 61);
+    assert_eq!(slow.len(), 7, "samples 0, 10, …, 60");
+    assert!(main.column("power_total_w").is_none() && main.column("drive_work_j").is_none());
+    let (t, tm) = (
+        slow.column("time_s").unwrap(),
+        main.column("time_s").unwrap(),
+    );
+    for (k, t) in t.iter().enumerate() {
+        assert_eq!(*t, tm[10 * k]);
+    }
+    assert!(slow.column("power_total_w").is_some());
+    let o = rolldyn(&["spectrum", d, "--list"], None);
+    assert!(stdout(&o).contains("power_total_w [W]"), "{}", stdout(&o));
+    let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    assert!(html.contains("Friction power") && html.contains("Energy balance"));
+    std::fs::remove_dir_all(&dir).ok();
+}

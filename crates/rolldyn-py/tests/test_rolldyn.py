@@ -219,6 +219,19 @@ def test_the_time_series_reads_as_one_table_with_pyarrow_and_pandas(tmp_path):
     assert frame["time_s"].is_monotonic_increasing
 
 
+def test_slow_channels_are_found_by_name(tmp_path):
+    case = rolldyn.Case.default().set("output.slow_channels", '["power"]') \
+        .set("output.slow_rate", "2 kHz")
+    result = rolldyn.run(case, duration="2 ms", output=tmp_path)
+    assert "power_total_w" in result.channels
+    assert "power_total_w" not in result.timeseries.column_names
+    power = result["power_total_w"]
+    assert power.unit == "W"
+    slow = result.slow_timeseries
+    assert slow.num_rows == len(power) == 5   # 20 kHz / 2 kHz: samples 0, 10, …, 40
+    assert np.array_equal(slow.column("time_s").to_numpy(), result["time_s"][::10])
+
+
 def test_ctrl_c_stops_a_run_and_keeps_the_partial_result(tmp_path):
     timer = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()

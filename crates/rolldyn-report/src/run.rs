@@ -19,6 +19,8 @@ use std::path::Path;
 pub const SUMMARY_FILE: &str = "summary.json";
 /// The time series' file name.
 pub const TIMESERIES_FILE: &str = "timeseries.parquet";
+/// The channels recorded at `output.slow_rate`, when there are any.
+pub const SLOW_TIMESERIES_FILE: &str = "timeseries_slow.parquet";
 /// How the run was asked for (case text, overrides).
 pub const RECORD_FILE: &str = "run.json";
 
@@ -30,6 +32,9 @@ pub struct RunData {
     /// a long record the extremes of [`PLOT_ROWS`]/2 equal buckets (what
     /// a plot of it shows); the other balls' channels are left out.
     pub series: TimeSeries,
+    /// The channels recorded at `output.slow_rate`
+    /// (`timeseries_slow.parquet`), reduced alike, when there are any.
+    pub slow: Option<TimeSeries>,
     /// Each channel's mean over the summary's averaging window.
     pub window_means: HashMap<String, f64>,
     /// The cage centre's (y, z) over the last [`PLOT_ROWS`] samples.
@@ -49,12 +54,23 @@ impl RunData {
         self.summary.get(key).and_then(Value::as_str)
     }
 
-    fn channel(&self, name: &str) -> Option<&[f64]> {
-        self.series.column(name).filter(|c| !c.is_empty())
+    /// The series that holds channel `name` (the slow one for a channel
+    /// recorded at the slow rate).
+    fn series_of(&self, name: &str) -> Option<&TimeSeries> {
+        std::iter::once(&self.series)
+            .chain(self.slow.as_ref())
+            .find(|s| s.column(name).is_some_and(|c| !c.is_empty()))
     }
 
-    fn time(&self) -> &[f64] {
-        self.channel("time_s").unwrap_or(&[])
+    fn channel(&self, name: &str) -> Option<&[f64]> {
+        self.series_of(name)?.column(name)
+    }
+
+    /// The times of channel `name`'s samples.
+    fn time_of(&self, name: &str) -> &[f64] {
+        self.series_of(name)
+            .and_then(|s| s.column("time_s"))
+            .unwrap_or(&[])
     }
 
     fn ball_count(&self) -> usize {
@@ -83,7 +99,7 @@ impl RunData {
 
     /// A channel against time in milliseconds.
     fn against_time(&self, name: &str, legend: &str, scale: f64) -> Option<Series> {
-        let t: Vec<f64> = self.time().iter().map(|t| 1e3 * t).collect();
+        let t: Vec<f64> = self.time_of(name).iter().map(|t| 1e3 * t).collect();
         let y: Vec<f64> = self.channel(name)?.iter().map(|v| scale * v).collect();
         Some(Series::line(legend, &t, &y))
     }
@@ -109,11 +125,23 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
         ],
         _ => [f64::NAN; 2],
     };
-    let (series, window_means, orbit) =
-        read_for_plots(&series_path, window).map_err(|e| ReportError::Read {
-            path: series_path.display().to_string(),
+    let read = |path: &Path| {
+        read_for_plots(path, window).map_err(|e| ReportError::Read {
+            path: path.display().to_string(),
             message: e.to_string(),
-        })?;
+        })
+    };
+    let (series, mut window_means, orbit) = read(&series_path)?;
+    let slow_path = dir.join(SLOW_TIMESERIES_FILE);
+    let slow = if slow_path.is_dir() {
+        let (slow, means, _) = read(&slow_path)?;
+        for (name, mean) in means {
+            window_means.entry(name).or_insert(mean);
+        }
+        Some(slow)
+    } else {
+        None
+    };
     let record = dir
         .join(RECORD_FILE)
         .is_file()
@@ -122,6 +150,7 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
     Ok(build(&RunData {
         summary,
         series,
+        slow,
         window_means,
         orbit,
         record,
@@ -495,8 +524,17 @@ fn cage_speed(data: &RunData) -> Option<Section> {
         data.channel("pure_rolling_cage_speed_ratio"),
         data.channel("inner_ring_speed_rpm"),
     ) {
-        let t: Vec<f64> = data.time().iter().map(|t| 1e3 * t).collect();
-        let pure: Vec<f64> = ratio.iter().zip(inner).map(|(r, n)| r * n).collect();
+        let t: Vec<f64> = data
+            .time_of("pure_rolling_cage_speed_ratio")
+            .iter()
+            .map(|t| 1e3 * t)
+            .collect();
+        // Only when both are sampled alike (not one at the slow rate).
+        let pure: Vec<f64> = if ratio.len() == inner.len() {
+            ratio.iter().zip(inner).map(|(r, n)| r * n).collect()
+        } else {
+            Vec::new()
+        };
         plot = plot.with(Series::new(
             "pure rolling (solved contact angles)",
             &t,
@@ -625,7 +663,11 @@ fn energy(data: &RunData) -> Option<Section> {
     // Runs written before the film in the approach have no film channel.
     let zeros = vec![0.0; drive.len()];
     let film = data.channel("film_work_j").unwrap_or(&zeros);
-    let t: Vec<f64> = data.time().iter().map(|t| 1e3 * t).collect();
+    let t: Vec<f64> = data
+        .time_of("drive_work_j")
+        .iter()
+        .map(|t| 1e3 * t)
+        .collect();
     let e0 = mechanical.first().copied().unwrap_or(0.0);
     let change: Vec<f64> = mechanical.iter().map(|e| e - e0).collect();
     let error = data.channel(BALANCE_ERROR)?;

@@ -60,6 +60,9 @@ pub struct OutputSelection {
     pub balls: Option<Vec<usize>>,
     /// Samples stored as 32-bit floats (7 significant digits).
     pub float32: bool,
+    /// Groups recorded at a lower rate into a second dataset, and that
+    /// rate \[Hz\] (`output.slow_channels`, `output.slow_rate`).
+    pub slow: Option<(Vec<ChannelGroup>, f64)>,
 }
 
 impl Default for OutputSelection {
@@ -68,14 +71,20 @@ impl Default for OutputSelection {
             groups: ChannelGroup::ALL.to_vec(),
             balls: None,
             float32: false,
+            slow: None,
         }
     }
 }
 
 impl OutputSelection {
-    /// Whether `group` is recorded.
+    /// Whether `group` is recorded (at the sample rate or the slow one).
     pub fn records(&self, group: ChannelGroup) -> bool {
         self.groups.contains(&group)
+    }
+
+    /// Whether `group` is recorded at the slow rate.
+    pub fn is_slow(&self, group: ChannelGroup) -> bool {
+        self.slow.as_ref().is_some_and(|(g, _)| g.contains(&group))
     }
 
     /// Whether ball `j`'s channels are recorded.
@@ -84,36 +93,75 @@ impl OutputSelection {
     }
 }
 
+/// A list of group names under `key`, sorted, without repeats.
+fn groups(key: &str, names: &[String]) -> Result<Vec<ChannelGroup>, Invalid> {
+    if names.is_empty() {
+        return Err(Invalid::new(
+            key,
+            Some("[]".into()),
+            "give at least one group (time_s is always recorded)",
+        ));
+    }
+    let mut groups = Vec::with_capacity(names.len());
+    for (i, name) in names.iter().enumerate() {
+        let group = ChannelGroup::ALL
+            .into_iter()
+            .find(|g| g.name() == name)
+            .ok_or_else(|| {
+                Invalid::new(
+                    format!("{key}[{i}]"),
+                    Some(format!("\"{name}\"")),
+                    format!(
+                        "unknown group; expected {}",
+                        ChannelGroup::ALL.map(ChannelGroup::name).join(", ")
+                    ),
+                )
+            })?;
+        groups.push(group);
+    }
+    groups.sort();
+    groups.dedup();
+    Ok(groups)
+}
+
 pub(super) fn selection(raw: &RawOutput, ball_count: usize) -> Result<OutputSelection, Invalid> {
     let mut out = OutputSelection::default();
     if let Some(names) = &raw.channels {
-        if names.is_empty() {
-            return Err(Invalid::new(
-                "output.channels",
-                Some("[]".into()),
-                "give at least one group (time_s is always recorded)",
+        out.groups = groups("output.channels", names)?;
+    }
+    match (&raw.slow_channels, &raw.slow_rate) {
+        (None, None) => {}
+        (Some(names), Some(rate)) => {
+            let slow = groups("output.slow_channels", names)?;
+            if let Some(g) = slow.iter().find(|g| !out.groups.contains(g)) {
+                return Err(Invalid::new(
+                    "output.slow_channels",
+                    Some(format!("\"{}\"", g.name())),
+                    "names a group output.channels does not record",
+                ));
+            }
+            if !(rate.si.is_finite() && rate.si > 0.0) {
+                return Err(Invalid::new(
+                    "output.slow_rate",
+                    Some(rate.to_string()),
+                    "must be a positive frequency",
+                ));
+            }
+            out.slow = Some((slow, rate.si));
+        }
+        (Some(_), None) => {
+            return Err(Invalid::missing(
+                "output.slow_rate",
+                "the sample rate of output.slow_channels, e.g. \"100 Hz\"",
             ));
         }
-        let mut groups = Vec::with_capacity(names.len());
-        for (i, name) in names.iter().enumerate() {
-            let group = ChannelGroup::ALL
-                .into_iter()
-                .find(|g| g.name() == name)
-                .ok_or_else(|| {
-                    Invalid::new(
-                        format!("output.channels[{i}]"),
-                        Some(format!("\"{name}\"")),
-                        format!(
-                            "unknown group; expected {}",
-                            ChannelGroup::ALL.map(ChannelGroup::name).join(", ")
-                        ),
-                    )
-                })?;
-            groups.push(group);
+        (None, Some(rate)) => {
+            return Err(Invalid::new(
+                "output.slow_rate",
+                Some(rate.to_string()),
+                "is used only with output.slow_channels",
+            ));
         }
-        groups.sort();
-        groups.dedup();
-        out.groups = groups;
     }
     if let Some(balls) = &raw.balls {
         let mut indices = Vec::with_capacity(balls.len());

@@ -275,13 +275,14 @@ def quasistatic_sweep(case: Optional[Case], grid: Mapping[str, Union[str, Iterab
 
 
 SERIES_DIR = "timeseries.parquet"
+SLOW_SERIES_DIR = "timeseries_slow.parquet"
 
 
-def _dataset(directory: str):
+def _dataset(directory: str, name: str = SERIES_DIR):
     """The run's time series: a Parquet dataset of part files, read lazily
     (docs/cli.md)."""
     import pyarrow.dataset as ds
-    return ds.dataset(os.path.join(directory, SERIES_DIR), format="parquet")
+    return ds.dataset(os.path.join(directory, name), format="parquet")
 
 
 class Channel(np.ndarray):
@@ -339,21 +340,45 @@ class Result:
         return self._schema
 
     @property
+    def slow_timeseries(self) -> Optional[pa.Table]:
+        """The channels recorded at ``output.slow_rate`` with their own
+        ``time_s`` (None when the run has none)."""
+        if self.directory is None or not os.path.isdir(
+                os.path.join(self.directory, SLOW_SERIES_DIR)):
+            return None
+        return _dataset(self.directory, SLOW_SERIES_DIR).to_table()
+
+    @property
     def status(self) -> str:
         """``completed``, ``interrupted`` or ``failed``."""
         return self.summary["status"]
 
+    def _slow_schema(self) -> Optional[pa.Schema]:
+        if self.directory is None or not os.path.isdir(
+                os.path.join(self.directory, SLOW_SERIES_DIR)):
+            return None
+        return _dataset(self.directory, SLOW_SERIES_DIR).schema
+
     @property
     def channels(self) -> list:
-        return self.schema.names
+        """Every channel, those recorded at the slow rate last."""
+        slow = self._slow_schema()
+        return self.schema.names + ([] if slow is None else slow.names[1:])
 
     @property
     def units(self) -> dict:
         """Channel name -> unit."""
-        return {f.name: (f.metadata or {}).get(b"unit", b"").decode() for f in self.schema}
+        fields = list(self.schema) + list(self._slow_schema() or [])
+        return {f.name: (f.metadata or {}).get(b"unit", b"").decode() for f in fields}
 
     def __getitem__(self, name: str) -> Channel:
+        """A channel; one recorded at the slow rate comes from
+        ``timeseries_slow.parquet`` (its times: ``slow_timeseries["time_s"]``)."""
         if name not in self.schema.names:
+            slow = self._slow_schema()
+            if slow is not None and name in slow.names:
+                column = _dataset(self.directory, SLOW_SERIES_DIR).to_table(columns=[name]).column(name)
+                return Channel(column.to_numpy(), name, self.units[name])
             raise KeyError(f"{name}: no such channel; channels: {', '.join(self.channels)}")
         table = self._table if self._table is not None \
             else self.dataset().to_table(columns=[name])
