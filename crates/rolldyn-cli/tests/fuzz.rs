@@ -250,6 +250,8 @@ fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
                 "output.channels",
                 "output.balls",
                 "output.precision",
+                "output.slow_channels",
+                "output.slow_rate",
                 "thermal.run_start",
             ]);
             let value = if rng.below(2) == 0 {
