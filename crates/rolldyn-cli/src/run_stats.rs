@@ -306,17 +306,16 @@ impl RunStatistics {
                 *n = r.u64()?;
             }
         }
+        // A run extended with --until keeps more (half its new duration);
+        // one given a shorter duration keeps the newest that fit.
         let kept = r.u64()? as usize;
-        if kept > self.signal_capacity {
-            return Err(CheckpointError::Mismatch(format!(
-                "{kept} signal samples, this run keeps {}",
-                self.signal_capacity
-            )));
-        }
         self.signal.clear();
         for _ in 0..kept {
             let mut row = [0.0; SIGNAL_CHANNELS.len()];
             r.f64s_into("signal sample", &mut row)?;
+            if self.signal.len() == self.signal_capacity {
+                self.signal.pop_front();
+            }
             self.signal.push_back(row);
         }
         Ok(())
