@@ -159,7 +159,7 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
 }
 
 /// Most rows of a channel the report holds (see [`RunData::series`]).
-pub const PLOT_ROWS: usize = 65_536;
+pub const PLOT_ROWS: usize = 16_384;
 
 /// The report's own channel: the energy balance's error W + F − D − ΔE
 /// row by row \[J\].
