@@ -32,11 +32,12 @@ pub const BLOCKS: usize = 64;
 /// Most blocks kept (an extended run merges pairs beyond it).
 pub const MAX_BLOCKS: usize = 2 * BLOCKS;
 
-/// Most samples of the vibration and whirl channels kept (1.6 s at the
-/// default case's 20 kHz: 16 periods of the RMS band's 10 Hz edge, over a
-/// hundred cage revolutions); longer windows use their last part, so that
-/// memory stays put (2.9 MB, and as much for the summary's copy).
-pub const SIGNAL_SAMPLES: usize = 1 << 15;
+/// Most samples of the vibration and whirl channels kept (0.8 s at the
+/// default case's 20 kHz: eight periods of the RMS band's 10 Hz edge and
+/// sixty cage revolutions; 1.6 s at 10 kHz); longer windows use their last
+/// part, so that memory stays put (1.4 MB, and as much for the summary's
+/// copy).
+pub const SIGNAL_SAMPLES: usize = 1 << 14;
 
 /// The channels the vibration and whirl metrics read.
 const SIGNAL_CHANNELS: [&str; 11] = [
