@@ -124,6 +124,9 @@ fn groups(key: &str, names: &[String]) -> Result<Vec<ChannelGroup>, Invalid> {
     Ok(groups)
 }
 
+/// Rate of the slow channels when `output.slow_rate` is not given \[Hz\].
+pub const DEFAULT_SLOW_RATE: f64 = 100.0;
+
 pub(super) fn selection(raw: &RawOutput, ball_count: usize) -> Result<OutputSelection, Invalid> {
     let mut out = OutputSelection::default();
     if let Some(names) = &raw.channels {
@@ -131,7 +134,7 @@ pub(super) fn selection(raw: &RawOutput, ball_count: usize) -> Result<OutputSele
     }
     match (&raw.slow_channels, &raw.slow_rate) {
         (None, None) => {}
-        (Some(names), Some(rate)) => {
+        (Some(names), rate) => {
             let slow = groups("output.slow_channels", names)?;
             if let Some(g) = slow.iter().find(|g| !out.groups.contains(g)) {
                 return Err(Invalid::new(
@@ -140,20 +143,15 @@ pub(super) fn selection(raw: &RawOutput, ball_count: usize) -> Result<OutputSele
                     "names a group output.channels does not record",
                 ));
             }
-            if !(rate.si.is_finite() && rate.si > 0.0) {
+            let hz = rate.as_ref().map_or(DEFAULT_SLOW_RATE, |q| q.si);
+            if !(hz.is_finite() && hz > 0.0) {
                 return Err(Invalid::new(
                     "output.slow_rate",
-                    Some(rate.to_string()),
+                    rate.as_ref().map(|q| q.to_string()),
                     "must be a positive frequency",
                 ));
             }
-            out.slow = Some((slow, rate.si));
-        }
-        (Some(_), None) => {
-            return Err(Invalid::missing(
-                "output.slow_rate",
-                "the sample rate of output.slow_channels, e.g. \"100 Hz\"",
-            ));
+            out.slow = Some((slow, hz));
         }
         (None, Some(rate)) => {
             return Err(Invalid::new(
