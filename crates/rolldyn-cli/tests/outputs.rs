@@ -1,0 +1,135 @@
+//! What a run records: the channel groups, balls, precision and slow
+//! channels of `[output]`, and where they go (docs/cli.md, "Choose what to
+//! record" and "Slow channels").
+
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{rolldyn, stderr, stdout, temp_dir};
+use serde_json::Value;
+
+/// `output.channels`, `output.balls` and `output.precision` choose what the
+/// time series holds; the summary is computed from every channel anyway.
+#[test]
+fn recorded_channels_are_chosen_and_the_summary_does_not_change() {
+    let all = temp_dir("record-all");
+    let some = temp_dir("record-some");
+    let (a, s) = (all.to_str().unwrap(), some.to_str().unwrap());
+    let o = rolldyn(&["run", "--duration", "2 ms", "-o", a], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = rolldyn(
+        &[
+            "run",
+            "--duration",
+            "2 ms",
+            "-o",
+            s,
+            "--set",
+            "output.channels=[\"cage\", \"contacts\"]",
+            "--set",
+            "output.balls=[1]",
+            "--set",
+            "output.precision=\"float32\"",
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary = |d: &std::path::Path| {
+        let mut v: Value =
+            serde_json::from_str(&std::fs::read_to_string(d.join("summary.json")).unwrap())
+                .unwrap();
+        v["wall_time_s"] = Value::Null;
+        v
+    };
+    assert_eq!(summary(&all), summary(&some));
+    let full = rolldyn_io::read_parquet(&all.join("timeseries.parquet")).unwrap();
+    let chosen = rolldyn_io::read_parquet(&some.join("timeseries.parquet")).unwrap();
+    assert_eq!(chosen.len(), full.len());
+    let names = chosen.names();
+    assert_eq!(names[0], "time_s");
+    assert!(names.iter().any(|n| n == "cage_speed_rpm"));
+    assert!(names.iter().any(|n| n == "ball1_load_inner_n"));
+    assert!(
+        !names
+            .iter()
+            .any(|n| n.starts_with("ball0_") || n.starts_with("ball2_"))
+    );
+    assert!(
+        !names
+            .iter()
+            .any(|n| n == "ball1_yaw_deg" || n == "drive_work_j")
+    );
+    // Float32: the values are the full run's, rounded to 7 digits.
+    for (x, y) in chosen
+        .column("cage_speed_rpm")
+        .unwrap()
+        .iter()
+        .zip(full.column("cage_speed_rpm").unwrap())
+    {
+        assert_eq!(*x, f64::from(*y as f32));
+    }
+    // An unknown group is refused, naming the entry.
+    let o = rolldyn(
+        &[
+            "run",
+            "--duration",
+            "1 ms",
+            "-o",
+            s,
+            "--set",
+            "output.channels=[\"sensors\"]",
+        ],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("output.channels[0]"), "{}", stderr(&o));
+    std::fs::remove_dir_all(&all).ok();
+    std::fs::remove_dir_all(&some).ok();
+}
+
+/// `output.slow_channels` at `output.slow_rate` go into
+/// `timeseries_slow.parquet` (one sample in every rate / slow_rate, the
+/// first included), also across a resume; spectrum and report find them.
+#[test]
+fn slow_channels_are_recorded_at_their_rate_and_resume() {
+    let dir = temp_dir("record-slow");
+    let d = dir.to_str().unwrap();
+    let o = rolldyn(
+        &[
+            "run",
+            "--duration",
+            "2 ms",
+            "-o",
+            d,
+            "--set",
+            "output.sample_rate=\"20 kHz\"",
+            "--set",
+            "output.slow_channels=[\"energy\", \"power\"]",
+            "--set",
+            "output.slow_rate=\"2 kHz\"",
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = rolldyn(&["run", "--resume", d, "--until", "3 ms", "--report"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let main = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
+    let slow = rolldyn_io::read_parquet(&dir.join("timeseries_slow.parquet")).unwrap();
+    assert_eq!(main.len(), 61);
+    assert_eq!(slow.len(), 7, "samples 0, 10, …, 60");
+    assert!(main.column("power_total_w").is_none() && main.column("drive_work_j").is_none());
+    let (t, tm) = (
+        slow.column("time_s").unwrap(),
+        main.column("time_s").unwrap(),
+    );
+    for (k, t) in t.iter().enumerate() {
+        assert_eq!(*t, tm[10 * k]);
+    }
+    assert!(slow.column("power_total_w").is_some());
+    let o = rolldyn(&["spectrum", d, "--list"], None);
+    assert!(stdout(&o).contains("power_total_w [W]"), "{}", stdout(&o));
+    let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    assert!(html.contains("Friction power") && html.contains("Energy balance"));
+    std::fs::remove_dir_all(&dir).ok();
+}
