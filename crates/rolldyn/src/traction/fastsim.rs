@@ -40,7 +40,17 @@
 //! ```
 //! (the first step integrates from the leading edge; w is linear in x, so
 //! the integral is exact at its midpoint).
-//! where w is the rigid slip in the contact plane. On a flat contact
+//! where w is the rigid slip in the contact plane. In slip the step is
+//! FASTSIM's backward-Euler form of the slip condition p = −g s/|s|:
+//! p_k = g (p_{k−1} − Δx w(x_k)/(L V))/|…| with the rigid slip at the
+//! element centre itself, which gives the traction direction the exact
+//! lag behind a turning slip direction in deep slip; the midpoint slip
+//! would lag by half an element and, under spin, overstate the lateral
+//! force (by 17 % at φ = 20 1/m and 47 % at 50 1/m on a 7218B inner
+//! contact with 10 elements). The two are blended by the overshoot
+//! 1 − g/|p_tentative| (0 at the bound, so p stays continuous where a
+//! cell starts to slip; 1 deep in slip).
+//!  On a flat contact
 //! w = V(ξ − φy, η + φx). The engine also places each strip on the deformed
 //! surface across the rolling direction (depth d_i = R_d − √(R_d² − y_i²),
 //! as the stress-law integration does, [`super::ellipse`]), which adds the
@@ -592,9 +602,18 @@ impl Fastsim {
                     let limit = st.limit * shape;
                     let size2 = tx * tx + ty * ty;
                     let stick = size2 <= limit * limit;
-                    let scale = if stick { 1.0 } else { limit / size2.sqrt() };
-                    px[l] = tx * scale;
-                    py[l] = ty * scale;
+                    if stick {
+                        px[l] = tx;
+                        py[l] = ty;
+                    } else {
+                        // The slip step: the rigid slip at x_k rather than
+                        // between the centres, blended in by the overshoot.
+                        let excess = 1.0 - limit / size2.sqrt();
+                        let ty = ty - excess * gain * w_n * back * st.dx;
+                        let scale = limit / (tx * tx + ty * ty).sqrt();
+                        px[l] = tx * scale;
+                        py[l] = ty * scale;
+                    }
                     let cell = st.dx * dy;
                     let (dfx, dfy) = (px[l] * cell, py[l] * cell);
                     sfx[l] += dfx;
@@ -688,6 +707,55 @@ mod tests {
             assert!(r.dissipation >= -1e-12);
             last = r;
         }
+    }
+
+    /// Under spin the lateral force comes from the slip direction's lag
+    /// behind the rigid slip, which turns across each element. The slip
+    /// step takes the rigid slip at the element centre (backward Euler,
+    /// exact lag in deep slip): on the default 16 × 10 grid the forces of
+    /// a 7218B inner-raceway contact stay within 2.5 % of μQ of a
+    /// 400 × 800 grid, and the lateral force within 5 % at φ = 20 1/m
+    /// (the midpoint step was 4.4 % of μQ and 17 % off).
+    #[test]
+    fn default_grid_follows_spin() {
+        let p = ContactPatch {
+            point: Vector3::new(0.0, 0.0, -3e-3),
+            normal: Vector3::new(0.0, 0.0, -1.0),
+            rolling_direction: Vector3::new(1.0, 0.0, 0.0),
+            semi_major: 2.2609e-3,
+            semi_minor: 0.2761e-3,
+            load: 2088.0,
+            deformed_radius: f64::INFINITY,
+        };
+        let force = |m: &Fastsim, xi: f64, eta: f64, phi: f64| {
+            let ex = p.rolling_direction;
+            let ey = p.normal.cross(&ex);
+            let slip = (xi * ex + eta * ey) * 10.0;
+            let spin = p.normal * phi * 10.0;
+            let r = m.evaluate(&p, &Vector3::zeros(), &slip, &spin, &rolling(10.0));
+            Vector2::new(r.force.dot(&ex), r.force.dot(&ey))
+        };
+        let coarse = Fastsim::new(0.1, 76.923e9, 0.3);
+        let mut fine = coarse;
+        fine.strips = 400;
+        fine.elements = 800;
+        let mu_q = 0.1 * p.load;
+        for &(xi, eta, phi) in &[
+            (0.0, 0.0, 5.0),
+            (0.0, 0.0, 20.0),
+            (0.0, 0.0, 50.0),
+            (1e-3, 0.0, 20.0),
+            (3e-4, 1e-3, 10.0),
+            (3e-3, 3e-4, 20.0),
+        ] {
+            let (c, f) = (force(&coarse, xi, eta, phi), force(&fine, xi, eta, phi));
+            assert!(
+                (c - f).norm() < 0.025 * mu_q,
+                "{xi},{eta},{phi}: {c} vs {f}"
+            );
+        }
+        let (c, f) = (force(&coarse, 0.0, 0.0, 20.0), force(&fine, 0.0, 0.0, 20.0));
+        assert!((c.y / f.y - 1.0).abs() < 0.05, "{} vs {}", c.y, f.y);
     }
 
     #[test]

@@ -20,6 +20,7 @@ pub mod coulomb;
 pub mod curve;
 pub mod ehl;
 pub mod ellipse;
+pub mod exact;
 pub mod fastsim;
 pub mod kalker;
 pub mod mixed;
