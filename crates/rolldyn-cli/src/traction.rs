@@ -17,6 +17,7 @@ use rolldyn::RingKind;
 use rolldyn::contact::RacewayContactModel;
 use rolldyn::material::effective_modulus;
 use rolldyn::traction::fastsim::MapCell;
+use rolldyn::traction::exact::{DEFAULT_CELLS, ExactRolling, MAX_CELLS};
 use rolldyn::traction::kalker::check_axes;
 use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim, TractionModel, TractionResult};
 use rolldyn_case::Case;
@@ -69,7 +70,17 @@ pub struct TractionArgs {
     /// Friction coefficient μ of the explicit contact.
     #[arg(long, value_name = "MU", allow_hyphen_values = true)]
     pub friction: Option<f64>,
-    /// Write the FASTSIM stick/slip map (one row per element) to FILE as CSV.
+    /// Tangential solution: `fastsim` (the case's law, or FASTSIM for an
+    /// explicit contact) or `exact` (Kalker's exact steady-rolling theory
+    /// by boundary elements; needs the fastsim law's friction and elastic
+    /// constants, or an explicit contact).
+    #[arg(long, value_name = "METHOD", default_value = "fastsim")]
+    pub method: String,
+    /// Cells along and across the rolling direction of `--method exact`,
+    /// e.g. "32" or "48,32" (default 32).
+    #[arg(long, value_name = "N[,M]")]
+    pub cells: Option<String>,
+    /// Write the stick/slip map (one row per element or cell) to FILE as CSV.
     #[arg(long, value_name = "FILE")]
     pub map: Option<String>,
     /// Print JSON instead of text.
@@ -201,9 +212,16 @@ pub fn command(args: TractionArgs) -> Result<(), Failure> {
 
 /// What `rolldyn traction --json` prints (and the map file written).
 pub fn report(args: &TractionArgs) -> Result<TractionReport, Failure> {
+    let exact = match (args.method.as_str(), &args.cells) {
+        ("fastsim", None) => None,
+        ("fastsim", Some(c)) => return Err(bad_arg("--cells", c, "goes with --method exact")),
+        ("exact", cells) => Some(exact_grid(cells.as_deref())?),
+        (other, _) => return Err(bad_arg("--method", other, "expected fastsim or exact")),
+    };
     let inputs = Inputs {
         rolling_speed: quantity::<Velocity>("--rolling-speed", &args.rolling_speed)?,
         motion: motion(args)?,
+        exact,
     };
     let case;
     let contact = match &args.semi_axes {
@@ -234,12 +252,30 @@ pub fn report(args: &TractionArgs) -> Result<TractionReport, Failure> {
     Ok(report)
 }
 
+/// `--cells` of `--method exact`: cells along and across.
+fn exact_grid(text: Option<&str>) -> Result<(usize, usize), Failure> {
+    let Some(text) = text else {
+        return Ok((DEFAULT_CELLS, DEFAULT_CELLS));
+    };
+    let parts: Result<Vec<usize>, _> = text.split(',').map(|p| p.trim().parse()).collect();
+    let rule = format!("expected one or two whole numbers of cells between 4 and {MAX_CELLS}");
+    let ok = |n: &usize| (4..=MAX_CELLS).contains(n);
+    match parts.as_deref() {
+        Ok([n]) if ok(n) => Ok((*n, *n)),
+        Ok([a, b]) if ok(a) && ok(b) => Ok((*a, *b)),
+        _ => Err(bad_arg("--cells", text, rule)),
+    }
+}
+
 /// The contact and its kinematics, in SI units.
 pub struct Inputs {
     /// Rolling (entrainment) speed V \[m/s\], signed along x.
     pub rolling_speed: f64,
     /// What slides.
     pub motion: Motion,
+    /// `--method exact` with its cells along and across, or None (FASTSIM
+    /// or the case's law).
+    pub exact: Option<(usize, usize)>,
 }
 
 /// Creepages or slip velocities.
@@ -302,6 +338,24 @@ pub struct TractionReport {
     pub power_w: f64,
     pub stick_fraction: Option<f64>,
     pub map_cells: Option<usize>,
+    /// `fastsim` (or the case's law) or `exact`.
+    pub method: &'static str,
+    /// The exact solver's grid and convergence (`--method exact`).
+    pub exact: Option<ExactReport>,
+}
+
+/// How the exact solution was obtained.
+#[derive(Serialize)]
+pub struct ExactReport {
+    pub cells_along: usize,
+    pub cells_across: usize,
+    /// Cells of the numerical contact area (loaded by the normal problem).
+    pub contact_cells: usize,
+    pub transient_steps: usize,
+    pub sweeps: usize,
+    pub converged: bool,
+    /// −Σ p·s V ΔA over the cells: the power friction dissipates \[W\].
+    pub frictional_power_w: f64,
 }
 
 fn law_name(model: &TractionModel) -> &'static str {
@@ -434,8 +488,42 @@ pub fn evaluate(
         rolling_velocity: v,
     };
     let mut cells = 0;
-    let result: TractionResult = match (&model, map) {
-        (TractionModel::Fastsim(f), Some(text)) => {
+    let mut exact_report = None;
+    let result: TractionResult = match (&model, inputs.exact, map) {
+        (TractionModel::Fastsim(f), Some((along_cells, across_cells)), map) => {
+            if v == 0.0 {
+                return Err("--method exact: the steady-rolling theory needs a rolling speed (--rolling-speed ≠ 0)".into());
+            }
+            let mut m = ExactRolling::new(f.friction, f.shear_modulus, f.poisson_ratio);
+            m.cells_along = along_cells;
+            m.cells_across = across_cells;
+            let sol = m.solve(&patch, &slip, &relative_spin, v);
+            if let Some(text) = map {
+                text.push_str(MapCell::CSV_HEADER);
+                text.push('\n');
+                for c in &sol.cells {
+                    let _ = writeln!(text, "{}", c.csv_row());
+                }
+                cells = sol.cells.len();
+            }
+            exact_report = Some(ExactReport {
+                cells_along: along_cells,
+                cells_across: across_cells,
+                contact_cells: sol.cells.len(),
+                transient_steps: sol.steps,
+                sweeps: sol.sweeps,
+                converged: sol.converged,
+                frictional_power_w: sol.frictional_power,
+            });
+            sol.result
+        }
+        (_, Some(_), _) => {
+            return Err(format!(
+                "--method exact: the exact theory takes its friction and elastic constants from the fastsim traction law (the case has {}; e.g. --set 'model.traction={{ law = \"fastsim\", friction = 0.1 }}')",
+                law_name(&model)
+            ));
+        }
+        (TractionModel::Fastsim(f), None, Some(text)) => {
             text.push_str(MapCell::CSV_HEADER);
             text.push('\n');
             f.evaluate_mapped(
@@ -450,13 +538,13 @@ pub fn evaluate(
                 },
             )
         }
-        (_, Some(_)) => {
+        (_, None, Some(_)) => {
             return Err(format!(
                 "--map: the stick/slip map needs the fastsim traction law (the case has {})",
                 law_name(&model)
             ));
         }
-        (m, None) => m.evaluate(
+        (m, None, None) => m.evaluate(
             &rolldyn::traction::TractionGrid::new(integration),
             &patch,
             &Vector3::zeros(),
@@ -485,12 +573,18 @@ pub fn evaluate(
         power_w: result.dissipation,
         stick_fraction: result.creep.map(|c| c.stick_fraction),
         map_cells: (cells > 0).then_some(cells),
+        method: if exact_report.is_some() { "exact" } else { "fastsim" },
+        exact: exact_report,
     })
 }
 
 impl TractionReport {
     pub fn to_text(&self) -> String {
-        let mut out = format!("Traction ({} law)", self.traction_law);
+        let mut out = if self.method == "exact" {
+            "Traction (Kalker's exact steady-rolling theory)".to_string()
+        } else {
+            format!("Traction ({} law)", self.traction_law)
+        };
         if let (Some(ring), Some(angle)) = (self.ring, self.contact_angle_deg) {
             let _ = write!(out, ", {ring} raceway at α = {angle:.3}°");
         }
@@ -522,6 +616,19 @@ impl TractionReport {
         );
         if let Some(s) = self.stick_fraction {
             let _ = writeln!(out, "  stick area fraction {s:.4}");
+        }
+        if let Some(e) = &self.exact {
+            let _ = writeln!(
+                out,
+                "  exact theory: {} × {} cells ({} in contact), {} transient steps, {} sweeps{}; frictional power {:.6e} W",
+                e.cells_along,
+                e.cells_across,
+                e.contact_cells,
+                e.transient_steps,
+                e.sweeps,
+                if e.converged { "" } else { ", NOT converged" },
+                e.frictional_power_w
+            );
         }
         out
     }

@@ -50,7 +50,7 @@
 //! contact with 10 elements). The two are blended by the overshoot
 //! 1 − g/|p_tentative| (0 at the bound, so p stays continuous where a
 //! cell starts to slip; 1 deep in slip).
-//!  On a flat contact
+//! On a flat contact
 //! w = V(ξ − φy, η + φx). The engine also places each strip on the deformed
 //! surface across the rolling direction (depth d_i = R_d − √(R_d² − y_i²),
 //! as the stress-law integration does, [`super::ellipse`]), which adds the
