@@ -16,8 +16,8 @@ use nalgebra::Vector3;
 use rolldyn::RingKind;
 use rolldyn::contact::RacewayContactModel;
 use rolldyn::material::effective_modulus;
-use rolldyn::traction::fastsim::MapCell;
 use rolldyn::traction::exact::{DEFAULT_CELLS, ExactRolling, MAX_CELLS};
+use rolldyn::traction::fastsim::MapCell;
 use rolldyn::traction::kalker::check_axes;
 use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim, TractionModel, TractionResult};
 use rolldyn_case::Case;
@@ -573,7 +573,11 @@ pub fn evaluate(
         power_w: result.dissipation,
         stick_fraction: result.creep.map(|c| c.stick_fraction),
         map_cells: (cells > 0).then_some(cells),
-        method: if exact_report.is_some() { "exact" } else { "fastsim" },
+        method: if exact_report.is_some() {
+            "exact"
+        } else {
+            "fastsim"
+        },
         exact: exact_report,
     })
 }

@@ -101,13 +101,22 @@ fn exact_method_on_a_case_and_its_errors() {
     assert_eq!(r["ring"], "inner");
     assert!(r["force_n"].as_f64().unwrap() <= 0.1 * 500.0 + 1e-9);
     for (args, needle) in [
-        (vec!["--load", "500 N", "--method", "exact"], "fastsim traction law"),
+        (
+            vec!["--load", "500 N", "--method", "exact"],
+            "fastsim traction law",
+        ),
         (
             [EXPLICIT.as_slice(), &["--method", "exact", "--cells", "3"]].concat(),
             "--cells",
         ),
-        ([EXPLICIT.as_slice(), &["--method", "exakt"]].concat(), "--method"),
-        ([EXPLICIT.as_slice(), &["--cells", "20"]].concat(), "--method exact"),
+        (
+            [EXPLICIT.as_slice(), &["--method", "exakt"]].concat(),
+            "--method",
+        ),
+        (
+            [EXPLICIT.as_slice(), &["--cells", "20"]].concat(),
+            "--method exact",
+        ),
     ] {
         let mut all = vec!["traction", "--creepages", "1e-3,0,0"];
         if !args.contains(&"--rolling-speed") {
@@ -120,7 +129,14 @@ fn exact_method_on_a_case_and_its_errors() {
     }
     let mut still = vec!["traction"];
     still.extend(&EXPLICIT[..10]);
-    still.extend(["--rolling-speed", "0 m/s", "--creepages", "1e-3,0,0", "--method", "exact"]);
+    still.extend([
+        "--rolling-speed",
+        "0 m/s",
+        "--creepages",
+        "1e-3,0,0",
+        "--method",
+        "exact",
+    ]);
     let out = rolldyn(&still, None);
     assert_eq!(out.status.code(), Some(2));
     assert!(stderr(&out).contains("rolling speed"), "{}", stderr(&out));
