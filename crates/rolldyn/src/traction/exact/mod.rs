@@ -280,7 +280,7 @@ impl ExactRolling {
         let mut shifted = [vec![0.0; na * nc], vec![0.0; na * nc]];
         let mut stick = vec![false; na * nc];
         let (mut sweeps, mut steps, mut converged) = (0, 0, false);
-        let mut anderson = Anderson::new(2 * m, ANDERSON_DEPTH);
+        let mut anderson = Anderson::new(ANDERSON_DEPTH);
         while steps < self.max_steps {
             steps += 1;
             // T(x): the transient step from the field x. Its upstream
@@ -418,7 +418,7 @@ struct Anderson {
 }
 
 impl Anderson {
-    fn new(_size: usize, depth: usize) -> Self {
+    fn new(depth: usize) -> Self {
         Self {
             depth,
             iterates: Vec::new(),
