@@ -350,6 +350,20 @@ def test_traction_equals_the_cli(tmp_path):
         rolldyn.traction(case, no_such_flag=1, **flags)
 
 
+
+def test_traction_exact_method_equals_the_cli():
+    """Kalker's exact theory from Python: the flags pass through."""
+    law = '{ law = "fastsim", friction = 0.1 }'
+    case = rolldyn.Case.default().set("model.traction", law)
+    flags = dict(load="500 N", rolling_speed="10 m/s", creepages="1e-3,0,5")
+    got = rolldyn.traction(case, method="exact", cells="16", **flags)
+    expected = cli_json("traction", "--set", f"model.traction={law}", "--json",
+                        "--load", "500 N", "--rolling-speed", "10 m/s",
+                        "--creepages", "1e-3,0,5", "--method", "exact", "--cells", "16")
+    assert got == expected
+    assert got["method"] == "exact" and got["exact"]["converged"]
+    assert got["exact"]["cells_along"] == 16
+
 def test_spectrum_equals_the_cli(tmp_path):
     result = rolldyn.run(duration="5 ms", output=tmp_path)
     expected = cli_json("spectrum", str(tmp_path), "--channel", "cage_speed_rpm", "--json")
