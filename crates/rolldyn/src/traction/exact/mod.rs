@@ -238,17 +238,33 @@ impl ExactRolling {
         let at = |di: isize, dk: isize| ((di + ri) * width + dk + rk) as usize;
         let diagonal = Vector2::new(here[0][at(0, 0)], here[2][at(0, 0)]);
         let loaded: Vec<usize> = (0..na * nc).filter(|&c| pressure[c] > 0.0).collect();
-        // Adds Σ over the grid of T(I − c) v to `out` (x and y parts), for
-        // a table triple T: one contiguous run of the tables per row.
+        // The loaded cells of each row along x: a contiguous run across
+        // (the contact is convex), empty outside it.
+        let spans: Vec<(usize, usize)> = (0..na)
+            .map(|i| {
+                let row: Vec<usize> = (0..nc).filter(|&k| pressure[i * nc + k] > 0.0).collect();
+                match (row.first(), row.last()) {
+                    (Some(&first), Some(&last)) => (first, last + 1),
+                    _ => (0, 0),
+                }
+            })
+            .collect();
+        // Adds Σ T(I − c) v over the loaded cells I to `out` (x and y
+        // parts), for a table triple T: one contiguous run of the tables
+        // per row. Only the loaded cells' slip is used.
         let scatter = |t: &[Vec<f64>; 3], c: usize, v: Vector2<f64>, out: &mut [Vec<f64>; 2]| {
             let (i_c, k_c) = ((c / nc) as isize, (c % nc) as isize);
-            for i_f in 0..na {
-                let base = at(i_f as isize - i_c, -k_c);
-                let row = i_f * nc..(i_f + 1) * nc;
+            for (i_f, &(k0, k1)) in spans.iter().enumerate() {
+                if k0 == k1 {
+                    continue;
+                }
+                let base = at(i_f as isize - i_c, k0 as isize - k_c);
+                let n = k1 - k0;
+                let row = i_f * nc + k0..i_f * nc + k1;
                 let (xx, xy, yy) = (
-                    &t[0][base..base + nc],
-                    &t[1][base..base + nc],
-                    &t[2][base..base + nc],
+                    &t[0][base..base + n],
+                    &t[1][base..base + n],
+                    &t[2][base..base + n],
                 );
                 let [ox, oy] = out;
                 for (((ox, oy), (a, b)), d) in ox[row.clone()]
