@@ -351,7 +351,6 @@ pub struct ExactReport {
     pub cells_across: usize,
     /// Cells of the numerical contact area (loaded by the normal problem).
     pub contact_cells: usize,
-    pub transient_steps: usize,
     pub sweeps: usize,
     pub converged: bool,
     /// −Σ p·s V ΔA over the cells: the power friction dissipates \[W\].
@@ -510,7 +509,6 @@ pub fn evaluate(
                 cells_along: along_cells,
                 cells_across: across_cells,
                 contact_cells: sol.cells.len(),
-                transient_steps: sol.steps,
                 sweeps: sol.sweeps,
                 converged: sol.converged,
                 frictional_power_w: sol.frictional_power,
@@ -624,11 +622,10 @@ impl TractionReport {
         if let Some(e) = &self.exact {
             let _ = writeln!(
                 out,
-                "  exact theory: {} × {} cells ({} in contact), {} transient steps, {} sweeps{}; frictional power {:.6e} W",
+                "  exact theory: {} × {} cells ({} in contact), {} sweeps{}; frictional power {:.6e} W",
                 e.cells_along,
                 e.cells_across,
                 e.contact_cells,
-                e.transient_steps,
                 e.sweeps,
                 if e.converged { "" } else { ", NOT converged" },
                 e.frictional_power_w

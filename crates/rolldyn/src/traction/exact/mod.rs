@@ -28,9 +28,10 @@
 //!    with u = A p the relative elastic displacement from the tractions
 //!    p on the ball, and w the rigid slip). Each cell either adheres
 //!    (s_I = 0, |p_I| ≤ μ p_n) or slips (p_I = −μ p_n s_I/|s_I|). Solved
-//!    by Gauss–Seidel sweeps from the leading edge, each cell's own
-//!    two-by-two problem solved exactly (Vollebregt's SteadyGS), until
-//!    no traction moves by more than `tolerance` · μ p₀.
+//!    in the traction increments along the flow, on which the operator
+//!    is the symmetric compliance ([`steady`], Vollebregt's SteadyGS),
+//!    until a sweep moves no traction by more than `tolerance` of the
+//!    largest.
 //!
 //! The rigid slip is that of FASTSIM's engine frame: on a flat contact
 //! w = V(ξ − φ y, η + φ x); on a conforming groove the cells also carry
@@ -41,14 +42,15 @@
 //!
 //! # Accuracy and cost
 //! The backward difference and the constant-traction cells make the
-//! forces converge at first order in the cell size (docs/validation.md
-//! gives the grid study); 40 × 40 cells reproduce Kalker's creep
-//! coefficients to about 2 %. Each evaluation solves dense convolutions
-//! directly: O(N²) per sweep for N cells, about 0.2–1 s for 40 × 40. It
-//! is a reference for checks, not a law for the time loop.
+//! forces converge at first order in the cell size; 32 × 32 cells
+//! reproduce Kalker's creep coefficients to 1–2 % (tests). Each
+//! evaluation solves dense convolutions directly, O(N²) per sweep for N
+//! cells, in 15–30 sweeps: about 0.1–0.5 s at 32 × 32 (docs/performance.md).
+//! It is a reference for checks, not a law for the time loop.
 
 pub mod influence;
 pub mod normal;
+pub mod steady;
 
 use super::fastsim::MapCell;
 use super::{ContactPatch, Creep, TractionResult};
@@ -62,9 +64,6 @@ use std::f64::consts::PI;
 /// Size of the potential contact area against the Hertz ellipse's
 /// bounding box.
 const MARGIN: f64 = 1.05;
-
-/// Transient steps remembered by the Anderson acceleration.
-const ANDERSON_DEPTH: usize = 6;
 
 /// Default cells along and across the rolling direction.
 pub const DEFAULT_CELLS: usize = 32;
@@ -88,9 +87,7 @@ pub struct ExactRolling {
     pub cells_across: usize,
     /// Convergence: largest traction change in a sweep over μ p₀.
     pub tolerance: f64,
-    /// Most transient steps.
-    pub max_steps: usize,
-    /// Most Gauss–Seidel sweeps, over all steps.
+    /// Most Gauss–Seidel sweeps.
     pub max_sweeps: usize,
 }
 
@@ -107,8 +104,7 @@ pub struct ExactSolution {
     pub frictional_power: f64,
     /// Normal-problem iterations taken.
     pub normal_iterations: usize,
-    /// Transient steps and Gauss–Seidel sweeps (over all steps) taken.
-    pub steps: usize,
+    /// Gauss–Seidel sweeps of the tangential problem.
     pub sweeps: usize,
     /// Whether the tangential sweeps met the tolerance.
     pub converged: bool,
@@ -124,8 +120,7 @@ impl ExactRolling {
             cells_along: DEFAULT_CELLS,
             cells_across: DEFAULT_CELLS,
             tolerance: 1e-5,
-            max_steps: 2000,
-            max_sweeps: 100_000,
+            max_sweeps: 1000,
         }
     }
 
@@ -212,161 +207,18 @@ impl ExactRolling {
         };
         let w: Vec<Vector2<f64>> = (0..na * nc).map(rigid).collect();
 
-        // The compliance A/Δx at the cell centres (`here`) and at the
-        // points one cell upstream (`upstream`), as tables over offsets.
-        let (ri, rk) = (na as isize - 1, nc as isize - 1);
-        let width = (2 * nc - 1) as isize;
-        let table = |k: &[f64], shift: isize| -> Vec<f64> {
-            let mut out = Vec::with_capacity(((2 * ri + 1) * width) as usize);
-            for di in -ri..=ri {
-                for dk in -rk..=rk {
-                    out.push(k[influence.index(di - shift, dk)] / dx);
-                }
-            }
-            out
-        };
-        let here = [
-            table(&influence.xx, 0),
-            table(&influence.xy, 0),
-            table(&influence.yy, 0),
-        ];
-        let upstream = [
-            table(&influence.xx, 1),
-            table(&influence.xy, 1),
-            table(&influence.yy, 1),
-        ];
-        let at = |di: isize, dk: isize| ((di + ri) * width + dk + rk) as usize;
-        let diagonal = Vector2::new(here[0][at(0, 0)], here[2][at(0, 0)]);
+        // 3. The tangential problem (SteadyGS in traction increments).
         let loaded: Vec<usize> = (0..na * nc).filter(|&c| pressure[c] > 0.0).collect();
-        // The loaded cells of each row along x: a contiguous run across
-        // (the contact is convex), empty outside it.
-        let spans: Vec<(usize, usize)> = (0..na)
-            .map(|i| {
-                let row: Vec<usize> = (0..nc).filter(|&k| pressure[i * nc + k] > 0.0).collect();
-                match (row.first(), row.last()) {
-                    (Some(&first), Some(&last)) => (first, last + 1),
-                    _ => (0, 0),
-                }
-            })
-            .collect();
-        // Adds Σ T(I − c) v over the loaded cells I to `out` (x and y
-        // parts), for a table triple T: one contiguous run of the tables
-        // per row. Only the loaded cells' slip is used.
-        let scatter = |t: &[Vec<f64>; 3], c: usize, v: Vector2<f64>, out: &mut [Vec<f64>; 2]| {
-            let (i_c, k_c) = ((c / nc) as isize, (c % nc) as isize);
-            for (i_f, &(k0, k1)) in spans.iter().enumerate() {
-                if k0 == k1 {
-                    continue;
-                }
-                let base = at(i_f as isize - i_c, k0 as isize - k_c);
-                let n = k1 - k0;
-                let row = i_f * nc + k0..i_f * nc + k1;
-                let (xx, xy, yy) = (
-                    &t[0][base..base + n],
-                    &t[1][base..base + n],
-                    &t[2][base..base + n],
-                );
-                let [ox, oy] = out;
-                for (((ox, oy), (a, b)), d) in ox[row.clone()]
-                    .iter_mut()
-                    .zip(&mut oy[row])
-                    .zip(xx.iter().zip(xy))
-                    .zip(yy)
-                {
-                    *ox += a * v.x + b * v.y;
-                    *oy += b * v.x + d * v.y;
-                }
-            }
-        };
-
-        // 3. Pseudo-transient iteration: each outer step is one step of
-        // transient rolling by Δx (Kalker 1990, ch. 5), whose fixed point
-        // is the steady state above: the upstream displacement A⁻p comes
-        // from the previous traction field, and the cells solve the
-        // remaining static problem (a symmetric positive definite
-        // compliance) by Gauss–Seidel sweeps with each cell's friction
-        // law solved exactly (Vollebregt's ConvexGS), to a fraction of the
-        // last step's change (inexact inner solves; the fixed point is
-        // the same).
-        // The field as a flat vector over the loaded cells (x, y pairs).
-        let m = loaded.len();
-        let mut iterate = vec![0.0; 2 * m];
-        let mut p = vec![Vector2::zeros(); na * nc];
-        let mut slip = [vec![0.0; na * nc], vec![0.0; na * nc]];
-        let mut shifted = [vec![0.0; na * nc], vec![0.0; na * nc]];
-        let mut stick = vec![false; na * nc];
-        let (mut sweeps, mut steps, mut converged) = (0, 0, false);
-        let mut anderson = Anderson::new(ANDERSON_DEPTH);
-        while steps < self.max_steps {
-            steps += 1;
-            // T(x): the transient step from the field x. Its upstream
-            // displacement A⁻x/Δx is frozen; the static problem starts
-            // from x.
-            for part in &mut shifted {
-                part.fill(0.0);
-            }
-            let mut here_now = [vec![0.0; na * nc], vec![0.0; na * nc]];
-            for (j, &c) in loaded.iter().enumerate() {
-                p[c] = Vector2::new(iterate[2 * j], iterate[2 * j + 1]);
-                if p[c] != Vector2::zeros() {
-                    scatter(&upstream, c, p[c], &mut shifted);
-                    scatter(&here, c, p[c], &mut here_now);
-                }
-            }
-            for c in 0..na * nc {
-                slip[0][c] = w[c].x + here_now[0][c] - shifted[0][c];
-                slip[1][c] = w[c].y + here_now[1][c] - shifted[1][c];
-            }
-            loop {
-                sweeps += 1;
-                let (mut moved, mut largest): (f64, f64) = (0.0, 0.0);
-                for &c in &loaded {
-                    let s_c = Vector2::new(slip[0][c], slip[1][c]);
-                    let own = s_c - diagonal.component_mul(&p[c]);
-                    let (new, sticks) = local_solution(&own, &diagonal, bound[c]);
-                    stick[c] = sticks;
-                    largest = largest.max(new.norm());
-                    let change = new - p[c];
-                    if change == Vector2::zeros() {
-                        continue;
-                    }
-                    moved = moved.max(change.norm());
-                    p[c] = new;
-                    scatter(&here, c, change, &mut slip);
-                }
-                if moved <= 0.1 * self.tolerance * largest || sweeps >= self.max_sweeps {
-                    break;
-                }
-            }
-            // Residual T(x) − x against the tolerance, relative to the
-            // field's largest traction.
-            let mapped: Vec<f64> = loaded.iter().flat_map(|&c| [p[c].x, p[c].y]).collect();
-            let (mut change, mut largest): (f64, f64) = (0.0, 0.0);
-            for j in 0..m {
-                let d =
-                    (mapped[2 * j] - iterate[2 * j]).hypot(mapped[2 * j + 1] - iterate[2 * j + 1]);
-                change = change.max(d);
-                largest = largest.max(mapped[2 * j].hypot(mapped[2 * j + 1]));
-            }
-            if change <= self.tolerance * largest || sweeps >= self.max_sweeps {
-                converged = change <= self.tolerance * largest;
-                break;
-            }
-            anderson.next(&mut iterate, &mapped);
+        let tangential = steady::SteadyProblem {
+            along: na,
+            across: nc,
+            dx,
+            influence: &influence,
+            rigid: &w,
+            bound: &bound,
         }
-        // The steady slip of the solved field, s = w + (A − A⁻) p/Δx.
-        let mut upstream_now = [vec![0.0; na * nc], vec![0.0; na * nc]];
-        for &c in &loaded {
-            scatter(&upstream, c, p[c], &mut upstream_now);
-        }
-        let s: Vec<Vector2<f64>> = (0..na * nc)
-            .map(|c| {
-                Vector2::new(
-                    slip[0][c] + shifted[0][c] - upstream_now[0][c],
-                    slip[1][c] + shifted[1][c] - upstream_now[1][c],
-                )
-            })
-            .collect();
+        .solve(self.tolerance, self.max_sweeps);
+        let (p, s, stick) = (&tangential.traction, &tangential.slip, &tangential.stick);
 
         // 4. Resultants and the map.
         let (mut fx, mut fy, mut mn, mut mx, mut my) = (0.0, 0.0, 0.0, 0.0, 0.0);
@@ -413,86 +265,10 @@ impl ExactRolling {
             cells,
             frictional_power: friction_power,
             normal_iterations: normal.iterations,
-            steps,
-            sweeps,
-            converged,
+            sweeps: tangential.sweeps,
+            converged: tangential.converged,
         }
     }
-}
-
-/// Anderson acceleration of a fixed-point iteration x ← T(x) (D. G.
-/// Anderson, *J. ACM* 12 (1965) 547; H. F. Walker and P. Ni, *SIAM J.
-/// Numer. Anal.* 49 (2011) 1715, "Type II", undamped): the next iterate
-/// combines the last `depth` images so that the combination of their
-/// residuals T(x) − x is least in the 2-norm.
-struct Anderson {
-    depth: usize,
-    /// Differences of successive iterates and of successive residuals.
-    iterates: Vec<Vec<f64>>,
-    residuals: Vec<Vec<f64>>,
-    last: Option<(Vec<f64>, Vec<f64>)>,
-}
-
-impl Anderson {
-    fn new(depth: usize) -> Self {
-        Self {
-            depth,
-            iterates: Vec::new(),
-            residuals: Vec::new(),
-            last: None,
-        }
-    }
-
-    /// Replaces `x` by the next iterate, given its image `mapped` = T(x).
-    fn next(&mut self, x: &mut [f64], mapped: &[f64]) {
-        let residual: Vec<f64> = mapped.iter().zip(x.iter()).map(|(t, x)| t - x).collect();
-        if let Some((last_x, last_r)) = self.last.take() {
-            self.iterates
-                .push(x.iter().zip(&last_x).map(|(a, b)| a - b).collect());
-            self.residuals
-                .push(residual.iter().zip(&last_r).map(|(a, b)| a - b).collect());
-            if self.iterates.len() > self.depth {
-                self.iterates.remove(0);
-                self.residuals.remove(0);
-            }
-        }
-        self.last = Some((x.to_vec(), residual.clone()));
-        let k = self.residuals.len();
-        // γ = argmin |r − ΔR γ| by the normal equations (k ≤ depth),
-        // with a relative ridge against near-dependent columns.
-        let mut gram = nalgebra::DMatrix::<f64>::zeros(k, k);
-        let mut rhs = nalgebra::DVector::<f64>::zeros(k);
-        for a in 0..k {
-            rhs[a] = dot(&self.residuals[a], &residual);
-            for b in 0..=a {
-                let v = dot(&self.residuals[a], &self.residuals[b]);
-                gram[(a, b)] = v;
-                gram[(b, a)] = v;
-            }
-        }
-        let ridge = 1e-12 * (0..k).map(|a| gram[(a, a)]).fold(0.0, f64::max);
-        for a in 0..k {
-            gram[(a, a)] += ridge;
-        }
-        let gamma = if k > 0 {
-            gram.cholesky().map(|c| c.solve(&rhs))
-        } else {
-            None
-        };
-        for (i, xi) in x.iter_mut().enumerate() {
-            let mut v = *xi + residual[i];
-            if let Some(g) = &gamma {
-                for a in 0..k {
-                    v -= g[a] * (self.iterates[a][i] + self.residuals[a][i]);
-                }
-            }
-            *xi = v;
-        }
-    }
-}
-
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 /// One cell's own problem: with the slip `own` that the other cells'
@@ -501,7 +277,7 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 /// within the bound `g`, or else slips at the bound against the slip:
 /// p = −t s with s = own/(1 + t d) and t|s| = g (t found by a safeguarded
 /// Newton iteration on the increasing function t²|s(t)|² − g²).
-fn local_solution(own: &Vector2<f64>, d: &Vector2<f64>, g: f64) -> (Vector2<f64>, bool) {
+pub(super) fn local_solution(own: &Vector2<f64>, d: &Vector2<f64>, g: f64) -> (Vector2<f64>, bool) {
     let adhere = Vector2::new(-own.x / d.x, -own.y / d.y);
     if adhere.norm() <= g {
         return (adhere, true);

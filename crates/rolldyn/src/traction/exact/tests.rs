@@ -80,8 +80,8 @@ fn normal_problem_reproduces_hertz() {
 /// Kalker's creep coefficients at vanishing creepage (full adhesion) on
 /// the default 32 × 32 grid, for a circle and an ellipse with its short
 /// axis along the rolling direction (a/b = 0.2, as in ball bearings), at
-/// a tabulated ν: within 3 % (measured: 0.9–1.9 %; 24 × 24 cells give
-/// 2–5 %, the grid's first-order error, docs/validation.md).
+/// a tabulated ν: within 3 % (measured 1.1–2.0 %; the grid study in
+/// docs/dynamics.md goes to 0.2–0.9 % at 96 × 96).
 #[test]
 fn small_creepage_gives_kalkers_coefficients() {
     let nu = 0.25;
