@@ -47,7 +47,7 @@
 //! lag behind a turning slip direction in deep slip; the midpoint slip
 //! would lag by half an element and, under spin, overstate the lateral
 //! force (by 17 % at φ = 20 1/m and 47 % at 50 1/m on a 7218B inner
-//! contact with 10 elements). The two are blended by the overshoot
+//! contact with 10 elements, against a fine grid). The two are blended by the overshoot
 //! 1 − g/|p_tentative| (0 at the bound, so p stays continuous where a
 //! cell starts to slip; 1 deep in slip).
 //! On a flat contact
