@@ -69,8 +69,8 @@ const MARGIN: f64 = 1.05;
 /// Default cells along and across the rolling direction.
 pub const DEFAULT_CELLS: usize = 32;
 
-/// Largest accepted number of cells per direction (the dense
-/// convolutions cost O(cells⁴)).
+/// Largest accepted number of cells per direction (the tangential sweeps
+/// cost O(cells⁴) each).
 pub const MAX_CELLS: usize = 200;
 
 /// The exact steady-rolling solver's parameters.
@@ -86,7 +86,8 @@ pub struct ExactRolling {
     pub cells_along: usize,
     /// Cells across it.
     pub cells_across: usize,
-    /// Convergence: largest traction change in a sweep over μ p₀.
+    /// Convergence: largest traction change in a sweep over the largest
+    /// traction.
     pub tolerance: f64,
     /// Most Gauss–Seidel sweeps.
     pub max_sweeps: usize,
@@ -157,6 +158,16 @@ impl ExactRolling {
         spin: &Vector3<f64>,
         rolling: f64,
     ) -> ExactSolution {
+        if patch.load <= 0.0 {
+            return ExactSolution {
+                result: TractionResult::default(),
+                cells: Vec::new(),
+                frictional_power: 0.0,
+                normal_iterations: 0,
+                sweeps: 0,
+                converged: true,
+            };
+        }
         let (na, nc) = (self.cells_along.max(4), self.cells_across.max(4));
         let (along, across) = (patch.semi_minor, patch.semi_major);
         let dx = 2.0 * MARGIN * along / na as f64;

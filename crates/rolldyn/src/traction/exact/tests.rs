@@ -148,6 +148,20 @@ fn creep_coefficients_converge_with_the_grid() {
     assert!(errors[2] < 0.012, "{errors:?}");
 }
 
+/// No load, no traction (and no solve).
+#[test]
+fn no_load_no_traction() {
+    let sol = creep(
+        &ExactRolling::new(0.2, G, 0.3),
+        &patch(0.3e-3, 1.5e-3, 0.0),
+        1e-3,
+        0.0,
+        0.0,
+    );
+    assert_eq!(sol.result.force, Vector3::zeros());
+    assert!(sol.cells.is_empty() && sol.converged);
+}
+
 /// Large creepage slides the whole contact: |F| = μQ against the slip.
 #[test]
 fn full_slip_gives_mu_q() {
