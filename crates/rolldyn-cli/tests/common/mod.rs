@@ -4,6 +4,9 @@
 #![allow(dead_code, clippy::unwrap_used)]
 
 use serde_json::Value;
+
+/// The FASTSIM law as a `--set` override (μ = 0.1).
+pub const FASTSIM: &str = "model.traction={ law = \"fastsim\", friction = 0.1 }";
 use std::io::Write;
 use std::process::{Command, Output, Stdio};
 
