@@ -17,7 +17,7 @@
 //! changes by +δ at the cell and −δ at the first slipping or exterior
 //! cell downstream, J*: the cell sees the 2 × 2 coefficient
 //! (A(0) − A(J* − I))/Δx, diagonal along a line. It then adheres or
-//! slips exactly ([`super::local_solution`]); tractions pushed over their
+//! slips exactly (its own two-by-two friction problem); tractions pushed over their
 //! bound downstream are scaled back onto it.
 
 use super::influence::Influence;
