@@ -40,15 +40,11 @@ pub struct NormalSolution {
 }
 
 impl NormalProblem<'_> {
-    /// u = A p (normal displacement at every cell).
-    fn displacement(&self, convolution: &mut Convolution, p: &[f64], u: &mut [f64]) {
-        convolution.apply(p, u);
-    }
-
     /// Solves to relative tolerance `tolerance` in at most `max_iterations`.
     pub fn solve(&self, tolerance: f64, max_iterations: usize) -> NormalSolution {
         let n = self.along * self.across;
-        let mut convolution = Convolution::new(self.along, self.across, |di, dk| {
+        // u = A p, the normal displacement at every cell.
+        let mut displacement = Convolution::new(self.along, self.across, |di, dk| {
             self.influence.normal[self.influence.index(di, dk)]
         });
         let mut p = vec![self.load / (n as f64 * self.cell_area); n];
@@ -61,7 +57,7 @@ impl NormalProblem<'_> {
         let mut iterations = 0;
         while iterations < max_iterations {
             iterations += 1;
-            self.displacement(&mut convolution, &p, &mut u);
+            displacement.apply(&p, &mut u);
             for c in 0..n {
                 g[c] = u[c] + self.gap[c];
             }
@@ -82,7 +78,7 @@ impl NormalProblem<'_> {
                 };
             }
             g_old = g_norm;
-            self.displacement(&mut convolution, &t, &mut r);
+            displacement.apply(&t, &mut r);
             let r_mean = loaded.iter().map(|&c| r[c]).sum::<f64>() / loaded.len() as f64;
             let (mut num, mut den) = (0.0, 0.0);
             for &c in &loaded {
