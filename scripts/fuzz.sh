@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 17's fuzzing harness for hours: the CI test
+# the fuzzing harness for hours: the CI test
 # (crates/rolldyn-cli/tests/fuzz.rs) with many more cases, on the release
 # build. Usage: scripts/fuzz.sh [CASES] [SEED]   (default 100000 cases, seed 1)
 # Prints the cases per command and exit code, and every failure with its

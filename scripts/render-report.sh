@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders DIR/report.html in headless Chromium to DIR/report.png for a
-# look (issue 14: the report needs no network and no script).
+# look (the report needs no network and no script).
 #   scripts/render-report.sh DIR [WIDTH]
 # Installs Debian's chromium when it is missing (needs root and apt).
 set -euo pipefail

@@ -1,4 +1,4 @@
-"""Seed 000 Fig. 6: mean cage speed of the 6304 at 8000 rpm against the
+"""Shan et al. 2023 Fig. 6: mean cage speed of the 6304 at 8000 rpm against the
 radial load W, from `rolldyn run --sweep` (README), with the measured
 2940 rpm and the paper's largest deviation (4.24 %).
 
@@ -23,11 +23,11 @@ rolling = [float(r["pure_rolling_cage_speed_rpm"]) for r in rows]
 fig, ax = plt.subplots(figsize=(6, 4))
 ax.plot(load, cage, "o-", label="rolldyn, mean over the averaging window")
 ax.plot(load, rolling, "--", label="pure rolling (solved contact angles)")
-ax.axhline(2940, color="k", lw=1, label="measured (seed 000 §3)")
+ax.axhline(2940, color="k", lw=1, label="measured (Shan et al. 2023 §3)")
 ax.axhspan(2940 * (1 - 0.0424), 2940 * (1 + 0.0424), color="0.9", label="paper's model: within 4.24 %")
 ax.set_xlabel("radial load W [N]")
 ax.set_ylabel("cage speed [rpm]")
-ax.set_title("6304 at 8000 rpm (seed 000 Fig. 6)")
+ax.set_title("6304 at 8000 rpm (Shan et al. 2023 Fig. 6)")
 ax.legend(fontsize=8)
 fig.tight_layout()
 fig.savefig(sweep / "fig6_cage_speed.png", dpi=150)

@@ -1,14 +1,14 @@
-//! Seed 001 (Deng et al. 2022, Nonlinear Dyn.), §3: the 7008C at
+//! Deng et al. 2022 (Nonlinear Dyn.), §3: the 7008C at
 //! 10 000 rpm with raceway and ball waviness.
 //!
 //! * C3 (Fig. 10b): outer-race waviness of order 22 and 0.3 µm, F_x = 50 …
 //!   500 N, F_z = 0: the cage speed ratio ω_c/ω_i against its pure-rolling
-//!   value (MODEL §7 with the actual contact angles and ball attitude).
+//!   value (docs/model.md §7 with the actual contact angles and ball attitude).
 //! * C4 (Tables 2 and 3): waviness of 0.3 µm on one part at a time (outer
 //!   orders 21, 22, 23; inner 21, 22, 23; ball 2, 4), F_x = 200 N: the
 //!   largest peak above 300 Hz of the inner-ring acceleration spectrum in
 //!   the direction Table 2 names (axial: x; radial: √(A_y² + A_z²)) against
-//!   Table 2's line from the run's mean cage speed and seed 001's Table 3.
+//!   Table 2's line from the run's mean cage speed and Deng et al. 2022's Table 3.
 //!
 //! `cargo run --release --example seed001 [-- DURATION_S [OUT_DIR]]`
 //! (default 0.05 s, `examples/seed001/out`). Runs on two threads (each run
@@ -41,7 +41,7 @@ struct Outcome {
 }
 
 /// A C4 family: where the waviness is, its order, Table 2's direction and
-/// line, and seed 001 Table 3's model and theory values \[Hz\].
+/// line, and Deng et al. 2022 Table 3's model and theory values \[Hz\].
 struct Family {
     part: &'static str,
     order: u32,
@@ -129,7 +129,7 @@ fn main() -> Result<(), String> {
     let mut table = String::new();
     let _ = writeln!(
         table,
-        "C3 (seed 001 Fig. 10b): 7008C, 10 000 rpm, outer waviness l = 22, 0.3 µm, {duration} s, means over the second half\n\
+        "C3 (Deng et al. 2022 Fig. 10b): 7008C, 10 000 rpm, outer waviness l = 22, 0.3 µm, {duration} s, means over the second half\n\
          {:>8} {:>10} {:>12} {:>12}",
         "F_x [N]", "CSR", "CSR rolling", "sliding"
     );
@@ -146,7 +146,7 @@ fn main() -> Result<(), String> {
     }
     let _ = writeln!(
         table,
-        "\nC4 (seed 001 Tables 2, 3): F_x = 200 N, 0.3 µm waviness; peak of the inner-ring acceleration above 300 Hz\n\
+        "\nC4 (Deng et al. 2022 Tables 2, 3): F_x = 200 N, 0.3 µm waviness; peak of the inner-ring acceleration above 300 Hz\n\
          {:>6} {:>3} {:>7} {:>11} {:>10} {:>8} {:>13} {:>13}",
         "part", "l", "motion", "Table 2 Hz", "peak Hz", "bin Hz", "seed model Hz", "seed theory Hz"
     );

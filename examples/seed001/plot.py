@@ -1,4 +1,4 @@
-"""Seed 001 Fig. 10b (C3) and Table 2 (C4) from the example's output:
+"""Deng et al. 2022 Fig. 10b (C3) and Table 2 (C4) from the example's output:
 cage speed ratio against axial load with its pure-rolling value, and the
 inner-ring acceleration spectra of the waviness families.
 
@@ -23,7 +23,7 @@ a.plot(load, [float(r["cage_speed_ratio"]) for r in rows], "o-", label="rolldyn"
 a.plot(load, [float(r["pure_rolling_cage_speed_ratio"]) for r in rows], "--", label="pure rolling")
 a.set_xlabel("axial load F_x [N]")
 a.set_ylabel("cage speed ratio ω_c/ω_i")
-a.set_title("C3: seed 001 Fig. 10b")
+a.set_title("C3: Deng et al. 2022 Fig. 10b")
 a.legend()
 for path in sorted(out.glob("spectrum_*.csv")):
     spectrum = list(csv.DictReader(open(path)))
@@ -36,7 +36,7 @@ for path in sorted(out.glob("spectrum_*.csv")):
 b.set_xlim(0, 4000)
 b.set_xlabel("frequency [Hz]")
 b.set_ylabel("acceleration amplitude [m/s²]")
-b.set_title("C4: waviness lines (seed 001 Table 2)")
+b.set_title("C4: waviness lines (Deng et al. 2022 Table 2)")
 b.legend(fontsize=6)
 fig.tight_layout()
 fig.savefig(out / "seed001.png", dpi=150)

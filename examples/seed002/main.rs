@@ -1,10 +1,10 @@
-//! Seed 002 (Zhang, Zhao, Wei, Zi 2025, Lubricants 13, 218), §4: the
+//! Zhang, Zhao, Wei & Zi 2025 (Lubricants 13, 218), §4: the
 //! 7218B preset accelerated from 1000 rpm (held to 0.5 s) at
 //! 10 000 rpm/s to 10 000 rpm (1.4 s), held to 2.5 s, with Kalker's
 //! FASTSIM at every ball–raceway contact, friction μ = 0.001 and 0.1.
 //!
-//! Start: the traction-consistent quasi-static state at 1000 rpm (seed
-//! 002 §3.1's tribological start) where it exists (μ = 0.1), else
+//! Start: the traction-consistent quasi-static state at 1000 rpm (Zhang et al. 2025
+//! §3.1's tribological start) where it exists (μ = 0.1), else
 //! Jones–Harris (μ = 0.001: the balls have no rolling equilibrium).
 //!
 //! `cargo run --release --example seed002 [-- DURATION_S [OUT_DIR]]`
@@ -82,7 +82,7 @@ fn simulate(mu: f64, duration: f64, out: &Path) -> Result<Vec<Row>, String> {
     );
     let mut model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
         .map_err(|e| e.to_string())?;
-    // Seed 002 §3.1 starts from a quasi-static solution at the idle speed.
+    // Zhang et al. 2025 §3.1 starts from a quasi-static solution at the idle speed.
     let qs = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
         .map_err(|e| e.to_string())?;
     let eq = qs
@@ -95,7 +95,7 @@ fn simulate(mu: f64, duration: f64, out: &Path) -> Result<Vec<Row>, String> {
             &SolverOptions::default(),
         )
         .map_err(|e| e.to_string())?;
-    // Seed 002's tribological start: the traction-consistent state; with
+    // Zhang et al. 2025's tribological start: the traction-consistent state; with
     // μ = 0.001 the balls have none (the gyroscopic moment exceeds the
     // friction), and the run starts from Jones–Harris.
     let jones_harris = model.state_from_equilibrium(&eq);

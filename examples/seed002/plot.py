@@ -1,4 +1,4 @@
-"""Seed 002 (C5/C6): cage speed ratio against time during the 7218B
+"""Zhang et al. 2025 (C5/C6): cage speed ratio against time during the 7218B
 speed ramp, for each friction coefficient the example runs.
 
     cargo run --release --example seed002      # writes examples/seed002/out
@@ -23,7 +23,7 @@ for path in sorted(out.glob("timeseries_mu*.csv")):
     ax.plot(t, [float(r["pure_rolling_cage_speed_ratio"]) for r in rows], "--", lw=0.8, label="pure rolling")
 ax.set_xlabel("time [s]")
 ax.set_ylabel("cage speed ratio ω_c/ω_i")
-ax.set_title("7218B start-up (seed 002)")
+ax.set_title("7218B start-up (Zhang et al. 2025)")
 ax.legend(fontsize=8)
 fig.tight_layout()
 fig.savefig(out / "seed002.png", dpi=150)

@@ -1,6 +1,6 @@
-//! Seed 003 §3's dynamic part: the inner ring's vibration against the
+//! Zhang et al. 2020 §3's dynamic part: the inner ring's vibration against the
 //! inlet distance ratio L, from dynamic runs of the ceramic 45×75 preset
-//! with the film in the normal approach (MODEL §4).
+//! with the film in the normal approach (docs/model.md §4).
 //!
 //! Each run starts from the quasi-static equilibrium with the same films
 //! (tilts held, as the example's stiffness table; the dynamic ring then
@@ -13,7 +13,7 @@
 //! ring's resonance; interpolated between bins by a parabola through the
 //! log amplitudes).
 //!
-//! **Damping is an assumption.** Seed 003 gives its contacts no damping,
+//! **Damping is an assumption.** Zhang et al. 2020 gives its contacts no damping,
 //! and without one the model's ring keeps its start transient (Hertz
 //! springs, no support). The runs use the viscous contact law with a
 //! damping ratio ζ (c_n = 2ζ√(k_n m_b) at the contact's linearised
@@ -44,7 +44,7 @@ pub const PEAK_ABOVE: f64 = 500.0;
 /// Harmonics k Z f_c (k ≤ 6) are excluded from the resonance search within
 /// this many bins.
 const HARMONIC_BINS: f64 = 3.0;
-/// Contact damping ratio of the table (assumed: seed 003 gives none).
+/// Contact damping ratio of the table (assumed: Zhang et al. 2020 gives none).
 pub const DAMPING_RATIO: f64 = 0.05;
 /// Damping ratios of the sensitivity rows (20 N, L = 1.1 and 1.9).
 pub const SENSITIVITY: [f64; 2] = [0.02, 0.1];

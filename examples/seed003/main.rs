@@ -1,29 +1,29 @@
-//! Seed 003 (Zhang et al. 2020, ceramic ball bearing with starved
+//! Zhang et al. 2020 (ceramic ball bearing with starved
 //! lubrication), §3, quasi-static part: the ceramic 45×75 preset (Si3N4
 //! balls, assumed ISO VG 32 oil) at 15 000 rpm under F_z = 10, 20, 30 N
 //! with the inlet distance ratio L = 1.1 … 1.9 and fully flooded: for the
-//! most loaded ball's inner contact, the critical ratio L* (seed 003
+//! most loaded ball's inner contact, the critical ratio L* (Zhang et al. 2020
 //! eq 29), the flooded and starved central films (eq 30), the starvation
 //! factor, the oil-film stiffness K_oil (eq 37), the Hertz stiffness
 //! dQ/dδ and the two in series.
 //!
 //! With assumed surfaces, that contact's film parameter Λ = h_min/σ and
-//! its asperity share φ (mixed lubrication, MODEL §3 model 5).
+//! its asperity share φ (mixed lubrication, docs/model.md §3 model 5).
 //!
-//! Then, with the film in the normal approach (MODEL §4; seed 003 eqs
+//! Then, with the film in the normal approach (docs/model.md §4; Zhang et al. 2020 eqs
 //! 39–46): the equilibrium solved with each contact compressed by δ + h(Q),
 //! the radial stiffness K_zz (the film's compliance in series with Hertz,
 //! and its take-up of clearance), and the radial natural frequency
-//! f_z = √(K_zz/M)/2π (seed 003 eq 46, which prints 0.5π for 1/2π) against
+//! f_z = √(K_zz/M)/2π (Zhang et al. 2020 eq 46, which prints 0.5π for 1/2π) against
 //! the dry bearing's. M is the inner-ring mass of the dynamic runs below
 //! (the preset's estimate: a steel annulus from the bore to the inner
-//! raceway, 16 mm wide; seed 003 gives no mass).
+//! raceway, 16 mm wide; Zhang et al. 2020 gives no mass).
 //!
 //!
 //! Last, the dynamic part ([`dynamic`]): the inner ring's vibration
 //! velocity (RMS, largest, and the spectral peak frequency) from dynamic
 //! runs with the film in the approach against L, dry and flooded, at an
-//! assumed contact damping ratio (seed 003 gives none).
+//! assumed contact damping ratio (Zhang et al. 2020 gives none).
 //!
 //! `cargo run --release --example seed003 [-- OUT_DIR]` (default
 //! `examples/seed003/out`; about two minutes on two cores, the dynamic
@@ -41,7 +41,7 @@ use std::path::PathBuf;
 
 const RADIAL_LOADS: [f64; 3] = [10.0, 20.0, 30.0];
 /// Composite roughness of the mixed-lubrication table \[m\]: assumed
-/// (seed 003 gives none), steel raceways R_q 0.1 µm and Si3N4 balls 0.02 µm.
+/// (Zhang et al. 2020 gives none), steel raceways R_q 0.1 µm and Si3N4 balls 0.02 µm.
 const MIXED_ROUGHNESS: f64 = 0.101_98e-6;
 /// Mixed-lubrication parameters of that table: assumed typical values
 /// (docs/lubrication.md), boundary friction 0.1.
@@ -55,7 +55,7 @@ const MIXED: rolldyn::lubrication::mixed::MixedLubrication =
         sigma_beta_eta: 0.04,
         sigma_over_beta: 1e-3,
     };
-/// Inlet distance ratios of seed 003 §3, and ∞ (fully flooded).
+/// Inlet distance ratios of Zhang et al. 2020 §3, and ∞ (fully flooded).
 const RATIOS: [f64; 6] = [1.1, 1.3, 1.5, 1.7, 1.9, f64::INFINITY];
 /// The film-in-the-approach table adds ratios up to and past L* (8–12).
 const APPROACH_RATIOS: [f64; 10] = [1.1, 1.3, 1.5, 1.7, 1.9, 3.0, 5.0, 8.0, 12.0, f64::INFINITY];
@@ -67,7 +67,7 @@ fn main() -> Result<(), String> {
     std::fs::create_dir_all(&out).map_err(|e| format!("{}: {e}", out.display()))?;
     let preset = presets::find("ceramic_45x75").ok_or("no ceramic_45x75 preset")?;
     let mut table = String::from(
-        "Seed 003 §3: ceramic 45x75, 15 000 rpm, most loaded ball, inner contact\n\
+        "Zhang et al. 2020 §3: ceramic 45x75, 15 000 rpm, most loaded ball, inner contact\n\
          F_z [N]      L   Q_i [N]      L*  h_c flooded [µm]  h_c [µm]  factor  K_oil [N/m]  dQ/dδ [N/m]  series [N/m]\n",
     );
     let mut csv = String::from(
@@ -80,14 +80,14 @@ fn main() -> Result<(), String> {
         .map_err(|e| format!("{}: {}", e.key, e.rule))?
         .inner_ring_mass;
     let mut mixed = format!(
-        "\nMixed lubrication (MODEL §3 model 5, assumed surfaces: σ = {:.3} µm, σβη = {}, σ/β = {}): film parameter and asperity share of the same contact\n\
+        "\nMixed lubrication (docs/model.md §3 model 5, assumed surfaces: σ = {:.3} µm, σβη = {}, σ/β = {}): film parameter and asperity share of the same contact\n\
          F_z [N]      L  h_min [µm]        Λ         φ\n",
         MIXED_ROUGHNESS * 1e6,
         MIXED.sigma_beta_eta,
         MIXED.sigma_over_beta
     );
     let mut approach = format!(
-        "\nFilm in the normal approach (MODEL §4): radial stiffness K_zz and f_z = √(K_zz/M)/2π, M = {:.1} g (the preset's inner ring)\n\
+        "\nFilm in the normal approach (docs/model.md §4): radial stiffness K_zz and f_z = √(K_zz/M)/2π, M = {:.1} g (the preset's inner ring)\n\
          F_z [N]      L   loaded balls  max Q_i [N]  K_zz [N/m]  f_z [Hz]  dry K_zz [N/m]  dry f_z [Hz]\n",
         ring_mass * 1e3
     );
@@ -141,7 +141,7 @@ fn main() -> Result<(), String> {
                 hertz_stiffness,
                 series
             );
-            // Mixed lubrication (MODEL §3 model 5) with assumed surfaces.
+            // Mixed lubrication (docs/model.md §3 model 5) with assumed surfaces.
             let lambda = film.minimum / MIXED_ROUGHNESS;
             let e = contact.hertz;
             let share = MIXED.asperity_share(
@@ -166,7 +166,7 @@ fn main() -> Result<(), String> {
                 film.stiffness
             );
         }
-        // The film in the approach, tilts held (seed 003's ring moves in
+        // The film in the approach, tilts held (Zhang et al. 2020's ring moves in
         // its radial plane only; under a pure radial load at 15 000 rpm the
         // free-tilt solution is not found with the film).
         let options = SolverOptions {

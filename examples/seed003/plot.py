@@ -1,4 +1,4 @@
-"""Seed 003 (C7): central film of the most loaded inner contact against the
+"""Zhang et al. 2020 (C7): central film of the most loaded inner contact against the
 inlet distance ratio L, one curve per radial load, with the critical ratio
 L* above which the contact is flooded; and, with the film in the normal
 approach, the radial natural frequency against L (dashed: dry); and from
@@ -28,7 +28,7 @@ for k, fz in enumerate(sorted({r["radial_load_n"] for r in rows}, key=float)):
     ax.axvline(float(group[0]["critical_inlet_distance_ratio"]), color=f"C{k}", ls=":", lw=0.8)
 ax.set_xlabel("inlet distance ratio L")
 ax.set_ylabel("central film h_c [µm]")
-ax.set_title("Ceramic 45x75 at 15 000 rpm: starved film (seed 003); dotted: L*")
+ax.set_title("Ceramic 45x75 at 15 000 rpm: starved film (Zhang et al. 2020); dotted: L*")
 ax.legend(fontsize=8)
 approach = list(csv.DictReader(open(out / "approach.csv")))
 approach = [r for r in approach if r["inlet_distance_ratio"] != "inf"]

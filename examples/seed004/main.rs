@@ -1,10 +1,10 @@
-//! Seed 004 (Lei et al. 2023, under-race lubricated angular-contact
+//! Lei et al. 2023 (under-race lubricated angular-contact
 //! bearing), §5–6: the 30×62×16 preset (its oil, cage land and traction are
-//! assumed: seed 004 gives none) at F_a 3000 N, F_r 780 N, 9000 … 17 000 rpm.
+//! assumed: Lei et al. 2023 gives none) at F_a 3000 N, F_r 780 N, 9000 … 17 000 rpm.
 //! For each speed: Harris's local power loss by component (inner and outer
 //! raceway, cage, drag), and the coupled thermal steady state (viscosity
 //! and operating clearance fed back), the outer-ring temperature next to
-//! seed 004 Table 2. Then the dynamic model's exact dissipation by
+//! Lei et al. 2023 Table 2. Then the dynamic model's exact dissipation by
 //! component at 9000 rpm (a 40 ms run from the Jones–Harris state) next to
 //! the quasi-static estimate.
 //!
@@ -19,7 +19,7 @@ use rolldyn_case::{Override, load_case, presets};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-/// Seed 004 Table 2: speed [rpm], friction power of the inner and outer
+/// Lei et al. 2023 Table 2: speed [rpm], friction power of the inner and outer
 /// ring [W], outer-ring temperature of the dynamics-based network and of
 /// the finite-element model [°C].
 const TABLE2: [(f64, f64, f64, f64, f64); 9] = [
@@ -50,7 +50,7 @@ fn main() -> Result<(), String> {
     }));
     std::fs::create_dir_all(&out).map_err(|e| format!("{}: {e}", out.display()))?;
     let mut table = String::from(
-        "Seed 004 §5-6: 30x62x16, F_a 3000 N, F_r 780 N; local method + coupled network\n\
+        "Lei et al. 2023 §5-6: 30x62x16, F_a 3000 N, F_r 780 N; local method + coupled network\n\
          speed    inner W  outer W  spin W  hyst W  diff W  cage W   total W   T_outer °C | Table 2: inner W  outer W  T_outer °C (FE)\n",
     );
     let mut csv = String::from(

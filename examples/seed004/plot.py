@@ -1,4 +1,4 @@
-"""Seed 004 (C8): friction power and outer-ring temperature of the
+"""Lei et al. 2023 (C8): friction power and outer-ring temperature of the
 30x62x16 angular-contact bearing against speed, rolldyn against the
 paper's values.
 
@@ -28,14 +28,14 @@ fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4))
 a.plot(speed, column("total_w"), "o-", label="rolldyn total")
 a.plot(speed, column("inner_w"), "s-", label="rolldyn inner")
 a.plot(speed, column("outer_w"), "^-", label="rolldyn outer")
-a.plot(speed, column("paper_inner_w"), "s--", label="seed 004 inner")
-a.plot(speed, column("paper_outer_w"), "^--", label="seed 004 outer")
+a.plot(speed, column("paper_inner_w"), "s--", label="Lei et al. 2023 inner")
+a.plot(speed, column("paper_outer_w"), "^--", label="Lei et al. 2023 outer")
 a.set_xlabel("speed [rpm]")
 a.set_ylabel("friction power [W]")
 a.legend(fontsize=8)
 b.plot(speed, column("outer_ring_c"), "o-", label="rolldyn")
-b.plot(speed, column("paper_outer_ring_c"), "s--", label="seed 004 network")
-b.plot(speed, column("paper_fe_outer_ring_c"), "^:", label="seed 004 FE")
+b.plot(speed, column("paper_outer_ring_c"), "s--", label="Lei et al. 2023 network")
+b.plot(speed, column("paper_fe_outer_ring_c"), "^:", label="Lei et al. 2023 FE")
 b.set_xlabel("speed [rpm]")
 b.set_ylabel("outer-ring temperature [°C]")
 b.legend(fontsize=8)

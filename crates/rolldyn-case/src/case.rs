@@ -1,4 +1,4 @@
-//! The validated case: SI units, every rule of MODEL §2 checked. Built by
+//! The validated case: SI units, every rule of docs/model.md §2 checked. Built by
 //! [`crate::load_case`] from a [`RawCase`]; nothing runs on unchecked input.
 
 use crate::raw::*;

@@ -10,6 +10,25 @@
 //! * [`case`] — the validated case and its rules;
 //! * [`presets`] — the papers' bearings and common catalogue bearings;
 //! * [`load_case`] — the pipeline text → [`Case`].
+//!
+//! A case from text, with a command-line style override; values are SI
+//! once validated, and bad input names the key, the value and the rule:
+//! ```
+//! use rolldyn_case::{Override, load_case, presets};
+//!
+//! let text = presets::find("6304").expect("a built-in preset").text;
+//! let speed = Override::parse_set("operating.speed=\"3000 rpm\"")?;
+//! let case = load_case("6304.toml", text, &[speed])?;
+//! assert_eq!(case.bearing.geometry.ball_count, 7);
+//! assert!((case.bearing.geometry.ball_diameter - 9.52e-3).abs() < 1e-12);
+//! let rpm = case.speed.as_ref().map(|s| s.final_speed() * 60.0 / std::f64::consts::TAU);
+//! assert!((rpm.unwrap() - 3000.0).abs() < 1e-9);
+//!
+//! let typo = Override::parse_set("bearing.ball_diameter=\"9.52 mmm\"")?;
+//! let error = load_case("6304.toml", text, &[typo]).unwrap_err();
+//! assert!(error.to_string().contains("bearing.ball_diameter"));
+//! # Ok::<(), rolldyn_case::CaseError>(())
+//! ```
 
 pub mod case;
 pub mod error;

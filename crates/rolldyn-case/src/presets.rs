@@ -17,27 +17,27 @@ pub struct Preset {
 pub const PRESETS: &[Preset] = &[
     Preset {
         name: "7008C",
-        summary: "angular contact 40x68x15, 22 balls, 17.7 deg (seed 001 Table 1); the default case",
+        summary: "angular contact 40x68x15, 22 balls, 17.7 deg (Deng et al. 2022 Table 1); the default case",
         text: include_str!("../presets/7008C.toml"),
     },
     Preset {
         name: "6304",
-        summary: "deep groove 20x52x15, 7 balls, clearance 0.005 mm (seed 000 Table 1)",
+        summary: "deep groove 20x52x15, 7 balls, clearance 0.005 mm (Shan et al. 2023 Table 1)",
         text: include_str!("../presets/6304.toml"),
     },
     Preset {
         name: "7218B",
-        summary: "angular contact 90x160x30, 16 balls, 40 deg (seed 002 Table 2 + Harris's 218 example)",
+        summary: "angular contact 90x160x30, 16 balls, 40 deg (Zhang et al. 2025 Table 2 + Harris's 218 example)",
         text: include_str!("../presets/7218B.toml"),
     },
     Preset {
         name: "ceramic_45x75",
-        summary: "hybrid angular contact 45x75, 18 Si3N4 balls, 15 deg (seed 003 Table 1)",
+        summary: "hybrid angular contact 45x75, 18 Si3N4 balls, 15 deg (Zhang et al. 2020 Table 1)",
         text: include_str!("../presets/ceramic_45x75.toml"),
     },
     Preset {
         name: "acbb_30x62",
-        summary: "angular contact 30x62x16, 11 balls, 30 deg (seed 004 Table 1)",
+        summary: "angular contact 30x62x16, 11 balls, 30 deg (Lei et al. 2023 Table 1)",
         text: include_str!("../presets/acbb_30x62.toml"),
     },
     Preset {

@@ -121,7 +121,7 @@ pub struct RawBearing {
     pub width: Option<Quantity<Length>>,
 }
 
-/// Cage data (MODEL §5). All optional until the dynamic engine needs them.
+/// Cage data (docs/model.md §5). All optional until the dynamic engine needs them.
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RawCage {
@@ -144,16 +144,16 @@ pub struct RawCage {
     /// Pocket shape: "cylindrical" (default; no radial guidance by the
     /// balls) or "spherical".
     pub pocket_shape: Option<rolldyn::cage::PocketShape>,
-    /// Ball–pocket normal force law: "linear" (default; seed 002 eq 6),
-    /// "hertz" (seed 001 eq 29; K_bc from the ball and pocket curvatures and
-    /// `cage.material`) or "gupta_film" (seed 001 eqs 26–28).
+    /// Ball–pocket normal force law: "linear" (default; Zhang et al. 2025 eq 6),
+    /// "hertz" (Deng et al. 2022 eq 29; K_bc from the ball and pocket curvatures and
+    /// `cage.material`) or "gupta_film" (Deng et al. 2022 eqs 26–28).
     pub pocket_law: Option<PocketLawChoice>,
-    /// Ball–pocket contact stiffness k (linear law, seed 002 eq 6).
+    /// Ball–pocket contact stiffness k (linear law, Zhang et al. 2025 eq 6).
     pub pocket_stiffness: Option<Quantity<Stiffness>>,
     /// Ball–pocket contact damping c.
     pub pocket_damping: Option<Quantity<Damping>>,
     /// Film force at the pocket wall F_w of the gupta_film law (default
-    /// 11 N, seed 001 eq 28).
+    /// 11 N, Deng et al. 2022 eq 28).
     pub pocket_wall_force: Option<Quantity<Force>>,
     /// Squeeze-film damping of the pocket oil film (default false; needs
     /// `[lubricant]`; a rolldyn extension, docs/dynamics.md).
@@ -175,7 +175,7 @@ pub struct RawCage {
     pub whirl: Option<bool>,
 }
 
-/// Drag of the air–oil mixture (seed 001 eqs 10–12, 24, 36, corrected;
+/// Drag of the air–oil mixture (Deng et al. 2022 eqs 10–12, 24, 36, corrected;
 /// docs/dynamics.md). All off by default.
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -201,8 +201,8 @@ pub struct RawInnerRing {
     pub mass: Option<Quantity<Mass>>,
     /// Transverse (tilt) moment of inertia. Default: that of the ring annulus.
     pub tilt_inertia: Option<Quantity<Inertia>>,
-    /// Radial (y, z) stiffness of a support between ring and ground (seed
-    /// 002 eqs 11–13; default 0: free).
+    /// Radial (y, z) stiffness of a support between ring and ground (Zhang et al. 2025
+    /// eqs 11–13; default 0: free).
     pub support_radial_stiffness: Option<Quantity<Stiffness>>,
     /// Axial (x) support stiffness (default 0).
     pub support_axial_stiffness: Option<Quantity<Stiffness>>,
@@ -212,7 +212,7 @@ pub struct RawInnerRing {
     pub support_axial_damping: Option<Quantity<Damping>>,
 }
 
-/// The outer ring on a housing spring–damper (seed 002 eqs 14–15): radial
+/// The outer ring on a housing spring–damper (Zhang et al. 2025 eqs 14–15): radial
 /// translation (y_o, z_o).
 #[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -225,15 +225,15 @@ pub struct RawOuterRing {
     pub housing_damping: Option<Quantity<Damping>>,
 }
 
-/// Ball–pocket normal force law (MODEL §5).
+/// Ball–pocket normal force law (docs/model.md §5).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum PocketLawChoice {
-    /// k δ + c δ̇ beyond the clearance (seed 002 eq 6).
+    /// k δ + c δ̇ beyond the clearance (Zhang et al. 2025 eq 6).
     Linear,
-    /// K_bc δ^{3/2} + c δ̇ beyond the clearance (seed 001 eq 29).
+    /// K_bc δ^{3/2} + c δ̇ beyond the clearance (Deng et al. 2022 eq 29).
     Hertz,
-    /// F_w d/c inside the clearance, F_w + Hertz beyond (seed 001 eqs 26–28).
+    /// F_w d/c inside the clearance, F_w + Hertz beyond (Deng et al. 2022 eqs 26–28).
     GuptaFilm,
 }
 
@@ -343,13 +343,13 @@ pub struct RawLubricant {
     /// "roelands".
     pub pressure_viscosity_model: Option<rolldyn::lubrication::PressureViscosity>,
     /// Starvation: inlet distance ratio L = X_b/b of both rings' contacts
-    /// (> 1; absent: fully flooded; seed 003 eqs 28–30).
+    /// (> 1; absent: fully flooded; Zhang et al. 2020 eqs 28–30).
     pub inlet_distance_ratio: Option<f64>,
     /// Inlet distance ratio of the inner-raceway contacts only.
     pub inlet_distance_ratio_inner: Option<f64>,
     /// Inlet distance ratio of the outer-raceway contacts only.
     pub inlet_distance_ratio_outer: Option<f64>,
-    /// Starvation from an oil supply flow Q_v instead (seed 003 eqs 26–27;
+    /// Starvation from an oil supply flow Q_v instead (Zhang et al. 2020 eqs 26–27;
     /// needs `density`).
     pub oil_flow: Option<Quantity<VolumeFlow>>,
     /// A second viscosity point for the viscosity–temperature law (Walther,
@@ -445,7 +445,7 @@ pub struct RawModel {
     /// viscous (damping in N·s/m, or damping_ratio).
     pub normal_law: Option<NormalLawChoice>,
     /// Hertz contact-stiffness model: "exact" (default), "hamrock_brewe",
-    /// "hertz_circular" (seed 000 eq 12, planar papers only).
+    /// "hertz_circular" (Shan et al. 2023 eq 12, planar papers only).
     pub contact_stiffness: Option<rolldyn::contact::HertzModel>,
     /// Lower bound v_floor of the recorded impact speed of the hysteresis
     /// laws (default 1 mm/s).
@@ -465,17 +465,17 @@ pub struct RawModel {
     /// (default) or `{ method = "centre" }`.
     pub traction_integration: Option<rolldyn::traction::TractionIntegration>,
     /// Elastic-hysteresis coefficient α_h of the rolling resistance
-    /// (MODEL §3; seed 004 eq 21: 0.007 for steel). Default 0 (off).
+    /// (docs/model.md §3; Lei et al. 2023 eq 21: 0.007 for steel). Default 0 (off).
     pub rolling_hysteresis: Option<f64>,
-    /// Planar mode (seed 000): axial motion and tilts frozen (default false).
+    /// Planar mode (Shan et al. 2023): axial motion and tilts frozen (default false).
     pub planar: Option<bool>,
     /// Gravity along −z (default false).
     pub gravity: Option<bool>,
-    /// Lubricant film in the normal approach (MODEL §4): elastic
+    /// Lubricant film in the normal approach (docs/model.md §4): elastic
     /// compression δ + h, the film a state of each contact following its
     /// steady value (default false; needs a traction law with a lubricant).
     pub film_in_approach: Option<bool>,
-    /// Mixed lubrication (MODEL §3, model 5): boundary friction on the
+    /// Mixed lubrication (docs/model.md §3, model 5): boundary friction on the
     /// asperities' share of each contact's load, from Λ = h_min/σ
     /// (Greenwood–Tripp load sharing; needs traction law ehl and the
     /// surfaces' roughness).
@@ -512,7 +512,7 @@ pub enum TractionChoice {
 pub enum RawTraction {
     /// No traction.
     None,
-    /// Modified Coulomb (seed 000 eqs 14–15).
+    /// Modified Coulomb (Shan et al. 2023 eqs 14–15).
     ModifiedCoulomb {
         /// Friction coefficient μ ≥ 0.
         friction: f64,
@@ -521,7 +521,7 @@ pub enum RawTraction {
         /// Slip speed from which full friction acts v₁ (default 1 mm/s).
         full_speed: Option<Quantity<Velocity>>,
     },
-    /// Traction curve μ(S) = (A + B S) e^{−C S} + D (seed 004 eq 18).
+    /// Traction curve μ(S) = (A + B S) e^{−C S} + D (Lei et al. 2023 eq 18).
     TractionCurve {
         /// A.
         a: f64,
@@ -536,14 +536,14 @@ pub enum RawTraction {
         /// Slip speed of full traction (regularisation; default 1 mm/s).
         full_speed: Option<Quantity<Velocity>>,
     },
-    /// EHL rheology (seed 001 eqs 13–15; lubricant from the `[lubricant]` section).
+    /// EHL rheology (Deng et al. 2022 eqs 13–15; lubricant from the `[lubricant]` section).
     Ehl {
         /// Eyring stress τ₀.
         eyring_stress: Quantity<Pressure>,
         /// Limiting shear-stress coefficient Λ_L.
         limiting_shear_coefficient: f64,
     },
-    /// Kalker's FASTSIM (seed 002 §2.2; G and ν from the materials).
+    /// Kalker's FASTSIM (Zhang et al. 2025 §2.2; G and ν from the materials).
     Fastsim {
         /// Friction coefficient μ ≥ 0.
         friction: f64,
@@ -642,7 +642,7 @@ impl JsonSchema for NormalLawChoice {
     }
     fn json_schema(g: &mut SchemaGenerator) -> Schema {
         json_schema!({
-            "description": "A normal force law (MODEL §2.3).",
+            "description": "A normal force law (docs/model.md §2.3).",
             "anyOf": [
                 { "type": "string", "enum": ["hertz"] },
                 g.subschema_for::<NormalForceLaw>(),
@@ -671,7 +671,7 @@ pub struct RawSolver {
     /// Step of the fixed-step integrator (rk4).
     pub time_step: Option<Quantity<Time>>,
     /// Initial state: "jones_harris" (default), "quasistatic_traction"
-    /// (seed 002 §3.1) or "pure_rolling".
+    /// (Zhang et al. 2025 §3.1) or "pure_rolling".
     pub start: Option<StartChoice>,
 }
 
@@ -700,7 +700,7 @@ pub enum StartChoice {
     /// Balls at the pitch circle with pure-rolling speeds.
     PureRolling,
     /// The traction-consistent quasi-static state: ball speeds from the
-    /// force and moment balance with the case's traction model (seed 002
+    /// force and moment balance with the case's traction model (Zhang et al. 2025
     /// §3.1's tribological start), from the Jones–Harris solution.
     QuasistaticTraction,
 }

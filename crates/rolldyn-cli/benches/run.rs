@@ -3,14 +3,14 @@
 //! presets), reporting the CLI's own timing from summary.json (wall time,
 //! integrator, steps, rejected steps, RHS evaluations, Jacobians and
 //! factorizations):
-//! (a) 6304 preset (seed 000: planar, L–N, modified Coulomb at the contact
+//! (a) 6304 preset (Shan et al. 2023: planar, L–N, modified Coulomb at the contact
 //!     centre, W = 100 N, 8000 rpm), 0.2 s simulated;
 //! (b) the built-in default case (7008C, 10 000 rpm, F_x = 200 N, EHL on
 //!     the 12 × 6 grid, from the Jones–Harris state), 0.05 s simulated;
-//! (c) the 7218B preset on seed 002's speed ramp (1000 → 10 000 rpm,
+//! (c) the 7218B preset on Zhang et al. 2025's speed ramp (1000 → 10 000 rpm,
 //!     FASTSIM traction, μ = 0.1), the full 2.5 s;
 //! (d) the default case over 1 s (its cage whirl limit cycle from ~0.06 s).
-//! Targets of issues 5 and 15 (one core: `RAYON_NUM_THREADS=1`): (a) ≤
+//! Targets (one core: `RAYON_NUM_THREADS=1`): (a) ≤
 //! 0.3 s, (b) ≤ 2 s, (c) ≤ 60 s, (d) ≤ 40 s; figures in
 //! docs/performance.md. Build in release first (`cargo bench` does).
 //! `ROLLDYN_BENCH=a,b` runs a subset (default a, b, c, d).
@@ -30,7 +30,12 @@ fn main() {
             &["--duration", "0.2 s"],
         ),
         ("b", "(b) default 7008C case, 0.05 s", None, &[]),
-        ("c", "(c) 7218B seed-002 ramp, 2.5 s", Some("7218B"), &[]),
+        (
+            "c",
+            "(c) 7218B Zhang et al. 2025 ramp, 2.5 s",
+            Some("7218B"),
+            &[],
+        ),
         (
             "d",
             "(d) default 7008C case, 1 s",

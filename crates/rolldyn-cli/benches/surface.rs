@@ -1,5 +1,5 @@
 //! `cargo bench -p rolldyn-cli --bench surface`: cost of surfaces and of
-//! the spectrum command (issue 11's performance targets), plain `Instant`
+//! the spectrum command (the performance targets), plain `Instant`
 //! timing, median of 7 runs; figures in docs/performance.md.
 //!
 //! 1. One right-hand-side evaluation of the default case (7008C preset,
@@ -10,7 +10,7 @@
 //!    be resolved (2., reported, not a cost of the implementation).
 //! 2. `rolldyn run` of the default case, 0.05 s, smooth and wavy: wall time
 //!    and steps from summary.json.
-//!    Also the RHS with the EHL films starved (issue 12: ≤ 5 %), and with
+//!    Also the RHS with the EHL films starved (≤ 5 %), and with
 //!    the film in the normal approach.
 //! 3. Spectra of 1 s of 50 kHz data (50 000 samples): amplitude, Welch
 //!    (4096-sample segments, ½ overlap), envelope; and `rolldyn spectrum`
@@ -117,7 +117,7 @@ fn main() {
         rough * 1e6,
         100.0 * (rough / smooth - 1.0)
     );
-    // Issue 12: the EHL film starved on both rings.
+    // the EHL film starved on both rings.
     let starved = rhs_time(&case_text(false).replacen(
         "\n[operating]",
         "inlet_distance_ratio = 1.3\n\n[operating]",
@@ -128,7 +128,7 @@ fn main() {
         starved * 1e6,
         100.0 * (starved / smooth - 1.0)
     );
-    // Issue 12 item 3: the film in the normal approach (fixed point per
+    // the film in the normal approach (fixed point per
     // contact and the films' power).
     let approach = rhs_time(&case_text(false).replacen(
         "\n[model]\n",

@@ -1,8 +1,8 @@
 //! `cargo bench -p rolldyn-cli --bench thermal`: cost of power and thermal
-//! (issue 13's targets), plain `Instant` timing, median of 7 runs; figures
+//! (the targets), plain `Instant` timing, median of 7 runs; figures
 //! in docs/performance.md.
 //!
-//! 1. Harris's local power loss of a solved Jones–Harris state (seed 004
+//! 1. Harris's local power loss of a solved Jones–Harris state (Lei et al. 2023
 //!    bearing, 9000 rpm).
 //! 2. The bearing network: build + steady solve (target ≤ 1 ms).
 //! 3. The coupled quasi-static thermal iteration (target ≤ 50 ms).

@@ -1,8 +1,8 @@
 //! `cargo bench -p rolldyn-cli --bench traction_quasistatic`: the
 //! traction-consistent quasi-static solve (no raceway control) of the
 //! 7218B preset (16 balls, FASTSIM μ = 0.1, F_x 10 kN, and with F_z 5 kN) from its
-//! Jones–Harris solution, on one core; median of 7 solves. Issue 10
-//! target: ≤ 5 ms. Figures in docs/performance.md.
+//! Jones–Harris solution, on one core; median of 7 solves.
+//! Target: ≤ 5 ms. Figures in docs/performance.md.
 
 use rolldyn::dynamics::BearingModel;
 use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};

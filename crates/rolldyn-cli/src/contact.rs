@@ -2,7 +2,7 @@
 //! outer raceways, or, for tribologists, of an explicit contact (`--radii
 //! R_x,R_y` or `--ball-on-flat D`) with the case's materials; with
 //! `--entrainment-speed` also the lubricant film of each contact
-//! (Hamrock–Dowson, starved by the supply, Λ, K_oil; MODEL §4,
+//! (Hamrock–Dowson, starved by the supply, Λ, K_oil; docs/model.md §4,
 //! docs/lubrication.md) and the contact's normal stiffness in series with
 //! the film's. Keys in docs/cli.md.
 

@@ -1,4 +1,4 @@
-//! No non-finite output (issue 17): serde_json writes NaN and ±∞ as
+//! No non-finite output: serde_json writes NaN and ±∞ as
 //! `null`, the same as an absent value, so a bug that produces one would
 //! pass unseen. [`non_finite`] walks a value through serde and names the
 //! first number that is not finite; every JSON writer of the CLI calls

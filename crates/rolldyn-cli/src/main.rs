@@ -17,7 +17,7 @@ use rolldyn_cli::{
 use std::process::ExitCode;
 
 #[derive(Parser)]
-#[command(name = "rolldyn", version, about = "Ball-bearing dynamics: geometry, Hertz contact, kinematics", long_about = None)]
+#[command(name = "rolldyn", version, about = "Ball-bearing dynamics: cage slip and skidding, contact loads and traction, cage whirl, vibration spectra, friction power and temperatures", long_about = None)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -76,10 +76,10 @@ enum Command {
         json: bool,
     },
     /// Friction power loss at the Jones–Harris equilibrium by Harris's
-    /// local method (seed 004): hysteresis, differential sliding and spin
+    /// local method (Lei et al. 2023): hysteresis, differential sliding and spin
     /// per raceway, cage land, ball–pocket, drag; total and friction torque.
     Power(Box<power::PowerArgs>),
-    /// Bearing temperatures from the thermal network (seed 004), coupled to
+    /// Bearing temperatures from the thermal network (Lei et al. 2023), coupled to
     /// the power loss through the oil viscosity and the operating
     /// clearance; --transient adds the warm-up.
     Thermal(Box<thermal::ThermalArgs>),

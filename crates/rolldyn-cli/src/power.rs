@@ -1,5 +1,5 @@
 //! `rolldyn power`: the friction power loss of a case at its Jones–Harris
-//! equilibrium by Harris's local method (seed 004 §3; docs/power.md), by
+//! equilibrium by Harris's local method (Lei et al. 2023 §3; docs/power.md), by
 //! component, with the friction torque; text or JSON (keys in docs/cli.md).
 
 use crate::{CaseArgs, Failure, emit, json};

@@ -1,4 +1,4 @@
-//! Friction power of a run by component (MODEL §10; issue 13): the
+//! Friction power of a run by component (docs/model.md §10): the
 //! time-series channels and the `summary.json` means of the dynamic
 //! model's exact dissipation split ([`rolldyn::power::dissipation`]), and
 //! the drive (friction) torque on the inner ring; with `thermal.run_coupling`

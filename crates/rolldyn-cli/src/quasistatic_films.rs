@@ -1,5 +1,5 @@
 //! Films and natural modes of a quasi-static solution for `rolldyn
-//! quasistatic` (MODEL §4, §7; seed 003): per ball and contact the
+//! quasistatic` (docs/model.md §4, §7; Zhang et al. 2020): per ball and contact the
 //! entrainment speed, flooded and starved Hamrock–Dowson films, Λ,
 //! starvation factor and oil-film stiffness (with a `[lubricant]`), and the
 //! natural frequencies and mode shapes of the inner ring on the bearing

@@ -190,7 +190,7 @@ impl ContactReport {
     }
 }
 
-/// One waviness excitation line (seed 001 Table 2).
+/// One waviness excitation line (Deng et al. 2022 Table 2).
 #[derive(Serialize)]
 pub struct WavinessEntry {
     pub part: WavyPart,
@@ -332,7 +332,7 @@ impl FrequencyReport {
             "  cage speed             {:>12.1} rpm",
             self.cage_speed_rpm
         );
-        let _ = writeln!(out, "Waviness excitation (seed 001 Table 2):");
+        let _ = writeln!(out, "Waviness excitation (Deng et al. 2022 Table 2):");
         for w in &self.waviness {
             let part = match w.part {
                 WavyPart::OuterRace => "outer race",

@@ -1,4 +1,4 @@
-//! `rolldyn thermal`: bearing temperatures (seed 004 §4; docs/thermal.md).
+//! `rolldyn thermal`: bearing temperatures (Lei et al. 2023 §4; docs/thermal.md).
 //! The coupled quasi-static iteration to thermal steady state (Jones–Harris
 //! → local power loss → thermal network → oil viscosity and operating
 //! clearance) with its convergence history; with `--transient`, the

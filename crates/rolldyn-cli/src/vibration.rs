@@ -1,8 +1,8 @@
 //! Vibration and cage-whirl quantities of a run for `summary.json`
-//! (MODEL §9; keys in docs/cli.md): vibration velocity RMS of the rings in
+//! (docs/model.md §9; keys in docs/cli.md): vibration velocity RMS of the rings in
 //! the ISO 20816-1 band 10–1000 Hz from the recorded velocities, and the
 //! cage-whirl metrics of [`rolldyn::signal::whirl`] (orbit radius, whirl
-//! speed, seed 001's σ), all over the summary's averaging window.
+//! speed, Deng et al. 2022's σ), all over the summary's averaging window.
 
 use rolldyn::signal::{band_rms, whirl_metrics};
 use rolldyn_io::TimeSeries;

@@ -134,7 +134,7 @@ fn a_one_rpm_start_closes_its_balance() {
     assert_converged("1 rpm", &s, &[]);
 }
 
-/// Seed 000's 6304 (clearance, pocket impacts, modified Coulomb traction):
+/// Shan et al. 2023's 6304 (clearance, pocket impacts, modified Coulomb traction):
 /// the first 20 ms, where the pockets and the rings settle.
 #[test]
 fn pocket_impacts_close_their_balance() {

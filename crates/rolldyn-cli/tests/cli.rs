@@ -23,7 +23,7 @@ fn every_preset_round_trips_through_new_and_check() {
 
 #[test]
 fn frequencies_reproduce_seed001_table3() {
-    // Acceptance: 7008C at 10 000 rpm within 0.5 % of seed 001 Table 3 "theoretical".
+    // Acceptance: 7008C at 10 000 rpm within 0.5 % of Deng et al. 2022 Table 3 "theoretical".
     let new = stdout(&rolldyn(&["new", "--preset", "7008C"], None));
     let f = json(
         &["frequencies", "-", "--speed", "10000 rpm", "--json"],
@@ -149,7 +149,7 @@ fn overrides_apply() {
     assert_eq!(c["force_z_n"].as_f64(), Some(500.0));
     let c = json(&["check", "--set", "bearing.ball_count=20", "--json"], None);
     assert_eq!(c["geometry"]["ball_count"].as_u64(), Some(20));
-    // Negative loads need no `=` (issue 16).
+    // Negative loads need no `=`.
     let c = json(&["check", "--radial-load", "-100 N", "--json"], None);
     assert_eq!(c["force_z_n"].as_f64(), Some(-100.0));
 }
@@ -225,7 +225,7 @@ fn schema_and_presets() {
         assert!(names.contains(&n), "{n}");
     }
     let text = stdout(&rolldyn(&["presets"], None));
-    assert!(text.contains("seed 001"));
+    assert!(text.contains("Deng et al. 2022"));
 }
 
 #[test]
@@ -515,7 +515,7 @@ fn run_interrupted_keeps_valid_files() {
         .unwrap();
     assert!(status.success());
     let out = child.wait_with_output().unwrap();
-    // Exit code 130 (issue 17): interrupted, the files are valid.
+    // Exit code 130: interrupted, the files are valid.
     assert_eq!(
         out.status.code(),
         Some(130),

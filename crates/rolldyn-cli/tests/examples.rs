@@ -1,7 +1,7 @@
-//! Every directory of `examples/` (one per seed paper, the CWRU 6205 and
+//! Every directory of `examples/` (one per source paper, the CWRU 6205 and
 //! the minute-long warm-up)
 //! holds a README, its case file and a matplotlib script; its case is
-//! valid and runs, shortened (issue 14, item 4). The full reproductions
+//! valid and runs, shortened. The full reproductions
 //! are the commands in each README.
 
 #![allow(clippy::unwrap_used)]
@@ -20,7 +20,7 @@ const EXAMPLES: [(&str, &[&str]); 7] = [
     ("seed000", &["run", "--duration", "2 ms"]),
     ("seed001", &["run", "--duration", "2 ms"]),
     ("seed002", &["run", "--duration", "2 ms"]),
-    // Seed 003's case shortened: its quasi-static point (the example adds dynamic runs).
+    // Zhang et al. 2020's case shortened: its quasi-static point (the example adds dynamic runs).
     ("seed003", &["quasistatic", "--radial-load", "20 N"]),
     ("seed004", &["run", "--duration", "2 ms"]),
     ("cwru6205", &["run", "--duration", "2 ms"]),

@@ -1,4 +1,4 @@
-//! Issue 17's fuzzing harness: the presets' case files and the CLI flags,
+//! the fuzzing harness: the presets' case files and the CLI flags,
 //! mutated as a careless or hostile user would, fed to every command. For
 //! each case: no panic, exit code 0, 2 or 3 (130 never: nothing
 //! interrupts), an exit 2 with a located `error:` message, no hang beyond

@@ -1,4 +1,4 @@
-//! End-to-end tests of friction power and temperatures (issue 13):
+//! End-to-end tests of friction power and temperatures:
 //! `run`'s power channels and means, `rolldyn power`, `rolldyn thermal`.
 
 #![allow(clippy::unwrap_used)]
@@ -80,7 +80,7 @@ fn json_of(args: &[&str], stdin: Option<&str>) -> Value {
 }
 
 /// `rolldyn power`: components sum to the total, spin is the largest
-/// share on the seed 004 bearing (C8), torque = power/ω.
+/// share on the Lei et al. 2023 bearing (C8), torque = power/ω.
 #[test]
 fn power_command_reports_components() {
     let case = preset("acbb_30x62");

@@ -1,4 +1,4 @@
-//! End-to-end tests of the quasi-static design outputs (issue 16): radial
+//! End-to-end tests of the quasi-static design outputs: radial
 //! load by magnitude and direction, ball 0's azimuth, compliance and the
 //! conventional stiffnesses, the balls' orbital-speed range.
 
@@ -160,7 +160,7 @@ fn fixed_tilt_and_misalignment() {
     assert!(stderr(&o).contains("quasi-static only"), "{}", stderr(&o));
 }
 
-/// Exit codes (issue 17, docs/cli.md): an output path that cannot be
+/// Exit codes (docs/cli.md): an output path that cannot be
 /// written is the user's error (2); a quasi-static point without an
 /// equilibrium is the model's failure (3). (Ctrl-C, 130: cli.rs,
 /// `run_interrupted_keeps_valid_files`.)
@@ -183,7 +183,7 @@ fn exit_codes() {
         assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
     }
     std::fs::remove_file(&file).ok();
-    // A point of issue 16's stress grid that has no converged solution yet
+    // A point of the stress grid that has no converged solution yet
     // (the 7218B with light axial and heavy radial load, at speed); when the
     // solver learns it, force a failure another way.
     let case = rolldyn_case::presets::find("7218B").unwrap().text;
@@ -204,7 +204,7 @@ fn exit_codes() {
     assert!(stderr(&o).contains("no equilibrium"), "{}", stderr(&o));
 }
 
-/// Limits before work (issue 17): a sweep grid beyond 10⁶ points and a run
+/// Limits before work: a sweep grid beyond 10⁶ points and a run
 /// whose time series cannot fit are refused, naming the setting; `--force`
 /// lifts the run's check.
 #[test]
@@ -243,7 +243,7 @@ fn limits_before_work() {
     );
 }
 
-/// Undefined quantities (issue 17): the orders at 0 rpm are null in JSON
+/// Undefined quantities: the orders at 0 rpm are null in JSON
 /// and "—" in text.
 #[test]
 fn undefined_orders_at_rest() {
@@ -254,7 +254,7 @@ fn undefined_orders_at_rest() {
     assert!(text.contains('—') && !text.contains("NaN"), "{text}");
 }
 
-/// ISO 281 rating in `quasistatic` (issue 16): the CWRU 6205's C_r is the
+/// ISO 281 rating in `quasistatic`: the CWRU 6205's C_r is the
 /// catalogue's 14.0 kN, L10 = (C_r/P_r)³ under its radial load, hours at
 /// its speed; a 15° bearing under axial load is not covered (null).
 #[test]
@@ -277,7 +277,7 @@ fn iso281_rating_life() {
 }
 
 /// Static rating, fatigue load limit, modified and reference lives
-/// (issue 16): the relations between the keys of `rating_life`; the
+///: the relations between the keys of `rating_life`; the
 /// deep-groove axial factors apply; a hybrid bearing has no modified life;
 /// a contamination factor outside [0, 1] is refused with its key.
 #[test]
@@ -365,7 +365,7 @@ fn modified_and_reference_rating_lives() {
 }
 
 /// A light axial load under a heavy radial load on a single 40° bearing
-/// with its tilt free (issue 16's stress grid): the solution branch ends
+/// with its tilt free (the stress grid): the solution branch ends
 /// before the given axial load; the solve fails with the model's exit 3
 /// and names the least axial load, which then solves.
 #[test]

@@ -1,4 +1,4 @@
-//! End-to-end tests of issue 14's CLI parts: `rolldyn report DIR`,
+//! End-to-end tests of the report and sweep commands: `rolldyn report DIR`,
 //! `rolldyn run --report` and dynamic sweeps `rolldyn run --sweep`
 //! (parallel, deterministic whatever the thread count).
 

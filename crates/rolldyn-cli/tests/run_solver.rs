@@ -1,6 +1,6 @@
 //! `rolldyn run`'s integration: results that do not depend on the thread
 //! count, the energy balance at the default tolerance in the default
-//! case's whirl limit cycle, and the step cap of film pockets (issue 15).
+//! case's whirl limit cycle, and the step cap of film pockets.
 
 #![allow(clippy::unwrap_used)]
 
@@ -38,7 +38,7 @@ fn run_is_deterministic_whatever_the_thread_count() {
     }
 }
 
-/// Issue 15 item 3: the default case's energy balance holds at its own
+/// the default case's energy balance holds at its own
 /// tolerance in the cage's whirl limit cycle (from ~0.06 s). Before the
 /// Jacobian differenced the turning angles by a fixed increment, the
 /// imbalance had reached −3.1e-3 by 0.3 s and grew with every turn.
@@ -63,7 +63,7 @@ fn default_case_closes_its_energy_balance_in_the_whirl_limit_cycle() {
     assert!(balance.abs() <= 1e-3, "energy balance {balance}");
 }
 
-/// Film pockets (seed 001's `gupta_film`) cap the stiff integrator's
+/// Film pockets (Deng et al. 2022's `gupta_film`) cap the stiff integrator's
 /// default step at 1/16 of the cage's film-mode period, here its rotation
 /// on 22 films of k = 11 N / 87.5 µm: √(22 k r²/I)/2π = 4.61 kHz
 /// (r = 27 mm, I = 2.4e-6 kg·m²); an explicit `solver.max_step` wins.

@@ -13,7 +13,7 @@ use serde_json::Value;
 
 /// Films (the default case has a lubricant) and the ring's natural modes
 /// (given its tilt inertia); starvation on the inner ring thins only the
-/// inner films by the seed 003 eq 30 factor.
+/// inner films by the Zhang et al. 2020 eq 30 factor.
 #[test]
 fn quasistatic_films_and_modes() {
     let flooded = json(&["quasistatic", "--json"], None);
@@ -84,9 +84,9 @@ fn quasistatic_films_and_modes() {
     assert!(text.contains("films (Hamrock–Dowson"), "{text}");
 }
 
-/// A wavy outer race (order 22 = Z, seed 001's C3 setting): `run` records
+/// A wavy outer race (order 22 = Z, Deng et al. 2022's C3 setting): `run` records
 /// the vibration channels and whirl keys, and `spectrum` finds BPFO (=
-/// 22 f_c, seed 001 Table 2) as the largest peak of the axial acceleration.
+/// 22 f_c, Deng et al. 2022 Table 2) as the largest peak of the axial acceleration.
 #[test]
 fn spectrum_of_a_wavy_run_names_bpfo() {
     let preset = PRESETS.iter().find(|p| p.name == "7008C").unwrap().text;
@@ -361,7 +361,7 @@ fn contact_with_films_and_explicit_contacts() {
     }
 }
 
-/// The film in the normal approach (issue 12 item 3): `quasistatic` solves
+/// The film in the normal approach: `quasistatic` solves
 /// with it and reports the dry stiffness beside; `run` starts from that
 /// equilibrium, records the films' work and closes its energy balance;
 /// cases it cannot serve are refused naming the key.

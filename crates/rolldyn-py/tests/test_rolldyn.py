@@ -1,5 +1,5 @@
-"""Tests of the Python package `rolldyn` (issue 14, item 1 and the Dask part
-of item 2). Run by scripts/test.sh after `cargo test`; the CLI binary to
+"""Tests of the Python package `rolldyn`, its sweeps and their Dask
+backend. Run by scripts/test.sh after `cargo test`; the CLI binary to
 compare with is $ROLLDYN_CLI (default: target/debug/rolldyn).
 
 The package runs the CLI's own code, so its results must equal the CLI's

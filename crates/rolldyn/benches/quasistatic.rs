@@ -1,7 +1,7 @@
 //! `cargo bench -p rolldyn --bench quasistatic`: one Jones–Harris solve of
 //! the 7218B (16 balls) from the built-in start, and warm-started solves,
-//! on one core, and the films and natural modes of each solution. Issue 3
-//! target: ≤ 1 ms per solve; issue 12: with film outputs still ≤ 1 ms.
+//! on one core, and the films and natural modes of each solution.
+//! Target: ≤ 1 ms per solve; with film outputs still ≤ 1 ms.
 //! Figures in docs/performance.md.
 
 use rolldyn::contact::HertzModel;
@@ -94,7 +94,7 @@ fn main() {
         let warm = median_time(21, || {
             black_box(solver.solve_from(&sol, &nearby, &options).ok());
         });
-        // Films of the solution (issue 12: quasi-static with film outputs).
+        // Films of the solution (quasi-static with film outputs).
         let inputs = FilmInputs {
             lubricant: Lubricant {
                 viscosity: 0.0275,

@@ -1,4 +1,4 @@
-//! Bearing internal geometry (MODEL §2): ball set, groove curvatures and the
+//! Bearing internal geometry (docs/model.md §2): ball set, groove curvatures and the
 //! two groove-curvature-centre circles that carry all contact geometry.
 //!
 //! # Parametrizations
@@ -16,12 +16,12 @@
 //! inner: ρ_ci = d_m/2 + (f_i − ½) D cos α₀ − P_d/4,   x_ci = +(f_i − ½) D sin α₀
 //! outer: ρ_co = d_m/2 − (f_o − ½) D cos α₀ + P_d/4,   x_co = −(f_o − ½) D sin α₀
 //! ```
-//! **Correction of MODEL.md §2**, which prints `+ P_d/4` (inner) and
-//! `− P_d/4` (outer): with those signs a ball at the pitch radius *penetrates*
-//! both raceways by P_d/4, and MODEL's own check against seed 000 eq 1
-//! (R_i + 2(r_b + c) = R_o with P_d = 4c) gives R_i + 2(r_b − c) = R_o.
+//! **Signs of the clearance term** (docs/model.md §2): with the opposite
+//! signs (`+ P_d/4` inner, `− P_d/4` outer) a ball at the pitch radius would
+//! *penetrate* both raceways by P_d/4, and Shan et al. 2023 eq 1
+//! (R_i + 2(r_b + c) = R_o with P_d = 4c) would read R_i + 2(r_b − c) = R_o.
 //! With the signs above the ball has a gap of P_d/4 at each raceway and
-//! seed 000 eq 1 holds exactly (validation case A7).
+//! Shan et al. 2023 eq 1 holds exactly (validation case A7).
 //!
 //! Groove-bottom diameters follow as d_i = 2(ρ_ci − r_i), d_o = 2(ρ_co + r_o).
 //! Positive axial force F_x on the inner ring loads the balls (the inner
@@ -29,7 +29,7 @@
 //!
 //! Sources: Harris & Kotzalas, *Essential Concepts of Bearing Technology*
 //! (5th ed., 2006), ch. 2 (clearance, free contact angle
-//! cos α_f = 1 − P_d/(2BD), B = f_i + f_o − 1); seed 000 eq 1; seed 001 Table 1.
+//! cos α_f = 1 − P_d/(2BD), B = f_i + f_o − 1); Shan et al. 2023 eq 1; Deng et al. 2022 Table 1.
 
 use crate::error::InvalidParameter;
 use serde::Serialize;
@@ -103,7 +103,7 @@ pub struct Raceway {
     pub groove_bottom_diameter: f64,
 }
 
-/// A validated bearing geometry with its groove-centre circles (MODEL §2).
+/// A validated bearing geometry with its groove-centre circles (docs/model.md §2).
 #[derive(Debug, Clone, PartialEq)]
 pub struct BearingGeometry {
     /// Ball diameter D \[m\].
@@ -124,7 +124,7 @@ pub struct BearingGeometry {
     pub offset_contact_angle: f64,
 }
 
-/// Largest accepted free contact angle (MODEL §2: α₀ ∈ [0°, 60°]).
+/// Largest accepted free contact angle (docs/model.md §2: α₀ ∈ [0°, 60°]).
 pub const MAX_FREE_CONTACT_ANGLE_DEG: f64 = 60.0;
 /// Largest accepted ball count; anything above is treated as a typo.
 pub const MAX_BALL_COUNT: usize = 1000;
@@ -174,7 +174,7 @@ fn groove_curvature(field: &'static str, f: f64) -> Result<(), InvalidParameter>
 }
 
 impl BearingGeometry {
-    /// Validates a [`GeometrySpec`] against the rules of MODEL §2 and builds
+    /// Validates a [`GeometrySpec`] against the rules of docs/model.md §2 and builds
     /// the groove-centre circles.
     pub fn new(spec: &GeometrySpec) -> Result<Self, InvalidParameter> {
         let d = spec.ball_diameter;
@@ -253,7 +253,7 @@ impl BearingGeometry {
             ));
         }
         // Balls overlap when the chord between neighbouring centres is ≤ D
-        // (exact form of MODEL's Z·D < π d_m).
+        // (exact form of Z·D < π d_m).
         let chord = pitch * (std::f64::consts::PI / z as f64).sin();
         if chord <= d {
             return Err(InvalidParameter::new(
@@ -438,7 +438,7 @@ mod tests {
 
     #[test]
     fn seed001_groove_bottom_diameters() {
-        // Seed 001 Table 1: d_i = 47.62 mm, d_o = 60.36 mm (printed to 0.01 mm).
+        // Deng et al. 2022 Table 1: d_i = 47.62 mm, d_o = 60.36 mm (printed to 0.01 mm).
         let g = BearingGeometry::new(&spec_7008c()).unwrap();
         assert!((g.inner.groove_bottom_diameter - 47.62e-3).abs() < 0.006e-3);
         assert!((g.outer.groove_bottom_diameter - 60.36e-3).abs() < 0.006e-3);

@@ -1,8 +1,8 @@
-//! Pure-rolling kinematics and characteristic frequencies (MODEL §7, end).
+//! Pure-rolling kinematics and characteristic frequencies (docs/model.md §7, end).
 //!
 //! # Cage speed with different contact angles
 //! With outer ring fixed, inner contact angle α_i, outer α_o, ball attitude
-//! angle β and γ = D/d_m (seed 002 eq 26, printed garbled; Harris &
+//! angle β and γ = D/d_m (Zhang et al. 2025 eq 26, printed garbled; Harris &
 //! Kotzalas, *Advanced Concepts of Bearing Technology*, eq. 2.39 form):
 //! ```text
 //! ω_c/ω_i = 1 / (1 + (1 + γ cos α_o)(cos α_i + tan β sin α_i)
@@ -10,7 +10,7 @@
 //! ```
 //! which is ½(1 − γ cos α) when α_i = α_o = β = α (validation A8).
 //!
-//! # Defect frequencies (seed 001 Table 2 notation; Harris & Kotzalas ch. 8)
+//! # Defect frequencies (Deng et al. 2022 Table 2 notation; Harris & Kotzalas ch. 8)
 //! With shaft (inner-ring) frequency f_i, outer-ring frequency f_o (usually
 //! 0) and γ = D cos α / d_m:
 //! ```text
@@ -18,9 +18,9 @@
 //! BPFO = Z |f_c − f_o|,   BPFI = Z |f_i − f_c|
 //! f_b  = (d_m / 2D) |f_i − f_o| (1 − γ²)        ball spin (BSF, relative to the cage)
 //! ```
-//! 7008C at 10 000 rpm: f_c ≈ 73.96 Hz, f_b ≈ 699.7 Hz (seed 001 Table 3).
+//! 7008C at 10 000 rpm: f_c ≈ 73.96 Hz, f_b ≈ 699.7 Hz (Deng et al. 2022 Table 3).
 //!
-//! # Waviness excitation (seed 001 Table 2)
+//! # Waviness excitation (Deng et al. 2022 Table 2)
 //! [`waviness_frequencies`] maps a waviness order l on the outer race, the
 //! inner race or a ball to its principal vibration frequencies.
 
@@ -147,7 +147,7 @@ pub struct WavinessLine {
 }
 
 /// Principal vibration frequencies excited by waviness of order l on `part`
-/// (seed 001 Table 2, after Yhland 1992 and Wardle 1988):
+/// (Deng et al. 2022 Table 2, after Yhland 1992 and Wardle 1988):
 ///
 /// | part | order | frequency | motion |
 /// |---|---|---|---|

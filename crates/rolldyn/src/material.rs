@@ -25,7 +25,7 @@ impl Material {
     };
     /// Hot-isostatically-pressed silicon nitride, bearing grade (ASTM F2094):
     /// E = 310 GPa, ν = 0.26, ρ = 3200 kg/m³ (Harris & Kotzalas, 5th ed.,
-    /// Table 5.1; seed 003 uses Si₃N₄ balls).
+    /// Table 5.1; Zhang et al. 2020 uses Si₃N₄ balls).
     pub const SILICON_NITRIDE: Material = Material {
         elastic_modulus: 310.0e9,
         poisson_ratio: 0.26,
@@ -38,8 +38,8 @@ impl Material {
     }
 }
 
-/// Effective modulus E' = 2 / [(1 − ν₁²)/E₁ + (1 − ν₂²)/E₂] of MODEL §2.2
-/// (Harris & Kotzalas, eq. 6.24 form; seed 004 misprints (1 − ν)²).
+/// Effective modulus E' = 2 / [(1 − ν₁²)/E₁ + (1 − ν₂²)/E₂] of docs/model.md §2.2
+/// (Harris & Kotzalas, eq. 6.24 form; Lei et al. 2023 misprints (1 − ν)²).
 /// For identical materials E' = E/(1 − ν²).
 pub fn effective_modulus(a: &Material, b: &Material) -> f64 {
     2.0 / (a.contact_compliance() + b.contact_compliance())

@@ -1,4 +1,4 @@
-//! Operating conditions (MODEL §8): the inner-ring speed profile and the
+//! Operating conditions (docs/model.md §8): the inner-ring speed profile and the
 //! loads applied to the inner ring (constant or tabulated), in SI units.
 
 use crate::error::InvalidParameter;
@@ -9,7 +9,7 @@ pub enum SpeedProfile {
     /// Constant speed \[rad/s\].
     Constant(f64),
     /// Piecewise-linear table of (time \[s\], speed \[rad/s\]), times strictly
-    /// increasing; held constant outside the table (seed 002's ramp).
+    /// increasing; held constant outside the table (Zhang et al. 2025's ramp).
     PiecewiseLinear(Vec<(f64, f64)>),
 }
 
@@ -67,7 +67,7 @@ impl SpeedProfile {
     }
 
     /// Angle turned since t = 0, ∫₀ᵗ ω dt \[rad\] (exact for both profiles;
-    /// carries the inner ring's surface, MODEL §6).
+    /// carries the inner ring's surface, docs/model.md §6).
     pub fn angle_at(&self, t: f64) -> f64 {
         match self {
             Self::Constant(w) => w * t,
@@ -125,7 +125,7 @@ impl Loads {
     }
 }
 
-/// Loads on the inner ring as a function of time (MODEL §8).
+/// Loads on the inner ring as a function of time (docs/model.md §8).
 #[derive(Debug, Clone, PartialEq)]
 pub enum LoadProfile {
     /// Constant loads.

@@ -1,5 +1,5 @@
 //! The bearing section of a case: its geometry from one of the
-//! parametrizations of MODEL §2 (free contact angle, clearance or raceway
+//! parametrizations of docs/model.md §2 (free contact angle, clearance or raceway
 //! diameters), groove radii and the catalogue dimensions.
 
 use super::{Bearing, Invalid, checked, positive, text};
@@ -7,7 +7,7 @@ use crate::raw::RawBearing;
 use crate::units::Quantity;
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
-/// The parametrization groups of MODEL §2, by their keys.
+/// The parametrization groups of docs/model.md §2, by their keys.
 pub const PARAMETRIZATIONS: [&[&str]; 3] = [
     &["free_contact_angle"],
     &["diametral_clearance"],

@@ -1,6 +1,6 @@
 //! The dynamic model's parameters from a case (`rolldyn run`): inner-ring
 //! inertia (estimated from the ring annulus when not given), cage, pocket
-//! law, guide land, drag, supports and the film supply (MODEL §1, §5).
+//! law, guide land, drag, supports and the film supply (docs/model.md §1, §5).
 
 use super::{Case, Invalid};
 use crate::raw::{CageGuidance, PocketLawChoice};
@@ -11,7 +11,7 @@ use rolldyn::dynamics::{CageParameters, DynamicsParameters, GuideLand};
 use rolldyn::operating::LoadProfile;
 use rolldyn::traction::ModifiedCoulomb;
 
-/// Film force at the pocket wall of the gupta_film law \[N\] (seed 001
+/// Film force at the pocket wall of the gupta_film law \[N\] (Deng et al. 2022
 /// eq 28: K'_c = 11/C_p with C_p the per-side clearance).
 pub const GUPTA_WALL_FORCE: f64 = 11.0;
 
@@ -22,7 +22,7 @@ pub const GUPTA_WALL_FORCE: f64 = 11.0;
 pub const DEFAULT_POCKET_MIN_FILM: f64 = 1e-6;
 
 /// Default ball–pocket friction coefficient (lubricated steel on cage
-/// material; seeds 001 and 002 use 0.01–0.1).
+/// material; Deng et al. 2022 and Zhang et al. 2025 use 0.01–0.1).
 pub const DEFAULT_POCKET_FRICTION: f64 = 0.05;
 
 impl Case {
@@ -282,7 +282,7 @@ impl Case {
     }
 }
 
-/// Largest eccentricity ratio of the short-bearing guide-land law (MODEL §5).
+/// Largest eccentricity ratio of the short-bearing guide-land law (docs/model.md §5).
 pub const GUIDE_MAX_ECCENTRICITY: f64 = 0.95;
 /// Stiffness of the guide-land stop beyond ε_max \[N/m\]: a stiff contact
 /// (of the order of a cage-material line contact), not from a source.

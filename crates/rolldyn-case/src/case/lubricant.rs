@@ -1,6 +1,6 @@
-//! The case's lubricant (`[lubricant]`, MODEL §4): properties in SI and
+//! The case's lubricant (`[lubricant]`, docs/model.md §4): properties in SI and
 //! the oil supply of each ring (fully flooded, an inlet distance ratio, or
-//! an oil flow), seed 003 eqs 26–30.
+//! an oil flow), Zhang et al. 2020 eqs 26–30.
 
 use super::{Invalid, checked, non_negative, positive};
 use crate::raw::RawLubricant;
@@ -121,7 +121,7 @@ fn base(l: &RawLubricant, geometry: &BearingGeometry) -> Result<Lubricant, Inval
 /// The supply per ring: `inlet_distance_ratio` (both rings) or its
 /// `_inner`/`_outer` forms, or `oil_flow` (with the density for ν = η/ρ;
 /// the inlet film on each ring's raceway radius, thrown by the inner ring's
-/// speed as seed 003 eq 27 has it); fully flooded without any.
+/// speed as Zhang et al. 2020 eq 27 has it); fully flooded without any.
 fn supply(l: &RawLubricant, geometry: &BearingGeometry) -> Result<[Supply; 2], Invalid> {
     let ratio = |key: &str, v: Option<f64>| -> Result<Option<Supply>, Invalid> {
         v.map(|r| {

@@ -1,4 +1,4 @@
-//! The case's surfaces (`[surface]`, MODEL §6): waviness terms and random
+//! The case's surfaces (`[surface]`, docs/model.md §6): waviness terms and random
 //! laws, spalls on either raceway or on a ball, checked with the key of
 //! the offending entry.
 

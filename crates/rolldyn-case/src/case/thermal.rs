@@ -1,4 +1,4 @@
-//! `[power]` and `[thermal]` in SI (seed 004; MODEL §10), and the inputs
+//! `[power]` and `[thermal]` in SI (Lei et al. 2023; docs/model.md §10), and the inputs
 //! of Harris's local method, the bearing's thermal network and the coupled
 //! iteration built from the whole case. Defaults are documented in
 //! docs/thermal.md and reported by `rolldyn thermal`.

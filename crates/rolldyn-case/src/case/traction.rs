@@ -1,4 +1,4 @@
-//! The case's traction model (`[model] traction = …`, MODEL §3): the
+//! The case's traction model (`[model] traction = …`, docs/model.md §3): the
 //! stress laws and Kalker's FASTSIM, whose elastic constants are combined
 //! from the ball and ring materials.
 
@@ -106,7 +106,7 @@ pub(super) fn traction(
     })
 }
 
-/// `[model.mixed_lubrication]` (MODEL §3, model 5): needs the EHL traction
+/// `[model.mixed_lubrication]` (docs/model.md §3, model 5): needs the EHL traction
 /// law (the fluid it blends with, and the film) and a roughness at both
 /// raceways' contacts (the film parameter Λ = h_min/σ).
 pub(super) fn mixed_lubrication(

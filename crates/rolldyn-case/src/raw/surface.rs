@@ -1,4 +1,4 @@
-//! `[surface]`: raceway and ball waviness and spalls (MODEL §6) as written.
+//! `[surface]`: raceway and ball waviness and spalls (docs/model.md §6) as written.
 
 use crate::units::*;
 use schemars::JsonSchema;
@@ -23,7 +23,7 @@ pub struct RawSurface {
 #[serde(deny_unknown_fields)]
 pub struct RawRaceSurface {
     /// Radial waviness terms q cos(l θ + η), towards the balls positive
-    /// (seed 001 eq 1).
+    /// (Deng et al. 2022 eq 1).
     #[serde(default)]
     pub radial_waviness: Vec<RawWavinessTerm>,
     /// Axial waviness terms (groove displaced along +x).

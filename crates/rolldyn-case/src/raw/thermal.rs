@@ -1,5 +1,5 @@
 //! `[power]` and `[thermal]`: friction power loss and the thermal network
-//! (seed 004; MODEL §10) as written.
+//! (Lei et al. 2023; docs/model.md §10) as written.
 
 use crate::units::*;
 use schemars::JsonSchema;

@@ -222,7 +222,7 @@ def contact(load: str, case: Optional[Case] = None, **flags: Any) -> dict:
 
 def power(case: Optional[Case] = None) -> dict:
     """``rolldyn power --json``: friction power by component at the
-    Jones–Harris equilibrium (Harris's local method, seed 004)."""
+    Jones–Harris equilibrium (Harris's local method, Lei et al. 2023)."""
     return _command("power", case, {})
 
 

@@ -1,10 +1,10 @@
-//! Hydrodynamic guide land of a ring-guided cage (MODEL §5; seed 001
+//! Hydrodynamic guide land of a ring-guided cage (docs/model.md §5; Deng et al. 2022
 //! eqs 30–35, short-bearing theory, with eq 32's R_d³ correction).
 
 use crate::geometry::RingKind;
 use nalgebra::Vector3;
 
-/// A cage guide land (MODEL §5; seed 001 eqs 30–35, short-bearing theory):
+/// A cage guide land (docs/model.md §5; Deng et al. 2022 eqs 30–35, short-bearing theory):
 /// with eccentricity e of the cage centre from the guiding ring's centre,
 /// ε = e/c, land radius R_d, width G, u₁ = R_d (ω_land + ω_c):
 /// ```text
@@ -12,9 +12,9 @@ use nalgebra::Vector3;
 /// F_φ =  π η₀ u₁ G³ ε / (4 c² (1 − ε²)^{3/2})      perpendicular, with the rotation
 /// M   =  2π η₀ R_d³ G (ω_land − ω_c) / (c √(1 − ε²))   drag torque on the cage
 /// ```
-/// Seed 001 eq 32 prints R_d to the first power; R_d³ makes it a torque
-/// (MODEL §5). ε is capped at ε_max in these formulas; beyond ε_max c a
-/// stiff stop k_s (e − ε_max c) acts (MODEL: "a stiff contact beyond
+/// Deng et al. 2022 eq 32 prints R_d to the first power; R_d³ makes it a torque
+/// (docs/model.md §5). ε is capped at ε_max in these formulas; beyond ε_max c a
+/// stiff stop k_s (e − ε_max c) acts (docs/model.md §5: "a stiff contact beyond
 /// ε_max"). The guiding ring takes the reactions. c is the **radial**
 /// clearance, half of the diametral guide clearance C_g of the case file.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,10 +1,10 @@
-//! The cage (MODEL §5): ball–pocket contact laws and pocket shapes
+//! The cage (docs/model.md §5): ball–pocket contact laws and pocket shapes
 //! ([`pocket`]), the pocket oil film's squeeze damping ([`squeeze`]), the
 //! hydrodynamic guide land ([`guide`]) and the cage data
 //! the dynamic model needs, including a rotating unbalance.
 //!
-//! Sources: seed 001 (Gupta-type cage model: eqs 25–39), seed 002 (linear
-//! pocket law, eq 6), corrected as MODEL §5 states.
+//! Sources: Deng et al. 2022 (Gupta-type cage model: eqs 25–39), Zhang et al. 2025 (linear
+//! pocket law, eq 6), corrected as docs/model.md §5 states.
 
 pub mod guide;
 pub mod pocket;
@@ -37,12 +37,12 @@ pub struct CageParameters {
     pub pocket_squeeze: Option<PocketSqueeze>,
     /// Pocket friction.
     pub pocket_friction: ModifiedCoulomb,
-    /// Whether the cage centre may whirl (false: rotation only, seed 002).
+    /// Whether the cage centre may whirl (false: rotation only, Zhang et al. 2025).
     pub whirl: bool,
     /// Guide land, if the cage is ring-guided.
     pub guide: Option<GuideLand>,
     /// Unbalance m_u e \[kg·m\]: a mass m_u at radius e, at the cage angle
-    /// θ_c (MODEL §5; seed 001 eqs 37–38).
+    /// θ_c (docs/model.md §5; Deng et al. 2022 eqs 37–38).
     pub unbalance: f64,
 }
 
@@ -74,7 +74,7 @@ impl CageParameters {
     /// Highest natural frequency of the cage on undamped pocket springs
     /// \[Hz\], or None when every pocket spring is damped or acts only
     /// beyond the clearance. The `gupta_film` law's film term F_w d/(C_p/2)
-    /// (seed 001 eqs 26–28) is a spring with no damping inside the
+    /// (Deng et al. 2022 eqs 26–28) is a spring with no damping inside the
     /// clearance (unless `pocket_squeeze` damps it), so the cage can
     /// rattle on the films of its `balls` pockets. With k = F_w/(C_p/2) per pocket and the balls held by their
     /// raceway traction:
@@ -106,8 +106,8 @@ impl CageParameters {
     }
 
     /// Unbalance force on the cage (y, z) \[N\] at cage angle θ_c and speed
-    /// ω_c: m_u e ω_c² along the unbalance direction (seed 001 eqs 37–38
-    /// print ω_c unsquared; MODEL §5). Treated as an external force: its
+    /// ω_c: m_u e ω_c² along the unbalance direction (Deng et al. 2022 eqs 37–38
+    /// print ω_c unsquared; docs/model.md §5). Treated as an external force: its
     /// power enters the work of the external forces.
     pub fn unbalance_force(&self, angle: f64, speed: f64) -> [f64; 2] {
         let f = self.unbalance * speed * speed;

@@ -1,24 +1,24 @@
-//! Ball–pocket contact (MODEL §5): pocket shapes and normal force laws.
+//! Ball–pocket contact (docs/model.md §5): pocket shapes and normal force laws.
 //!
 //! The ball centre's offset d from the pocket centre is measured
 //! perpendicular to the pocket axis (cylindrical pocket, axis along the
 //! cage radius) or in all directions (spherical pocket). With the
 //! per-side clearance c = C_p/2 and δ = d − c:
 //! ```text
-//! linear      F = k δ + c_d δ̇                      δ > 0        (seed 002 eq 6)
-//! hertz       F = K_bc δ^{3/2} + c_d δ̇             δ > 0        (seed 001 eq 29)
-//! gupta_film  F = (F_w/c) d                         d ≤ c        (seed 001 eqs 26–28)
+//! linear      F = k δ + c_d δ̇                      δ > 0        (Zhang et al. 2025 eq 6)
+//! hertz       F = K_bc δ^{3/2} + c_d δ̇             δ > 0        (Deng et al. 2022 eq 29)
+//! gupta_film  F = (F_w/c) d                         d ≤ c        (Deng et al. 2022 eqs 26–28)
 //!             F = F_w + K_bc δ^{3/2} + c_d δ̇        d > c
 //! ```
-//! F is clamped at ≥ 0 (no adhesion). In seed 001 the film term is
-//! K'_c δ_bc with K'_c = 11/C_p, C_p the seed's per-side clearance: a force
+//! F is clamped at ≥ 0 (no adhesion). In Deng et al. 2022 the film term is
+//! K'_c δ_bc with K'_c = 11/C_p, C_p Deng et al. 2022's per-side clearance: a force
 //! of F_w = 11 N when the ball reaches the pocket wall, an empirical
 //! hydrodynamic term (Gupta). rolldyn keeps F_w as a parameter (default
 //! 11 N in the case file) and treats the film term as elastic (it is a
 //! function of position only), so it stores energy ½ (F_w/c) d².
 //!
 //! K_bc is the Hertz constant of the ball in the concave pocket: ball
-//! radius R_b = D/2, pocket radius R_p = (D + C_p)/2. Seed 001 eq 29 gives
+//! radius R_b = D/2, pocket radius R_p = (D + C_p)/2. Deng et al. 2022 eq 29 gives
 //! it by the Hamrock–Brewe approximation with R_ξ = R_b R_p/(R_p − R_b)
 //! across a cylindrical pocket's axis and R_η = R_b along it;
 //! [`hertz_pocket_stiffness`] uses the exact Hertz solution of
@@ -45,23 +45,23 @@ pub enum PocketShape {
 /// Ball–pocket normal force law.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum PocketLaw {
-    /// k δ + c_d δ̇ beyond the clearance (seed 002 eq 6).
+    /// k δ + c_d δ̇ beyond the clearance (Zhang et al. 2025 eq 6).
     Linear {
         /// Stiffness k \[N/m\].
         stiffness: f64,
         /// Damping c_d \[N·s/m\].
         damping: f64,
     },
-    /// K_bc δ^{3/2} + c_d δ̇ beyond the clearance (seed 001 eq 29).
+    /// K_bc δ^{3/2} + c_d δ̇ beyond the clearance (Deng et al. 2022 eq 29).
     Hertz {
         /// Hertz constant K_bc \[N/m^{3/2}\].
         stiffness: f64,
         /// Damping c_d \[N·s/m\].
         damping: f64,
     },
-    /// Film force inside the clearance, Hertz beyond (seed 001 eqs 26–28).
+    /// Film force inside the clearance, Hertz beyond (Deng et al. 2022 eqs 26–28).
     GuptaFilm {
-        /// Film force at the pocket wall F_w \[N\] (seed 001: 11 N).
+        /// Film force at the pocket wall F_w \[N\] (Deng et al. 2022: 11 N).
         wall_force: f64,
         /// Hertz constant K_bc \[N/m^{3/2}\].
         stiffness: f64,
@@ -173,7 +173,7 @@ fn hertz(stiffness: f64, delta: f64) -> f64 {
 
 /// Hertz constant K_bc \[N/m^{3/2}\] of a ball of diameter D in a pocket
 /// of diameter D + C_p, for the effective modulus E' of ball and cage
-/// materials (exact Hertz; seed 001 eq 29 uses Hamrock–Brewe).
+/// materials (exact Hertz; Deng et al. 2022 eq 29 uses Hamrock–Brewe).
 pub fn hertz_pocket_stiffness(
     shape: PocketShape,
     ball_diameter: f64,
@@ -241,7 +241,7 @@ mod tests {
         let inside = law.force(C * (1.0 - 1e-12), C, 0.0).total;
         let outside = law.force(C * (1.0 + 1e-12), C, 0.0).total;
         assert!((inside - 11.0).abs() < 1e-6 && (outside - 11.0).abs() < 1e-6);
-        // Inside: K'_c d with K'_c = 11 N / c (seed 001 eq 28).
+        // Inside: K'_c d with K'_c = 11 N / c (Deng et al. 2022 eq 28).
         assert!((law.force(0.5 * C, C, 0.0).total - 5.5).abs() < 1e-12);
     }
 
@@ -257,7 +257,7 @@ mod tests {
 
     #[test]
     fn hertz_pocket_stiffness_matches_seed001_eq29() {
-        // Seed 001 eq 29 (Hamrock–Brewe) for a cylindrical pocket of the
+        // Deng et al. 2022 eq 29 (Hamrock–Brewe) for a cylindrical pocket of the
         // 7008C (D = 7.938 mm, C_p = 0.175 mm), steel on steel.
         let (d, cp, ep): (f64, f64, f64) = (7.938e-3, 0.175e-3, 206e9 / (1.0 - 0.3f64.powi(2)));
         let rb = d / 2.0;

@@ -1,7 +1,7 @@
 //! Squeeze-film damping of a ball in its lubricated pocket (a rolldyn
-//! extension of MODEL §5; none of the seeds has it).
+//! extension of docs/model.md §5; none of the source papers has it).
 //!
-//! Seed 001's `gupta_film` law (eqs 26–28) gives the pocket oil film a
+//! Deng et al. 2022's `gupta_film` law (eqs 26–28) gives the pocket oil film a
 //! stiffness but no damping, so a cage on its pocket films has an
 //! undamped mode (the 3.6–3.8 kHz rattle of docs/validation.md). An oil
 //! film between approaching surfaces resists the approach: this module

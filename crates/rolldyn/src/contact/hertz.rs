@@ -1,4 +1,4 @@
-//! Hertz point contact of a ball on a raceway (MODEL §2.2).
+//! Hertz point contact of a ball on a raceway (docs/model.md §2.2).
 //!
 //! # Curvatures
 //! With γ = D cos α / d_m the principal relative curvatures of ball and
@@ -8,7 +8,7 @@
 //! inner: 1/R_x = 2/(D(1 − γ)),  outer: 1/R_x = 2/(D(1 + γ)),   both: 1/R_y = (2 − 1/f)/D
 //! Σρ = 1/R_x + 1/R_y,           F(ρ) = (1/R_x − 1/R_y)/Σρ
 //! ```
-//! which is MODEL's Σρ = (1/D)(4 − 1/f ± 2γ/(1∓γ)).
+//! which is docs/model.md §2.2's Σρ = (1/D)(4 − 1/f ± 2γ/(1∓γ)).
 //!
 //! # Exact solve
 //! The ellipticity κ = a/b (a across, b along the rolling direction) solves
@@ -16,14 +16,14 @@
 //! F(ρ) = ((κ² + 1) E(m) − 2 K(m)) / ((κ² − 1) E(m)) = (K − (2 − m) D) / E,   m = 1 − 1/κ²
 //! ```
 //! (the second form, with D = (K − E)/m, avoids the 0/0 at κ → 1). It is
-//! solved by Brent's method in ln κ to machine precision (MODEL asks 1e-12).
+//! solved by Brent's method in ln κ to machine precision (1e-12 relative at least).
 //! Then, with R = 1/Σρ and E' the effective modulus,
 //! ```text
 //! a = (6κ² E Q R/(π E'))^{1/3},  b = (6 E Q R/(π κ E'))^{1/3},
 //! δ = K (9/(2 E R) (Q/(π κ E'))²)^{1/3},   Q = K_c δ^{3/2},
 //! K_c = π κ E' √(2 E R/(9 K³)),   p₀ = 3Q/(2π a b)
 //! ```
-//! (seed 002 eq 4 prints K_c garbled; this is the form of Harris & Kotzalas
+//! (Zhang et al. 2025 eq 4 prints K_c garbled; this is the form of Harris & Kotzalas
 //! eqs 6.34–6.43 rewritten with E').
 //!
 //! # Options
@@ -31,12 +31,12 @@
 //!   E ≈ 1.0003 + 0.5968 R_x/R_y, K ≈ 1.5277 + 0.6023 ln(R_y/R_x)
 //!   (B. J. Hamrock & D. E. Brewe, "Simplified solution for stresses and
 //!   deformations", J. Lubr. Technol. 105 (1983) 171–177). Oracle and option.
-//! * [`HertzModel::HertzCircular`]: seed 000 eq 12,
+//! * [`HertzModel::HertzCircular`]: Shan et al. 2023 eq 12,
 //!   K = 4/(3π(h_l + h_r)) √(r_l r_b/(r_l + r_b)) with h = (1 − ν²)/(πE),
 //!   i.e. a sphere on a sphere of the raceway's in-plane radius r_l (the
 //!   groove-bottom radius). **Correction:** the outer raceway is concave, so
 //!   its radius enters with a minus sign, r_l r_b/(r_l − r_b); the paper
-//!   prints r_l + r_b for all contacts. For reproducing seed 000 only.
+//!   prints r_l + r_b for all contacts. For reproducing Shan et al. 2023 only.
 
 use crate::error::InvalidParameter;
 use crate::geometry::{Raceway, RingKind};
@@ -55,7 +55,7 @@ pub enum HertzModel {
     Exact,
     /// Hamrock–Brewe (1983) closed-form approximations of κ, E, K.
     HamrockBrewe,
-    /// Seed 000 eq 12: circular contact of two spheres (planar papers only).
+    /// Shan et al. 2023 eq 12: circular contact of two spheres (planar papers only).
     HertzCircular,
 }
 

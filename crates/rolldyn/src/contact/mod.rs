@@ -1,4 +1,4 @@
-//! Ball–raceway contact (MODEL §2.1–§2.3).
+//! Ball–raceway contact (docs/model.md §2.1–§2.3).
 //!
 //! Data flow: [`torus`] finds where a ball touches a raceway for arbitrary
 //! ring poses (penetration, normal, contact point, contact angle);

@@ -1,4 +1,4 @@
-//! Normal force laws of a ball–raceway (or ball–pocket) contact, MODEL §2.3.
+//! Normal force laws of a ball–raceway (or ball–pocket) contact, docs/model.md §2.3.
 //!
 //! With penetration δ > 0, its rate δ̇ (positive while approaching) and K_c
 //! from the Hertz tables:
@@ -6,7 +6,7 @@
 //! | law | force | source |
 //! |---|---|---|
 //! | `hertz` | K_c δ^{3/2} | Hertz (1882) |
-//! | `lankarani_nikravesh` | K_c δ^{3/2} [1 + 3(1 − e²)/4 · δ̇/δ̇⁻] | Lankarani & Nikravesh, J. Mech. Des. 112 (1990) 369; seed 000 eqs 11/13 (which print D δ without K_c) |
+//! | `lankarani_nikravesh` | K_c δ^{3/2} [1 + 3(1 − e²)/4 · δ̇/δ̇⁻] | Lankarani & Nikravesh, J. Mech. Des. 112 (1990) 369; Shan et al. 2023 eqs 11/13 (which print D δ without K_c) |
 //! | `hunt_crossley` | K_c δ^{3/2} [1 + 3(1 − e)/2 · δ̇/δ̇⁻] | Hunt & Crossley, J. Appl. Mech. 42 (1975) 440 |
 //! | `flores` | K_c δ^{3/2} [1 + 8(1 − e)/(5e) · δ̇/δ̇⁻] | Flores et al., Nonlinear Dyn. 65 (2011) 383 |
 //! | `viscous` | K_c δ^{3/2} + c_n δ̇ | c_n given, or 2ζ√(k_lin m) with k_lin = 1.5 K_c δ^{1/2} |
@@ -23,7 +23,7 @@ use serde::{Deserialize, Serialize};
 
 /// Default lower bound of the recorded impact speed δ̇⁻ \[m/s\]. Ball radial
 /// speeds inside a 10 µm clearance at cage frequencies of 50–100 Hz are of
-/// order 2π·f·c ≈ 3–6 mm/s (seed 000's 6304), so 1 mm/s sits below real
+/// order 2π·f·c ≈ 3–6 mm/s (Shan et al. 2023's 6304), so 1 mm/s sits below real
 /// impacts and only bounds the persistent rolling contacts.
 pub const DEFAULT_IMPACT_SPEED_FLOOR: f64 = 1.0e-3;
 

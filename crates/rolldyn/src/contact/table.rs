@@ -1,5 +1,5 @@
 //! Precomputed Hertz constants per raceway over the contact angle
-//! (MODEL §2.2, "Precomputed tables", after seed 002 §3.1).
+//! (docs/model.md §2.2, "Precomputed tables", after Zhang et al. 2025 §3.1).
 //!
 //! κ, K_c, a*, b*, δ* and E(m) depend on a contact only through its
 //! contact angle α (via γ = D cos α/d_m). Each raceway gets one table over
@@ -48,7 +48,7 @@ impl RacewayContactModel {
     }
 
     /// Relative curvature at contact angle α. For `hertz_circular` it is the
-    /// sphere-on-sphere curvature of seed 000 eq 12 (independent of α).
+    /// sphere-on-sphere curvature of Shan et al. 2023 eq 12 (independent of α).
     pub fn curvature(&self, contact_angle: f64) -> Curvature {
         match self.model {
             HertzModel::HertzCircular => {

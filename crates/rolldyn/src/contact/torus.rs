@@ -1,4 +1,4 @@
-//! Exact ball–torus contact geometry (MODEL §2.1).
+//! Exact ball–torus contact geometry (docs/model.md §2.1).
 //!
 //! A raceway groove is a torus: the surface at distance r_g (groove radius)
 //! from its groove-curvature-centre circle (centre c, unit axis a, radius
@@ -9,12 +9,12 @@
 //! ```
 //! and with d = |q − p|, n = (q − p)/d (groove centre → ball centre):
 //! ```text
-//! penetration  δ = d − (r_g − D/2) + w         (w: surface height, MODEL §6)
+//! penetration  δ = d − (r_g − D/2) + w         (w: surface height, docs/model.md §6)
 //! contact point P = q + (D/2) n
 //! contact angle α: sin α = |n·a|
 //! ```
-//! Exact for any ring translation and tilt; it reduces to seed 000 eqs 6–7
-//! in planar mode and to seed 001 eqs 2–6 for small ring displacements
+//! Exact for any ring translation and tilt; it reduces to Shan et al. 2023 eqs 6–7
+//! in planar mode and to Deng et al. 2022 eqs 2–6 for small ring displacements
 //! (validation case A5). The ball sits inside the groove's tube for both
 //! rings, so the same formula serves inner and outer raceways.
 
@@ -121,7 +121,7 @@ impl GrooveCircle {
     }
 }
 
-/// Result of the exact torus contact (MODEL §2.1). δ ≤ 0 means no contact.
+/// Result of the exact torus contact (docs/model.md §2.1). δ ≤ 0 means no contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TorusContact {
     /// Penetration δ \[m\] (positive: overlap).

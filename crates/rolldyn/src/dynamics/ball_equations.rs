@@ -1,4 +1,4 @@
-//! A ball's equations of motion (MODEL §1, equations in [`super::model`])
+//! A ball's equations of motion (docs/model.md §1, equations in [`super::model`])
 //! from its contacts' shares, and the reuse of those shares by the
 //! Jacobian's border columns.
 //!
@@ -250,7 +250,7 @@ impl BearingModel {
         dy[8] = moment.dot(&et) / inertia - phi_dot * wr;
         if l.ball_spin_angle {
             // ψ̇ = |ω_b − φ̇ e_x|: the ball's turning relative to the cage
-            // frame carries its surface past the contacts (MODEL §1, §6).
+            // frame carries its surface past the contacts (docs/model.md §1, §6).
             dy[StateLayout::SPIN_ANGLE] = (w - phi_dot * ex).norm();
         }
         if p.planar {

@@ -3,7 +3,7 @@
 //! the rings and cage summed **in ball order**.
 //!
 //! The balls are independent given the ring and cage states (the
-//! bordered block structure of MODEL §8), so their contact evaluations can
+//! bordered block structure of docs/model.md §8), so their contact evaluations can
 //! run at the same time. Each ball's coupling lands in its own slot and
 //! the slots are summed serially from ball 0, exactly as the serial pass
 //! sums them: the right-hand side is bit-identical whatever the number of
@@ -16,7 +16,7 @@
 //! Parallel only where it pays: a pass whose contacts integrate traction
 //! over a grid (EHL, traction curve or stress law on the strip grid, or
 //! FASTSIM) costs microseconds per ball, far above rayon's hand-over; a
-//! pass with traction at the contact centre (seed 000's 6304: ~1 µs per
+//! pass with traction at the contact centre (Shan et al. 2023's 6304: ~1 µs per
 //! ball) stays serial. The slots are allocated once, with the model.
 
 use super::coupling::BallCoupling;

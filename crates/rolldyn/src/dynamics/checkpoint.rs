@@ -1,6 +1,6 @@
-//! The bearing model's own memory in a run's checkpoint (issue 17): the
+//! The bearing model's own memory in a run's checkpoint: the
 //! contact-episode records (impact speeds of the Lankarani–Nikravesh,
-//! Hunt–Crossley and Flores laws, MODEL §2.3) and, in a thermally coupled
+//! Hunt–Crossley and Flores laws, docs/model.md §2.3) and, in a thermally coupled
 //! run, the thermal network's state, from which the viscosities it feeds
 //! back are set again. Everything else the right-hand side reads is the
 //! case's data or the integrator's state.

@@ -1,5 +1,5 @@
 //! What one ball's contacts pass to the border of the block-split
-//! equations of motion (MODEL §8): forces and moments on the rings and the
+//! equations of motion (docs/model.md §8): forces and moments on the rings and the
 //! cage, dissipated power, and the films' work (`dynamics::film`). The
 //! balls' couplings are summed in ball order (`ball_pass`).
 
@@ -7,7 +7,7 @@ use nalgebra::Vector3;
 
 /// What one ball's contacts do to the border: forces and moments on the
 /// rings and the cage, and dissipated power (the coupling vector of the
-/// block split, MODEL §8).
+/// block split, docs/model.md §8).
 #[derive(Debug, Clone, Copy, Default)]
 pub(super) struct BallCoupling {
     pub(super) ring_force: Vector3<f64>,

@@ -1,21 +1,21 @@
-//! Drag of the air–oil mixture on balls and cage (seed 001; MODEL §3, §5).
+//! Drag of the air–oil mixture on balls and cage (Deng et al. 2022; docs/model.md §3, §5).
 
 use nalgebra::Vector3;
 
-/// Drag of the air–oil mixture on balls and cage (seed 001 eqs 10–12, 24,
-/// 36; MODEL §3, §5), with the seed's misprints corrected:
+/// Drag of the air–oil mixture on balls and cage (Deng et al. 2022 eqs 10–12, 24,
+/// 36; docs/model.md §3, §5), with the paper's misprints corrected:
 /// ```text
 /// ball, orbit:  F = −½ ρ_e C_D (π D²/4) v_t |v_t| e_t             (v_t = r φ̇)
 /// ball, spin:   M = −½ ρ_e C_n (D/2)⁵ |ω_rel| ω_rel              (ω_rel = ω_b − φ̇ e_x)
 /// cage:         M = −(c₁ θ̇_c + c₂ θ̇_c |θ̇_c|)
 /// ```
-/// Seed 001 eqs 10–12 print M = ½ ρ ω (D/2)⁵ C_n, which is not a torque
+/// Deng et al. 2022 eqs 10–12 print M = ½ ρ ω (D/2)⁵ C_n, which is not a torque
 /// (N·m·s); the quadratic form above is the rotating-sphere drag torque.
-/// Seed 001 eq 24, F = C_D π ρ D² (d_m ω_m)^1.95/(32 g), is Gupta's
+/// Deng et al. 2022 eq 24, F = C_D π ρ D² (d_m ω_m)^1.95/(32 g), is Gupta's
 /// imperial-unit form (the g converts lbf); in SI with a constant C_D it is
-/// the quadratic drag above. Seed 001 eq 36 mixes terms of inconsistent
-/// dimensions; MODEL §5 asks for a churning/windage torque with user
-/// coefficients, which c₁ (viscous) and c₂ (windage) are. The mixture is
+/// the quadratic drag above. Deng et al. 2022 eq 36 mixes terms of inconsistent
+/// dimensions; rolldyn uses a churning/windage torque with user
+/// coefficients (docs/model.md §5), which c₁ (viscous) and c₂ (windage) are. The mixture is
 /// taken at rest (outer ring fixed). All zero by default.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct DragParameters {

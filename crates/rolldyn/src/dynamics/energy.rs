@@ -1,4 +1,4 @@
-//! Energy bookkeeping of the dynamic model (MODEL §10).
+//! Energy bookkeeping of the dynamic model (docs/model.md §10).
 //!
 //! [`BearingModel::energy`] gives kinetic energy (balls, ring translation
 //! and tilt, cage), elastic energy (Σ (2/5) K_c δ^{5/2} + ½ k δ_p²; with the
@@ -38,7 +38,7 @@ impl BearingModel {
         (y[w], y[w + 1])
     }
 
-    /// Mechanical energy of state `y` at time `t` (MODEL §10); its change
+    /// Mechanical energy of state `y` at time `t` (docs/model.md §10); its change
     /// equals the drive work minus the dissipated energy.
     pub fn energy(&self, t: f64, y: &[f64]) -> Energy {
         let l = self.layout;

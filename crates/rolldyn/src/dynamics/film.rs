@@ -1,11 +1,11 @@
-//! The lubricant film of the ball–raceway contacts (MODEL §4): the steady
+//! The lubricant film of the ball–raceway contacts (docs/model.md §4): the steady
 //! film the EHL traction sees, and the film in the normal approach.
 //!
 //! Steady film: the Hamrock–Dowson central film at the contact's load,
 //! entrainment speed and curvature, starved by the ring's supply
 //! ([`crate::lubrication`]).
 //!
-//! Film in the normal approach (option `film_in_approach`, MODEL §4): the
+//! Film in the normal approach (option `film_in_approach`, docs/model.md §4): the
 //! elastic approach is δ_el = δ + h(Q), Q = K_c δ_el^{3/2}, solved by Newton
 //! at every evaluation ([`crate::lubrication::approach::FilmLaw`] gives h
 //! and dh/dQ). A contact is closed while δ + h(0) > 0: it carries load
@@ -83,10 +83,10 @@ pub(super) struct FilmWork {
 impl BearingModel {
     /// Entrainment velocity of a contact at point P with normal n: the mean
     /// surface velocity of ball and ring relative to the contact point, in
-    /// the tangent plane (MODEL §3).
+    /// the tangent plane (docs/model.md §3).
     ///
     /// The contact point moves with the ball's azimuth frame:
-    /// v_P = q̇ + φ̇ e_x × (P − q). MODEL §3 writes q̇ for v_P, which misses
+    /// v_P = q̇ + φ̇ e_x × (P − q). Taking the ball-centre velocity q̇ for v_P would miss
     /// φ̇ e_x × (P − q): a factor 1/(1 ± γ cos α) on |u|, 12 % on the 7008C.
     pub(super) fn entrainment(
         ring: &RingMotion,
@@ -136,7 +136,7 @@ impl BearingModel {
                 effective_modulus: self.effective_modulus,
                 ellipticity: hertz.ellipticity,
                 semi_minor,
-                // Seed 003 eq 27: the inner ring throws the supply film.
+                // Zhang et al. 2020 eq 27: the inner ring throws the supply film.
                 ring_speed: ring.shaft_speed,
             },
         ))

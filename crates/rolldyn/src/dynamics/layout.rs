@@ -1,15 +1,15 @@
-//! Layout of the dynamic state vector (MODEL §1).
+//! Layout of the dynamic state vector (docs/model.md §1).
 
 /// Offsets of the parts of the state vector.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct StateLayout {
     /// Number of balls.
     pub balls: usize,
-    /// Whether each ball carries its spin angle ψ (10th ball state, MODEL
+    /// Whether each ball carries its spin angle ψ (10th ball state, docs/model.md
     /// §1): only when the balls have surfaces (waviness, spalls).
     pub ball_spin_angle: bool,
     /// Whether a third accumulator holds the work of the films: only with
-    /// the film in the normal approach (MODEL §4, `dynamics::film`).
+    /// the film in the normal approach (docs/model.md §4, `dynamics::film`).
     pub film_work: bool,
 }
 
@@ -46,7 +46,7 @@ impl StateLayout {
     }
     /// The states that the contacts of ball j touch (read or write): its
     /// own block, both rings and the cage. Nothing else couples the balls,
-    /// so the Jacobian is bordered block-diagonal (MODEL §8).
+    /// so the Jacobian is bordered block-diagonal (docs/model.md §8).
     pub fn ball_coupling(&self, j: usize) -> [std::ops::Range<usize>; 2] {
         [
             self.ball(j)..self.ball(j) + self.ball_len(),

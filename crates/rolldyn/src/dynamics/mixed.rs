@@ -1,11 +1,11 @@
-//! Mixed lubrication in the dynamic model (MODEL §3, model 5): each
+//! Mixed lubrication in the dynamic model (docs/model.md §3, model 5): each
 //! ball–raceway contact's asperity share φ from its film parameter
 //! Λ = h_min/σ (Greenwood–Tripp load sharing, `lubrication::mixed`), which
 //! weights boundary friction against the fluid's traction law
 //! (`traction::mixed`).
 //!
 //! h_min is the contact's steady Hamrock–Dowson minimum film at its load,
-//! starved by the ring's supply (MODEL §4), also with the film in the
+//! starved by the ring's supply (docs/model.md §4), also with the film in the
 //! approach (whose fixed point carries the central film only).
 
 use super::model::{BearingModel, DynamicsParameters, RingMotion};

@@ -1,4 +1,4 @@
-//! The dynamic bearing model (MODEL §1, §2.3, §3, §5, §8, §10): balls with
+//! The dynamic bearing model (docs/model.md §1, §2.3, §3, §5, §8, §10): balls with
 //! 6 degrees of freedom, an inner ring with 5 (its spin prescribed), an
 //! outer ring fixed or on a housing spring–damper, and a cage with planar
 //! whirl and rotation, as an [`crate::integrate::OdeSystem`].
@@ -7,7 +7,7 @@
 //! contact-episode memory; traction integrated over the Hertz ellipse
 //! ([`crate::traction`]); rolling resistance by hysteresis; cage pockets,
 //! guide land and unbalance ([`crate::cage`]); ball and cage drag; gravity;
-//! planar mode; the energy bookkeeping of MODEL §10. docs/dynamics.md is
+//! planar mode; the energy bookkeeping of docs/model.md §10. docs/dynamics.md is
 //! the user guide. One file per force element or concern:
 //!
 //! | file | what |

@@ -1,14 +1,14 @@
 //! State, equations of motion and contact forces of the dynamic model.
 //!
-//! # State (MODEL §1)
+//! # State (docs/model.md §1)
 //! Two more states integrate the drive work and the dissipated energy
-//! (MODEL §10 bookkeeping). Ball j (9 states): axial x, radial r, azimuth φ, their rates, and the
+//! (docs/model.md §10 bookkeeping). Ball j (9 states): axial x, radial r, azimuth φ, their rates, and the
 //! angular velocity (ω_x, ω_r, ω_t) in the ball's azimuth frame
 //! (e_x, e_r, e_t), e_r = cos φ e_y + sin φ e_z, e_t = e_x × e_r. Inner ring
 //! (10): translation (x, y, z), tilts (θ_y, θ_z) and their rates; its spin
-//! ω_i(t) is prescribed (MODEL §8). Outer ring (4): radial translation
+//! ω_i(t) is prescribed (docs/model.md §8). Outer ring (4): radial translation
 //! (y_o, z_o) and rates, frozen at zero unless the ring sits on a housing
-//! spring–damper (seed 002 eqs 14–15). Cage (6): whirl (y_c, z_c),
+//! spring–damper (Zhang et al. 2025 eqs 14–15). Cage (6): whirl (y_c, z_c),
 //! rotation θ_c and their rates.
 //!
 //! # Equations
@@ -16,8 +16,8 @@
 //! m ẍ = F_x,   m (r̈ − r φ̇²) = F_r,   m (r φ̈ + 2 ṙ φ̇) = F_t
 //! ω̇_x = M_x/I,  ω̇_r = M_r/I + φ̇ ω_t,  ω̇_t = M_t/I − φ̇ ω_r,      I = m D²/10
 //! inner ring: m_i ẗ = ΣF + F_applied(t) − k t − c ṫ,  I_t θ̈ = ΣM + M_applied(t)   (ring gyroscopics neglected)
-//! outer ring: m_o (ÿ_o, z̈_o) = ΣF − k_h (y_o, z_o) − c_h (ẏ_o, ż_o)             (seed 002 eqs 14–15)
-//! cage: m_c (ÿ_c, z̈_c) = ΣF + m_u e ω_c² (cos θ_c, sin θ_c),  I_c θ̈_c = ΣM_x    (seed 001 eqs 37–39)
+//! outer ring: m_o (ÿ_o, z̈_o) = ΣF − k_h (y_o, z_o) − c_h (ẏ_o, ż_o)             (Zhang et al. 2025 eqs 14–15)
+//! cage: m_c (ÿ_c, z̈_c) = ΣF + m_u e ω_c² (cos θ_c, sin θ_c),  I_c θ̈_c = ΣM_x    (Deng et al. 2022 eqs 37–39)
 //! ```
 //! Centrifugal and Coriolis terms come from the rotating azimuth frame.
 //!
@@ -84,11 +84,11 @@ pub struct DynamicsParameters {
     /// Outer ring on a housing spring–damper (None: fixed).
     pub outer_ring: Option<OuterRing>,
     /// Elastic-hysteresis coefficient α_h of the rolling resistance
-    /// (0: off; ≈ 0.007 for steel, seed 004 eq 21).
+    /// (0: off; ≈ 0.007 for steel, Lei et al. 2023 eq 21).
     pub rolling_hysteresis: f64,
     /// Gravitational acceleration along −z \[m/s²\] (0: off).
     pub gravity: f64,
-    /// Planar mode (seed 000): axial coordinates, tilts and the ball spin
+    /// Planar mode (Shan et al. 2023): axial coordinates, tilts and the ball spin
     /// components other than ω_x frozen.
     pub planar: bool,
     /// Drag of the air–oil mixture.
@@ -96,13 +96,13 @@ pub struct DynamicsParameters {
     /// Raceway and ball surfaces: waviness and spalls (default: smooth).
     pub surface: SurfaceModel,
     /// Oil supply of the inner and outer raceway contacts (starvation of
-    /// the EHL film, MODEL §4; default: fully flooded).
+    /// the EHL film, docs/model.md §4; default: fully flooded).
     pub film_supply: [crate::lubrication::Supply; 2],
-    /// The lubricant film in the normal approach (MODEL §4): δ_el = δ + h(Q)
+    /// The lubricant film in the normal approach (docs/model.md §4): δ_el = δ + h(Q)
     /// with the steady central film h (`dynamics::film`). Needs a film
     /// model (EHL traction) and a flooded or inlet-distance supply.
     pub film_in_approach: bool,
-    /// Mixed lubrication (MODEL §3, model 5): boundary friction on the
+    /// Mixed lubrication (docs/model.md §3, model 5): boundary friction on the
     /// asperities' share of each contact's load, from the film parameter
     /// Λ = h_min/σ (`lubrication::mixed`). Needs a film model (EHL
     /// traction) and the raceways' and balls' roughness (`surface`).
@@ -136,7 +136,7 @@ pub(super) struct RingMotion {
     pub(super) spin_angle: f64,
     /// Spin speed of the ring about its axis \[rad/s\].
     pub(super) spin_speed: f64,
-    /// Inner-ring (shaft) speed \[rad/s\] (the oil-flow supply, MODEL §4).
+    /// Inner-ring (shaft) speed \[rad/s\] (the oil-flow supply, docs/model.md §4).
     pub(super) shaft_speed: f64,
 }
 
@@ -300,7 +300,7 @@ impl BearingModel {
         y
     }
 
-    /// Start from a quasi-static (Jones–Harris) solution (seed 002 §3.1):
+    /// Start from a quasi-static (Jones–Harris) solution (Zhang et al. 2025 §3.1):
     /// ball positions and speeds, ring displacement; cage at the mean ball
     /// orbital speed.
     pub fn state_from_equilibrium(&self, eq: &Equilibrium) -> Vec<f64> {
@@ -624,7 +624,7 @@ impl BearingModel {
     }
 
     /// Derivatives `dy` of state `y` at time `t` (as [`OdeSystem::rhs`]) and
-    /// the dissipated power by component with the drive torque (MODEL §10,
+    /// the dissipated power by component with the drive torque (docs/model.md §10,
     /// [`crate::power::dissipation`]). Its total equals the rate of the
     /// dissipated-energy accumulator, `dy[layout().work() + 1]`.
     pub fn rhs_with_power(&self, t: f64, y: &[f64], dy: &mut [f64]) -> Dissipation {
@@ -749,7 +749,7 @@ impl OdeSystem for BearingModel {
     /// circle and no relative part ([`Self::absolute_error`]). The energy
     /// accumulators keep their relative part: held absolutely, to rtol ×
     /// 100 µJ, the balance of the default case did not improve over 1 s
-    /// while the seed-002 ramp (hundreds of joules) ran more than three
+    /// while the Zhang et al. 2025 ramp (hundreds of joules) ran more than three
     /// times as long (docs/performance.md).
     fn error_scale(&self, scale: &mut [f64]) {
         let l = self.layout;
@@ -844,7 +844,7 @@ impl OdeSystem for BearingModel {
 }
 
 /// The inner ring's tilted y axis R_z(θ_z) e_y, about which the tilt rate
-/// θ̇_y turns it (MODEL §1).
+/// θ̇_y turns it (docs/model.md §1).
 pub(super) fn tilt_axis_y(tilt_z: f64) -> Vector3<f64> {
     if tilt_z == 0.0 {
         return Vector3::y();

@@ -1,6 +1,6 @@
 //! Output quantities of a dynamic state: per-contact samples, FASTSIM
 //! stick/slip maps, the pure-rolling cage-speed reference and ball
-//! attitude (MODEL §9).
+//! attitude (docs/model.md §9).
 
 use super::model::BearingModel;
 use super::race_contact::{ContactOutput, ContactSample, Want};
@@ -31,7 +31,7 @@ impl BearingModel {
     }
 
     /// The ball–pocket normal forces at state `y`: their sum over the
-    /// balls and the largest \[N\] (the cage's impact history, MODEL §5).
+    /// balls and the largest \[N\] (the cage's impact history, docs/model.md §5).
     pub fn pocket_forces(&self, y: &[f64]) -> (f64, f64) {
         (0..self.layout.balls)
             .filter_map(|j| {
@@ -44,7 +44,7 @@ impl BearingModel {
     }
 
     /// The FASTSIM stick/slip map of ball j's contact with `ring` at state
-    /// `y`: `map` receives every element (seed 002 Fig. 11); returns the
+    /// `y`: `map` receives every element (Zhang et al. 2025 Fig. 11); returns the
     /// contact's output, or None when the contact is open. Other traction
     /// models call `map` never.
     pub fn traction_map(
@@ -71,11 +71,11 @@ impl BearingModel {
         .map(|c| c.output)
     }
 
-    /// Pure-rolling cage-speed ratio ω_c/ω_i of MODEL §7 for the current
+    /// Pure-rolling cage-speed ratio ω_c/ω_i of docs/model.md §7 for the current
     /// state: the mean contact angles of the loaded contacts and the mean
     /// ball attitude angle β (spin axis relative to the cage, as in Harris)
     /// in the formula with different inner and outer angles. The reference
-    /// of the cage speed ratio (CSR) of seed 002 §4.2.
+    /// of the cage speed ratio (CSR) of Zhang et al. 2025 §4.2.
     pub fn pure_rolling_ratio(&self, samples: &[ContactSample], y: &[f64]) -> f64 {
         let l = self.layout;
         let (mut ai, mut ao, mut beta, mut n) = (0.0, 0.0, 0.0, 0.0);
@@ -96,7 +96,7 @@ impl BearingModel {
         cage_speed_ratio(gamma, ai / n, ao / n, beta / n)
     }
 
-    /// Attitude β and yaw β' of ball j \[rad\] (seed 002 §4.1; Harris): the
+    /// Attitude β and yaw β' of ball j \[rad\] (Zhang et al. 2025 §4.1; Harris): the
     /// direction of its spin relative to the cage frame, ω' = ω_b − φ̇ e_x,
     /// with ω'_x = −ω' cos β cos β', ω'_t = ω' cos β sin β', ω'_r = ω' sin β.
     /// A ball rolling on the contact line at angle α has β = α, β' = 0.

@@ -1,6 +1,6 @@
-//! Ball–pocket contact (MODEL §5).
+//! Ball–pocket contact (docs/model.md §5).
 //!
-//! Ball–pocket (MODEL §5; [`crate::cage::pocket`]): cylindrical or
+//! Ball–pocket (docs/model.md §5; [`crate::cage::pocket`]): cylindrical or
 //! spherical pockets at the cage pitch radius, `linear`, `hertz` or
 //! `gupta_film` normal law, modified-Coulomb friction on the slip at the
 //! contact point, and optionally the oil film's squeeze damping

@@ -1,7 +1,7 @@
 //! Ball–raceway contact: normal force, traction and rolling resistance
-//! (MODEL §2.1, §3).
+//! (docs/model.md §2.1, §3).
 //!
-//! Ball–raceway: the exact torus contact of MODEL §2.1 (δ, n, contact
+//! Ball–raceway: the exact torus contact of docs/model.md §2.1 (δ, n, contact
 //! point P, α). The normal law gives Q from δ, δ̇ = (q̇ − ṗ)·n (p: the
 //! groove-centre point, moving with the ring) and the episode's impact
 //! speed. With the film in the normal approach δ is the elastic approach
@@ -10,7 +10,7 @@
 //! v_g = ṫ + ω_ring × (P − t), with ω_ring = ω_i a + the tilt rates. Force
 //! on the ball: −Q n + F_T; the ring takes the reaction at P.
 //!
-//! Rolling resistance by elastic hysteresis (MODEL §3; seed 004 eq 21,
+//! Rolling resistance by elastic hysteresis (docs/model.md §3; Lei et al. 2023 eq 21,
 //! Harris): F_h = α_h (3/16)(b/(D/2)) Q opposing the rolling, applied as
 //! the equivalent couple M_h = (D/2) F_h = (3/16) α_h b Q about the rolling
 //! axis e_a = n × û on the ball, the reaction couple on the ring; its power
@@ -28,10 +28,10 @@ use crate::traction::{ContactConditions, ContactPatch, Creep, TractionModel, Tra
 use nalgebra::Vector3;
 
 /// Rolling speed over which the hysteresis couple ramps up from zero
-/// (regularisation, MODEL §3) \[m/s\].
+/// (regularisation, docs/model.md §3) \[m/s\].
 pub const HYSTERESIS_RAMP_SPEED: f64 = 1e-3;
 
-/// State of one ball–raceway contact for output (MODEL §9); all zero
+/// State of one ball–raceway contact for output (docs/model.md §9); all zero
 /// when the contact is open.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ContactOutput {
@@ -106,7 +106,7 @@ pub(super) struct RaceContact {
 
 impl BearingModel {
     /// Contact geometry of a ball with a ring, the penetration including the
-    /// surfaces (MODEL §2.1, §6), and the surfaces' effect per unit load;
+    /// surfaces (docs/model.md §2.1, §6), and the surfaces' effect per unit load;
     /// None when the bodies do not overlap.
     pub(super) fn race_geometry(
         &self,
@@ -197,7 +197,7 @@ impl BearingModel {
         };
         let load = self.params.normal_law.force(&state);
         let ellipse = hertz.at_load(load);
-        // Film (MODEL §4): h(Q) of the elastic load with the film in the
+        // Film (docs/model.md §4): h(Q) of the elastic load with the film in the
         // approach, else the steady Hamrock–Dowson film at the load; both
         // starved by the ring's supply.
         let steady = match &approach {

@@ -1,4 +1,4 @@
-//! Spring–damper supports of the rings (seed 002 eqs 14–15).
+//! Spring–damper supports of the rings (Zhang et al. 2025 eqs 14–15).
 
 use crate::error::{InvalidParameter, require_non_negative};
 use nalgebra::Vector3;
@@ -38,7 +38,7 @@ impl Support {
     }
 }
 
-/// The outer ring on a housing spring–damper (seed 002 eqs 14–15): radial
+/// The outer ring on a housing spring–damper (Zhang et al. 2025 eqs 14–15): radial
 /// translation (y_o, z_o) only.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct OuterRing {

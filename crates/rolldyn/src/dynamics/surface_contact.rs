@@ -1,4 +1,4 @@
-//! Raceway and ball surfaces in the ball–raceway contacts (MODEL §6), and
+//! Raceway and ball surfaces in the ball–raceway contacts (docs/model.md §6), and
 //! the step limit that keeps the integrator from stepping over a spall.
 //!
 //! The approach grows by the surface's Δδ (see [`crate::surface`]). Δδ
@@ -22,7 +22,7 @@
 //! ball-surface forces have no reaction on the rings: they are of the order
 //! of the surface slope times the load (mN for micrometre waviness) and
 //! average to zero over a ball turn; this is the price of the scalar spin
-//! angle ψ of seed 001 in place of a full ball orientation.
+//! angle ψ of Deng et al. 2022 in place of a full ball orientation.
 
 use super::layout::StateLayout;
 use super::model::{BallMotion, BearingModel, RingMotion};

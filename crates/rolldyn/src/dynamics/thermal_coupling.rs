@@ -1,4 +1,4 @@
-//! Temperatures during a dynamic run (MODEL §10; issue 13): the bearing's
+//! Temperatures during a dynamic run (docs/model.md §10): the bearing's
 //! thermal network ([`crate::thermal::bearing`]) advanced on its own,
 //! slower time scale alongside the integration, feeding the oil viscosity
 //! back into the EHL traction and the guide land.
@@ -460,7 +460,7 @@ mod tests {
     }
 
     /// A coupled run checkpointed between two network updates and restored
-    /// into a freshly coupled model continues bit for bit (issue 17):
+    /// into a freshly coupled model continues bit for bit:
     /// temperatures, heat, update times and the viscosities fed back.
     #[test]
     fn coupled_run_resumes_bit_identically() {

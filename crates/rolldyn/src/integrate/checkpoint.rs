@@ -1,6 +1,6 @@
 //! Checkpoints: the complete state of an integration (integrator and
 //! system) as bytes, so that an interrupted run continues bit-identically
-//! (issue 17).
+//!.
 //!
 //! The format is a flat little-endian record: every `f64` is stored as its
 //! bit pattern (`to_bits`), so nothing is rounded through text. A

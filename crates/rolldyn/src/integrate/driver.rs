@@ -1,7 +1,7 @@
 //! Drives an integrator to an end time, sampling the solution at a fixed
 //! rate by dense output (independent of the steps), honouring a stop flag
 //! (Ctrl-C) and reporting progress. Knows nothing of files or terminals:
-//! samples and progress go to callbacks (CODE.md: observers).
+//! samples and progress go to callbacks (observers).
 
 use super::explicit::{IntegrationError, IntegrationStats};
 use super::{Integrator, OdeSystem};

@@ -644,7 +644,7 @@ mod tests {
     }
 
     /// A failing integration names the component that fails, with both
-    /// integrators (issue 17: exit 3 with the time, the state and a hint).
+    /// integrators (exit 3 with the time, the state and a hint).
     #[test]
     fn failure_names_the_state_component() {
         let adaptive = StepControl::Adaptive {

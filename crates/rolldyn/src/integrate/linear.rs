@@ -5,7 +5,7 @@
 //!
 //! A system whose states split into `blocks` independent blocks of
 //! `block_size` states, each coupled only to a common **border** (for a
-//! bearing: each ball to the rings and the cage, MODEL §8), has a Jacobian
+//! bearing: each ball to the rings and the cage, docs/model.md §8), has a Jacobian
 //!
 //! ```text
 //!     ⎡ D₀          U₀ ⎤

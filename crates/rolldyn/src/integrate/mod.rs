@@ -1,9 +1,9 @@
 //! Time integration of ODE systems y' = f(t, y). Knows nothing of bearings
-//! (CODE.md: the bearing model implements [`OdeSystem`], the integrator
+//! (the bearing model implements [`OdeSystem`], the integrator
 //! advances it, observers receive samples).
 //!
 //! * [`OdeSystem`]: in-place right-hand side, per-state error scales, and a hook called after every **accepted** step (where the
-//!   bearing model updates its contact-episode memory, MODEL §2.3).
+//!   bearing model updates its contact-episode memory, docs/model.md §2.3).
 //! * [`ExplicitRk`]: explicit Runge–Kutta methods from tableaus given as
 //!   data ([`tableau`]): classical RK4 with a fixed step, and Dormand–Prince
 //!   5(4) with error control and 4th-order dense output. All work vectors

@@ -22,7 +22,7 @@ pub struct Tableau {
     pub dense: &'static [f64],
 }
 
-/// The classical 4th-order Runge–Kutta method (fixed step; seeds 001, 002).
+/// The classical 4th-order Runge–Kutta method (fixed step; Deng et al. 2022, Zhang et al. 2025).
 pub const RK4: Tableau = Tableau {
     name: "rk4",
     order: 4,

@@ -1,4 +1,4 @@
-//! Rating life of a single-row radial ball bearing (issue 16;
+//! Rating life of a single-row radial ball bearing (
 //! docs/quasistatic.md, "Rating life").
 //!
 //! * [`iso281`] — basic dynamic load rating C_r from the ball set, the

@@ -1,8 +1,8 @@
-//! The lubricant film in the normal approach (MODEL §4, option): a
+//! The lubricant film in the normal approach (docs/model.md §4, option): a
 //! contact's central film as a function of its load, its integral, and
 //! the light-load floor.
 //!
-//! MODEL §4 puts the central film into the elastic compression,
+//! The option puts the central film into the elastic compression,
 //! δ_el = δ + h_c(Q), Q = K_c δ_el^{3/2}, a fixed point in Q. At fixed
 //! entrainment speed u and geometry the film is a function of the load
 //! alone,
@@ -13,13 +13,13 @@
 //! L*(q) − 1 = 3.06 (R_x h_fl/b²)^0.56,  b = β q^{1/3}
 //!   ⇒  c = −0.14 (a − 2/3) = 0.10271
 //! ```
-//! (seed 003 eqs 16–30 as in [`super::hamrock_dowson`] and
+//! (Zhang et al. 2020 eqs 16–30 as in [`super::hamrock_dowson`] and
 //! [`super::starvation`]; H is the flooded film at 1 N, β the Hertz
 //! semi-axis coefficient). [`FilmLaw`] holds H, C and the floor and gives
 //! h(q), dh/dq and ∫₀^q h. The contact then stores
 //! V = (2/5) K_c δ_el^{5/2} − Q h + ∫₀^Q h dq, whose δ-derivative is Q:
 //! the film is a nonlinear spring in series with Hertz (its compliance
-//! dh/dQ is seed 003's 1/K_oil). H, C and the floor change with u and the
+//! dh/dQ is Zhang et al. 2020's 1/K_oil). H, C and the floor change with u and the
 //! contact angle: that change of V at fixed Q, ∂/∂t ∫₀^Q h dq, is the work
 //! the film does on the contact. It is drawn from the entrainment, and the
 //! energy balance counts it (`dynamics::film`).
@@ -34,11 +34,11 @@
 //! unique: a starved film grows with load (exponent a + c = +0.036), and
 //! the elastic approach must outgrow it, 1.5 (a + c) h/δ_el < 1, i.e.
 //! δ_el > 0.054 h. At the floor that is δ_el ≈ 0.1 µm against 0.054 h ≈
-//! 0.03 µm (seed 003's bearing, h ≈ 0.5 µm) and 0.07 µm (7008C at
+//! 0.03 µm (Zhang et al. 2020's bearing, h ≈ 0.5 µm) and 0.07 µm (7008C at
 //! 10 000 rpm, h ≈ 1.3 µm). Newton's slope is bounded below (0.1) as a
 //! guard.
 //!
-//! Supplies: flooded and an inlet distance ratio L (seed 003's input). The
+//! Supplies: flooded and an inlet distance ratio L (Zhang et al. 2020's input). The
 //! oil-flow supply makes L a function of b and h_c that is not a power of
 //! the load; the film in the approach refuses it.
 
@@ -320,7 +320,7 @@ mod tests {
         .central
     }
 
-    /// Flooded, starved at seed 003's extremes, and flooded by a far inlet.
+    /// Flooded, starved at Zhang et al. 2020's extremes, and flooded by a far inlet.
     const SUPPLIES: [Supply; 4] = [
         Supply::Flooded,
         Supply::InletDistance(1.1),

@@ -1,6 +1,6 @@
 //! The film state of one contact: flooded Hamrock–Dowson films, their
-//! starvation (seed 003 eqs 26–30), the film parameter Λ = h_min/σ and the
-//! oil-film stiffness (MODEL §4).
+//! starvation (Zhang et al. 2020 eqs 26–30), the film parameter Λ = h_min/σ and the
+//! oil-film stiffness (docs/model.md §4).
 
 use super::starvation::{Supply, critical_inlet_ratio, starvation_factor};
 use super::{Lubricant, film_stiffness, hamrock_dowson};

@@ -1,5 +1,5 @@
 //! Mixed lubrication: the share of a contact's load that the asperities
-//! carry, as a function of the film parameter Λ = h_min/σ (MODEL §3,
+//! carry, as a function of the film parameter Λ = h_min/σ (docs/model.md §3,
 //! model 5).
 //!
 //! **Asperity pressure** of two nominally flat rough surfaces with Gaussian
@@ -14,7 +14,7 @@
 //! density of each surface and β their tip radius (given as the
 //! dimensionless σβη ≈ 0.03–0.07 and σ/β ≈ 1e-4–1e-2), h the separation of
 //! the mean planes. E* is the Hertz modulus of the summit pairs,
-//! 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂, i.e. E'/2 with MODEL §2.2's E'.
+//! 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂, i.e. E'/2 with docs/model.md §2.2's E'.
 //! The constant follows from summing Hertz contacts of summit pairs of
 //! radius β over their lateral offsets (docs/lubrication.md gives the
 //! steps).
@@ -121,7 +121,7 @@ impl MixedLubrication {
     }
 
     /// Asperity pressure p_a = K E* F_{5/2}(Λ) \[Pa\] at film parameter Λ,
-    /// with MODEL §2.2's effective modulus E' = 2E* \[Pa\].
+    /// with docs/model.md §2.2's effective modulus E' = 2E* \[Pa\].
     pub fn asperity_pressure(&self, film_parameter: f64, effective_modulus: f64) -> f64 {
         self.asperity_constant() * 0.5 * effective_modulus * f_five_halves(film_parameter)
     }

@@ -1,4 +1,4 @@
-//! Lubricant films (MODEL §4): Hamrock–Dowson central and minimum film
+//! Lubricant films (docs/model.md §4): Hamrock–Dowson central and minimum film
 //! thickness of an elliptical EHL contact, and the pressure dependence of
 //! viscosity.
 //!
@@ -8,18 +8,18 @@
 //! h_min = R_x · 3.63 U^0.68 G^0.49 W^−0.073 (1 − e^{−0.68 κ})
 //! ```
 //! (B. J. Hamrock & D. Dowson, *Ball Bearing Lubrication*, Wiley 1981,
-//! eqs 7.26, 7.23; seed 003 eqs 16–25.) **Correction:** seed 003 eq 19
+//! eqs 7.26, 7.23; Zhang et al. 2020 eqs 16–25.) **Correction:** Zhang et al. 2020 eq 19
 //! prints W = Q/(E R_x); the dimensionless load has R_x². u is the
-//! entrainment speed of MODEL §3 (mean surface speed relative to the
-//! contact), not seed 003 eq 14's shaft-speed approximation. E' here is the
-//! effective modulus of MODEL §2.2 (E' = 2/[(1−ν₁²)/E₁ + (1−ν₂²)/E₂]), the
+//! entrainment speed of docs/model.md §3 (mean surface speed relative to the
+//! contact), not Zhang et al. 2020 eq 14's shaft-speed approximation. E' here is the
+//! effective modulus of docs/model.md §2.2 (E' = 2/[(1−ν₁²)/E₁ + (1−ν₂²)/E₂]), the
 //! one Hamrock & Dowson use.
 //!
 //! [`approach`]: the film in the normal approach, a state relaxing to
 //! its steady value. [`starvation`]: starved films from the inlet distance or the oil supply
-//! (seed 003 eqs 26–30). [`film`]: a contact's whole film state (flooded
+//! (Zhang et al. 2020 eqs 26–30). [`film`]: a contact's whole film state (flooded
 //! and starved films, Λ = h_min/σ, K_oil). [`film_stiffness`]: the oil film's normal
-//! stiffness K_oil = Q/(0.073 h_min) (seed 003 eq 37).
+//! stiffness K_oil = Q/(0.073 h_min) (Zhang et al. 2020 eq 37).
 
 use crate::error::InvalidParameter;
 use serde::{Deserialize, Serialize};
@@ -141,8 +141,8 @@ pub fn hamrock_dowson(
 }
 
 /// Oil-film normal stiffness K_oil = dQ/dh_min = Q/(0.073 h_min) \[N/m\]
-/// (seed 003 eq 37 written out: h_min ∝ Q^−0.073 in the Hamrock–Dowson
-/// formula; MODEL §4). Infinite without a film (the contact is then
+/// (Zhang et al. 2020 eq 37 written out: h_min ∝ Q^−0.073 in the Hamrock–Dowson
+/// formula; docs/model.md §4). Infinite without a film (the contact is then
 /// Hertz alone).
 pub fn film_stiffness(load: f64, minimum_film: f64) -> f64 {
     if minimum_film > 0.0 {

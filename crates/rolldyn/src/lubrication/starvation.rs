@@ -1,4 +1,4 @@
-//! Starved EHL films (MODEL §4; seed 003 eqs 26–30 after Hamrock & Dowson
+//! Starved EHL films (docs/model.md §4; Zhang et al. 2020 eqs 26–30 after Hamrock & Dowson
 //! 1977, "Isothermal elastohydrodynamic lubrication of point contacts,
 //! Part IV: starvation results", ASME J. Lubr. Technol. 99, 15–23).
 //!
@@ -7,12 +7,12 @@
 //! flooded from the critical inlet distance
 //!
 //! ```text
-//! L* = 1 + 3.06 [(R_x/b)² H_c]^0.56,   H_c = h_c/R_x            (seed 003 eq 29)
+//! L* = 1 + 3.06 [(R_x/b)² H_c]^0.56,   H_c = h_c/R_x            (Zhang et al. 2020 eq 29)
 //! ```
 //! on; below it the film shrinks as
 //!
 //! ```text
-//! h_s = h ((L − 1)/(L* − 1))^0.25                                (seed 003 eq 30)
+//! h_s = h ((L − 1)/(L* − 1))^0.25                                (Zhang et al. 2020 eq 30)
 //! ```
 //! vanishing as the meniscus reaches the contact edge (L → 1). rolldyn
 //! applies the central film's boundary and factor to the minimum film too:
@@ -21,9 +21,9 @@
 //!
 //! The inlet distance may instead follow from an oil supply flow Q_v: the
 //! inlet film a centrifugal thin film leaves on the ring,
-//! h_b = (3 ν Q_v / (2π ω² r²))^{1/3} (seed 003 eq 27 prints the exponent
-//! 2/3, which is dimensionally wrong; MODEL §4), and
-//! X_b = b + ((h_b/h_c − 1)/1.21)^{2/3} (R_x h_c)^{2/3} b^{−1/3} (seed 003
+//! h_b = (3 ν Q_v / (2π ω² r²))^{1/3} (Zhang et al. 2020 eq 27 prints the exponent
+//! 2/3, which is dimensionally wrong; docs/model.md §4), and
+//! X_b = b + ((h_b/h_c − 1)/1.21)^{2/3} (R_x h_c)^{2/3} b^{−1/3} (Zhang et al. 2020
 //! eq 26; no meniscus lift, L = 1, when h_b ≤ h_c).
 
 use crate::error::{InvalidParameter, require_positive};
@@ -111,14 +111,14 @@ impl Supply {
     }
 }
 
-/// Critical inlet distance ratio L* (seed 003 eq 29) for flooded central
+/// Critical inlet distance ratio L* (Zhang et al. 2020 eq 29) for flooded central
 /// film h_c, rolling radius R_x and semi-axis b.
 pub fn critical_inlet_ratio(central_film: f64, rolling_radius: f64, semi_minor: f64) -> f64 {
     let hc = central_film / rolling_radius;
     1.0 + 3.06 * ((rolling_radius / semi_minor).powi(2) * hc).powf(0.56)
 }
 
-/// Film reduction factor ((L − 1)/(L* − 1))^0.25 in [0, 1] (seed 003 eq 30);
+/// Film reduction factor ((L − 1)/(L* − 1))^0.25 in [0, 1] (Zhang et al. 2020 eq 30);
 /// 1 at and above L*.
 pub fn starvation_factor(inlet_ratio: f64, critical_ratio: f64) -> f64 {
     if inlet_ratio >= critical_ratio {

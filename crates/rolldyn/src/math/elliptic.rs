@@ -104,7 +104,7 @@ mod tests {
 
     #[test]
     fn known_values_at_half() {
-        // A1 (VALIDATION.md): reference values from A&S Table 17.1 / mpmath.
+        // A1 (docs/validation.md): reference values from A&S Table 17.1 / mpmath.
         let c = complete(0.5);
         assert!(
             rel(c.k, 1.854_074_677_301_371_9) < 1e-12,

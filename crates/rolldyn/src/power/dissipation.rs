@@ -1,5 +1,5 @@
 //! Where the dynamic model dissipates energy: the exact bookkeeping of
-//! MODEL §10, split by force element and mechanism.
+//! docs/model.md §10, split by force element and mechanism.
 //!
 //! The traction of a ball–raceway contact dissipates −Σ dF·s over the
 //! ellipse cells, with the slip linear in the cell position,
@@ -14,7 +14,7 @@
 //! call differential sliding. The last is taken as the remainder
 //! `traction − the first three`, so the parts sum to the traction's
 //! dissipation to rounding for every traction model (FASTSIM, which works
-//! on a flat patch, has none). Hysteresis is M_h |ω_roll| (seed 004 eq 21)
+//! on a flat patch, has none). Hysteresis is M_h |ω_roll| (Lei et al. 2023 eq 21)
 //! and damping the normal law's (Q − K δ^{3/2}) δ̇.
 
 /// Dissipated power of one ball–raceway contact by mechanism \[W\].

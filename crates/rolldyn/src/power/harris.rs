@@ -1,4 +1,4 @@
-//! Quasi-static power loss by Harris's local method (seed 004 §3; Harris &
+//! Quasi-static power loss by Harris's local method (Lei et al. 2023 §3; Harris &
 //! Kotzalas, *Advanced Concepts of Bearing Technology*, 2006, ch. 6–7):
 //! each mechanism evaluated on its own at every contact of a Jones–Harris
 //! solution, under full sliding with a constant coefficient, and summed.
@@ -8,8 +8,8 @@
 //! ω_roll of the ball relative to the ring, from
 //! [`crate::quasistatic::contact_motion`]):
 //! ```text
-//! hysteresis            H_E = (3/16) α_h b Q |ω_roll|                       (Johnson §9.2; Harris; seed 004 eqs 20–27)
-//! spin                  H_S = (3/8) f_s Q a E(m) |ω_s|                      (Harris & Kotzalas; seed 004 eqs 34–35)
+//! hysteresis            H_E = (3/16) α_h b Q |ω_roll|                       (Johnson §9.2; Harris; Lei et al. 2023 eqs 20–27)
+//! spin                  H_S = (3/8) f_s Q a E(m) |ω_s|                      (Harris & Kotzalas; Lei et al. 2023 eqs 34–35)
 //! differential sliding  H_D = (3/4) I_H f_s Q a² |ω_roll| / R_d             (Heathcote slip, derived below)
 //! ```
 //! Heathcote slip: across the ellipse the deformed surface (radius
@@ -19,11 +19,11 @@
 //! and no net friction force (free rolling), the rolling lines sit at
 //! ξ = ±c a with c³ − 3c + 1 = 0, c = 2 cos 80° = 0.3473 (Heathcote's
 //! classical result), and the dissipated power is the line above with
-//! I_H = 2/15 − (2/3)c² + (4/3)c³ − (4/15)c⁵. Seed 004's eqs 29–33 (a
+//! I_H = 2/15 − (2/3)c² + (4/3)c³ − (4/15)c⁵. Lei et al. 2023's eqs 29–33 (a
 //! fitted form of the same mechanism, with eq 32 printed twice) are not
 //! used.
 //!
-//! Seed 004 eq 23 (with eq 27's E′ = 4(1 − ν²)/E corrected from (1 − ν)²),
+//! Lei et al. 2023 eq 23 (with eq 27's E′ = 4(1 − ν²)/E corrected from (1 − ν)²),
 //! read with Harris's a*, b*, δ* (eq 24 is δ*, eq 25 is b*), reduces to
 //! φ = (3/16)(δ*/b*²) Σρ b Q: for a circular contact (δ* = b* = 1) on a
 //! flat, (3/16) b Q/(D/4), the rolling-resistance form (3/16) α_h b Q/R
@@ -39,9 +39,9 @@
 //! drag          balls: −(F v_t + M·ω_b), cage: c₁ ω_c² + c₂ |ω_c|³ (crate::dynamics::DragParameters)
 //! ```
 //! The pocket forces are those that hold the cage against its drag (Harris
-//! & Kotzalas ch. 7 take the cage weight, seed 004 eq 37); they act where
+//! & Kotzalas ch. 7 take the cage weight, Lei et al. 2023 eq 37); they act where
 //! the ball surface slides past the pocket at (D/2) ω_R, ω_R its spin
-//! relative to the cage. Seed 004 eq 36 (an empirical land formula in
+//! relative to the cage. Lei et al. 2023 eq 36 (an empirical land formula in
 //! mixed units) and eq 38 (an inlet viscous loss, garbled) are not used.
 //!
 //! The methods' sum counts every mechanism under full sliding, each alone:
@@ -126,7 +126,7 @@ pub struct LocalPowerLoss {
 }
 
 impl LocalPowerLoss {
-    /// Total H \[W\] (seed 004 eq 39).
+    /// Total H \[W\] (Lei et al. 2023 eq 39).
     pub fn total(&self) -> f64 {
         self.inner.total()
             + self.outer.total()
@@ -365,7 +365,7 @@ mod tests {
         );
     }
 
-    /// Seed 004 eq 23 (E′ of eq 27 corrected to 4(1 − ν²)/E), evaluated as
+    /// Lei et al. 2023 eq 23 (E′ of eq 27 corrected to 4(1 − ν²)/E), evaluated as
     /// printed with Harris's a*, b*, δ*, equals (3/16)(δ*/b*²) Σρ b Q with b
     /// from rolldyn's Hertz solution: the reduction docs/power.md states.
     #[test]

@@ -1,4 +1,4 @@
-//! Power loss: where a bearing turns work into heat (MODEL §10).
+//! Power loss: where a bearing turns work into heat (docs/model.md §10).
 //!
 //! * [`dissipation`] — the dynamic model's exact dissipation split by force
 //!   element and mechanism (the energy balance's dissipated power, per

@@ -1,4 +1,4 @@
-//! Motion at the raceway contacts of a quasi-static solution (MODEL §3),
+//! Motion at the raceway contacts of a quasi-static solution (docs/model.md §3),
 //! as the dynamic model sees it: the contact point, the relative angular
 //! velocity of ball and ring, the entrainment velocity and the rolling
 //! direction. Films ([`super::films`]) and the local power-loss method
@@ -10,7 +10,7 @@
 //! with the ball centre q at (x, r, φ), q̇ = r ω_m e_t, the ball's angular
 //! velocity ω_x e_x + ω_r e_r, and the inner ring turning at ω_i about its
 //! (displaced, tilted) axis; the outer ring is fixed. P is the exact torus
-//! contact of MODEL §2.1 at the solved ring displacement.
+//! contact of docs/model.md §2.1 at the solved ring displacement.
 
 use super::{ContactSolution, Equilibrium};
 use crate::contact::{GrooveCircle, RingPose, TorusContact};

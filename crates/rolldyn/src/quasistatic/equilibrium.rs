@@ -1,4 +1,4 @@
-//! Quasi-static equilibrium of a ball bearing (MODEL §7): the static load
+//! Quasi-static equilibrium of a ball bearing (docs/model.md §7): the static load
 //! distribution at zero speed and the Jones–Harris high-speed model, one
 //! set of equations.
 //!
@@ -20,12 +20,12 @@
 //! ([`super::ring_contact`]), n_x, n_r the normal's axial and radial
 //! components, Ω_i = ω_i, Ω_o = 0. The gyroscopic moment the ball needs,
 //! M_g = J ω_m ω_r about e_t (J = m D²/10, from dH/dt = ω_m e_x × J ω_b,
-//! MODEL §1), is carried by friction at the contacts:
+//! docs/model.md §1), is carried by friction at the contacts:
 //! f_k = λ_k (M_g/D) (n_x e_r − n_r e_x), with (λ_i, λ_o) = (0, 2) for outer-
 //! and (2, 0) for inner-raceway control (Harris & Kotzalas, *Advanced
 //! Concepts of Bearing Technology*, 5th ed., §3.3, eqs 3.49–3.56). The
 //! centrifugal force is m r ω_m² with the ball's actual orbit radius r
-//! (MODEL's ½ m d_m ω_m² is its value at r = d_m/2). The rolling equations
+//! (the usual ½ m d_m ω_m² is its value at r = d_m/2). The rolling equations
 //! use the nominal ring axes: ring displacements change surface speeds by a
 //! relative ~displacement/d_m, which Jones–Harris also neglects.
 //!
@@ -113,7 +113,7 @@ const STAGNATION_ACCEPT: f64 = 1e-8;
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum RacewayControl {
-    /// No spin at the outer contact (seed 002 Table 1's choice).
+    /// No spin at the outer contact (Zhang et al. 2025 Table 1's choice).
     #[default]
     Outer,
     /// No spin at the inner contact.
@@ -241,6 +241,43 @@ impl Equilibrium {
 }
 
 /// Quasi-static solver for one bearing and its materials.
+///
+/// The 7008C of Deng et al. 2022 (Table 1) under a 200 N thrust at 10 000 rpm
+/// (Jones–Harris, outer-race control):
+/// ```
+/// use rolldyn::contact::HertzModel;
+/// use rolldyn::geometry::{BearingGeometry, Clearance, GeometrySpec};
+/// use rolldyn::material::Material;
+/// use rolldyn::operating::Loads;
+/// use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+///
+/// let geometry = BearingGeometry::new(&GeometrySpec {
+///     ball_diameter: 6.35e-3,
+///     ball_count: 22,
+///     pitch_diameter: 54.0e-3,
+///     inner_groove_curvature: 0.5501,
+///     outer_groove_curvature: 0.52,
+///     clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
+///     preload: false,
+/// })?;
+/// let steel = Material::STEEL_52100;
+/// let solver = QuasiStaticSolver::new(&geometry, &steel, &steel, HertzModel::Exact)?;
+/// let conditions = Conditions {
+///     loads: Loads { force: [200.0, 0.0, 0.0], moment: [0.0; 2] },
+///     inner_speed: 10_000.0 * std::f64::consts::TAU / 60.0,
+///     control: RacewayControl::Outer,
+/// };
+/// let solution = solver.solve(&conditions, &SolverOptions::default())?;
+/// // Under pure thrust every ball carries the same share.
+/// let first = solution.balls[0].inner.load;
+/// assert!(solution.balls.iter().all(|b| (b.inner.load - first).abs() < 1e-6 * first));
+/// // Centrifugal force loads the outer contacts more than the inner ones.
+/// assert!(solution.balls[0].outer.load > first);
+/// // The cage turns at a little under half the shaft speed.
+/// let ratio = solution.cage_speed() / conditions.inner_speed;
+/// assert!(ratio > 0.4 && ratio < 0.5, "{ratio}");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct QuasiStaticSolver {
     geometry: BearingGeometry,
@@ -337,7 +374,7 @@ impl QuasiStaticSolver {
     }
 
     /// This solver with the film `films[j][k]` in the approach of ball j's
-    /// inner (k = 0) and outer contact (MODEL §4; `ring_contact`); empty:
+    /// inner (k = 0) and outer contact (docs/model.md §4; `ring_contact`); empty:
     /// dry Hertz.
     pub(crate) fn with_films(&self, films: Vec<[Option<FilmLaw>; 2]>) -> Self {
         Self {

@@ -1,4 +1,4 @@
-//! Lubricant films of a quasi-static solution (MODEL §4; seed 003 §2.3):
+//! Lubricant films of a quasi-static solution (docs/model.md §4; Zhang et al. 2020 §2.3):
 //! per contact the entrainment speed from the solved ball and ring motion,
 //! the flooded and starved Hamrock–Dowson films, Λ and K_oil.
 //!
@@ -6,7 +6,7 @@
 //! [`super::contact_motion`] (docs/dynamics.md).
 //!
 //! [`QuasiStaticSolver::solve_with_films`]: the equilibrium with the film
-//! in the normal approach (MODEL §4, `lubrication::approach`). Each contact's
+//! in the normal approach (docs/model.md §4, `lubrication::approach`). Each contact's
 //! film law (entrainment speed and curvature) is taken from the previous
 //! solution, starting from the dry one, and the solve is repeated until the
 //! loads settle. Its bearing stiffness has the films' compliance in series

@@ -1,10 +1,10 @@
-//! Quasi-static solvers (MODEL §7): the static load distribution of a
+//! Quasi-static solvers (docs/model.md §7): the static load distribution of a
 //! bearing under combined loads and the high-speed Jones–Harris
 //! equilibrium, one set of equations ([`equilibrium`]); and the
 //! traction-consistent equilibrium of the dynamic model's force elements,
 //! without raceway control ([`traction_control`]).
 //!
-//! Every ball contact comes from the exact torus geometry of MODEL §2.1
+//! Every ball contact comes from the exact torus geometry of docs/model.md §2.1
 //! ([`ring_contact`]), with analytic derivatives, so Newton's method and
 //! the stiffness matrix (implicit-function theorem) use an exact Jacobian.
 //! [`sweep()`](sweep::sweep) solves lists and grids of operating points in parallel,

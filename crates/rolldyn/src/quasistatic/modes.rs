@@ -1,9 +1,9 @@
 //! Natural frequencies and mode shapes of the inner ring (with what turns
 //! with it) on the bearing: the undamped eigenproblem K φ = ω² M φ with K
-//! the 5×5 bearing stiffness of a quasi-static solution (MODEL §7) and
-//! M = diag(m, m, m, I_t, I_t) over (x, y, z, θ_y, θ_z). Seed 003 eqs
+//! the 5×5 bearing stiffness of a quasi-static solution (docs/model.md §7) and
+//! M = diag(m, m, m, I_t, I_t) over (x, y, z, θ_y, θ_z). Zhang et al. 2020 eqs
 //! 41–46 reduce this to f = (1/2π)√(K/M) per direction (printed with 0.5π;
-//! MODEL §4).
+//! docs/model.md §4).
 //!
 //! K of a running bearing is not exactly symmetric (centrifugal and
 //! gyroscopic ball terms); its symmetric part is used, and the size of the

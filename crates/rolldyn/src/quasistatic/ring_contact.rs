@@ -1,4 +1,4 @@
-//! The exact torus contact (MODEL §2.1) of one ball with one ring, with the
+//! The exact torus contact (docs/model.md §2.1) of one ball with one ring, with the
 //! analytic derivatives of the contact force that Newton's method and the
 //! implicit-function stiffness need.
 //!
@@ -10,7 +10,7 @@
 //! a = s_x − x_c (axial offset),  b = |s_yz| − ρ (radial offset),  d = √(a² + b²)
 //! δ = d − (r_g − D/2),  n = (a, b ŝ_yz)/d,  α = atan2(|a|, |b|)
 //! ```
-//! which is MODEL §2.1's construction written out. The force of the ring on
+//! which is docs/model.md §2.1's construction written out. The force of the ring on
 //! the ball is F = −Q n (towards the groove centre) with Q = K_c(α) δ^{3/2}
 //! from the contact table. Derivatives (rotated back to the global frame):
 //! ```text
@@ -21,7 +21,7 @@
 //! plus the derivative of R for the tilts (∂R/∂θ_y = R_z [e_y×] R_y,
 //! ∂R/∂θ_z = [e_z×] R).
 //!
-//! **Film in the approach** (MODEL §4; `lubrication::approach`). With a
+//! **Film in the approach** (docs/model.md §4; `lubrication::approach`). With a
 //! film law the bodies are compressed by δ_el = δ + h(Q): Q = K_c δ_el^{3/2}
 //! by Newton, and `penetration` is δ_el. Then
 //! dQ/dδ = K_H/(1 − K_H dh/dQ) (Hertz and film in series) and

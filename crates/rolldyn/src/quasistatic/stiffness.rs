@@ -1,4 +1,4 @@
-//! Stiffness and compliance of a quasi-static solution (MODEL §7; issue
+//! Stiffness and compliance of a quasi-static solution (docs/model.md §7; issue
 //! 16). The solver returns the full 5×5 bearing stiffness K = −∂F/∂u over
 //! the ring displacements u = (x, y, z, θ_y, θ_z) (implicit-function
 //! theorem on the converged equations, so the balls' positions and speeds

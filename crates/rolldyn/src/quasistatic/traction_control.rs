@@ -1,6 +1,6 @@
 //! Traction-consistent quasi-static equilibrium: the "quasi-static
-//! tribological model" seed 002 §3.1 starts its dynamics from, with no
-//! raceway-control hypothesis (issue 10 item 4).
+//! tribological model" Zhang et al. 2025 §3.1 starts its dynamics from, with no
+//! raceway-control hypothesis.
 //!
 //! Jones–Harris ([`super::equilibrium`]) fixes the ball spin by raceway
 //! control: the whole gyroscopic moment is carried by the controlling
@@ -12,7 +12,7 @@
 //! * per ball j, unknowns (x, r, φ̇, ω_x, ω_r, ω_t) with ẋ = ṙ = 0, and
 //!   equations: the ball's accelerations of the dynamic model vanish,
 //!   m ẍ = F_x = 0, m(r̈ − rφ̇²) = 0, m r φ̈ = F_t = 0, ω̇ = 0 in the
-//!   azimuth frame (MODEL §1: centrifugal and gyroscopic terms included).
+//!   azimuth frame (docs/model.md §1: centrifugal and gyroscopic terms included).
 //!   In planar mode the unknowns are (r, φ̇, ω_x).
 //! * the inner ring (5 DOF, planar: y, z) and an outer ring on a housing
 //!   are in equilibrium with the balls: their accelerations vanish.

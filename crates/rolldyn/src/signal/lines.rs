@@ -3,7 +3,7 @@
 //!
 //! From the shaft frequency f_i and the cage frequency f_c (the run's
 //! measured mean, so cage slip moves the lines as it does on a test rig),
-//! with the outer ring fixed (seed 001 Table 2, MODEL §7; Harris &
+//! with the outer ring fixed (Deng et al. 2022 Table 2, docs/model.md §7; Harris &
 //! Kotzalas, Essential Concepts of Bearing Technology, ch. 8):
 //!
 //! ```text
@@ -182,7 +182,7 @@ mod tests {
 
     #[test]
     fn pure_rolling_lines_match_the_kinematics() {
-        // 7008C at 10 000 rpm (MODEL §7: f_b ≈ 699.7 Hz).
+        // 7008C at 10 000 rpm (docs/model.md §7: f_b ≈ 699.7 Hz).
         let (d, dm, z, alpha) = (6.35e-3, 54e-3, 22, 17.7f64.to_radians());
         let gamma = d / dm;
         let fi = 10_000.0 / 60.0;

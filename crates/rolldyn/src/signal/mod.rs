@@ -1,8 +1,8 @@
-//! Signal processing for vibration analysis (MODEL §9): amplitude spectra,
+//! Signal processing for vibration analysis (docs/model.md §9): amplitude spectra,
 //! Welch power spectral density, envelope spectra, band-limited vibration
 //! velocity RMS, the bearing's characteristic frequencies with harmonics and
 //! sidebands, a peak list that names the nearest line, and cage-whirl
-//! metrics (seed 001 eq 41).
+//! metrics (Deng et al. 2022 eq 41).
 //!
 //! Everything works on uniformly sampled records (the recorder's fixed
 //! rate). FFTs are real-to-complex (realfft/rustfft); records are

@@ -5,7 +5,7 @@
 //! * whirl speed: the mean rate of the orbit angle about the mean position
 //!   (unwrapped angle, end minus start over the time span), also as a ratio
 //!   to the cage speed (1: synchronous whirl);
-//! * σ, the deviation ratio of the cage whirl speed (seed 001 eq 41):
+//! * σ, the deviation ratio of the cage whirl speed (Deng et al. 2022 eq 41):
 //!   σ = √(Σ(v − v̄)²/N) / v̄ with v = |(ẏ_c, ż_c)| the speed of the cage
 //!   centre; small σ is a steady whirl, large σ an erratic one.
 
@@ -18,7 +18,7 @@ pub struct WhirlMetrics {
     pub orbit_radius_max: f64,
     /// Mean whirl speed \[rad/s\] (positive: with the +x rotation).
     pub whirl_speed: f64,
-    /// Deviation ratio σ of the cage-centre speed (seed 001 eq 41) \[-\]
+    /// Deviation ratio σ of the cage-centre speed (Deng et al. 2022 eq 41) \[-\]
     /// (0 when the centre does not move).
     pub sigma: f64,
 }

@@ -1,19 +1,19 @@
 //! Surface profiles: waviness and localised defects on the raceways and
-//! the balls (MODEL §6).
+//! the balls (docs/model.md §6).
 //!
 //! A raceway carries radial waviness w_r(θ) and axial waviness w_a(θ)
-//! (seed 001 eq 1) and spalls, all in the ring's own frame: θ is the angle
+//! (Deng et al. 2022 eq 1) and spalls, all in the ring's own frame: θ is the angle
 //! of the contact point measured on the ring, so a rotating inner ring
-//! carries its surface with it and seed 001's relative frequencies
+//! carries its surface with it and Deng et al. 2022's relative frequencies
 //! (ω_o − ω_c, ω_i − ω_c) appear by themselves. A ball carries waviness
-//! H(ψ) and spalls in its spin angle ψ (MODEL §1's optional ball state);
-//! its inner contact sees H(ψ), its outer contact H(ψ + π) (MODEL §6;
-//! seed 001 prints the phase as π/ω_b).
+//! H(ψ) and spalls in its spin angle ψ (docs/model.md §1's optional ball state);
+//! its inner contact sees H(ψ), its outer contact H(ψ + π) (docs/model.md §6;
+//! Deng et al. 2022 prints the phase as π/ω_b).
 //!
 //! # How the surface enters the contact
 //! The surface moves raceway material by u at the contact point; with n the
 //! contact normal (groove centre → ball centre) the approach grows by −n·u
-//! (MODEL §2.1's δ = d − (r_g − D/2) + w). Positive radial waviness raises
+//! (docs/model.md §2.1's δ = d − (r_g − D/2) + w). Positive radial waviness raises
 //! the raceway towards the balls (outwards on the inner ring, inwards on the
 //! outer ring), so it adds w_r |n·e_r|; positive axial waviness moves the
 //! groove along +x and adds −w_a (n·x̂); a spall removes its drop. The
@@ -157,7 +157,7 @@ impl BallSurface {
     }
 }
 
-/// Angle between a ball's inner and outer contact points on its track (MODEL §6).
+/// Angle between a ball's inner and outer contact points on its track (docs/model.md §6).
 pub const BALL_CONTACT_SEPARATION: f64 = PI;
 
 /// All surfaces of a bearing.

@@ -1,5 +1,5 @@
-//! Localised defects (spalls) on a raceway or a ball (MODEL §6, beyond the
-//! seeds).
+//! Localised defects (spalls) on a raceway or a ball (docs/model.md §6, beyond the
+//! source papers).
 //!
 //! A spall is a pit of depth d and length L along the rolling track
 //! (given as an angle or as a length), optionally limited across the track

@@ -1,5 +1,5 @@
 //! Waviness: a Fourier series in the angle around a ring or a ball
-//! (seed 001 eq 1, MODEL §6), given term by term or drawn from an amplitude
+//! (Deng et al. 2022 eq 1, docs/model.md §6), given term by term or drawn from an amplitude
 //! law with random phases (deterministic for a seed).
 
 use crate::error::{InvalidParameter, require_non_negative, require_positive};
@@ -40,7 +40,7 @@ pub struct RandomWaviness {
 
 /// Highest waviness order accepted: beyond this the wavelength on any real
 /// raceway is shorter than the Hertz contact and the point-contact
-/// evaluation (MODEL §6) is meaningless.
+/// evaluation (docs/model.md §6) is meaningless.
 pub const MAX_ORDER: u32 = 10_000;
 
 impl RandomWaviness {

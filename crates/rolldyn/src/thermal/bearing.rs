@@ -1,4 +1,4 @@
-//! Seed 004's thermal network of a bearing (§4, Figs 3–4; MODEL §10):
+//! Lei et al. 2023's thermal network of a bearing (§4, Figs 3–4; docs/model.md §10):
 //!
 //! ```text
 //!  shaft ── inner ring ── inner contact ── ball ── outer contact ── outer ring ── housing ── ambient
@@ -15,10 +15,10 @@
 //! end to the oil or the air by the given coefficients or the flat-plate
 //! correlation at the cage's surface speed; the housing's outside and end
 //! faces to ambient. Heat: each contact's losses at its contact node (the
-//! seed's Q₁, Q₂ of eq 46); with equal ball and ring materials the two
+//! Q₁, Q₂ of Lei et al. 2023 eq 46); with equal ball and ring materials the two
 //! contact resistances are equal, so half flows into each body (Burton &
-//! Staph's 1:1, seed 004 §6.1.1); ball–pocket friction into the balls;
-//! cage land and drag into the oil (the seed shares these out half to each
+//! Staph's 1:1, Lei et al. 2023 §6.1.1); ball–pocket friction into the balls;
+//! cage land and drag into the oil (Lei et al. 2023 share these out half to each
 //! contact). Steady state and transients from [`super::network`].
 
 use super::network::{NodeId, Solution, ThermalNetwork};
@@ -385,7 +385,7 @@ impl BearingThermal {
 mod tests {
     use super::*;
 
-    /// The 30 × 62 × 16 bearing of seed 004 with a steel housing.
+    /// The 30 × 62 × 16 bearing of Lei et al. 2023 with a steel housing.
     pub(crate) fn inputs() -> ThermalInputs {
         ThermalInputs {
             bore: 30e-3,

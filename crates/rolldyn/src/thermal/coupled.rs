@@ -1,4 +1,4 @@
-//! Temperatures fed back into the bearing (MODEL §10; issue 13): a
+//! Temperatures fed back into the bearing (docs/model.md §10): a
 //! quasi-static iteration to thermal steady state.
 //!
 //! Each pass: the Jones–Harris equilibrium of the bearing at its current

@@ -1,4 +1,4 @@
-//! Temperatures of a running bearing (seed 004 §4; MODEL §10).
+//! Temperatures of a running bearing (Lei et al. 2023 §4; docs/model.md §10).
 //!
 //! * [`network`] — a lumped thermal network: nodes, conductances, heat
 //!   sources, fixed temperatures; steady state by a direct solve, transient
@@ -7,7 +7,7 @@
 //!   through rings as cylinders, the moving-heat-source resistance of a
 //!   Hertz contact, convection (correlations with user overrides), oil
 //!   advection;
-//! * [`bearing`] — seed 004's network of a bearing (ball, inner- and
+//! * [`bearing`] — Lei et al. 2023's network of a bearing (ball, inner- and
 //!   outer-race contacts, rings, shaft, housing, oil, ambient, oil inlet);
 //! * [`viscosity`] — the Walther (ASTM D341) viscosity–temperature law;
 //! * [`coupled`] — temperatures fed back (viscosity, thermal expansion of

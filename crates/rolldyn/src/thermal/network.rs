@@ -1,12 +1,12 @@
-//! A lumped thermal network (seed 004 §4; MODEL §10): nodes with heat
+//! A lumped thermal network (Lei et al. 2023 §4; docs/model.md §10): nodes with heat
 //! capacities and heat sources, joined by thermal conductances G = 1/R;
 //! some nodes held at a given temperature (ambient, oil inlet).
 //!
-//! Steady state: the heat balance of every free node (seed 004 eqs 44–45),
+//! Steady state: the heat balance of every free node (Lei et al. 2023 eqs 44–45),
 //! ```text
 //! Σ_j G_ij (T_j − T_i) + H_i = 0,
 //! ```
-//! solved directly (LU of the free nodes' conductance matrix; the seed's
+//! solved directly (LU of the free nodes' conductance matrix; Lei et al. 2023's
 //! Gauss–Seidel iteration is not needed). Transient:
 //! C_i dT_i/dt = Σ_j G_ij (T_j − T_i) + H_i by the trapezoidal rule
 //! (Crank–Nicolson: second order, A-stable), a fixed step; nodes without

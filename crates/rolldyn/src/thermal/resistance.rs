@@ -1,16 +1,16 @@
-//! Thermal resistances of a bearing's parts \[K/W\] (seed 004 §4.2;
-//! MODEL §10).
+//! Thermal resistances of a bearing's parts \[K/W\] (Lei et al. 2023 §4.2;
+//! docs/model.md §10).
 
 use std::f64::consts::PI;
 
-/// Radial conduction through a cylindrical shell (ring, housing), seed
-/// 004 eq 40 (Incropera & DeWitt eq 3.28): R = ln(d_o/d_i)/(2π k l).
+/// Radial conduction through a cylindrical shell (ring, housing), Lei et al. 2023
+/// eq 40 (Incropera & DeWitt eq 3.28): R = ln(d_o/d_i)/(2π k l).
 pub fn cylinder(inner_diameter: f64, outer_diameter: f64, conductivity: f64, length: f64) -> f64 {
     (outer_diameter / inner_diameter).ln() / (2.0 * PI * conductivity * length)
 }
 
 /// Convection from area `area` with coefficient `coefficient` \[W/(m²K)\],
-/// seed 004 eq 42: R = 1/(h S).
+/// Lei et al. 2023 eq 42: R = 1/(h S).
 pub fn convection(coefficient: f64, area: f64) -> f64 {
     1.0 / (coefficient * area)
 }
@@ -31,7 +31,7 @@ pub fn convection(coefficient: f64, area: f64) -> f64 {
 /// At rest the heat spreads in three dimensions: the mean rise of a uniform
 /// flux on a circle of radius r = √(ab) is 32 q r/(3π² k) (Yovanovich),
 /// R_static = 32/(3π³ k √(ab)). The two limits are joined as
-/// R = (R_moving⁻² + R_static⁻²)^{−1/2}. Seed 004 eq 41 (after Neurouth et
+/// R = (R_moving⁻² + R_static⁻²)^{−1/2}. Lei et al. 2023 eq 41 (after Neurouth et
 /// al. 2014) has the same 1/(k√Pe) scaling at high Pe; its printed form
 /// takes the Péclet number with the lubricant's heat capacity and is not
 /// used.

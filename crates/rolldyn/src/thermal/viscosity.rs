@@ -1,5 +1,5 @@
-//! Viscosity–temperature law of a mineral or synthetic oil (MODEL §10;
-//! issue 13): Walther's equation as standardised in ASTM D341,
+//! Viscosity–temperature law of a mineral or synthetic oil (docs/model.md §10):
+//! Walther's equation as standardised in ASTM D341,
 //! ```text
 //! log₁₀ log₁₀(ν + 0.7) = A − B log₁₀ T          (ν in mm²/s, T in K)
 //! ```

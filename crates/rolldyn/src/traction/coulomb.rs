@@ -1,11 +1,11 @@
-//! Modified Coulomb friction (seed 000 eqs 14–15; MODEL §3, model 1), as a
+//! Modified Coulomb friction (Shan et al. 2023 eqs 14–15; docs/model.md §3, model 1), as a
 //! stress and, integrated at uniform slip, as a force:
 //! ```text
 //! τ = −c_d(|v|) μ p v/|v|,   F_T = −c_d(|v|) μ Q v/|v|,
 //! c_d = 0 for |v| ≤ v₀,  (|v| − v₀)/(v₁ − v₀) for v₀ < |v| < v₁,  1 for |v| ≥ v₁
 //! ```
 //! The ramp regularises the sign function (the force is continuous in the
-//! slip, as stiff integrators need). Seed 000 does not print v₀, v₁; the
+//! slip, as stiff integrators need). Shan et al. 2023 does not print v₀, v₁; the
 //! defaults (v₀ = 0, v₁ = 1 mm/s) are documented in docs/dynamics.md.
 
 use super::{ContactConditions, TractionLaw};

@@ -1,4 +1,4 @@
-//! Traction curve (seed 004 eq 18; MODEL §3, model 2), Gupta's
+//! Traction curve (Lei et al. 2023 eq 18; docs/model.md §3, model 2), Gupta's
 //! four-parameter form:
 //! ```text
 //! μ(S) = (A + B S) e^{−C S} + D,     τ = −c_r(|v|) max(μ(S), 0) p v/|v|
@@ -12,9 +12,9 @@
 //! Below an entrainment speed of v₁ the slide-to-roll ratio is taken
 //! against v₁ (S stays finite at rest).
 //!
-//! Seed 004 eq 19 fits A..D for FVA-M oil as power laws of a
+//! Lei et al. 2023 eq 19 fits A..D for FVA-M oil as power laws of a
 //! dimensionless load, speed and temperature that the paper does not
-//! define; rolldyn ships no preset from it (MODEL §3).
+//! define; rolldyn ships no preset from it (docs/model.md §3).
 
 use super::{BATCH, ContactConditions, TractionLaw};
 use crate::error::{InvalidParameter, require_positive};

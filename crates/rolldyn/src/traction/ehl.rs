@@ -1,12 +1,12 @@
-//! EHL traction rheology (seed 001 eqs 13–15; MODEL §3, model 3):
+//! EHL traction rheology (Deng et al. 2022 eqs 13–15; docs/model.md §3, model 3):
 //! ```text
 //! τ = −min( τ₀ asinh( η(p) |v| / (h τ₀) ),  Λ_L p ) v/|v|,     η(p) = η₀ exp(α_p p)   (Barus)
 //! ```
 //! Eyring's shear-thinning with a limiting shear stress Λ_L p (K. L.
-//! Johnson & J. L. Tevaarwerk, Proc. R. Soc. A 356 (1977) 215; seed 001).
+//! Johnson & J. L. Tevaarwerk, Proc. R. Soc. A 356 (1977) 215; Deng et al. 2022).
 //! At small slip the law is Newtonian, τ ≈ η v/h; at large slip it
 //! saturates at Λ_L p. The film h is the Hamrock–Dowson central film of the
-//! contact (MODEL §4). The stress is continuous in the slip (asinh is odd
+//! contact (docs/model.md §4). The stress is continuous in the slip (asinh is odd
 //! and smooth), so no regularisation is needed.
 
 use super::{BATCH, ContactConditions, TractionLaw};

@@ -1,5 +1,5 @@
 //! Integration of a traction stress law over the Hertz contact ellipse
-//! (MODEL §3, "Integration over the ellipse").
+//! (docs/model.md §3, "Integration over the ellipse").
 //!
 //! The ellipse has semi-axes a (across the rolling direction) and b (along
 //! it) and Hertz pressure p = p₀ √(1 − (ξ/a)² − (η/b)²). It is cut into
@@ -33,7 +33,7 @@ use serde::{Deserialize, Serialize};
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(tag = "method", rename_all = "snake_case", deny_unknown_fields)]
 pub enum TractionIntegration {
-    /// One point at the contact centre (seed 000, cheap).
+    /// One point at the contact centre (Shan et al. 2023, cheap).
     Centre,
     /// Strip grid over the ellipse.
     Grid {
@@ -45,7 +45,7 @@ pub enum TractionIntegration {
 }
 
 impl Default for TractionIntegration {
-    /// 12 × 6 cells (MODEL §3's example default).
+    /// 12 × 6 cells (docs/model.md §3's example default).
     fn default() -> Self {
         Self::Grid {
             across: 12,
@@ -285,7 +285,7 @@ mod tests {
     #[test]
     fn full_slip_spin_moment_is_harris() {
         // Pure spin about the normal with full Coulomb sliding:
-        // M_s = (3/8) μ Q a E(m), m = 1 − (b/a)² (Harris & Kotzalas; MODEL §10).
+        // M_s = (3/8) μ Q a E(m), m = 1 − (b/a)² (Harris & Kotzalas; docs/model.md §10).
         let p = patch();
         let spin = 1000.0 * p.normal;
         let m = 1.0 - (p.semi_minor / p.semi_major).powi(2);

@@ -1,4 +1,4 @@
-//! Mixed-lubrication traction (MODEL §3, model 5): the fluid's stress law
+//! Mixed-lubrication traction (docs/model.md §3, model 5): the fluid's stress law
 //! and boundary friction on the asperities, weighted by the asperities'
 //! share φ of the contact's load (`lubrication::mixed`, Greenwood–Tripp
 //! load sharing after Johnson, Greenwood & Poon 1972):

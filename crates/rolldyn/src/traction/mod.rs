@@ -1,5 +1,5 @@
 //! Tangential (traction) stresses at a ball–raceway contact and their
-//! integration over the Hertz ellipse (MODEL §3).
+//! integration over the Hertz ellipse (docs/model.md §3).
 //!
 //! Two kinds of traction model, variants of [`TractionModel`] chosen from
 //! the case file, each in its own file:
@@ -60,7 +60,7 @@ use serde::{Deserialize, Serialize};
 pub struct ContactConditions {
     /// Central film thickness h \[m\] (0 when no film model is active).
     pub film: f64,
-    /// Entrainment (rolling) speed |u| at the contact centre \[m/s\] (MODEL §3).
+    /// Entrainment (rolling) speed |u| at the contact centre \[m/s\] (docs/model.md §3).
     pub entrainment_speed: f64,
     /// Rolling velocity u·e_roll along the patch's rolling direction
     /// \[m/s\], signed (FASTSIM's flow direction).
@@ -107,13 +107,13 @@ pub enum TractionModel {
     /// No tangential stress (frictionless; energy tests).
     #[default]
     None,
-    /// Seed 000 eqs 14–15: τ = −c_d(|v|) μ p v/|v|.
+    /// Shan et al. 2023 eqs 14–15: τ = −c_d(|v|) μ p v/|v|.
     ModifiedCoulomb(ModifiedCoulomb),
-    /// Seed 004 eq 18: μ(S) = (A + B S) e^{−C S} + D.
+    /// Lei et al. 2023 eq 18: μ(S) = (A + B S) e^{−C S} + D.
     TractionCurve(TractionCurve),
-    /// Seed 001 eqs 13–15: Eyring shear with limiting shear stress.
+    /// Deng et al. 2022 eqs 13–15: Eyring shear with limiting shear stress.
     Ehl(EhlRheology),
-    /// Seed 002 §2.2: Kalker's FASTSIM.
+    /// Zhang et al. 2025 §2.2: Kalker's FASTSIM.
     Fastsim(Fastsim),
 }
 
@@ -132,7 +132,7 @@ impl TractionModel {
     }
 
     /// Central film thickness h_c \[m\] of a contact for the models that
-    /// use one (EHL: Hamrock–Dowson, MODEL §4), else 0: entrainment speed
+    /// use one (EHL: Hamrock–Dowson, docs/model.md §4), else 0: entrainment speed
     /// |u| \[m/s\], load Q \[N\], rolling radius R_x \[m\], effective
     /// modulus E' \[Pa\], ellipticity κ.
     pub fn central_film(

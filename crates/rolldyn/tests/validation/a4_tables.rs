@@ -1,7 +1,7 @@
-//! A4: contact tables (MODEL §2.2) vs the exact solve on 10 000 random
+//! A4: contact tables (docs/model.md §2.2) vs the exact solve on 10 000 random
 //! contact angles per raceway, for three bearings of the papers, with
 //! different ball and ring materials. Tolerance 1e-6 relative on K_c
-//! (MODEL §2.2) and, beyond the requirement, on a*, b*, δ*, κ.
+//! (docs/model.md §2.2) and, beyond the requirement, on a*, b*, δ*, κ.
 
 use super::common::{bearing_6304, bearing_7008c, bearing_7218b, rel};
 use rolldyn::RingKind;

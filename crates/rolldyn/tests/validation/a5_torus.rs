@@ -1,18 +1,18 @@
-//! A5: the exact torus contact (MODEL §2.1)
-//! * equals seed 000 eqs 6–7 in planar mode (δ_i = R_i + r_b − R_rc,
+//! A5: the exact torus contact (docs/model.md §2.1)
+//! * equals Shan et al. 2023 eqs 6–7 in planar mode (δ_i = R_i + r_b − R_rc,
 //!   δ_o = R_rc + r_b − R_o, with R_rc the ball-centre distance from each
 //!   ring's centre), for any in-plane inner-ring offset, to 1e-9 m
 //!   (found: rounding level);
-//! * agrees to first order with seed 001 eqs 2–6 for small ring
+//! * agrees to first order with Deng et al. 2022 eqs 2–6 for small ring
 //!   displacements: the difference shrinks as the square of the displacement.
-//!   Seed 001's eq 5 is printed with its rows mixed; its T matrix (eq 3)
+//!   Deng et al. 2022's eq 5 is printed with its rows mixed; its T matrix (eq 3)
 //!   gives, for groove-centre axial offset B = x_ci and radius R_i = ρ_ci:
 //!   radial shift Δy cos φ + Δz sin φ − θ_y B sin φ + θ_z B cos φ,
 //!   axial shift Δx + θ_y R_i sin φ − θ_z R_i cos φ.
-//!   Seed 001 measures α from the global radial plane; rolldyn measures it
-//!   from the tilted ring's radial plane (MODEL §2.1, sin α = |n·a|). The
+//!   Deng et al. 2022 measures α from the global radial plane; rolldyn measures it
+//!   from the tilted ring's radial plane (docs/model.md §2.1, sin α = |n·a|). The
 //!   two differ by the tilt u_φ = −θ_y sin φ + θ_z cos φ at first order
-//!   (seed 001 eq 5, third row), which the test checks too.
+//!   (Deng et al. 2022 eq 5, third row), which the test checks too.
 
 use super::common::{bearing_6304, bearing_7008c};
 use nalgebra::Vector3;
@@ -57,7 +57,7 @@ fn a5_planar_mode_equals_seed000() {
     assert!(worst < 1e-9);
 }
 
-/// (δ_i, α_i) from seed 001's small-displacement formulas.
+/// (δ_i, α_i) from Deng et al. 2022's small-displacement formulas.
 fn seed001(g: &rolldyn::BearingGeometry, u: [f64; 5], phi: f64) -> (f64, f64) {
     let [dx, dy, dz, ty, tz] = u;
     let b = g.inner.groove_centre_axial;
@@ -70,8 +70,8 @@ fn seed001(g: &rolldyn::BearingGeometry, u: [f64; 5], phi: f64) -> (f64, f64) {
     (num.hypot(den) - l, num.atan2(den))
 }
 
-/// Worst differences over the balls between the exact contact and seed
-/// 001: (penetration, contact angle in the global radial plane, and the
+/// Worst differences over the balls between the exact contact and Deng et al. 2022:
+/// (penetration, contact angle in the global radial plane, and the
 /// ring-frame angle minus the global one against the tilt u_φ).
 fn worst_difference(scale: f64) -> (f64, f64, f64) {
     let g = bearing_7008c();
@@ -112,7 +112,7 @@ fn a5_small_displacements_match_seed001_to_first_order() {
     let (d1, a1, t1) = worst_difference(1.0);
     let (d2, a2, t2) = worst_difference(0.5);
     eprintln!(
-        "A5 seed 001: |Δδ| {d1:.2e} → {d2:.2e} m, |Δα| {a1:.2e} → {a2:.2e} rad, |Δα_ring − u_φ| {t1:.2e} → {t2:.2e} rad when displacements halve"
+        "A5 Deng et al. 2022: |Δδ| {d1:.2e} → {d2:.2e} m, |Δα| {a1:.2e} → {a2:.2e} rad, |Δα_ring − u_φ| {t1:.2e} → {t2:.2e} rad when displacements halve"
     );
     // Second-order remainder: halving the displacement quarters the gap.
     assert!((3.0..5.0).contains(&(d1 / d2)), "δ ratio {}", d1 / d2);

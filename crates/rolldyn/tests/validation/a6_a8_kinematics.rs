@@ -1,5 +1,5 @@
-//! A6: pure-rolling kinematics of the 7008C (seed 001 Table 1) at
-//! 10 000 rpm against seed 001 Table 3 "theoretical": f_c 73.96 Hz,
+//! A6: pure-rolling kinematics of the 7008C (Deng et al. 2022 Table 1) at
+//! 10 000 rpm against Deng et al. 2022 Table 3 "theoretical": f_c 73.96 Hz,
 //! f_i 166.7 Hz, f_b 699.7 Hz; outer-race orders 21–23 → 1627.2 Hz;
 //! inner-race order 22 → 2040.3 Hz, 21/23 → 1873.6/2207 Hz; ball orders
 //! 2/4 → 1399.4/2798.8 Hz. Tolerance 0.5 %.
@@ -7,7 +7,7 @@
 //! (1e-12 rel).
 //! Also: CWRU bearing data centre defect-frequency table (SKF 6205-2RS and
 //! 6203-2RS, multiples of shaft speed; their "BSF" is 2 f_b) and the cage
-//! speed measured in seed 000 (6304, 8000 rpm: ≈ 2940 rpm).
+//! speed measured in Shan et al. 2023 (6304, 8000 rpm: ≈ 2940 rpm).
 
 use super::common::{bearing_6304, bearing_7008c, rel};
 use rolldyn::kinematics::{Frequencies, Motion, WavyPart, cage_speed_ratio, waviness_frequencies};
@@ -88,7 +88,7 @@ fn a6_cwru_defect_orders() {
 
 #[test]
 fn a6_seed000_cage_speed() {
-    // Seed 000 §3: the measured cage speed settles near 2940 rpm at 8000 rpm
+    // Shan et al. 2023 §3: the measured cage speed settles near 2940 rpm at 8000 rpm
     // under load (pure rolling, α = 0). The paper's simulation deviates up
     // to 4.24 % from measurement; pure rolling lands within 0.2 %.
     let g = bearing_6304();

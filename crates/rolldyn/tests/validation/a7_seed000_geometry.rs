@@ -1,8 +1,8 @@
-//! A7: seed 000 geometry. R_i = 13.24, R_o = 22.77, r_b = 4.76 mm give
+//! A7: Shan et al. 2023 geometry. R_i = 13.24, R_o = 22.77, r_b = 4.76 mm give
 //! c = 0.005 mm (eq 1: R_i + 2(r_b + c) = R_o) and R_m = 18.005 mm. In
 //! rolldyn's parametrization (c) the diametral clearance is P_d = 4c and a
 //! ball at the pitch radius has a gap of exactly c at both raceways
-//! (this is the check that exposes the sign misprint in MODEL §2).
+//! (this is the check that exposes the sign misprint in docs/model.md §2).
 
 use super::common::bearing_6304;
 use nalgebra::Vector3;

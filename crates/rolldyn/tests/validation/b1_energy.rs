@@ -4,7 +4,7 @@
 //! integrator tolerance, and the RK4 energy error shrinks at the method's
 //! order when the step halves.
 //!
-//! Configuration: seed 000's 6304 in planar mode (fixed contact angle, so
+//! Configuration: Shan et al. 2023's 6304 in planar mode (fixed contact angle, so
 //! K_c is constant and the force is the exact gradient of the elastic
 //! energy), with a preload (P_d = −20 µm, 5 µm per contact) so that every contact stays
 //! closed and the motion is smooth, a constant radial load of 100 N on a

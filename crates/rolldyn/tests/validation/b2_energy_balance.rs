@@ -1,5 +1,5 @@
 //! B2: with dissipation on, drive work = Δ(mechanical energy) + dissipated
-//! energy over a run, to 1e-3 relative or better (MODEL §10). The drive
+//! energy over a run, to 1e-3 relative or better (docs/model.md §10). The drive
 //! work and the dissipation are integrated as states of the model, so the
 //! balance closes to integrator accuracy.
 
@@ -35,7 +35,7 @@ fn balance(
     (drive, model.energy(rk.t(), rk.y()).total() - e0, dissipated)
 }
 
-/// Seed 000's 6304 in planar mode with clearance (P_d = 20 µm), L–N
+/// Shan et al. 2023's 6304 in planar mode with clearance (P_d = 20 µm), L–N
 /// contact, modified Coulomb traction at the contact centres, damped
 /// pockets with friction, gravity, radial load 100 N, 8000 rpm, balls and
 /// cage started at rest: contacts open and close, balls skid and impact.
@@ -45,7 +45,7 @@ fn b2_drive_work_balances_energy_and_dissipation() {
 }
 
 /// B2 with the other dissipative and external elements on the same run:
-/// the traction curve (seed 004 eq 18, slide-to-roll) instead of Coulomb,
+/// the traction curve (Lei et al. 2023 eq 18, slide-to-roll) instead of Coulomb,
 /// hysteresis rolling resistance (α_h = 0.007), the outer ring on a damped
 /// housing, a damped inner-ring support, spherical Hertz pockets with
 /// damping and friction, a cage unbalance on a whirling cage, and a load
@@ -88,7 +88,7 @@ fn b2_balance_with_curve_hysteresis_housing_pockets_unbalance_and_load_ramp() {
     });
 }
 
-/// B2 with Kalker's FASTSIM at the raceway contacts (issue 10): its
+/// B2 with Kalker's FASTSIM at the raceway contacts: its
 /// dissipation is the power of the element forces on the rigid slip at
 /// their points, so the balance closes as for the stress laws.
 #[test]

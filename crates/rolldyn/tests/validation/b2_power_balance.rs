@@ -1,13 +1,13 @@
 //! B2 at an instant: the model's power balance P_drive − P_dissipated =
-//! dE/dt holds at every state, not only over a run (MODEL §10). dE/dt =
+//! dE/dt holds at every state, not only over a run (docs/model.md §10). dE/dt =
 //! ∇E · f + ∂E/∂t is taken by central differences along f, so the check
 //! separates the model's consistency from the integrator's accuracy. Along
 //! the 1 s default run this balance closed to ~1e-7 W while the integrated
-//! balance drifted by −1 W: integration error (issue 15, item 3;
+//! balance drifted by −1 W: integration error (
 //! docs/performance.md).
 //!
 //! Case: the 7008C with EHL traction on the 12 × 6 grid, ball and cage
-//! drag, an outer-ring guide land (seed 001 Table 1), pocket friction and
+//! drag, an outer-ring guide land (Deng et al. 2022 Table 1), pocket friction and
 //! F_z = 100 N with F_x = 200 N; the cage displaced and turned so that
 //! the balls press on their pockets, then 0.2 ms of motion.
 

@@ -1,5 +1,5 @@
-//! B3: a single ball impact with the Lankarani–Nikravesh law (MODEL §2.3).
-//! A 6304 ball (D 9.52 mm, steel) hits the inner raceway of seed 000's
+//! B3: a single ball impact with the Lankarani–Nikravesh law (docs/model.md §2.3).
+//! A 6304 ball (D 9.52 mm, steel) hits the inner raceway of Shan et al. 2023's
 //! bearing at 0.1 m/s; integrated with RK4 at 1/2000 of the Hertz contact
 //! time; the episode's impact speed is recorded at the first accepted step
 //! in contact. L–N is derived for e near 1 (Lankarani & Nikravesh 1990):

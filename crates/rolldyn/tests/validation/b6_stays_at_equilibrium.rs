@@ -1,7 +1,7 @@
 //! B6: dynamics started from the quasi-static (Jones–Harris) state at
 //! constant speed stays there: contact loads within 1 % after transients.
 //!
-//! 7008C (seed 001 Table 1), 10 000 rpm, F_x = 200 N, EHL traction (Eyring
+//! 7008C (Deng et al. 2022 Table 1), 10 000 rpm, F_x = 200 N, EHL traction (Eyring
 //! τ₀ = 5 MPa, Λ_L = 0.08, η₀ = 46.7 mPa·s, α_p = 2.2e-8 1/Pa: assumed,
 //! docs/validation.md) integrated on the 12 × 6 ellipse grid, cage with
 //! whirl, inner ring 0.5 kg free in 5 DOF. The loads of every ball are

@@ -1,9 +1,9 @@
-//! B7 (determinism), resumed runs (issue 17): a run checkpointed part-way
+//! B7 (determinism), resumed runs: a run checkpointed part-way
 //! ([`rolldyn::integrate::Checkpoint`]) and continued from the bytes in a
 //! freshly built model and integrator gives the same samples, bit for
 //! bit, as the uninterrupted run, with both adaptive integrators.
 //!
-//! Configuration: seed 000's 6304 (Lankarani–Nikravesh law, so the
+//! Configuration: Shan et al. 2023's 6304 (Lankarani–Nikravesh law, so the
 //! contact-episode memory is part of the state; modified Coulomb traction;
 //! cage with whirl and damped pockets), 100 N radial load, 8000 rpm,
 //! from pure rolling.

@@ -1,4 +1,4 @@
-//! B8: Kalker's FASTSIM (Kalker 1982; seed 002 §2.2; MODEL §3 model 4)
+//! B8: Kalker's FASTSIM (Kalker 1982; Zhang et al. 2025 §2.2; docs/model.md §3 model 4)
 //! against the exact limits it must reproduce:
 //! - linear theory (Kalker 1990, Table E.3 coefficients) at small
 //!   creepage, one creepage at a time: F_x = −G c² C₁₁ ξ,
@@ -266,7 +266,7 @@ fn b8_integrators_agree_on_a_fastsim_run() {
     assert!(a.1 > 0.0 && a.2 > 0.0);
 }
 
-/// The stick/slip map of a contact in the dynamic model (seed 002 Fig. 11)
+/// The stick/slip map of a contact in the dynamic model (Zhang et al. 2025 Fig. 11)
 /// is the same evaluation as the run outputs: one cell per element, the
 /// same contact output, and its stuck cells where the output reports a
 /// stuck area.

@@ -1,15 +1,15 @@
-//! C1 (seed 000 Fig. 6 and §3): SKF 6304 (Table 1), 8000 rpm, clearance
+//! C1 (Shan et al. 2023 Fig. 6 and §3): SKF 6304 (Table 1), 8000 rpm, clearance
 //! c = 0.005 mm, dry friction, L–N contact, planar. Measured cage speed
 //! ≈ 2940 rpm for W ≥ 70–100 N; the paper's simulation deviates from the
 //! measurement by at most 4.24 %.
 //!
-//! Seed 000 does not print its friction coefficient, v₀/v₁, restitution,
+//! Shan et al. 2023 does not print its friction coefficient, v₀/v₁, restitution,
 //! ring, shaft or cage mass. Assumed here (and in docs/validation.md):
 //! μ = 0.1, v₀ = 0, v₁ = 10 mm/s, e = 0.9, inner ring + shaft 0.5 kg, cage
 //! 5 g (J_c = 8.2e-7 kg·m² from Table 1), pocket clearance 0.2 mm,
 //! pocket stiffness 1e7 N/m with damping, gravity on.
 //!
-//! The cage turns but does not whirl (seed 000 models cage rotation only;
+//! The cage turns but does not whirl (Shan et al. 2023 models cage rotation only;
 //! rolldyn's cylindrical pockets give a free-whirling cage no radial
 //! guidance, and without guide lands it drifts: docs/validation.md).
 //! Balls and cage start **at rest**, so friction must bring the cage up to

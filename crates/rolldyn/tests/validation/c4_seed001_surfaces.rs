@@ -1,7 +1,7 @@
-//! C4 (seed 001 Table 2) and localised defects: surface features excite the
+//! C4 (Deng et al. 2022 Table 2) and localised defects: surface features excite the
 //! rings at the frequencies the kinematics predicts.
 //!
-//! 7008C of seed 001 (the default case's dynamic configuration:
+//! 7008C of Deng et al. 2022 (the default case's dynamic configuration:
 //! 10 000 rpm, F_x = 200 N, EHL traction, whirling cage; `dynamics_7008c`),
 //! from the Jones–Harris start. The inner-ring acceleration is recorded at
 //! 20 kHz; the first 5 ms (start transient) are left out and 5–45 ms

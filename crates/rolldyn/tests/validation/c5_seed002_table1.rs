@@ -1,13 +1,13 @@
-//! C5: seed 002 Table 1, "J-H model (outer raceway control)" column: the
+//! C5: Zhang et al. 2025 Table 1, "J-H model (outer raceway control)" column: the
 //! paper's validation bearing (its refs 37/44; geometry not printed) at
 //! F_r = 20 kN, F_a = 40 kN, 14 000 rpm. Reference means over the balls:
 //! α_i 26.58°, α_o 19.87°, attitude 16.88°, ball orbit 5896 rpm, ball
 //! spin components 11 129 / 36 693 rpm, inner-ring radial 2.207e-5 m and
 //! axial 1.769e-4 m displacement.
 //!
-//! The bearing is **not** the 40° 7218B of seed 002 Table 2 (26.6° under
+//! The bearing is **not** the 40° 7218B of Zhang et al. 2025 Table 2 (26.6° under
 //! 40 kN thrust is impossible for α₀ = 40°: thrust only opens the angle).
-//! As VALIDATION.md directs, rolldyn runs the 7218 ball and pitch geometry
+//! As the paper's table requires, rolldyn runs the 7218 ball and pitch geometry
 //! (D 22.23 mm, Z 16, d_m 125.26 mm), f = 0.5232, steel E 206 GPa, with
 //! nominal angles near 15°, and reports what it finds (docs/validation.md).
 //! Nothing is fitted; the test checks that the solve converges and prints
@@ -29,7 +29,7 @@ fn c5_seed002_table1_jones_harris() {
         density: 7800.0,
     };
     eprintln!(
-        "C5 (seed 002 Table 1, J-H outer control): reference α_i 26.58°, α_o 19.87°, β 16.88°, ω_m 5896 rpm, ω_R 38 341 rpm (|(11 129, 36 693)|), radial 22.07 µm, axial 176.9 µm"
+        "C5 (Zhang et al. 2025 Table 1, J-H outer control): reference α_i 26.58°, α_o 19.87°, β 16.88°, ω_m 5896 rpm, ω_R 38 341 rpm (|(11 129, 36 693)|), radial 22.07 µm, axial 176.9 µm"
     );
     for alpha0 in [12.0f64, 15.0, 18.0] {
         let g = BearingGeometry::new(&GeometrySpec {

@@ -1,5 +1,5 @@
-//! C7 / B2: the lubricant film in the normal approach (MODEL §4, issue 12
-//! item 3; `rolldyn::lubrication::approach`).
+//! C7 / B2: the lubricant film in the normal approach (docs/model.md §4,
+//! `rolldyn::lubrication::approach`).
 //!
 //! Case: the 7008C default configuration (EHL traction, 10 000 rpm),
 //! flooded, with the film in the approach.
@@ -11,7 +11,7 @@
 //!   (the ring moved axially by ±5 nm)
 //!   against 1/(1/K_H + 1/K_film) with K_H = 3Q/(2δ_el) and the central
 //!   film's K_film = Q/(0.067 h_c), the exponent of h_c ∝ Q^−0.067
-//!   (seed 003 eqs 37–42 write the same series law with h_min's 0.073).
+//!   (Zhang et al. 2020 eqs 37–42 write the same series law with h_min's 0.073).
 //!   The ring is backed off 3 µm from the dry equilibrium: the overlap
 //!   alone carries ~3 N a ball, with the ~1.3 µm film ~37 N, and the film
 //!   is 7.5 % of the compliance. Measured: films 2e-13 from Hamrock–Dowson,

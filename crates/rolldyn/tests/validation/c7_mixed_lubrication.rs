@@ -1,4 +1,4 @@
-//! C7 / B2: mixed lubrication (MODEL §3, model 5; issue 12 item 2;
+//! C7 / B2: mixed lubrication (docs/model.md §3, model 5;
 //! `rolldyn::lubrication::mixed`, `rolldyn::traction::mixed`).
 //!
 //! Case: the 7008C default configuration (EHL traction, 10 000 rpm,

@@ -1,10 +1,10 @@
-//! C7 building blocks (seed 003 §2.3, MODEL §4): the dynamic model's EHL
+//! C7 building blocks (Zhang et al. 2020 §2.3, docs/model.md §4): the dynamic model's EHL
 //! film is the Hamrock–Dowson film starved by the ring's supply.
 //!
 //! 7008C default configuration at its Jones–Harris state: with
 //! L = 1.2 on the inner ring only, every loaded inner contact's central
 //! film equals the flooded one times ((L − 1)/(L* − 1))^0.25 with L* of
-//! seed 003 eq 29 from that contact's own b, R_x and h_c (recomputed here
+//! Zhang et al. 2020 eq 29 from that contact's own b, R_x and h_c (recomputed here
 //! from an independent Hertz solve), and the outer films are unchanged.
 
 use super::common::{bearing_7008c, dynamics_7008c};

@@ -1,4 +1,4 @@
-//! C8, dynamic part (MODEL §10; issue 13): the dissipated power split by
+//! C8, dynamic part (docs/model.md §10): the dissipated power split by
 //! component sums to the energy balance's dissipated power, and the drive
 //! torque times the ring speed is the drive power, at every step of a run
 //! in which every dissipative element acts.

@@ -1,15 +1,15 @@
-//! C8 (seed 004 §5; VALIDATION.md): the 30 × 62 × 16 angular-contact
+//! C8 (Lei et al. 2023 §5; docs/validation.md): the 30 × 62 × 16 angular-contact
 //! bearing (Table 1: D 9.525 mm, Z 11, d_m 46 mm, α 30°; groove curvatures
 //! 0.52 assumed), F_a 3000 N, F_r 780 N, 9000 … 17 000 rpm.
 //!
-//! Power by Harris's local method (f_s 0.08, α_h 0.007 as seed 004 eq 21,
-//! no cage land): seed 004 §5.1 states that the loss rises with speed and
+//! Power by Harris's local method (f_s 0.08, α_h 0.007 as Lei et al. 2023 eq 21,
+//! no cage land): Lei et al. 2023 §5.1 states that the loss rises with speed and
 //! with axial load, that spin is the largest share (> 50 % under axial
 //! load), and that radial load changes it little. Temperatures of the
-//! coupled network: the outer ring warms with speed (seed 004 Fig. 11,
+//! coupled network: the outer ring warms with speed (Lei et al. 2023 Fig. 11,
 //! Table 2); the numbers against Table 2 are in docs/validation.md.
 //! And one cross-check: the quasi-static and dynamic hysteresis of the same
-//! Jones–Harris state agree (the same law, seed 004 eq 21 / Harris), 1 %.
+//! Jones–Harris state agree (the same law, Lei et al. 2023 eq 21 / Harris), 1 %.
 
 use super::common::{bearing_7008c, dynamics_7008c};
 use rolldyn::contact::HertzModel;

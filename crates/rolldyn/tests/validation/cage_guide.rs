@@ -1,7 +1,7 @@
-//! Cage guidance (MODEL §5): a whirling, outer-ring-guided cage under a
+//! Cage guidance (docs/model.md §5): a whirling, outer-ring-guided cage under a
 //! combined load stays inside its guide clearance, and the energy balance
 //! (B2) still closes with the guide land's hydrodynamic power counted as
-//! dissipation. 7008C default configuration (seed 001 Table 1 cage: land
+//! dissipation. 7008C default configuration (Deng et al. 2022 Table 1 cage: land
 //! radius 28.665 mm, G 10.1 mm, C_g 0.35 mm diametral) with F_z = 100 N
 //! added to F_x = 200 N, 2 ms from the Jones–Harris state (axial).
 

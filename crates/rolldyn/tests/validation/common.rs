@@ -1,4 +1,4 @@
-//! Bearings of the seed papers, built from their printed tables.
+//! Bearings of the source papers, built from their printed tables.
 
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
@@ -7,7 +7,7 @@ pub fn rel(a: f64, b: f64) -> f64 {
     ((a - b) / b).abs()
 }
 
-/// 7008C, seed 001 Table 1: d_m 54, D 6.35 mm, Z 22, α₀ 17.7°,
+/// 7008C, Deng et al. 2022 Table 1: d_m 54, D 6.35 mm, Z 22, α₀ 17.7°,
 /// r_i 3.493, r_o 3.302 mm.
 pub fn bearing_7008c() -> BearingGeometry {
     BearingGeometry::new(&GeometrySpec {
@@ -19,10 +19,10 @@ pub fn bearing_7008c() -> BearingGeometry {
         clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
         preload: false,
     })
-    .expect("seed 001 geometry is valid")
+    .expect("Deng et al. 2022 geometry is valid")
 }
 
-/// 6304, seed 000 Table 1: R_i 13.24, R_o 22.77, r_b 4.76 mm, 7 balls.
+/// 6304, Shan et al. 2023 Table 1: R_i 13.24, R_o 22.77, r_b 4.76 mm, 7 balls.
 /// Groove curvatures are not printed: 0.52 assumed (as the preset).
 pub fn bearing_6304() -> BearingGeometry {
     BearingGeometry::new(&GeometrySpec {
@@ -37,11 +37,11 @@ pub fn bearing_6304() -> BearingGeometry {
         },
         preload: false,
     })
-    .expect("seed 000 geometry is valid")
+    .expect("Shan et al. 2023 geometry is valid")
 }
 
 /// 7218B as Harris's 218 angular-contact example: D 22.23 mm, Z 16,
-/// d_m 125.26 mm, f = 0.5232, α₀ 40° (seed 002 Table 2 gives D, Z, α₀, d_i).
+/// d_m 125.26 mm, f = 0.5232, α₀ 40° (Zhang et al. 2025 Table 2 gives D, Z, α₀, d_i).
 pub fn bearing_7218b() -> BearingGeometry {
     BearingGeometry::new(&GeometrySpec {
         ball_diameter: 22.23e-3,
@@ -67,7 +67,7 @@ use rolldyn::quasistatic::{
 };
 use rolldyn::traction::{EhlRheology, ModifiedCoulomb, TractionIntegration, TractionModel};
 
-/// Seed 000's steel (Table 1).
+/// Shan et al. 2023's steel (Table 1).
 pub fn steel_seed000() -> Material {
     Material {
         elastic_modulus: 210e9,
@@ -76,7 +76,7 @@ pub fn steel_seed000() -> Material {
     }
 }
 
-/// Seed 000's dynamic configuration (planar, L–N e = 0.9, modified
+/// Shan et al. 2023's dynamic configuration (planar, L–N e = 0.9, modified
 /// Coulomb at the contact centre, damped pockets with friction, 8000 rpm,
 /// gravity), with the assumed values of the 6304 preset: μ = 0.1,
 /// v₁ = 10 mm/s, inner ring + shaft 0.5 kg, cage 5 g, pocket clearance
@@ -206,7 +206,7 @@ pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium)
 }
 
 /// Ball and cage drag of the 7008C cases: effective density of the oil
-/// (860 kg/m³, seed 001 Table 1's ρ_e), C_D 0.5, spin drag 0.05, cage
+/// (860 kg/m³, Deng et al. 2022 Table 1's ρ_e), C_D 0.5, spin drag 0.05, cage
 /// viscous 1e-6 and windage 1e-9 (assumed).
 pub fn drag_7008c() -> DragParameters {
     DragParameters {
@@ -218,7 +218,7 @@ pub fn drag_7008c() -> DragParameters {
     }
 }
 
-/// The 7008C cage's outer-ring guide land, seed 001 Table 1: land radius
+/// The 7008C cage's outer-ring guide land, Deng et al. 2022 Table 1: land radius
 /// d_co/2 = 28.665 mm, width G 10.1 mm, radial clearance C_g/2 = 0.175 mm,
 /// η₀ 0.0467 Pa·s; ε capped at 0.95 with a stop of 1e8 N/m.
 pub fn guide_land_7008c() -> rolldyn::dynamics::GuideLand {
@@ -234,7 +234,7 @@ pub fn guide_land_7008c() -> rolldyn::dynamics::GuideLand {
 }
 
 /// The adaptive integrators the dynamic validation cases run with: the
-/// explicit DOPRI5 and the stiff ROS34PW2 (issue 5: both must pass).
+/// explicit DOPRI5 and the stiff ROS34PW2 (both must pass).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Method {
     /// Dormand–Prince 5(4).

@@ -1,4 +1,4 @@
-//! Convergence of the reported means (issue 4, VALIDATION): with the
+//! Convergence of the reported means (VALIDATION): with the
 //! integrator tolerance (step size) and with the traction grid. A mean
 //! that changes when the numerics are refined is not a result.
 //!
@@ -7,7 +7,7 @@
 //!   Jones–Harris state at relative tolerances 1e-5, 1e-6, 1e-7 (DOPRI5).
 //!   The changes must shrink, and the 1e-6 values (the CLI default) must
 //!   lie within 1e-5 (speed) and 1e-3 (power) of the 1e-7 ones.
-//! * Step size, impacting case: seed 000's 6304 (C1 configuration,
+//! * Step size, impacting case: Shan et al. 2023's 6304 (C1 configuration,
 //!   W = 100 N, Coulomb friction, clearance), mean cage speed over
 //!   20–40 ms. Impacts and stick–slip make trajectories diverge between
 //!   tolerances, so the mean converges only statistically: the three

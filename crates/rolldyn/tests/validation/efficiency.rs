@@ -1,4 +1,4 @@
-//! Efficiency snapshots of the stiff solver (issue 5): the work the
+//! Efficiency snapshots of the stiff solver: the work the
 //! ROS34PW2 integrator does on two short benchmark-like runs — accepted and
 //! rejected steps, right-hand sides, Jacobians (and their cost in
 //! right-hand sides), factorizations — against numbers recorded when the
@@ -71,7 +71,7 @@ fn check(name: &str, got: IntegrationStats, snapshot: IntegrationStats) {
     }
 }
 
-/// Seed 000's 6304 (planar, L–N, Coulomb at the centre, 100 N, 8000 rpm)
+/// Shan et al. 2023's 6304 (planar, L–N, Coulomb at the centre, 100 N, 8000 rpm)
 /// from pure rolling, 20 ms at rtol 1e-3.
 #[test]
 fn stiff_solver_work_on_the_6304() {

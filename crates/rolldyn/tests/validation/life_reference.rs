@@ -1,5 +1,5 @@
 //! ISO/TS 16281's reference rating life from the quasi-static solver's
-//! ball loads (issue 16).
+//! ball loads.
 //!
 //! * Reference conditions (zero clearance, no misalignment, pure radial
 //!   load, rest): the load distribution is Stribeck's, and L_10r must give

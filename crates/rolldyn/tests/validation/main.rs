@@ -1,4 +1,4 @@
-//! Validation cases of `../shared/spec/VALIDATION.md` for the core library.
+//! Validation cases of docs/validation.md for the core library.
 //! Each module cites its source, the reference numbers and the tolerance.
 //! Numbers found are reported in `docs/validation.md`.
 

@@ -1,11 +1,11 @@
 //! The pocket oil film's squeeze damping (`cage::squeeze`, a rolldyn
-//! extension of MODEL §5) in the dynamic model: its power is dissipation,
+//! extension of docs/model.md §5) in the dynamic model: its power is dissipation,
 //! so the instantaneous balance P_drive − P_dissipated = dE/dt of
 //! `b2_power_balance` still holds, and it is a large enough share of the
 //! powers that leaving it out of either side would show.
 //!
 //! Case: the 7008C of `b2_power_balance` (EHL traction on the 12 × 6 grid,
-//! drag, outer-ring guide land, F_x 200 N + F_z 100 N) with seed 001's
+//! drag, outer-ring guide land, F_x 200 N + F_z 100 N) with Deng et al. 2022's
 //! `gupta_film` pockets (F_w 11 N; K_bc for a phenolic cage, 7 GPa) and
 //! the squeeze film of the 7008C's oil (η₀ 0.0467 Pa·s, h_min 1 µm); the
 //! cage displaced 20 µm, turned 0.05 mm (inside the 87.5 µm clearance: on

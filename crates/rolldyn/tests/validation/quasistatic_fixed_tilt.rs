@@ -1,4 +1,4 @@
-//! Prescribed ring displacements (issue 16): a fixed tilt or misalignment
+//! Prescribed ring displacements: a fixed tilt or misalignment
 //! instead of a free ring.
 //!
 //! * The reaction reported is the load that holds the displacement: solved

@@ -1,5 +1,4 @@
-//! Jones–Harris high-speed equilibrium (MODEL §7.2), issue 3:
-//! * B4 at speed: pure axial load gives identical balls; centrifugal force
+//! Jones–Harris high-speed equilibrium (docs/model.md §7.2), //! * B4 at speed: pure axial load gives identical balls; centrifugal force
 //!   opens the outer contact angle less than the inner one (α_i > α_o);
 //! * under outer-raceway control the attitude angle satisfies
 //!   tan β = sin α_o/(cos α_o + D/d_m) (Harris & Kotzalas, *Advanced
@@ -223,7 +222,7 @@ fn b7_sweep_is_deterministic_across_thread_counts() {
     }
 }
 
-/// Issue 16's failing point: the 7218B under F_x 17.9 kN and F_z 17.8 kN
+/// the failing point: the 7218B under F_x 17.9 kN and F_z 17.8 kN
 /// at 3550 rpm ran out of Newton iterations at a relative residual of
 /// 1.3e-10 (a ball at the edge of the loaded zone slows Newton to linear
 /// convergence). It converges under every control, to the 1e-8
@@ -253,7 +252,7 @@ fn combined_load_7218b_point_converges_under_every_control() {
     }
 }
 
-/// Compliance (issue 16): C K = I, and the conventional stiffnesses 1/C_ii
+/// Compliance: C K = I, and the conventional stiffnesses 1/C_ii
 /// equal finite differences of re-solves with the other loads held (the
 /// other displacements free), 0.5 %; the diagonal K_ii differs under
 /// combined load. 7218B, F_x = F_z = 10 kN, at rest and at 3550 rpm.
@@ -333,7 +332,7 @@ fn grid_points(controls: &[RacewayControl]) -> Vec<Conditions> {
     points
 }
 
-/// Issue 16's stress grid: speed 0–20 000 rpm (5) × F_x 10 N–50 kN (5) ×
+/// the stress grid: speed 0–20 000 rpm (5) × F_x 10 N–50 kN (5) ×
 /// F_z 0–50 kN (5), outer, inner and Harris control (375 points). Returns
 /// per point the conditions and the solve's result.
 fn stress_grid(g: &BearingGeometry) -> (QuasiStaticSolver, Grid) {
@@ -394,7 +393,7 @@ fn stress_grid_7008c_converges_everywhere() {
 ///   on the groove's other flank. Each refusal is checked: at 1.05 × the
 ///   least axial load it states (+1 N), the point converges.
 /// * Inner and Harris control likewise (2 and 13 refusals). Before
-///   issue 16's fallbacks 72 of 375 points failed; before the race drive
+///   the fallbacks 72 of 375 points failed; before the race drive
 ///   and the continuation in the control, 38.
 #[test]
 fn stress_grid_7218b() {
@@ -444,7 +443,7 @@ fn stress_grid_7218b() {
     );
 }
 
-/// Issue 16's stress grid with a misalignment: the tilt θ_y held at
+/// the stress grid with a misalignment: the tilt θ_y held at
 /// 0.5 and 2 mrad (`--misalignment`), outer control, speed × F_x × F_z as
 /// above (250 points per bearing): every point converges (the 7218B
 /// failed at 53 before the race drive: free balls rolling at the nearest
@@ -566,7 +565,7 @@ fn assert_refusal_checks(s: &QuasiStaticSolver, p: &Conditions, least_axial_load
     );
 }
 
-/// Issue 16's 10 000-point grid on the 7218B: its light-axial,
+/// The 10 000-point stress grid on the 7218B: its light-axial,
 /// heavy-radial corner (F_x = 10–100 N, F_z = 30–50 kN), which failed
 /// before the axial-displacement search ran without the race drive and
 /// refined the reaction's minimum. Solved one by one (the built-in start)

@@ -1,4 +1,4 @@
-//! Static load distribution (MODEL §7.1), issue 3 acceptance:
+//! Static load distribution (docs/model.md §7.1):
 //! * pure thrust at zero speed reproduces the textbook equation
 //!   F_a = Z K_n (BD)^1.5 sin α (cos α₀/cos α − 1)^1.5 (Harris & Kotzalas,
 //!   *Essential Concepts*, eq. 7.30 form) to 1e-6, with K_n the series
@@ -202,7 +202,7 @@ fn b5_residual_and_stiffness_against_finite_differences() {
 
 #[test]
 fn radial_load_with_clearance_loads_a_sector() {
-    // 6304 (seed 000), P_d = 20 µm, F_r = 1000 N along z.
+    // 6304 (Shan et al. 2023), P_d = 20 µm, F_r = 1000 N along z.
     let g = bearing_6304();
     let options = SolverOptions {
         first_ball_azimuth: std::f64::consts::FRAC_PI_2,

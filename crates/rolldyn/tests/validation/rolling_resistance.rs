@@ -1,4 +1,4 @@
-//! Rolling resistance by elastic hysteresis (MODEL §3; seed 004 eq 21,
+//! Rolling resistance by elastic hysteresis (docs/model.md §3; Lei et al. 2023 eq 21,
 //! Harris): each loaded contact dissipates F_h |u| with
 //! F_h = α_h (3/16)(b/(D/2)) Q. At the Jones–Harris state of the 7008C
 //! (10 000 rpm, F_x = 200 N; balls nearly in pure rolling) the model's

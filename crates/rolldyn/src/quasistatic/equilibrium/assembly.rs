@@ -1,4 +1,4 @@
-//! Assembly of the quasi-static equations (MODEL §7; the equations are
+//! Assembly of the quasi-static equations (docs/model.md §7; the equations are
 //! listed in the parent module's documentation): per ball the residual of
 //! its force, rolling and spin equations and its Jacobian blocks, and the
 //! ball's load on the inner ring with its derivatives; summed over the

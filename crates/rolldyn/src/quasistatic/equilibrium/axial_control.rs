@@ -1,6 +1,6 @@
 //! Axial-displacement control: the first fallback of a quasi-static solve
-//! where the free solve fails, and of a sweep's warm start (issue 16's
-//! stress grids). The caller runs it without the race drive and continues
+//! where the free solve fails, and of a sweep's warm start (the
+//! stress grids of docs/quasistatic.md). The caller runs it without the race drive and continues
 //! its solution in the drive's strength (`solve.rs`).
 //!
 //! A light axial load on an angular-contact bearing under a heavy radial

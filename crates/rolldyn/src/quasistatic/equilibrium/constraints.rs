@@ -1,4 +1,4 @@
-//! Prescribed ring displacements (issue 16): any of the five ring
+//! Prescribed ring displacements: any of the five ring
 //! displacements (x, y, z, θ_y, θ_z) may be held at a given value, a fixed
 //! tilt (0) or misalignment, instead of following its load. The Newton
 //! iteration then drops that ring equation and keeps the displacement

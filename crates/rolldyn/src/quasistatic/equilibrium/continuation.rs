@@ -1,4 +1,4 @@
-//! Continuation paths of the quasi-static solve (MODEL §7): in speed from
+//! Continuation paths of the quasi-static solve (docs/model.md §7): in speed from
 //! the static solution (Euler predictor on the solution's speed tangent,
 //! step doubled after easy solves and halved on failure), in load from an
 //! equivalent pure axial load, and the fallback that takes the axial load

@@ -1,4 +1,4 @@
-//! Damped Newton iteration of the quasi-static equations (MODEL §7): the
+//! Damped Newton iteration of the quasi-static equations (docs/model.md §7): the
 //! bordered ball/ring system solved by the Schur complement on the ring,
 //! a backtracking line search on the scaled residual, and the convergence
 //! rules (tolerance, and acceptance at the requirement when round-off or

@@ -1,4 +1,4 @@
-//! The solve strategy (MODEL §7): the static solution from the built-in
+//! The solve strategy (docs/model.md §7): the static solution from the built-in
 //! start, the continuation in speed, and the fallbacks in order
 //! (outer-control start for inner and Harris control, the
 //! axial-displacement search, the axial load taken to speed first, and

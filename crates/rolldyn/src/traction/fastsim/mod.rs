@@ -1,6 +1,6 @@
 //! Kalker's simplified theory of rolling contact, FASTSIM (J. J. Kalker,
 //! "A fast algorithm for the simplified theory of rolling contact",
-//! *Vehicle System Dynamics* 11 (1982) 1–13; seed 002 §2.2; MODEL §3,
+//! *Vehicle System Dynamics* 11 (1982) 1–13; Zhang et al. 2025 §2.2; docs/model.md §3,
 //! model 4).
 //!
 //! # Frame and creepages
@@ -23,7 +23,7 @@
 //! # Algorithm
 //! The rolling-direction semi-axis a_r is the Hertz minor semi-axis b (the
 //! short axis lies along the rolling direction in a ball bearing), the
-//! lateral b_r the major a (MODEL §3). Flexibilities (Kalker 1982)
+//! lateral b_r the major a (docs/model.md §3). Flexibilities (Kalker 1982)
 //! ```text
 //! L₁ = 8a_r/(3 G C₁₁),  L₂ = 8a_r/(3 G C₂₂),  L₃ = π a_r √(a_r/b_r)/(4 G C₂₃)
 //! L  = (L₁|ξ| + L₂|η| + L₃ c|φ|) / √(ξ² + η² + c²φ²),   c = √(a_r b_r)
@@ -161,6 +161,39 @@ pub enum TractionBound {
 }
 
 /// FASTSIM parameters (case file: `traction.law = "fastsim"`).
+///
+/// One flat contact (semi-axes 2.26 mm across and 0.276 mm along the
+/// rolling direction, 2088 N, steel) rolling at 10 m/s with a small
+/// longitudinal slip: the force is Kalker's linear law, and at large slip
+/// it saturates at μQ:
+/// ```
+/// use nalgebra::Vector3;
+/// use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim};
+///
+/// let law = Fastsim::new(0.1, 76.9e9, 0.3);
+/// let patch = ContactPatch {
+///     point: Vector3::zeros(),
+///     normal: Vector3::z(),
+///     rolling_direction: Vector3::x(),
+///     semi_major: 2.2609e-3,
+///     semi_minor: 0.2761e-3,
+///     load: 2088.0,
+///     deformed_radius: f64::INFINITY,
+/// };
+/// let speed = 10.0;
+/// let rolling = ContactConditions { film: 0.0, entrainment_speed: speed, rolling_velocity: speed };
+/// let force = |creepage: f64| {
+///     let slip = Vector3::new(creepage * speed, 0.0, 0.0);
+///     law.evaluate(&patch, &Vector3::new(0.0, 0.0, -0.02), &slip, &Vector3::zeros(), &rolling).force
+/// };
+/// // Linear theory: F_x = −G c² C₁₁ ξ with c² = a b.
+/// let creepage = 1e-6;
+/// let c11 = law.coefficients(&patch).longitudinal;
+/// let linear = -76.9e9 * patch.semi_major * patch.semi_minor * c11 * creepage;
+/// assert!((force(creepage).x / linear - 1.0).abs() < 0.02);
+/// // Full slip: μQ against the slip.
+/// assert!((force(0.1).x + 0.1 * 2088.0).abs() < 1e-6 * 2088.0);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
@@ -421,7 +454,7 @@ impl Fastsim {
             let eps = WEIGHT_SMOOTHING * norm[l];
             // √(v² + ε²) directly: creepages are O(1), far from overflow,
             // and libm's `hypot` (careful scaling) cost 18 % of the
-            // seed-002 ramp.
+            // Zhang et al. 2025 ramp.
             let smooth = |v: f64| (v * v + eps * eps).sqrt();
             weights[l] = [smooth(xi), smooth(eta), smooth(c.cc * c.phi)];
         }
@@ -459,7 +492,7 @@ impl Fastsim {
     /// correctly rounded; Rust never fuses a multiply and an add on its
     /// own), four lanes to an instruction instead of two, so their results
     /// are bit-identical (test `avx2_march_is_bit_identical_to_baseline`).
-    /// Measured on the seed-002 ramp: −20 % wall (docs/performance.md).
+    /// Measured on the Zhang et al. 2025 ramp: −20 % wall (docs/performance.md).
     #[allow(clippy::too_many_arguments)]
     fn march(
         &self,
