@@ -15,11 +15,10 @@
 //! is deterministic). See examples/seed001/README.md; docs/validation.md
 //! (C3, C4) reports the numbers.
 
-use rolldyn::dynamics::{BearingModel, ContactSample};
+use rolldyn::dynamics::ContactSample;
 use rolldyn::integrate::{DEFAULT_ENERGY_TOLERANCE, OdeSystem, ROS34PW2, Rosenbrock, RunEnd, run};
-use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
 use rolldyn::signal::{CharacteristicFrequencies, Window, amplitude_spectrum};
-use rolldyn_case::{Override, load_case, presets};
+use rolldyn_case::{Override, load_case, presets, simulation};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
@@ -273,25 +272,8 @@ fn simulate(label: &str, axial: f64, surface: &str, duration: f64) -> Result<Out
         .dynamics_parameters()
         .map_err(|e| format!("{}: {}", e.key, e.rule))?;
     let g = &case.bearing.geometry;
-    let (ball, rings) = (
-        &case.materials.ball.material,
-        &case.materials.rings.material,
-    );
-    let mut model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
-        .map_err(|e| e.to_string())?;
-    let qs = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
-        .map_err(|e| e.to_string())?;
-    let eq = qs
-        .solve(
-            &Conditions {
-                loads: params.loads.at(0.0),
-                inner_speed: params.speed.speed_at(0.0),
-                control: case.raceway_control,
-            },
-            &SolverOptions::default(),
-        )
-        .map_err(|e| e.to_string())?;
-    let y0 = model.state_from_equilibrium(&eq);
+    let mut model = simulation::model(&case, params.clone()).map_err(|e| e.to_string())?;
+    let y0 = simulation::jones_harris_state(&case, &model, 0.0).map_err(|e| e.to_string())?;
     // The preset's tolerance (1e-2); steps ≤ 20 µs resolve the kHz lines.
     let rtol = case.relative_tolerance.unwrap_or(1e-3);
     let mut solver = Rosenbrock::new(&ROS34PW2, rtol, 2e-5, None, &model, 0.0, &y0)

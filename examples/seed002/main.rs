@@ -14,15 +14,13 @@
 //! table docs/validation.md C6 reports. See examples/seed002/README.md.
 
 use rolldyn::RingKind;
-use rolldyn::dynamics::{BearingModel, ContactSample};
+use rolldyn::dynamics::ContactSample;
 use rolldyn::integrate::{
     DEFAULT_ENERGY_TOLERANCE, Integrator, OdeSystem, ROS34PW2, Rosenbrock, RunEnd, run,
 };
-use rolldyn::quasistatic::{
-    Conditions, QuasiStaticSolver, SolverOptions, TractionSolveOptions, solve_traction_consistent,
-};
+use rolldyn::quasistatic::{TractionSolveOptions, solve_traction_consistent};
 use rolldyn::traction::fastsim::MapCell;
-use rolldyn_case::{Override, load_case, presets};
+use rolldyn_case::{Override, load_case, presets, simulation};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
@@ -76,29 +74,13 @@ fn simulate(mu: f64, duration: f64, out: &Path) -> Result<Vec<Row>, String> {
         .dynamics_parameters()
         .map_err(|e| format!("{}: {}", e.key, e.rule))?;
     let g = &case.bearing.geometry;
-    let (ball, rings) = (
-        &case.materials.ball.material,
-        &case.materials.rings.material,
-    );
-    let mut model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
-        .map_err(|e| e.to_string())?;
-    // Zhang et al. 2025 §3.1 starts from a quasi-static solution at the idle speed.
-    let qs = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
-        .map_err(|e| e.to_string())?;
-    let eq = qs
-        .solve(
-            &Conditions {
-                loads: params.loads.at(0.0),
-                inner_speed: params.speed.speed_at(0.0),
-                control: case.raceway_control,
-            },
-            &SolverOptions::default(),
-        )
-        .map_err(|e| e.to_string())?;
-    // Zhang et al. 2025's tribological start: the traction-consistent state; with
+    let mut model = simulation::model(&case, params).map_err(|e| e.to_string())?;
+    // Zhang et al. 2025 §3.1 starts from a quasi-static solution at the idle
+    // speed, their tribological start: the traction-consistent state; with
     // μ = 0.001 the balls have none (the gyroscopic moment exceeds the
     // friction), and the run starts from Jones–Harris.
-    let jones_harris = model.state_from_equilibrium(&eq);
+    let jones_harris =
+        simulation::jones_harris_state(&case, &model, 0.0).map_err(|e| e.to_string())?;
     let (y0, start) = match solve_traction_consistent(
         &model,
         &jones_harris,

@@ -20,13 +20,12 @@
 //! stiffness; docs/contact.md), [`DAMPING_RATIO`] for the table and
 //! [`SENSITIVITY`] to show what depends on it.
 
-use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::{DEFAULT_ENERGY_TOLERANCE, ROS34PW2, Rosenbrock, RunEnd, run};
 use rolldyn::lubrication;
 use rolldyn::quasistatic::films::FilmInputs;
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
 use rolldyn::signal::{Window, amplitude_spectrum};
-use rolldyn_case::{Override, load_case};
+use rolldyn_case::{Override, load_case, simulation};
 use std::fmt::Write as _;
 use std::sync::atomic::AtomicBool;
 
@@ -171,8 +170,7 @@ fn simulate(preset: &str, job: &Job) -> Result<Vibration, String> {
         &case.materials.ball.material,
         &case.materials.rings.material,
     );
-    let mut model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
-        .map_err(|e| e.to_string())?;
+    let mut model = simulation::model(&case, params.clone()).map_err(|e| e.to_string())?;
     let solver = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
         .map_err(|e| e.to_string())?;
     let conditions = Conditions {

@@ -12,10 +12,9 @@
 //! `examples/seed004/out`; about 15 s). Writes `table.txt` (also printed)
 //! and `power_temperature.csv`.
 
-use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::{DEFAULT_ENERGY_TOLERANCE, Integrator, OdeSystem, ROS34PW2, Rosenbrock};
 use rolldyn::thermal::coupled::{CoupledOptions, CoupledProblem, coupled_steady};
-use rolldyn_case::{Override, load_case, presets};
+use rolldyn_case::{Override, load_case, presets, simulation};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
@@ -109,28 +108,9 @@ fn main() -> Result<(), String> {
         .dynamics_parameters()
         .map_err(|e| format!("{}: {}", e.key, e.rule))?;
     let g = &case.bearing.geometry;
-    let mut model = BearingModel::new(
-        g,
-        &case.materials.ball.material,
-        &case.materials.rings.material,
-        case.contact_stiffness,
-        params,
-    )
-    .map_err(|e| e.to_string())?;
-    let solver = rolldyn::quasistatic::QuasiStaticSolver::new(
-        g,
-        &case.materials.ball.material,
-        &case.materials.rings.material,
-        case.contact_stiffness,
-    )
-    .map_err(|e| e.to_string())?;
-    let conditions = rolldyn::quasistatic::Conditions {
-        loads: case.loads,
-        inner_speed: 9000.0 * std::f64::consts::TAU / 60.0,
-        control: case.raceway_control,
-    };
-    let eq = solver
-        .solve(&conditions, &Default::default())
+    let mut model = simulation::model(&case, params).map_err(|e| e.to_string())?;
+    let eq = simulation::QuasiStatic::from_case(&case)
+        .and_then(|q| Ok(q.solve()?))
         .map_err(|e| e.to_string())?;
     let y0 = model.state_from_equilibrium(&eq);
     let mut rk = Rosenbrock::new(&ROS34PW2, 1e-3, 1e-4, None, &model, 0.0, &y0)

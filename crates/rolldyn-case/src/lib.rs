@@ -9,7 +9,9 @@
 //! * [`raw`] — the file's structure (and its JSON Schema);
 //! * [`case`] — the validated case and its rules;
 //! * [`presets`] — the papers' bearings and common catalogue bearings;
-//! * [`load_case`] — the pipeline text → [`Case`].
+//! * [`load_case`] — the pipeline text → [`Case`];
+//! * [`simulation`] — a case to the engine: dynamic model, start, integrator,
+//!   quasi-static, power and thermal analyses.
 //!
 //! A case from text, with a command-line style override; values are SI
 //! once validated, and bad input names the key, the value and the rule:
@@ -35,6 +37,7 @@ pub mod error;
 mod load;
 pub mod presets;
 pub mod raw;
+pub mod simulation;
 pub mod units;
 
 pub use case::Case;

@@ -16,10 +16,10 @@
 //!    (4096-sample segments, ½ overlap), envelope; and `rolldyn spectrum`
 //!    end to end on a written run directory.
 
-use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::OdeSystem;
-use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
 use rolldyn::signal::{Window, amplitude_spectrum, envelope_spectrum, welch_psd};
+use rolldyn_case::raw::StartChoice;
+use rolldyn_case::simulation::Simulation;
 use rolldyn_case::{load_case, presets};
 use std::hint::black_box;
 use std::process::Command;
@@ -47,26 +47,8 @@ fn case_text(surfaces: bool) -> String {
 
 fn rhs_time(text: &str) -> f64 {
     let case = load_case("bench", text, &[]).expect("valid case");
-    let params = case.dynamics_parameters().expect("dynamic data");
-    let g = &case.bearing.geometry;
-    let (ball, rings) = (
-        &case.materials.ball.material,
-        &case.materials.rings.material,
-    );
-    let model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
-        .expect("model builds");
-    let qs = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness).expect("solver");
-    let eq = qs
-        .solve(
-            &Conditions {
-                loads: params.loads.at(0.0),
-                inner_speed: params.speed.speed_at(0.0),
-                control: case.raceway_control,
-            },
-            &SolverOptions::default(),
-        )
-        .expect("J–H converges");
-    let y = model.state_from_equilibrium(&eq);
+    let simulation = Simulation::with_start(&case, StartChoice::JonesHarris).expect("J–H start");
+    let (model, y) = (simulation.model, simulation.initial_state);
     let mut dy = vec![0.0; y.len()];
     let calls = 2000;
     median(

@@ -12,12 +12,13 @@
 // A benchmark stops at the first failure.
 #![allow(clippy::unwrap_used)]
 
-use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::OdeSystem;
 use rolldyn::power::local_power_loss;
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
 use rolldyn::thermal::BearingThermal;
 use rolldyn::thermal::coupled::{CoupledOptions, CoupledProblem, coupled_steady, heat_sources};
+use rolldyn_case::raw::StartChoice;
+use rolldyn_case::simulation::Simulation;
 use rolldyn_case::{Case, load_case, presets};
 use std::hint::black_box;
 use std::time::Instant;
@@ -121,35 +122,8 @@ fn main() {
     );
 
     let default = preset_case("7008C");
-    let params = default.dynamics_parameters().unwrap();
-    let g = &default.bearing.geometry;
-    let m = &default.materials;
-    let model = BearingModel::new(
-        g,
-        &m.ball.material,
-        &m.rings.material,
-        default.contact_stiffness,
-        params,
-    )
-    .unwrap();
-    let qs = QuasiStaticSolver::new(
-        g,
-        &m.ball.material,
-        &m.rings.material,
-        default.contact_stiffness,
-    )
-    .unwrap();
-    let eq = qs
-        .solve(
-            &Conditions {
-                loads: default.loads,
-                inner_speed: 10_000.0 * std::f64::consts::TAU / 60.0,
-                control: default.raceway_control,
-            },
-            &SolverOptions::default(),
-        )
-        .unwrap();
-    let y = model.state_from_equilibrium(&eq);
+    let simulation = Simulation::with_start(&default, StartChoice::JonesHarris).unwrap();
+    let (model, y) = (simulation.model, simulation.initial_state);
     let mut dy = vec![0.0; model.dimension()];
     let plain = time(2000, || {
         model.rhs(0.0, &y, &mut dy);

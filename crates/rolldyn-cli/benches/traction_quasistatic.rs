@@ -4,12 +4,11 @@
 //! Jones–Harris solution, on one core; median of 7 solves.
 //! Target: ≤ 5 ms. Figures in docs/performance.md.
 
-use rolldyn::dynamics::BearingModel;
 use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
 use rolldyn::quasistatic::{
     Conditions, QuasiStaticSolver, SolverOptions, TractionSolveOptions, solve_traction_consistent,
 };
-use rolldyn_case::{load_case, presets};
+use rolldyn_case::{load_case, presets, simulation};
 use std::time::Instant;
 
 fn main() {
@@ -29,8 +28,7 @@ fn main() {
             force: [10e3, 0.0, radial],
             moment: [0.0; 2],
         });
-        let model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
-            .expect("model");
+        let model = simulation::model(&case, params.clone()).expect("model");
         let eq = qs
             .solve(
                 &Conditions {

@@ -16,7 +16,6 @@ pub mod quasistatic_films;
 pub mod recorder;
 pub mod report;
 pub mod run;
-pub mod run_solver;
 pub mod run_stats;
 pub mod run_sweep;
 pub mod spectrum;
@@ -99,6 +98,15 @@ pub fn quasistatic_failure(e: rolldyn::quasistatic::QuasiStaticError) -> Failure
         | rolldyn::quasistatic::QuasiStaticError::AxialLoadTooSmall { .. } => {
             Failure::Model(e.to_string())
         }
+        other => Failure::BadInput(other.to_string()),
+    }
+}
+
+/// A case-to-simulation failure: a failed quasi-static solve as
+/// [`quasistatic_failure`] says, everything else bad input.
+pub fn simulation_failure(e: rolldyn_case::simulation::SimulationError) -> Failure {
+    match e {
+        rolldyn_case::simulation::SimulationError::QuasiStatic(q) => quasistatic_failure(q),
         other => Failure::BadInput(other.to_string()),
     }
 }

@@ -4,7 +4,7 @@
 
 use crate::{CaseArgs, Failure, emit, json};
 use clap::Args;
-use rolldyn::power::{LocalPowerLoss, RaceLosses, local_power_loss};
+use rolldyn::power::{LocalPowerLoss, RaceLosses};
 use rolldyn::quasistatic::Equilibrium;
 use rolldyn_case::Case;
 use serde::Serialize;
@@ -132,14 +132,7 @@ fn bad(e: rolldyn_case::case::Invalid) -> Failure {
 
 /// Jones–Harris solution and local power loss of a case.
 pub fn solve(case: &Case) -> Result<(Equilibrium, LocalPowerLoss), Failure> {
-    let inputs = case.local_method_inputs().map_err(bad)?;
-    let solver = crate::quasistatic::solver(case).map_err(Failure::BadInput)?;
-    let conditions = crate::quasistatic::conditions(case, None);
-    let eq = solver
-        .solve(&conditions, &case.solver_options())
-        .map_err(crate::quasistatic_failure)?;
-    let p = local_power_loss(&case.bearing.geometry, &eq, &inputs);
-    Ok((eq, p))
+    rolldyn_case::simulation::power_loss(case).map_err(crate::simulation_failure)
 }
 
 pub fn command(args: PowerArgs) -> Result<(), Failure> {

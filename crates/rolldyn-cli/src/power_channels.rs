@@ -9,7 +9,6 @@
 use rolldyn::dynamics::{BearingModel, ThermalCoupling};
 use rolldyn::power::Dissipation;
 use rolldyn::traction::TractionModel;
-use rolldyn_case::Case;
 use rolldyn_io::TimeSeries;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -67,46 +66,6 @@ pub fn push(row: &mut Vec<f64>, p: &Dissipation, model: &BearingModel) {
 }
 
 const KELVIN: f64 = 273.15;
-
-/// Couples the case's thermal network to `model`, starting at the
-/// quasi-static thermal steady state (`rolldyn thermal`), or with
-/// `thermal.run_start = "ambient"` every part at the ambient temperature
-/// (the oil supply at its own): a warm-up from cold.
-pub fn couple(
-    case: &Case,
-    model: &mut BearingModel,
-    interval: f64,
-    y0: &[f64],
-) -> Result<(), String> {
-    let mut inputs = case
-        .thermal_inputs()
-        .map_err(|e| format!("{}: {}", e.key, e.rule))?;
-    let temperatures = if case.thermal.run_from_ambient {
-        let mut cold = [inputs.ambient_temperature; 10];
-        if let Some(inlet) = rolldyn::thermal::bearing::node_index("oil_inlet") {
-            cold[inlet] = inputs.oil_inlet_temperature;
-        }
-        cold
-    } else {
-        let steady = crate::thermal::solve(case).map_err(|f| match f {
-            crate::Failure::BadInput(m)
-            | crate::Failure::Model(m)
-            | crate::Failure::Interrupted(m)
-            | crate::Failure::Internal(m) => m,
-        })?;
-        inputs.oil_kinematic_viscosity = steady.oil_viscosity / inputs.oil_density;
-        steady.thermal.temperatures
-    };
-    let coupling = ThermalCoupling::new(
-        inputs,
-        case.lubricant.as_ref().and_then(|l| l.viscosity_law),
-        interval,
-        temperatures,
-    )
-    .map_err(|e| format!("thermal.update_interval: {}", e.rule))?;
-    model.couple_thermal(coupling, 0.0, y0);
-    Ok(())
-}
 
 /// The run's thermal coupling in `summary.json`.
 #[derive(Serialize)]

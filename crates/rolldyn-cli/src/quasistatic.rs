@@ -3,7 +3,6 @@
 //! CSV and JSON. Keys are documented in docs/cli.md.
 
 use rolldyn::life::{self, BallLoads};
-use rolldyn::material::Material;
 use rolldyn::operating::Loads;
 use rolldyn::power::local_power_loss;
 use rolldyn::quasistatic::{
@@ -11,6 +10,8 @@ use rolldyn::quasistatic::{
     sweep,
 };
 use rolldyn_case::Case;
+use rolldyn_case::simulation::QuasiStatic;
+pub use rolldyn_case::simulation::conditions;
 use rolldyn_case::units::{AngularSpeed, Force, Quantity};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -19,23 +20,9 @@ const RPM: f64 = std::f64::consts::TAU / 60.0;
 
 /// The solver for a case.
 pub fn solver(case: &Case) -> Result<QuasiStaticSolver, String> {
-    let m: &Material = &case.materials.ball.material;
-    QuasiStaticSolver::new(
-        &case.bearing.geometry,
-        m,
-        &case.materials.rings.material,
-        case.contact_stiffness,
-    )
-    .map_err(|e| e.to_string())
-}
-
-/// Operating point of a case: its final speed (0 without one) and loads.
-pub fn conditions(case: &Case, control: Option<RacewayControl>) -> Conditions {
-    Conditions {
-        loads: case.loads,
-        inner_speed: case.speed.as_ref().map_or(0.0, |s| s.final_speed()),
-        control: control.unwrap_or(case.raceway_control),
-    }
+    QuasiStatic::from_case(case)
+        .map(|q| q.solver)
+        .map_err(|e| e.to_string())
 }
 
 /// One ball in the JSON output.
@@ -823,23 +810,27 @@ pub fn solve(case: &Case, control: ControlChoice) -> Result<QuasiStaticOutput, c
                 .map_err(Failure::BadInput)
         }
         ControlChoice::Raceway(control) => {
-            let solver = solver(case).map_err(Failure::BadInput)?;
+            let problem =
+                QuasiStatic::from_case(case).map_err(|e| Failure::BadInput(e.to_string()))?;
             let conditions = conditions(case, control);
-            let dry = solver
-                .solve(&conditions, &case.solver_options())
+            let dry = problem
+                .solver
+                .solve(&conditions, &problem.options)
                 .map_err(crate::quasistatic_failure)?;
             let held = case.prescribed_displacement.map(|p| p.is_some());
-            let report =
-                match crate::quasistatic_films::solve_with_films(case, &solver, &conditions) {
-                    Some(wet) => {
-                        let wet = wet.map_err(crate::quasistatic_failure)?;
-                        QuasiStaticReport::new(&wet, &conditions, held)
-                            .with_films_and_modes(case, &wet)
-                            .with_dry_stiffness(&dry)
-                    }
-                    None => QuasiStaticReport::new(&dry, &conditions, held)
-                        .with_films_and_modes(case, &dry),
-                };
+            let wet = (problem.film_in_approach && problem.films.is_some())
+                .then(|| problem.solve_at(&conditions));
+            let report = match wet {
+                Some(wet) => {
+                    let wet = wet.map_err(crate::quasistatic_failure)?;
+                    QuasiStaticReport::new(&wet, &conditions, held)
+                        .with_films_and_modes(case, &wet)
+                        .with_dry_stiffness(&dry)
+                }
+                None => {
+                    QuasiStaticReport::new(&dry, &conditions, held).with_films_and_modes(case, &dry)
+                }
+            };
             Ok(QuasiStaticOutput::Raceway(Box::new(report)))
         }
     }

@@ -6,12 +6,12 @@
 //! stiffness (with `inner_ring.mass` and `inner_ring.tilt_inertia`). Keys
 //! in docs/cli.md.
 
-use rolldyn::material::effective_modulus;
-use rolldyn::quasistatic::films::{FilmInputs, equilibrium_films};
+use rolldyn::lubrication;
+use rolldyn::quasistatic::Equilibrium;
+use rolldyn::quasistatic::films::equilibrium_films;
 use rolldyn::quasistatic::modes::natural_modes;
-use rolldyn::quasistatic::{Conditions, Equilibrium, QuasiStaticError, QuasiStaticSolver};
-use rolldyn::{RingKind, lubrication};
 use rolldyn_case::Case;
+use rolldyn_case::simulation::film_inputs;
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -130,41 +130,6 @@ impl ContactFilmRow {
             let _ = writeln!(out, "  film stiffness K_oil {k:.4e} N/m");
         }
     }
-}
-
-/// What the films need from the case (None without a `[lubricant]`).
-pub fn film_inputs(case: &Case) -> Option<FilmInputs> {
-    let lub = case.lubricant.as_ref()?;
-    Some(FilmInputs {
-        lubricant: lubrication::Lubricant {
-            viscosity: lub.viscosity,
-            pressure_viscosity: lub.pressure_viscosity,
-            pressure_model: lub.pressure_viscosity_model,
-        },
-        supply: lub.supply,
-        roughness: [
-            case.surface.composite_roughness(RingKind::Inner),
-            case.surface.composite_roughness(RingKind::Outer),
-        ],
-        effective_modulus: effective_modulus(
-            &case.materials.ball.material,
-            &case.materials.rings.material,
-        ),
-    })
-}
-
-/// The equilibrium with the film in the normal approach when the case asks
-/// for it (`model.film_in_approach`; None otherwise).
-pub fn solve_with_films(
-    case: &Case,
-    solver: &QuasiStaticSolver,
-    conditions: &Conditions,
-) -> Option<Result<Equilibrium, QuasiStaticError>> {
-    if !case.film_in_approach {
-        return None;
-    }
-    let inputs = film_inputs(case)?;
-    Some(solver.solve_with_films(conditions, &case.solver_options(), &inputs))
 }
 
 /// The films of `sol` when the case has a lubricant.

@@ -11,16 +11,14 @@ use crate::Failure;
 use crate::checkpoint::{self, CHECKPOINT_FILE, Position, RECORD_FILE, RunRecord};
 use crate::power_channels::PowerSummary;
 use crate::recorder::Channels;
-use crate::run_solver::SolverSettings;
 use crate::run_stats::RunStatistics;
-use crate::traction_equilibrium::{jones_harris_state, traction_state};
 use crate::vibration::VibrationSummary;
 use indicatif::{ProgressBar, ProgressStyle};
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::{IntegrationStats, Integrator, RunEnd, Sampling, Solver, run_from};
 use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
-use rolldyn_case::raw::StartChoice;
+use rolldyn_case::simulation::{Simulation, SolverSettings};
 use rolldyn_io::{SeriesWriter, write_atomic};
 use serde::Serialize;
 use std::cell::RefCell;
@@ -303,6 +301,8 @@ pub(crate) fn run_once(
 ) -> Result<RunOutput, Failure> {
     let bad = Failure::BadInput;
     let source = record.source.as_str();
+    // The case's dynamic data first (cheap), then the duration, then the
+    // model and its start (quasi-static solves).
     let params = case
         .dynamics_parameters()
         .map_err(|e| bad(format!("{}: {}", e.key, e.rule)))?;
@@ -310,26 +310,11 @@ pub(crate) fn run_once(
         "solver.duration: missing: give the simulated time (or --duration, e.g. --duration \"0.05 s\")".into(),
     ))?;
     let g = &case.bearing.geometry;
-    let (ball, rings) = (
-        &case.materials.ball.material,
-        &case.materials.rings.material,
-    );
-    let mut model = BearingModel::new(g, ball, rings, case.contact_stiffness, params.clone())
-        .map_err(|e| bad(e.to_string()))?;
-    let y0 = match case.start {
-        StartChoice::PureRolling => model.pure_rolling_state([0.0; 5]),
-        StartChoice::JonesHarris => jones_harris_state(case, &model, 0.0).map_err(|e| {
-            bad(format!(
-                "solver.start = \"jones_harris\": {e}; try start = \"pure_rolling\""
-            ))
-        })?,
-        StartChoice::QuasistaticTraction => traction_state(case, &model, 0.0)
-            .map_err(|e| bad(format!("solver.start = \"quasistatic_traction\": {e}")))?,
-    };
-    if let Some(interval) = case.thermal.run_coupling {
-        crate::power_channels::couple(case, &mut model, interval, &y0).map_err(bad)?;
-    }
-    let settings = SolverSettings::of(case, &params.cage, g.ball_count);
+    let Simulation {
+        mut model,
+        initial_state: y0,
+        settings,
+    } = Simulation::from_case(case).map_err(|e| bad(e.to_string()))?;
     let mut channels = Channels::new(
         g.ball_count,
         matches!(params.traction, TractionModel::Fastsim(_)),

@@ -8,12 +8,9 @@
 use crate::power::PowerReport;
 use crate::{CaseArgs, Failure, bad_arg, emit, json};
 use clap::Args;
-use rolldyn::quasistatic::RacewayControl;
 use rolldyn::thermal::BearingThermal;
 use rolldyn::thermal::bearing::NODES;
-use rolldyn::thermal::coupled::{
-    CoupledOptions, CoupledProblem, CoupledSolution, coupled_steady, heat_sources,
-};
+use rolldyn::thermal::coupled::{CoupledSolution, heat_sources};
 use rolldyn_case::Case;
 use rolldyn_case::units::{Quantity, Time};
 use serde::Serialize;
@@ -76,22 +73,7 @@ fn bad(e: rolldyn_case::case::Invalid) -> Failure {
 
 /// The coupled steady state of a case.
 pub fn solve(case: &Case) -> Result<CoupledSolution, Failure> {
-    let problem = CoupledProblem {
-        geometry: &case.bearing.geometry,
-        ball: &case.materials.ball.material,
-        rings: &case.materials.rings.material,
-        hertz: case.contact_stiffness,
-        conditions: crate::quasistatic::conditions(case, None::<RacewayControl>),
-        options: case.solver_options(),
-        power: case.local_method_inputs().map_err(bad)?,
-        thermal: case.thermal_inputs().map_err(bad)?,
-        viscosity: case.lubricant.as_ref().and_then(|l| l.viscosity_law),
-        expansion: case.thermal.expansion,
-    };
-    coupled_steady(&problem, &CoupledOptions::default()).map_err(|e| match e {
-        rolldyn::thermal::coupled::CoupledError::QuasiStatic(q) => crate::quasistatic_failure(q),
-        other => Failure::BadInput(format!("thermal: {other}")),
-    })
+    rolldyn_case::simulation::thermal_steady_state(case).map_err(crate::simulation_failure)
 }
 
 pub fn command(args: ThermalArgs) -> Result<(), Failure> {

@@ -3,49 +3,14 @@
 //! equilibrium (no raceway control; [`rolldyn::quasistatic::traction_control`]),
 //! started from the case's Jones–Harris solution. Keys in docs/cli.md.
 
-use rolldyn::dynamics::{BearingModel, ContactSample};
+use rolldyn::dynamics::ContactSample;
 use rolldyn::operating::{LoadProfile, SpeedProfile};
-use rolldyn::quasistatic::{
-    Conditions, QuasiStaticSolver, TractionSolveOptions, solve_traction_consistent,
-};
 use rolldyn_case::Case;
+use rolldyn_case::simulation::{self, traction_state};
 use serde::Serialize;
 use std::fmt::Write as _;
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
-
-/// The Jones–Harris state of `model` at time `t` (that instant's speed and
-/// loads, the case's raceway control).
-pub fn jones_harris_state(case: &Case, model: &BearingModel, t: f64) -> Result<Vec<f64>, String> {
-    let p = model.parameters();
-    let qs = QuasiStaticSolver::new(
-        &case.bearing.geometry,
-        &case.materials.ball.material,
-        &case.materials.rings.material,
-        case.contact_stiffness,
-    )
-    .map_err(|e| e.to_string())?;
-    let conditions = Conditions {
-        loads: p.loads.at(t),
-        inner_speed: p.speed.speed_at(t),
-        control: case.raceway_control,
-    };
-    // With the film in the approach, the equilibrium with the film.
-    let eq = crate::quasistatic_films::solve_with_films(case, &qs, &conditions)
-        .unwrap_or_else(|| qs.solve(&conditions, &case.solver_options()))
-        .map_err(|e| e.to_string())?;
-    Ok(model.state_from_equilibrium(&eq))
-}
-
-/// The traction-consistent state of `model` at time `t`, from the
-/// Jones–Harris solution of the case at that instant's speed and loads.
-pub fn traction_state(case: &Case, model: &BearingModel, t: f64) -> Result<Vec<f64>, String> {
-    let start = jones_harris_state(case, model, t)
-        .map_err(|e| format!("the Jones–Harris start of the traction-consistent solve: {e}"))?;
-    solve_traction_consistent(model, &start, t, &TractionSolveOptions::default())
-        .map(|s| s.state)
-        .map_err(|e| format!("{e}; the jones_harris start does not need one"))
-}
 
 /// One ball of the report.
 #[derive(Serialize)]
@@ -103,15 +68,7 @@ impl TractionEquilibriumReport {
             .ok()
             .and_then(|v| v.get("law").and_then(|l| l.as_str()).map(str::to_string))
             .unwrap_or_else(|| "none".into());
-        let g = &case.bearing.geometry;
-        let model = BearingModel::new(
-            g,
-            &case.materials.ball.material,
-            &case.materials.rings.material,
-            case.contact_stiffness,
-            params,
-        )
-        .map_err(|e| e.to_string())?;
+        let model = simulation::model(case, params).map_err(|e| e.to_string())?;
         let y = traction_state(case, &model, 0.0)?;
         let l = model.layout();
         let mut samples = vec![ContactSample::default(); l.balls];

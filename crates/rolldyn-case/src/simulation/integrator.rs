@@ -1,8 +1,10 @@
-//! The integrator of a run: `solver.integrator` resolved (`auto` is
+//! The integrator of a case's run: `solver.integrator` resolved (`auto` is
 //! ros34pw2), its relative tolerance and largest step with their
 //! defaults, and its construction. The stiff integrator's default step
 //! resolves the cage's undamped film modes (docs/dynamics.md).
 
+use crate::Case;
+use crate::raw::IntegratorChoice;
 use rolldyn::cage::CageParameters;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
@@ -10,8 +12,6 @@ use rolldyn::integrate::{
     DEFAULT_ENERGY_TOLERANCE, ExplicitRk, IntegrationError, ROS34PW2, Rosenbrock, Solver,
     StepControl,
 };
-use rolldyn_case::Case;
-use rolldyn_case::raw::IntegratorChoice;
 
 /// Default largest step of the explicit adaptive integrator \[s\].
 pub const DEFAULT_MAX_STEP: f64 = 1e-5;
@@ -44,23 +44,24 @@ pub fn stiff_max_step(cage: &CageParameters, balls: usize) -> f64 {
 
 /// The integrator a run uses, with its tolerance and largest step (the
 /// fixed step of rk4), as the summary reports them.
-pub(crate) struct SolverSettings {
+#[derive(Debug, Clone)]
+pub struct SolverSettings {
     choice: IntegratorChoice,
     /// Its name in the summary.
-    pub(crate) integrator: &'static str,
+    pub integrator: &'static str,
     /// None for rk4.
-    pub(crate) relative_tolerance: Option<f64>,
+    pub relative_tolerance: Option<f64>,
     /// Largest step, or rk4's fixed step \[s\].
-    pub(crate) max_step: f64,
+    pub max_step: f64,
     /// Tolerance of the energy-balance error control; None: off (rk4, or
     /// `solver.energy_tolerance = 0`).
-    pub(crate) energy_tolerance: Option<f64>,
+    pub energy_tolerance: Option<f64>,
 }
 
 impl SolverSettings {
     /// The case's choices with their defaults; `cage` and `balls` set the
     /// stiff integrator's default step.
-    pub(crate) fn of(case: &Case, cage: &CageParameters, balls: usize) -> Self {
+    pub fn of(case: &Case, cage: &CageParameters, balls: usize) -> Self {
         let rtol = case
             .relative_tolerance
             .unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
@@ -100,7 +101,7 @@ impl SolverSettings {
     }
 
     /// The case key that sets [`Self::max_step`].
-    pub(crate) fn step_key(&self) -> &'static str {
+    pub fn step_key(&self) -> &'static str {
         match self.choice {
             IntegratorChoice::Rk4 => "solver.time_step",
             _ => "solver.max_step",
@@ -108,11 +109,7 @@ impl SolverSettings {
     }
 
     /// The integrator, started at t = 0 from `y0`.
-    pub(crate) fn build(
-        &self,
-        model: &BearingModel,
-        y0: &[f64],
-    ) -> Result<Solver, IntegrationError> {
+    pub fn build(&self, model: &BearingModel, y0: &[f64]) -> Result<Solver, IntegrationError> {
         let rtol = self
             .relative_tolerance
             .unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
