@@ -22,6 +22,7 @@ pub mod modes;
 pub mod ring_contact;
 pub mod stiffness;
 pub mod sweep;
+pub mod system;
 pub mod traction_control;
 
 pub use equilibrium::{

@@ -19,6 +19,7 @@ mod b3_impact;
 mod b6_stays_at_equilibrium;
 mod b7_resume;
 mod b8_fastsim;
+mod bearing_sets;
 mod c1_seed000;
 mod c4_seed001_surfaces;
 mod c5_seed002_table1;

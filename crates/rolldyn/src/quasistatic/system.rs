@@ -1,0 +1,639 @@
+//! Bearing sets on a rigid shaft (docs/systems.md): several bearings,
+//! each with its full quasi-static (Jones–Harris) solution, sharing the
+//! shaft's five rigid-body displacements; matched pairs with a preload
+//! set by a force or by an axial displacement of the rings; the lift-off
+//! load of an opposed pair; the set's stiffness at the shaft reference
+//! point.
+//!
+//! # Equations
+//! The shaft displacement u = (x, y, z, θ_y, θ_z) is taken at the shaft
+//! reference point x = 0. Bearing i sits at axial position x_i, facing
+//! the +x thrust (as built: the inner ring's +x load loads the balls,
+//! docs/model.md §2) or mirrored. Its inner ring then moves by
+//!
+//! ```text
+//! u_i = M_i P_i u + s_i e_x,   P_i u = (x, y + x_i θ_z, z − x_i θ_y, θ_y, θ_z)
+//! ```
+//!
+//! (rigid shaft, small rotations; M_i = diag(−1, 1, 1, −1, −1) for a
+//! mirrored bearing, the reflection x → −x acting on forces and, as
+//! pseudovectors, on tilts and moments; else the identity), with s_i the
+//! axial offset that sets the preload. Each bearing's equilibrium with its
+//! ring held at u_i ([`SolverOptions::prescribed_displacement`]) gives the
+//! load R_i the shaft applies to the ring and the stiffness K_i = ∂R_i/∂u_i
+//! ([`Equilibrium::reaction`], [`Equilibrium::stiffness`]). The shaft is
+//! in equilibrium when
+//!
+//! ```text
+//! Σ_i P_iᵀ M_i R_i(u_i) = F,   K_set = Σ_i P_iᵀ M_i K_i M_i P_i
+//! ```
+//!
+//! with F = (F_x, F_y, F_z, M_y, M_z) the external load on the shaft about
+//! the reference point: Newton's method on u with the Jacobian K_set and a
+//! backtracking line search.
+//!
+//! # Preload and lift-off
+//! A preload force F_p sets the axial offset s (the same on each bearing of
+//! a pair) at which, with no external load, each bearing carries F_p
+//! axially; a preload displacement sets s directly. At speed the
+//! centrifugal forces change the contact angles, and with a displacement
+//! preload the preload itself: it is reported at every operating point.
+//! The lift-off load of an opposed pair is the external axial load that
+//! unloads the opposed bearing (its axial load reaches zero). For two equal
+//! bearings with Hertz contacts and unchanged contact angles it is
+//! 2^{3/2} F_p ≈ 2.83 F_p (Harris & Kotzalas 2006; the validation tests).
+
+use super::{Equilibrium, QuasiStaticError, QuasiStaticSolver, RacewayControl, SolverOptions};
+use crate::operating::Loads;
+use nalgebra::{SMatrix, SVector};
+
+type Matrix5 = SMatrix<f64, 5, 5>;
+type Vector5 = SVector<f64, 5>;
+
+/// Newton iteration limit of the shaft equilibrium.
+const MAX_ITERATIONS: usize = 60;
+/// Relative residual of the shaft equilibrium (forces over the load
+/// scale, moments over the load scale times the set's axial span).
+const TOLERANCE: f64 = 1e-10;
+
+/// Which thrust direction a bearing carries.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Orientation {
+    /// As built: a +x load on the inner ring loads the balls.
+    Forward,
+    /// Mirrored: carries −x thrust.
+    Reversed,
+}
+
+/// Why a set has no equilibrium.
+#[derive(Debug, Clone, thiserror::Error)]
+pub enum SystemError {
+    /// One bearing's quasi-static solve failed.
+    #[error("bearing {index}: {source}")]
+    Bearing {
+        /// Bearing index (0-based, in the set's order).
+        index: usize,
+        /// The failure.
+        source: QuasiStaticError,
+    },
+    /// The shaft equilibrium did not converge.
+    #[error(
+        "no shaft equilibrium: Newton stopped after {iterations} iterations with a relative residual of {residual:.3e}; a set without preload may have no stiffness against the load (add a preload or a load that closes the contacts)"
+    )]
+    NoConvergence {
+        /// Iterations done.
+        iterations: usize,
+        /// Largest relative residual at the end.
+        residual: f64,
+    },
+    /// The preload cannot be reached.
+    #[error("preload: {reason}")]
+    Preload {
+        /// Why.
+        reason: String,
+    },
+}
+
+/// One bearing of a set.
+#[derive(Debug, Clone)]
+pub struct MountedBearing {
+    /// Its quasi-static solver (contact tables).
+    pub solver: QuasiStaticSolver,
+    /// Axial position x_i of its pitch plane on the shaft \[m\].
+    pub position: f64,
+    /// Which thrust it carries.
+    pub orientation: Orientation,
+    /// Axial offset s_i of its inner ring towards its loaded side at zero
+    /// shaft displacement \[m\] (the preload displacement).
+    pub axial_offset: f64,
+}
+
+impl MountedBearing {
+    /// M_i P_i as a matrix (shaft displacement → ring displacement).
+    fn transform(&self) -> Matrix5 {
+        let mut p = Matrix5::identity();
+        p[(1, 4)] = self.position;
+        p[(2, 3)] = -self.position;
+        if self.orientation == Orientation::Reversed {
+            for k in [0, 3, 4] {
+                p.row_mut(k).neg_mut();
+            }
+        }
+        p
+    }
+
+    /// The ring displacement u_i for shaft displacement `u`.
+    pub fn ring_displacement(&self, u: &[f64; 5]) -> [f64; 5] {
+        let mut local = self.transform() * Vector5::from(*u);
+        local[0] += self.axial_offset;
+        local.into()
+    }
+
+    /// The bearing's load on the shaft about the reference point (the
+    /// shaft's share P_iᵀ M_i R_i of its equilibrium) for ring reaction
+    /// `reaction`.
+    pub fn shaft_load(&self, reaction: &[f64; 5]) -> [f64; 5] {
+        (self.transform().transpose() * Vector5::from(*reaction)).into()
+    }
+
+    /// The axial load the bearing carries \[N\], ≥ 0 on its loaded side.
+    pub fn axial_load(equilibrium: &Equilibrium) -> f64 {
+        equilibrium.reaction[0]
+    }
+
+    /// Whether shaft displacement `u` moves this bearing's inner ring back
+    /// from its loaded side, to at most its preload offset: where its
+    /// balls can leave the inner raceway.
+    fn unloaded_by(&self, u: &[f64; 5]) -> bool {
+        self.ring_displacement(u)[0] <= self.axial_offset
+    }
+
+    fn solve(
+        &self,
+        u: &[f64; 5],
+        inner_speed: f64,
+        control: RacewayControl,
+        options: &SolverOptions,
+    ) -> Result<Equilibrium, QuasiStaticError> {
+        let held = self.ring_displacement(u).map(Some);
+        self.solver.solve(
+            &super::Conditions {
+                loads: Loads::default(),
+                inner_speed,
+                control,
+            },
+            &SolverOptions {
+                prescribed_displacement: held,
+                ..*options
+            },
+        )
+    }
+}
+
+/// A set's operating point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SystemConditions {
+    /// External load on the shaft about its reference point.
+    pub loads: Loads,
+    /// Shaft (inner-ring) speed \[rad/s\].
+    pub inner_speed: f64,
+    /// Raceway control of every bearing.
+    pub control: RacewayControl,
+}
+
+/// The set's equilibrium.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SystemEquilibrium {
+    /// Shaft displacement at the reference point (x, y, z \[m\], θ_y, θ_z
+    /// \[rad\]).
+    pub displacement: [f64; 5],
+    /// Each bearing's equilibrium, its ring held at its displacement;
+    /// [`Equilibrium::reaction`] is the load on its inner ring in its own
+    /// frame. None: the bearing is unloaded by the external load beyond
+    /// lift-off (its inner ring has moved back past its preload offset and
+    /// its balls have no equilibrium on the inner raceway): it carries
+    /// nothing and adds no stiffness.
+    pub bearings: Vec<Option<Equilibrium>>,
+    /// Each bearing's load on the shaft about the reference point.
+    pub shaft_loads: Vec<[f64; 5]>,
+    /// The set's stiffness at the reference point, K_set.
+    pub stiffness: [[f64; 5]; 5],
+    /// Newton iterations on the shaft.
+    pub iterations: usize,
+}
+
+/// Every bearing's state at one shaft displacement.
+struct Evaluation {
+    bearings: Vec<Option<Equilibrium>>,
+    shares: Vec<[f64; 5]>,
+    /// Σ P_iᵀ M_i R_i − F.
+    residual: Vector5,
+    /// K_set.
+    stiffness: Matrix5,
+}
+
+/// Bearings on one rigid shaft.
+#[derive(Debug, Clone)]
+pub struct ShaftSystem {
+    /// The bearings.
+    pub bearings: Vec<MountedBearing>,
+}
+
+/// How a matched set of bearings is mounted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SetKind {
+    /// One bearing.
+    Single,
+    /// A pair with its pressure cones' apexes outward ("O", DB): the
+    /// +x-thrust bearing on the −x side. High moment stiffness.
+    BackToBack,
+    /// A pair with the apexes inward ("X", DF): the +x-thrust bearing on
+    /// the +x side.
+    FaceToFace,
+    /// A pair sharing the +x thrust (DT); takes no preload by itself.
+    Tandem,
+}
+
+impl SetKind {
+    /// Whether the set has bearings facing both ways (and so a preload and
+    /// a lift-off load).
+    pub fn opposed(self) -> bool {
+        matches!(self, Self::BackToBack | Self::FaceToFace)
+    }
+}
+
+impl ShaftSystem {
+    /// A matched set of `solver`'s bearing, pitch planes `spacing` \[m\]
+    /// apart and symmetric about the shaft reference point, no axial
+    /// offset.
+    pub fn matched(solver: &QuasiStaticSolver, kind: SetKind, spacing: f64) -> Self {
+        let mount = |position, orientation| MountedBearing {
+            solver: solver.clone(),
+            position,
+            orientation,
+            axial_offset: 0.0,
+        };
+        let half = 0.5 * spacing;
+        use Orientation::{Forward, Reversed};
+        let bearings = match kind {
+            SetKind::Single => vec![mount(0.0, Forward)],
+            SetKind::BackToBack => vec![mount(-half, Forward), mount(half, Reversed)],
+            SetKind::FaceToFace => vec![mount(half, Forward), mount(-half, Reversed)],
+            SetKind::Tandem => vec![mount(-half, Forward), mount(half, Forward)],
+        };
+        Self { bearings }
+    }
+
+    /// Scale of the moments: the set's axial span, at least the largest
+    /// pitch radius.
+    fn lever(&self) -> f64 {
+        let (lo, hi) = self
+            .bearings
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), b| {
+                (lo.min(b.position), hi.max(b.position))
+            });
+        let radius = self
+            .bearings
+            .iter()
+            .map(|b| b.solver.geometry().pitch_diameter / 2.0)
+            .fold(0.0, f64::max);
+        (hi - lo).max(radius)
+    }
+
+    /// Every bearing's equilibrium at shaft displacement `u`, with the
+    /// residual Σ P_iᵀ M_i R_i − F and the set's stiffness.
+    fn evaluate(
+        &self,
+        u: &[f64; 5],
+        conditions: &SystemConditions,
+        options: &SolverOptions,
+    ) -> Result<Evaluation, SystemError> {
+        let mut bearings = Vec::with_capacity(self.bearings.len());
+        let mut shares = Vec::with_capacity(self.bearings.len());
+        let applied = Vector5::new(
+            conditions.loads.force[0],
+            conditions.loads.force[1],
+            conditions.loads.force[2],
+            conditions.loads.moment[0],
+            conditions.loads.moment[1],
+        );
+        let mut residual = -applied;
+        let mut stiffness = Matrix5::zeros();
+        for (index, b) in self.bearings.iter().enumerate() {
+            let eq = match b.solve(u, conditions.inner_speed, conditions.control, options) {
+                Ok(eq) => eq,
+                Err(_) if b.unloaded_by(u) => {
+                    shares.push([0.0; 5]);
+                    bearings.push(None);
+                    continue;
+                }
+                Err(source) => return Err(SystemError::Bearing { index, source }),
+            };
+            let t = b.transform();
+            let share = b.shaft_load(&eq.reaction);
+            residual += Vector5::from(share);
+            stiffness += t.transpose() * Matrix5::from(eq.stiffness).transpose() * t;
+            shares.push(share);
+            bearings.push(Some(eq));
+        }
+        Ok(Evaluation {
+            bearings,
+            shares,
+            residual,
+            stiffness,
+        })
+    }
+
+    /// Largest relative residual: forces over `scale`, moments over
+    /// `scale` times the lever.
+    fn relative(&self, residual: &Vector5, scale: f64) -> f64 {
+        let lever = self.lever();
+        (0..5)
+            .map(|k| residual[k].abs() / if k < 3 { scale } else { scale * lever })
+            .fold(0.0, f64::max)
+    }
+
+    /// The shaft equilibrium under `conditions`, from zero displacement;
+    /// where the set has no stiffness there (no preload, contacts just
+    /// touching), from the displacement of bearing 0 under an equal share
+    /// of the load.
+    pub fn solve(
+        &self,
+        conditions: &SystemConditions,
+        options: &SolverOptions,
+    ) -> Result<SystemEquilibrium, SystemError> {
+        match self.solve_from([0.0; 5], conditions, options) {
+            Err(SystemError::NoConvergence { iterations: 1, .. })
+            | Err(SystemError::Bearing { .. }) => {
+                let start = self.start_from_share(conditions, options)?;
+                self.solve_from(start, conditions, options)
+            }
+            other => other,
+        }
+    }
+
+    /// The shaft displacement at which bearing 0 alone, its ring free,
+    /// carries 1/n of the external load.
+    fn start_from_share(
+        &self,
+        conditions: &SystemConditions,
+        options: &SolverOptions,
+    ) -> Result<[f64; 5], SystemError> {
+        let first = &self.bearings[0];
+        let n = self.bearings.len() as f64;
+        let l = conditions.loads;
+        // The share in the bearing's own frame (M is its own inverse).
+        let local = first
+            .transform()
+            .transpose()
+            .try_inverse()
+            .map_or([0.0; 5], |inv| {
+                (inv * Vector5::new(l.force[0], l.force[1], l.force[2], l.moment[0], l.moment[1])
+                    / n)
+                    .into()
+            });
+        let eq = first
+            .solver
+            .solve(
+                &super::Conditions {
+                    loads: Loads {
+                        force: [local[0], local[1], local[2]],
+                        moment: [local[3], local[4]],
+                    },
+                    inner_speed: conditions.inner_speed,
+                    control: conditions.control,
+                },
+                options,
+            )
+            .map_err(|source| SystemError::Bearing { index: 0, source })?;
+        let mut ring = Vector5::from(eq.displacement);
+        ring[0] -= first.axial_offset;
+        Ok(first
+            .transform()
+            .try_inverse()
+            .map_or([0.0; 5], |inv| (inv * ring).into()))
+    }
+
+    /// The shaft equilibrium under `conditions`, from displacement `start`.
+    pub fn solve_from(
+        &self,
+        start: [f64; 5],
+        conditions: &SystemConditions,
+        options: &SolverOptions,
+    ) -> Result<SystemEquilibrium, SystemError> {
+        let mut u = start;
+        let mut state = self.evaluate(&u, conditions, options)?;
+        // Load scale: the external load, or what the bearings carry.
+        let carried = state
+            .shares
+            .iter()
+            .map(|s| s[..3].iter().map(|f| f.abs()).fold(0.0, f64::max))
+            .fold(0.0, f64::max);
+        let external = conditions
+            .loads
+            .force
+            .iter()
+            .map(|f| f.abs())
+            .fold(0.0, f64::max);
+        let scale = external.max(carried).max(1.0);
+        let mut error = self.relative(&state.residual, scale);
+        let mut iterations = 0;
+        while error > TOLERANCE {
+            if iterations == MAX_ITERATIONS {
+                return Err(SystemError::NoConvergence {
+                    iterations,
+                    residual: error,
+                });
+            }
+            iterations += 1;
+            let Some(step) = state.stiffness.lu().solve(&state.residual) else {
+                return Err(SystemError::NoConvergence {
+                    iterations,
+                    residual: error,
+                });
+            };
+            // Backtracking: halve the step until the residual falls.
+            let mut factor = 1.0;
+            loop {
+                let trial: [f64; 5] = std::array::from_fn(|k| u[k] - factor * step[k]);
+                match self.evaluate(&trial, conditions, options) {
+                    Ok(next) => {
+                        let e = self.relative(&next.residual, scale);
+                        if e < error || factor < 1e-3 {
+                            (u, state, error) = (trial, next, e);
+                            break;
+                        }
+                    }
+                    Err(e) if factor < 1e-3 => return Err(e),
+                    Err(_) => {}
+                }
+                factor *= 0.5;
+            }
+        }
+        let stiffness = state.stiffness;
+        Ok(SystemEquilibrium {
+            displacement: u,
+            bearings: state.bearings,
+            shaft_loads: state.shares,
+            stiffness: std::array::from_fn(|i| std::array::from_fn(|j| stiffness[(i, j)])),
+            iterations,
+        })
+    }
+
+    /// The same axial offset s on every bearing (a matched set's preload
+    /// displacement).
+    pub fn with_axial_offset(&self, offset: f64) -> Self {
+        let mut set = self.clone();
+        for b in &mut set.bearings {
+            b.axial_offset = offset;
+        }
+        set
+    }
+
+    /// The axial offset s at which, with no external load, bearing 0
+    /// carries the axial load `preload` \[N\] at speed `inner_speed`
+    /// (bisection and secant on s, to 1e-9 of the preload).
+    pub fn offset_for_preload(
+        &self,
+        preload: f64,
+        inner_speed: f64,
+        control: RacewayControl,
+        options: &SolverOptions,
+    ) -> Result<f64, SystemError> {
+        if preload.is_nan() || preload <= 0.0 {
+            return Err(SystemError::Preload {
+                reason: format!("{preload} N: a preload force must be positive"),
+            });
+        }
+        let unloaded = SystemConditions {
+            loads: Loads::default(),
+            inner_speed,
+            control,
+        };
+        // Axial load of bearing 0 minus the preload at offset s. Near the
+        // contacts' onset (at rest the balls just touch without offset; at
+        // speed the centrifugal force lifts them off the inner raceway) the
+        // inner ring carries nothing and the balls' equilibrium is not
+        // determined: a failed solve there counts as no load, and the last
+        // failure is reported if no offset up to 1 mm carries the preload.
+        let mut failure = None;
+        let mut carried = |s: f64| -> f64 {
+            match self.with_axial_offset(s).solve(&unloaded, options) {
+                Ok(eq) => {
+                    eq.bearings[0]
+                        .as_ref()
+                        .map_or(0.0, MountedBearing::axial_load)
+                        - preload
+                }
+                Err(e) => {
+                    failure = Some(e);
+                    -preload
+                }
+            }
+        };
+        // Bracket: without offset the inner rings carry nothing; doubling
+        // from a micrometre.
+        let (mut lo, mut f_lo) = (0.0, -preload);
+        let mut hi = 1e-6;
+        let mut f_hi = carried(hi);
+        while f_hi < 0.0 {
+            if hi > 1e-3 {
+                return Err(failure.unwrap_or_else(|| SystemError::Preload {
+                    reason: format!("{preload} N needs an axial offset beyond 1 mm"),
+                }));
+            }
+            (lo, f_lo) = (hi, f_hi);
+            hi *= 2.0;
+            f_hi = carried(hi);
+        }
+        for _ in 0..100 {
+            // Regula falsi, kept inside the bracket's middle 90 %.
+            let w = (f_lo / (f_lo - f_hi)).clamp(0.05, 0.95);
+            let mid = lo + w * (hi - lo);
+            let f = carried(mid);
+            if f.abs() <= 1e-9 * preload || hi - lo <= 1e-15 {
+                return Ok(mid);
+            }
+            if f < 0.0 {
+                (lo, f_lo) = (mid, f);
+            } else {
+                (hi, f_hi) = (mid, f);
+            }
+        }
+        Ok(0.5 * (lo + hi))
+    }
+
+    /// The external axial load \[N\] (along +x) at which every bearing
+    /// facing −x carries no axial load: the lift-off load of an opposed
+    /// set under pure axial load. None when no bearing faces −x or none
+    /// faces +x.
+    pub fn lift_off_load(
+        &self,
+        inner_speed: f64,
+        control: RacewayControl,
+        options: &SolverOptions,
+    ) -> Result<Option<f64>, SystemError> {
+        let faces = |o| self.bearings.iter().any(|b| b.orientation == o);
+        if !faces(Orientation::Forward) || !faces(Orientation::Reversed) {
+            return Ok(None);
+        }
+        // Sum of the reversed bearings' axial loads at shaft axial
+        // displacement x (the shaft otherwise held: pure axial load).
+        let opposed = |x: f64| -> Result<(f64, f64), SystemError> {
+            let u = [x, 0.0, 0.0, 0.0, 0.0];
+            let mut reversed = 0.0;
+            let mut total = 0.0;
+            for (index, b) in self.bearings.iter().enumerate() {
+                let eq = match b.solve(&u, inner_speed, control, options) {
+                    Ok(eq) => eq,
+                    // Once its inner contacts open, the opposed bearing's
+                    // balls have no equilibrium on the inner raceway: it
+                    // carries nothing.
+                    Err(_) if b.unloaded_by(&u) => continue,
+                    Err(source) => return Err(SystemError::Bearing { index, source }),
+                };
+                total += b.shaft_load(&eq.reaction)[0];
+                if b.orientation == Orientation::Reversed {
+                    reversed += MountedBearing::axial_load(&eq);
+                }
+            }
+            Ok((reversed, total))
+        };
+        let (mut lo, mut hi) = (0.0, 1e-6);
+        let (r0, _) = opposed(lo)?;
+        if r0 <= 0.0 {
+            return Ok(Some(0.0));
+        }
+        while opposed(hi)?.0 > 0.0 {
+            if hi > 1e-3 {
+                return Err(SystemError::Preload {
+                    reason: "the opposed bearing stays loaded beyond 1 mm of axial displacement"
+                        .into(),
+                });
+            }
+            lo = hi;
+            hi *= 2.0;
+        }
+        // Bisection: the reversed bearing's axial load falls to zero and
+        // stays there (contacts open), so bisect on its sign.
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if opposed(mid)?.0 > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+            if hi - lo <= 1e-14 {
+                break;
+            }
+        }
+        // Below about a millinewton the opposed bearing's balls no longer
+        // converge; its load near the onset goes as (x_on − x)^{3/2}
+        // (Hertz), so x_on follows from R^{2/3} extrapolated linearly from
+        // two loaded points, and the lift-off load is what the other
+        // bearings carry there.
+        let (r_a, _) = opposed(lo)?;
+        let x_b = lo - 0.02 * lo.abs().max(1e-9);
+        let (r_b, _) = opposed(x_b)?;
+        let (c_a, c_b) = (r_a.powf(2.0 / 3.0), r_b.powf(2.0 / 3.0));
+        let onset = if c_b > c_a {
+            lo + c_a * (lo - x_b) / (c_b - c_a)
+        } else {
+            hi
+        };
+        let forward: Result<f64, SystemError> = self
+            .bearings
+            .iter()
+            .enumerate()
+            .filter(|(_, b)| b.orientation == Orientation::Forward)
+            .map(|(index, b)| {
+                b.solve(&[onset, 0.0, 0.0, 0.0, 0.0], inner_speed, control, options)
+                    .map(|eq| b.shaft_load(&eq.reaction)[0])
+                    .map_err(|source| SystemError::Bearing { index, source })
+            })
+            .sum();
+        Ok(Some(forward?))
+    }
+}
