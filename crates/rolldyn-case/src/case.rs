@@ -11,6 +11,7 @@ use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
 use rolldyn::traction::{TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Material};
 
+mod arrangement;
 mod bearing;
 mod dynamics;
 mod life;
@@ -19,6 +20,7 @@ mod output;
 mod surface;
 mod thermal;
 mod traction;
+pub use arrangement::{Arrangement, MAX_PRELOAD, MAX_PRELOAD_DISPLACEMENT, Preload, kind_name};
 pub use bearing::PARAMETRIZATIONS;
 use bearing::bearing;
 pub use dynamics::{
@@ -143,6 +145,8 @@ pub struct Case {
     pub thermal: Thermal,
     /// Rating-life settings.
     pub life: Life,
+    /// A matched set of the bearing on one shaft (`[arrangement]`).
+    pub arrangement: Option<Arrangement>,
     /// Assumed values: (dotted key, reason).
     pub assumptions: Vec<(String, String)>,
 }
@@ -505,6 +509,7 @@ impl Case {
             ));
         }
         let bearing = bearing(&raw.bearing)?;
+        let arrangement = arrangement::arrangement(&raw.arrangement, bearing.width)?;
         let lubricant = raw
             .lubricant
             .as_ref()
@@ -687,6 +692,7 @@ impl Case {
             power: thermal::power(&raw.power)?,
             thermal: thermal::thermal(&raw.thermal, &materials_ball_name)?,
             life: life::life(&raw.life)?,
+            arrangement,
             assumptions: raw
                 .assumptions
                 .iter()

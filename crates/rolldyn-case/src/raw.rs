@@ -14,9 +14,11 @@ use serde::{Deserialize, Deserializer, Serialize};
 use std::collections::BTreeMap;
 use std::fmt;
 
+mod arrangement;
 mod life;
 mod surface;
 mod thermal;
+pub use arrangement::*;
 pub use life::*;
 pub use surface::*;
 pub use thermal::*;
@@ -64,6 +66,8 @@ pub struct RawCase {
     /// Rating-life settings (`rolldyn quasistatic`).
     #[serde(default)]
     pub life: RawLife,
+    /// A matched set of the bearing on one shaft (absent: one bearing).
+    pub arrangement: Option<RawArrangement>,
     /// Time-integration settings (used by `rolldyn run`).
     #[serde(default)]
     pub solver: RawSolver,

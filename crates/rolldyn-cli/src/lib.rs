@@ -4,6 +4,7 @@
 //! (`main.rs`) only parses arguments and maps [`Failure`] to exit codes.
 
 pub mod accuracy;
+pub mod arrangement;
 pub mod channel_groups;
 pub mod checkpoint;
 pub mod contact;

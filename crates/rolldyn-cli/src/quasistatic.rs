@@ -788,6 +788,8 @@ impl ControlChoice {
 pub enum QuasiStaticOutput {
     Raceway(Box<QuasiStaticReport>),
     Traction(Box<crate::traction_equilibrium::TractionEquilibriumReport>),
+    /// A bearing set (`[arrangement]`).
+    Set(Box<crate::arrangement::SetReport>),
 }
 
 impl QuasiStaticOutput {
@@ -796,6 +798,7 @@ impl QuasiStaticOutput {
         match self {
             QuasiStaticOutput::Raceway(r) => r.to_text(),
             QuasiStaticOutput::Traction(r) => r.to_text(),
+            QuasiStaticOutput::Set(r) => r.to_text(),
         }
     }
 }
@@ -803,6 +806,22 @@ impl QuasiStaticOutput {
 /// Solves the case at its operating point with the chosen control.
 pub fn solve(case: &Case, control: ControlChoice) -> Result<QuasiStaticOutput, crate::Failure> {
     use crate::Failure;
+    if let Some(mut set) =
+        rolldyn_case::simulation::BearingSet::from_case(case).map_err(crate::simulation_failure)?
+    {
+        let ControlChoice::Raceway(control) = control else {
+            return Err(crate::bad_arg(
+                "--control",
+                "traction",
+                "not with [arrangement] (bearing sets are solved with raceway control)",
+            ));
+        };
+        if let Some(control) = control {
+            set.conditions.control = control;
+        }
+        return crate::arrangement::SetReport::new(case, &set)
+            .map(|r| QuasiStaticOutput::Set(Box::new(r)));
+    }
     match control {
         ControlChoice::Traction => {
             crate::traction_equilibrium::TractionEquilibriumReport::new(case)

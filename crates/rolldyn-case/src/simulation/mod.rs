@@ -6,7 +6,8 @@
 //!   (`solver.start`), the thermal network coupled when the case asks
 //!   (`thermal.run_coupling`), and its integrator ([`SolverSettings`]);
 //! * [`QuasiStatic`], [`power_loss`], [`thermal_steady_state`]: the
-//!   quasi-static analyses of a case.
+//!   quasi-static analyses of a case; [`BearingSet`]: a matched set of
+//!   the case's bearing on one shaft (`[arrangement]`).
 //!
 //! A dynamic run of the default case, sampled at 2 kHz:
 //! ```
@@ -26,12 +27,14 @@
 //! ```
 
 mod integrator;
+mod sets;
 mod steady;
 
 pub use integrator::{
     DEFAULT_MAX_STEP, DEFAULT_RELATIVE_TOLERANCE, DEFAULT_RK4_STEP, DEFAULT_STIFF_MAX_STEP,
     STEPS_PER_FILM_PERIOD, SolverSettings, stiff_max_step,
 };
+pub use sets::BearingSet;
 pub use steady::{QuasiStatic, conditions, film_inputs, power_loss, thermal_steady_state};
 
 use crate::Case;
@@ -69,6 +72,9 @@ pub enum SimulationError {
     /// The integrator cannot start.
     #[error(transparent)]
     Integration(#[from] IntegrationError),
+    /// A bearing set has no equilibrium or preload.
+    #[error("arrangement: {0}")]
+    Set(#[from] rolldyn::quasistatic::system::SystemError),
 }
 
 impl From<Invalid> for SimulationError {
@@ -96,6 +102,7 @@ impl Simulation {
 
     /// As [`Self::from_case`] with another start.
     pub fn with_start(case: &Case, start: StartChoice) -> Result<Self, SimulationError> {
+        single_bearing(case, "a dynamic run")?;
         let mut model = model(case, case.dynamics_parameters()?)?;
         let initial_state = match start {
             StartChoice::PureRolling => model.pure_rolling_state([0.0; 5]),
@@ -154,6 +161,22 @@ impl Simulation {
             on_sample,
             |_| {},
         ))
+    }
+}
+
+/// Refuses a case with a bearing set for an analysis that models one
+/// bearing (`what`), naming the key.
+pub fn single_bearing(case: &Case, what: &str) -> Result<(), SimulationError> {
+    match case.bearing_set() {
+        Some(set) => Err(SimulationError::Case(Invalid {
+            key: "arrangement.kind".into(),
+            value: Some(crate::case::kind_name(set.kind).into()),
+            rule: format!(
+                "\"{}\": {what} models one bearing; of a bearing set only the quasi-static solution is available (`rolldyn quasistatic`, docs/systems.md)",
+                crate::case::kind_name(set.kind)
+            ),
+        })),
+        None => Ok(()),
     }
 }
 

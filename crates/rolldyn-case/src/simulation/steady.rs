@@ -107,6 +107,7 @@ pub fn film_inputs(case: &Case) -> Option<FilmInputs> {
 /// The Jones–Harris equilibrium of a case (dry) and its friction power by
 /// Harris's local method.
 pub fn power_loss(case: &Case) -> Result<(Equilibrium, LocalPowerLoss), SimulationError> {
+    super::single_bearing(case, "the power loss")?;
     let inputs = case.local_method_inputs()?;
     let problem = QuasiStatic::from_case(case)?;
     let equilibrium = problem
@@ -119,6 +120,7 @@ pub fn power_loss(case: &Case) -> Result<(Equilibrium, LocalPowerLoss), Simulati
 /// The coupled thermal steady state of a case: Jones–Harris, local power
 /// loss, thermal network, oil viscosity and operating clearance, iterated.
 pub fn thermal_steady_state(case: &Case) -> Result<CoupledSolution, SimulationError> {
+    super::single_bearing(case, "the thermal network")?;
     let problem = CoupledProblem {
         geometry: &case.bearing.geometry,
         ball: &case.materials.ball.material,

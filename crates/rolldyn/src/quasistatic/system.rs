@@ -148,6 +148,12 @@ impl MountedBearing {
         self.ring_displacement(u)[0] <= self.axial_offset
     }
 
+    /// The bearing's equilibrium with its ring held at its displacement
+    /// for shaft displacement `u`. Where the direct solve fails (at speed
+    /// the solver's path from the static solution cannot reach a ring
+    /// that is open at rest but closed by the balls' centrifugal
+    /// displacement), by continuation in the ring displacement from the
+    /// preload state, warm-started, with the step halved on failure.
     fn solve(
         &self,
         u: &[f64; 5],
@@ -155,18 +161,38 @@ impl MountedBearing {
         control: RacewayControl,
         options: &SolverOptions,
     ) -> Result<Equilibrium, QuasiStaticError> {
-        let held = self.ring_displacement(u).map(Some);
-        self.solver.solve(
-            &super::Conditions {
-                loads: Loads::default(),
-                inner_speed,
-                control,
-            },
-            &SolverOptions {
-                prescribed_displacement: held,
-                ..*options
-            },
-        )
+        let conditions = super::Conditions {
+            loads: Loads::default(),
+            inner_speed,
+            control,
+        };
+        let held = |ring: [f64; 5]| SolverOptions {
+            prescribed_displacement: ring.map(Some),
+            ..*options
+        };
+        let target = self.ring_displacement(u);
+        let direct = self.solver.solve(&conditions, &held(target));
+        if direct.is_ok() || self.axial_offset == 0.0 {
+            return direct;
+        }
+        let start = [self.axial_offset, 0.0, 0.0, 0.0, 0.0];
+        let Ok(mut previous) = self.solver.solve(&conditions, &held(start)) else {
+            return direct;
+        };
+        let (mut done, mut step) = (0.0, 0.25);
+        while done < 1.0 {
+            let next = f64::min(done + step, 1.0);
+            let ring = std::array::from_fn(|k| start[k] + next * (target[k] - start[k]));
+            match self.solver.solve_from(&previous, &conditions, &held(ring)) {
+                Ok(eq) => {
+                    (previous, done) = (eq, next);
+                    step = f64::min(2.0 * step, 0.25);
+                }
+                Err(e) if step < 1.0 / 512.0 => return Err(e),
+                Err(_) => step *= 0.5,
+            }
+        }
+        Ok(previous)
     }
 }
 

@@ -1,0 +1,412 @@
+//! `rolldyn quasistatic` of a case with `[arrangement]`: a matched bearing
+//! set on one rigid shaft (docs/systems.md). The set's preload, lift-off
+//! load and stiffness, each bearing's full quasi-static report and rating
+//! life, and the system life; sweeps over speed and the shaft loads. Keys
+//! in docs/cli.md.
+
+use crate::quasistatic::{QuasiStaticReport, Swept};
+use crate::{Failure, simulation_failure};
+use rayon::prelude::*;
+use rolldyn::operating::Loads;
+use rolldyn::quasistatic::Conditions;
+use rolldyn::quasistatic::system::{Orientation, SystemEquilibrium};
+use rolldyn_case::Case;
+use rolldyn_case::case::{Preload, kind_name};
+use rolldyn_case::simulation::BearingSet;
+use serde::Serialize;
+use std::fmt::Write as _;
+
+const RPM: f64 = std::f64::consts::TAU / 60.0;
+
+/// Weibull slope of ball bearings in the series-system life rule.
+pub const WEIBULL_SLOPE: f64 = 10.0 / 9.0;
+
+/// The life of bearings in series (each must survive):
+/// L = (Σ L_i^−e)^−1/e with e = 10/9 for ball bearings (ISO/TR 1281-1;
+/// Harris & Kotzalas 2006). None if any life is unknown; infinite lives
+/// drop out.
+pub fn system_life(lives: &[Option<f64>]) -> Option<f64> {
+    let mut sum = 0.0;
+    for life in lives {
+        let l = (*life)?;
+        if l.is_finite() {
+            sum += l.powf(-WEIBULL_SLOPE);
+        }
+    }
+    (sum > 0.0).then(|| sum.powf(-1.0 / WEIBULL_SLOPE))
+}
+
+/// One bearing of the set.
+#[derive(Serialize)]
+pub struct SetBearingRow {
+    /// Axial position of its pitch plane from the shaft reference point.
+    pub position_m: f64,
+    /// "forward" (carries +x thrust) or "reversed".
+    pub orientation: &'static str,
+    /// The axial load it carries, ≥ 0 on its loaded side.
+    pub axial_load_n: f64,
+    /// Its radial load.
+    pub radial_load_n: f64,
+    /// Its load on the shaft about the reference point (F_x, F_y, F_z
+    /// \[N\], M_y, M_z \[N·m\]).
+    pub shaft_load: [f64; 5],
+    /// Its quasi-static report in its own frame, its loads being what the
+    /// shaft applies to it; null where the external load has unloaded it
+    /// (beyond lift-off).
+    pub quasistatic: Option<Box<QuasiStaticReport>>,
+}
+
+/// `arrangement` in `rolldyn quasistatic --json`.
+#[derive(Serialize)]
+pub struct ArrangementReport {
+    pub kind: &'static str,
+    pub spacing_m: f64,
+    /// The preload as given: force (at rest) or displacement.
+    pub preload_given: String,
+    /// Axial offset of each inner ring that sets the preload.
+    pub preload_offset_m: f64,
+    /// Bearing 0's axial load without external load at this speed (null
+    /// without preload).
+    pub preload_n: Option<f64>,
+    /// External axial load that unloads the opposed bearing, at rest
+    /// (null for tandem sets or without preload).
+    pub lift_off_axial_load_n: Option<f64>,
+    /// Shaft displacement at the reference point (x, y, z \[m\], θ_y, θ_z
+    /// \[rad\]).
+    pub shaft_displacement: [f64; 5],
+    pub axial_stiffness_n_per_m: f64,
+    /// The set's stiffness at the reference point (rows and columns x, y,
+    /// z, θ_y, θ_z; N/m, N/rad, N·m/m, N·m/rad).
+    pub stiffness_matrix: [[f64; 5]; 5],
+    /// Its inverse (null where singular).
+    pub compliance_matrix: Option<[[f64; 5]; 5]>,
+    pub iterations: usize,
+    pub bearings: Vec<SetBearingRow>,
+    /// Series-system lives (null where a bearing's life is unknown).
+    pub system_basic_rating_life_h: Option<f64>,
+    pub system_reference_rating_life_h: Option<f64>,
+    pub system_modified_reference_rating_life_h: Option<f64>,
+}
+
+/// `rolldyn quasistatic --json` of a set.
+#[derive(Serialize)]
+pub struct SetReport {
+    pub speed_rpm: f64,
+    pub raceway_control: rolldyn::quasistatic::RacewayControl,
+    pub force_x_n: f64,
+    pub force_y_n: f64,
+    pub force_z_n: f64,
+    pub moment_y_n_m: f64,
+    pub moment_z_n_m: f64,
+    pub arrangement: ArrangementReport,
+}
+
+fn compliance(k: &[[f64; 5]; 5]) -> Option<[[f64; 5]; 5]> {
+    let m = nalgebra::SMatrix::<f64, 5, 5>::from_fn(|i, j| k[i][j]);
+    m.try_inverse()
+        .map(|c| std::array::from_fn(|i| std::array::from_fn(|j| c[(i, j)])))
+}
+
+impl SetReport {
+    /// Solves the case's set at its operating point.
+    pub fn new(case: &Case, set: &BearingSet) -> Result<Self, Failure> {
+        let eq = set.solve().map_err(simulation_failure)?;
+        let preload = set.preload_at_speed().map_err(simulation_failure)?;
+        let lift_off = set.lift_off_load().map_err(simulation_failure)?;
+        Ok(Self::of(case, set, &eq, preload, lift_off))
+    }
+
+    fn of(
+        case: &Case,
+        set: &BearingSet,
+        eq: &SystemEquilibrium,
+        preload: Option<f64>,
+        lift_off: Option<f64>,
+    ) -> Self {
+        let c = &set.conditions;
+        let bearings: Vec<SetBearingRow> = set
+            .system
+            .bearings
+            .iter()
+            .zip(&eq.bearings)
+            .zip(&eq.shaft_loads)
+            .map(|((b, sol), share)| {
+                let quasistatic = sol.as_ref().map(|sol| {
+                    let r = sol.reaction;
+                    let conditions = Conditions {
+                        loads: Loads {
+                            force: [r[0], r[1], r[2]],
+                            moment: [r[3], r[4]],
+                        },
+                        inner_speed: c.inner_speed,
+                        control: c.control,
+                    };
+                    Box::new(
+                        QuasiStaticReport::new(sol, &conditions, [false; 5])
+                            .with_films_and_modes(case, sol),
+                    )
+                });
+                SetBearingRow {
+                    position_m: b.position,
+                    orientation: match b.orientation {
+                        Orientation::Forward => "forward",
+                        Orientation::Reversed => "reversed",
+                    },
+                    axial_load_n: sol.as_ref().map_or(0.0, |s| s.reaction[0]),
+                    radial_load_n: sol
+                        .as_ref()
+                        .map_or(0.0, |s| s.reaction[1].hypot(s.reaction[2])),
+                    shaft_load: *share,
+                    quasistatic,
+                }
+            })
+            .collect();
+        let lives = |pick: fn(&crate::quasistatic::RatingLife) -> Option<f64>| {
+            let each: Vec<Option<f64>> = bearings
+                .iter()
+                .map(|b| match &b.quasistatic {
+                    Some(q) => q.rating_life.as_ref().and_then(pick),
+                    // Unloaded: it does not fail.
+                    None => Some(f64::INFINITY),
+                })
+                .collect();
+            system_life(&each)
+        };
+        let arrangement = ArrangementReport {
+            kind: kind_name(set.arrangement.kind),
+            spacing_m: set.arrangement.spacing,
+            preload_given: match set.arrangement.preload {
+                Preload::None => "none".into(),
+                Preload::Force(f) => format!("{f} N at rest"),
+                Preload::Displacement(d) => format!("{} um", d * 1e6),
+            },
+            preload_offset_m: set.offset,
+            preload_n: preload,
+            lift_off_axial_load_n: lift_off,
+            shaft_displacement: eq.displacement,
+            axial_stiffness_n_per_m: eq.stiffness[0][0],
+            stiffness_matrix: eq.stiffness,
+            compliance_matrix: compliance(&eq.stiffness),
+            iterations: eq.iterations,
+            system_basic_rating_life_h: lives(|r| r.basic_rating_life_h),
+            system_reference_rating_life_h: lives(|r| r.reference_rating_life_h),
+            system_modified_reference_rating_life_h: lives(|r| r.modified_reference_rating_life_h),
+            bearings,
+        };
+        Self {
+            speed_rpm: c.inner_speed / RPM,
+            raceway_control: c.control,
+            force_x_n: c.loads.force[0],
+            force_y_n: c.loads.force[1],
+            force_z_n: c.loads.force[2],
+            moment_y_n_m: c.loads.moment[0],
+            moment_z_n_m: c.loads.moment[1],
+            arrangement,
+        }
+    }
+
+    /// The text `rolldyn quasistatic` prints.
+    pub fn to_text(&self) -> String {
+        let a = &self.arrangement;
+        let mut out = String::new();
+        let f =
+            |v: Option<f64>, unit: &str| v.map_or("—".to_string(), |v| format!("{v:.2} {unit}"));
+        let _ = writeln!(
+            out,
+            "Bearing set: {}, pitch planes {:.2} mm apart, at {:.0} rpm ({:?} raceway control)",
+            a.kind,
+            a.spacing_m * 1e3,
+            self.speed_rpm,
+            self.raceway_control
+        );
+        let _ = writeln!(
+            out,
+            "  shaft loads at the middle: F_x {} N, F_y {} N, F_z {} N, M_y {} N·m, M_z {} N·m",
+            self.force_x_n, self.force_y_n, self.force_z_n, self.moment_y_n_m, self.moment_z_n_m
+        );
+        let _ = writeln!(
+            out,
+            "  preload {} (offset {:.3} µm per ring): {} at this speed; lift-off axial load {} (at rest)",
+            a.preload_given,
+            a.preload_offset_m * 1e6,
+            f(a.preload_n, "N"),
+            f(a.lift_off_axial_load_n, "N")
+        );
+        let u = a.shaft_displacement;
+        let _ = writeln!(
+            out,
+            "  shaft: x {:.3} µm, y {:.3} µm, z {:.3} µm, θ_y {:.3e} rad, θ_z {:.3e} rad",
+            u[0] * 1e6,
+            u[1] * 1e6,
+            u[2] * 1e6,
+            u[3],
+            u[4]
+        );
+        let k = a.stiffness_matrix;
+        let _ = writeln!(
+            out,
+            "  stiffness: axial {:.4e} N/m, radial {:.4e} / {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
+            k[0][0], k[1][1], k[2][2], k[3][3], k[4][4]
+        );
+        let _ = writeln!(
+            out,
+            "  bearing  position mm  faces  axial N     radial N    max Q_i N   max Q_o N   α_i °    α_o °"
+        );
+        for (i, b) in a.bearings.iter().enumerate() {
+            let (qi, qo, ai, ao) =
+                b.quasistatic
+                    .as_ref()
+                    .map_or((0.0, 0.0, f64::NAN, f64::NAN), |q| {
+                        let max = |g: fn(&crate::quasistatic::BallRow) -> f64| {
+                            q.balls.iter().map(g).fold(0.0, f64::max)
+                        };
+                        (
+                            max(|r| r.load_inner_n),
+                            max(|r| r.load_outer_n),
+                            q.balls
+                                .first()
+                                .map_or(f64::NAN, |r| r.contact_angle_inner_deg),
+                            q.balls
+                                .first()
+                                .map_or(f64::NAN, |r| r.contact_angle_outer_deg),
+                        )
+                    });
+            let _ = writeln!(
+                out,
+                "  {i:<7}  {:>11.2}  {:<5}  {:>10.2}  {:>10.2}  {:>10.2}  {:>10.2}  {:>7.2}  {:>7.2}{}",
+                b.position_m * 1e3,
+                if b.orientation == "forward" {
+                    "+x"
+                } else {
+                    "−x"
+                },
+                b.axial_load_n,
+                b.radial_load_n,
+                qi,
+                qo,
+                ai,
+                ao,
+                if b.quasistatic.is_none() {
+                    "  (unloaded beyond lift-off)"
+                } else {
+                    ""
+                }
+            );
+        }
+        let _ = writeln!(
+            out,
+            "  system life (bearings in series, e = 10/9): L10 {}, L10r {}, L10mr {}",
+            f(a.system_basic_rating_life_h, "h"),
+            f(a.system_reference_rating_life_h, "h"),
+            f(a.system_modified_reference_rating_life_h, "h")
+        );
+        out
+    }
+}
+
+/// One point of a set's sweep.
+#[derive(Serialize)]
+pub struct SetSweepRow {
+    pub speed_rpm: f64,
+    pub force_x_n: f64,
+    pub force_z_n: f64,
+    pub converged: bool,
+    pub preload_n: Option<f64>,
+    pub axial_displacement_m: Option<f64>,
+    pub axial_stiffness_n_per_m: Option<f64>,
+    pub radial_stiffness_z_n_per_m: Option<f64>,
+    pub tilt_stiffness_y_n_m_per_rad: Option<f64>,
+    /// Each bearing's axial load, in the set's order.
+    pub axial_loads_n: Option<Vec<f64>>,
+    pub error: Option<String>,
+}
+
+/// The set at every point of the grid (speed, F_x, F_z), in parallel; the
+/// preload offset stays that of the case (set at rest).
+pub fn run_sweep(set: &BearingSet, sweeps: &[(Swept, Vec<f64>)]) -> Vec<SetSweepRow> {
+    let mut points = vec![set.conditions];
+    for (swept, values) in sweeps {
+        points = points
+            .iter()
+            .flat_map(|p| {
+                values.iter().map(move |&v| {
+                    let mut c = *p;
+                    match swept {
+                        Swept::Speed => c.inner_speed = v,
+                        Swept::Axial => c.loads.force[0] = v,
+                        Swept::Radial => c.loads.force[2] = v,
+                    }
+                    c
+                })
+            })
+            .collect();
+    }
+    points
+        .par_iter()
+        .map(|c| {
+            let at = BearingSet {
+                conditions: *c,
+                ..set.clone()
+            };
+            let solved = at.solve().and_then(|eq| Ok((eq, at.preload_at_speed()?)));
+            let mut row = SetSweepRow {
+                speed_rpm: c.inner_speed / RPM,
+                force_x_n: c.loads.force[0],
+                force_z_n: c.loads.force[2],
+                converged: solved.is_ok(),
+                preload_n: None,
+                axial_displacement_m: None,
+                axial_stiffness_n_per_m: None,
+                radial_stiffness_z_n_per_m: None,
+                tilt_stiffness_y_n_m_per_rad: None,
+                axial_loads_n: None,
+                error: solved.as_ref().err().map(|e| e.to_string()),
+            };
+            if let Ok((eq, preload)) = solved {
+                row.preload_n = preload;
+                row.axial_displacement_m = Some(eq.displacement[0]);
+                row.axial_stiffness_n_per_m = Some(eq.stiffness[0][0]);
+                row.radial_stiffness_z_n_per_m = Some(eq.stiffness[2][2]);
+                row.tilt_stiffness_y_n_m_per_rad = Some(eq.stiffness[3][3]);
+                row.axial_loads_n = Some(
+                    eq.bearings
+                        .iter()
+                        .map(|b| b.as_ref().map_or(0.0, |b| b.reaction[0]))
+                        .collect(),
+                );
+            }
+            row
+        })
+        .collect()
+}
+
+/// The sweep as CSV (one row per point; the bearings' axial loads joined
+/// by `;`).
+pub fn sweep_csv(rows: &[SetSweepRow]) -> String {
+    let mut out = String::from(
+        "speed_rpm,force_x_n,force_z_n,converged,preload_n,axial_displacement_m,axial_stiffness_n_per_m,radial_stiffness_z_n_per_m,tilt_stiffness_y_n_m_per_rad,axial_loads_n,error\n",
+    );
+    let f = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
+    for r in rows {
+        let _ = writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{},{},\"{}\"",
+            r.speed_rpm,
+            r.force_x_n,
+            r.force_z_n,
+            r.converged,
+            f(r.preload_n),
+            f(r.axial_displacement_m),
+            f(r.axial_stiffness_n_per_m),
+            f(r.radial_stiffness_z_n_per_m),
+            f(r.tilt_stiffness_y_n_m_per_rad),
+            r.axial_loads_n.as_ref().map_or(String::new(), |v| v
+                .iter()
+                .map(|x| format!("{x:e}"))
+                .collect::<Vec<_>>()
+                .join(";")),
+            r.error.as_deref().unwrap_or("").replace('"', "'")
+        );
+    }
+    out
+}

@@ -1,0 +1,208 @@
+//! End-to-end tests of bearing sets (`[arrangement]`, docs/systems.md):
+//! the keys of `rolldyn quasistatic --json`, the balance of the loads,
+//! the preload and lift-off, the sweep files, and the errors.
+
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{json, keys, rolldyn, stderr, stdout, temp_dir};
+
+/// The default case (7008C) as a matched set.
+fn pair(arrangement: &str) -> String {
+    let o = rolldyn(&["new", "--preset", "7008C"], None);
+    format!("{}\n[arrangement]\n{arrangement}\n", stdout(&o))
+}
+
+#[test]
+fn back_to_back_pair_report() {
+    let case = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
+    let v = json(
+        &[
+            "quasistatic",
+            "-",
+            "--json",
+            "--axial-load",
+            "300 N",
+            "--radial-load",
+            "1 kN",
+        ],
+        Some(&case),
+    );
+    let a = &v["arrangement"];
+    assert_eq!(
+        keys(a),
+        [
+            "axial_stiffness_n_per_m",
+            "bearings",
+            "compliance_matrix",
+            "iterations",
+            "kind",
+            "lift_off_axial_load_n",
+            "preload_given",
+            "preload_n",
+            "preload_offset_m",
+            "shaft_displacement",
+            "spacing_m",
+            "stiffness_matrix",
+            "system_basic_rating_life_h",
+            "system_modified_reference_rating_life_h",
+            "system_reference_rating_life_h",
+        ]
+    );
+    assert_eq!(a["kind"], "back_to_back");
+    // The spacing defaults to the bearing width (15 mm).
+    assert!((a["spacing_m"].as_f64().unwrap() - 15e-3).abs() < 1e-12);
+    let bearings = a["bearings"].as_array().unwrap();
+    assert_eq!(bearings.len(), 2);
+    assert_eq!(bearings[0]["orientation"], "forward");
+    assert_eq!(bearings[1]["orientation"], "reversed");
+    // The shaft loads of the bearings add up to the applied load.
+    for (k, applied) in [(0, 300.0), (1, 0.0), (2, 1000.0), (3, 0.0), (4, 0.0)] {
+        let sum: f64 = bearings
+            .iter()
+            .map(|b| b["shaft_load"][k].as_f64().unwrap())
+            .sum();
+        assert!((sum - applied).abs() < 1e-6, "component {k}: {sum}");
+    }
+    let axial: Vec<f64> = bearings
+        .iter()
+        .map(|b| b["axial_load_n"].as_f64().unwrap())
+        .collect();
+    assert!((axial[0] - axial[1] - 300.0).abs() < 1e-6, "{axial:?}");
+    // Each bearing's own report carries its share.
+    let q = &bearings[0]["quasistatic"];
+    assert!((q["force_x_n"].as_f64().unwrap() - axial[0]).abs() < 1e-9);
+    assert!(q["balls"].as_array().unwrap().len() == 22);
+    // Position preload grows with speed (10 000 rpm here) above its value
+    // at rest; the lift-off load lies well above the preload.
+    let preload = a["preload_n"].as_f64().unwrap();
+    let lift_off = a["lift_off_axial_load_n"].as_f64().unwrap();
+    assert!(preload > 200.0 && preload < 300.0, "{preload}");
+    assert!(
+        lift_off > 2.828 * 200.0 && lift_off < 4.0 * 200.0,
+        "{lift_off}"
+    );
+    // The stiffness matrix and its inverse.
+    let k = &a["stiffness_matrix"];
+    let c = &a["compliance_matrix"];
+    for i in 0..5 {
+        for j in 0..5 {
+            let kc: f64 = (0..5)
+                .map(|m| k[i][m].as_f64().unwrap() * c[m][j].as_f64().unwrap())
+                .sum();
+            assert!(
+                (kc - f64::from(u8::from(i == j))).abs() < 1e-8,
+                "KC[{i}][{j}] = {kc}"
+            );
+        }
+    }
+    // The text report names the set and both bearings.
+    let o = rolldyn(&["quasistatic", "-"], Some(&case));
+    let text = stdout(&o);
+    assert!(text.contains("Bearing set: back_to_back"), "{text}");
+    assert!(text.contains("lift-off axial load"), "{text}");
+}
+
+#[test]
+fn beyond_lift_off_the_opposed_bearing_is_unloaded() {
+    let case = pair("kind = \"face_to_face\"\npreload = \"100 N\"");
+    let v = json(
+        &[
+            "quasistatic",
+            "-",
+            "--json",
+            "--speed",
+            "0 rpm",
+            "--axial-load",
+            "2 kN",
+        ],
+        Some(&case),
+    );
+    let b = &v["arrangement"]["bearings"];
+    assert!(b[1]["quasistatic"].is_null());
+    assert_eq!(b[1]["axial_load_n"].as_f64().unwrap(), 0.0);
+    assert!((b[0]["axial_load_n"].as_f64().unwrap() - 2000.0).abs() < 1e-6);
+}
+
+#[test]
+fn sweep_over_speed_writes_the_preload() {
+    let case = pair("kind = \"back_to_back\"\npreload_displacement = \"8 um\"");
+    let dir = temp_dir("set-sweep");
+    let o = rolldyn(
+        &[
+            "quasistatic",
+            "-",
+            "--sweep",
+            "speed=0rpm..20000rpm/3",
+            "-o",
+            dir.to_str().unwrap(),
+        ],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let rows: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
+    let preload: Vec<f64> = rows
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["preload_n"].as_f64().unwrap())
+        .collect();
+    assert_eq!(preload.len(), 3);
+    assert!(
+        preload[0] < preload[1] && preload[1] < preload[2],
+        "{preload:?}"
+    );
+    let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
+    assert!(csv.starts_with("speed_rpm,force_x_n,force_z_n,converged,preload_n,"));
+    assert_eq!(csv.lines().count(), 4);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn errors_name_the_key() {
+    for (arrangement, key, rule) in [
+        (
+            "kind = \"tandem\"\npreload = \"100 N\"",
+            "arrangement.preload",
+            "takes no preload",
+        ),
+        (
+            "kind = \"back_to_back\"\npreload = \"100 N\"\npreload_displacement = \"5 um\"",
+            "arrangement.preload_displacement",
+            "not both",
+        ),
+        (
+            "kind = \"back_to_back\"\npreload = \"0 N\"",
+            "arrangement.preload",
+            "must be positive",
+        ),
+        (
+            "kind = \"back_to_back\"\nspacing = \"-1 mm\"",
+            "arrangement.spacing",
+            "must be positive",
+        ),
+        ("kind = \"diagonal\"", "arrangement.kind", "unknown variant"),
+    ] {
+        let case = pair(arrangement);
+        let o = rolldyn(&["quasistatic", "-"], Some(&case));
+        assert_eq!(o.status.code(), Some(2), "{arrangement}");
+        let e = stderr(&o);
+        assert!(e.contains(key) && e.contains(rule), "{arrangement}: {e}");
+    }
+    // Analyses of one bearing refuse a set, naming the key.
+    let case = pair("kind = \"back_to_back\"\npreload = \"100 N\"");
+    for args in [["run", "-"], ["power", "-"], ["thermal", "-"]] {
+        let o = rolldyn(&args, Some(&case));
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(
+            stderr(&o).contains("arrangement.kind: \"back_to_back\""),
+            "{}",
+            stderr(&o)
+        );
+    }
+    let o = rolldyn(&["quasistatic", "-", "--control", "traction"], Some(&case));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--control traction"), "{}", stderr(&o));
+}
