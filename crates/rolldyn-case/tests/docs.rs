@@ -75,6 +75,7 @@ fn every_schema_key_is_documented() {
         "power",
         "thermal",
         "life",
+        "arrangement",
     ];
     for key in all {
         let documented = if sections.contains(&key.as_str()) {

@@ -318,6 +318,8 @@ pub struct SetSweepRow {
     pub tilt_stiffness_y_n_m_per_rad: Option<f64>,
     /// Each bearing's axial load, in the set's order.
     pub axial_loads_n: Option<Vec<f64>>,
+    /// Each bearing's cage speed (null for an unloaded bearing).
+    pub cage_speeds_rpm: Option<Vec<Option<f64>>>,
     pub error: Option<String>,
 }
 
@@ -360,6 +362,7 @@ pub fn run_sweep(set: &BearingSet, sweeps: &[(Swept, Vec<f64>)]) -> Vec<SetSweep
                 radial_stiffness_z_n_per_m: None,
                 tilt_stiffness_y_n_m_per_rad: None,
                 axial_loads_n: None,
+                cage_speeds_rpm: None,
                 error: solved.as_ref().err().map(|e| e.to_string()),
             };
             if let Ok((eq, preload)) = solved {
@@ -374,6 +377,12 @@ pub fn run_sweep(set: &BearingSet, sweeps: &[(Swept, Vec<f64>)]) -> Vec<SetSweep
                         .map(|b| b.as_ref().map_or(0.0, |b| b.reaction[0]))
                         .collect(),
                 );
+                row.cage_speeds_rpm = Some(
+                    eq.bearings
+                        .iter()
+                        .map(|b| b.as_ref().map(|b| b.cage_speed() / RPM))
+                        .collect(),
+                );
             }
             row
         })
@@ -384,13 +393,13 @@ pub fn run_sweep(set: &BearingSet, sweeps: &[(Swept, Vec<f64>)]) -> Vec<SetSweep
 /// by `;`).
 pub fn sweep_csv(rows: &[SetSweepRow]) -> String {
     let mut out = String::from(
-        "speed_rpm,force_x_n,force_z_n,converged,preload_n,axial_displacement_m,axial_stiffness_n_per_m,radial_stiffness_z_n_per_m,tilt_stiffness_y_n_m_per_rad,axial_loads_n,error\n",
+        "speed_rpm,force_x_n,force_z_n,converged,preload_n,axial_displacement_m,axial_stiffness_n_per_m,radial_stiffness_z_n_per_m,tilt_stiffness_y_n_m_per_rad,axial_loads_n,cage_speeds_rpm,error\n",
     );
     let f = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
     for r in rows {
         let _ = writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{},\"{}\"",
+            "{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
             r.speed_rpm,
             r.force_x_n,
             r.force_z_n,
@@ -403,6 +412,11 @@ pub fn sweep_csv(rows: &[SetSweepRow]) -> String {
             r.axial_loads_n.as_ref().map_or(String::new(), |v| v
                 .iter()
                 .map(|x| format!("{x:e}"))
+                .collect::<Vec<_>>()
+                .join(";")),
+            r.cage_speeds_rpm.as_ref().map_or(String::new(), |v| v
+                .iter()
+                .map(|x| x.map_or(String::new(), |x| format!("{x:e}")))
                 .collect::<Vec<_>>()
                 .join(";")),
             r.error.as_deref().unwrap_or("").replace('"', "'")

@@ -231,36 +231,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                         "not with --sweep (solve the points one by one)",
                     ));
                 };
+                let rows = quasistatic::sweep_case(&case, control, &sweeps)?;
                 let dir = std::path::Path::new(&output);
-                if let Some(mut set) = rolldyn_case::simulation::BearingSet::from_case(&case)
-                    .map_err(rolldyn_cli::simulation_failure)?
-                {
-                    if let Some(control) = control {
-                        set.conditions.control = control;
-                    }
-                    let rows = rolldyn_cli::arrangement::run_sweep(&set, &sweeps);
-                    std::fs::create_dir_all(dir)
-                        .map_err(|e| Failure::BadInput(format!("cannot create {output}: {e}")))?;
-                    let json_text = rolldyn_cli::finite::to_json(&rows)
-                        .map_err(|e| Failure::Internal(e.to_string()))?;
-                    let write = |name: &str, text: &str| {
-                        rolldyn_io::write_atomic(&dir.join(name), text.as_bytes())
-                            .map_err(|e| Failure::BadInput(e.to_string()))
-                    };
-                    write("sweep.csv", &rolldyn_cli::arrangement::sweep_csv(&rows))?;
-                    write("sweep.json", &json_text)?;
-                    let failed = rows.iter().filter(|r| !r.converged).count();
-                    return if as_json {
-                        emit(&(json_text + "\n"))
-                    } else {
-                        emit(&format!(
-                            "{} points of the bearing set solved ({failed} failed; reasons in the error column); wrote {output}/sweep.csv and {output}/sweep.json\n",
-                            rows.len()
-                        ))
-                    };
-                }
-                let rows =
-                    quasistatic::run_sweep(&case, control, &sweeps).map_err(Failure::BadInput)?;
                 std::fs::create_dir_all(dir)
                     .map_err(|e| Failure::BadInput(format!("cannot create {output}: {e}")))?;
                 let json_text = rolldyn_cli::finite::to_json(&rows)
@@ -269,22 +241,15 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     rolldyn_io::write_atomic(&dir.join(name), text.as_bytes())
                         .map_err(|e| Failure::BadInput(e.to_string()))
                 };
-                write("sweep.csv", &quasistatic::sweep_csv(&rows))?;
+                write("sweep.csv", &rows.csv())?;
                 write("sweep.json", &json_text)?;
-                let refused = rows.iter().filter(|r| r.refused()).count();
-                let failed = rows.iter().filter(|r| !r.converged).count() - refused;
-                let summary = format!(
-                    "{} points solved ({} refused: below the least axial load their branch needs, in the least_axial_load_n column; {} failed; reasons in the error column); wrote {}/sweep.csv and {}/sweep.json\n",
-                    rows.len(),
-                    refused,
-                    failed,
-                    output,
-                    output
-                );
                 if as_json {
                     emit(&(json_text + "\n"))
                 } else {
-                    emit(&summary)
+                    emit(&format!(
+                        "{}; wrote {output}/sweep.csv and {output}/sweep.json\n",
+                        rows.summary()
+                    ))
                 }
             }
         }

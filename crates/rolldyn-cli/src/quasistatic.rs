@@ -782,6 +782,65 @@ impl ControlChoice {
     }
 }
 
+/// The rows of `rolldyn quasistatic --sweep`: of one bearing, or of a
+/// bearing set (`[arrangement]`).
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum SweepRows {
+    Bearing(Vec<SweepRow>),
+    Set(Vec<crate::arrangement::SetSweepRow>),
+}
+
+impl SweepRows {
+    /// `sweep.csv`.
+    pub fn csv(&self) -> String {
+        match self {
+            Self::Bearing(rows) => sweep_csv(rows),
+            Self::Set(rows) => crate::arrangement::sweep_csv(rows),
+        }
+    }
+
+    /// The summary line (without the files written).
+    pub fn summary(&self) -> String {
+        match self {
+            Self::Bearing(rows) => {
+                let refused = rows.iter().filter(|r| r.refused()).count();
+                let failed = rows.iter().filter(|r| !r.converged).count() - refused;
+                format!(
+                    "{} points solved ({refused} refused: below the least axial load their branch needs, in the least_axial_load_n column; {failed} failed; reasons in the error column)",
+                    rows.len()
+                )
+            }
+            Self::Set(rows) => format!(
+                "{} points of the bearing set solved ({} failed; reasons in the error column)",
+                rows.len(),
+                rows.iter().filter(|r| !r.converged).count()
+            ),
+        }
+    }
+}
+
+/// The case over a grid of speed and loads: its bearing, or its set.
+pub fn sweep_case(
+    case: &Case,
+    control: Option<RacewayControl>,
+    sweeps: &[(Swept, Vec<f64>)],
+) -> Result<SweepRows, crate::Failure> {
+    match rolldyn_case::simulation::BearingSet::from_case(case)
+        .map_err(crate::simulation_failure)?
+    {
+        Some(mut set) => {
+            if let Some(control) = control {
+                set.conditions.control = control;
+            }
+            Ok(SweepRows::Set(crate::arrangement::run_sweep(&set, sweeps)))
+        }
+        None => run_sweep(case, control, sweeps)
+            .map(SweepRows::Bearing)
+            .map_err(crate::Failure::BadInput),
+    }
+}
+
 /// One solve as `rolldyn quasistatic` prints it.
 #[derive(Serialize)]
 #[serde(untagged)]

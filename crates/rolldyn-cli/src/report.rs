@@ -410,7 +410,20 @@ pub struct CheckReport {
     pub moment_z_n_m: f64,
     pub frequencies: Option<FrequencyReport>,
     pub surfaces: Vec<SurfaceEntry>,
+    /// The bearing set of `[arrangement]` (null for one bearing).
+    pub arrangement: Option<CheckArrangement>,
     pub assumptions: Vec<AssumptionReport>,
+}
+
+/// `[arrangement]` as `check` reports it.
+#[derive(Serialize)]
+pub struct CheckArrangement {
+    pub kind: &'static str,
+    pub spacing_m: f64,
+    /// The preload force at rest as given (null if none or a displacement).
+    pub preload_n: Option<f64>,
+    /// The preload displacement as given (null if none or a force).
+    pub preload_displacement_m: Option<f64>,
 }
 
 /// One surface feature set of `[surface]` (check report).
@@ -521,6 +534,21 @@ impl CheckReport {
             moment_z_n_m: case.loads.moment[1],
             frequencies,
             surfaces: surface_entries(&case.surface),
+            arrangement: case.bearing_set().map(|a| {
+                use rolldyn_case::case::Preload;
+                CheckArrangement {
+                    kind: rolldyn_case::case::kind_name(a.kind),
+                    spacing_m: a.spacing,
+                    preload_n: match a.preload {
+                        Preload::Force(f) => Some(f),
+                        _ => None,
+                    },
+                    preload_displacement_m: match a.preload {
+                        Preload::Displacement(d) => Some(d),
+                        _ => None,
+                    },
+                }
+            }),
             assumptions: case
                 .assumptions
                 .iter()
@@ -640,6 +668,19 @@ impl CheckReport {
             "\nLoads on the inner ring: F_x {} N, F_y {} N, F_z {} N, M_y {} N·m, M_z {} N·m",
             self.force_x_n, self.force_y_n, self.force_z_n, self.moment_y_n_m, self.moment_z_n_m
         );
+        if let Some(a) = &self.arrangement {
+            let preload = match (a.preload_n, a.preload_displacement_m) {
+                (Some(f), _) => format!("preload {f} N at rest"),
+                (_, Some(d)) => format!("preload displacement {:.3} µm", d * 1e6),
+                _ => "no preload".into(),
+            };
+            let _ = writeln!(
+                out,
+                "Bearing set ([arrangement], docs/systems.md): {}, pitch planes {:.2} mm apart, {preload}; the loads act on the shaft between the bearings",
+                a.kind,
+                a.spacing_m * 1e3
+            );
+        }
         if let Some(f) = &self.frequencies {
             let _ = writeln!(out);
             out.push_str(&f.to_text());

@@ -1,5 +1,5 @@
-//! Every directory of `examples/` (one per source paper, the CWRU 6205 and
-//! the minute-long warm-up)
+//! Every directory of `examples/` (one per source paper, the CWRU 6205,
+//! the minute-long warm-up and the spindle pair)
 //! holds a README, its case file and a matplotlib script; its case is
 //! valid and runs, shortened. The full reproductions
 //! are the commands in each README.
@@ -16,7 +16,7 @@ fn examples() -> PathBuf {
 }
 
 /// (directory, the shortened command after the case path).
-const EXAMPLES: [(&str, &[&str]); 7] = [
+const EXAMPLES: [(&str, &[&str]); 8] = [
     ("seed000", &["run", "--duration", "2 ms"]),
     ("seed001", &["run", "--duration", "2 ms"]),
     ("seed002", &["run", "--duration", "2 ms"]),
@@ -26,6 +26,8 @@ const EXAMPLES: [(&str, &[&str]); 7] = [
     ("cwru6205", &["run", "--duration", "2 ms"]),
     // The minute-long warm-up, shortened (its run-up starts at 1000 rpm).
     ("warmup60s", &["run", "--duration", "1 ms"]),
+    // A matched pair: its quasi-static solution at the case's speed.
+    ("spindle_pair", &["quasistatic"]),
 ];
 
 #[test]

@@ -97,6 +97,12 @@ fn back_to_back_pair_report() {
             );
         }
     }
+    // `check` reports the set as given.
+    let c = json(&["check", "-", "--json"], Some(&case));
+    assert_eq!(c["arrangement"]["kind"], "back_to_back");
+    assert_eq!(c["arrangement"]["preload_n"].as_f64(), Some(200.0));
+    assert!(c["arrangement"]["preload_displacement_m"].is_null());
+    assert!(json(&["check", "--json"], None)["arrangement"].is_null());
     // The text report names the set and both bearings.
     let o = rolldyn(&["quasistatic", "-"], Some(&case));
     let text = stdout(&o);

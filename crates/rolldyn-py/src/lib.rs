@@ -238,8 +238,9 @@ fn quasistatic_sweep(
         .collect::<Result<Vec<_>, _>>()
         .map_err(CaseError::new_err)?;
     let case = load(source, text, sets)?;
-    let rows =
-        py.detach(|| quasistatic::run_sweep(&case, control, &sweeps).map_err(CaseError::new_err))?;
+    let rows = py
+        .detach(|| quasistatic::sweep_case(&case, control, &sweeps))
+        .map_err(to_py)?;
     json_text(&rows)
 }
 

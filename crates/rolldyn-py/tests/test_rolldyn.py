@@ -128,6 +128,19 @@ def test_quasistatic_equals_the_cli():
         rolldyn.quasistatic(case, control="sideways")
 
 
+def test_bearing_set_equals_the_cli(tmp_path):
+    case = rolldyn.Case.load(REPO / "examples" / "spindle_pair" / "case.toml")
+    path = str(REPO / "examples" / "spindle_pair" / "case.toml")
+    result = rolldyn.quasistatic(case)
+    assert result == cli_json("quasistatic", path, "--json")
+    assert result["arrangement"]["kind"] == "back_to_back"
+    assert len(result["arrangement"]["bearings"]) == 2
+    cli("quasistatic", path, "--sweep", "speed=0rpm..10000rpm/3", "-o", str(tmp_path))
+    expected = json.loads((tmp_path / "sweep.json").read_text())
+    rows = rolldyn.quasistatic_sweep(case, {"speed": "0rpm..10000rpm/3"})
+    assert rows.rows == expected
+
+
 def test_quasistatic_sweep_equals_the_cli(tmp_path):
     cli("quasistatic", "--sweep", "speed=0rpm..12000rpm/4", "--sweep", "axial=100N,1kN",
         "-o", str(tmp_path))
