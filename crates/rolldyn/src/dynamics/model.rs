@@ -109,6 +109,43 @@ pub struct DynamicsParameters {
     pub mixed_lubrication: Option<crate::lubrication::mixed::MixedLubrication>,
 }
 
+impl DynamicsParameters {
+    /// The parameters of a bearing whose inner ring (with what turns with
+    /// it) has mass `inner_ring_mass` \[kg\] and transverse moment of
+    /// inertia `inner_ring_tilt_inertia` \[kg·m²\], with `cage`; the rest at
+    /// its default: Hertz contacts (impact-speed floor 1 mm/s), no traction
+    /// (integrated on the default 12 × 6 grid when one is set), at rest
+    /// without loads, a free inner ring and a fixed outer ring, no
+    /// hysteresis, gravity or drag, 3-D, smooth surfaces, flooded films
+    /// not in the normal approach, no mixed lubrication. Change the rest
+    /// with struct update syntax, so that a new parameter needs only its
+    /// default here:
+    /// `DynamicsParameters { traction, ..DynamicsParameters::new(0.5, 1e-4, cage) }`.
+    pub fn new(inner_ring_mass: f64, inner_ring_tilt_inertia: f64, cage: CageParameters) -> Self {
+        Self {
+            inner_ring_mass,
+            inner_ring_tilt_inertia,
+            cage,
+            normal_law: NormalForceLaw::Hertz,
+            impact_speed_floor: crate::contact::normal_law::DEFAULT_IMPACT_SPEED_FLOOR,
+            traction: TractionModel::None,
+            traction_integration: TractionIntegration::default(),
+            speed: SpeedProfile::Constant(0.0),
+            loads: LoadProfile::Constant(crate::operating::Loads::default()),
+            inner_support: Support::default(),
+            outer_ring: None,
+            rolling_hysteresis: 0.0,
+            gravity: 0.0,
+            planar: false,
+            drag: DragParameters::default(),
+            surface: SurfaceModel::default(),
+            film_supply: Default::default(),
+            film_in_approach: false,
+            mixed_lubrication: None,
+        }
+    }
+}
+
 /// Kinematic state of a ball (global frame).
 pub(super) struct BallMotion {
     /// Ball index j.

@@ -288,9 +288,7 @@ impl BearingModel {
 mod tests {
     use super::*;
     use crate::contact::HertzModel;
-    use crate::dynamics::{
-        CageParameters, DragParameters, DynamicsParameters, PocketLaw, PocketShape,
-    };
+    use crate::dynamics::{CageParameters, DynamicsParameters, PocketLaw, PocketShape};
     use crate::integrate::tableau::DOPRI5;
     use crate::integrate::{ExplicitRk, Integrator, StepControl};
     use crate::material::Material;
@@ -340,31 +338,27 @@ mod tests {
             pressure_viscosity: 2e-8,
             pressure_model: Default::default(),
         };
-        let params = DynamicsParameters {
-            inner_ring_mass: 0.3,
-            inner_ring_tilt_inertia: 1e-4,
-            cage: CageParameters {
-                mass: 6e-3,
-                inertia: 2.8e-6,
-                pitch_radius: 23e-3,
-                pocket_clearance: 0.3e-3,
-                pocket_shape: PocketShape::Cylindrical,
-                pocket_law: PocketLaw::Linear {
-                    stiffness: 1e7,
-                    damping: 20.0,
-                },
-                unbalance: 0.0,
-                pocket_squeeze: None,
-                pocket_friction: ModifiedCoulomb {
-                    friction: 0.05,
-                    stick_speed: 0.0,
-                    full_speed: 1e-3,
-                },
-                whirl: false,
-                guide: None,
+        let cage = CageParameters {
+            mass: 6e-3,
+            inertia: 2.8e-6,
+            pitch_radius: 23e-3,
+            pocket_clearance: 0.3e-3,
+            pocket_shape: PocketShape::Cylindrical,
+            pocket_law: PocketLaw::Linear {
+                stiffness: 1e7,
+                damping: 20.0,
             },
-            normal_law: crate::contact::NormalForceLaw::Hertz,
-            impact_speed_floor: 1e-3,
+            unbalance: 0.0,
+            pocket_squeeze: None,
+            pocket_friction: ModifiedCoulomb {
+                friction: 0.05,
+                stick_speed: 0.0,
+                full_speed: 1e-3,
+            },
+            whirl: false,
+            guide: None,
+        };
+        let params = DynamicsParameters {
             traction: TractionModel::Ehl(EhlRheology {
                 eyring_stress: 5e6,
                 limiting_shear_coefficient: 0.08,
@@ -376,16 +370,8 @@ mod tests {
             },
             speed: SpeedProfile::Constant(speed),
             loads: LoadProfile::Constant(loads),
-            inner_support: Default::default(),
-            outer_ring: None,
             rolling_hysteresis: 0.007,
-            gravity: 0.0,
-            planar: false,
-            drag: DragParameters::default(),
-            surface: Default::default(),
-            film_supply: Default::default(),
-            mixed_lubrication: None,
-            film_in_approach: false,
+            ..DynamicsParameters::new(0.3, 1e-4, cage)
         };
         let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
         let y0 = model.state_from_equilibrium(&eq);

@@ -438,12 +438,12 @@ pub fn solve_traction_consistent(
 mod tests {
     use super::*;
     use crate::cage::{CageParameters, PocketLaw, PocketShape};
-    use crate::contact::{HertzModel, NormalForceLaw};
-    use crate::dynamics::{DragParameters, DynamicsParameters, Support};
+    use crate::contact::HertzModel;
+    use crate::dynamics::DynamicsParameters;
     use crate::material::Material;
     use crate::operating::{LoadProfile, Loads, SpeedProfile};
     use crate::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
-    use crate::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};
+    use crate::traction::{ModifiedCoulomb, TractionModel};
     use crate::{BearingGeometry, Clearance, GeometrySpec};
 
     /// An angular-contact bearing (D 7.94 mm, 18 balls, 15°), 10 000 rpm,
@@ -471,41 +471,27 @@ mod tests {
             stick_speed: 0.0,
             full_speed: 1e-3,
         };
-        let params = DynamicsParameters {
-            inner_ring_mass: 0.5,
-            inner_ring_tilt_inertia: 1e-4,
-            cage: CageParameters {
-                mass: 0.003,
-                inertia: 2e-6,
-                pitch_radius: 27e-3,
-                pocket_clearance: 0.2e-3,
-                pocket_shape: PocketShape::Cylindrical,
-                pocket_law: PocketLaw::Linear {
-                    stiffness: 1e7,
-                    damping: 20.0,
-                },
-                unbalance: 0.0,
-                pocket_squeeze: None,
-                pocket_friction: friction,
-                whirl: false,
-                guide: None,
+        let cage = CageParameters {
+            mass: 0.003,
+            inertia: 2e-6,
+            pitch_radius: 27e-3,
+            pocket_clearance: 0.2e-3,
+            pocket_shape: PocketShape::Cylindrical,
+            pocket_law: PocketLaw::Linear {
+                stiffness: 1e7,
+                damping: 20.0,
             },
-            normal_law: NormalForceLaw::Hertz,
-            impact_speed_floor: 1e-3,
+            unbalance: 0.0,
+            pocket_squeeze: None,
+            pocket_friction: friction,
+            whirl: false,
+            guide: None,
+        };
+        let params = DynamicsParameters {
             traction: TractionModel::ModifiedCoulomb(friction),
-            traction_integration: TractionIntegration::default(),
             speed: SpeedProfile::Constant(speed),
             loads: LoadProfile::Constant(loads),
-            gravity: 0.0,
-            planar: false,
-            drag: DragParameters::default(),
-            surface: crate::surface::SurfaceModel::default(),
-            film_supply: Default::default(),
-            mixed_lubrication: None,
-            film_in_approach: false,
-            inner_support: Support::default(),
-            outer_ring: None,
-            rolling_hysteresis: 0.0,
+            ..DynamicsParameters::new(0.5, 1e-4, cage)
         };
         let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
         let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();

@@ -11,16 +11,15 @@
 //! free inner ring, balls and cage launched at the pure-rolling speeds of
 //! 8000 rpm.
 
-use rolldyn::contact::{HertzModel, NormalForceLaw};
+use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{
-    BearingModel, CageParameters, DragParameters, DynamicsParameters, OuterRing, PocketLaw,
-    PocketShape, Support,
+    BearingModel, CageParameters, DynamicsParameters, OuterRing, PocketLaw, PocketShape, Support,
 };
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{ExplicitRk, Integrator, ROS34PW2, Rosenbrock, StepControl};
 use rolldyn::material::Material;
 use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
-use rolldyn::traction::{ModifiedCoulomb, TractionIntegration, TractionModel};
+use rolldyn::traction::{ModifiedCoulomb, TractionIntegration};
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
 fn model(configure: impl Fn(&mut DynamicsParameters)) -> BearingModel {
@@ -39,48 +38,35 @@ fn model(configure: impl Fn(&mut DynamicsParameters)) -> BearingModel {
         poisson_ratio: 0.3,
         density: 7800.0,
     };
-    let mut params = DynamicsParameters {
-        inner_ring_mass: 0.1,
-        inner_ring_tilt_inertia: 1e-5,
-        cage: CageParameters {
-            mass: 0.01,
-            inertia: 8.2e-7,
-            pitch_radius: 18.005e-3,
-            pocket_clearance: 2e-3,
-            pocket_shape: PocketShape::Cylindrical,
-            pocket_law: PocketLaw::Linear {
-                stiffness: 1e6,
-                damping: 0.0,
-            },
-            unbalance: 0.0,
-            pocket_squeeze: None,
-            pocket_friction: ModifiedCoulomb {
-                friction: 0.0,
-                stick_speed: 0.0,
-                full_speed: 1e-3,
-            },
-            whirl: true,
-            guide: None,
+    let cage = CageParameters {
+        mass: 0.01,
+        inertia: 8.2e-7,
+        pitch_radius: 18.005e-3,
+        pocket_clearance: 2e-3,
+        pocket_shape: PocketShape::Cylindrical,
+        pocket_law: PocketLaw::Linear {
+            stiffness: 1e6,
+            damping: 0.0,
         },
-        normal_law: NormalForceLaw::Hertz,
-        impact_speed_floor: 1e-3,
-        traction: TractionModel::None,
+        unbalance: 0.0,
+        pocket_squeeze: None,
+        pocket_friction: ModifiedCoulomb {
+            friction: 0.0,
+            stick_speed: 0.0,
+            full_speed: 1e-3,
+        },
+        whirl: true,
+        guide: None,
+    };
+    let mut params = DynamicsParameters {
         traction_integration: TractionIntegration::Centre,
         speed: SpeedProfile::Constant(8000.0 * std::f64::consts::TAU / 60.0),
         loads: LoadProfile::Constant(Loads {
             force: [0.0, 0.0, 100.0],
             moment: [0.0, 0.0],
         }),
-        gravity: 0.0,
         planar: true,
-        drag: DragParameters::default(),
-        surface: rolldyn::surface::SurfaceModel::default(),
-        film_supply: Default::default(),
-        mixed_lubrication: None,
-        film_in_approach: false,
-        inner_support: Support::default(),
-        outer_ring: None,
-        rolling_hysteresis: 0.0,
+        ..DynamicsParameters::new(0.1, 1e-5, cage)
     };
     configure(&mut params);
     BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap()

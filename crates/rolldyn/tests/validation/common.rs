@@ -57,7 +57,7 @@ pub fn bearing_7218b() -> BearingGeometry {
 
 use rolldyn::contact::{HertzModel, NormalForceLaw};
 use rolldyn::dynamics::{
-    CageParameters, DragParameters, DynamicsParameters, PocketLaw, PocketShape, Support,
+    CageParameters, DragParameters, DynamicsParameters, PocketLaw, PocketShape,
 };
 use rolldyn::lubrication::Lubricant;
 use rolldyn::material::Material;
@@ -87,27 +87,24 @@ pub fn seed000_dynamics(radial_load: f64) -> DynamicsParameters {
         stick_speed: 0.0,
         full_speed: 1e-2,
     };
-    DynamicsParameters {
-        inner_ring_mass: 0.5,
-        inner_ring_tilt_inertia: 1e-4,
-        cage: CageParameters {
-            mass: 0.005,
-            inertia: 8.2e-7,
-            pitch_radius: 18.005e-3,
-            pocket_clearance: 0.2e-3,
-            pocket_shape: PocketShape::Cylindrical,
-            pocket_law: PocketLaw::Linear {
-                stiffness: 1e7,
-                damping: 20.0,
-            },
-            unbalance: 0.0,
-            pocket_squeeze: None,
-            pocket_friction: friction,
-            whirl: true,
-            guide: None,
+    let cage = CageParameters {
+        mass: 0.005,
+        inertia: 8.2e-7,
+        pitch_radius: 18.005e-3,
+        pocket_clearance: 0.2e-3,
+        pocket_shape: PocketShape::Cylindrical,
+        pocket_law: PocketLaw::Linear {
+            stiffness: 1e7,
+            damping: 20.0,
         },
+        unbalance: 0.0,
+        pocket_squeeze: None,
+        pocket_friction: friction,
+        whirl: true,
+        guide: None,
+    };
+    DynamicsParameters {
         normal_law: NormalForceLaw::LankaraniNikravesh { restitution: 0.9 },
-        impact_speed_floor: 1e-3,
         traction: TractionModel::ModifiedCoulomb(friction),
         traction_integration: TractionIntegration::Centre,
         speed: SpeedProfile::Constant(8000.0 * std::f64::consts::TAU / 60.0),
@@ -117,14 +114,7 @@ pub fn seed000_dynamics(radial_load: f64) -> DynamicsParameters {
         }),
         gravity: 9.81,
         planar: true,
-        drag: DragParameters::default(),
-        surface: rolldyn::surface::SurfaceModel::default(),
-        film_supply: Default::default(),
-        mixed_lubrication: None,
-        film_in_approach: false,
-        inner_support: Support::default(),
-        outer_ring: None,
-        rolling_hysteresis: 0.0,
+        ..DynamicsParameters::new(0.5, 1e-4, cage)
     }
 }
 
@@ -151,31 +141,27 @@ pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium)
             &SolverOptions::default(),
         )
         .unwrap();
-    let params = DynamicsParameters {
-        inner_ring_mass: 0.5,
-        inner_ring_tilt_inertia: 1e-4,
-        cage: CageParameters {
-            mass: 0.0031,
-            inertia: 2.4e-6,
-            pitch_radius: 27e-3,
-            pocket_clearance: 0.175e-3,
-            pocket_shape: PocketShape::Cylindrical,
-            pocket_law: PocketLaw::Linear {
-                stiffness: 1e7,
-                damping: 20.0,
-            },
-            unbalance: 0.0,
-            pocket_squeeze: None,
-            pocket_friction: ModifiedCoulomb {
-                friction: 0.05,
-                stick_speed: 0.0,
-                full_speed: 1e-3,
-            },
-            whirl: true,
-            guide: None,
+    let cage = CageParameters {
+        mass: 0.0031,
+        inertia: 2.4e-6,
+        pitch_radius: 27e-3,
+        pocket_clearance: 0.175e-3,
+        pocket_shape: PocketShape::Cylindrical,
+        pocket_law: PocketLaw::Linear {
+            stiffness: 1e7,
+            damping: 20.0,
         },
-        normal_law: NormalForceLaw::Hertz,
-        impact_speed_floor: 1e-3,
+        unbalance: 0.0,
+        pocket_squeeze: None,
+        pocket_friction: ModifiedCoulomb {
+            friction: 0.05,
+            stick_speed: 0.0,
+            full_speed: 1e-3,
+        },
+        whirl: true,
+        guide: None,
+    };
+    let params = DynamicsParameters {
         traction: TractionModel::Ehl(EhlRheology {
             eyring_stress: 5e6,
             limiting_shear_coefficient: 0.08,
@@ -191,16 +177,8 @@ pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium)
         },
         speed: SpeedProfile::Constant(speed),
         loads: LoadProfile::Constant(loads),
-        gravity: 0.0,
-        planar: false,
         drag,
-        surface: rolldyn::surface::SurfaceModel::default(),
-        film_supply: Default::default(),
-        mixed_lubrication: None,
-        film_in_approach: false,
-        inner_support: Support::default(),
-        outer_ring: None,
-        rolling_hysteresis: 0.0,
+        ..DynamicsParameters::new(0.5, 1e-4, cage)
     };
     (params, eq)
 }
