@@ -383,3 +383,20 @@ def test_spectrum_equals_the_cli(tmp_path):
     assert result.spectrum("cage_speed_rpm") == expected
     with pytest.raises(rolldyn.CaseError, match="no such channel"):
         result.spectrum("nope")
+
+
+def test_native_stub_matches_the_module():
+    """``_rolldyn.pyi`` declares exactly what the native module exports,
+    and the package exports only its API (``__all__``)."""
+    import re
+    from rolldyn import _rolldyn
+
+    stub = (Path(rolldyn.__file__).parent / "_rolldyn.pyi").read_text()
+    declared = set(re.findall(r"^def (\w+)\(", stub, re.M))
+    declared |= set(re.findall(r"^class (\w+)\(", stub, re.M))
+    exported = {n for n in dir(_rolldyn) if not n.startswith("__")}
+    assert declared == exported
+    assert (Path(rolldyn.__file__).parent / "py.typed").exists()
+    assert {"np", "os", "json", "Any"}.isdisjoint(rolldyn.__all__)
+    assert all(hasattr(rolldyn, name) for name in rolldyn.__all__)
+

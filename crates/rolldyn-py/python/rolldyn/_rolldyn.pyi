@@ -1,0 +1,51 @@
+"""Type stubs of the native module ``rolldyn._rolldyn`` (the Rust engine
+behind the Python API in ``rolldyn/__init__.py``). Every function takes a
+case as ``(source, text, sets)``: its source name, its TOML text (None:
+the built-in default case or the file named by ``source``) and its
+``--set key=value`` overrides. Reports come back as the CLI's JSON text
+(keys and units in docs/cli.md)."""
+
+from typing import Any, Callable, Optional
+
+__version__: str
+
+class CaseError(ValueError):
+    """Bad input: names the file, line, key, value and rule."""
+
+class ModelError(RuntimeError):
+    """The model has no solution at this point (e.g. no equilibrium)."""
+
+def preset_names() -> list[tuple[str, str]]: ...
+def preset_text(name: str) -> str: ...
+def check(source: str, text: Optional[str], sets: list[str]) -> str: ...
+def frequencies(source: str, text: Optional[str], sets: list[str], angle: Optional[str]) -> str: ...
+def command(name: str, source: str, text: Optional[str], sets: list[str], argv: list[str]) -> str: ...
+def quasistatic_solve(source: str, text: Optional[str], sets: list[str], control: Optional[str]) -> str: ...
+def quasistatic_sweep(
+    source: str, text: Optional[str], sets: list[str], sweeps: list[str], control: Optional[str]
+) -> str: ...
+def run(
+    source: str,
+    text: Optional[str],
+    sets: list[str],
+    directory: str,
+    force: bool,
+    progress: Optional[Callable[[float], Any]],
+    verify: bool,
+) -> tuple[str, bool]: ...
+def open_run(directory: str) -> str: ...
+def run_points(
+    source: str,
+    text: Optional[str],
+    sets: list[str],
+    points: list[list[str]],
+    directory: str,
+    force: bool,
+    progress: Optional[Callable[[float], Any]],
+) -> tuple[str, bool]: ...
+def run_point(
+    name: str, source: str, text: Optional[str], sets: list[str], directory: str, force: bool
+) -> str: ...
+def point_name(k: int, count: int) -> str: ...
+def write_sweep_tables(directory: str, rows: str) -> None: ...
+def report(directory: str) -> str: ...
