@@ -103,11 +103,22 @@ pub fn quasistatic_failure(e: rolldyn::quasistatic::QuasiStaticError) -> Failure
     }
 }
 
-/// A case-to-simulation failure: a failed quasi-static solve as
-/// [`quasistatic_failure`] says, everything else bad input.
+/// A case-to-simulation failure: a failed quasi-static solve (of the
+/// bearing, or of a set's bearing or shaft) as [`quasistatic_failure`]
+/// says, everything else bad input.
 pub fn simulation_failure(e: rolldyn_case::simulation::SimulationError) -> Failure {
+    use rolldyn::quasistatic::QuasiStaticError as Q;
+    use rolldyn::quasistatic::system::SystemError as S;
+    use rolldyn_case::simulation::SimulationError as E;
     match e {
-        rolldyn_case::simulation::SimulationError::QuasiStatic(q) => quasistatic_failure(q),
+        E::QuasiStatic(q) => quasistatic_failure(q),
+        E::Set(
+            S::NoConvergence { .. }
+            | S::Bearing {
+                source: Q::NoConvergence { .. } | Q::AxialLoadTooSmall { .. },
+                ..
+            },
+        ) => Failure::Model(e.to_string()),
         other => Failure::BadInput(other.to_string()),
     }
 }
