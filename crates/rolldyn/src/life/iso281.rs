@@ -14,9 +14,11 @@
 //! ISO 76's C_0r = f_0 i Z D_w² cos α, so f_0 itself is not needed), linear
 //! between its rows and held at the end rows outside them; 20°, 25°, 30°,
 //! 35° and 40° bearings by their fixed rows; X = 1, Y = 0 under a purely
-//! radial load for any bearing. Other nominal angles (5°, 10°, between the
-//! table's angles) under axial load are not covered: the equivalent load is
-//! then None.
+//! radial load for any bearing. Between the tabulated angles of 15° … 40°
+//! e, X and Y are linear in α between the neighbouring rows (ISO 281's note
+//! on intermediate values; e.g. the 7008C's 17.7°). Other nominal angles
+//! (5°, 10°, above 40°) under axial load are not covered: the equivalent
+//! load is then None.
 //!
 //! Check: C_r of the CWRU 6205 and 6203 geometries and of the 6206 and 6304
 //! presets against manufacturers' catalogue values computed by the same
@@ -195,30 +197,54 @@ impl BallSet {
     /// Dynamic equivalent radial load P_r \[N\] for radial load F_r and
     /// axial load F_a \[N\]: F_r when F_a = 0; by Table 3 for deep-groove
     /// bearings and angular-contact bearings of 15°, 20°, 25°, 30°, 35° and
-    /// 40° (nominal angle within 0.5°); otherwise None (not covered).
+    /// 40° (nominal angle within 0.5°), linear in α between those rows;
+    /// otherwise (0.5° … 14.5°, above 40.5°) None (not covered).
     pub fn equivalent_load(&self, radial: f64, axial: f64) -> Option<f64> {
         let (fr, fa) = (radial.abs(), axial.abs());
         if fa == 0.0 {
             return Some(fr);
         }
         let deg = self.contact_angle.to_degrees();
-        let near = |a: f64| (a - deg).abs() <= 0.5;
-        let (e, x, y) = if let Some(rows) = LOAD_DEPENDENT.iter().find(|r| near(r.angle_deg)) {
-            let relative = self.relative_axial_load(fa);
-            (
-                by_relative_axial_load(&rows.e, relative),
-                rows.x,
-                by_relative_axial_load(&rows.y, relative),
-            )
-        } else {
-            let &(_, e, x, y) = ANGULAR.iter().find(|row| near(row.0))?;
-            (e, x, y)
+        let (e, x, y) = match self.row(deg, fa) {
+            Some(row) => row,
+            // Between the tabulated angles of 15° … 40°: linear in α
+            // between the neighbouring rows (ISO 281's note on
+            // intermediate values).
+            None => {
+                let angles = [15.0, 20.0, 25.0, 30.0, 35.0, 40.0];
+                let k = angles.windows(2).position(|w| w[0] < deg && deg < w[1])?;
+                let (a0, a1) = (angles[k], angles[k + 1]);
+                let (r0, r1) = (self.row(a0, fa)?, self.row(a1, fa)?);
+                let w = (deg - a0) / (a1 - a0);
+                let mix = |p: f64, q: f64| p + w * (q - p);
+                (mix(r0.0, r1.0), mix(r0.1, r1.1), mix(r0.2, r1.2))
+            }
         };
         Some(if fr > 0.0 && fa / fr <= e {
             fr
         } else {
             x * fr + y * fa
         })
+    }
+}
+
+impl BallSet {
+    /// (e, X, Y) of the Table 3 row within 0.5° of `deg` \[°\] at axial
+    /// load `fa` \[N\], if there is one.
+    fn row(&self, deg: f64, fa: f64) -> Option<(f64, f64, f64)> {
+        let near = |a: f64| (a - deg).abs() <= 0.5;
+        if let Some(rows) = LOAD_DEPENDENT.iter().find(|r| near(r.angle_deg)) {
+            let relative = self.relative_axial_load(fa);
+            return Some((
+                by_relative_axial_load(&rows.e, relative),
+                rows.x,
+                by_relative_axial_load(&rows.y, relative),
+            ));
+        }
+        ANGULAR
+            .iter()
+            .find(|row| near(row.0))
+            .map(|&(_, e, x, y)| (e, x, y))
     }
 }
 
@@ -273,7 +299,25 @@ mod tests {
                 < 1e-9
         );
         assert!(set(10.0).equivalent_load(780.0, 3000.0).is_none());
-        assert!(set(0.0).equivalent_load(0.0, 0.0) == Some(0.0));
+        assert!(set(45.0).equivalent_load(780.0, 3000.0).is_none());
+        // Between rows: linear in α. 27.5° is the mean of the fixed 25° and
+        // 30° rows (both above e here, so P is linear in X and Y too); at
+        // 17.5° the load-dependent 15° row is read at this set's own
+        // relative axial load, so P lies between its neighbours'.
+        let p = set(27.5).equivalent_load(780.0, 3000.0).unwrap();
+        let (p0, p1) = (
+            set(25.0).equivalent_load(780.0, 3000.0).unwrap(),
+            set(30.0).equivalent_load(780.0, 3000.0).unwrap(),
+        );
+        assert!((p - 0.5 * (p0 + p1)).abs() < 1e-9 * p, "{p} vs {p0}, {p1}");
+        for (fr, fa) in [(780.0, 3000.0), (0.0, 500.0)] {
+            let p = set(17.5).equivalent_load(fr, fa).unwrap();
+            let (p0, p1) = (
+                set(15.0).equivalent_load(fr, fa).unwrap(),
+                set(20.0).equivalent_load(fr, fa).unwrap(),
+            );
+            assert!(p < p0.max(p1) && p > p0.min(p1), "17.5°: {p} vs {p0}, {p1}");
+        }
     }
 
     /// Deep-groove 6205 ball set (Z = 9, D_w = 7.94 mm), F_a = 1000 N:
