@@ -4,7 +4,8 @@
 //! life, and the system life; sweeps over speed and the shaft loads. Keys
 //! in docs/cli.md.
 
-use crate::quasistatic::{QuasiStaticReport, Swept};
+use crate::quasistatic::QuasiStaticReport;
+use crate::quasistatic_sweep::{Swept, grid};
 use crate::{Failure, simulation_failure};
 use rayon::prelude::*;
 use rolldyn::operating::Loads;
@@ -326,23 +327,11 @@ pub struct SetSweepRow {
 /// The set at every point of the grid (speed, F_x, F_z), in parallel; the
 /// preload offset stays that of the case (set at rest).
 pub fn run_sweep(set: &BearingSet, sweeps: &[(Swept, Vec<f64>)]) -> Vec<SetSweepRow> {
-    let mut points = vec![set.conditions];
-    for (swept, values) in sweeps {
-        points = points
-            .iter()
-            .flat_map(|p| {
-                values.iter().map(move |&v| {
-                    let mut c = *p;
-                    match swept {
-                        Swept::Speed => c.inner_speed = v,
-                        Swept::Axial => c.loads.force[0] = v,
-                        Swept::Radial => c.loads.force[2] = v,
-                    }
-                    c
-                })
-            })
-            .collect();
-    }
+    let points = grid(set.conditions, sweeps, |c, swept, v| match swept {
+        Swept::Speed => c.inner_speed = v,
+        Swept::Axial => c.loads.force[0] = v,
+        Swept::Radial => c.loads.force[2] = v,
+    });
     points
         .par_iter()
         .map(|c| {

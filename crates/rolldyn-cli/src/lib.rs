@@ -14,6 +14,7 @@ pub mod power;
 pub mod power_channels;
 pub mod quasistatic;
 pub mod quasistatic_films;
+pub mod quasistatic_sweep;
 pub mod recorder;
 pub mod report;
 pub mod run;

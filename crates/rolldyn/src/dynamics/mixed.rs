@@ -8,7 +8,8 @@
 //! starved by the ring's supply (docs/model.md §4), also with the film in the
 //! approach (whose fixed point carries the central film only).
 
-use super::model::{BearingModel, DynamicsParameters, RingMotion};
+use super::model::{BearingModel, RingMotion};
+use super::parameters::DynamicsParameters;
 use crate::contact::hertz::{HertzCoefficients, HertzResult};
 use crate::error::InvalidParameter;
 use crate::geometry::RingKind;

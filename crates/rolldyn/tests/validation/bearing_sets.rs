@@ -17,13 +17,13 @@
 //! under combined load; back-to-back is stiffer against moments than
 //! face-to-face.
 
-use super::common::{bearing_7008c, rel};
-use rolldyn::contact::{HertzModel, RacewayContactModel};
-use rolldyn::material::{Material, effective_modulus};
+use super::common::{bearing_7008c, rel, thrust_curve};
+use rolldyn::BearingGeometry;
+use rolldyn::contact::HertzModel;
+use rolldyn::material::Material;
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::system::{SetKind, ShaftSystem, SystemConditions};
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
-use rolldyn::{BearingGeometry, RingKind};
 
 const SPACING: f64 = 15e-3;
 
@@ -35,28 +35,6 @@ fn solver(g: &BearingGeometry) -> QuasiStaticSolver {
         HertzModel::Exact,
     )
     .unwrap()
-}
-
-/// The textbook thrust curve: (δ_a, F_a) at contact angle α.
-fn thrust_curve(g: &BearingGeometry, alpha: f64) -> (f64, f64) {
-    let ep = effective_modulus(&Material::STEEL_52100, &Material::STEEL_52100);
-    let k = |ring| {
-        RacewayContactModel::new(g, ring, ep, HertzModel::Exact)
-            .coefficients(alpha)
-            .unwrap()
-            .stiffness
-    };
-    let kn = ((1.0 / k(RingKind::Inner)).powf(2.0 / 3.0)
-        + (1.0 / k(RingKind::Outer)).powf(2.0 / 3.0))
-    .powf(-1.5);
-    let bd = g.total_curvature() * g.ball_diameter;
-    let a0 = g.offset_contact_angle;
-    let force = g.ball_count as f64
-        * kn
-        * bd.powf(1.5)
-        * alpha.sin()
-        * (a0.cos() / alpha.cos() - 1.0).powf(1.5);
-    (bd * a0.cos() * (alpha.tan() - a0.tan()), force)
 }
 
 /// The contact angle at which the textbook curve gives `target` (of δ_a

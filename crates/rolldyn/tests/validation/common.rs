@@ -262,3 +262,29 @@ pub fn integrator(
         )),
     }
 }
+
+/// The textbook thrust curve of an angular-contact bearing at rest,
+/// (δ_a, F_a) at contact angle α, steel on steel, exact Hertz:
+/// F_a = Z K_n (BD)^1.5 sin α (cos α₀/cos α − 1)^1.5 with K_n the series
+/// stiffness of the two contacts at α, δ_a = BD cos α₀ (tan α − tan α₀)
+/// (Harris & Kotzalas, *Essential Concepts*, eq. 7.30 form).
+pub fn thrust_curve(g: &BearingGeometry, alpha: f64) -> (f64, f64) {
+    let ep = rolldyn::material::effective_modulus(&Material::STEEL_52100, &Material::STEEL_52100);
+    let k = |ring| {
+        rolldyn::contact::RacewayContactModel::new(g, ring, ep, HertzModel::Exact)
+            .coefficients(alpha)
+            .unwrap()
+            .stiffness
+    };
+    let kn = ((1.0 / k(rolldyn::RingKind::Inner)).powf(2.0 / 3.0)
+        + (1.0 / k(rolldyn::RingKind::Outer)).powf(2.0 / 3.0))
+    .powf(-1.5);
+    let bd = g.total_curvature() * g.ball_diameter;
+    let a0 = g.offset_contact_angle;
+    let force = g.ball_count as f64
+        * kn
+        * bd.powf(1.5)
+        * alpha.sin()
+        * (a0.cos() / alpha.cos() - 1.0).powf(1.5);
+    (bd * a0.cos() * (alpha.tan() - a0.tan()), force)
+}

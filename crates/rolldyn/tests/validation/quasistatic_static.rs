@@ -9,14 +9,14 @@
 //! * B5: residual < 1e-8 of the applied load; the stiffness matrix (implicit
 //!   function theorem) equals finite differences of re-solves.
 
-use super::common::{bearing_6304, bearing_7008c, bearing_7218b, rel};
-use rolldyn::contact::{HertzModel, RacewayContactModel};
-use rolldyn::material::{Material, effective_modulus};
+use super::common::{bearing_6304, bearing_7008c, bearing_7218b, rel, thrust_curve};
+use rolldyn::contact::HertzModel;
+use rolldyn::material::Material;
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::{
     Conditions, Equilibrium, QuasiStaticError, QuasiStaticSolver, RacewayControl, SolverOptions,
 };
-use rolldyn::{BearingGeometry, Clearance, GeometrySpec, RingKind};
+use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
 fn solver(g: &BearingGeometry) -> QuasiStaticSolver {
     QuasiStaticSolver::new(
@@ -72,23 +72,7 @@ fn thrust_equation() {
             .solve_static(&loads(fa, 0.0, 0.0, 0.0, 0.0), &SolverOptions::default())
             .unwrap();
         let alpha = sol.balls[0].inner.contact_angle;
-        let ep = effective_modulus(&Material::STEEL_52100, &Material::STEEL_52100);
-        let k = |ring| {
-            RacewayContactModel::new(&g, ring, ep, HertzModel::Exact)
-                .coefficients(alpha)
-                .unwrap()
-                .stiffness
-        };
-        let kn = ((1.0 / k(RingKind::Inner)).powf(2.0 / 3.0)
-            + (1.0 / k(RingKind::Outer)).powf(2.0 / 3.0))
-        .powf(-1.5);
-        let bd = g.total_curvature() * g.ball_diameter;
-        let a0 = g.offset_contact_angle;
-        let textbook = g.ball_count as f64
-            * kn
-            * bd.powf(1.5)
-            * alpha.sin()
-            * (a0.cos() / alpha.cos() - 1.0).powf(1.5);
+        let (_, textbook) = thrust_curve(&g, alpha);
         eprintln!(
             "thrust {fa} N: α = {:.4}°, textbook F_a = {textbook:.6} N, {} iterations",
             alpha.to_degrees(),

@@ -1,0 +1,101 @@
+//! The dynamic model's parameters ([`DynamicsParameters`]): everything it
+//! needs besides the bearing geometry and the materials, with
+//! [`DynamicsParameters::new`] setting all but the inner ring's inertia and
+//! the cage to documented defaults (docs/dynamics.md).
+
+use super::drag::DragParameters;
+use super::supports::{OuterRing, Support};
+use crate::cage::CageParameters;
+use crate::contact::NormalForceLaw;
+use crate::operating::{LoadProfile, SpeedProfile};
+use crate::surface::SurfaceModel;
+use crate::traction::TractionModel;
+use crate::traction::ellipse::TractionIntegration;
+
+/// Everything the dynamic model needs besides geometry and materials.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DynamicsParameters {
+    /// Inner-ring (with shaft) mass m_i \[kg\].
+    pub inner_ring_mass: f64,
+    /// Inner-ring transverse moment of inertia I_t \[kg·m²\].
+    pub inner_ring_tilt_inertia: f64,
+    /// Cage.
+    pub cage: CageParameters,
+    /// Normal force law of the ball–raceway contacts.
+    pub normal_law: NormalForceLaw,
+    /// Impact-speed floor v_floor \[m/s\].
+    pub impact_speed_floor: f64,
+    /// Traction model of the ball–raceway contacts.
+    pub traction: TractionModel,
+    /// How traction is integrated over each contact ellipse.
+    pub traction_integration: TractionIntegration,
+    /// Inner-ring speed profile.
+    pub speed: SpeedProfile,
+    /// Loads on the inner ring (constant or tabulated in time).
+    pub loads: LoadProfile,
+    /// Spring–damper between the inner ring and ground (zero: free).
+    pub inner_support: Support,
+    /// Outer ring on a housing spring–damper (None: fixed).
+    pub outer_ring: Option<OuterRing>,
+    /// Elastic-hysteresis coefficient α_h of the rolling resistance
+    /// (0: off; ≈ 0.007 for steel, Lei et al. 2023 eq 21).
+    pub rolling_hysteresis: f64,
+    /// Gravitational acceleration along −z \[m/s²\] (0: off).
+    pub gravity: f64,
+    /// Planar mode (Shan et al. 2023): axial coordinates, tilts and the ball spin
+    /// components other than ω_x frozen.
+    pub planar: bool,
+    /// Drag of the air–oil mixture.
+    pub drag: DragParameters,
+    /// Raceway and ball surfaces: waviness and spalls (default: smooth).
+    pub surface: SurfaceModel,
+    /// Oil supply of the inner and outer raceway contacts (starvation of
+    /// the EHL film, docs/model.md §4; default: fully flooded).
+    pub film_supply: [crate::lubrication::Supply; 2],
+    /// The lubricant film in the normal approach (docs/model.md §4): δ_el = δ + h(Q)
+    /// with the steady central film h (`dynamics::film`). Needs a film
+    /// model (EHL traction) and a flooded or inlet-distance supply.
+    pub film_in_approach: bool,
+    /// Mixed lubrication (docs/model.md §3, model 5): boundary friction on the
+    /// asperities' share of each contact's load, from the film parameter
+    /// Λ = h_min/σ (`lubrication::mixed`). Needs a film model (EHL
+    /// traction) and the raceways' and balls' roughness (`surface`).
+    pub mixed_lubrication: Option<crate::lubrication::mixed::MixedLubrication>,
+}
+
+impl DynamicsParameters {
+    /// The parameters of a bearing whose inner ring (with what turns with
+    /// it) has mass `inner_ring_mass` \[kg\] and transverse moment of
+    /// inertia `inner_ring_tilt_inertia` \[kg·m²\], with `cage`; the rest at
+    /// its default: Hertz contacts (impact-speed floor 1 mm/s), no traction
+    /// (integrated on the default 12 × 6 grid when one is set), at rest
+    /// without loads, a free inner ring and a fixed outer ring, no
+    /// hysteresis, gravity or drag, 3-D, smooth surfaces, flooded films
+    /// not in the normal approach, no mixed lubrication. Change the rest
+    /// with struct update syntax, so that a new parameter needs only its
+    /// default here:
+    /// `DynamicsParameters { traction, ..DynamicsParameters::new(0.5, 1e-4, cage) }`.
+    pub fn new(inner_ring_mass: f64, inner_ring_tilt_inertia: f64, cage: CageParameters) -> Self {
+        Self {
+            inner_ring_mass,
+            inner_ring_tilt_inertia,
+            cage,
+            normal_law: NormalForceLaw::Hertz,
+            impact_speed_floor: crate::contact::normal_law::DEFAULT_IMPACT_SPEED_FLOOR,
+            traction: TractionModel::None,
+            traction_integration: TractionIntegration::default(),
+            speed: SpeedProfile::Constant(0.0),
+            loads: LoadProfile::Constant(crate::operating::Loads::default()),
+            inner_support: Support::default(),
+            outer_ring: None,
+            rolling_hysteresis: 0.0,
+            gravity: 0.0,
+            planar: false,
+            drag: DragParameters::default(),
+            surface: SurfaceModel::default(),
+            film_supply: Default::default(),
+            film_in_approach: false,
+            mixed_lubrication: None,
+        }
+    }
+}
