@@ -669,7 +669,8 @@ pub struct RawSolver {
     pub energy_tolerance: Option<f64>,
     /// Largest step the integrator may take.
     pub max_step: Option<Quantity<Time>>,
-    /// "auto" (default: ros34pw2, docs/dynamics.md), "ros34pw2" (stiff),
+    /// "auto" (default: ros34pw2 and dopri5 switched by measured cost,
+    /// docs/dynamics.md), "ros34pw2" (stiff),
     /// "dopri5" (explicit) or "rk4" (fixed step).
     pub integrator: Option<IntegratorChoice>,
     /// Step of the fixed-step integrator (rk4).
@@ -683,8 +684,8 @@ pub struct RawSolver {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum IntegratorChoice {
-    /// ros34pw2 at every tolerance: dopri5 is stability-bound by the
-    /// traction slopes, 34× slower at low speed (docs/performance.md).
+    /// ros34pw2, handing over to dopri5 where that is cheaper by measured
+    /// cost (after spall impacts; `rolldyn::integrate::switching`).
     Auto,
     /// Linearly implicit Rosenbrock–W 3(2) (Rang & Angermann) for stiff
     /// systems: block-structured Jacobian, reused across steps.

@@ -31,6 +31,9 @@ pub fn group_of(name: &str) -> Option<(ChannelGroup, Option<usize>)> {
         };
         return Some((group, Some(j)));
     }
+    if name.starts_with("peak_load_") {
+        return Some((ChannelGroup::Contacts, None));
+    }
     let group = if name.starts_with("cage_")
         || name.starts_with("pocket_force_")
         || name == "pure_rolling_cage_speed_ratio"
@@ -82,6 +85,7 @@ mod tests {
             ("oil_viscosity_pa_s", ChannelGroup::Thermal, None),
             ("ball3_yaw_deg", ChannelGroup::Balls, Some(3)),
             ("ball12_load_inner_n", ChannelGroup::Contacts, Some(12)),
+            ("peak_load_outer_n", ChannelGroup::Contacts, None),
             (
                 "ball0_creepage_spin_outer_1_m",
                 ChannelGroup::Contacts,

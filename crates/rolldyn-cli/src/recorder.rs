@@ -144,6 +144,8 @@ impl Channels {
             ("cage_velocity_z_m_s", "m/s"),
             ("pocket_force_sum_n", "N"),
             ("pocket_force_max_n", "N"),
+            ("peak_load_inner_n", "N"),
+            ("peak_load_outer_n", "N"),
             ("drive_work_j", "J"),
             ("dissipated_energy_j", "J"),
             ("mechanical_energy_j", "J"),
@@ -231,6 +233,7 @@ impl Channels {
                 )
             });
         let (pocket_sum, pocket_max) = model.pocket_forces(y);
+        let [peak_inner, peak_outer] = model.take_peak_loads();
         row.clear();
         row.extend_from_slice(&[
             t,
@@ -262,6 +265,8 @@ impl Channels {
             y[c + 4],
             pocket_sum,
             pocket_max,
+            peak_inner,
+            peak_outer,
             drive,
             dissipated,
             model.energy(t, y).total(),

@@ -726,9 +726,9 @@ fn summarise(
             0.0
         },
         mean_load_inner_n: window.pooled_mean("load_inner_n"),
-        max_load_inner_n: window.pooled_max("load_inner_n"),
+        max_load_inner_n: window.largest_load("inner"),
         mean_load_outer_n: window.pooled_mean("load_outer_n"),
-        max_load_outer_n: window.pooled_max("load_outer_n"),
+        max_load_outer_n: window.largest_load("outer"),
         mean_slide_to_roll_inner: loaded_mean("slide_to_roll_inner"),
         mean_slide_to_roll_outer: loaded_mean("slide_to_roll_outer"),
         mean_spin_to_roll_inner: loaded_mean("spin_to_roll_inner"),

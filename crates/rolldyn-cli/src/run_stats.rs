@@ -425,6 +425,17 @@ impl Window<'_> {
             .fold(0.0, f64::max)
     }
 
+    /// Largest contact load on raceway `ring` ("inner" or "outer") over
+    /// the window \[N\]: of the loads at every accepted step
+    /// (`peak_load_{ring}_n`) and the sampled ones, per ball.
+    pub fn largest_load(&self, ring: &str) -> f64 {
+        let stepped = match self.stats.index(&format!("peak_load_{ring}_n")) {
+            Some(i) if self.merged.count > 0 => self.merged.max[i],
+            _ => 0.0,
+        };
+        stepped.max(self.pooled_max(&format!("load_{ring}_n")))
+    }
+
     /// Largest |`ball{j}_{suffix}`| over all balls and the window.
     pub fn pooled_max_abs(&self, suffix: &str) -> f64 {
         self.per_ball(suffix)

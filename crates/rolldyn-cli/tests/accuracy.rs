@@ -9,11 +9,9 @@
 //!   and the ring vibration RMS by less than 5 %.
 //!
 //! The cases failed the balance before the energy-balance step control
-//! (docs/performance.md has the before/after table). What is still not
-//! converged at the defaults (a deep sharp spall with undamped Hertz
-//! contacts; the vibration RMS of a spall's impacts) is held to its
-//! warning: the run must say so, and the test fails when it converges, so
-//! that it moves to the converged regimes.
+//! and the `auto` switch between the stiff and the explicit method
+//! (docs/performance.md has the before/after table). A run whose settings
+//! are loosened on purpose must say that it is not converged.
 
 #![allow(clippy::unwrap_used)]
 
@@ -158,60 +156,79 @@ fn a_bridged_spall_with_damped_contacts_closes_its_balance() {
     .unwrap();
     let (s, err) = run("cwru", &["--duration", "0.1 s", "--verify"], Some(&case));
     assert_converged("cwru", &s, &IMPACT_MEANS);
+    // Its vibration RMS and largest loads over 50 ms of impacts are not
+    // statistics of the motion yet: DOPRI5 references at rtol 1e-5 and
+    // 1e-6 differ by 29 % in the vertical RMS (docs/dynamics.md). Whatever
+    // --verify finds beyond its limits, the run must say so.
     let verify = &s["accuracy"]["verify"];
-    let vertical = verify["changes"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|c| c["key"] == "inner_ring_velocity_rms_z_mm_s")
-        .unwrap();
-    let moved = vertical["relative_change"].as_f64().unwrap();
-    assert!(
-        moved > 0.05,
-        "now converged ({moved:e}): hold it to its limit"
-    );
-    assert_eq!(verify["status"], "warning");
-    assert!(err.contains("warning: --verify:"), "{err}");
+    let beyond = verify["changes"].as_array().unwrap().iter().any(|c| {
+        c["relative_change"]
+            .as_f64()
+            .is_some_and(|r| r > c["limit"].as_f64().unwrap())
+    });
+    if beyond {
+        assert_eq!(verify["status"], "warning");
+        assert!(err.contains("warning: --verify:"), "{err}");
+    } else {
+        assert_eq!(verify["status"], "ok");
+    }
 }
 
-/// The known gap: a 0.533 mm × 0.28 mm outer-race spall under 1 kN on the
-/// 6205 preset (undamped Hertz contacts, dry Coulomb friction). The ball
-/// drops into the pit and strikes its far edge; the contact vibrations it
-/// excites are undamped in the model, and the drive exchanges ~170 times
-/// more energy back and forth than it supplies net. The defaults do not
-/// close this balance (docs/dynamics.md); the run must say so.
-#[test]
-fn an_unconverged_deep_spall_says_so() {
+/// A 0.533 mm × 0.28 mm outer-race spall under 1 kN on the 6205 preset
+/// (undamped Hertz contacts, dry Coulomb friction): the ball drops into the
+/// pit and strikes its far edge, and the contact vibrations it excites ring
+/// on undamped while the drive exchanges ~170 times more energy back and
+/// forth than it supplies net. With ros34pw2 alone the balance was +5e-2
+/// at the defaults; `auto` hands the ringing to dopri5 and the energy
+/// control counts the drive's net work (docs/dynamics.md).
+fn deep_spall_case() -> String {
     let mut case = String::from_utf8(rolldyn(&["new", "--preset", "6205"], None).stdout).unwrap();
     case.push_str(
         "\n[surface.outer]\n[[surface.outer.spall]]\nposition = \"270 deg\"\nlength = \"0.533 mm\"\ndepth = \"0.28 mm\"\n",
     );
-    let (s, err) = run(
-        "deep-spall",
-        &[
-            "--radial-load",
-            "-1 kN",
-            "--speed",
-            "1772 rpm",
-            "--duration",
-            "20 ms",
-            "--report",
-        ],
-        Some(&case),
-    );
+    case
+}
+
+const DEEP_SPALL: [&str; 6] = [
+    "--radial-load",
+    "-1 kN",
+    "--speed",
+    "1772 rpm",
+    "--duration",
+    "20 ms",
+];
+
+#[test]
+fn a_deep_spall_with_undamped_contacts_closes_its_balance() {
+    let mut args = DEEP_SPALL.to_vec();
+    args.push("--verify");
+    let (s, _) = run("deep-spall", &args, Some(&deep_spall_case()));
+    assert_converged("deep spall", &s, &IMPACT_MEANS);
+}
+
+/// A run that is not converged says so: the deep spall with the stiff
+/// method alone and the energy control off.
+#[test]
+fn an_unconverged_run_says_so() {
+    let mut args = DEEP_SPALL.to_vec();
+    args.extend_from_slice(&[
+        "--set",
+        "solver.integrator=ros34pw2",
+        "--set",
+        "solver.energy_tolerance=0",
+        "--report",
+    ]);
+    let (s, err) = run("loose-spall", &args, Some(&deep_spall_case()));
     let balance = s["accuracy"]["energy_balance_relative_error"]
         .as_f64()
         .unwrap();
-    assert!(
-        balance.abs() > 1e-3,
-        "now converged ({balance:e}): move it to the converged regimes"
-    );
+    assert!(balance.abs() > 1e-3, "balance {balance:e}");
     assert_eq!(s["accuracy"]["status"], "warning");
     assert!(
         s["accuracy"]["hint"]
             .as_str()
             .unwrap()
-            .contains("solver.relative_tolerance=")
+            .contains("solver.energy_tolerance = 0")
     );
     assert!(
         err.contains("warning: the energy balance closes to"),

@@ -415,9 +415,10 @@ fn run_writes_parquet_and_summary() {
     ] {
         assert!(summary.get(k).is_some(), "summary lacks {k}");
     }
-    // The default case picks the stiff solver, which reports its work and
-    // settings (the preset's tolerance, the default largest step).
-    assert_eq!(summary["integrator"], "ros34pw2");
+    // The default case runs `auto`, which stays with the stiff method on
+    // a smooth run and reports its work and settings (the preset's
+    // tolerance, the stiff method's default largest step).
+    assert_eq!(summary["integrator"], "auto");
     assert_eq!(summary["relative_tolerance"], 1e-2);
     assert_eq!(summary["max_step_s"], 1e-4);
     assert!(summary["jacobian_evaluations"].as_u64().unwrap() >= 1);

@@ -1,6 +1,7 @@
-//! The integrator of a case's run: `solver.integrator` resolved (`auto` is
-//! ros34pw2), its relative tolerance and largest step with their
-//! defaults, and its construction. The stiff integrator's default step
+//! The integrator of a case's run: `solver.integrator` resolved (`auto`
+//! switches between ros34pw2 and dopri5 by their measured cost,
+//! `rolldyn::integrate::switching`), its relative tolerance and largest
+//! step with their defaults, and its construction. The stiff integrator's default step
 //! resolves the cage's undamped film modes (docs/dynamics.md).
 
 use crate::Case;
@@ -10,7 +11,7 @@ use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{
     DEFAULT_ENERGY_TOLERANCE, ExplicitRk, IntegrationError, ROS34PW2, Rosenbrock, Solver,
-    StepControl,
+    StepControl, Switching,
 };
 
 /// Default largest step of the explicit adaptive integrator \[s\].
@@ -25,6 +26,17 @@ pub const DEFAULT_RK4_STEP: f64 = 1e-7;
 /// such a mode by 0.9 % a period, 0.15 % of critical damping (8 steps:
 /// 6 %, 1 %; `integrate::rosenbrock` test).
 pub const STEPS_PER_FILM_PERIOD: f64 = 16.0;
+/// The explicit method's relative tolerance within `auto`, as a share of
+/// the case's. Where `auto` hands over to dopri5 its step is bounded by
+/// stability (the traction slopes), not accuracy, so a tighter tolerance
+/// costs few steps (the deep spall of docs/dynamics.md: the same steps at
+/// rtol 1e-3 and 1e-5); at the case's tolerance the error control lets the
+/// stiff slip modes hover at the tolerance at the stability limit, and dry
+/// friction dissipates that noise: the CWRU example's mean dissipated
+/// power came out 9 % low with 1/100, 4 % with 1/1000, of a dopri5 run at
+/// rtol 1e-6.
+pub const AUTO_EXPLICIT_TOLERANCE_SHARE: f64 = 1e-3;
+
 /// Default relative tolerance of the adaptive integrators.
 pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-3;
 
@@ -65,16 +77,19 @@ impl SolverSettings {
         let rtol = case
             .relative_tolerance
             .unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
-        // `auto` is ros34pw2 at every tolerance. Below rtol 3e-4 dopri5
-        // was up to 1.4× cheaper on the default case at 10 000 rpm, but
-        // 34× dearer at 500 rpm, where the EHL traction slopes bound its
-        // step (docs/performance.md, "Accuracy at default settings").
-        let choice = match case.integrator {
-            IntegratorChoice::Auto => IntegratorChoice::Ros34pw2,
-            other => other,
-        };
+        // `auto` runs ros34pw2 and dopri5 each where it is cheaper: dopri5
+        // was 34× dearer at 500 rpm, where the EHL traction slopes bound
+        // its step, and 4× cheaper after spall impacts, where ros34pw2 must
+        // resolve undamped ringing (docs/performance.md, "Accuracy at
+        // default settings"). Its largest step is the stiff method's.
+        let choice = case.integrator;
         let (integrator, relative_tolerance, max_step) = match choice {
             IntegratorChoice::Rk4 => ("rk4", None, case.time_step.unwrap_or(DEFAULT_RK4_STEP)),
+            IntegratorChoice::Auto => (
+                "auto",
+                Some(rtol),
+                case.max_step.unwrap_or_else(|| stiff_max_step(cage, balls)),
+            ),
             IntegratorChoice::Ros34pw2 => (
                 "ros34pw2",
                 Some(rtol),
@@ -124,29 +139,55 @@ impl SolverSettings {
                 y0,
             )?)),
             IntegratorChoice::Ros34pw2 => {
-                let r = Rosenbrock::new(&ROS34PW2, rtol, self.max_step, None, model, 0.0, y0)?;
-                Solver::Rosenbrock(Box::new(match self.energy_tolerance {
-                    Some(eps) => r.with_energy_control(model, eps),
-                    None => r,
-                }))
+                Solver::Rosenbrock(Box::new(self.stiff(model, y0, rtol, self.max_step)?))
             }
-            _ => {
-                let r = ExplicitRk::new(
-                    &DOPRI5,
-                    StepControl::Adaptive {
-                        relative_tolerance: rtol,
-                        max_step: self.max_step,
-                        initial_step: None,
-                    },
+            IntegratorChoice::Auto => Solver::Switching(Box::new(Switching::new(
+                self.stiff(model, y0, rtol, self.max_step)?,
+                self.explicit(
                     model,
-                    0.0,
                     y0,
-                )?;
-                Solver::Explicit(Box::new(match self.energy_tolerance {
-                    Some(eps) => r.with_energy_control(model, eps),
-                    None => r,
-                }))
+                    rtol * AUTO_EXPLICIT_TOLERANCE_SHARE,
+                    self.max_step.min(DEFAULT_MAX_STEP),
+                )?,
+            ))),
+            IntegratorChoice::Dopri5 => {
+                Solver::Explicit(Box::new(self.explicit(model, y0, rtol, self.max_step)?))
             }
+        })
+    }
+
+    /// ROS34PW2 with the energy control, if on.
+    fn stiff(
+        &self,
+        model: &BearingModel,
+        y0: &[f64],
+        rtol: f64,
+        max_step: f64,
+    ) -> Result<Rosenbrock, IntegrationError> {
+        let r = Rosenbrock::new(&ROS34PW2, rtol, max_step, None, model, 0.0, y0)?;
+        Ok(match self.energy_tolerance {
+            Some(eps) => r.with_energy_control(model, eps),
+            None => r,
+        })
+    }
+
+    /// DOPRI5 with the energy control, if on.
+    fn explicit(
+        &self,
+        model: &BearingModel,
+        y0: &[f64],
+        rtol: f64,
+        max_step: f64,
+    ) -> Result<ExplicitRk, IntegrationError> {
+        let control = StepControl::Adaptive {
+            relative_tolerance: rtol,
+            max_step,
+            initial_step: None,
+        };
+        let r = ExplicitRk::new(&DOPRI5, control, model, 0.0, y0)?;
+        Ok(match self.energy_tolerance {
+            Some(eps) => r.with_energy_control(model, eps),
+            None => r,
         })
     }
 }

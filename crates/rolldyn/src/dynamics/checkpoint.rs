@@ -16,6 +16,7 @@ impl Checkpoint for BearingModel {
         for episode in self.episodes.iter().flatten() {
             out.opt_f64(episode.recorded());
         }
+        out.f64s(&self.peak_loads.peek());
         out.u64(u64::from(self.thermal.is_some()));
         if let Some(thermal) = &self.thermal {
             thermal.save(out);
@@ -34,6 +35,9 @@ impl Checkpoint for BearingModel {
         for episode in self.episodes.iter_mut().flatten() {
             *episode = ContactEpisode::with_record(input.opt_f64()?);
         }
+        let mut peaks = [0.0; 2];
+        input.f64s_into("peak loads", &mut peaks)?;
+        self.peak_loads.set(peaks);
         let coupled = input.u64()? == 1;
         if coupled != self.thermal.is_some() {
             return Err(CheckpointError::Mismatch(

@@ -39,6 +39,7 @@ mod mixed;
 pub mod model;
 pub mod outputs;
 pub mod parameters;
+pub mod peaks;
 pub mod pocket;
 pub mod race_contact;
 pub mod supports;

@@ -96,6 +96,9 @@ pub struct BearingModel {
     pub(super) layout: StateLayout,
     /// Episode memory: inner and outer contact of each ball.
     pub(super) episodes: Vec<[ContactEpisode; 2]>,
+    /// Largest contact loads at the accepted steps since the sampler took
+    /// them ([`super::peaks`]).
+    pub(super) peak_loads: super::peaks::PeakLoads,
     /// Thermal network advanced alongside a run, if coupled.
     pub(super) thermal: Option<Box<super::thermal_coupling::ThermalCoupling>>,
     /// The balls' contact evaluations, serial or across threads.
@@ -178,6 +181,7 @@ impl BearingModel {
                 film_work: params.film_in_approach,
             },
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
+            peak_loads: Default::default(),
             thermal: None,
             traction_grid: TractionGrid::new(params.traction_integration),
             ball_pass: BallPass::new(
@@ -772,7 +776,10 @@ impl OdeSystem for BearingModel {
                 let contact = self.race_contact(ring, table, &before, &ball, Want::Penetration);
                 let mut episode = before;
                 match contact {
-                    Some(cn) => episode.accept(cn.geometry.penetration, cn.penetration_rate, floor),
+                    Some(cn) => {
+                        episode.accept(cn.geometry.penetration, cn.penetration_rate, floor);
+                        self.peak_loads.raise(k, cn.load);
+                    }
                     None => episode.accept(-1.0, 0.0, floor),
                 }
                 if episode != before {

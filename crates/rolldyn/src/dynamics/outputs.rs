@@ -30,6 +30,13 @@ impl BearingModel {
         }
     }
 
+    /// The largest inner and outer contact loads \[N\] over all balls at
+    /// the accepted steps since the last call (0 when none was loaded):
+    /// the impacts' peaks that samples miss ([`super::peaks`]).
+    pub fn take_peak_loads(&self) -> [f64; 2] {
+        self.peak_loads.take()
+    }
+
     /// The ball–pocket normal forces at state `y`: their sum over the
     /// balls and the largest \[N\] (the cage's impact history, docs/model.md §5).
     pub fn pocket_forces(&self, y: &[f64]) -> (f64, f64) {

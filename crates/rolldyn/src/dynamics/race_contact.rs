@@ -86,6 +86,8 @@ pub(super) struct RaceContact {
     /// The surfaces' forces (scaled by the load; zero when smooth).
     pub(super) surface: SurfaceEffect,
     pub(super) penetration_rate: f64,
+    /// Normal load Q \[N\] (the normal law's force).
+    pub(super) load: f64,
     /// Dissipated power: normal damping and traction \[W\].
     pub(super) dissipation: f64,
     /// What the film in the approach passes to the films' power (None
@@ -347,6 +349,7 @@ impl BearingModel {
             geometry,
             surface,
             penetration_rate,
+            load,
             dissipation,
             film_work,
             losses,

@@ -337,6 +337,38 @@ impl ExplicitRk {
         self.h
     }
 
+    /// Continues from (t, y) with a first step h, as after a hand-over from
+    /// another integrator: f evaluated afresh, the controller's memory
+    /// cleared, the energy control continued from `energy`.
+    pub(crate) fn restart(
+        &mut self,
+        system: &impl OdeSystem,
+        t: f64,
+        y: &[f64],
+        h: f64,
+        energy: Option<&EnergyControl>,
+    ) {
+        self.t = t;
+        self.y.copy_from_slice(y);
+        system.rhs(t, y, &mut self.f);
+        self.stats.rhs_evaluations += 1;
+        self.t_prev = t;
+        self.h_prev = 0.0;
+        self.control_state = PiControl::new();
+        self.h = match self.control {
+            StepControl::Adaptive { max_step, .. } => h.min(max_step),
+            StepControl::Fixed { step } => step,
+        };
+        if let (Some(mine), Some(from)) = (&mut self.energy, energy) {
+            mine.continue_from(from);
+        }
+    }
+
+    /// The energy-balance control, if any.
+    pub(crate) fn energy_control(&self) -> Option<&EnergyControl> {
+        self.energy.as_ref()
+    }
+
     /// Computes the stages and the candidate y_new for step h; returns the
     /// scaled error norm (0 for methods without an estimate).
     fn attempt(&mut self, system: &impl OdeSystem, h: f64, rtol: Option<f64>) -> f64 {

@@ -12,6 +12,8 @@
 //!   systems (ROS34PW2), with error control, dense output, and a Jacobian
 //!   that is evaluated rarely ([`jacobian`]: finite differences grouped
 //!   by the system's block structure) and factored by blocks ([`linear`]).
+//! * [`Switching`]: ROS34PW2 and DOPRI5 in one run, each where it is
+//!   cheaper by measured cost (the stiffness switch of LSODA).
 //! * [`Integrator`]: what the driver needs from an integrator; [`Solver`]
 //!   is the choice among them.
 //! * [`IntegrationStats`]: steps, rejected steps, RHS evaluations,
@@ -29,6 +31,7 @@ pub mod explicit;
 pub mod jacobian;
 pub mod linear;
 pub mod rosenbrock;
+pub mod switching;
 pub mod tableau;
 
 pub use checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
@@ -37,6 +40,7 @@ pub use energy_control::{DEFAULT_ENERGY_TOLERANCE, EnergyBalance};
 pub use explicit::{ExplicitRk, IntegrationError, IntegrationStats, StepControl};
 pub use jacobian::BlockSplit;
 pub use rosenbrock::{ROS34PW2, Rosenbrock, RosenbrockTableau};
+pub use switching::Switching;
 
 /// A system of first-order ODEs y' = f(t, y).
 pub trait OdeSystem {
@@ -149,6 +153,8 @@ pub enum Solver {
     Explicit(Box<ExplicitRk>),
     /// Linearly implicit Rosenbrock–W.
     Rosenbrock(Box<Rosenbrock>),
+    /// Both, switched by their measured cost ([`switching`]).
+    Switching(Box<Switching>),
 }
 
 impl Checkpoint for Solver {
@@ -156,12 +162,14 @@ impl Checkpoint for Solver {
         match self {
             Self::Explicit(i) => i.save(out),
             Self::Rosenbrock(i) => i.save(out),
+            Self::Switching(i) => i.save(out),
         }
     }
     fn restore(&mut self, input: &mut StateReader) -> Result<(), CheckpointError> {
         match self {
             Self::Explicit(i) => i.restore(input),
             Self::Rosenbrock(i) => i.restore(input),
+            Self::Switching(i) => i.restore(input),
         }
     }
 }
@@ -171,30 +179,35 @@ impl Integrator for Solver {
         match self {
             Self::Explicit(i) => i.t(),
             Self::Rosenbrock(i) => i.t(),
+            Self::Switching(i) => i.t(),
         }
     }
     fn y(&self) -> &[f64] {
         match self {
             Self::Explicit(i) => i.y(),
             Self::Rosenbrock(i) => i.y(),
+            Self::Switching(i) => i.y(),
         }
     }
     fn step<S: OdeSystem>(&mut self, system: &mut S, t_limit: f64) -> Result<(), IntegrationError> {
         match self {
             Self::Explicit(i) => i.step(system, t_limit),
             Self::Rosenbrock(i) => i.step(system, t_limit),
+            Self::Switching(i) => i.step(system, t_limit),
         }
     }
     fn interpolate(&self, t: f64, out: &mut [f64]) {
         match self {
             Self::Explicit(i) => i.interpolate(t, out),
             Self::Rosenbrock(i) => i.interpolate(t, out),
+            Self::Switching(i) => i.interpolate(t, out),
         }
     }
     fn stats(&self) -> IntegrationStats {
         match self {
             Self::Explicit(i) => i.stats(),
             Self::Rosenbrock(i) => i.stats(),
+            Self::Switching(i) => i.stats(),
         }
     }
 }

@@ -315,6 +315,39 @@ impl Rosenbrock {
         self.h
     }
 
+    /// Continues from (t, y) with a first step h, as after a hand-over from
+    /// another integrator: f evaluated afresh, a new Jacobian before the
+    /// next step, the controller's memory cleared, the energy control
+    /// continued from `energy`.
+    pub(crate) fn restart(
+        &mut self,
+        system: &impl OdeSystem,
+        t: f64,
+        y: &[f64],
+        h: f64,
+        energy: Option<&EnergyControl>,
+    ) {
+        self.t = t;
+        self.y.copy_from_slice(y);
+        system.rhs(t, y, &mut self.f);
+        self.stats.rhs_evaluations += 1;
+        self.t_prev = t;
+        self.h_prev = 0.0;
+        self.control_state = PiControl::new();
+        self.h = h.min(self.max_step);
+        self.jacobian_age = None;
+        self.factored_step = None;
+        self.gathered = false;
+        if let (Some(mine), Some(from)) = (&mut self.energy, energy) {
+            mine.continue_from(from);
+        }
+    }
+
+    /// The energy-balance control, if any.
+    pub(crate) fn energy_control(&self) -> Option<&EnergyControl> {
+        self.energy.as_ref()
+    }
+
     /// The tableau's name.
     pub fn name(&self) -> &'static str {
         self.tableau.name
