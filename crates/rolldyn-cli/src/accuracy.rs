@@ -162,6 +162,23 @@ fn compared(summary: &Summary) -> Vec<(&'static str, f64, f64, f64)> {
     for (key, value) in v.rms_values() {
         out.push((key, value, vibration, noise_mm_s.max(zero)));
     }
+    // Envelope lines of a run with a spall; a line below a tenth of the
+    // strongest is the spectrum's floor, not a signature.
+    if let Some(envelope) = &summary.envelope_lines {
+        let strongest = envelope
+            .lines
+            .iter()
+            .map(|l| l.amplitude_m_s2)
+            .fold(0.0, f64::max);
+        for (line, &(_, key)) in envelope.lines.iter().zip(&crate::vibration::ENVELOPE_LINES) {
+            out.push((
+                key,
+                line.amplitude_m_s2,
+                vibration,
+                (0.1 * strongest).max(zero),
+            ));
+        }
+    }
     // A whirl below the position tolerance (rtol × 1 µm) is noise too.
     let noise_m = 1e-6 * VIBRATION_NOISE_FACTOR * summary.relative_tolerance.unwrap_or(0.0);
     out.push((

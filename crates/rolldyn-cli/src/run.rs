@@ -82,6 +82,9 @@ pub struct Summary {
     /// Vibration velocity RMS and cage-whirl metrics.
     #[serde(flatten)]
     pub vibration: VibrationSummary,
+    /// Envelope-spectrum amplitudes of the characteristic lines (runs
+    /// with a spall; null otherwise).
+    pub envelope_lines: Option<crate::vibration::EnvelopeLines>,
     /// Friction power by component and friction torque.
     #[serde(flatten)]
     pub power: PowerSummary,
@@ -684,6 +687,15 @@ fn summarise(
         ),
         RunEnd::Failed { error } => ("failed", Some(error.to_string())),
     };
+    let signal = window.signal();
+    let characteristic = rolldyn::signal::CharacteristicFrequencies::new(
+        inner_speed / 60.0,
+        cage_speed / 60.0,
+        balls,
+        g.ball_diameter / g.pitch_diameter,
+        (0.5 * (loaded_mean("contact_angle_inner_deg") + loaded_mean("contact_angle_outer_deg")))
+            .to_radians(),
+    );
     let csr = if inner_speed != 0.0 {
         cage_speed / inner_speed
     } else {
@@ -746,7 +758,12 @@ fn summarise(
         mean_attitude_deg: window.pooled_mean("attitude_deg"),
         mean_yaw_deg: window.pooled_mean("yaw_deg"),
         max_abs_yaw_deg: window.pooled_max_abs("yaw_deg"),
-        vibration: crate::vibration::summarise(&window.signal(), 0, case.outer_ring.is_some()),
+        vibration: crate::vibration::summarise(&signal, 0, case.outer_ring.is_some()),
+        envelope_lines: case
+            .surface
+            .spalls()
+            .next()
+            .and_then(|_| crate::vibration::envelope_lines(&signal, 0, &characteristic)),
         power: crate::power_channels::summarise(&window, stats),
         thermal_coupling: model
             .thermal()

@@ -35,12 +35,12 @@ pub const MAX_BLOCKS: usize = 2 * BLOCKS;
 /// Most samples of the vibration and whirl channels kept (0.8 s at the
 /// default case's 20 kHz: eight periods of the RMS band's 10 Hz edge and
 /// sixty cage revolutions; 1.6 s at 10 kHz); longer windows use their last
-/// part, so that memory stays put (1.4 MB, and as much for the summary's
+/// part, so that memory stays put (1.6 MB, and as much for the summary's
 /// copy).
 pub const SIGNAL_SAMPLES: usize = 1 << 14;
 
 /// The channels the vibration and whirl metrics read.
-const SIGNAL_CHANNELS: [&str; 11] = [
+const SIGNAL_CHANNELS: [&str; 12] = [
     "time_s",
     "cage_speed_rpm",
     "cage_y_m",
@@ -52,6 +52,8 @@ const SIGNAL_CHANNELS: [&str; 11] = [
     "inner_ring_velocity_z_m_s",
     "outer_ring_velocity_y_m_s",
     "outer_ring_velocity_z_m_s",
+    // The envelope lines of a run with a spall (`crate::vibration`).
+    "inner_ring_acceleration_z_m_s2",
 ];
 
 /// One block's statistics.
