@@ -182,10 +182,16 @@ fn a_bridged_spall_with_damped_contacts_closes_its_balance() {
 /// at the defaults; `auto` hands the ringing to dopri5 and the energy
 /// control counts the drive's net work (docs/dynamics.md).
 fn deep_spall_case() -> String {
+    spalled_6205(
+        "[surface.outer]\n[[surface.outer.spall]]\nposition = \"270 deg\"\nlength = \"0.533 mm\"\ndepth = \"0.28 mm\"\n",
+    )
+}
+
+/// The 6205 preset with `surface` (TOML) appended.
+fn spalled_6205(surface: &str) -> String {
     let mut case = String::from_utf8(rolldyn(&["new", "--preset", "6205"], None).stdout).unwrap();
-    case.push_str(
-        "\n[surface.outer]\n[[surface.outer.spall]]\nposition = \"270 deg\"\nlength = \"0.533 mm\"\ndepth = \"0.28 mm\"\n",
-    );
+    case.push('\n');
+    case.push_str(surface);
     case
 }
 
@@ -204,6 +210,26 @@ fn a_deep_spall_with_undamped_contacts_closes_its_balance() {
     args.push("--verify");
     let (s, _) = run("deep-spall", &args, Some(&deep_spall_case()));
     assert_converged("deep spall", &s, &IMPACT_MEANS);
+}
+
+/// The same on the inner race (in the load zone once per shaft turn) and
+/// on a ball (striking both raceways once per spin).
+#[test]
+fn inner_race_and_ball_spalls_close_their_balances() {
+    for (tag, surface) in [
+        (
+            "inner-spall",
+            "[surface.inner]\n[[surface.inner.spall]]\nposition = \"270 deg\"\nlength = \"0.533 mm\"\ndepth = \"0.2 mm\"\n",
+        ),
+        (
+            "ball-spall",
+            "[surface.balls]\n[[surface.balls.spall]]\nball = 0\nposition = \"0 deg\"\nlength = \"0.533 mm\"\ndepth = \"0.2 mm\"\n",
+        ),
+    ] {
+        let (s, _) = run(tag, &DEEP_SPALL, Some(&spalled_6205(surface)));
+        assert_converged(tag, &s, &[]);
+        assert!(s["envelope_lines"]["lines"].as_array().unwrap().len() == 4);
+    }
 }
 
 /// A run that is not converged says so: the deep spall with the stiff
