@@ -275,7 +275,21 @@ impl Integrator for Switching {
         self.hand_over(system);
         match self.policy.active {
             Active::Stiff => self.stiff.step(system, t_limit)?,
-            Active::Explicit => self.explicit.step(system, t_limit)?,
+            Active::Explicit => {
+                if self.explicit.step(system, t_limit).is_err() {
+                    // Stiffness beyond the explicit method's reach (its
+                    // step fell below the time resolution, or its stages
+                    // overflowed): the stiff method takes over from the
+                    // last accepted point and keeps the run for good.
+                    let p = &mut self.policy;
+                    p.explicit_rate = Some(f64::INFINITY);
+                    (p.next, p.trial, p.window_steps) = (Active::Stiff, false, 0);
+                    self.hand_over(system);
+                    self.policy.window_t = self.t();
+                    self.policy.window_cost = self.total_cost();
+                    self.stiff.step(system, t_limit)?;
+                }
+            }
         }
         self.after_step();
         Ok(())
@@ -443,6 +457,41 @@ mod tests {
             let err = (auto.y()[k] - reference.y()[k]).abs() / scale;
             assert!(err < 100.0 * RTOL, "state {k}: error {err:e}");
         }
+    }
+
+    /// `Struck` with a relaxation far too stiff for any explicit step.
+    struct Rigid;
+    impl OdeSystem for Rigid {
+        fn dimension(&self) -> usize {
+            4
+        }
+        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+            Struck.rhs(t, &y[..3], &mut dy[..3]);
+            dy[3] = -1e19 * (y[3] - t.sin());
+        }
+        fn error_scale(&self, scale: &mut [f64]) {
+            scale.copy_from_slice(&[1.0, 1e-4, 1.0, 1.0]);
+        }
+    }
+
+    #[test]
+    fn an_explicit_method_out_of_its_depth_hands_back_for_good() {
+        let stiff = Rosenbrock::new(&ROS34PW2, RTOL, 1e-3, None, &Rigid, 0.0, &[0.0; 4]).unwrap();
+        let control = StepControl::Adaptive {
+            relative_tolerance: RTOL,
+            max_step: 1e-3,
+            initial_step: None,
+        };
+        let explicit = ExplicitRk::new(&DOPRI5, control, &Rigid, 0.0, &[0.0; 4]).unwrap();
+        let mut auto = Switching::new(stiff, explicit);
+        while auto.t() < END {
+            auto.step(&mut Rigid, END).unwrap();
+        }
+        // It tried the explicit method after the pulse, which failed.
+        assert!(auto.switches() >= 2, "{} switches", auto.switches());
+        assert!(!auto.explicit_active());
+        assert_eq!(auto.steps_by_method().1, 0);
+        assert!((auto.y()[3] - END.sin()).abs() < 1e-6);
     }
 
     #[test]
