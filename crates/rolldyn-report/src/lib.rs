@@ -16,6 +16,7 @@
 pub mod run;
 pub mod svg;
 pub mod sweep;
+pub mod vibration;
 
 use std::fmt::Write;
 use std::path::Path;

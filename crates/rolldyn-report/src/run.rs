@@ -3,7 +3,8 @@
 //!
 //! Sections, in order: summary, case and assumptions, solver statistics,
 //! cage speed against pure rolling, contact loads and angles per ball,
-//! slide- and spin-to-roll, cage orbit, energy balance, friction power
+//! slide- and spin-to-roll, cage orbit, vibration (a run with a spall:
+//! [`crate::vibration`]), energy balance, friction power
 //! (and temperatures when a thermal network was coupled), all summary
 //! values. Each is one function of [`SECTIONS`]; a section whose channels
 //! the run did not record is left out.
@@ -43,6 +44,9 @@ pub struct RunData {
     pub record: Option<Value>,
     /// The case as `rolldyn check` describes it, when known.
     pub case_description: Option<String>,
+    /// Time and the inner ring's vertical acceleration over the averaging
+    /// window, unreduced, for a run with a spall ([`crate::vibration`]).
+    pub vibration: Option<crate::vibration::Record>,
 }
 
 impl RunData {
@@ -110,8 +114,18 @@ type SectionBuilder = fn(&RunData) -> Option<Section>;
 
 /// The run report's sections in page order. A new model's section is one
 /// more function here.
-pub const SECTIONS: [SectionBuilder; 10] = [
-    summary, case, solver, cage_speed, contacts, slip, cage_orbit, energy, power, all_values,
+pub const SECTIONS: [SectionBuilder; 11] = [
+    summary,
+    case,
+    solver,
+    cage_speed,
+    contacts,
+    slip,
+    cage_orbit,
+    crate::vibration::section,
+    energy,
+    power,
+    all_values,
 ];
 
 /// Reads a run directory and builds its report.
@@ -142,6 +156,15 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
     } else {
         None
     };
+    let spalled = summary.get("envelope_lines").is_some_and(|v| !v.is_null());
+    let vibration = if spalled {
+        crate::vibration::read_window(&series_path, window).map_err(|e| ReportError::Read {
+            path: series_path.display().to_string(),
+            message: e.to_string(),
+        })?
+    } else {
+        None
+    };
     let record = dir
         .join(RECORD_FILE)
         .is_file()
@@ -155,6 +178,7 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
         orbit,
         record,
         case_description,
+        vibration,
     }))
 }
 

@@ -265,3 +265,57 @@ fn long_records_are_reduced_without_losing_spikes_or_the_balance() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A run with a spall gets the vibration section: statistics, the lines'
+/// table and three plots (signal, spectrum, envelope spectrum with the
+/// lines marked), from the unreduced window of the acceleration.
+#[test]
+fn a_spalled_run_has_a_vibration_section() {
+    let dir = temp_dir("spalled");
+    synthetic_run(&dir);
+    // The acceleration: a 3 kHz resonance rung at BPFO = 100 Hz.
+    let mut s = TimeSeries::default();
+    s.channel("time_s", "s");
+    s.channel("inner_ring_acceleration_z_m_s2", "m/s^2");
+    s.channel("cage_speed_rpm", "rpm");
+    let rate = 12_000.0;
+    for k in 0..6000 {
+        let t = k as f64 / rate;
+        let since = t % 0.01;
+        let ring = (-since / 5e-4).exp() * (std::f64::consts::TAU * 3000.0 * t).sin();
+        s.push(&[t, 100.0 * ring, 720.0]);
+    }
+    write_parquet(&dir.join("timeseries.parquet"), &s, &[]).unwrap();
+    let mut summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let extra = serde_json::json!({
+        "averaging_window_s": [0.25, 0.5],
+        "inner_ring_speed_rpm": 1772.0,
+        "mean_cage_speed_rpm": 705.8,
+        "ball_count": 9,
+        "ball_diameter_m": 0.00794,
+        "pitch_diameter_m": 0.039,
+        "mean_contact_angle_inner_deg": 0.0,
+        "mean_contact_angle_outer_deg": 0.0,
+        "envelope_lines": {"channel": "inner_ring_acceleration_z_m_s2", "band_hz": [1200.0, 4800.0],
+            "resolution_hz": 4.0, "lines": [{"name": "BPFO", "frequency_hz": 105.9, "amplitude_m_s2": 12.0}]}
+    });
+    for (k, v) in extra.as_object().unwrap() {
+        summary[k] = v.clone();
+    }
+    std::fs::write(dir.join("summary.json"), summary.to_string()).unwrap();
+    let html = report_for(&dir, None).unwrap().to_html();
+    let (sections, _) = check_page(&html);
+    assert!(sections.contains(&"vibration".to_string()), "{sections:?}");
+    assert!(html.contains("Envelope spectrum (band 1200–4800 Hz)"));
+    assert!(html.contains("kurtosis"));
+    assert!(
+        html.contains("<td>BPFO</td><td>105.90</td>"),
+        "the lines' table"
+    );
+    // Without envelope lines (no spall) there is no such section.
+    summary["envelope_lines"] = serde_json::Value::Null;
+    std::fs::write(dir.join("summary.json"), summary.to_string()).unwrap();
+    let html = report_for(&dir, None).unwrap().to_html();
+    assert!(!check_page(&html).0.contains(&"vibration".to_string()));
+}
