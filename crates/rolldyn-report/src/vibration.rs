@@ -26,10 +26,7 @@ pub const MAX_SAMPLES: usize = 1 << 16;
 
 /// Time and [`CHANNEL`] over `[t0, t1]` (the last [`MAX_SAMPLES`]), read in
 /// one pass of two columns; None when the run did not record the channel.
-pub fn read_window(
-    path: &Path,
-    [t0, t1]: [f64; 2],
-) -> Result<Option<Record>, InputError> {
+pub fn read_window(path: &Path, [t0, t1]: [f64; 2]) -> Result<Option<Record>, InputError> {
     if read_schema(path)?.unit(CHANNEL).is_none() {
         return Ok(None);
     }

@@ -24,16 +24,20 @@
 //! on the 6205 preset a factorization costs 1.6, with EHL traction less).
 //! Counting evaluations, not wall time, keeps the run deterministic.
 //!
-//! * The run starts with the stiff method; the first explicit window is a
-//!   trial after the first stiff window, which records the explicit cost.
-//! * The stiff method hands over when its cost exceeds [`HYSTERESIS`] times
-//!   the explicit cost last measured (the explicit step is bounded by
-//!   stability, so its cost varies little along a run).
+//! * The run starts with the stiff method. When its cost rises above
+//!   [`REGIME_CHANGE`] times the lowest it has had (an impact, ringing),
+//!   the explicit method gets a trial window, and keeps the run when it
+//!   costs less by the margin [`HYSTERESIS`]; later the stiff method hands
+//!   over whenever such a rise puts its cost above the explicit cost last
+//!   measured (the explicit step is bounded by stability, so its cost
+//!   varies little along a run).
 //! * The explicit method tries the stiff one again after a number of
 //!   windows that doubles after every trial the stiff method loses (up to
 //!   [`MAX_WAIT_WINDOWS`]) and returns to one when it wins: the stiff
 //!   cost changes with the motion (ringing dies out, a ball leaves the
 //!   load zone) and can only be known by trying.
+//! * An explicit step that fails (stiffness beyond its reach) hands the
+//!   run back to the stiff method for good.
 //!
 //! A hand-over restarts the receiving method at the current point with the
 //! current step: its first-stage derivative evaluated afresh, a new
