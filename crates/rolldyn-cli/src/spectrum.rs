@@ -3,7 +3,8 @@
 //! run's own mean shaft and cage speeds and contact angles (DIR/summary.json),
 //! a peak list naming the nearest line, and the vibration velocity RMS
 //! (10–1000 Hz) of acceleration and velocity channels. Writes
-//! `DIR/spectrum_<channel>_<kind>.csv` (frequency_hz,value) and `.json`;
+//! `DIR/spectrum_<channel>_<kind>.csv` (frequency_hz,value; a spectrogram:
+//! time_s,frequency_hz,value) and `.json`;
 //! keys in docs/cli.md.
 
 use crate::vibration::VELOCITY_BAND;
@@ -11,7 +12,7 @@ use crate::{Failure, bad_arg, emit, json};
 use clap::Args;
 use rolldyn::signal::{
     CharacteristicFrequencies, Spectrum, Window, amplitude_spectrum, band_rms, band_velocity_rms,
-    envelope_spectrum, find_peaks, welch_psd,
+    envelope_spectrum, find_peaks, spectrogram, welch_psd,
 };
 use serde::Serialize;
 use std::fmt::Write;
@@ -25,17 +26,18 @@ pub struct SpectrumArgs {
     /// Channel to analyse (`rolldyn spectrum DIR --list` lists them).
     #[arg(long, default_value = "inner_ring_acceleration_z_m_s2")]
     pub channel: String,
-    /// amplitude, psd (Welch) or envelope.
+    /// amplitude, psd (Welch), envelope or spectrogram (amplitude spectra
+    /// of overlapping segments, for speed ramps).
     #[arg(long, default_value = "amplitude")]
     pub kind: String,
     /// Window: hann or rectangular.
     #[arg(long, default_value = "hann")]
     pub window: String,
-    /// Welch segment length in samples (psd; default: a power of two near
-    /// an eighth of the record).
+    /// Segment length in samples (psd, spectrogram; default: a power of two
+    /// near an eighth of the record).
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub segment: Option<usize>,
-    /// Welch overlap fraction (psd).
+    /// Overlap fraction of the segments (psd, spectrogram).
     #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
     pub overlap: f64,
     /// Envelope band "LOW:HIGH" in Hz (envelope; default: 0.1 to 0.4 of the
@@ -98,6 +100,8 @@ pub struct Report {
     resolution_hz: f64,
     band_hz: Option<[f64; 2]>,
     segment: Option<usize>,
+    /// Spectrogram: the number of segments (spectra) in the CSV.
+    segments: Option<usize>,
     velocity_rms_mm_s: Option<f64>,
     velocity_rms_band_hz: Option<[f64; 2]>,
     characteristic: Characteristic,
@@ -243,6 +247,8 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     };
     let unit = series.unit(&args.channel).unwrap_or("").to_string();
     let spectrum_error = |e: rolldyn::signal::SpectrumError| Failure::BadInput(e.to_string());
+    let default_segment = || (record.len() / 8).max(16).next_power_of_two() / 2;
+    let mut frames = None;
     let (spectrum, value_unit, band, segment): (Spectrum, String, Option<[f64; 2]>, Option<usize>) =
         match args.kind.as_str() {
             "amplitude" => (
@@ -252,9 +258,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
                 None,
             ),
             "psd" => {
-                let segment = args
-                    .segment
-                    .unwrap_or_else(|| (record.len() / 8).max(16).next_power_of_two() / 2);
+                let segment = args.segment.unwrap_or_else(default_segment);
                 (
                     welch_psd(record, sample_rate, segment, args.overlap, window)
                         .map_err(spectrum_error)?,
@@ -275,7 +279,28 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
                     None,
                 )
             }
-            k => return Err(bad_arg("--kind", k, "expected amplitude, psd or envelope")),
+            "spectrogram" => {
+                let segment = args.segment.unwrap_or_else(default_segment);
+                let sg = spectrogram(record, sample_rate, segment, args.overlap, window)
+                    .map_err(spectrum_error)?;
+                // Peaks and lines from the segments' mean spectrum.
+                let n = sg.value.len().max(1) as f64;
+                let mean = Spectrum {
+                    frequency: sg.frequency.clone(),
+                    value: (0..sg.frequency.len())
+                        .map(|k| sg.value.iter().map(|v| v[k]).sum::<f64>() / n)
+                        .collect(),
+                };
+                frames = Some(sg);
+                (mean, unit.clone(), None, Some(segment))
+            }
+            k => {
+                return Err(bad_arg(
+                    "--kind",
+                    k,
+                    "expected amplitude, psd, envelope or spectrogram",
+                ));
+            }
         };
     let alpha = 0.5
         * (summary.mean_contact_angle_inner_deg + summary.mean_contact_angle_outer_deg)
@@ -298,9 +323,24 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     }
     .map(|v| 1e3 * v);
     let stem = format!("spectrum_{}_{}", args.channel, args.kind);
-    let mut csv = String::from("frequency_hz,value\n");
-    for (f, v) in spectrum.frequency.iter().zip(&spectrum.value) {
-        let _ = writeln!(csv, "{f},{v:e}");
+    let mut csv = String::new();
+    match &frames {
+        // A spectrogram: one row per segment and frequency, the segment
+        // by the time of its centre.
+        Some(sg) => {
+            csv.push_str("time_s,frequency_hz,value\n");
+            for (t, spectrum) in sg.time.iter().zip(&sg.value) {
+                for (f, v) in sg.frequency.iter().zip(spectrum) {
+                    let _ = writeln!(csv, "{},{f},{v:e}", time[0] + t);
+                }
+            }
+        }
+        None => {
+            csv.push_str("frequency_hz,value\n");
+            for (f, v) in spectrum.frequency.iter().zip(&spectrum.value) {
+                let _ = writeln!(csv, "{f},{v:e}");
+            }
+        }
     }
     let csv_path = dir.join(format!("{stem}.csv"));
     rolldyn_io::write_atomic(&csv_path, csv.as_bytes())
@@ -318,6 +358,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         resolution_hz: resolution,
         band_hz: band,
         segment,
+        segments: frames.as_ref().map(|sg| sg.time.len()),
         velocity_rms_mm_s: velocity_rms,
         velocity_rms_band_hz: velocity_rms.map(|_| [velocity_band.0, velocity_band.1]),
         characteristic: Characteristic {
@@ -385,6 +426,12 @@ impl Report {
         );
         if let Some([lo, hi]) = self.band_hz {
             let _ = writeln!(t, "envelope band {lo:.0}–{hi:.0} Hz");
+        }
+        if let (Some(n), Some(segment)) = (self.segments, self.segment) {
+            let _ = writeln!(
+                t,
+                "{n} segments of {segment} samples; the peaks are of their mean spectrum"
+            );
         }
         let _ = writeln!(
             t,

@@ -170,6 +170,7 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
             "sample_rate_hz",
             "samples",
             "segment",
+            "segments",
             "to_s",
             "unit",
             "value_unit",
@@ -195,6 +196,32 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
         let s = json(&["spectrum", &d, kind[0], kind[1], "--json"], None);
         assert_eq!(s["kind"], kind[1]);
     }
+    // A spectrogram: segments of 16 samples half overlapping, one CSV row
+    // per segment and frequency.
+    let s = json(
+        &[
+            "spectrum",
+            &d,
+            "--kind",
+            "spectrogram",
+            "--segment",
+            "16",
+            "--from",
+            "0",
+            "--json",
+        ],
+        None,
+    );
+    let segments = s["segments"].as_u64().unwrap() as usize;
+    let samples = s["samples"].as_u64().unwrap() as usize;
+    assert_eq!(segments, (samples - 16) / 8 + 1);
+    let csv = std::fs::read_to_string(
+        dir.join("spectrum_inner_ring_acceleration_z_m_s2_spectrogram.csv"),
+    )
+    .unwrap();
+    assert!(csv.starts_with("time_s,frequency_hz,value\n"));
+    // 9 frequencies (0 … Nyquist) per segment of 16.
+    assert_eq!(csv.lines().count(), 1 + 9 * segments);
     // Bad arguments: exit 2, named.
     for (args, fragment) in [
         (vec!["--channel", "nope"], "--channel nope"),

@@ -1,5 +1,5 @@
 //! Signal processing for vibration analysis (docs/model.md §9): amplitude spectra,
-//! Welch power spectral density, envelope spectra, band-limited vibration
+//! Welch power spectral density, envelope spectra, spectrograms, band-limited vibration
 //! velocity RMS, the bearing's characteristic frequencies with harmonics and
 //! sidebands, a peak list that names the nearest line, and cage-whirl
 //! metrics (Deng et al. 2022 eq 41).
@@ -13,10 +13,12 @@
 //! per segment, `scaling = "density"`), so results can be checked against it.
 
 pub mod lines;
+pub mod spectrogram;
 pub mod spectrum;
 pub mod whirl;
 
 pub use lines::{CharacteristicFrequencies, Line, Peak, find_peaks};
+pub use spectrogram::{Spectrogram, spectrogram};
 pub use spectrum::{
     Spectrum, SpectrumError, Window, amplitude_spectrum, band_rms, band_velocity_rms,
     envelope_spectrum, welch_psd,

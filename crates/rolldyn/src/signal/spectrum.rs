@@ -92,7 +92,7 @@ pub enum SpectrumError {
     },
 }
 
-fn check(
+pub(super) fn check(
     record: &[f64],
     sample_rate: f64,
     what: &'static str,
