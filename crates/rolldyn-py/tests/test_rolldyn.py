@@ -383,6 +383,11 @@ def test_spectrum_equals_the_cli(tmp_path):
     assert result.spectrum("cage_speed_rpm") == expected
     with pytest.raises(rolldyn.CaseError, match="no such channel"):
         result.spectrum("nope")
+    # A spectrogram (speed ramps): segments of 16 samples, half overlapping.
+    expected = cli_json("spectrum", str(tmp_path), "--channel", "cage_speed_rpm",
+                        "--kind", "spectrogram", "--segment", "16", "--json")
+    got = result.spectrum("cage_speed_rpm", kind="spectrogram", segment=16)
+    assert got == expected and got["segments"] >= 1
 
 
 def test_native_stub_matches_the_module():
