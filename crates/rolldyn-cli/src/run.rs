@@ -51,6 +51,10 @@ pub struct Summary {
     pub jacobian_evaluations: u64,
     pub jacobian_rhs_evaluations: u64,
     pub factorizations: u64,
+    /// `auto`: accepted steps of its explicit method (DOPRI5) and
+    /// hand-overs between its methods (null for the other integrators).
+    pub explicit_steps: Option<u64>,
+    pub integrator_switches: Option<u64>,
     pub samples: usize,
     pub sample_rate_hz: f64,
     pub averaging_window_s: [f64; 2],
@@ -619,6 +623,10 @@ impl Output<'_> {
             solver.stats(),
             end.unwrap_or(&in_progress),
         );
+        if let Solver::Switching(auto) = solver {
+            summary.explicit_steps = Some(auto.steps_by_method().1);
+            summary.integrator_switches = Some(auto.switches());
+        }
         if end.is_none() {
             summary.status = "partial";
             summary.error = Some(format!(
@@ -719,6 +727,8 @@ fn summarise(
         jacobian_evaluations: integration.jacobian_evaluations,
         jacobian_rhs_evaluations: integration.jacobian_rhs_evaluations,
         factorizations: integration.factorizations,
+        explicit_steps: None,
+        integrator_switches: None,
         samples: stats.samples() as usize,
         sample_rate_hz: case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE),
         averaging_window_s: [window_start, t_end],

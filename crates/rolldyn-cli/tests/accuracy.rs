@@ -210,6 +210,9 @@ fn a_deep_spall_with_undamped_contacts_closes_its_balance() {
     args.push("--verify");
     let (s, _) = run("deep-spall", &args, Some(&deep_spall_case()));
     assert_converged("deep spall", &s, &IMPACT_MEANS);
+    // The impacts went to the explicit method.
+    assert!(s["integrator_switches"].as_u64().unwrap() >= 1);
+    assert!(s["explicit_steps"].as_u64().unwrap() > 0);
 }
 
 /// The same on the inner race (in the load zone once per shaft turn) and

@@ -419,6 +419,8 @@ fn run_writes_parquet_and_summary() {
     // a smooth run and reports its work and settings (the preset's
     // tolerance, the stiff method's default largest step).
     assert_eq!(summary["integrator"], "auto");
+    assert_eq!(summary["integrator_switches"], 0);
+    assert_eq!(summary["explicit_steps"], 0);
     assert_eq!(summary["relative_tolerance"], 1e-2);
     assert_eq!(summary["max_step_s"], 1e-4);
     assert!(summary["jacobian_evaluations"].as_u64().unwrap() >= 1);
