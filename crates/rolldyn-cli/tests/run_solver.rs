@@ -1,5 +1,5 @@
 //! `rolldyn run`'s integration: results that do not depend on the thread
-//! count, the energy balance at the default tolerance in the default
+//! count (with `auto` switching methods too), the energy balance at the default tolerance in the default
 //! case's whirl limit cycle, and the step cap of film pockets.
 
 #![allow(clippy::unwrap_used)]
@@ -36,6 +36,36 @@ fn run_is_deterministic_whatever_the_thread_count() {
         assert!(run.0 == runs[0].0, "time series of run {k} differ");
         assert_eq!(run.1, runs[0].1, "summary of run {k}");
     }
+}
+
+/// `auto` hands a run between its methods by counted cost, never by wall
+/// time: the default case under a light axial load (balls losing and
+/// regaining their contacts, from ~12 ms) switches, identically on one
+/// and two threads.
+#[test]
+fn auto_switches_identically_whatever_the_thread_count() {
+    let runs: Vec<Value> = ["1", "2"]
+        .iter()
+        .map(|threads| {
+            let dir = temp_dir(&format!("auto-det-{threads}"));
+            let o = std::process::Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+                .args(["run", "--axial-load", "20 N", "--duration", "20 ms", "-o"])
+                .arg(&dir)
+                .env("RAYON_NUM_THREADS", threads)
+                .output()
+                .expect("rolldyn runs");
+            assert!(o.status.success(), "{}", stderr(&o));
+            let mut summary: Value =
+                serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
+                    .unwrap();
+            summary["wall_time_s"] = Value::Null;
+            std::fs::remove_dir_all(&dir).ok();
+            summary
+        })
+        .collect();
+    assert!(runs[0]["integrator_switches"].as_u64().unwrap() >= 1);
+    assert!(runs[0]["explicit_steps"].as_u64().unwrap() > 0);
+    assert_eq!(runs[0], runs[1]);
 }
 
 /// the default case's energy balance holds at its own
