@@ -3,7 +3,7 @@
 //! (Ctrl-C) and reporting progress. Knows nothing of files or terminals:
 //! samples and progress go to callbacks (observers).
 
-use super::explicit::{IntegrationError, IntegrationStats};
+use super::step_control::{IntegrationError, IntegrationStats};
 use super::{Integrator, OdeSystem};
 use std::sync::atomic::{AtomicBool, Ordering};
 

@@ -31,15 +31,17 @@ pub mod explicit;
 pub mod jacobian;
 pub mod linear;
 pub mod rosenbrock;
+pub mod step_control;
 pub mod switching;
 pub mod tableau;
 
 pub use checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
 pub use driver::{RunEnd, RunReport, Sampling, run, run_from};
 pub use energy_control::{DEFAULT_ENERGY_TOLERANCE, EnergyBalance};
-pub use explicit::{ExplicitRk, IntegrationError, IntegrationStats, StepControl};
+pub use explicit::{ExplicitRk, StepControl};
 pub use jacobian::BlockSplit;
 pub use rosenbrock::{ROS34PW2, Rosenbrock, RosenbrockTableau};
+pub use step_control::{IntegrationError, IntegrationStats};
 pub use switching::Switching;
 
 /// A system of first-order ODEs y' = f(t, y).

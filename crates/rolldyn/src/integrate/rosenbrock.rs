@@ -28,9 +28,9 @@ use super::checkpoint::{
     Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
 };
 use super::energy_control::EnergyControl;
-use super::explicit::{IntegrationError, IntegrationStats, PiControl};
 use super::jacobian::{JacobianWork, finite_difference};
 use super::linear::{BlockJacobian, BlockLayout, BlockLu};
+use super::step_control::{IntegrationError, IntegrationStats, PiControl};
 use super::{Integrator, OdeSystem, Tolerances};
 
 /// Largest number of stages of a Rosenbrock tableau.

@@ -1,0 +1,143 @@
+//! What both adaptive integrators share: their counters, why an
+//! integration stops, and the PI step-size controller (Gustafsson;
+//! Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4).
+
+use super::{OdeSystem, Tolerances};
+
+/// Counters of an integration.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+pub struct IntegrationStats {
+    /// Accepted steps.
+    pub steps: u64,
+    /// Rejected steps.
+    pub rejected_steps: u64,
+    /// Right-hand-side evaluations by the stages (and dense output).
+    pub rhs_evaluations: u64,
+    /// Jacobian evaluations (implicit methods).
+    pub jacobian_evaluations: u64,
+    /// Cost of the Jacobians in right-hand-side equivalents (one per
+    /// colour of the column grouping).
+    pub jacobian_rhs_evaluations: u64,
+    /// LU factorizations of the iteration matrix (implicit methods).
+    pub factorizations: u64,
+}
+
+/// Why integration stopped early.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum IntegrationError {
+    /// The error control asked for a step below the resolution of t.
+    #[error(
+        "step size {step:.3e} s at t = {t:.6e} s fell below the smallest step the time resolution allows (largest error in {state})"
+    )]
+    StepTooSmall {
+        /// Time reached \[s\].
+        t: f64,
+        /// Step asked for \[s\].
+        step: f64,
+        /// The state component with the largest error in the last attempt
+        /// ([`OdeSystem::state_name`]).
+        state: String,
+    },
+    /// The state or its derivative became NaN or infinite.
+    #[error("the solution became non-finite at t = {t:.6e} s (first in {state})")]
+    NonFinite {
+        /// Time reached \[s\].
+        t: f64,
+        /// The first state component that is not finite (or whose
+        /// derivative is not).
+        state: String,
+    },
+    /// Bad settings.
+    #[error("invalid integrator setting: {0}")]
+    Setting(String),
+}
+
+/// Weight β of the previous error in the PI step-size controller
+/// (Gustafsson; Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4, and
+/// their DOPRI5 code, which allows β ≤ 0.1 and uses 0.04). The larger
+/// value damps the step-size oscillation at the stability boundary, where
+/// the bearing's stiff traction keeps explicit methods.
+const PI_BETA: f64 = 0.08;
+
+/// Step-size control shared by the adaptive integrators: landing on the
+/// end without a sliver step, the PI update after an accepted step and the
+/// cut after a rejected one (error norms scaled so that 1 is the tolerance,
+/// `order` the exponent q of err ∝ h^q).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PiControl {
+    /// Error norm of the last accepted step.
+    pub(crate) err_prev: f64,
+}
+
+impl PiControl {
+    pub(crate) fn new() -> Self {
+        Self { err_prev: 1e-4 }
+    }
+
+    /// The step to try: `natural`, or the rest of the way to the limit if
+    /// that is shorter or only slightly longer.
+    pub(crate) fn landing(natural: f64, remaining: f64) -> f64 {
+        if natural >= remaining || (remaining - natural) < 0.01 * natural {
+            remaining
+        } else {
+            natural
+        }
+    }
+
+    /// Next step after an accepted one of error `err` (natural size
+    /// `natural`): h · 0.9 err^{−(1/q − 0.75β)} err_prev^{β}, no growth
+    /// right after a rejection.
+    pub(crate) fn accepted(&mut self, natural: f64, err: f64, order: f64, rejected: bool) -> f64 {
+        let err = err.max(1e-10);
+        let factor = 0.9 * err.powf(-(1.0 / order - 0.75 * PI_BETA)) * self.err_prev.powf(PI_BETA);
+        self.err_prev = err.max(1e-4);
+        natural * factor.clamp(0.2, if rejected { 1.0 } else { 5.0 })
+    }
+
+    /// Next step after a rejected step h of error `err` (∞: not finite).
+    pub(crate) fn rejected(h: f64, err: f64, order: f64) -> f64 {
+        let factor = if err.is_finite() {
+            (0.9 * err.powf(-1.0 / order)).clamp(0.2, 1.0)
+        } else {
+            0.2
+        };
+        h * factor
+    }
+
+    /// The error for a step that fell below `min_step`, naming a state
+    /// component: the one with the largest scaled error term of the last
+    /// attempt (`error_terms`) when that error is finite; otherwise (the
+    /// attempt overflowed, and a linear solve spreads NaN over every
+    /// component) the one changing fastest relative to its tolerance at
+    /// the last accepted point, |f_k| / (atol_k + rtol |y_k|).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn too_small(
+        t: f64,
+        step: f64,
+        err: f64,
+        system: &impl OdeSystem,
+        error_terms: impl Iterator<Item = f64>,
+        y: &[f64],
+        f: &[f64],
+        tolerances: &Tolerances,
+    ) -> IntegrationError {
+        let largest = |terms: &mut dyn Iterator<Item = f64>| {
+            terms
+                .enumerate()
+                .filter(|(_, c)| c.is_finite())
+                .fold(
+                    (0, f64::NEG_INFINITY),
+                    |w, (i, c)| if c > w.1 { (i, c) } else { w },
+                )
+                .0
+        };
+        if err.is_finite() {
+            let state = system.state_name(largest(&mut { error_terms }));
+            IntegrationError::StepTooSmall { t, step, state }
+        } else {
+            let mut rates = (0..y.len()).map(|k| f[k].abs() / tolerances.scale(k, y[k].abs()));
+            let state = system.state_name(largest(&mut rates));
+            IntegrationError::NonFinite { t, state }
+        }
+    }
+}
