@@ -3,7 +3,7 @@
 //! spectrum over the whole record smears every line over the speed range
 //! (Randall 2011, *Vibration-based Condition Monitoring*, §3.5).
 
-use super::spectrum::{SpectrumError, Window, amplitude_spectrum, check};
+use super::spectrum::{SpectrumError, Window, amplitude_spectrum, segments};
 
 /// Amplitude spectra of successive segments.
 #[derive(Debug, Clone, PartialEq)]
@@ -28,22 +28,7 @@ pub fn spectrogram(
     overlap: f64,
     window: Window,
 ) -> Result<Spectrogram, SpectrumError> {
-    if !(0.0..1.0).contains(&overlap) {
-        return Err(SpectrumError::Invalid {
-            field: "overlap",
-            value: overlap,
-            rule: "must lie in [0, 1)".into(),
-        });
-    }
-    if segment < 2 {
-        return Err(SpectrumError::Invalid {
-            field: "segment",
-            value: segment as f64,
-            rule: "needs at least 2 samples".into(),
-        });
-    }
-    check(record, sample_rate, "a spectrogram", segment)?;
-    let step = ((segment as f64 * (1.0 - overlap)).round() as usize).max(1);
+    let step = segments(record, sample_rate, "a spectrogram", segment, overlap)?;
     let mut out = Spectrogram {
         time: Vec::new(),
         frequency: Vec::new(),

@@ -92,7 +92,7 @@ pub enum SpectrumError {
     },
 }
 
-pub(super) fn check(
+fn check(
     record: &[f64],
     sample_rate: f64,
     what: &'static str,
@@ -181,15 +181,15 @@ pub fn amplitude_spectrum(
     })
 }
 
-/// Welch PSD: segments of `segment` samples overlapping by `overlap`
-/// (fraction in [0, 1)), each mean-removed and windowed; unit²/Hz.
-pub fn welch_psd(
+/// Checks a record for analysis by segments of `segment` samples
+/// overlapping by `overlap`; returns the hop between segments.
+pub(super) fn segments(
     record: &[f64],
     sample_rate: f64,
+    what: &'static str,
     segment: usize,
     overlap: f64,
-    window: Window,
-) -> Result<Spectrum, SpectrumError> {
+) -> Result<usize, SpectrumError> {
     if !(0.0..1.0).contains(&overlap) {
         return Err(SpectrumError::Invalid {
             field: "overlap",
@@ -204,10 +204,22 @@ pub fn welch_psd(
             rule: "needs at least 2 samples".into(),
         });
     }
-    check(record, sample_rate, "a Welch PSD", segment)?;
+    check(record, sample_rate, what, segment)?;
+    Ok(((segment as f64 * (1.0 - overlap)).round() as usize).max(1))
+}
+
+/// Welch PSD: segments of `segment` samples overlapping by `overlap`
+/// (fraction in [0, 1)), each mean-removed and windowed; unit²/Hz.
+pub fn welch_psd(
+    record: &[f64],
+    sample_rate: f64,
+    segment: usize,
+    overlap: f64,
+    window: Window,
+) -> Result<Spectrum, SpectrumError> {
+    let step = segments(record, sample_rate, "a Welch PSD", segment, overlap)?;
     let w = window.coefficients(segment);
     let power: f64 = w.iter().map(|v| v * v).sum();
-    let step = ((segment as f64 * (1.0 - overlap)).round() as usize).max(1);
     let fft = RealFftPlanner::<f64>::new().plan_fft_forward(segment);
     let mut buffer = fft.make_input_vec();
     let mut out = fft.make_output_vec();
