@@ -54,10 +54,10 @@ impl TractionLaw for EhlRheology {
         }
         let tau0 = self.eyring_stress;
         let eta = self.lubricant.viscosity_at(pressure);
-        let x = eta * speed / (film * tau0);
+        let x = eta * speed * (1.0 / (film * tau0));
         let eyring = tau0 * asinh_non_negative(x);
         let tau = eyring.min(self.limiting_shear_coefficient * pressure);
-        -(tau / speed) * slip
+        -(tau * (1.0 / speed)) * slip
     }
 
     /// The cells stage by stage: slip speeds, viscosities and Eyring
@@ -76,6 +76,7 @@ impl TractionLaw for EhlRheology {
         let n = pressures.len().min(BATCH);
         let film = conditions.film;
         let tau0 = self.eyring_stress;
+        let per_film_stress = 1.0 / (film * tau0);
         let mut speed = [0.0; BATCH];
         let mut x = [0.0; BATCH];
         for k in 0..n {
@@ -83,7 +84,7 @@ impl TractionLaw for EhlRheology {
         }
         for k in 0..n {
             let eta = self.lubricant.viscosity_at(pressures[k]);
-            x[k] = eta * speed[k] / (film * tau0);
+            x[k] = eta * speed[k] * per_film_stress;
         }
         for k in 0..n {
             let pressure = pressures[k];
@@ -92,7 +93,7 @@ impl TractionLaw for EhlRheology {
             } else {
                 let eyring = tau0 * asinh_non_negative(x[k]);
                 let tau = eyring.min(self.limiting_shear_coefficient * pressure);
-                -(tau / speed[k]) * slips[k]
+                -(tau * (1.0 / speed[k])) * slips[k]
             };
         }
     }

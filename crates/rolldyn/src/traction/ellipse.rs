@@ -18,7 +18,9 @@
 //! spin and Heathcote (differential) slip appear without special formulas.
 //! Its part tangent to n_X drives the stress law. Forces and moments (about
 //! the ball centre) are the sums over cells. The dissipated power is
-//! −Σ dF·s.
+//! −Σ dF·s. Along a strip X − P = r₀ + t r₁ and n_X is constant, so the
+//! tangential slip is s₀ + t d and the couple about P is
+//! r₀ × Σ dF + r₁ × Σ t dF: a cell costs the stress law and three sums.
 //!
 //! `centre` evaluates one point at P with the mean pressure Q/(πab) over the
 //! area πab. It is exact for Coulomb friction at uniform slip; it ignores
@@ -158,24 +160,13 @@ pub fn integrate<L: TractionLaw>(
     let e_roll = patch.rolling_direction;
     let e_across = n.cross(&e_roll);
     let (a, b) = (patch.semi_major, patch.semi_minor);
-    // The cell at X with tangential slip s_t takes dF: force, couple about
-    // P and dissipated power.
-    let accumulate =
-        |out: &mut TractionResult, x: Vector3<f64>, s_t: &Vector3<f64>, df: Vector3<f64>| {
-            out.force += df;
-            out.couple += (x - patch.point).cross(&df);
-            out.dissipation -= df.dot(s_t);
-        };
     match grid.method {
         TractionIntegration::Centre => {
+            // One point at P: no spin or differential slip.
             let area = std::f64::consts::PI * a * b;
-            // (The spin term vanishes at P; kept so the arithmetic is the
-            // grid's.)
-            let x = patch.point;
-            let s = slip_at_point + relative_spin.cross(&(x - patch.point));
-            let s_t = s - s.dot(&n) * n;
-            let df = law.shear_stress(patch.load / area, &s_t, conditions) * area;
-            accumulate(&mut out, x, &s_t, df);
+            let s_t = slip_at_point - slip_at_point.dot(&n) * n;
+            out.force = law.shear_stress(patch.load / area, &s_t, conditions) * area;
+            out.dissipation = -out.force.dot(&s_t);
         }
         TractionIntegration::Grid { across, along } => {
             let (across, along) = (across.max(1), along.max(1));
@@ -193,19 +184,22 @@ pub fn integrate<L: TractionLaw>(
                 };
                 let cos_t = (1.0 - sin_t * sin_t).sqrt();
                 let local_normal = cos_t * n + sin_t * e_across;
-                let base = patch.point + xi * e_across - drop * n;
-                let area = cell * w;
+                let tangential = |v: Vector3<f64>| v - v.dot(&local_normal) * local_normal;
+                // Along the strip X − P = r₀ + t r₁, so the tangential slip
+                // is linear in t: s_t = s₀ + t d.
+                let r0 = xi * e_across - drop * n;
+                let r1 = b * e_roll;
+                let s0 = tangential(slip_at_point + relative_spin.cross(&r0));
+                let d = tangential(relative_spin.cross(&r1));
+                // Σ τ, Σ t τ and Σ τ·s_t over the strip's cells.
+                let (mut sum, mut moment_t, mut power) = (Vector3::zeros(), Vector3::zeros(), 0.0);
                 for batch in cells.chunks(BATCH) {
                     let m = batch.len();
-                    let mut points = [Vector3::zeros(); BATCH];
                     let mut pressures = [0.0; BATCH];
                     let mut slips = [Vector3::zeros(); BATCH];
                     let mut stresses = [Vector3::zeros(); BATCH];
                     for (k, &(t, shape)) in batch.iter().enumerate() {
-                        let x = base + b * t * e_roll;
-                        let s = slip_at_point + relative_spin.cross(&(x - patch.point));
-                        slips[k] = s - s.dot(&local_normal) * local_normal;
-                        points[k] = x;
+                        slips[k] = s0 + t * d;
                         pressures[k] = p_scale * shape;
                     }
                     law.shear_stresses(
@@ -214,10 +208,19 @@ pub fn integrate<L: TractionLaw>(
                         conditions,
                         &mut stresses[..m],
                     );
-                    for k in 0..m {
-                        accumulate(&mut out, points[k], &slips[k], stresses[k] * area);
+                    for (k, &(t, _)) in batch.iter().enumerate() {
+                        sum += stresses[k];
+                        moment_t += t * stresses[k];
+                        power += stresses[k].dot(&slips[k]);
                     }
                 }
+                // Each cell of the strip has area `cell · w`; the couple
+                // about P is Σ (r₀ + t r₁) × dF = r₀ × ΣdF + r₁ × Σ t dF.
+                let area = cell * w;
+                let (force, moment_t) = (area * sum, area * moment_t);
+                out.force += force;
+                out.couple += r0.cross(&force) + r1.cross(&moment_t);
+                out.dissipation -= area * power;
             }
         }
     }
