@@ -1,6 +1,7 @@
 //! `cargo bench -p rolldyn --bench contact`: cost of the contact building
 //! blocks the time loop calls (7008C, steel): Hertz tables, torus
-//! geometry, and one contact's traction (FASTSIM, a stress law). Plain `Instant` timing
+//! geometry, and one contact's traction (FASTSIM; the Coulomb and EHL stress
+//! laws on the 12 × 6 grid). Plain `Instant` timing
 //! of many repetitions (median of 7 runs), no extra dependency. Figures are
 //! recorded in docs/performance.md with the machine.
 
