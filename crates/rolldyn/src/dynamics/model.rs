@@ -102,7 +102,7 @@ pub struct BearingModel {
     /// Thermal network advanced alongside a run, if coupled.
     pub(super) thermal: Option<Box<super::thermal_coupling::ThermalCoupling>>,
     /// The balls' contact evaluations, serial or across threads.
-    ball_pass: BallPass,
+    pub(super) ball_pass: BallPass,
     /// The traction grid of `params.traction_integration`, prepared.
     pub(super) traction_grid: TractionGrid,
 }

@@ -7,16 +7,19 @@ use super::race_contact::{ContactOutput, ContactSample, Want};
 use crate::geometry::RingKind;
 use crate::kinematics::cage_speed_ratio;
 use crate::traction::fastsim::MapCell;
+use rayon::prelude::*;
 
 impl BearingModel {
     /// Contact loads and angles of every ball at state `y`, written into
-    /// `out` (one entry per ball).
+    /// `out` (one entry per ball). The balls are evaluated on the threads
+    /// of the current rayon pool when the right-hand side's ball pass is
+    /// (each entry is one ball's alone: the same whatever the threads).
     pub fn contact_samples(&self, t: f64, y: &[f64], out: &mut [ContactSample]) {
         let (inner, outer) = self.ring_motion(t, y);
-        for (j, sample) in out.iter_mut().enumerate().take(self.layout.balls) {
+        let sample = |j: usize| {
             let (ball, _) = self.ball_kinematics(j, y);
             let episodes = &self.episodes[j];
-            *sample = ContactSample::default();
+            let mut sample = ContactSample::default();
             if let Some(c) =
                 self.race_contact(&inner, &self.inner_table, &episodes[0], &ball, Want::Output)
             {
@@ -26,6 +29,18 @@ impl BearingModel {
                 self.race_contact(&outer, &self.outer_table, &episodes[1], &ball, Want::Output)
             {
                 sample.outer = c.output;
+            }
+            sample
+        };
+        let balls = self.layout.balls.min(out.len());
+        let out = &mut out[..balls];
+        if self.ball_pass.is_parallel() {
+            out.par_iter_mut()
+                .enumerate()
+                .for_each(|(j, entry)| *entry = sample(j));
+        } else {
+            for (j, entry) in out.iter_mut().enumerate() {
+                *entry = sample(j);
             }
         }
     }
