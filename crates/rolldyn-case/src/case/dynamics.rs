@@ -2,12 +2,12 @@
 //! inertia (estimated from the ring annulus when not given), cage, pocket
 //! law, guide land, drag, supports and the film supply (docs/model.md §1, §5).
 
-use super::{Case, Invalid};
-use crate::raw::{CageGuidance, PocketLawChoice};
+use super::{Case, Invalid, checked, non_negative, positive_number};
+use crate::raw::{CageGuidance, PocketLawChoice, RawDrag};
 use rolldyn::RingKind;
 use rolldyn::cage::pocket::hertz_pocket_stiffness;
 use rolldyn::cage::{PocketLaw, PocketSqueeze};
-use rolldyn::dynamics::{CageParameters, DynamicsParameters, GuideLand};
+use rolldyn::dynamics::{CageParameters, DragParameters, DynamicsParameters, GuideLand};
 use rolldyn::operating::LoadProfile;
 use rolldyn::traction::ModifiedCoulomb;
 
@@ -290,3 +290,28 @@ pub const GUIDE_STOP_STIFFNESS: f64 = 1e8;
 
 /// Standard gravity g₀ = 9.80665 m/s² (CGPM 1901).
 pub const STANDARD_GRAVITY: f64 = 9.80665;
+
+/// Checks `[drag]`: the oil–air mixture's effective density and the drag
+/// coefficients (all 0, no drag, when not given).
+pub(super) fn drag(d: &RawDrag) -> Result<DragParameters, Invalid> {
+    let coefficient = |key: &str, v: Option<f64>| {
+        positive_number(
+            key,
+            v,
+            |x| (0.0..=1e4).contains(&x),
+            "a drag coefficient must lie in [0, 1e4] (a sphere's C_D is below 1e3 down to Re = 0.03)",
+        )
+        .map(|v| v.unwrap_or(0.0))
+    };
+    Ok(DragParameters {
+        effective_density: checked("drag.effective_density", &d.effective_density, non_negative)?
+            .unwrap_or(0.0),
+        ball_drag_coefficient: coefficient("drag.ball_drag_coefficient", d.ball_drag_coefficient)?,
+        ball_spin_drag_coefficient: coefficient(
+            "drag.ball_spin_drag_coefficient",
+            d.ball_spin_drag_coefficient,
+        )?,
+        cage_viscous: checked("drag.cage_viscous", &d.cage_viscous, non_negative)?.unwrap_or(0.0),
+        cage_windage: checked("drag.cage_windage", &d.cage_windage, non_negative)?.unwrap_or(0.0),
+    })
+}

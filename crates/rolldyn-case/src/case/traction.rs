@@ -7,7 +7,9 @@ use crate::raw::{RawMixedLubrication, RawTraction, TractionChoice};
 use rolldyn::RingKind;
 use rolldyn::lubrication::mixed::MixedLubrication;
 use rolldyn::traction::fastsim::combined_elastic_constants;
-use rolldyn::traction::{EhlRheology, Fastsim, ModifiedCoulomb, TractionCurve, TractionModel};
+use rolldyn::traction::{
+    EhlRheology, Fastsim, ModifiedCoulomb, TractionCurve, TractionIntegration, TractionModel,
+};
 
 pub(super) fn traction(
     choice: Option<&TractionChoice>,
@@ -104,6 +106,54 @@ pub(super) fn traction(
             TractionModel::Fastsim(law)
         }
     })
+}
+
+/// Checks `model.film_in_approach`: the film needs a film model (EHL with
+/// a lubricant) and a flooded or inlet-distance supply.
+pub(super) fn film_in_approach(
+    requested: Option<bool>,
+    traction: &TractionModel,
+    lubricant: Option<&Lubricant>,
+) -> Result<bool, Invalid> {
+    if requested != Some(true) {
+        return Ok(false);
+    }
+    if traction.lubricant().is_none() {
+        return Err(Invalid::new(
+            "model.film_in_approach",
+            Some("true".into()),
+            "the film needs a film model: model.traction = \"ehl\" with a [lubricant] section",
+        ));
+    }
+    let flow = lubricant.is_some_and(|l| {
+        l.supply
+            .iter()
+            .any(|s| matches!(s, rolldyn::lubrication::Supply::Flow { .. }))
+    });
+    if flow {
+        return Err(Invalid::new(
+            "model.film_in_approach",
+            Some("true".into()),
+            "the film in the approach needs a flooded supply or lubricant.inlet_distance_ratio, not lubricant.oil_flow (docs/lubrication.md)",
+        ));
+    }
+    Ok(true)
+}
+
+/// Checks the traction grid of `model.traction_integration`: 1 to 10 000 cells.
+pub(super) fn integration(
+    integration: Option<TractionIntegration>,
+) -> Result<TractionIntegration, Invalid> {
+    if let Some(TractionIntegration::Grid { across, along }) = integration {
+        if across.saturating_mul(along) > 10_000 || across == 0 || along == 0 {
+            return Err(Invalid::new(
+                "model.traction_integration",
+                Some(format!("{across} × {along}")),
+                "the grid needs 1 to 10 000 cells (across × along)",
+            ));
+        }
+    }
+    Ok(integration.unwrap_or_default())
 }
 
 /// `[model.mixed_lubrication]` (docs/model.md §3, model 5): needs the EHL traction
