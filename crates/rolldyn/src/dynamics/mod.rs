@@ -29,6 +29,7 @@
 
 mod ball_equations;
 mod ball_pass;
+mod block_split;
 pub mod checkpoint;
 mod coupling;
 pub mod drag;

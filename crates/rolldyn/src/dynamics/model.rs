@@ -28,9 +28,10 @@
 //! ([`super::drag`]), ring supports ([`super::supports`]); the energy
 //! bookkeeping is in [`super::energy`], output quantities in
 //! [`super::outputs`]; a ball's equations sum its contacts' shares in
-//! `dynamics::ball_equations`. Gravity (optional) acts along −z.
+//! `dynamics::ball_equations`, and the block structure the implicit
+//! integrators use is in `dynamics::block_split`. Gravity (optional) acts
+//! along −z.
 
-use super::ball_equations::{BallContact, ContactShare, Shares};
 use super::ball_pass::BallPass;
 use super::coupling::BallCoupling;
 use super::layout::StateLayout;
@@ -42,7 +43,6 @@ use crate::contact::{ContactTable, GrooveCircle, HertzModel, RacewayContactModel
 use crate::error::{InvalidParameter, require_non_negative, require_positive};
 use crate::geometry::Raceway;
 use crate::geometry::{BearingGeometry, RingKind};
-use crate::integrate::linear::BlockLayout;
 use crate::integrate::{BlockSplit, EnergyBalance, OdeSystem};
 use crate::kinematics::cage_speed_ratio;
 use crate::lubrication::Supply;
@@ -402,7 +402,7 @@ impl BearingModel {
     /// Derivatives of the border states (rings, cage, energy accumulators;
     /// into `dy`, which starts at the inner ring's first state) for the
     /// summed ball couplings.
-    fn border_rhs_with(
+    pub(super) fn border_rhs_with(
         &self,
         t: f64,
         y: &[f64],
@@ -578,97 +578,6 @@ impl BearingModel {
         let mut power = Dissipation::default();
         self.rhs_with(t, y, dy, Some(&mut power));
         power
-    }
-}
-
-impl BlockSplit for BearingModel {
-    fn block_layout(&self) -> BlockLayout {
-        BlockLayout {
-            blocks: self.layout.balls,
-            block_size: self.layout.ball_len(),
-            border: self.layout.len() - self.layout.ring(),
-        }
-    }
-
-    fn coupling_len(&self) -> usize {
-        BallCoupling::LEN
-    }
-
-    fn parallel(&self) -> bool {
-        self.ball_pass.is_parallel()
-    }
-
-    fn block_rhs(
-        &self,
-        t: f64,
-        y: &[f64],
-        block: usize,
-        dy_block: &mut [f64],
-        coupling: &mut [f64],
-    ) {
-        self.block_rhs_from(t, y, block, dy_block, coupling, Shares::Evaluate(None));
-    }
-
-    fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
-        let (inner, _) = self.ring_motion(t, y);
-        self.border_rhs_with(t, y, &inner, &BallCoupling::read(coupling), dy_border, None);
-    }
-
-    fn memo_len(&self) -> usize {
-        ContactShare::MEMO_LEN
-    }
-
-    fn block_rhs_memo(
-        &self,
-        t: f64,
-        y: &[f64],
-        block: usize,
-        dy_block: &mut [f64],
-        coupling: &mut [f64],
-        memo: &mut [f64],
-    ) {
-        let shares = Shares::Evaluate(Some(memo));
-        self.block_rhs_from(t, y, block, dy_block, coupling, shares);
-    }
-
-    /// Only the contact the border state touches is evaluated again
-    /// (`dynamics::ball_equations`).
-    fn block_rhs_border_column(
-        &self,
-        t: f64,
-        y: &[f64],
-        block: usize,
-        column: usize,
-        memo: &[f64],
-        dy_block: &mut [f64],
-        coupling: &mut [f64],
-    ) {
-        let shares = Shares::Reuse {
-            memo,
-            contact: BallContact::touched_by(&self.layout, column),
-        };
-        self.block_rhs_from(t, y, block, dy_block, coupling, shares);
-    }
-
-    /// Frozen states (planar motion, a locked cage whirl, a fixed outer
-    /// ring) never change, and nothing reads the energy accumulators.
-    fn inert(&self, state: usize) -> bool {
-        let l = self.layout;
-        let p = &self.params;
-        if state < l.ring() {
-            let k = state % l.ball_len();
-            return p.planar && matches!(k, 0 | 3 | 7 | 8);
-        }
-        if state < l.outer() {
-            return p.planar && matches!(state - l.ring(), 0 | 3 | 4 | 5 | 8 | 9);
-        }
-        if state < l.cage() {
-            return p.outer_ring.is_none();
-        }
-        if state < l.work() {
-            return !p.cage.whirl && matches!(state - l.cage(), 0 | 1 | 3 | 4);
-        }
-        true
     }
 }
 
