@@ -47,6 +47,9 @@ pub struct RunData {
     /// Time and the inner ring's vertical acceleration over the averaging
     /// window, unreduced, for a run with a spall ([`crate::vibration`]).
     pub vibration: Option<crate::vibration::Record>,
+    /// The same over the whole run (its last
+    /// [`crate::vibration::MAX_SAMPLES`]) when the shaft speed changes.
+    pub run_up: Option<crate::vibration::Record>,
 }
 
 impl RunData {
@@ -66,12 +69,12 @@ impl RunData {
             .find(|s| s.column(name).is_some_and(|c| !c.is_empty()))
     }
 
-    fn channel(&self, name: &str) -> Option<&[f64]> {
+    pub(crate) fn channel(&self, name: &str) -> Option<&[f64]> {
         self.series_of(name)?.column(name)
     }
 
     /// The times of channel `name`'s samples.
-    fn time_of(&self, name: &str) -> &[f64] {
+    pub(crate) fn time_of(&self, name: &str) -> &[f64] {
         self.series_of(name)
             .and_then(|s| s.column("time_s"))
             .unwrap_or(&[])
@@ -156,12 +159,23 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
     } else {
         None
     };
-    let spalled = summary.get("envelope_lines").is_some_and(|v| !v.is_null());
-    let vibration = if spalled {
+    let read_vibration = |window: [f64; 2]| {
         crate::vibration::read_window(&series_path, window).map_err(|e| ReportError::Read {
             path: series_path.display().to_string(),
             message: e.to_string(),
-        })?
+        })
+    };
+    let spalled = summary.get("envelope_lines").is_some_and(|v| !v.is_null());
+    let vibration = if spalled {
+        read_vibration(window)?
+    } else {
+        None
+    };
+    let ramp = series
+        .column("inner_ring_speed_rpm")
+        .is_some_and(crate::vibration::is_ramp);
+    let run_up = if ramp {
+        read_vibration([f64::NEG_INFINITY, f64::INFINITY])?
     } else {
         None
     };
@@ -179,6 +193,7 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
         record,
         case_description,
         vibration,
+        run_up,
     }))
 }
 

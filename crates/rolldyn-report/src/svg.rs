@@ -80,6 +80,102 @@ pub struct Plot {
     pub series: Vec<Series>,
     /// Same scale on both axes (orbits).
     pub equal_aspect: bool,
+    /// A heat map under the series (a spectrogram); its extent sets the
+    /// axes.
+    pub heat: Option<HeatMap>,
+}
+
+/// Values on a grid of cells drawn as coloured rectangles (viridis, from
+/// `floor` to 0): a spectrogram's levels in dB below its largest.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HeatMap {
+    /// Cell edges along x (one more than the columns).
+    pub x_edges: Vec<f64>,
+    /// Cell edges along y (one more than the rows).
+    pub y_edges: Vec<f64>,
+    /// Column by column, each from the lowest y up: levels ≤ 0.
+    pub levels: Vec<f64>,
+    /// The level drawn darkest (below it: the same colour).
+    pub floor: f64,
+    /// The colour bar's label (the levels' unit).
+    pub label: String,
+}
+
+/// Viridis (van der Walt & Smith, matplotlib's default) at 9 levels.
+const VIRIDIS: [(f64, f64, f64); 9] = [
+    (68.0, 1.0, 84.0),
+    (71.0, 45.0, 123.0),
+    (59.0, 82.0, 139.0),
+    (44.0, 114.0, 142.0),
+    (33.0, 145.0, 140.0),
+    (40.0, 174.0, 128.0),
+    (94.0, 201.0, 98.0),
+    (173.0, 220.0, 48.0),
+    (253.0, 231.0, 37.0),
+];
+
+/// The viridis colour of `u` in [0, 1] as `#rrggbb`.
+fn viridis(u: f64) -> String {
+    let u = if u.is_finite() {
+        u.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let x = u * (VIRIDIS.len() - 1) as f64;
+    let k = (x.floor() as usize).min(VIRIDIS.len() - 2);
+    let f = x - k as f64;
+    let (a, b) = (VIRIDIS[k], VIRIDIS[k + 1]);
+    let mix = |p: f64, q: f64| (p + f * (q - p)).round() as u8;
+    format!(
+        "#{:02x}{:02x}{:02x}",
+        mix(a.0, b.0),
+        mix(a.1, b.1),
+        mix(a.2, b.2)
+    )
+}
+
+impl HeatMap {
+    /// The cells as `<rect>`s in `frame`, and a colour bar in the plot's
+    /// top-right corner.
+    fn to_svg(&self, frame: &Frame, out: &mut String) {
+        let rows = self.y_edges.len().saturating_sub(1);
+        let _ = write!(out, r#"<g class="heat" shape-rendering="crispEdges">"#);
+        for (i, x) in self.x_edges.windows(2).enumerate() {
+            for (k, y) in self.y_edges.windows(2).enumerate() {
+                let Some(&level) = self.levels.get(i * rows + k) else {
+                    continue;
+                };
+                let (px0, px1) = (frame.px(x[0]), frame.px(x[1]));
+                let (py0, py1) = (frame.py(y[1]), frame.py(y[0]));
+                let _ = write!(
+                    out,
+                    r#"<rect x="{px0:.1}" y="{py0:.1}" width="{:.1}" height="{:.1}" fill="{}"/>"#,
+                    (px1 - px0).max(0.1),
+                    (py1 - py0).max(0.1),
+                    viridis(1.0 - level / self.floor)
+                );
+            }
+        }
+        out.push_str("</g>");
+        // Colour bar: 60 px wide, the floor on the left, 0 on the right.
+        let (x0, y0) = (WIDTH - RIGHT - 150.0, TOP + 6.0);
+        for k in 0..30 {
+            let _ = write!(
+                out,
+                r#"<rect x="{:.1}" y="{y0:.1}" width="2.1" height="8" fill="{}"/>"#,
+                x0 + 2.0 * k as f64,
+                viridis(k as f64 / 29.0)
+            );
+        }
+        let _ = write!(
+            out,
+            r#"<text x="{:.1}" y="{:.1}" class="legend heat-label">{} {}…0</text>"#,
+            x0 + 64.0,
+            y0 + 8.0,
+            escape(&self.label),
+            self.floor
+        );
+    }
 }
 
 impl Plot {
@@ -95,7 +191,14 @@ impl Plot {
             y_label: y_label.into(),
             series: Vec::new(),
             equal_aspect: false,
+            heat: None,
         }
+    }
+
+    /// Adds a heat map under the series.
+    pub fn with_heat(mut self, heat: HeatMap) -> Self {
+        self.heat = Some(heat);
+        self
     }
 
     /// Adds a series.
@@ -104,13 +207,14 @@ impl Plot {
         self
     }
 
-    /// Whether any series has a finite point to draw.
+    /// Whether any series has a finite point to draw, or there is a heat map.
     pub fn has_data(&self) -> bool {
-        self.series.iter().any(|s| {
-            s.x.iter()
-                .zip(&s.y)
-                .any(|(x, y)| x.is_finite() && y.is_finite())
-        })
+        self.heat.as_ref().is_some_and(|h| !h.levels.is_empty())
+            || self.series.iter().any(|s| {
+                s.x.iter()
+                    .zip(&s.y)
+                    .any(|(x, y)| x.is_finite() && y.is_finite())
+            })
     }
 
     /// The plot as an `<svg>` element (well-formed XML).
@@ -147,6 +251,9 @@ impl Plot {
             LEFT + 0.5 * (WIDTH - LEFT - RIGHT),
             escape(&self.title)
         );
+        if let Some(heat) = &self.heat {
+            heat.to_svg(&frame, &mut out);
+        }
         // Grid and tick labels.
         for &t in &x_ticks {
             let px = frame.px(t);
@@ -256,6 +363,14 @@ impl Plot {
 
     /// Data ranges over the finite points (a unit range around a constant).
     fn ranges(&self) -> ((f64, f64), (f64, f64)) {
+        if let Some(h) = &self.heat {
+            let extent = |e: &[f64]| (e.first().copied(), e.last().copied());
+            if let ((Some(x0), Some(x1)), (Some(y0), Some(y1))) =
+                (extent(&h.x_edges), extent(&h.y_edges))
+            {
+                return (widen((x0, x1)), widen((y0, y1)));
+            }
+        }
         let mut x = (f64::INFINITY, f64::NEG_INFINITY);
         let mut y = (f64::INFINITY, f64::NEG_INFINITY);
         for s in &self.series {

@@ -1,15 +1,18 @@
-//! The vibration section of a run report, for a run with a spall: the
-//! inner ring's vertical acceleration over the averaging window as a
-//! diagnostics engineer reads a measured record (docs/signal.md): its
-//! RMS, peak, crest factor and kurtosis, the time signal, the amplitude
-//! spectrum and the envelope spectrum with the characteristic lines
-//! marked (f_c, BPFO, BPFI ± f_i, 2×BSF ± f_c; Randall & Antoni 2011's
-//! envelope analysis, the lines of `rolldyn::signal::lines`).
+//! The vibration section of a run report, for a run with a spall or a
+//! speed ramp: the inner ring's vertical acceleration as a diagnostics
+//! engineer reads a measured record (docs/signal.md). For a spall, over
+//! the averaging window: its RMS, peak, crest factor and kurtosis, the
+//! time signal, the amplitude spectrum and the envelope spectrum with the
+//! characteristic lines marked (f_c, BPFO, BPFI ± f_i, 2×BSF ± f_c;
+//! Randall & Antoni 2011's envelope analysis, the lines of
+//! `rolldyn::signal::lines`). For a run whose shaft speed changes (a
+//! run-up or coast-down), over the whole run: the spectrogram with the
+//! shaft, cage, BPFO and BPFI orders drawn over it (order tracking).
 
 use crate::run::RunData;
-use crate::svg::{Plot, Series};
+use crate::svg::{HeatMap, Plot, Series};
 use crate::{Section, cell};
-use rolldyn::signal::{CharacteristicFrequencies, Spectrum, Window};
+use rolldyn::signal::{CharacteristicFrequencies, Spectrogram, Spectrum, Window, spectrogram};
 use rolldyn::signal::{amplitude_spectrum, envelope_spectrum};
 use rolldyn_io::{InputError, float_columns, for_each_batch, read_schema};
 use std::collections::VecDeque;
@@ -97,9 +100,34 @@ fn marks(spectrum: &Spectrum, name: &str, frequencies: &[f64], up_to: f64) -> Se
     Series::markers(name, &x, &y)
 }
 
-/// The section: only for a run whose summary has envelope lines (a spall)
-/// and whose window holds at least 64 samples of [`CHANNEL`].
+/// The section: the defect's signature for a run whose summary has
+/// envelope lines (a spall), the spectrogram for a run whose speed
+/// changes; none when neither has 64 samples of [`CHANNEL`].
 pub fn section(data: &RunData) -> Option<Section> {
+    let defect = defect(data);
+    let run_up = run_up(data);
+    if defect.is_none() && run_up.is_none() {
+        return None;
+    }
+    let title = if defect.is_some() {
+        "Vibration: the defect's signature"
+    } else {
+        "Vibration: the run-up spectrogram"
+    };
+    let mut section = Section::new("vibration", title);
+    for part in [defect, run_up].into_iter().flatten() {
+        section.blocks.extend(part.blocks);
+    }
+    Some(section)
+}
+
+/// The sample rate of a record's times \[Hz\].
+fn rate_of(time: &[f64]) -> f64 {
+    (time.len() - 1) as f64 / (time[time.len() - 1] - time[0])
+}
+
+/// The spall's part: statistics, lines and spectra of the averaging window.
+fn defect(data: &RunData) -> Option<Section> {
     let lines = data
         .summary
         .get("envelope_lines")
@@ -109,7 +137,7 @@ pub fn section(data: &RunData) -> Option<Section> {
         return None;
     }
     let (first, last) = (time[0], time[time.len() - 1]);
-    let rate = (time.len() - 1) as f64 / (last - first);
+    let rate = rate_of(time);
     let lines_at = characteristic(data)?;
     let [rms, peak, crest, kurtosis] = statistics(record);
     let spectrum = amplitude_spectrum(record, rate, Window::Hann).ok()?;
@@ -217,6 +245,158 @@ pub fn section(data: &RunData) -> Option<Section> {
     )
 }
 
+/// Relative change of the shaft speed over a run, of its largest, above
+/// which the report shows the spectrogram: a run-up or coast-down.
+pub const RAMP_SPEED_CHANGE: f64 = 0.05;
+
+/// Whether the shaft speeds `speed_rpm` of a run change by more than
+/// [`RAMP_SPEED_CHANGE`] of the largest.
+pub fn is_ramp(speed_rpm: &[f64]) -> bool {
+    let (lo, hi) = speed_rpm
+        .iter()
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+            (lo.min(v), hi.max(v))
+        });
+    hi > 0.0 && hi - lo > RAMP_SPEED_CHANGE * hi.abs().max(lo.abs())
+}
+
+/// Most columns and rows of the drawn spectrogram (cells are pooled to
+/// their largest amplitude beyond).
+const HEAT_COLUMNS: usize = 120;
+const HEAT_ROWS: usize = 100;
+/// The darkest level drawn \[dB below the reference\].
+const HEAT_FLOOR_DB: f64 = -60.0;
+/// The rank of the cell that sets 0 dB: the 99.5th percentile.
+const HEAT_REFERENCE_RANK: f64 = 0.995;
+
+/// The spectrogram of a record starting at `start` \[s\] as a heat map of
+/// levels in dB, pooled to at most [`HEAT_COLUMNS`] × [`HEAT_ROWS`] cells
+/// (each the largest it covers), 0 dB at the cells' 99.5th percentile
+/// (brighter cells saturate), down to [`HEAT_FLOOR_DB`].
+pub fn heat_map(sg: &Spectrogram, start: f64) -> HeatMap {
+    let (columns, rows) = (sg.time.len(), sg.frequency.len());
+    let pool_x = columns.div_ceil(HEAT_COLUMNS).max(1);
+    let pool_y = rows.div_ceil(HEAT_ROWS).max(1);
+    let hop = if columns > 1 {
+        sg.time[1] - sg.time[0]
+    } else {
+        2.0 * sg.time.first().copied().unwrap_or(0.5)
+    };
+    let df = if rows > 1 {
+        sg.frequency[1] - sg.frequency[0]
+    } else {
+        1.0
+    };
+    let edges = |centres: &[f64], pool: usize, width: f64, lowest: f64| -> Vec<f64> {
+        let mut e: Vec<f64> = centres
+            .iter()
+            .step_by(pool)
+            .map(|c| (c - 0.5 * width).max(lowest))
+            .collect();
+        e.push(centres.last().map_or(0.0, |c| c + 0.5 * width));
+        e
+    };
+    let x_edges: Vec<f64> = edges(&sg.time, pool_x, hop, f64::NEG_INFINITY)
+        .into_iter()
+        .map(|t| start + t)
+        .collect();
+    let y_edges = edges(&sg.frequency, pool_y, df, 0.0);
+    let mut pooled = Vec::with_capacity((x_edges.len() - 1) * (y_edges.len() - 1));
+    for cols in sg.value.chunks(pool_x) {
+        for k in (0..rows).step_by(pool_y) {
+            pooled.push(
+                cols.iter()
+                    .flat_map(|spectrum| &spectrum[k..(k + pool_y).min(rows)])
+                    .copied()
+                    .fold(0.0, f64::max),
+            );
+        }
+    }
+    // 0 dB at the cells' 99.5th percentile: a start transient's few bright
+    // cells saturate instead of darkening the rest of the run.
+    let mut sorted = pooled.clone();
+    sorted.sort_by(f64::total_cmp);
+    let reference = sorted
+        .get((HEAT_REFERENCE_RANK * sorted.len() as f64) as usize)
+        .or(sorted.last())
+        .copied()
+        .unwrap_or(1.0)
+        .max(f64::MIN_POSITIVE);
+    let levels = pooled
+        .iter()
+        .map(|v| (20.0 * (v / reference).log10()).clamp(HEAT_FLOOR_DB, 0.0))
+        .collect();
+    HeatMap {
+        x_edges,
+        y_edges,
+        levels,
+        floor: HEAT_FLOOR_DB,
+        label: "dB".into(),
+    }
+}
+
+/// The run-up part: the spectrogram of the whole record with the orders.
+fn run_up(data: &RunData) -> Option<Section> {
+    let (time, record) = data.run_up.as_ref()?;
+    if record.len() < 64 {
+        return None;
+    }
+    let rate = rate_of(time);
+    // About 64 columns at half overlap: segments of a power of two.
+    let segment = (2 * record.len() / 65)
+        .next_power_of_two()
+        .clamp(32, 8192)
+        .min(record.len());
+    let sg = spectrogram(record, rate, segment, 0.5, Window::Hann).ok()?;
+    let heat = heat_map(&sg, time[0]);
+    let top = heat.y_edges.last().copied().unwrap_or(0.5 * rate);
+    let mut plot = Plot::new(
+        "Spectrogram of the inner ring's vertical acceleration",
+        "time [s]",
+        "frequency [Hz]",
+    )
+    .with_heat(heat);
+    let speed = data.channel("inner_ring_speed_rpm");
+    let speed_time = data.time_of("inner_ring_speed_rpm");
+    let mut orders = Vec::new();
+    if let (Some(speed), Some(c)) = (speed, characteristic(data)) {
+        let shaft = c.shaft.max(f64::MIN_POSITIVE);
+        for (name, order) in [
+            ("1× shaft", 1.0),
+            ("cage", c.cage / shaft),
+            ("BPFO", c.bpfo / shaft),
+            ("BPFI", c.bpfi / shaft),
+        ] {
+            // Drawn where inside the plot: beyond the top the line breaks.
+            let f: Vec<f64> = speed
+                .iter()
+                .map(|n| {
+                    let f = order * n / 60.0;
+                    if f <= top { f } else { f64::NAN }
+                })
+                .collect();
+            plot = plot.with(Series::line(name, speed_time, &f));
+            orders.push(format!("{name} {order:.3}"));
+        }
+    }
+    Some(
+        Section::new("vibration", "")
+            .paragraph(format!(
+                "The shaft speed changes over the run, so the spectrum changes with it: the spectrogram of the inner ring's vertical acceleration over the whole run ({} samples at {} Hz; Hann segments of {} samples overlapping by half; levels in dB, 0 dB at the 99.5th percentile of the cells so that a start transient saturates rather than darkens the rest, down to {HEAT_FLOOR_DB} dB). Lines follow the orders of the shaft speed ({}): a component that rises with them is speed-locked, one that stays at a frequency is a resonance.",
+                record.len(),
+                cell(Some(rate)),
+                segment,
+                if orders.is_empty() {
+                    "not known for this run".to_string()
+                } else {
+                    orders.join(", ")
+                }
+            ))
+            .figure(plot),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -236,5 +416,48 @@ mod tests {
             .map(|k| if k % 1000 == 0 { 10.0 } else { 0.0 })
             .collect();
         assert!(statistics(&impacts)[3] > 100.0);
+    }
+
+    #[test]
+    fn the_heat_map_puts_a_sine_in_its_row_and_pools_to_its_limits() {
+        // 1 kHz at 16 kHz, 4 s: 1024-sample segments, 125 columns.
+        let rate = 16_000.0;
+        let record: Vec<f64> = (0..64_000)
+            .map(|k| (std::f64::consts::TAU * 1000.0 * k as f64 / rate).sin())
+            .collect();
+        let sg = spectrogram(&record, rate, 1024, 0.5, Window::Hann).unwrap();
+        let heat = heat_map(&sg, 2.0);
+        let (columns, rows) = (heat.x_edges.len() - 1, heat.y_edges.len() - 1);
+        assert!(
+            columns <= HEAT_COLUMNS && rows <= HEAT_ROWS,
+            "{columns} × {rows}"
+        );
+        assert_eq!(heat.levels.len(), columns * rows);
+        assert!(
+            (heat.x_edges[0] - 2.0).abs() < 0.05,
+            "starts at the record's start"
+        );
+        assert!(
+            heat.levels
+                .iter()
+                .all(|&l| (HEAT_FLOOR_DB..=0.0).contains(&l))
+        );
+        // In every column the loudest row holds 1 kHz, at 0 dB within 1 dB
+        // (the sine's cells are more than half a percent of the cells).
+        for column in heat.levels.chunks(rows) {
+            let (k, top) = column
+                .iter()
+                .enumerate()
+                .fold((0, f64::MIN), |a, (k, &l)| if l > a.1 { (k, l) } else { a });
+            assert!(top > -1.0, "{top}");
+            assert!(heat.y_edges[k] <= 1000.0 && 1000.0 <= heat.y_edges[k + 1]);
+        }
+    }
+
+    #[test]
+    fn a_ramp_is_a_speed_change_of_more_than_five_percent() {
+        assert!(is_ramp(&[1000.0, 1100.0]));
+        assert!(!is_ramp(&[1000.0, 1040.0, f64::NAN]));
+        assert!(!is_ramp(&[]));
     }
 }

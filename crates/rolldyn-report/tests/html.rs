@@ -319,3 +319,64 @@ fn a_spalled_run_has_a_vibration_section() {
     let html = report_for(&dir, None).unwrap().to_html();
     assert!(!check_page(&html).0.contains(&"vibration".to_string()));
 }
+
+/// A run whose shaft speed changes gets the run-up spectrogram: a heat map
+/// of the whole record with the shaft, cage, BPFO and BPFI orders drawn
+/// over it; a run at constant speed does not.
+#[test]
+fn a_speed_ramp_has_a_spectrogram() {
+    let dir = temp_dir("ramp");
+    synthetic_run(&dir);
+    // 600 → 1800 rpm in 1 s (or 1800 rpm throughout); the acceleration
+    // rings at BPFO (order 3.6).
+    let series = |ramp: bool| {
+        let mut s = TimeSeries::default();
+        s.channel("time_s", "s");
+        s.channel("inner_ring_speed_rpm", "rpm");
+        s.channel("inner_ring_acceleration_z_m_s2", "m/s^2");
+        let rate = 8_000.0;
+        let mut phase = 0.0;
+        for k in 0..8000 {
+            let t = k as f64 / rate;
+            let rpm = if ramp { 600.0 + 1200.0 * t } else { 1800.0 };
+            phase += std::f64::consts::TAU * 3.6 * rpm / 60.0 / rate;
+            s.push(&[t, rpm, phase.sin()]);
+        }
+        s
+    };
+    let s = series(true);
+    write_parquet(&dir.join("timeseries.parquet"), &s, &[]).unwrap();
+    let mut summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let extra = serde_json::json!({
+        "averaging_window_s": [0.5, 1.0],
+        "inner_ring_speed_rpm": 1800.0,
+        "mean_cage_speed_rpm": 720.0,
+        "ball_count": 9,
+        "ball_diameter_m": 0.00794,
+        "pitch_diameter_m": 0.039,
+        "mean_contact_angle_inner_deg": 0.0,
+        "mean_contact_angle_outer_deg": 0.0,
+    });
+    for (k, v) in extra.as_object().unwrap() {
+        summary[k] = v.clone();
+    }
+    std::fs::write(dir.join("summary.json"), summary.to_string()).unwrap();
+    let html = report_for(&dir, None).unwrap().to_html();
+    let (sections, _) = check_page(&html);
+    assert!(sections.contains(&"vibration".to_string()), "{sections:?}");
+    assert!(html.contains("Vibration: the run-up spectrogram"));
+    assert!(html.contains(r#"<g class="heat""#), "the heat map");
+    for order in ["1× shaft", "cage", "BPFO", "BPFI"] {
+        assert!(
+            html.contains(&format!(r#"data-series="{order}""#)),
+            "{order}"
+        );
+    }
+    assert!(!html.contains("Envelope spectrum"), "no spall: no envelope");
+    // At constant speed: no spectrogram, and so no vibration section.
+    write_parquet(&dir.join("timeseries.parquet"), &series(false), &[]).unwrap();
+    let html = report_for(&dir, None).unwrap().to_html();
+    assert!(!check_page(&html).0.contains(&"vibration".to_string()));
+    std::fs::remove_dir_all(&dir).ok();
+}
