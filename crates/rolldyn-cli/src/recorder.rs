@@ -217,9 +217,9 @@ impl Channels {
         let l = model.layout();
         let (c, r) = (l.cage(), l.ring());
         let (drive, dissipated) = model.work(y);
-        // Accelerations and the dissipated power by component: one
-        // evaluation of the equations of motion per sample.
-        let power = model.rhs_with_power(t, y, &mut self.derivative);
+        // Accelerations, the dissipated power by component and the
+        // contacts: one evaluation of the equations of motion per sample.
+        let power = model.rhs_with_samples(t, y, &mut self.derivative, contacts);
         let dy = &self.derivative;
         let o = l.outer();
         let housing = model
@@ -272,7 +272,6 @@ impl Channels {
             model.energy(t, y).total(),
             model.film_work(y),
         ]);
-        model.contact_samples(t, y, contacts);
         row.push(model.pure_rolling_ratio(contacts, y));
         crate::power_channels::push(row, &power, model);
         for (j, c) in contacts.iter().enumerate().take(self.balls) {

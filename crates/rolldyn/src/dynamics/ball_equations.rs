@@ -22,7 +22,7 @@ use super::coupling::BallCoupling;
 use super::film::FilmWork;
 use super::layout::StateLayout;
 use super::model::{BallMotion, BearingModel, RingMotion};
-use super::race_contact::Want;
+use super::race_contact::{ContactOutput, ContactSample, Want};
 use crate::power::Dissipation;
 use nalgebra::Vector3;
 
@@ -110,7 +110,8 @@ pub(super) enum Shares<'a> {
 impl BearingModel {
     /// Ball j's state derivatives into `dy` and its coupling to the border.
     /// `films_power`: also the films' work (dynamics::film); `sink`: the
-    /// contacts' losses by mechanism.
+    /// contacts' losses by mechanism; `sample`: the raceway contacts'
+    /// output quantities.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn ball_rhs(
         &self,
@@ -122,6 +123,7 @@ impl BearingModel {
         dy: &mut [f64],
         films_power: bool,
         sink: Option<&mut Dissipation>,
+        sample: Option<&mut ContactSample>,
     ) -> BallCoupling {
         self.ball_rhs_with(
             t,
@@ -130,7 +132,7 @@ impl BearingModel {
             (inner, outer),
             dy,
             films_power,
-            sink,
+            (sink, sample),
             Shares::Evaluate(None),
         )
     }
@@ -147,8 +149,17 @@ impl BearingModel {
         shares: Shares<'_>,
     ) {
         let (inner, outer) = self.ring_motion(t, y);
-        self.ball_rhs_with(t, block, y, (&inner, &outer), dy_block, false, None, shares)
-            .write(coupling);
+        self.ball_rhs_with(
+            t,
+            block,
+            y,
+            (&inner, &outer),
+            dy_block,
+            false,
+            (None, None),
+            shares,
+        )
+        .write(coupling);
     }
 
     /// [`Self::ball_rhs`] with the contact shares from `shares`.
@@ -161,7 +172,7 @@ impl BearingModel {
         (inner, outer): (&RingMotion, &RingMotion),
         dy: &mut [f64],
         films_power: bool,
-        mut sink: Option<&mut Dissipation>,
+        (mut sink, mut sample): (Option<&mut Dissipation>, Option<&mut ContactSample>),
         shares: Shares<'_>,
     ) -> BallCoupling {
         let l = self.layout;
@@ -184,11 +195,27 @@ impl BearingModel {
         };
         let inner_share = match kept(BallContact::Inner) {
             Some(share) => share,
-            None => self.race_share(j, inner, &ball, 0, &mut film_work, sink.as_deref_mut()),
+            None => self.race_share(
+                j,
+                inner,
+                &ball,
+                0,
+                &mut film_work,
+                sink.as_deref_mut(),
+                sample.as_deref_mut().map(|s| &mut s.inner),
+            ),
         };
         let outer_share = match kept(BallContact::Outer) {
             Some(share) => share,
-            None => self.race_share(j, outer, &ball, 1, &mut film_work, sink.as_deref_mut()),
+            None => self.race_share(
+                j,
+                outer,
+                &ball,
+                1,
+                &mut film_work,
+                sink.as_deref_mut(),
+                sample.as_deref_mut().map(|s| &mut s.outer),
+            ),
         };
         let pocket_share = match kept(BallContact::Pocket) {
             Some(share) => share,
@@ -269,8 +296,10 @@ impl BearingModel {
 
     /// Ball j's share of its contact with `ring` (0: inner, whose moment
     /// about the ring centre the share carries; 1: outer); its film work
-    /// goes to `film_work`, its losses to `sink`.
+    /// goes to `film_work`, its losses to `sink`, its output quantities to
+    /// `output` (left as they are when the contact is open).
     #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
     fn race_share(
         &self,
         j: usize,
@@ -279,6 +308,7 @@ impl BearingModel {
         k: usize,
         film_work: &mut [Option<FilmWork>; 2],
         sink: Option<&mut Dissipation>,
+        output: Option<&mut ContactOutput>,
     ) -> ContactShare {
         let table = if k == 0 {
             &self.inner_table
@@ -286,10 +316,18 @@ impl BearingModel {
             &self.outer_table
         };
         // Read in place (a move of the whole contact costs a copy).
-        let contact = self.race_contact(ring, table, &self.episodes[j][k], ball, Want::Forces);
+        let want = if output.is_some() {
+            Want::Output
+        } else {
+            Want::Forces
+        };
+        let contact = self.race_contact(ring, table, &self.episodes[j][k], ball, want);
         let Some(cn) = &contact else {
             return ContactShare::default();
         };
+        if let Some(o) = output {
+            *o = cn.output;
+        }
         film_work[k] = cn.film_work;
         if let Some(d) = sink {
             if k == 0 { &mut d.inner } else { &mut d.outer }.add(&cn.losses);

@@ -9,9 +9,10 @@
 //! sums them: the right-hand side is bit-identical whatever the number of
 //! threads, and whether the pass runs in parallel at all (tests below).
 //!
-//! The dissipated power by component (once per output sample) goes the
-//! same way: each ball's share in its slot, summed in ball order into the
-//! caller's sink, which is what the serial pass accumulates.
+//! The dissipated power by component and the contacts' output quantities
+//! (once per output sample) go the same way: each ball's share in its
+//! slot, the power summed in ball order into the caller's sink, which is
+//! what the serial pass accumulates, the contacts copied to the caller's.
 //!
 //! Parallel only where it pays: a pass whose contacts integrate traction
 //! over a grid (EHL, traction curve or stress law on the strip grid, or
@@ -20,6 +21,7 @@
 //! ball) stays serial. The slots are allocated once, with the model.
 
 use super::coupling::BallCoupling;
+use super::race_contact::ContactSample;
 use crate::power::Dissipation;
 use rayon::prelude::*;
 use std::sync::{Mutex, PoisonError};
@@ -32,7 +34,7 @@ const MIN_PARALLEL_BALLS: usize = 4;
 pub(super) struct BallPass {
     /// Whether the balls are evaluated across threads.
     parallel: bool,
-    slots: Mutex<Vec<(BallCoupling, Dissipation)>>,
+    slots: Mutex<Vec<(BallCoupling, Dissipation, ContactSample)>>,
 }
 
 impl BallPass {
@@ -51,28 +53,39 @@ impl BallPass {
         self.parallel && rayon::current_num_threads() > 1
     }
 
-    /// Runs `ball(j, dy_j, sink)` for every ball (its derivatives go into
-    /// `dy_balls`' j-th chunk of `ball_len`, its dissipation into `sink`
-    /// when given) and returns the sum of the couplings, added in ball
-    /// order.
+    /// Runs `ball(j, dy_j, sink, sample)` for every ball (its derivatives
+    /// go into `dy_balls`' j-th chunk of `ball_len`, its dissipation into
+    /// `sink` and its contacts into `samples[j]` when given) and returns
+    /// the sum of the couplings, added in ball order.
     pub(super) fn sum<F>(
         &self,
         dy_balls: &mut [f64],
         ball_len: usize,
         mut sink: Option<&mut Dissipation>,
+        mut samples: Option<&mut [ContactSample]>,
         ball: F,
     ) -> BallCoupling
     where
-        F: Fn(usize, &mut [f64], Option<&mut Dissipation>) -> BallCoupling + Sync,
+        F: Fn(
+                usize,
+                &mut [f64],
+                Option<&mut Dissipation>,
+                Option<&mut ContactSample>,
+            ) -> BallCoupling
+            + Sync,
     {
         let mut total = BallCoupling::default();
         if !self.is_parallel() {
             for (j, dy) in dy_balls.chunks_mut(ball_len).enumerate() {
-                total.add(&ball(j, dy, sink.as_deref_mut()));
+                let sample = samples.as_deref_mut().map(|s| {
+                    s[j] = ContactSample::default();
+                    &mut s[j]
+                });
+                total.add(&ball(j, dy, sink.as_deref_mut(), sample));
             }
             return total;
         }
-        let split = sink.is_some();
+        let (split, sampled) = (sink.is_some(), samples.is_some());
         // A poisoned lock only means another pass panicked mid-way; every
         // slot is overwritten before it is read.
         let mut slots = self.slots.lock().unwrap_or_else(PoisonError::into_inner);
@@ -80,14 +93,18 @@ impl BallPass {
             .par_iter_mut()
             .zip(dy_balls.par_chunks_mut(ball_len))
             .enumerate()
-            .for_each(|(j, ((coupling, power), dy))| {
+            .for_each(|(j, ((coupling, power, sample), dy))| {
                 *power = Dissipation::default();
-                *coupling = ball(j, dy, split.then_some(power));
+                *sample = ContactSample::default();
+                *coupling = ball(j, dy, split.then_some(power), sampled.then_some(sample));
             });
-        for (coupling, power) in slots.iter() {
+        for (j, (coupling, power, sample)) in slots.iter().enumerate() {
             total.add(coupling);
             if let Some(sink) = sink.as_deref_mut() {
                 sink.add(power);
+            }
+            if let Some(samples) = samples.as_deref_mut() {
+                samples[j] = *sample;
             }
         }
         total
@@ -116,9 +133,18 @@ mod tests {
 
     /// Couplings whose sum depends on the order of addition in the last
     /// bits (magnitudes spread over 1e-8…1e8).
-    fn ball(j: usize, dy: &mut [f64], sink: Option<&mut Dissipation>) -> BallCoupling {
+    fn ball(
+        j: usize,
+        dy: &mut [f64],
+        sink: Option<&mut Dissipation>,
+        sample: Option<&mut ContactSample>,
+    ) -> BallCoupling {
         let x = (j as f64 * 0.7).sin() * 10f64.powi((j % 17) as i32 - 8);
         dy.fill(x);
+        if let Some(s) = sample {
+            s.inner.load = x;
+            s.outer.angle = -x;
+        }
         if let Some(d) = sink {
             d.inner.spin += x;
             d.outer.hysteresis += x / 3.0;
@@ -138,11 +164,15 @@ mod tests {
         }
     }
 
-    fn run(pass: &BallPass, balls: usize) -> (BallCoupling, Vec<f64>, Dissipation) {
+    fn run(
+        pass: &BallPass,
+        balls: usize,
+    ) -> (BallCoupling, Vec<f64>, Dissipation, Vec<ContactSample>) {
         let mut dy = vec![0.0; balls * 9];
         let mut power = Dissipation::default();
-        let total = pass.sum(&mut dy, 9, Some(&mut power), ball);
-        (total, dy, power)
+        let mut samples = vec![ContactSample::default(); balls];
+        let total = pass.sum(&mut dy, 9, Some(&mut power), Some(&mut samples), ball);
+        (total, dy, power, samples)
     }
 
     fn bits(c: &BallCoupling) -> Vec<u64> {
@@ -154,16 +184,23 @@ mod tests {
     #[test]
     fn parallel_pass_is_bit_identical_to_the_serial_one_on_any_pool() {
         let balls = 40;
-        let (serial, dy_serial, power_serial) = run(&BallPass::new(balls, false), balls);
+        let (serial, dy_serial, power_serial, samples_serial) =
+            run(&BallPass::new(balls, false), balls);
+        assert!(
+            samples_serial
+                .iter()
+                .all(|s| s.inner.load == -s.outer.angle)
+        );
         let parallel = BallPass::new(balls, true);
         for threads in [1, 2, 3, 8] {
             let pool = rayon::ThreadPoolBuilder::new()
                 .num_threads(threads)
                 .build()
                 .unwrap();
-            let (total, dy, power) = pool.install(|| run(&parallel, balls));
+            let (total, dy, power, samples) = pool.install(|| run(&parallel, balls));
             assert_eq!(bits(&total), bits(&serial), "{threads} threads");
             assert_eq!(dy, dy_serial, "{threads} threads");
+            assert_eq!(samples, samples_serial, "{threads} threads");
             assert_eq!(
                 format!("{power:?}"),
                 format!("{power_serial:?}"),

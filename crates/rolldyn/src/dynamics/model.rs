@@ -36,7 +36,7 @@ use super::ball_pass::BallPass;
 use super::coupling::BallCoupling;
 use super::layout::StateLayout;
 use super::parameters::DynamicsParameters;
-use super::race_contact::Want;
+use super::race_contact::{ContactSample, Want};
 use crate::cage::GuideLand;
 use crate::contact::normal_law::ContactEpisode;
 use crate::contact::{ContactTable, GrooveCircle, HertzModel, RacewayContactModel, RingPose};
@@ -557,7 +557,14 @@ impl BearingModel {
 impl BearingModel {
     /// The equations of motion; with `sink`, also the dissipated power by
     /// component and the drive torque.
-    fn rhs_with(&self, t: f64, y: &[f64], dy: &mut [f64], mut sink: Option<&mut Dissipation>) {
+    fn rhs_with(
+        &self,
+        t: f64,
+        y: &[f64],
+        dy: &mut [f64],
+        mut sink: Option<&mut Dissipation>,
+        samples: Option<&mut [ContactSample]>,
+    ) {
         let l = self.layout;
         let (inner, outer) = self.ring_motion(t, y);
         let (dy_balls, border) = dy.split_at_mut(l.ring());
@@ -565,7 +572,10 @@ impl BearingModel {
             dy_balls,
             l.ball_len(),
             sink.as_deref_mut(),
-            |j, dy_ball, sink| self.ball_rhs(t, j, y, &inner, &outer, dy_ball, true, sink),
+            samples,
+            |j, dy_ball, sink, sample| {
+                self.ball_rhs(t, j, y, &inner, &outer, dy_ball, true, sink, sample)
+            },
         );
         self.border_rhs_with(t, y, &inner, &balls, border, sink);
     }
@@ -576,7 +586,29 @@ impl BearingModel {
     /// dissipated-energy accumulator, `dy[layout().work() + 1]`.
     pub fn rhs_with_power(&self, t: f64, y: &[f64], dy: &mut [f64]) -> Dissipation {
         let mut power = Dissipation::default();
-        self.rhs_with(t, y, dy, Some(&mut power));
+        self.rhs_with(t, y, dy, Some(&mut power), None);
+        power
+    }
+
+    /// [`Self::rhs_with_power`] and every ball's contacts into `samples`
+    /// (one entry per ball, as [`Self::contact_samples`]) from the same
+    /// evaluation: what an output sample needs, in one pass over the balls
+    /// (with fewer entries than balls, two passes).
+    pub fn rhs_with_samples(
+        &self,
+        t: f64,
+        y: &[f64],
+        dy: &mut [f64],
+        samples: &mut [ContactSample],
+    ) -> Dissipation {
+        let balls = self.layout.balls;
+        if samples.len() < balls {
+            let power = self.rhs_with_power(t, y, dy);
+            self.contact_samples(t, y, samples);
+            return power;
+        }
+        let mut power = Dissipation::default();
+        self.rhs_with(t, y, dy, Some(&mut power), Some(&mut samples[..balls]));
         power
     }
 }
@@ -591,7 +623,7 @@ impl OdeSystem for BearingModel {
     }
 
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        self.rhs_with(t, y, dy, None);
+        self.rhs_with(t, y, dy, None, None);
     }
 
     fn blocks(&self) -> Option<&dyn BlockSplit> {

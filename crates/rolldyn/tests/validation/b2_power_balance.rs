@@ -6,6 +6,9 @@
 //! balance drifted by −1 W: integration error (
 //! docs/performance.md).
 //!
+//! It also checks that an output sample's single pass
+//! (`rhs_with_samples`) equals `rhs_with_power` and `contact_samples`.
+//!
 //! Case: the 7008C with EHL traction on the 12 × 6 grid, ball and cage
 //! drag, an outer-ring guide land (Deng et al. 2022 Table 1), pocket friction and
 //! F_z = 100 N with F_x = 200 N; the cage displaced and turned so that
@@ -29,6 +32,15 @@ pub fn power_residual(model: &BearingModel, t: f64, y: &[f64]) -> (f64, f64, Vec
     let mut f = vec![0.0; n];
     let power = model.rhs_with_power(t, y, &mut f);
     let l = model.layout();
+    // An output sample's single pass gives the same bits as the two.
+    let mut joint = vec![0.0; n];
+    let mut samples = vec![Default::default(); l.balls];
+    let joint_power = model.rhs_with_samples(t, y, &mut joint, &mut samples);
+    let mut separate = vec![Default::default(); l.balls];
+    model.contact_samples(t, y, &mut separate);
+    assert_eq!(joint, f);
+    assert_eq!(format!("{joint_power:?}"), format!("{power:?}"));
+    assert_eq!(samples, separate);
     let w = l.work();
     let eps = 1e-9;
     let along = |s: f64| -> Vec<f64> { y.iter().zip(&f).map(|(y, f)| y + s * f).collect() };
