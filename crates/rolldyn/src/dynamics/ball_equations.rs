@@ -214,7 +214,7 @@ impl BearingModel {
                 1,
                 &mut film_work,
                 sink.as_deref_mut(),
-                sample.as_deref_mut().map(|s| &mut s.outer),
+                sample.map(|s| &mut s.outer),
             ),
         };
         let pocket_share = match kept(BallContact::Pocket) {
