@@ -1,7 +1,8 @@
 //! How accurate a run is: the `accuracy` object of `summary.json`, the
 //! warning on stderr and the report's banner, and `run --verify` (the same
-//! case again at ten times tighter tolerances, and how much the summary's
-//! main quantities moved). docs/dynamics.md, "Accuracy at default
+//! case again at ten times tighter tolerances with the traction's grid
+//! refined two-fold each way, and how much the summary's main quantities
+//! moved). docs/dynamics.md, "Accuracy at default
 //! settings", explains the measures and their limits.
 
 use crate::Failure;
@@ -72,6 +73,10 @@ pub struct Verification {
     pub relative_tolerance: Option<f64>,
     /// Energy tolerance of the verifying run (null: off).
     pub energy_tolerance: Option<f64>,
+    /// The traction's integration grid of the verifying run, refined
+    /// two-fold each way, with the run's (null: no grid, e.g. traction at
+    /// the contact centre).
+    pub traction_grid: Option<String>,
     /// Where the verifying run was written.
     pub directory: String,
     /// Its wall time \[s\].
@@ -198,6 +203,7 @@ pub fn verify(
     reference: &Summary,
     directory: String,
     energy_tolerance: Option<f64>,
+    traction_grid: Option<String>,
 ) -> Verification {
     let mut changes = Vec::new();
     let mut worst: f64 = 0.0;
@@ -221,6 +227,7 @@ pub fn verify(
     Verification {
         relative_tolerance: reference.relative_tolerance,
         energy_tolerance,
+        traction_grid,
         directory,
         wall_time_s: reference.wall_time_s,
         energy_balance_relative_error: reference.energy_balance_relative_error,
@@ -230,10 +237,50 @@ pub fn verify(
     }
 }
 
+/// The overrides that refine a case's traction grid two-fold each way,
+/// and its description: FASTSIM's strips and elements, or a stress law's
+/// strip grid (left alone beyond the case's limits: FASTSIM's
+/// [`rolldyn::traction::fastsim::MAX_DIVISIONS`], 10 000 grid cells).
+fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<String>, String)> {
+    use rolldyn::traction::{TractionIntegration, TractionModel, fastsim::MAX_DIVISIONS};
+    match (&case.traction, case.traction_integration) {
+        (TractionModel::None, _) => None,
+        (TractionModel::Fastsim(f), _) => {
+            let (strips, elements) = (2 * f.strips, 2 * f.elements);
+            (strips.max(elements) <= MAX_DIVISIONS).then(|| {
+                (
+                    vec![
+                        format!("model.traction.strips={strips}"),
+                        format!("model.traction.elements={elements}"),
+                    ],
+                    format!(
+                        "FASTSIM {strips} × {elements} (run: {} × {})",
+                        f.strips, f.elements
+                    ),
+                )
+            })
+        }
+        (_, TractionIntegration::Grid { across, along }) => {
+            let (a, b) = (2 * across, 2 * along);
+            (a * b <= 10_000).then(|| {
+                (
+                    vec![
+                        format!("model.traction_integration.across={a}"),
+                        format!("model.traction_integration.along={b}"),
+                    ],
+                    format!("{a} × {b} cells (run: {across} × {along})"),
+                )
+            })
+        }
+        (_, TractionIntegration::Centre) => None,
+    }
+}
+
 /// `--verify`: the run's case again, into `DIR/verify/`, at ten times
-/// tighter tolerances (the relative and energy tolerances, or rk4's step);
-/// the comparison goes into `summary.accuracy.verify` and `summary.json`
-/// is written again.
+/// tighter tolerances (the relative and energy tolerances, or rk4's step)
+/// and with the traction's grid refined two-fold each way; the comparison
+/// goes into `summary.accuracy.verify` and `summary.json` is written
+/// again.
 pub(crate) fn verify_run(
     record: &RunRecord,
     dir: &Path,
@@ -260,9 +307,19 @@ pub(crate) fn verify_run(
             (summary.max_step_s / VERIFY_TIGHTENING).max(1e-10)
         )),
     }
-    let case = tight
+    let mut case = tight
         .overrides
         .load_text(&tight.source, tight.case_text.as_deref())?;
+    let traction_grid = match refined_traction_grid(&case) {
+        Some((grid_sets, description)) => {
+            tight.overrides.set.extend(grid_sets);
+            case = tight
+                .overrides
+                .load_text(&tight.source, tight.case_text.as_deref())?;
+            Some(description)
+        }
+        None => None,
+    };
     let verify_dir = dir.join("verify");
     let quiet = RunOptions {
         resume: false,
@@ -281,7 +338,7 @@ pub(crate) fn verify_run(
     }
     if reference.status != "completed" {
         return Err(Failure::Model(format!(
-            "--verify: the run at ten times tighter tolerances in {} ended {}: {}",
+            "--verify: the run at ten times tighter tolerances and a finer traction grid in {} ended {}: {}",
             verify_dir.display(),
             reference.status,
             reference.error.unwrap_or_default()
@@ -292,6 +349,7 @@ pub(crate) fn verify_run(
         &reference,
         verify_dir.display().to_string(),
         reference.energy_tolerance,
+        traction_grid,
     ));
     let json = crate::finite::to_json(&*summary).map_err(|e| Failure::Internal(e.to_string()))?;
     write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes())
@@ -312,7 +370,12 @@ pub fn warning(accuracy: &Accuracy) -> Option<String> {
             .map(|c| format!("{} by {:.2} %", c.key, 100.0 * c.relative_change))
             .collect();
         lines.push(format!(
-            "warning: --verify: at ten times tighter tolerances {} moved beyond their limits ({} % for means and loads, {} % for vibration); the results are not converged at these settings",
+            "warning: --verify: at ten times tighter tolerances{} {} moved beyond their limits ({} % for means and loads, {} % for vibration); the results are not converged at these settings",
+            if v.traction_grid.is_some() {
+                " and a finer traction grid"
+            } else {
+                ""
+            },
             moved.join(", "),
             100.0 * VERIFY_LIMIT_MEANS,
             100.0 * VERIFY_LIMIT_VIBRATION

@@ -117,9 +117,9 @@ enum Command {
         #[arg(long)]
         report: bool,
         /// After the run, run the case again into DIR/verify/ at ten times
-        /// tighter tolerances and report how much the cage speed, loads,
-        /// power loss and vibration RMS moved (summary.json's
-        /// accuracy.verify)
+        /// tighter tolerances and a two-fold finer traction grid, and report
+        /// how much the cage speed, loads, power loss and vibration RMS
+        /// moved (summary.json's accuracy.verify)
         #[arg(long)]
         verify: bool,
         /// Run a sweep: speed=0rpm..20000rpm/5 (linear range) or
@@ -393,10 +393,13 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     (a.relative_change / a.limit).total_cmp(&(b.relative_change / b.limit))
                 });
                 emit(&format!(
-                    "verify ({}): at rtol {} the largest change is {}; energy balance error {:.2e}\n",
+                    "verify ({}): at rtol {}{} the largest change is {}; energy balance error {:.2e}\n",
                     v.status,
                     v.relative_tolerance
                         .map_or("-".into(), |r| format!("{r:e}")),
+                    v.traction_grid
+                        .as_ref()
+                        .map_or(String::new(), |g| format!(" and a traction grid of {g}")),
                     worst.map_or("none".into(), |c| format!(
                         "{} {:.3} % (limit {} %)",
                         c.key,

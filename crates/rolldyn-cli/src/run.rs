@@ -240,8 +240,8 @@ pub struct RunOptions {
     /// another thread for its progress callback).
     pub progress: Option<Arc<AtomicU64>>,
     /// After a completed run, run the case again into `DIR/verify/` at ten
-    /// times tighter tolerances and report the changes in the summary's
-    /// `accuracy.verify`.
+    /// times tighter tolerances and a two-fold finer traction grid, and
+    /// report the changes in the summary's `accuracy.verify`.
     pub verify: bool,
 }
 

@@ -4,9 +4,10 @@
 //!
 //! * the energy balance closes to 1e-3 of the drive work
 //!   (`accuracy.status` = `ok`);
-//! * `--verify` (the same case at ten times tighter tolerances) moves the
-//!   cage speed and the mean and maximum contact loads by less than 1 %
-//!   and the ring vibration RMS by less than 5 %.
+//! * `--verify` (the same case at ten times tighter tolerances and a
+//!   two-fold finer traction grid) moves the cage speed and the mean and
+//!   maximum contact loads by less than 1 % and the ring vibration RMS by
+//!   less than 5 %.
 //!
 //! The cases failed the balance before the energy-balance step control
 //! and the `auto` switch between the stiff and the explicit method
@@ -92,17 +93,36 @@ const IMPACT_MEANS: [&str; 3] = [
 
 /// The default case (7008C, EHL traction, rtol 1e-2) at low speed: the
 /// balance was −0.37 of the drive work at 500 rpm and −0.13 at 100 rpm,
-/// the power loss at 100 rpm 82 % too high.
+/// the power loss at 100 rpm 82 % too high. At 100 rpm the 12 × 6
+/// traction grid is the limit of the power loss: the 24 × 12 grid of
+/// `--verify` raises it by 2.9 % (48 × 24: 3.7 %; the tolerances alone:
+/// 0.015 %), where the spin and differential sliding dominate the
+/// losses, and `--verify` must say so (docs/dynamics.md, "Accuracy at
+/// default settings").
 #[test]
 fn low_speed_ehl_closes_its_balance() {
     let (s, _) = run("500rpm", &["--speed", "500 rpm", "--verify"], None);
     assert_converged("500 rpm", &s, &MEANS);
-    let (s, _) = run(
+    let (s, err) = run(
         "100rpm",
         &["--speed", "100 rpm", "--duration", "10 ms", "--verify"],
         None,
     );
-    assert_converged("100 rpm", &s, &MEANS);
+    assert_converged("100 rpm", &s, &MEANS[..5]);
+    let verify = &s["accuracy"]["verify"];
+    assert_eq!(verify["traction_grid"], "24 × 12 cells (run: 12 × 6)");
+    let power = verify["changes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["key"] == "mean_dissipated_power_w")
+        .unwrap();
+    let moved = power["relative_change"].as_f64().unwrap();
+    assert!((0.015..0.05).contains(&moved), "power moved by {moved}");
+    assert!(
+        err.contains("and a finer traction grid mean_dissipated_power_w"),
+        "{err}"
+    );
 }
 
 /// Heavy load on the default case.
