@@ -264,7 +264,10 @@ fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<String>, Stri
             let (a, b) = (2 * across, 2 * along);
             (a * b <= 10_000).then(|| {
                 (
+                    // The method too: a case that relies on the default grid
+                    // has no such table to amend.
                     vec![
+                        "model.traction_integration.method=grid".to_string(),
                         format!("model.traction_integration.across={a}"),
                         format!("model.traction_integration.along={b}"),
                     ],

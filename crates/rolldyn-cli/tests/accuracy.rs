@@ -152,6 +152,20 @@ fn a_one_rpm_start_closes_its_balance() {
     assert_converged("1 rpm", &s, &[]);
 }
 
+/// `--verify` refines the traction grid of a case that relies on the
+/// default grid too (the acbb_30x62 preset writes no
+/// `traction_integration`): the verifying run must not fail on a grid
+/// table without its method, and names the grids it compared.
+#[test]
+fn verify_refines_the_default_grid() {
+    let case = String::from_utf8(rolldyn(&["new", "--preset", "acbb_30x62"], None).stdout).unwrap();
+    assert!(!case.contains("traction_integration"));
+    let (s, _) = run("acbb", &["--duration", "5 ms", "--verify"], Some(&case));
+    let verify = &s["accuracy"]["verify"];
+    assert_eq!(verify["traction_grid"], "24 × 12 cells (run: 12 × 6)");
+    assert!(verify["changes"].as_array().is_some_and(|c| !c.is_empty()));
+}
+
 /// Shan et al. 2023's 6304 (clearance, pocket impacts, modified Coulomb traction):
 /// the first 20 ms, where the pockets and the rings settle.
 #[test]
