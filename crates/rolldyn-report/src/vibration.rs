@@ -263,12 +263,12 @@ pub fn is_ramp(speed_rpm: &[f64]) -> bool {
 
 /// Most columns and rows of the drawn spectrogram (cells are pooled to
 /// their largest amplitude beyond).
-const HEAT_COLUMNS: usize = 120;
-const HEAT_ROWS: usize = 100;
+pub const HEAT_COLUMNS: usize = 120;
+pub const HEAT_ROWS: usize = 100;
 /// The darkest level drawn \[dB below the reference\].
-const HEAT_FLOOR_DB: f64 = -60.0;
+pub const HEAT_FLOOR_DB: f64 = -60.0;
 /// The rank of the cell that sets 0 dB: the 99.5th percentile.
-const HEAT_REFERENCE_RANK: f64 = 0.995;
+pub const HEAT_REFERENCE_RANK: f64 = 0.995;
 
 /// The spectrogram of a record starting at `start` \[s\] as a heat map of
 /// levels in dB, pooled to at most [`HEAT_COLUMNS`] × [`HEAT_ROWS`] cells
