@@ -261,9 +261,10 @@ pub fn is_ramp(speed_rpm: &[f64]) -> bool {
     hi > 0.0 && hi - lo > RAMP_SPEED_CHANGE * hi.abs().max(lo.abs())
 }
 
-/// Most columns and rows of the drawn spectrogram (cells are pooled to
-/// their largest amplitude beyond).
+/// Most columns (segments) of the drawn spectrogram; beyond, cells are
+/// pooled to their largest amplitude.
 pub const HEAT_COLUMNS: usize = 120;
+/// Most rows (frequency bins) of the drawn spectrogram, pooled alike.
 pub const HEAT_ROWS: usize = 100;
 /// The darkest level drawn \[dB below the reference\].
 pub const HEAT_FLOOR_DB: f64 = -60.0;
