@@ -210,7 +210,7 @@ def main():
             if not args.exudyn_only:
                 wall, rpm, steps = rolldyn_run(args.rolldyn, args.duration, os.path.join(tmp, f"r{k}"))
                 rolldyn_walls.append(wall)
-                print(f"  rolldyn: {wall:7.3f} s  mean cage speed (whole run)   {rpm:8.1f} rpm  ({steps} steps)")
+                print(f"  rolldyn: {wall:7.3f} s  mean cage speed (its window)  {rpm:8.1f} rpm  ({steps} steps)")
             wall, rpm = exudyn_run(args.duration, args.rtol)
             exudyn_walls.append(wall)
             print(f"  Exudyn:  {wall:7.3f} s  mean cage speed (second half) {rpm:8.1f} rpm")
