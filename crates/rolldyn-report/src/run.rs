@@ -159,26 +159,13 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
     } else {
         None
     };
-    let read_vibration = |window: [f64; 2]| {
-        crate::vibration::read_window(&series_path, window).map_err(|e| ReportError::Read {
-            path: series_path.display().to_string(),
-            message: e.to_string(),
-        })
-    };
-    let spalled = summary.get("envelope_lines").is_some_and(|v| !v.is_null());
-    let vibration = if spalled {
-        read_vibration(window)?
-    } else {
-        None
-    };
-    let ramp = series
-        .column("inner_ring_speed_rpm")
-        .is_some_and(crate::vibration::is_ramp);
-    let run_up = if ramp {
-        read_vibration([f64::NEG_INFINITY, f64::INFINITY])?
-    } else {
-        None
-    };
+    let (vibration, run_up) =
+        crate::vibration::read_records(&series_path, &summary, &series, window).map_err(|e| {
+            ReportError::Read {
+                path: series_path.display().to_string(),
+                message: e.to_string(),
+            }
+        })?;
     let record = dir
         .join(RECORD_FILE)
         .is_file()

@@ -49,6 +49,31 @@ pub fn read_window(path: &Path, [t0, t1]: [f64; 2]) -> Result<Option<Record>, In
     Ok(Some(kept.into_iter().unzip()))
 }
 
+/// The records the section needs from the time series at `path`: over
+/// the averaging `window` for a run with a spall (its summary has
+/// envelope lines), over the whole run for a run whose shaft speed
+/// (`series`' `inner_ring_speed_rpm`) changes ([`is_ramp`]).
+pub fn read_records(
+    path: &Path,
+    summary: &serde_json::Value,
+    series: &rolldyn_io::TimeSeries,
+    window: [f64; 2],
+) -> Result<(Option<Record>, Option<Record>), InputError> {
+    let spalled = summary.get("envelope_lines").is_some_and(|v| !v.is_null());
+    let ramp = series.column("inner_ring_speed_rpm").is_some_and(is_ramp);
+    let defect = if spalled {
+        read_window(path, window)?
+    } else {
+        None
+    };
+    let run_up = if ramp {
+        read_window(path, [f64::NEG_INFINITY, f64::INFINITY])?
+    } else {
+        None
+    };
+    Ok((defect, run_up))
+}
+
 /// RMS, peak |a|, crest factor (peak / RMS) and kurtosis (m₄ / m₂², 3 for
 /// a Gaussian record; impacts raise it) of `record` about its mean.
 pub fn statistics(record: &[f64]) -> [f64; 4] {
