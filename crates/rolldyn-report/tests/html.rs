@@ -266,6 +266,28 @@ fn long_records_are_reduced_without_losing_spikes_or_the_balance() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// Adds to `dir`'s summary.json a 9-ball deep-groove bearing's geometry
+/// and contact angles (the characteristic lines' inputs) and `extra`;
+/// returns the summary written.
+fn with_speeds(dir: &std::path::Path, extra: serde_json::Value) -> serde_json::Value {
+    let mut summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let bearing = serde_json::json!({
+        "ball_count": 9,
+        "ball_diameter_m": 0.00794,
+        "pitch_diameter_m": 0.039,
+        "mean_contact_angle_inner_deg": 0.0,
+        "mean_contact_angle_outer_deg": 0.0,
+    });
+    for part in [bearing, extra] {
+        for (k, v) in part.as_object().unwrap() {
+            summary[k] = v.clone();
+        }
+    }
+    std::fs::write(dir.join("summary.json"), summary.to_string()).unwrap();
+    summary
+}
+
 /// A run with a spall gets the vibration section: statistics, the lines'
 /// table and three plots (signal, spectrum, envelope spectrum with the
 /// lines marked), from the unreduced window of the acceleration.
@@ -286,24 +308,16 @@ fn a_spalled_run_has_a_vibration_section() {
         s.push(&[t, 100.0 * ring, 720.0]);
     }
     write_parquet(&dir.join("timeseries.parquet"), &s, &[]).unwrap();
-    let mut summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
-    let extra = serde_json::json!({
-        "averaging_window_s": [0.25, 0.5],
-        "inner_ring_speed_rpm": 1772.0,
-        "mean_cage_speed_rpm": 705.8,
-        "ball_count": 9,
-        "ball_diameter_m": 0.00794,
-        "pitch_diameter_m": 0.039,
-        "mean_contact_angle_inner_deg": 0.0,
-        "mean_contact_angle_outer_deg": 0.0,
-        "envelope_lines": {"channel": "inner_ring_acceleration_z_m_s2", "band_hz": [1200.0, 4800.0],
-            "resolution_hz": 4.0, "lines": [{"name": "BPFO", "frequency_hz": 105.9, "amplitude_m_s2": 12.0}]}
-    });
-    for (k, v) in extra.as_object().unwrap() {
-        summary[k] = v.clone();
-    }
-    std::fs::write(dir.join("summary.json"), summary.to_string()).unwrap();
+    let mut summary = with_speeds(
+        &dir,
+        serde_json::json!({
+            "averaging_window_s": [0.25, 0.5],
+            "inner_ring_speed_rpm": 1772.0,
+            "mean_cage_speed_rpm": 705.8,
+            "envelope_lines": {"channel": "inner_ring_acceleration_z_m_s2", "band_hz": [1200.0, 4800.0],
+                "resolution_hz": 4.0, "lines": [{"name": "BPFO", "frequency_hz": 105.9, "amplitude_m_s2": 12.0}]}
+        }),
+    );
     let html = report_for(&dir, None).unwrap().to_html();
     let (sections, _) = check_page(&html);
     assert!(sections.contains(&"vibration".to_string()), "{sections:?}");
@@ -346,22 +360,14 @@ fn a_speed_ramp_has_a_spectrogram() {
     };
     let s = series(true);
     write_parquet(&dir.join("timeseries.parquet"), &s, &[]).unwrap();
-    let mut summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
-    let extra = serde_json::json!({
-        "averaging_window_s": [0.5, 1.0],
-        "inner_ring_speed_rpm": 1800.0,
-        "mean_cage_speed_rpm": 720.0,
-        "ball_count": 9,
-        "ball_diameter_m": 0.00794,
-        "pitch_diameter_m": 0.039,
-        "mean_contact_angle_inner_deg": 0.0,
-        "mean_contact_angle_outer_deg": 0.0,
-    });
-    for (k, v) in extra.as_object().unwrap() {
-        summary[k] = v.clone();
-    }
-    std::fs::write(dir.join("summary.json"), summary.to_string()).unwrap();
+    with_speeds(
+        &dir,
+        serde_json::json!({
+            "averaging_window_s": [0.5, 1.0],
+            "inner_ring_speed_rpm": 1800.0,
+            "mean_cage_speed_rpm": 720.0,
+        }),
+    );
     let html = report_for(&dir, None).unwrap().to_html();
     let (sections, _) = check_page(&html);
     assert!(sections.contains(&"vibration".to_string()), "{sections:?}");
