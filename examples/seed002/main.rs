@@ -7,8 +7,10 @@
 //! §3.1's tribological start) where it exists (μ = 0.1), else
 //! Jones–Harris (μ = 0.001: the balls have no rolling equilibrium).
 //!
-//! `cargo run --release --example seed002 [-- DURATION_S [OUT_DIR]]`
-//! (default 2.5 s, `examples/seed002/out`). Writes per μ a time series CSV
+//! `cargo run --release --example seed002 [-- DURATION_S [OUT_DIR [LAW]]]`
+//! (default 2.5 s, `examples/seed002/out`, `fastsim`; LAW `exact_table`
+//! runs Kalker's exact theory tabulated instead, its files suffixed
+//! `_exact_table`). Writes per μ a time series CSV
 //! (cage speed ratio against its pure-rolling value, creepages, stick
 //! fractions), stick/slip maps of ball 0 at chosen instants, and prints the
 //! table docs/validation.md C6 reports. See examples/seed002/README.md.
@@ -54,20 +56,32 @@ fn main() -> Result<(), String> {
     let out = PathBuf::from(args.next().unwrap_or_else(|| {
         concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/seed002/out").into()
     }));
+    let law = args.next().unwrap_or_else(|| "fastsim".into());
+    let suffix = match law.as_str() {
+        "fastsim" => "",
+        "exact_table" => "_exact_table",
+        other => return Err(format!("law {other}: expected fastsim or exact_table")),
+    };
     std::fs::create_dir_all(&out).map_err(|e| format!("{}: {e}", out.display()))?;
     let mut table = String::new();
     for mu in [0.001, 0.1] {
-        let rows = simulate(mu, duration, &out)?;
+        let rows = simulate(mu, duration, &out, &law, suffix)?;
         report(mu, &rows, &mut table);
     }
     print!("{table}");
-    std::fs::write(out.join("table.txt"), &table).map_err(|e| e.to_string())?;
+    std::fs::write(out.join(format!("table{suffix}.txt")), &table).map_err(|e| e.to_string())?;
     Ok(())
 }
 
-fn simulate(mu: f64, duration: f64, out: &Path) -> Result<Vec<Row>, String> {
+fn simulate(
+    mu: f64,
+    duration: f64,
+    out: &Path,
+    law: &str,
+    suffix: &str,
+) -> Result<Vec<Row>, String> {
     let preset = presets::find("7218B").ok_or("no 7218B preset")?;
-    let traction = format!("model.traction={{ law = \"fastsim\", friction = {mu} }}");
+    let traction = format!("model.traction={{ law = \"{law}\", friction = {mu} }}");
     let overrides = [Override::parse_set(&traction).map_err(|e| e.to_string())?];
     let case = load_case("7218B preset", preset.text, &overrides).map_err(|e| e.to_string())?;
     let params = case
@@ -137,13 +151,17 @@ fn simulate(mu: f64, duration: f64, out: &Path) -> Result<Vec<Row>, String> {
                 csr_rolling: m.pure_rolling_ratio(&samples, y),
                 creep,
             });
-            if next_map < MAP_TIMES.len() && t >= MAP_TIMES[next_map] {
+            // Stick/slip maps: FASTSIM's (the table has no cells).
+            if law == "fastsim" && next_map < MAP_TIMES.len() && t >= MAP_TIMES[next_map] {
                 for ring in [RingKind::Inner, RingKind::Outer] {
                     let mut text = format!("{}\n", MapCell::CSV_HEADER);
                     m.traction_map(t, y, 0, ring, |c| {
                         let _ = writeln!(text, "{}", c.csv_row());
                     });
-                    maps.push((format!("map_mu{mu}_t{t:.2}_{}.csv", ring.name()), text));
+                    maps.push((
+                        format!("map_mu{mu}_t{t:.2}_{}{suffix}.csv", ring.name()),
+                        text,
+                    ));
                 }
                 next_map += 1;
             }
@@ -180,7 +198,8 @@ fn simulate(mu: f64, duration: f64, out: &Path) -> Result<Vec<Row>, String> {
         }
         csv.push('\n');
     }
-    std::fs::write(out.join(format!("timeseries_mu{mu}.csv")), csv).map_err(|e| e.to_string())?;
+    std::fs::write(out.join(format!("timeseries_mu{mu}{suffix}.csv")), csv)
+        .map_err(|e| e.to_string())?;
     for (name, text) in maps {
         std::fs::write(out.join(name), text).map_err(|e| e.to_string())?;
     }

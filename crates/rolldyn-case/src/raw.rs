@@ -463,7 +463,9 @@ pub struct RawModel {
     /// b = 8, c = 60, d = 0.06 }` (optional slip, full_speed) or `{ law = "ehl",
     /// eyring_stress = "5 MPa", limiting_shear_coefficient = 0.08 }` (needs the
     /// `[lubricant]` section) or `{ law = "fastsim", friction = 0.1 }`
-    /// (optional strips, elements, bound, regularisation_speed).
+    /// (optional strips, elements, bound, regularisation_speed) or
+    /// `{ law = "exact_table", friction = 0.1 }` (optional
+    /// regularisation_speed).
     pub traction: Option<TractionChoice>,
     /// Traction integration: `{ method = "grid", across = 12, along = 6 }`
     /// (default) or `{ method = "centre" }`.
@@ -560,6 +562,13 @@ pub enum RawTraction {
         /// Rolling speed below which the creepages are regularised (default 1 mm/s).
         regularisation_speed: Option<Quantity<Velocity>>,
     },
+    /// Kalker's exact theory, tabulated (G and ν from the materials).
+    ExactTable {
+        /// Friction coefficient μ ≥ 0.
+        friction: f64,
+        /// Rolling speed below which the creepages are regularised (default 1 mm/s).
+        regularisation_speed: Option<Quantity<Velocity>>,
+    },
 }
 
 impl<'de> Deserialize<'de> for TractionChoice {
@@ -568,12 +577,12 @@ impl<'de> Deserialize<'de> for TractionChoice {
         impl<'de> Visitor<'de> for V {
             type Value = TractionChoice;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("\"none\" or a table { law = \"modified_coulomb\" | \"traction_curve\" | \"ehl\" | \"fastsim\", ... }")
+                f.write_str("\"none\" or a table { law = \"modified_coulomb\" | \"traction_curve\" | \"ehl\" | \"fastsim\" | \"exact_table\", ... }")
             }
             fn visit_str<E: de::Error>(self, v: &str) -> Result<TractionChoice, E> {
                 match v {
                     "none" => Ok(TractionChoice::Named(v.to_string())),
-                    "modified_coulomb" | "traction_curve" | "ehl" | "fastsim" => {
+                    "modified_coulomb" | "traction_curve" | "ehl" | "fastsim" | "exact_table" => {
                         Err(E::custom(format!(
                             "the traction law \"{v}\" needs parameters: write a table, e.g. {}",
                             match v {
@@ -582,12 +591,13 @@ impl<'de> Deserialize<'de> for TractionChoice {
                                 "traction_curve" =>
                                     "{ law = \"traction_curve\", a = -0.06, b = 8, c = 60, d = 0.06 }",
                                 "fastsim" => "{ law = \"fastsim\", friction = 0.1 }",
+                                "exact_table" => "{ law = \"exact_table\", friction = 0.1 }",
                                 _ => "{ law = \"modified_coulomb\", friction = 0.1 }",
                             }
                         )))
                     }
                     other => Err(E::custom(format!(
-                        "unknown traction law \"{other}\"; expected none, modified_coulomb, traction_curve, ehl or fastsim"
+                        "unknown traction law \"{other}\"; expected none, modified_coulomb, traction_curve, ehl, fastsim or exact_table"
                     ))),
                 }
             }

@@ -244,7 +244,8 @@ pub fn verify(
 fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<String>, String)> {
     use rolldyn::traction::{TractionIntegration, TractionModel, fastsim::MAX_DIVISIONS};
     match (&case.traction, case.traction_integration) {
-        (TractionModel::None, _) => None,
+        // No grid: the table's error is stated with it (docs/validation.md).
+        (TractionModel::None | TractionModel::ExactTable(_), _) => None,
         (TractionModel::Fastsim(f), _) => {
             let (strips, elements) = (2 * f.strips, 2 * f.elements);
             (strips.max(elements) <= MAX_DIVISIONS).then(|| {

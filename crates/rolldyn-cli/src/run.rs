@@ -324,7 +324,10 @@ pub(crate) fn run_once(
     } = Simulation::from_case(case).map_err(|e| bad(e.to_string()))?;
     let mut channels = Channels::new(
         g.ball_count,
-        matches!(params.traction, TractionModel::Fastsim(_)),
+        matches!(
+            params.traction,
+            TractionModel::Fastsim(_) | TractionModel::ExactTable(_)
+        ),
         model.thermal().is_some(),
         [case.power_per_ball, params.mixed_lubrication.is_some()],
         model.layout().len(),

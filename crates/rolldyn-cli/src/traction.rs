@@ -19,7 +19,9 @@ use rolldyn::material::effective_modulus;
 use rolldyn::traction::exact::{DEFAULT_CELLS, ExactRolling, MAX_CELLS};
 use rolldyn::traction::fastsim::MapCell;
 use rolldyn::traction::kalker::check_axes;
-use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim, TractionModel, TractionResult};
+use rolldyn::traction::{
+    ContactConditions, ContactPatch, ExactTable, Fastsim, TractionModel, TractionResult,
+};
 use rolldyn_case::Case;
 use rolldyn_case::units::{AngularSpeed, Dimension, Force, Length, Pressure, Quantity, Velocity};
 use serde::Serialize;
@@ -73,7 +75,8 @@ pub struct TractionArgs {
     /// Tangential solution: `fastsim` (the case's law, or FASTSIM for an
     /// explicit contact) or `exact` (Kalker's exact steady-rolling theory
     /// by boundary elements; needs the fastsim law's friction and elastic
-    /// constants, or an explicit contact).
+    /// constants, or an explicit contact) or `table` (the exact theory
+    /// tabulated, the `exact_table` law, with the same constants).
     #[arg(long, value_name = "METHOD", default_value = "fastsim")]
     pub method: String,
     /// Cells along and across the rolling direction of `--method exact`,
@@ -213,15 +216,24 @@ pub fn command(args: TractionArgs) -> Result<(), Failure> {
 /// What `rolldyn traction --json` prints (and the map file written).
 pub fn report(args: &TractionArgs) -> Result<TractionReport, Failure> {
     let exact = match (args.method.as_str(), &args.cells) {
-        ("fastsim", None) => None,
-        ("fastsim", Some(c)) => return Err(bad_arg("--cells", c, "goes with --method exact")),
+        ("fastsim" | "table", None) => None,
+        ("fastsim" | "table", Some(c)) => {
+            return Err(bad_arg("--cells", c, "goes with --method exact"));
+        }
         ("exact", cells) => Some(exact_grid(cells.as_deref())?),
-        (other, _) => return Err(bad_arg("--method", other, "expected fastsim or exact")),
+        (other, _) => {
+            return Err(bad_arg(
+                "--method",
+                other,
+                "expected fastsim, exact or table",
+            ));
+        }
     };
     let inputs = Inputs {
         rolling_speed: quantity::<Velocity>("--rolling-speed", &args.rolling_speed)?,
         motion: motion(args)?,
         exact,
+        table: args.method == "table",
     };
     let case;
     let contact = match &args.semi_axes {
@@ -276,6 +288,8 @@ pub struct Inputs {
     /// `--method exact` with its cells along and across, or None (FASTSIM
     /// or the case's law).
     pub exact: Option<(usize, usize)>,
+    /// `--method table`: the exact theory tabulated (the `exact_table` law).
+    pub table: bool,
 }
 
 /// Creepages or slip velocities.
@@ -364,6 +378,22 @@ fn law_name(model: &TractionModel) -> &'static str {
         TractionModel::TractionCurve(_) => "traction_curve",
         TractionModel::Ehl(_) => "ehl",
         TractionModel::Fastsim(_) => "fastsim",
+        TractionModel::ExactTable(_) => "exact_table",
+    }
+}
+
+/// Friction, combined G and ν and regularisation speed of the models that
+/// carry them (FASTSIM, the exact table).
+fn contact_constants(model: &TractionModel) -> Option<ExactTable> {
+    match model {
+        TractionModel::Fastsim(f) => Some(ExactTable {
+            friction: f.friction,
+            shear_modulus: f.shear_modulus,
+            poisson_ratio: f.poisson_ratio,
+            regularisation_speed: f.regularisation_speed,
+        }),
+        TractionModel::ExactTable(t) => Some(*t),
+        _ => None,
     }
 }
 
@@ -456,6 +486,17 @@ pub fn evaluate(
     if !(load.is_finite() && load >= 0.0) {
         return Err(format!("normal load {load} N: must be ≥ 0"));
     }
+    let model = if inputs.table {
+        let Some(t) = contact_constants(&model) else {
+            return Err(format!(
+                "--method table: the tabulated exact theory takes its friction and elastic constants from the fastsim or exact_table traction law (the case has {}; e.g. --set 'model.traction={{ law = \"exact_table\", friction = 0.1 }}')",
+                law_name(&model)
+            ));
+        };
+        TractionModel::ExactTable(t)
+    } else {
+        model
+    };
     // The Hertz ellipse with its minor axis along the rolling direction x.
     let patch = ContactPatch {
         point: 0.5e-3 * normal,
@@ -466,10 +507,7 @@ pub fn evaluate(
         load,
         deformed_radius,
     };
-    let regularisation = match &model {
-        TractionModel::Fastsim(f) => f.regularisation_speed,
-        _ => 0.0,
-    };
+    let regularisation = contact_constants(&model).map_or(0.0, |t| t.regularisation_speed);
     let speed = v.hypot(regularisation);
     let (slip, spin_n) = match inputs.motion {
         Motion::Creepages([xi, eta, phi]) => (speed * (xi * x + eta * y), speed * phi),
@@ -489,7 +527,13 @@ pub fn evaluate(
     let mut cells = 0;
     let mut exact_report = None;
     let result: TractionResult = match (&model, inputs.exact, map) {
-        (TractionModel::Fastsim(f), Some((along_cells, across_cells)), map) => {
+        (_, Some((along_cells, across_cells)), map) => {
+            let Some(f) = contact_constants(&model) else {
+                return Err(format!(
+                    "--method exact: the exact theory takes its friction and elastic constants from the fastsim or exact_table traction law (the case has {}; e.g. --set 'model.traction={{ law = \"fastsim\", friction = 0.1 }}')",
+                    law_name(&model)
+                ));
+            };
             if v == 0.0 {
                 return Err("--method exact: the steady-rolling theory needs a rolling speed (--rolling-speed ≠ 0)".into());
             }
@@ -514,12 +558,6 @@ pub fn evaluate(
                 frictional_power_w: sol.frictional_power,
             });
             sol.result
-        }
-        (_, Some(_), _) => {
-            return Err(format!(
-                "--method exact: the exact theory takes its friction and elastic constants from the fastsim traction law (the case has {}; e.g. --set 'model.traction={{ law = \"fastsim\", friction = 0.1 }}')",
-                law_name(&model)
-            ));
         }
         (TractionModel::Fastsim(f), None, Some(text)) => {
             text.push_str(MapCell::CSV_HEADER);
@@ -573,6 +611,8 @@ pub fn evaluate(
         map_cells: (cells > 0).then_some(cells),
         method: if exact_report.is_some() {
             "exact"
+        } else if inputs.table {
+            "table"
         } else {
             "fastsim"
         },

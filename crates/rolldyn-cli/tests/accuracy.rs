@@ -166,6 +166,26 @@ fn verify_refines_the_default_grid() {
     assert!(verify["changes"].as_array().is_some_and(|c| !c.is_empty()));
 }
 
+/// Zhang et al. 2025's 7218B with FASTSIM (its preset) and with Kalker's
+/// exact theory tabulated (`exact_table`): solid-lubricated rolling,
+/// where the traction law alone carries the balls.
+#[test]
+fn kalker_traction_closes_its_balance() {
+    let case = String::from_utf8(rolldyn(&["new", "--preset", "7218B"], None).stdout).unwrap();
+    for (tag, law) in [
+        ("fastsim", "{ law = \"fastsim\", friction = 0.1 }"),
+        ("exact-table", "{ law = \"exact_table\", friction = 0.1 }"),
+    ] {
+        let set = format!("model.traction={law}");
+        let (s, _) = run(
+            tag,
+            &["--set", &set, "--duration", "20 ms", "--verify"],
+            Some(&case),
+        );
+        assert_converged(tag, &s, &MEANS);
+    }
+}
+
 /// Shan et al. 2023's 6304 (clearance, pocket impacts, modified Coulomb traction):
 /// the first 20 ms, where the pockets and the rings settle.
 #[test]

@@ -345,3 +345,64 @@ fn exact_method_on_a_case_and_its_errors() {
     assert_eq!(out.status.code(), Some(2));
     assert!(stderr(&out).contains("rolling speed"), "{}", stderr(&out));
 }
+
+/// `--method table` interpolates the exact theory: on an explicit contact
+/// in partial slip it lies within a few % of μQ of the exact solver, and a
+/// case with the `exact_table` law gives the same as `--method table` on
+/// the fastsim law; a law without elastic constants is refused.
+#[test]
+fn table_method_follows_the_exact_theory() {
+    let creep = ["--creepages", "1e-3,2e-4,20"];
+    let table = traction(&[creep.as_slice(), &["--method", "table"]].concat());
+    let exact = traction(&[creep.as_slice(), &["--method", "exact"]].concat());
+    assert_eq!(table["method"], "table");
+    assert_eq!(table["traction_law"], "exact_table");
+    let mu_q = 0.1 * 1000.0;
+    for key in ["force_x_n", "force_y_n"] {
+        let (t, e) = (table[key].as_f64().unwrap(), exact[key].as_f64().unwrap());
+        assert!((t - e).abs() < 0.06 * mu_q, "{key}: table {t}, exact {e}");
+    }
+    assert!(table["power_w"].as_f64().unwrap() > 0.0);
+    let on_case = |law: &str, method: &str| {
+        let set = format!("model.traction={{ law = \"{law}\", friction = 0.1 }}");
+        json(
+            &[
+                "traction",
+                "--set",
+                &set,
+                "--load",
+                "500 N",
+                "--rolling-speed",
+                "10 m/s",
+                "--creepages",
+                "1e-3,0,2",
+                "--method",
+                method,
+                "--json",
+            ],
+            None,
+        )
+    };
+    let law = on_case("exact_table", "fastsim");
+    let method = on_case("fastsim", "table");
+    assert_eq!(law["traction_law"], "exact_table");
+    for key in ["force_x_n", "force_y_n", "spin_moment_nm", "power_w"] {
+        assert_eq!(law[key], method[key], "{key}");
+    }
+    let out = rolldyn(
+        &[
+            "traction",
+            "--load",
+            "500 N",
+            "--rolling-speed",
+            "10 m/s",
+            "--creepages",
+            "1e-3,0,0",
+            "--method",
+            "table",
+        ],
+        None,
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(stderr(&out).contains("exact_table"), "{}", stderr(&out));
+}

@@ -377,6 +377,19 @@ def test_traction_exact_method_equals_the_cli():
     assert got["method"] == "exact" and got["exact"]["converged"]
     assert got["exact"]["cells_along"] == 16
 
+def test_exact_table_law_equals_the_cli():
+    """The tabulated exact theory as a case's law, from Python and the CLI."""
+    law = '{ law = "exact_table", friction = 0.1 }'
+    case = rolldyn.Case.default().set("model.traction", law)
+    flags = dict(load="500 N", rolling_speed="10 m/s", creepages="1e-3,0,5")
+    got = rolldyn.traction(case, **flags)
+    expected = cli_json("traction", "--set", f"model.traction={law}", "--json",
+                        "--load", "500 N", "--rolling-speed", "10 m/s",
+                        "--creepages", "1e-3,0,5")
+    assert got == expected
+    assert got["traction_law"] == "exact_table" and got["power_w"] > 0.0
+
+
 def test_spectrum_equals_the_cli(tmp_path):
     result = rolldyn.run(duration="5 ms", output=tmp_path)
     expected = cli_json("spectrum", str(tmp_path), "--channel", "cage_speed_rpm", "--json")

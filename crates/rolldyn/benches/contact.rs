@@ -1,7 +1,7 @@
 //! `cargo bench -p rolldyn --bench contact`: cost of the contact building
 //! blocks the time loop calls (7008C, steel): Hertz tables, torus
-//! geometry, and one contact's traction (FASTSIM; the Coulomb and EHL stress
-//! laws on the 12 × 6 grid). Plain `Instant` timing
+//! geometry, and one contact's traction (FASTSIM; Kalker's exact theory
+//! tabulated; the Coulomb and EHL stress laws on the 12 × 6 grid). Plain `Instant` timing
 //! of many repetitions (median of 7 runs), no extra dependency. Figures are
 //! recorded in docs/performance.md with the machine.
 
@@ -11,8 +11,8 @@ use rolldyn::contact::{GrooveCircle, HertzModel, RingPose};
 use rolldyn::material::{Material, effective_modulus};
 use rolldyn::traction::fastsim::combined_elastic_constants;
 use rolldyn::traction::{
-    ContactConditions, ContactPatch, EhlRheology, Fastsim, ModifiedCoulomb, TractionGrid,
-    TractionIntegration, TractionModel,
+    ContactConditions, ContactPatch, EhlRheology, ExactTable, Fastsim, ModifiedCoulomb,
+    TractionGrid, TractionIntegration, TractionModel,
 };
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, RingKind};
 use std::hint::black_box;
@@ -116,6 +116,14 @@ fn main() {
             },
         );
     }
+    // Kalker's exact theory tabulated, on the same contacts.
+    let table = ExactTable::new(0.1, shear, nu);
+    time_per_call("exact-theory table contact", 2_000_000, |i| {
+        table
+            .evaluate(&patch, &Vector3::zeros(), &slip(i), &spin(i), &conditions)
+            .force
+            .x
+    });
     let coulomb = TractionModel::ModifiedCoulomb(ModifiedCoulomb {
         friction: 0.1,
         stick_speed: 0.0,

@@ -226,6 +226,7 @@ impl Case {
             TractionModel::Ehl(e) => Ok(e.limiting_shear_coefficient),
             TractionModel::TractionCurve(c) => Ok(c.d),
             TractionModel::Fastsim(f) => Ok(f.friction),
+            TractionModel::ExactTable(t) => Ok(t.friction),
             TractionModel::None => Err(Invalid::missing(
                 "power.sliding_friction",
                 "the local power-loss method needs the sliding friction coefficient (the case has no traction model to take it from)",

@@ -8,7 +8,8 @@ use rolldyn::RingKind;
 use rolldyn::lubrication::mixed::MixedLubrication;
 use rolldyn::traction::fastsim::combined_elastic_constants;
 use rolldyn::traction::{
-    EhlRheology, Fastsim, ModifiedCoulomb, TractionCurve, TractionIntegration, TractionModel,
+    EhlRheology, ExactTable, Fastsim, ModifiedCoulomb, TractionCurve, TractionIntegration,
+    TractionModel,
 };
 
 pub(super) fn traction(
@@ -91,21 +92,37 @@ pub(super) fn traction(
             if let Some(v) = regularisation_speed {
                 law.regularisation_speed = v.si;
             }
-            law.validate().map_err(|e| {
-                let key = if e.field == "poisson_ratio" || e.field == "shear_modulus" {
-                    // Combined from the materials.
-                    format!(
-                        "materials (combined {} of ball and rings for {key})",
-                        e.field
-                    )
-                } else {
-                    format!("{key}.{}", e.field)
-                };
-                Invalid::new(key, Some(e.value), e.rule)
-            })?;
+            law.validate().map_err(|e| material_error(e, key))?;
             TractionModel::Fastsim(law)
         }
+        Some(TractionChoice::Table(RawTraction::ExactTable {
+            friction,
+            regularisation_speed,
+        })) => {
+            let (shear_modulus, poisson_ratio) =
+                combined_elastic_constants(&materials.ball.material, &materials.rings.material);
+            let mut law = ExactTable::new(*friction, shear_modulus, poisson_ratio);
+            if let Some(v) = regularisation_speed {
+                law.regularisation_speed = v.si;
+            }
+            law.validate().map_err(|e| material_error(e, key))?;
+            TractionModel::ExactTable(law)
+        }
     })
+}
+
+/// A FASTSIM or exact-table parameter error, naming the materials for the
+/// elastic constants combined from them.
+fn material_error(e: rolldyn::InvalidParameter, key: &str) -> Invalid {
+    let field = if e.field == "poisson_ratio" || e.field == "shear_modulus" {
+        format!(
+            "materials (combined {} of ball and rings for {key})",
+            e.field
+        )
+    } else {
+        format!("{key}.{}", e.field)
+    };
+    Invalid::new(field, Some(e.value), e.rule)
 }
 
 /// Checks `model.film_in_approach`: the film needs a film model (EHL with

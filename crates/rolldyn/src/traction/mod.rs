@@ -12,7 +12,9 @@
 //! - a **contact model** that integrates the ellipse itself: Kalker's
 //!   FASTSIM ([`fastsim`], with the creep coefficients of [`kalker`]),
 //!   whose tractions depend on the path of the material through the
-//!   contact, not on the local slip alone.
+//!   contact, not on the local slip alone; or Kalker's exact theory
+//!   ([`exact`], a reference too slow for the time loop), tabulated over
+//!   the normalised creepages for it ([`table`]).
 //!
 //! [`TractionModel::evaluate`] dispatches one contact to either.
 
@@ -24,6 +26,7 @@ pub mod exact;
 pub mod fastsim;
 pub mod kalker;
 pub mod mixed;
+pub mod table;
 
 pub use coulomb::ModifiedCoulomb;
 
@@ -53,6 +56,7 @@ pub use ellipse::{ContactPatch, TractionGrid, TractionIntegration, TractionResul
 pub use fastsim::{Creep, Fastsim, TractionBound};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
+pub use table::ExactTable;
 
 /// Contact-level conditions a stress law may need besides the local
 /// pressure and slip (one value per contact).
@@ -115,6 +119,8 @@ pub enum TractionModel {
     Ehl(EhlRheology),
     /// Zhang et al. 2025 §2.2: Kalker's FASTSIM.
     Fastsim(Fastsim),
+    /// Kalker's exact theory, tabulated ([`table`]).
+    ExactTable(ExactTable),
 }
 
 impl TractionModel {
@@ -163,7 +169,7 @@ impl TractionModel {
     pub fn needs_entrainment(&self) -> bool {
         matches!(
             self,
-            Self::Ehl(_) | Self::TractionCurve(_) | Self::Fastsim(_)
+            Self::Ehl(_) | Self::TractionCurve(_) | Self::Fastsim(_) | Self::ExactTable(_)
         )
     }
 
@@ -172,7 +178,7 @@ impl TractionModel {
     /// microseconds rather than nanoseconds.
     pub fn integrates_over_a_grid(&self, integration: &ellipse::TractionIntegration) -> bool {
         match self {
-            Self::None => false,
+            Self::None | Self::ExactTable(_) => false,
             Self::Fastsim(_) => true,
             _ => matches!(integration, ellipse::TractionIntegration::Grid { .. }),
         }
@@ -222,6 +228,9 @@ impl TractionModel {
             ),
             Self::Fastsim(f) => {
                 f.evaluate(patch, ball_centre, slip_at_point, relative_spin, conditions)
+            }
+            Self::ExactTable(t) => {
+                t.evaluate(patch, ball_centre, slip_at_point, relative_spin, conditions)
             }
         }
     }
@@ -275,6 +284,7 @@ impl TractionModel {
             Self::TractionCurve(c) => c.validate(),
             Self::Ehl(e) => e.validate(),
             Self::Fastsim(f) => f.validate(),
+            Self::ExactTable(t) => t.validate(),
         }
     }
 }

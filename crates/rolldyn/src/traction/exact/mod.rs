@@ -168,35 +168,14 @@ impl ExactRolling {
                 converged: true,
             };
         }
-        let (na, nc) = (self.cells_along.max(4), self.cells_across.max(4));
-        let (along, across) = (patch.semi_minor, patch.semi_major);
-        let dx = 2.0 * MARGIN * along / na as f64;
-        let dy = 2.0 * MARGIN * across / nc as f64;
-        let cell_area = dx * dy;
-        let x_of = |i: usize| -MARGIN * along + (i as f64 + 0.5) * dx;
-        let y_of = |k: usize| -MARGIN * across + (k as f64 + 0.5) * dy;
-        let influence = Influence::new(na, nc, dx, dy, self.shear_modulus, self.poisson_ratio);
+        let contact = self.prepare(patch.semi_minor, patch.semi_major, patch.load);
+        let cell_area = contact.cell_area();
+        let (x_of, y_of) = (|c: usize| contact.x(c), |c: usize| contact.y(c));
+        let bound = &contact.bound;
 
-        // 1. Normal problem on the Hertz gap of these semi-axes.
-        let effective_modulus = self.shear_modulus / (1.0 - self.poisson_ratio);
-        let (curv_x, curv_y) = hertz_curvatures(along, across, patch.load, effective_modulus);
-        let gap: Vec<f64> = (0..na * nc)
-            .map(|c| curv_x * x_of(c / nc).powi(2) + curv_y * y_of(c % nc).powi(2))
-            .collect();
-        let normal = NormalProblem {
-            along: na,
-            across: nc,
-            cell_area,
-            gap: &gap,
-            load: patch.load,
-            influence: &influence,
-        }
-        .solve(1e-10, 2000);
-        let pressure = normal.pressure;
-        let bound: Vec<f64> = pressure.iter().map(|p| self.friction * p).collect();
-
-        // 2. Rigid slip per cell, per unit V (creepage units), in the
-        // frame whose x̂ is the flow direction.
+        // 1. The grid and the normal problem; 2. rigid slip per cell, per
+        // unit V (creepage units), in the frame whose x̂ is the flow
+        // direction.
         let direction = if rolling >= 0.0 { 1.0 } else { -1.0 };
         let n = patch.normal;
         let ex = direction * patch.rolling_direction;
@@ -213,23 +192,15 @@ impl ExactRolling {
             }
         };
         let rigid = |c: usize| {
-            let (x, y) = (x_of(c / nc), y_of(c % nc));
+            let (x, y) = (x_of(c), y_of(c));
             let d = depth(y);
             Vector2::new(s_x - w_n * y - d * w_y, s_y + w_n * x + d * w_x) / speed
         };
-        let w: Vec<Vector2<f64>> = (0..na * nc).map(rigid).collect();
+        let w: Vec<Vector2<f64>> = (0..contact.cells()).map(rigid).collect();
 
         // 3. The tangential problem (SteadyGS in traction increments).
-        let loaded: Vec<usize> = (0..na * nc).filter(|&c| pressure[c] > 0.0).collect();
-        let tangential = steady::SteadyProblem {
-            along: na,
-            across: nc,
-            dx,
-            influence: &influence,
-            rigid: &w,
-            bound: &bound,
-        }
-        .solve(self.tolerance, self.max_sweeps);
+        let loaded: Vec<usize> = (0..contact.cells()).filter(|&c| bound[c] > 0.0).collect();
+        let tangential = contact.tangential(&w, self.tolerance, self.max_sweeps);
         let (p, s, stick) = (&tangential.traction, &tangential.slip, &tangential.stick);
 
         // 4. Resultants and the map.
@@ -237,7 +208,7 @@ impl ExactRolling {
         let (mut power, mut friction_power, mut stuck) = (0.0, 0.0, 0);
         let mut cells = Vec::with_capacity(loaded.len());
         for &c in &loaded {
-            let (x, y) = (x_of(c / nc), y_of(c % nc));
+            let (x, y) = (x_of(c), y_of(c));
             let f = p[c] * cell_area;
             fx += f.x;
             fy += f.y;
@@ -276,10 +247,118 @@ impl ExactRolling {
             result,
             cells,
             frictional_power: friction_power,
-            normal_iterations: normal.iterations,
+            normal_iterations: contact.normal_iterations,
             sweeps: tangential.sweeps,
             converged: tangential.converged,
         }
+    }
+}
+
+impl ExactRolling {
+    /// The grid, influence coefficients and normal problem of an ellipse
+    /// with semi-axes `along` and `across` the rolling direction \[m\]
+    /// under load `load` \[N\]: everything of a solve that does not
+    /// depend on the creepages (a table of many creepages on one contact
+    /// prepares it once).
+    pub fn prepare(&self, along: f64, across: f64, load: f64) -> PreparedContact {
+        let (na, nc) = (self.cells_along.max(4), self.cells_across.max(4));
+        let dx = 2.0 * MARGIN * along / na as f64;
+        let dy = 2.0 * MARGIN * across / nc as f64;
+        let influence = Influence::new(na, nc, dx, dy, self.shear_modulus, self.poisson_ratio);
+        let mut contact = PreparedContact {
+            along: na,
+            across: nc,
+            dx,
+            dy,
+            half_along: along,
+            half_across: across,
+            influence,
+            bound: Vec::new(),
+            normal_iterations: 0,
+        };
+        // The normal problem on the Hertz gap of these semi-axes.
+        let effective_modulus = self.shear_modulus / (1.0 - self.poisson_ratio);
+        let (curv_x, curv_y) = hertz_curvatures(along, across, load, effective_modulus);
+        let gap: Vec<f64> = (0..na * nc)
+            .map(|c| curv_x * contact.x(c).powi(2) + curv_y * contact.y(c).powi(2))
+            .collect();
+        let normal = NormalProblem {
+            along: na,
+            across: nc,
+            cell_area: dx * dy,
+            gap: &gap,
+            load,
+            influence: &contact.influence,
+        }
+        .solve(1e-10, 2000);
+        contact.bound = normal.pressure.iter().map(|p| self.friction * p).collect();
+        contact.normal_iterations = normal.iterations;
+        contact
+    }
+}
+
+/// A contact's grid with its influence coefficients and the traction
+/// bound μ p_n of its solved normal problem ([`ExactRolling::prepare`]).
+/// Cells are numbered i·across + k, i along the flow from the leading edge.
+#[derive(Debug, Clone)]
+pub struct PreparedContact {
+    /// Cells along the flow.
+    pub along: usize,
+    /// Cells across it.
+    pub across: usize,
+    /// Cell length along the flow \[m\].
+    pub dx: f64,
+    /// Cell width across it \[m\].
+    pub dy: f64,
+    /// Hertz semi-axis along the flow \[m\].
+    pub half_along: f64,
+    /// Hertz semi-axis across it \[m\].
+    pub half_across: f64,
+    influence: Influence,
+    /// Traction bound μ p_n per cell \[Pa\] (0 outside the contact).
+    pub bound: Vec<f64>,
+    /// Iterations the normal problem took.
+    pub normal_iterations: usize,
+}
+
+impl PreparedContact {
+    /// Number of cells.
+    pub fn cells(&self) -> usize {
+        self.along * self.across
+    }
+
+    /// Area of one cell \[m²\].
+    pub fn cell_area(&self) -> f64 {
+        self.dx * self.dy
+    }
+
+    /// Centre of cell `c` along the flow, from the contact centre \[m\].
+    pub fn x(&self, c: usize) -> f64 {
+        -MARGIN * self.half_along + ((c / self.across) as f64 + 0.5) * self.dx
+    }
+
+    /// Centre of cell `c` across the flow \[m\].
+    pub fn y(&self, c: usize) -> f64 {
+        -MARGIN * self.half_across + ((c % self.across) as f64 + 0.5) * self.dy
+    }
+
+    /// The steady tangential problem for the rigid slip per unit rolling
+    /// speed `rigid` (one value per cell, creepage units).
+    pub fn tangential(
+        &self,
+        rigid: &[Vector2<f64>],
+        tolerance: f64,
+        max_sweeps: usize,
+    ) -> steady::SteadySolution {
+        steady::SteadyProblem {
+            along: self.along,
+            across: self.across,
+            dx: self.dx,
+            influence: &self.influence,
+            rigid,
+            bound: &self.bound,
+        }
+        .solve(tolerance, max_sweeps)
     }
 }
 

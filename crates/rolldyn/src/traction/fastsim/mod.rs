@@ -280,6 +280,56 @@ pub struct Creep {
     pub stick_fraction: f64,
 }
 
+/// The flow-direction rule of the contact models that integrate the
+/// ellipse along the flow (FASTSIM, [`super::table`]): `one_direction(d,
+/// dominant)` solves the contact with the material flowing along d · e_roll
+/// (d = ±1). Within |u·e_roll| < v_r (`regularisation_speed`) both
+/// directions are solved and blended with weights ½(1 ± u·e_roll/v_r), so
+/// the tractions stay continuous when the rolling reverses; elsewhere only
+/// the flow direction of the rolling is. The result carries the dominant
+/// direction's creepages and the blended stick fraction; its `moment` is
+/// left to the caller.
+pub(crate) fn blend_flow_directions(
+    rolling: f64,
+    regularisation_speed: f64,
+    mut one_direction: impl FnMut(f64, bool) -> (TractionResult, Creep),
+) -> TractionResult {
+    let v_r = regularisation_speed;
+    let forward = if rolling >= 0.0 { 1.0 } else { -1.0 };
+    let weight = if rolling.abs() < v_r {
+        0.5 * (1.0 + rolling / v_r)
+    } else if rolling > 0.0 {
+        1.0
+    } else {
+        0.0
+    };
+    let dominant = one_direction(forward, true);
+    let (mut out, creep) = if weight == 0.0 || weight == 1.0 {
+        dominant
+    } else {
+        let other = one_direction(-forward, false);
+        let w = if forward > 0.0 { weight } else { 1.0 - weight };
+        let (a, ca) = dominant;
+        let (b, cb) = other;
+        let mix = |x: f64, y: f64| w * x + (1.0 - w) * y;
+        (
+            TractionResult {
+                force: a.force * w + b.force * (1.0 - w),
+                moment: Vector3::zeros(),
+                couple: a.couple * w + b.couple * (1.0 - w),
+                dissipation: mix(a.dissipation, b.dissipation),
+                creep: None,
+            },
+            Creep {
+                stick_fraction: mix(ca.stick_fraction, cb.stick_fraction),
+                ..ca
+            },
+        )
+    };
+    out.creep = Some(creep);
+    out
+}
+
 impl Fastsim {
     /// A FASTSIM model with the default discretisation and bound.
     pub fn new(friction: f64, shear_modulus: f64, poisson_ratio: f64) -> Self {
@@ -351,58 +401,37 @@ impl Fastsim {
         if patch.load <= 0.0 {
             return TractionResult::default();
         }
-        let v_r = self.regularisation_speed;
-        let rolling = conditions.rolling_velocity;
-        let speed = conditions.entrainment_speed.hypot(v_r);
-        let forward = if rolling >= 0.0 { 1.0 } else { -1.0 };
-        let weight = if rolling.abs() < v_r {
-            0.5 * (1.0 + rolling / v_r)
-        } else if rolling > 0.0 {
-            1.0
-        } else {
-            0.0
-        };
+        let speed = conditions
+            .entrainment_speed
+            .hypot(self.regularisation_speed);
         let coefficients = self.coefficients(patch);
-        let dominant = self.march(
-            patch,
-            slip_at_point,
-            relative_spin,
-            speed,
-            forward,
-            &coefficients,
-            &mut map,
+        let mut out = blend_flow_directions(
+            conditions.rolling_velocity,
+            self.regularisation_speed,
+            |direction, dominant| {
+                if dominant {
+                    self.march(
+                        patch,
+                        slip_at_point,
+                        relative_spin,
+                        speed,
+                        direction,
+                        &coefficients,
+                        &mut map,
+                    )
+                } else {
+                    self.march(
+                        patch,
+                        slip_at_point,
+                        relative_spin,
+                        speed,
+                        direction,
+                        &coefficients,
+                        &mut |_: &MapCell| {},
+                    )
+                }
+            },
         );
-        let (mut out, creep) = if weight == 0.0 || weight == 1.0 {
-            dominant
-        } else {
-            let other = self.march(
-                patch,
-                slip_at_point,
-                relative_spin,
-                speed,
-                -forward,
-                &coefficients,
-                &mut |_: &MapCell| {},
-            );
-            let w = if forward > 0.0 { weight } else { 1.0 - weight };
-            let (a, ca) = dominant;
-            let (b, cb) = other;
-            let mix = |x: f64, y: f64| w * x + (1.0 - w) * y;
-            (
-                TractionResult {
-                    force: a.force * w + b.force * (1.0 - w),
-                    moment: Vector3::zeros(),
-                    couple: a.couple * w + b.couple * (1.0 - w),
-                    dissipation: mix(a.dissipation, b.dissipation),
-                    creep: None,
-                },
-                Creep {
-                    stick_fraction: mix(ca.stick_fraction, cb.stick_fraction),
-                    ..ca
-                },
-            )
-        };
-        out.creep = Some(creep);
         out.moment = out.couple + (patch.point - ball_centre).cross(&out.force);
         out
     }
