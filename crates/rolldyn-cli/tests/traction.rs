@@ -307,7 +307,7 @@ fn exact_method_on_a_case_and_its_errors() {
     for (args, needle) in [
         (
             vec!["--load", "500 N", "--method", "exact"],
-            "fastsim traction law",
+            "fastsim or exact_table traction law",
         ),
         (
             [EXPLICIT.as_slice(), &["--method", "exact", "--cells", "3"]].concat(),
