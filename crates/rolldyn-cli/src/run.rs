@@ -89,6 +89,9 @@ pub struct Summary {
     /// Envelope-spectrum amplitudes of the characteristic lines (runs
     /// with a spall; null otherwise).
     pub envelope_lines: Option<crate::vibration::EnvelopeLines>,
+    /// Amplitude spectrum at the lines the case's waviness excites (runs
+    /// with waviness; null otherwise).
+    pub waviness_lines: Option<crate::vibration::WavinessLines>,
     /// Friction power by component and friction torque.
     #[serde(flatten)]
     pub power: PowerSummary,
@@ -777,6 +780,13 @@ fn summarise(
             .spalls()
             .next()
             .and_then(|_| crate::vibration::envelope_lines(&signal, 0, &characteristic)),
+        waviness_lines: crate::vibration::waviness_lines(
+            &signal,
+            0,
+            &characteristic,
+            balls,
+            &case.surface,
+        ),
         power: crate::power_channels::summarise(&window, stats),
         thermal_coupling: model
             .thermal()

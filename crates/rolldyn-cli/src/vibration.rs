@@ -4,13 +4,19 @@
 //! cage-whirl metrics of [`rolldyn::signal::whirl`] (orbit radius, whirl
 //! speed, Deng et al. 2022's σ), all over the summary's averaging window;
 //! for a run with a spall, the envelope-spectrum amplitudes of the
-//! characteristic lines (the diagnostic signature, docs/signal.md).
+//! characteristic lines (the diagnostic signature, docs/signal.md); for a
+//! run with waviness, the amplitude spectrum at the lines its orders
+//! excite (Deng et al. 2022 Table 2, [`rolldyn::kinematics::waviness_frequencies`]).
 
+use rolldyn::kinematics::{Frequencies, Motion, WavyPart, waviness_frequencies};
 use rolldyn::signal::{
-    CharacteristicFrequencies, Window, band_rms, envelope_spectrum, whirl_metrics,
+    CharacteristicFrequencies, Spectrum, Window, amplitude_spectrum, band_rms, envelope_spectrum,
+    whirl_metrics,
 };
+use rolldyn::surface::{SurfaceModel, Waviness};
 use rolldyn_io::TimeSeries;
 use serde::Serialize;
+use std::collections::BTreeSet;
 
 /// Band of the vibration velocity RMS \[Hz\] (ISO 20816-1).
 pub const VELOCITY_BAND: (f64, f64) = (10.0, 1000.0);
@@ -162,13 +168,7 @@ pub fn envelope_lines(
     from: usize,
     characteristic: &CharacteristicFrequencies,
 ) -> Option<EnvelopeLines> {
-    let record = series.column(ENVELOPE_CHANNEL)?.get(from..)?;
-    let time = series.column("time_s")?.get(from..)?;
-    let (&first, &last) = (time.first()?, time.last()?);
-    if record.len() < 64 || last <= first {
-        return None;
-    }
-    let sample_rate = (time.len() - 1) as f64 / (last - first);
+    let (record, sample_rate) = analysed_record(series, from)?;
     let band = (0.1 * sample_rate, 0.4 * sample_rate);
     let spectrum = envelope_spectrum(record, sample_rate, band, Window::Hann).ok()?;
     let resolution = spectrum.resolution();
@@ -181,25 +181,148 @@ pub fn envelope_lines(
     let lines = ENVELOPE_LINES
         .iter()
         .zip(frequencies)
-        .map(|(&(name, _), frequency)| {
-            let amplitude = spectrum
-                .frequency
-                .iter()
-                .zip(&spectrum.value)
-                .filter(|(f, _)| (**f - frequency).abs() <= 1.5 * resolution)
-                .map(|(_, v)| *v)
-                .fold(0.0, f64::max);
-            EnvelopeLine {
-                name,
-                frequency_hz: frequency,
-                amplitude_m_s2: amplitude,
-            }
+        .map(|(&(name, _), frequency)| EnvelopeLine {
+            name,
+            frequency_hz: frequency,
+            amplitude_m_s2: peak_near(&spectrum, frequency),
         })
         .collect();
     Some(EnvelopeLines {
         channel: ENVELOPE_CHANNEL,
         band_hz: [band.0, band.1],
         resolution_hz: resolution,
+        lines,
+    })
+}
+
+/// [`ENVELOPE_CHANNEL`] over samples `from..` of `series` and its sample
+/// rate; None when the channel is missing or has fewer than 64 samples.
+fn analysed_record(series: &TimeSeries, from: usize) -> Option<(&[f64], f64)> {
+    let record = series.column(ENVELOPE_CHANNEL)?.get(from..)?;
+    let time = series.column("time_s")?.get(from..)?;
+    let (&first, &last) = (time.first()?, time.last()?);
+    if record.len() < 64 || last <= first {
+        return None;
+    }
+    Some((record, (time.len() - 1) as f64 / (last - first)))
+}
+
+/// The largest value of `spectrum` within 1.5 bins of `frequency`.
+fn peak_near(spectrum: &Spectrum, frequency: f64) -> f64 {
+    let resolution = spectrum.resolution();
+    spectrum
+        .frequency
+        .iter()
+        .zip(&spectrum.value)
+        .filter(|(f, _)| (**f - frequency).abs() <= 1.5 * resolution)
+        .map(|(_, v)| *v)
+        .fold(0.0, f64::max)
+}
+
+/// Most waviness lines reported (the lowest frequencies).
+pub const MAX_WAVINESS_LINES: usize = 40;
+
+/// One line a waviness order excites, with the amplitude spectrum there.
+#[derive(Serialize, Clone, Debug)]
+pub struct WavinessLine {
+    /// `outer_race`, `inner_race` or `ball`.
+    pub part: &'static str,
+    pub order: u32,
+    pub frequency_hz: f64,
+    /// Direction of the vibration the rule predicts (the channel is radial).
+    pub motion: Motion,
+    /// Largest amplitude within 1.5 bins of the line \[m/s²\].
+    pub amplitude_m_s2: f64,
+}
+
+/// The amplitude spectrum at the lines the case's waviness excites.
+#[derive(Serialize, Clone, Debug)]
+pub struct WavinessLines {
+    pub channel: &'static str,
+    pub resolution_hz: f64,
+    pub lines: Vec<WavinessLine>,
+}
+
+/// The waviness lines of [`ENVELOPE_CHANNEL`]'s amplitude spectrum over
+/// samples `from..` of `series`: every order of `surface`'s raceway
+/// (radial and axial) and ball waviness, mapped to its principal
+/// frequencies by Deng et al. 2022's Table 2 at the run's mean speeds
+/// (`characteristic`), below the Nyquist frequency, the lowest
+/// [`MAX_WAVINESS_LINES`]. None without waviness or with fewer than 64
+/// samples.
+pub fn waviness_lines(
+    series: &TimeSeries,
+    from: usize,
+    characteristic: &CharacteristicFrequencies,
+    ball_count: usize,
+    surface: &SurfaceModel,
+) -> Option<WavinessLines> {
+    let orders = |parts: &mut dyn Iterator<Item = &Waviness>| -> BTreeSet<u32> {
+        parts
+            .flat_map(|w| {
+                w.terms
+                    .iter()
+                    .filter(|t| t.amplitude > 0.0)
+                    .map(|t| t.order)
+            })
+            .collect()
+    };
+    let parts = [
+        (
+            "outer_race",
+            WavyPart::OuterRace,
+            orders(&mut [&surface.outer.radial, &surface.outer.axial].into_iter()),
+        ),
+        (
+            "inner_race",
+            WavyPart::InnerRace,
+            orders(&mut [&surface.inner.radial, &surface.inner.axial].into_iter()),
+        ),
+        (
+            "ball",
+            WavyPart::Ball,
+            orders(&mut surface.balls.iter().map(|b| &b.waviness)),
+        ),
+    ];
+    if parts.iter().all(|(_, _, o)| o.is_empty()) {
+        return None;
+    }
+    let (record, sample_rate) = analysed_record(series, from)?;
+    let spectrum = amplitude_spectrum(record, sample_rate, Window::Hann).ok()?;
+    let c = characteristic;
+    let frequencies = Frequencies {
+        shaft_hz: c.shaft,
+        outer_ring_hz: 0.0,
+        contact_angle_deg: 0.0,
+        cage_hz: c.cage,
+        bpfo_hz: c.bpfo,
+        bpfi_hz: c.bpfi,
+        ball_spin_hz: c.ball_spin,
+        ball_count,
+    };
+    let mut lines: Vec<WavinessLine> = parts
+        .iter()
+        .flat_map(|(name, part, orders)| {
+            orders.iter().flat_map(move |&order| {
+                waviness_frequencies(&frequencies, *part, order)
+                    .into_iter()
+                    .map(move |l| (*name, order, l))
+            })
+        })
+        .filter(|(_, _, l)| l.frequency_hz > 0.0 && l.frequency_hz < 0.5 * sample_rate)
+        .map(|(part, order, l)| WavinessLine {
+            part,
+            order,
+            frequency_hz: l.frequency_hz,
+            motion: l.motion,
+            amplitude_m_s2: peak_near(&spectrum, l.frequency_hz),
+        })
+        .collect();
+    lines.sort_by(|a, b| a.frequency_hz.total_cmp(&b.frequency_hz));
+    lines.truncate(MAX_WAVINESS_LINES);
+    Some(WavinessLines {
+        channel: ENVELOPE_CHANNEL,
+        resolution_hz: spectrum.resolution(),
         lines,
     })
 }
@@ -260,5 +383,61 @@ mod tests {
             short.push(&[i as f64 / rate, 0.0]);
         }
         assert!(envelope_lines(&short, 0, &lines).is_none());
+    }
+
+    /// Waviness lines: an inner-race order Z + 1 excites a radial line at
+    /// Z(f_i − f_c) + f_i, found with the amplitude of a sine there; a
+    /// smooth surface gives none.
+    #[test]
+    fn waviness_lines_follow_the_orders() {
+        use rolldyn::surface::{Waviness, WavinessTerm};
+        let lines = CharacteristicFrequencies {
+            shaft: 30.0,
+            cage: 12.0,
+            bpfo: 120.0,
+            bpfi: 180.0,
+            ball_spin: 70.0,
+        };
+        let z = 10;
+        let expected = z as f64 * (lines.shaft - lines.cage) + lines.shaft;
+        let rate = 4096.0;
+        let mut series = TimeSeries::default();
+        series.channel("time_s", "s");
+        series.channel(ENVELOPE_CHANNEL, "m/s^2");
+        for i in 0..4096 {
+            let t = i as f64 / rate;
+            series.push(&[t, 0.5 * (std::f64::consts::TAU * expected * t).sin()]);
+        }
+        let smooth = SurfaceModel::default();
+        assert!(waviness_lines(&series, 0, &lines, z, &smooth).is_none());
+        let mut wavy = SurfaceModel::default();
+        wavy.inner.radial = Waviness {
+            terms: vec![
+                WavinessTerm {
+                    order: z as u32 + 1,
+                    amplitude: 1e-7,
+                    phase: 0.0,
+                },
+                // An order no rule maps: no line.
+                WavinessTerm {
+                    order: 3,
+                    amplitude: 1e-7,
+                    phase: 0.0,
+                },
+            ],
+        };
+        let found = waviness_lines(&series, 0, &lines, z, &wavy).unwrap();
+        assert_eq!(found.lines.len(), 1);
+        let line = &found.lines[0];
+        assert_eq!(
+            (line.part, line.order, line.motion),
+            ("inner_race", 11, Motion::Radial)
+        );
+        assert!((line.frequency_hz - expected).abs() < 1e-9);
+        assert!(
+            (line.amplitude_m_s2 - 0.5).abs() < 0.05,
+            "{}",
+            line.amplitude_m_s2
+        );
     }
 }

@@ -123,6 +123,18 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
         assert!(summary.get(k).is_some(), "summary lacks {k}");
     }
     assert!(summary["outer_ring_velocity_rms_y_mm_s"].is_null());
+    // Outer-race order 22 on 22 balls: one axial line at 22 f_c (Deng et
+    // al. 2022 Table 2), at the run's mean cage speed.
+    let lines = &summary["waviness_lines"]["lines"];
+    assert_eq!(lines.as_array().map(Vec::len), Some(1), "{lines}");
+    assert_eq!(lines[0]["part"], "outer_race");
+    assert_eq!(lines[0]["order"], 22);
+    assert_eq!(lines[0]["motion"], "axial");
+    let cage_hz = summary["mean_cage_speed_rpm"].as_f64().unwrap() / 60.0;
+    let f = lines[0]["frequency_hz"].as_f64().unwrap();
+    assert!((f - 22.0 * cage_hz).abs() < 1e-9 * f, "{f}");
+    assert!(lines[0]["amplitude_m_s2"].as_f64().unwrap() >= 0.0);
+    assert!(summary["envelope_lines"].is_null());
     let check = json(&["check", "-", "--json"], Some(&case));
     assert_eq!(check["surfaces"][0]["part"], "outer");
     assert_eq!(check["surfaces"][0]["max_order"], 22);

@@ -1,11 +1,13 @@
-//! The vibration section of a run report, for a run with a spall or a
-//! speed ramp: the inner ring's vertical acceleration as a diagnostics
+//! The vibration section of a run report, for a run with a spall,
+//! waviness or a speed ramp: the inner ring's vertical acceleration as a diagnostics
 //! engineer reads a measured record (docs/signal.md). For a spall, over
 //! the averaging window: its RMS, peak, crest factor and kurtosis, the
 //! time signal, the amplitude spectrum and the envelope spectrum with the
 //! characteristic lines marked (f_c, BPFO, BPFI ± f_i, 2×BSF ± f_c;
 //! Randall & Antoni 2011's envelope analysis, the lines of
-//! `rolldyn::signal::lines`). For a run whose shaft speed changes (a
+//! `rolldyn::signal::lines`). For waviness, the same statistics and the
+//! amplitude spectrum with the lines its orders excite marked (Deng et
+//! al. 2022 Table 2, the summary's `waviness_lines`). For a run whose shaft speed changes (a
 //! run-up or coast-down), over the whole run: the spectrogram with the
 //! shaft, cage, BPFO and BPFI orders drawn over it (order tracking).
 
@@ -50,8 +52,8 @@ pub fn read_window(path: &Path, [t0, t1]: [f64; 2]) -> Result<Option<Record>, In
 }
 
 /// The records the section needs from the time series at `path`: over
-/// the averaging `window` for a run with a spall (its summary has
-/// envelope lines), over the whole run for a run whose shaft speed
+/// the averaging `window` for a run with a spall or waviness (its summary
+/// has envelope or waviness lines), over the whole run for a run whose shaft speed
 /// (`series`' `inner_ring_speed_rpm`) changes ([`is_ramp`]).
 pub fn read_records(
     path: &Path,
@@ -59,7 +61,8 @@ pub fn read_records(
     series: &rolldyn_io::TimeSeries,
     window: [f64; 2],
 ) -> Result<(Option<Record>, Option<Record>), InputError> {
-    let spalled = summary.get("envelope_lines").is_some_and(|v| !v.is_null());
+    let has = |key: &str| summary.get(key).is_some_and(|v| !v.is_null());
+    let spalled = has("envelope_lines") || has("waviness_lines");
     let ramp = series.column("inner_ring_speed_rpm").is_some_and(is_ramp);
     let defect = if spalled {
         read_window(path, window)?
@@ -130,17 +133,16 @@ fn marks(spectrum: &Spectrum, name: &str, frequencies: &[f64], up_to: f64) -> Se
 /// changes; none when neither has 64 samples of [`CHANNEL`].
 pub fn section(data: &RunData) -> Option<Section> {
     let defect = defect(data);
+    let waviness = waviness(data);
     let run_up = run_up(data);
-    if defect.is_none() && run_up.is_none() {
-        return None;
-    }
-    let title = if defect.is_some() {
-        "Vibration: the defect's signature"
-    } else {
-        "Vibration: the run-up spectrogram"
+    let title = match (&defect, &waviness, &run_up) {
+        (Some(_), _, _) => "Vibration: the defect's signature",
+        (None, Some(_), _) => "Vibration: the waviness signature",
+        (None, None, Some(_)) => "Vibration: the run-up spectrogram",
+        (None, None, None) => return None,
     };
     let mut section = Section::new("vibration", title);
-    for part in [defect, run_up].into_iter().flatten() {
+    for part in [defect, waviness, run_up].into_iter().flatten() {
         section.blocks.extend(part.blocks);
     }
     Some(section)
@@ -164,7 +166,6 @@ fn defect(data: &RunData) -> Option<Section> {
     let (first, last) = (time[0], time[time.len() - 1]);
     let rate = rate_of(time);
     let lines_at = characteristic(data)?;
-    let [rms, peak, crest, kurtosis] = statistics(record);
     let spectrum = amplitude_spectrum(record, rate, Window::Hann).ok()?;
     let band = (0.1 * rate, 0.4 * rate);
     let envelope = envelope_spectrum(record, rate, band, Window::Hann).ok()?;
@@ -216,13 +217,7 @@ fn defect(data: &RunData) -> Option<Section> {
     let (sf, sv) = cut(&spectrum, 0.5 * rate);
     let spectrum_plot = Plot::new("Amplitude spectrum", "frequency [Hz]", "amplitude [m/s²]")
         .with(Series::line("spectrum", &sf, &sv));
-    let t_ms: Vec<f64> = time.iter().map(|t| 1e3 * t).collect();
-    let signal_plot = Plot::new(
-        "Inner-ring vertical acceleration",
-        "time [ms]",
-        "acceleration [m/s²]",
-    )
-    .with(Series::line("a_z", &t_ms, record));
+    let signal_plot = signal_plot(time, record);
     let line_rows = lines
         .get("lines")
         .and_then(serde_json::Value::as_array)
@@ -254,19 +249,111 @@ fn defect(data: &RunData) -> Option<Section> {
                 cell(Some(2.0 * c.ball_spin)),
                 cell(Some(c.cage)),
             ))
-            .table(
-                &["RMS [m/s²]", "peak [m/s²]", "crest factor", "kurtosis"],
-                vec![vec![
-                    cell(Some(rms)),
-                    cell(Some(peak)),
-                    cell(Some(crest)),
-                    cell(Some(kurtosis)),
-                ]],
-            )
+            .table(STATISTICS_HEADER, vec![statistics_row(record)])
             .table(&["line", "frequency [Hz]", "envelope amplitude [m/s²]"], line_rows)
             .figure(signal_plot)
             .figure(spectrum_plot)
             .figure(envelope_plot),
+    )
+}
+
+/// Header of the record's statistics table.
+const STATISTICS_HEADER: &[&str] = &["RMS [m/s²]", "peak [m/s²]", "crest factor", "kurtosis"];
+
+/// The record's [`statistics`] as a table row.
+fn statistics_row(record: &[f64]) -> Vec<String> {
+    statistics(record).iter().map(|v| cell(Some(*v))).collect()
+}
+
+/// The record against time.
+fn signal_plot(time: &[f64], record: &[f64]) -> Plot {
+    let t_ms: Vec<f64> = time.iter().map(|t| 1e3 * t).collect();
+    Plot::new(
+        "Inner-ring vertical acceleration",
+        "time [ms]",
+        "acceleration [m/s²]",
+    )
+    .with(Series::line("a_z", &t_ms, record))
+}
+
+/// The waviness's part (a run whose summary has `waviness_lines` and no
+/// spall): statistics, the time signal and the amplitude spectrum with
+/// the lines each part's orders excite marked.
+fn waviness(data: &RunData) -> Option<Section> {
+    if data
+        .summary
+        .get("envelope_lines")
+        .is_some_and(|v| !v.is_null())
+    {
+        return None;
+    }
+    let lines = data
+        .summary
+        .get("waviness_lines")?
+        .get("lines")?
+        .as_array()?;
+    let (time, record) = data.vibration.as_ref()?;
+    if record.len() < 64 {
+        return None;
+    }
+    let rate = rate_of(time);
+    let spectrum = amplitude_spectrum(record, rate, Window::Hann).ok()?;
+    let text = |l: &serde_json::Value, key: &str| {
+        l.get(key)
+            .and_then(serde_json::Value::as_str)
+            .unwrap_or("")
+            .to_string()
+    };
+    let number = |l: &serde_json::Value, key: &str| l.get(key).and_then(serde_json::Value::as_f64);
+    let top = lines
+        .iter()
+        .filter_map(|l| number(l, "frequency_hz"))
+        .fold(0.0, f64::max);
+    let up_to = (1.25 * top).clamp(0.0, 0.5 * rate);
+    let k = spectrum
+        .frequency
+        .iter()
+        .take_while(|&&f| f <= up_to)
+        .count();
+    let mut plot = Plot::new("Amplitude spectrum", "frequency [Hz]", "amplitude [m/s²]").with(
+        Series::line("spectrum", &spectrum.frequency[..k], &spectrum.value[..k]),
+    );
+    for part in ["outer_race", "inner_race", "ball"] {
+        let at: Vec<f64> = lines
+            .iter()
+            .filter(|l| text(l, "part") == part)
+            .filter_map(|l| number(l, "frequency_hz"))
+            .collect();
+        if !at.is_empty() {
+            plot = plot.with(marks(&spectrum, &part.replace('_', " "), &at, up_to));
+        }
+    }
+    let rows = lines
+        .iter()
+        .map(|l| {
+            vec![
+                text(l, "part").replace('_', " "),
+                cell(number(l, "order")),
+                cell(number(l, "frequency_hz")),
+                text(l, "motion"),
+                cell(number(l, "amplitude_m_s2")),
+            ]
+        })
+        .collect();
+    Some(
+        Section::new("vibration", "Vibration: the waviness signature")
+            .paragraph(format!(
+                "The inner ring's vertical acceleration over the averaging window ({} samples at {} Hz). The lines are those the case's waviness orders excite (Deng et al. 2022 Table 2: a raceway order kZ ± 1 gives a radial line at kZ f_c on the outer race and kZ(f_i − f_c) ± f_i on the inner, an order kZ an axial one; a ball order 2k gives 2k f_b and 2k f_b ± f_c), at the run's mean shaft and cage speeds; the amplitude is the spectrum's largest within 1.5 bins.",
+                record.len(),
+                cell(Some(rate)),
+            ))
+            .table(STATISTICS_HEADER, vec![statistics_row(record)])
+            .table(
+                &["part", "order", "frequency [Hz]", "motion", "amplitude [m/s²]"],
+                rows,
+            )
+            .figure(signal_plot(time, record))
+            .figure(plot),
     )
 }
 

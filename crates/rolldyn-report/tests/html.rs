@@ -334,6 +334,50 @@ fn a_spalled_run_has_a_vibration_section() {
     assert!(!check_page(&html).0.contains(&"vibration".to_string()));
 }
 
+/// A run with waviness (its summary has `waviness_lines`, no spall) gets
+/// the vibration section with the amplitude spectrum and the lines its
+/// orders excite; without the key it gets none.
+#[test]
+fn a_wavy_run_has_a_vibration_section() {
+    let dir = temp_dir("wavy");
+    synthetic_run(&dir);
+    let mut s = TimeSeries::default();
+    s.channel("time_s", "s");
+    s.channel("inner_ring_acceleration_z_m_s2", "m/s^2");
+    s.channel("cage_speed_rpm", "rpm");
+    let rate = 12_000.0;
+    for k in 0..6000 {
+        let t = k as f64 / rate;
+        s.push(&[t, (std::f64::consts::TAU * 900.0 * t).sin(), 720.0]);
+    }
+    write_parquet(&dir.join("timeseries.parquet"), &s, &[]).unwrap();
+    let mut summary = with_speeds(
+        &dir,
+        serde_json::json!({
+            "averaging_window_s": [0.25, 0.5],
+            "inner_ring_speed_rpm": 1772.0,
+            "mean_cage_speed_rpm": 705.8,
+            "envelope_lines": null,
+            "waviness_lines": {"channel": "inner_ring_acceleration_z_m_s2", "resolution_hz": 4.0,
+                "lines": [{"part": "outer_race", "order": 8, "frequency_hz": 900.0,
+                    "motion": "radial", "amplitude_m_s2": 1.0}]}
+        }),
+    );
+    let html = report_for(&dir, None).unwrap().to_html();
+    let (sections, _) = check_page(&html);
+    assert!(sections.contains(&"vibration".to_string()), "{sections:?}");
+    assert!(html.contains("Vibration: the waviness signature"));
+    assert!(
+        html.contains("<td>outer race</td><td>8</td><td>900</td><td>radial</td>"),
+        "the lines' table"
+    );
+    assert!(!html.contains("Envelope spectrum"));
+    summary["waviness_lines"] = serde_json::Value::Null;
+    std::fs::write(dir.join("summary.json"), summary.to_string()).unwrap();
+    let html = report_for(&dir, None).unwrap().to_html();
+    assert!(!check_page(&html).0.contains(&"vibration".to_string()));
+}
+
 /// A run whose shaft speed changes gets the run-up spectrogram: a heat map
 /// of the whole record with the shaft, cage, BPFO and BPFI orders drawn
 /// over it; a run at constant speed does not.
