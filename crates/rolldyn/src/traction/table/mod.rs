@@ -228,10 +228,18 @@ impl Table {
             l.magnitudes,
             1,
         ];
-        let cells = [g, a, b, c, u];
-        let base: usize = cells.iter().zip(strides).map(|((k, _), s)| k * s).sum();
+        let cells = [g, a, b, c];
+        let base: usize = cells
+            .iter()
+            .zip(strides)
+            .map(|((k, _), s)| k * s)
+            .sum::<usize>()
+            + u.0;
+        let (u_lower, u_upper) = (1.0 - u.1, u.1);
         let mut sum = [0.0; OUTPUTS];
-        for corner in 0..32usize {
+        // The 16 corners in (ratio, α, β, γ); each reads its two magnitude
+        // nodes, adjacent in storage.
+        for corner in 0..16usize {
             let (mut w, mut node) = (1.0, base);
             for (dim, ((_, upper), stride)) in cells.iter().zip(strides).enumerate() {
                 if (corner >> dim) & 1 == 1 {
@@ -244,9 +252,10 @@ impl Table {
             if w == 0.0 {
                 continue;
             }
-            let values = &self.values[node * OUTPUTS..(node + 1) * OUTPUTS];
-            for (total, v) in sum.iter_mut().zip(values) {
-                *total += w * f64::from(*v);
+            let pair = &self.values[node * OUTPUTS..(node + 2) * OUTPUTS];
+            let (lower, upper) = pair.split_at(OUTPUTS);
+            for k in 0..OUTPUTS {
+                sum[k] += w * (u_lower * f64::from(lower[k]) + u_upper * f64::from(upper[k]));
             }
         }
         let mut out = sum.map(|v| v / QUANTUM);
