@@ -169,7 +169,7 @@ fn compared(summary: &Summary) -> Vec<(&'static str, f64, f64, f64)> {
     }
     // Envelope lines of a run with a spall; a line below a tenth of the
     // strongest is the spectrum's floor, not a signature.
-    if let Some(envelope) = &summary.envelope_lines {
+    if let Some(envelope) = &summary.surface_lines.envelope_lines {
         let strongest = envelope
             .lines
             .iter()

@@ -86,12 +86,9 @@ pub struct Summary {
     /// Vibration velocity RMS and cage-whirl metrics.
     #[serde(flatten)]
     pub vibration: VibrationSummary,
-    /// Envelope-spectrum amplitudes of the characteristic lines (runs
-    /// with a spall; null otherwise).
-    pub envelope_lines: Option<crate::vibration::EnvelopeLines>,
-    /// Amplitude spectrum at the lines the case's waviness excites (runs
-    /// with waviness; null otherwise).
-    pub waviness_lines: Option<crate::vibration::WavinessLines>,
+    /// The spectra's lines of a run with a spall or waviness.
+    #[serde(flatten)]
+    pub surface_lines: crate::vibration::SurfaceLines,
     /// Friction power by component and friction torque.
     #[serde(flatten)]
     pub power: PowerSummary,
@@ -775,14 +772,8 @@ fn summarise(
         mean_yaw_deg: window.pooled_mean("yaw_deg"),
         max_abs_yaw_deg: window.pooled_max_abs("yaw_deg"),
         vibration: crate::vibration::summarise(&signal, 0, case.outer_ring.is_some()),
-        envelope_lines: case
-            .surface
-            .spalls()
-            .next()
-            .and_then(|_| crate::vibration::envelope_lines(&signal, 0, &characteristic)),
-        waviness_lines: crate::vibration::waviness_lines(
+        surface_lines: crate::vibration::surface_lines(
             &signal,
-            0,
             &characteristic,
             balls,
             &case.surface,

@@ -195,6 +195,34 @@ pub fn envelope_lines(
     })
 }
 
+/// The spectra's lines a run's surfaces call for, over the whole of
+/// `series` (the summary's window).
+#[derive(Serialize, Clone, Debug)]
+pub struct SurfaceLines {
+    /// Envelope-spectrum amplitudes of the characteristic lines (runs with
+    /// a spall; null otherwise).
+    pub envelope_lines: Option<EnvelopeLines>,
+    /// Amplitude spectrum at the lines the case's waviness excites (runs
+    /// with waviness; null otherwise).
+    pub waviness_lines: Option<WavinessLines>,
+}
+
+/// [`envelope_lines`] for a surface with a spall and [`waviness_lines`].
+pub fn surface_lines(
+    series: &TimeSeries,
+    characteristic: &CharacteristicFrequencies,
+    ball_count: usize,
+    surface: &SurfaceModel,
+) -> SurfaceLines {
+    SurfaceLines {
+        envelope_lines: surface
+            .spalls()
+            .next()
+            .and_then(|_| envelope_lines(series, 0, characteristic)),
+        waviness_lines: waviness_lines(series, 0, characteristic, ball_count, surface),
+    }
+}
+
 /// [`ENVELOPE_CHANNEL`] over samples `from..` of `series` and its sample
 /// rate; None when the channel is missing or has fewer than 64 samples.
 fn analysed_record(series: &TimeSeries, from: usize) -> Option<(&[f64], f64)> {

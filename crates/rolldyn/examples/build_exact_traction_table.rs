@@ -11,14 +11,8 @@
 
 use rolldyn::traction::table::{build, layout::Layout};
 
-/// The embedded table's node grid.
-const LAYOUT: Layout = Layout {
-    ratios: 11,
-    alphas: 9,
-    betas: 17,
-    gammas: 9,
-    magnitudes: 11,
-};
+/// The embedded table's grid.
+const LAYOUT: Layout = Layout::EMBEDDED;
 
 /// Poisson ratio of the table's shape.
 const POISSON_RATIO: f64 = 0.28;

@@ -409,27 +409,20 @@ impl Fastsim {
             conditions.rolling_velocity,
             self.regularisation_speed,
             |direction, dominant| {
-                if dominant {
-                    self.march(
-                        patch,
-                        slip_at_point,
-                        relative_spin,
-                        speed,
-                        direction,
-                        &coefficients,
-                        &mut map,
-                    )
-                } else {
-                    self.march(
-                        patch,
-                        slip_at_point,
-                        relative_spin,
-                        speed,
-                        direction,
-                        &coefficients,
-                        &mut |_: &MapCell| {},
-                    )
-                }
+                // The map shows the dominant flow direction only.
+                self.march(
+                    patch,
+                    slip_at_point,
+                    relative_spin,
+                    speed,
+                    direction,
+                    &coefficients,
+                    &mut |cell: &MapCell| {
+                        if dominant {
+                            map(cell)
+                        }
+                    },
+                )
             },
         );
         out.moment = out.couple + (patch.point - ball_centre).cross(&out.force);

@@ -37,6 +37,16 @@ impl Layout {
     /// log₂ of the slenderest tabulated ratio a/b (1/32).
     pub const LOG_RATIO_MIN: f64 = -5.0;
 
+    /// The embedded table's grid (docs/dynamics.md): 11 ratios, α at
+    /// 11.25°, β at 11.25°, γ at 22.5°, 11 magnitudes.
+    pub const EMBEDDED: Layout = Layout {
+        ratios: 11,
+        alphas: 9,
+        betas: 17,
+        gammas: 9,
+        magnitudes: 11,
+    };
+
     /// Number of nodes.
     pub fn nodes(&self) -> usize {
         self.ratios * self.alphas * self.betas * self.gammas * self.magnitudes

@@ -3,14 +3,8 @@ use super::*;
 use crate::traction::Fastsim;
 use crate::traction::exact::ExactRolling;
 
-/// The embedded table's grid (as `examples/build_exact_traction_table.rs`).
-const LAYOUT: Layout = Layout {
-    ratios: 11,
-    alphas: 9,
-    betas: 17,
-    gammas: 9,
-    magnitudes: 11,
-};
+/// The embedded table's grid.
+const LAYOUT: Layout = Layout::EMBEDDED;
 
 /// A deterministic sequence in [0, 1).
 fn uniform(state: &mut u64) -> f64 {
