@@ -17,10 +17,10 @@
 
 use rolldyn::RingKind;
 use rolldyn::dynamics::ContactSample;
+use rolldyn::dynamics::{TractionSolveOptions, solve_traction_consistent};
 use rolldyn::integrate::{
     DEFAULT_ENERGY_TOLERANCE, Integrator, OdeSystem, ROS34PW2, Rosenbrock, RunEnd, run,
 };
-use rolldyn::quasistatic::{TractionSolveOptions, solve_traction_consistent};
 use rolldyn::traction::fastsim::MapCell;
 use rolldyn_case::{Override, load_case, presets, simulation};
 use std::fmt::Write as _;

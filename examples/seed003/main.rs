@@ -45,8 +45,8 @@ const RADIAL_LOADS: [f64; 3] = [10.0, 20.0, 30.0];
 const MIXED_ROUGHNESS: f64 = 0.101_98e-6;
 /// Mixed-lubrication parameters of that table: assumed typical values
 /// (docs/lubrication.md), boundary friction 0.1.
-const MIXED: rolldyn::lubrication::mixed::MixedLubrication =
-    rolldyn::lubrication::mixed::MixedLubrication {
+const MIXED: rolldyn::traction::mixed::MixedLubrication =
+    rolldyn::traction::mixed::MixedLubrication {
         boundary: rolldyn::traction::ModifiedCoulomb {
             friction: 0.1,
             stick_speed: 0.0,

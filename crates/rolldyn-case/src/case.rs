@@ -109,7 +109,7 @@ pub struct Case {
     /// The lubricant film in the normal approach.
     pub film_in_approach: bool,
     /// Mixed lubrication (`[model.mixed_lubrication]`; None: off).
-    pub mixed_lubrication: Option<rolldyn::lubrication::mixed::MixedLubrication>,
+    pub mixed_lubrication: Option<rolldyn::traction::mixed::MixedLubrication>,
     /// Inner-ring mass \[kg\], if given.
     pub inner_ring_mass: Option<f64>,
     /// Inner-ring tilt inertia \[kg·m²\], if given.

@@ -4,10 +4,9 @@
 //! Jones–Harris solution, on one core; median of 7 solves.
 //! Target: ≤ 5 ms. Figures in docs/performance.md.
 
+use rolldyn::dynamics::{TractionSolveOptions, solve_traction_consistent};
 use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
-use rolldyn::quasistatic::{
-    Conditions, QuasiStaticSolver, SolverOptions, TractionSolveOptions, solve_traction_consistent,
-};
+use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, SolverOptions};
 use rolldyn_case::{load_case, presets, simulation};
 use std::time::Instant;
 

@@ -88,7 +88,7 @@ impl ContactFilmRow {
     /// contact's load and Hertz ellipse (docs/lubrication.md).
     fn with_share(
         mut self,
-        mixed: Option<&rolldyn::lubrication::mixed::MixedLubrication>,
+        mixed: Option<&rolldyn::traction::mixed::MixedLubrication>,
         contact: &rolldyn::quasistatic::ContactSolution,
         effective_modulus: f64,
     ) -> Self {

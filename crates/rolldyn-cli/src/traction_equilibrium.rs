@@ -1,6 +1,6 @@
 //! `rolldyn quasistatic --control traction` and `solver.start =
 //! "quasistatic_traction"`: the traction-consistent quasi-static
-//! equilibrium (no raceway control; [`rolldyn::quasistatic::traction_control`]),
+//! equilibrium (no raceway control; [`rolldyn::dynamics::traction_equilibrium`]),
 //! started from the case's Jones–Harris solution. Keys in docs/cli.md.
 
 use rolldyn::dynamics::ContactSample;

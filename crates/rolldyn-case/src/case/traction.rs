@@ -5,8 +5,8 @@
 use super::{Invalid, Lubricant, Materials};
 use crate::raw::{RawMixedLubrication, RawTraction, TractionChoice};
 use rolldyn::RingKind;
-use rolldyn::lubrication::mixed::MixedLubrication;
 use rolldyn::traction::fastsim::combined_elastic_constants;
+use rolldyn::traction::mixed::MixedLubrication;
 use rolldyn::traction::{
     EhlRheology, ExactTable, Fastsim, ModifiedCoulomb, TractionCurve, TractionIntegration,
     TractionModel,

@@ -42,8 +42,9 @@ use crate::case::Invalid;
 use crate::raw::StartChoice;
 use rolldyn::InvalidParameter;
 use rolldyn::dynamics::{BearingModel, DynamicsParameters, ThermalCoupling};
+use rolldyn::dynamics::{TractionSolveOptions, solve_traction_consistent};
 use rolldyn::integrate::{IntegrationError, RunReport, Solver, run};
-use rolldyn::quasistatic::{QuasiStaticError, TractionSolveOptions, solve_traction_consistent};
+use rolldyn::quasistatic::QuasiStaticError;
 use std::sync::atomic::AtomicBool;
 
 /// Why a case cannot be simulated.

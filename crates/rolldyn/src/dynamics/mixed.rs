@@ -14,7 +14,7 @@ use crate::contact::hertz::{HertzCoefficients, HertzResult};
 use crate::error::InvalidParameter;
 use crate::geometry::RingKind;
 use crate::lubrication::ContactFilm;
-use crate::lubrication::mixed::MixedLubrication;
+use crate::traction::mixed::MixedLubrication;
 
 /// Checks that mixed lubrication has what it needs: its parameters, a film
 /// model (EHL traction) and a roughness at both raceways' contacts.

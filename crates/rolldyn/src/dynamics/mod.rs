@@ -19,12 +19,12 @@
 //! | `race_contact` | ball–raceway normal force, traction, hysteresis |
 //! | `film` | the contacts' steady films, and the film in the normal approach |
 //! | `pocket` | ball–pocket contact |
-//! | `drag` | air–oil drag on balls and cage |
 //! | `supports` | ring spring–dampers |
 //! | `surface_contact` | waviness and spalls in the contacts, spall step limit |
 //! | `energy` | mechanical energy, work and dissipation |
 //! | `outputs` | per-contact output samples, pure-rolling reference |
 //! | `thermal_coupling` | the thermal network advanced alongside a run, oil viscosity fed back |
+//! | `traction_equilibrium` | the traction-consistent steady state the runs start from (no raceway control) |
 //! | `checkpoint` | the model's memory (contact episodes, thermal network) in a run's checkpoint |
 
 mod ball_equations;
@@ -32,7 +32,6 @@ mod ball_pass;
 mod block_split;
 pub mod checkpoint;
 mod coupling;
-pub mod drag;
 pub mod energy;
 pub mod film;
 pub mod layout;
@@ -46,9 +45,10 @@ pub mod race_contact;
 pub mod supports;
 pub mod surface_contact;
 pub mod thermal_coupling;
+pub mod traction_equilibrium;
 
 pub use crate::cage::{CageParameters, GuideLand, PocketLaw, PocketShape};
-pub use drag::DragParameters;
+pub use crate::lubrication::drag::DragParameters;
 pub use energy::Energy;
 pub use layout::StateLayout;
 pub use model::BearingModel;
@@ -56,3 +56,6 @@ pub use parameters::DynamicsParameters;
 pub use race_contact::{ContactOutput, ContactSample, HYSTERESIS_RAMP_SPEED};
 pub use supports::{OuterRing, Support};
 pub use thermal_coupling::ThermalCoupling;
+pub use traction_equilibrium::{
+    TractionEquilibrium, TractionSolveOptions, solve_traction_consistent,
+};

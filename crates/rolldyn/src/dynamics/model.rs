@@ -25,7 +25,7 @@
 //! # Force elements
 //! Each lives in its own file: ball–raceway contact and rolling resistance
 //! ([`super::race_contact`]), ball–pocket ([`super::pocket`]), drag
-//! ([`super::drag`]), ring supports ([`super::supports`]); the energy
+//! ([`crate::lubrication::drag`]), ring supports ([`super::supports`]); the energy
 //! bookkeeping is in [`super::energy`], output quantities in
 //! [`super::outputs`]; a ball's equations sum its contacts' shares in
 //! `dynamics::ball_equations`, and the block structure the implicit

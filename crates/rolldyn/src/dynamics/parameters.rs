@@ -3,10 +3,10 @@
 //! [`DynamicsParameters::new`] setting all but the inner ring's inertia and
 //! the cage to documented defaults (docs/dynamics.md).
 
-use super::drag::DragParameters;
 use super::supports::{OuterRing, Support};
 use crate::cage::CageParameters;
 use crate::contact::NormalForceLaw;
+use crate::lubrication::drag::DragParameters;
 use crate::operating::{LoadProfile, SpeedProfile};
 use crate::surface::SurfaceModel;
 use crate::traction::TractionModel;
@@ -60,7 +60,7 @@ pub struct DynamicsParameters {
     /// asperities' share of each contact's load, from the film parameter
     /// Λ = h_min/σ (`lubrication::mixed`). Needs a film model (EHL
     /// traction) and the raceways' and balls' roughness (`surface`).
-    pub mixed_lubrication: Option<crate::lubrication::mixed::MixedLubrication>,
+    pub mixed_lubrication: Option<crate::traction::mixed::MixedLubrication>,
 }
 
 impl DynamicsParameters {

@@ -37,10 +37,7 @@
 //! separation to fall below the smooth film, which this uncoupled sharing
 //! does not model. φ falls monotonically with Λ.
 
-use crate::error::{InvalidParameter, require_positive};
 use crate::math::interp::UniformPchip;
-use crate::traction::ModifiedCoulomb;
-use serde::{Deserialize, Serialize};
 use std::sync::LazyLock;
 
 /// Film parameter from which the surfaces are taken as separated (φ = 0).
@@ -83,63 +80,34 @@ pub fn f_five_halves(lambda: f64) -> f64 {
     }
 }
 
-/// Mixed lubrication of the ball–raceway contacts (case file:
-/// `[model.mixed_lubrication]`).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct MixedLubrication {
-    /// Boundary friction of the asperity contacts: μ_b and the slip
-    /// regularisation of the modified Coulomb law.
-    pub boundary: ModifiedCoulomb,
-    /// Roughness parameter σβη \[-\].
-    pub sigma_beta_eta: f64,
-    /// Ratio of the composite roughness to the summit radius σ/β \[-\].
-    pub sigma_over_beta: f64,
+/// Greenwood and Tripp's constant K = (16√2 π/15) (σβη)² √(σ/β) from the
+/// roughness parameter σβη and the ratio σ/β \[-\].
+pub fn asperity_constant(sigma_beta_eta: f64, sigma_over_beta: f64) -> f64 {
+    16.0 * std::f64::consts::SQRT_2 * std::f64::consts::PI / 15.0
+        * sigma_beta_eta.powi(2)
+        * sigma_over_beta.sqrt()
 }
 
-impl MixedLubrication {
-    /// Checks the parameters; the error names the field.
-    pub fn validate(&self) -> Result<(), InvalidParameter> {
-        self.boundary.validate()?;
-        require_positive("sigma_beta_eta", self.sigma_beta_eta)?;
-        require_positive("sigma_over_beta", self.sigma_over_beta)?;
-        if self.sigma_over_beta > 1.0 {
-            return Err(InvalidParameter::new(
-                "sigma_over_beta",
-                self.sigma_over_beta,
-                "summits much sharper than their height spread (σ/β > 1) are outside Greenwood and Tripp's small-slope model; typical values are 1e-4 to 1e-2",
-            ));
-        }
-        Ok(())
-    }
+/// Asperity pressure p_a = K E* F_{5/2}(Λ) \[Pa\] at film parameter Λ for
+/// the constant K ([`asperity_constant`]), with docs/model.md §2.2's
+/// effective modulus E' = 2E* \[Pa\].
+pub fn asperity_pressure(constant: f64, film_parameter: f64, effective_modulus: f64) -> f64 {
+    constant * 0.5 * effective_modulus * f_five_halves(film_parameter)
+}
 
-    /// K = (16√2 π/15) (σβη)² √(σ/β).
-    pub fn asperity_constant(&self) -> f64 {
-        16.0 * std::f64::consts::SQRT_2 * std::f64::consts::PI / 15.0
-            * self.sigma_beta_eta.powi(2)
-            * self.sigma_over_beta.sqrt()
+/// The asperities' share φ = min(1, p_a/p̄) of a contact's load for the
+/// constant K, at film parameter Λ and mean Hertz pressure p̄ = Q/(πab)
+/// \[Pa\]; 0 for an unloaded contact.
+pub fn asperity_share(
+    constant: f64,
+    film_parameter: f64,
+    mean_pressure: f64,
+    effective_modulus: f64,
+) -> f64 {
+    if mean_pressure <= 0.0 {
+        return 0.0;
     }
-
-    /// Asperity pressure p_a = K E* F_{5/2}(Λ) \[Pa\] at film parameter Λ,
-    /// with docs/model.md §2.2's effective modulus E' = 2E* \[Pa\].
-    pub fn asperity_pressure(&self, film_parameter: f64, effective_modulus: f64) -> f64 {
-        self.asperity_constant() * 0.5 * effective_modulus * f_five_halves(film_parameter)
-    }
-
-    /// The asperities' share φ = min(1, p_a/p̄) of a contact's load, at
-    /// film parameter Λ and mean Hertz pressure p̄ = Q/(πab) \[Pa\]; 0 for an
-    /// unloaded contact.
-    pub fn asperity_share(
-        &self,
-        film_parameter: f64,
-        mean_pressure: f64,
-        effective_modulus: f64,
-    ) -> f64 {
-        if mean_pressure <= 0.0 {
-            return 0.0;
-        }
-        (self.asperity_pressure(film_parameter, effective_modulus) / mean_pressure).min(1.0)
-    }
+    (asperity_pressure(constant, film_parameter, effective_modulus) / mean_pressure).min(1.0)
 }
 
 #[cfg(test)]
@@ -203,52 +171,26 @@ mod tests {
         }
     }
 
-    fn mixed() -> MixedLubrication {
-        MixedLubrication {
-            boundary: ModifiedCoulomb {
-                friction: 0.1,
-                stick_speed: 0.0,
-                full_speed: 1e-3,
-            },
-            sigma_beta_eta: 0.04,
-            sigma_over_beta: 1e-3,
-        }
-    }
-
     #[test]
     fn the_share_falls_with_the_film_parameter_from_its_zero_film_limit() {
-        let m = mixed();
         let e = 2.3e11;
         // K = 4.7393 × 0.0016 × √1e-3.
         let k = 16.0 * 2f64.sqrt() * std::f64::consts::PI / 15.0 * 0.0016 * 1e-3f64.sqrt();
-        assert!((m.asperity_constant() / k - 1.0).abs() < 1e-14);
+        assert!((asperity_constant(0.04, 1e-3) / k - 1.0).abs() < 1e-14);
         let p = 1e9;
-        let at_zero = m.asperity_share(0.0, p, e);
+        let at_zero = asperity_share(k, 0.0, p, e);
         assert!((at_zero / (k * 0.5 * e * F52_AT_0 / p) - 1.0).abs() < 1e-8);
         // At bearing pressures the zero-film share stays small (~1.7 %).
         assert!(at_zero > 0.01 && at_zero < 0.03, "{at_zero}");
         // At a low pressure the summits carry the whole load: φ = 1.
-        assert_eq!(m.asperity_share(0.0, 1e6, e), 1.0);
+        assert_eq!(asperity_share(k, 0.0, 1e6, e), 1.0);
         let mut last = at_zero;
         for i in 1..=700 {
-            let share = m.asperity_share(i as f64 * 0.01, p, e);
+            let share = asperity_share(k, i as f64 * 0.01, p, e);
             assert!(share <= last, "Λ = {}", i as f64 * 0.01);
             last = share;
         }
-        assert_eq!(m.asperity_share(SMOOTH_ABOVE, p, e), 0.0);
-        assert_eq!(m.asperity_share(1.0, 0.0, e), 0.0);
-    }
-
-    #[test]
-    fn bad_parameters_are_refused() {
-        let mut m = mixed();
-        m.sigma_beta_eta = 0.0;
-        assert_eq!(m.validate().unwrap_err().field, "sigma_beta_eta");
-        let mut m = mixed();
-        m.sigma_over_beta = 2.0;
-        assert_eq!(m.validate().unwrap_err().field, "sigma_over_beta");
-        let mut m = mixed();
-        m.boundary.friction = -1.0;
-        assert_eq!(m.validate().unwrap_err().field, "friction");
+        assert_eq!(asperity_share(k, SMOOTH_ABOVE, p, e), 0.0);
+        assert_eq!(asperity_share(k, 1.0, 0.0, e), 0.0);
     }
 }

@@ -15,6 +15,7 @@
 //! effective modulus of docs/model.md §2.2 (E' = 2/[(1−ν₁²)/E₁ + (1−ν₂²)/E₂]), the
 //! one Hamrock & Dowson use.
 //!
+//! [`drag`]: drag of the air–oil mixture on the balls and the cage.
 //! [`approach`]: the film in the normal approach, a state relaxing to
 //! its steady value. [`starvation`]: starved films from the inlet distance or the oil supply
 //! (Zhang et al. 2020 eqs 26–30). [`film`]: a contact's whole film state (flooded
@@ -25,6 +26,7 @@ use crate::error::InvalidParameter;
 use serde::{Deserialize, Serialize};
 
 pub mod approach;
+pub mod drag;
 pub mod film;
 pub mod mixed;
 pub mod starvation;

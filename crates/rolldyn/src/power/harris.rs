@@ -36,7 +36,7 @@
 //! ```text
 //! cage land     H_cl = T_land (ω_land − ω_c)              Petroff shear of the guide land, cage centred (crate::cage::GuideLand)
 //! ball–pocket   H_cb = f_c Σ N_j (D/2) ω_R,j,  Σ N_j = (|T_land| + |T_cage drag|)/r_p + m_c g (no guide land)
-//! drag          balls: −(F v_t + M·ω_b), cage: c₁ ω_c² + c₂ |ω_c|³ (crate::dynamics::DragParameters)
+//! drag          balls: −(F v_t + M·ω_b), cage: c₁ ω_c² + c₂ |ω_c|³ (crate::lubrication::drag::DragParameters)
 //! ```
 //! The pocket forces are those that hold the cage against its drag (Harris
 //! & Kotzalas ch. 7 take the cage weight, Lei et al. 2023 eq 37); they act where
@@ -50,8 +50,8 @@
 //! compares the two.
 
 use crate::cage::GuideLand;
-use crate::dynamics::DragParameters;
 use crate::geometry::{BearingGeometry, RingKind};
+use crate::lubrication::drag::DragParameters;
 use crate::math::elliptic;
 use crate::quasistatic::Equilibrium;
 use crate::quasistatic::contact_motion::contact_motions;

@@ -15,7 +15,7 @@ pub enum QuasiStaticError {
         /// Speed at which the failure happened \[rpm\].
         speed_rpm: f64,
     },
-    /// The traction-consistent solve ([`super::traction_control`]) did not
+    /// The traction-consistent solve ([`crate::dynamics::traction_equilibrium`]) did not
     /// converge.
     #[error(
         "no traction-consistent equilibrium at {speed_rpm:.0} rpm: Newton stopped after {iterations} iterations with a residual force of {residual:.3e} of the largest contact load (with little friction the balls may have no rolling equilibrium: the gyroscopic moment exceeds what the traction can hold, and the balls pivot)"

@@ -1,8 +1,8 @@
 //! Quasi-static solvers (docs/model.md §7): the static load distribution of a
 //! bearing under combined loads and the high-speed Jones–Harris
-//! equilibrium, one set of equations ([`equilibrium`]); and the
+//! equilibrium, one set of equations ([`equilibrium`]). The
 //! traction-consistent equilibrium of the dynamic model's force elements,
-//! without raceway control ([`traction_control`]).
+//! without raceway control, is [`crate::dynamics::traction_equilibrium`].
 //!
 //! Every ball contact comes from the exact torus geometry of docs/model.md §2.1
 //! ([`ring_contact`]), with analytic derivatives, so Newton's method and
@@ -23,11 +23,9 @@ pub mod ring_contact;
 pub mod stiffness;
 pub mod sweep;
 pub mod system;
-pub mod traction_control;
 
 pub use equilibrium::{
     BallSolution, Conditions, ContactSolution, Equilibrium, QuasiStaticError, QuasiStaticSolver,
     RacewayControl, SolverOptions,
 };
 pub use sweep::sweep;
-pub use traction_control::{TractionEquilibrium, TractionSolveOptions, solve_traction_consistent};

@@ -11,7 +11,73 @@
 //! dissipates and the energy balance (B2) needs nothing more.
 
 use super::{BATCH, ContactConditions, ModifiedCoulomb, TractionLaw};
+use crate::error::{InvalidParameter, require_positive};
+use crate::lubrication;
 use nalgebra::Vector3;
+use serde::{Deserialize, Serialize};
+
+/// Mixed lubrication of the ball–raceway contacts (case file:
+/// `[model.mixed_lubrication]`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MixedLubrication {
+    /// Boundary friction of the asperity contacts: μ_b and the slip
+    /// regularisation of the modified Coulomb law.
+    pub boundary: ModifiedCoulomb,
+    /// Roughness parameter σβη \[-\].
+    pub sigma_beta_eta: f64,
+    /// Ratio of the composite roughness to the summit radius σ/β \[-\].
+    pub sigma_over_beta: f64,
+}
+
+impl MixedLubrication {
+    /// Checks the parameters; the error names the field.
+    pub fn validate(&self) -> Result<(), InvalidParameter> {
+        self.boundary.validate()?;
+        require_positive("sigma_beta_eta", self.sigma_beta_eta)?;
+        require_positive("sigma_over_beta", self.sigma_over_beta)?;
+        if self.sigma_over_beta > 1.0 {
+            return Err(InvalidParameter::new(
+                "sigma_over_beta",
+                self.sigma_over_beta,
+                "summits much sharper than their height spread (σ/β > 1) are outside Greenwood and Tripp's small-slope model; typical values are 1e-4 to 1e-2",
+            ));
+        }
+        Ok(())
+    }
+
+    /// K = (16√2 π/15) (σβη)² √(σ/β).
+    pub fn asperity_constant(&self) -> f64 {
+        lubrication::mixed::asperity_constant(self.sigma_beta_eta, self.sigma_over_beta)
+    }
+
+    /// Asperity pressure p_a = K E* F_{5/2}(Λ) \[Pa\] at film parameter Λ,
+    /// with docs/model.md §2.2's effective modulus E' = 2E* \[Pa\].
+    pub fn asperity_pressure(&self, film_parameter: f64, effective_modulus: f64) -> f64 {
+        lubrication::mixed::asperity_pressure(
+            self.asperity_constant(),
+            film_parameter,
+            effective_modulus,
+        )
+    }
+
+    /// The asperities' share φ = min(1, p_a/p̄) of a contact's load, at
+    /// film parameter Λ and mean Hertz pressure p̄ = Q/(πab) \[Pa\]; 0 for an
+    /// unloaded contact.
+    pub fn asperity_share(
+        &self,
+        film_parameter: f64,
+        mean_pressure: f64,
+        effective_modulus: f64,
+    ) -> f64 {
+        lubrication::mixed::asperity_share(
+            self.asperity_constant(),
+            film_parameter,
+            mean_pressure,
+            effective_modulus,
+        )
+    }
+}
 
 /// A fluid stress law blended with boundary friction at one contact.
 pub struct Blended<'a, L: TractionLaw> {
@@ -108,5 +174,30 @@ mod tests {
                 "cell {k}"
             );
         }
+    }
+
+    fn mixed() -> MixedLubrication {
+        MixedLubrication {
+            boundary: ModifiedCoulomb {
+                friction: 0.1,
+                stick_speed: 0.0,
+                full_speed: 1e-3,
+            },
+            sigma_beta_eta: 0.04,
+            sigma_over_beta: 1e-3,
+        }
+    }
+
+    #[test]
+    fn bad_parameters_are_refused() {
+        let mut m = mixed();
+        m.sigma_beta_eta = 0.0;
+        assert_eq!(m.validate().unwrap_err().field, "sigma_beta_eta");
+        let mut m = mixed();
+        m.sigma_over_beta = 2.0;
+        assert_eq!(m.validate().unwrap_err().field, "sigma_over_beta");
+        let mut m = mixed();
+        m.boundary.friction = -1.0;
+        assert_eq!(m.validate().unwrap_err().field, "friction");
     }
 }

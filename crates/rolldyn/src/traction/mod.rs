@@ -29,6 +29,7 @@ pub mod mixed;
 pub mod table;
 
 pub use coulomb::ModifiedCoulomb;
+pub use mixed::MixedLubrication;
 
 /// Largest friction coefficient a case may give (Coulomb laws, FASTSIM,
 /// pocket friction): clean metals in vacuum reach a few, lubricated

@@ -22,12 +22,10 @@
 use super::common::{Method, bearing_7008c, dynamics_7008c, integrator};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
+use rolldyn::dynamics::{TractionSolveOptions, solve_traction_consistent};
 use rolldyn::integrate::Integrator;
 use rolldyn::material::Material;
-use rolldyn::quasistatic::{
-    Conditions, QuasiStaticSolver, RacewayControl, SolverOptions, TractionSolveOptions,
-    solve_traction_consistent,
-};
+use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
 
 /// Mean inner and outer contact loads over 2–6 ms \[N\] and the steps,
 /// from the Jones–Harris start or, with `traction_start`, from the

@@ -23,8 +23,8 @@ use rolldyn::contact::{Curvature, HertzCoefficients, HertzModel};
 use rolldyn::dynamics::{BearingModel, ContactSample, DragParameters, DynamicsParameters};
 use rolldyn::integrate::Integrator;
 use rolldyn::lubrication::hamrock_dowson;
-use rolldyn::lubrication::mixed::MixedLubrication;
 use rolldyn::material::{Material, effective_modulus};
+use rolldyn::traction::mixed::MixedLubrication;
 use rolldyn::traction::{ModifiedCoulomb, TractionModel};
 
 const BOUNDARY: ModifiedCoulomb = ModifiedCoulomb {

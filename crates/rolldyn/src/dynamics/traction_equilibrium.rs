@@ -2,7 +2,7 @@
 //! tribological model" Zhang et al. 2025 §3.1 starts its dynamics from, with no
 //! raceway-control hypothesis.
 //!
-//! Jones–Harris ([`super::equilibrium`]) fixes the ball spin by raceway
+//! Jones–Harris ([`crate::quasistatic::equilibrium`]) fixes the ball spin by raceway
 //! control: the whole gyroscopic moment is carried by the controlling
 //! contact. Here the ball angular velocity and orbital speed follow from
 //! the force and moment balance of the balls with the case's traction
@@ -27,9 +27,9 @@
 //! are scaled to forces (moments over D/2) and converge to
 //! `relative_tolerance` of the largest contact load.
 
-use super::QuasiStaticError;
-use crate::dynamics::{BearingModel, StateLayout};
+use super::{BearingModel, StateLayout};
 use crate::integrate::{BlockSplit, OdeSystem};
+use crate::quasistatic::QuasiStaticError;
 use nalgebra::{DMatrix, DVector};
 
 /// Settings of the traction-consistent solve.
