@@ -21,7 +21,8 @@
 use super::coupling::BallCoupling;
 use super::film::FilmWork;
 use super::layout::StateLayout;
-use super::model::{BallMotion, BearingModel, RingMotion};
+use super::model::BearingModel;
+use super::motion::{BallMotion, RingMotion};
 use super::race_contact::{ContactOutput, ContactSample, Want};
 use crate::power::Dissipation;
 use nalgebra::Vector3;
@@ -148,7 +149,7 @@ impl BearingModel {
         coupling: &mut [f64],
         shares: Shares<'_>,
     ) {
-        let (inner, outer) = self.ring_motion(t, y);
+        let (inner, outer) = self.elements.ring_motion(t, y);
         self.ball_rhs_with(
             t,
             block,
@@ -175,9 +176,9 @@ impl BearingModel {
         (mut sink, mut sample): (Option<&mut Dissipation>, Option<&mut ContactSample>),
         shares: Shares<'_>,
     ) -> BallCoupling {
-        let l = self.layout;
-        let p = &self.params;
-        let (ball, [ex, er, et]) = self.ball_kinematics(j, y);
+        let l = self.elements.layout;
+        let p = &self.elements.params;
+        let (ball, [ex, er, et]) = self.elements.ball_kinematics(j, y);
         let w = ball.omega;
         // The film in the approach: each closed contact's share of the
         // films' work (dynamics::film).
@@ -227,7 +228,7 @@ impl BearingModel {
                 share.write(slot);
             }
         }
-        let mut force = Vector3::new(0.0, 0.0, -self.ball_mass * p.gravity);
+        let mut force = Vector3::new(0.0, 0.0, -self.elements.ball_mass * p.gravity);
         let mut moment = Vector3::zeros();
         let mut out = BallCoupling::default();
         for (contact, share) in BallContact::ALL.iter().zip(&shares) {
@@ -254,7 +255,7 @@ impl BearingModel {
         if drag.effective_density > 0.0 {
             let v_t = y[b + 1] * y[b + 5];
             let w_rel = w - y[b + 5] * ex;
-            let (f, m) = drag.ball(self.geometry.ball_diameter, v_t, &w_rel);
+            let (f, m) = drag.ball(self.elements.geometry.ball_diameter, v_t, &w_rel);
             force += f * et;
             moment += m;
             out.dissipation -= f * v_t + m.dot(&w);
@@ -264,8 +265,8 @@ impl BearingModel {
         }
         let (r, phi_dot, vr) = (y[b + 1], y[b + 5], y[b + 4]);
         let (wr, wt) = (y[b + 7], y[b + 8]);
-        let m = self.ball_mass;
-        let inertia = self.ball_inertia;
+        let m = self.elements.ball_mass;
+        let inertia = self.elements.ball_inertia;
         dy[0] = y[b + 3];
         dy[1] = vr;
         dy[2] = phi_dot;
@@ -289,7 +290,8 @@ impl BearingModel {
         // Only the film-work accumulator needs this, and no Jacobian reads
         // it (`inert`): `block_rhs` leaves it out.
         if films_power {
-            self.add_film_work(t, y, j, dy, &film_work, inner, &mut out);
+            self.elements
+                .add_film_work(t, y, j, dy, &film_work, inner, &mut out);
         }
         out
     }
@@ -311,9 +313,9 @@ impl BearingModel {
         output: Option<&mut ContactOutput>,
     ) -> ContactShare {
         let table = if k == 0 {
-            &self.inner_table
+            &self.elements.inner_table
         } else {
-            &self.outer_table
+            &self.elements.outer_table
         };
         // Read in place (a move of the whole contact costs a copy).
         let want = if output.is_some() {
@@ -321,7 +323,9 @@ impl BearingModel {
         } else {
             Want::Forces
         };
-        let contact = self.race_contact(ring, table, &self.episodes[j][k], ball, want);
+        let contact = self
+            .elements
+            .race_contact(ring, table, &self.episodes[j][k], ball, want);
         let Some(cn) = &contact else {
             return ContactShare::default();
         };
@@ -356,7 +360,7 @@ impl BearingModel {
         ball: &BallMotion,
         sink: Option<&mut Dissipation>,
     ) -> ContactShare {
-        let contact = self.pocket_contact(j, y, ball);
+        let contact = self.elements.pocket_contact(j, y, ball);
         let Some(pc) = &contact else {
             return ContactShare::default();
         };
@@ -364,7 +368,7 @@ impl BearingModel {
             d.pocket_friction += pc.friction_power;
             d.pocket_damping += pc.dissipation - pc.friction_power;
         }
-        let c = self.layout.cage();
+        let c = self.elements.layout.cage();
         let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
         ContactShare {
             closed: true,

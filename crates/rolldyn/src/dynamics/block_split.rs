@@ -13,9 +13,9 @@ use crate::integrate::linear::BlockLayout;
 impl BlockSplit for BearingModel {
     fn block_layout(&self) -> BlockLayout {
         BlockLayout {
-            blocks: self.layout.balls,
-            block_size: self.layout.ball_len(),
-            border: self.layout.len() - self.layout.ring(),
+            blocks: self.elements.layout.balls,
+            block_size: self.elements.layout.ball_len(),
+            border: self.elements.layout.len() - self.elements.layout.ring(),
         }
     }
 
@@ -39,7 +39,7 @@ impl BlockSplit for BearingModel {
     }
 
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
-        let (inner, _) = self.ring_motion(t, y);
+        let (inner, _) = self.elements.ring_motion(t, y);
         self.border_rhs_with(t, y, &inner, &BallCoupling::read(coupling), dy_border, None);
     }
 
@@ -74,7 +74,7 @@ impl BlockSplit for BearingModel {
     ) {
         let shares = Shares::Reuse {
             memo,
-            contact: BallContact::touched_by(&self.layout, column),
+            contact: BallContact::touched_by(&self.elements.layout, column),
         };
         self.block_rhs_from(t, y, block, dy_block, coupling, shares);
     }
@@ -82,8 +82,8 @@ impl BlockSplit for BearingModel {
     /// Frozen states (planar motion, a locked cage whirl, a fixed outer
     /// ring) never change, and nothing reads the energy accumulators.
     fn inert(&self, state: usize) -> bool {
-        let l = self.layout;
-        let p = &self.params;
+        let l = self.elements.layout;
+        let p = &self.elements.params;
         if state < l.ring() {
             let k = state % l.ball_len();
             return p.planar && matches!(k, 0 | 3 | 7 | 8);

@@ -47,7 +47,7 @@ impl Checkpoint for BearingModel {
         if let Some(mut thermal) = self.thermal.take() {
             let viscosities = thermal.restore(input);
             self.thermal = Some(thermal);
-            self.apply_viscosities(viscosities?);
+            self.elements.apply_viscosities(viscosities?);
         }
         Ok(())
     }

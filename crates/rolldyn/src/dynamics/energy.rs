@@ -34,39 +34,49 @@ impl BearingModel {
     /// Work of the drive and the external forces (time-varying loads, cage
     /// unbalance), and the dissipated energy, accumulated in state `y` \[J\].
     pub fn work(&self, y: &[f64]) -> (f64, f64) {
-        let w = self.layout.work();
+        let w = self.elements.layout.work();
         (y[w], y[w + 1])
+    }
+
+    /// Work the films have done on the contacts, accumulated in state `y`
+    /// \[J\] (0 without the film in the approach).
+    pub fn film_work(&self, y: &[f64]) -> f64 {
+        let l = self.elements.layout;
+        if l.film_work { y[l.work() + 2] } else { 0.0 }
     }
 
     /// Mechanical energy of state `y` at time `t` (docs/model.md §10); its change
     /// equals the drive work minus the dissipated energy.
     pub fn energy(&self, t: f64, y: &[f64]) -> Energy {
-        let l = self.layout;
-        let (inner, outer) = self.ring_motion(t, y);
-        let g = self.params.gravity;
+        let l = self.elements.layout;
+        let (inner, outer) = self.elements.ring_motion(t, y);
+        let g = self.elements.params.gravity;
         let mut e = Energy::default();
         for j in 0..l.balls {
-            let (ball, _) = self.ball_kinematics(j, y);
+            let (ball, _) = self.elements.ball_kinematics(j, y);
             let (q, v, w) = (ball.centre, ball.velocity, ball.omega);
-            e.kinetic += 0.5 * self.ball_mass * v.norm_squared()
-                + 0.5 * self.ball_inertia * w.norm_squared();
-            e.potential += self.ball_mass * g * q.z;
-            for (ring, table) in [(&inner, &self.inner_table), (&outer, &self.outer_table)] {
-                if self.layout.film_work {
-                    e.elastic += self.film_contact_energy(ring, table, &ball);
-                } else if let Some((c, _)) = self.race_geometry(ring, &ball) {
+            e.kinetic += 0.5 * self.elements.ball_mass * v.norm_squared()
+                + 0.5 * self.elements.ball_inertia * w.norm_squared();
+            e.potential += self.elements.ball_mass * g * q.z;
+            for (ring, table) in [
+                (&inner, &self.elements.inner_table),
+                (&outer, &self.elements.outer_table),
+            ] {
+                if self.elements.layout.film_work {
+                    e.elastic += self.elements.film_contact_energy(ring, table, &ball);
+                } else if let Some((c, _)) = self.elements.race_geometry(ring, &ball) {
                     e.elastic += 0.4 * table.stiffness(c.contact_angle) * c.penetration.powf(2.5);
                 }
             }
-            if let Some(pc) = self.pocket_contact(j, y, &ball) {
-                let cage = &self.params.cage;
+            if let Some(pc) = self.elements.pocket_contact(j, y, &ball) {
+                let cage = &self.elements.params.cage;
                 e.elastic += cage
                     .pocket_law
                     .energy(pc.offset, 0.5 * cage.pocket_clearance);
             }
         }
         let r = l.ring();
-        let p = &self.params;
+        let p = &self.elements.params;
         e.kinetic +=
             0.5 * p.inner_ring_mass * (y[r + 5].powi(2) + y[r + 6].powi(2) + y[r + 7].powi(2))
                 + 0.5 * p.inner_ring_tilt_inertia * (y[r + 8].powi(2) + y[r + 9].powi(2));
@@ -92,7 +102,7 @@ impl BearingModel {
         e.potential += p.cage.mass * g * y[c + 1];
         if let Some(guide) = &p.cage.guide {
             // The stop beyond ε_max is a spring.
-            let (centre, _, _) = self.guide_ring(guide, t, y);
+            let (centre, _, _) = self.elements.guide_ring(guide, t, y);
             let offset = (Vector3::new(0.0, y[c], y[c + 1]) - centre).norm();
             let stop = (offset - guide.max_eccentricity * guide.radial_clearance).max(0.0);
             e.elastic += 0.5 * guide.stop_stiffness * stop * stop;

@@ -28,7 +28,8 @@
 //! P_dissipated = dE/dt at every state.
 
 use super::coupling::{BallCoupling, add_to};
-use super::model::{BallMotion, BearingModel, RingMotion, tilt_axis_y};
+use super::elements::Elements;
+use super::motion::{BallMotion, RingMotion, tilt_axis_y};
 use crate::contact::{ContactTable, Curvature, HertzCoefficients, TorusContact};
 use crate::geometry::RingKind;
 use crate::lubrication::approach::{FilmGeometry, FilmLaw};
@@ -80,7 +81,7 @@ pub(super) struct FilmWork {
     pub(super) point: Vector3<f64>,
 }
 
-impl BearingModel {
+impl Elements {
     /// Entrainment velocity of a contact at point P with normal n: the mean
     /// surface velocity of ball and ring relative to the contact point, in
     /// the tangent plane (docs/model.md §3).
@@ -301,13 +302,6 @@ impl BearingModel {
         if let Some(w) = &film_work[1] {
             add_to(&mut out.outer_velocity_gradient, &w.outer_ring_gradient());
         }
-    }
-
-    /// Work the films have done on the contacts, accumulated in state `y`
-    /// \[J\] (0 without the film in the approach).
-    pub fn film_work(&self, y: &[f64]) -> f64 {
-        let l = self.layout;
-        if l.film_work { y[l.work() + 2] } else { 0.0 }
     }
 }
 

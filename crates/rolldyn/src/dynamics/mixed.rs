@@ -8,47 +8,12 @@
 //! starved by the ring's supply (docs/model.md §4), also with the film in the
 //! approach (whose fixed point carries the central film only).
 
-use super::model::{BearingModel, RingMotion};
-use super::parameters::DynamicsParameters;
+use super::elements::Elements;
+use super::motion::RingMotion;
 use crate::contact::hertz::{HertzCoefficients, HertzResult};
-use crate::error::InvalidParameter;
-use crate::geometry::RingKind;
 use crate::lubrication::ContactFilm;
-use crate::traction::mixed::MixedLubrication;
 
-/// Checks that mixed lubrication has what it needs: its parameters, a film
-/// model (EHL traction) and a roughness at both raceways' contacts.
-pub(super) fn validate(
-    mixed: &MixedLubrication,
-    params: &DynamicsParameters,
-) -> Result<(), InvalidParameter> {
-    mixed.validate()?;
-    if !matches!(params.traction, crate::traction::TractionModel::Ehl(_)) {
-        return Err(InvalidParameter::new(
-            "mixed_lubrication",
-            "given",
-            "needs a film and a fluid traction law to blend with: traction law ehl (with a lubricant)",
-        ));
-    }
-    for ring in [RingKind::Inner, RingKind::Outer] {
-        if params.surface.composite_roughness(ring) <= 0.0 {
-            return Err(InvalidParameter::new(
-                "roughness",
-                0.0,
-                format!(
-                    "mixed lubrication needs the film parameter Λ = h_min/σ: give the {} raceway's or the balls' RMS roughness",
-                    match ring {
-                        RingKind::Inner => "inner",
-                        RingKind::Outer => "outer",
-                    }
-                ),
-            ));
-        }
-    }
-    Ok(())
-}
-
-impl BearingModel {
+impl Elements {
     /// Asperity share φ of a contact with `ring` at load Q \[N\] (0 without
     /// mixed lubrication or load): Λ = h_min/σ of the steady film (`steady`
     /// when the caller has it, else computed at contact angle α and

@@ -12,7 +12,9 @@
 //!
 //! | file | what |
 //! |---|---|
-//! | `model` | parameters, state → kinematics, equations of motion |
+//! | `model` | the equations of motion: assembles the force elements' shares for the balls, rings and cage; the run's memory (contact episodes, thermal network) |
+//! | `elements` | what the force elements evaluate: geometry, contact tables, masses, parameters |
+//! | `motion` | state → the bodies' motion (ball and ring kinematics), which the force elements take |
 //! | `layout` | offsets in the state vector |
 //! | `ball_pass` | the balls' contacts evaluated serially or across threads, summed in ball order |
 //! | `coupling` | what a ball's contacts pass to the rings, cage and energy accumulators |
@@ -32,11 +34,13 @@ mod ball_pass;
 mod block_split;
 pub mod checkpoint;
 mod coupling;
+pub mod elements;
 pub mod energy;
 pub mod film;
 pub mod layout;
 mod mixed;
 pub mod model;
+pub mod motion;
 pub mod outputs;
 pub mod parameters;
 pub mod peaks;

@@ -34,77 +34,41 @@
 
 use super::ball_pass::BallPass;
 use super::coupling::BallCoupling;
+use super::elements::Elements;
 use super::layout::StateLayout;
+use super::motion::RingMotion;
 use super::parameters::DynamicsParameters;
+use super::peaks::PeakLoads;
 use super::race_contact::{ContactSample, Want};
-use crate::cage::GuideLand;
+use super::thermal_coupling::ThermalCoupling;
+use crate::contact::HertzModel;
 use crate::contact::normal_law::ContactEpisode;
-use crate::contact::{ContactTable, GrooveCircle, HertzModel, RacewayContactModel, RingPose};
-use crate::error::{InvalidParameter, require_non_negative, require_positive};
-use crate::geometry::Raceway;
+use crate::error::InvalidParameter;
 use crate::geometry::{BearingGeometry, RingKind};
 use crate::integrate::{BlockSplit, EnergyBalance, OdeSystem};
 use crate::kinematics::cage_speed_ratio;
-use crate::lubrication::Supply;
-use crate::material::{Material, effective_modulus};
+use crate::material::Material;
 use crate::power::Dissipation;
 use crate::quasistatic::Equilibrium;
-use crate::traction::TractionGrid;
-use nalgebra::{Rotation3, Vector3};
+use crate::thermal::bearing::HeatSources;
+use nalgebra::Vector3;
 
-/// Kinematic state of a ball (global frame).
-pub(super) struct BallMotion {
-    /// Ball index j.
-    pub(super) index: usize,
-    /// Spin angle ψ \[rad\] (0 when the balls carry no surface).
-    pub(super) spin_angle: f64,
-    pub(super) centre: Vector3<f64>,
-    pub(super) velocity: Vector3<f64>,
-    pub(super) omega: Vector3<f64>,
-    /// Orbital rate φ̇ of its azimuth frame \[rad/s\].
-    pub(super) orbital_rate: f64,
-}
-
-/// Kinematic state of a ring for contact evaluation.
-pub(super) struct RingMotion {
-    pub(super) raceway: Raceway,
-    pub(super) circle: GrooveCircle,
-    pub(super) centre: Vector3<f64>,
-    pub(super) velocity: Vector3<f64>,
-    /// Angular velocity of the ring material (spin + tilt rates).
-    pub(super) omega: Vector3<f64>,
-    /// Angular velocity of the ring's frame (tilt rates only).
-    pub(super) omega_frame: Vector3<f64>,
-    /// Angle the ring has turned about its axis θ_ring \[rad\].
-    pub(super) spin_angle: f64,
-    /// Spin speed of the ring about its axis \[rad/s\].
-    pub(super) spin_speed: f64,
-    /// Inner-ring (shaft) speed \[rad/s\] (the oil-flow supply, docs/model.md §4).
-    pub(super) shaft_speed: f64,
-}
-
-/// The dynamic bearing model.
+/// The dynamic bearing model: its force elements and the memory a run
+/// carries (contact episodes, peak loads, the thermal network).
 #[derive(Debug, Clone)]
 pub struct BearingModel {
-    pub(super) geometry: BearingGeometry,
-    pub(super) inner_table: ContactTable,
-    pub(super) outer_table: ContactTable,
-    pub(super) ball_mass: f64,
-    pub(super) ball_inertia: f64,
-    pub(super) effective_modulus: f64,
-    pub(super) params: DynamicsParameters,
-    pub(super) layout: StateLayout,
+    /// Geometry, contact tables, masses and parameters: what the force
+    /// elements evaluate.
+    pub(super) elements: Elements,
     /// Episode memory: inner and outer contact of each ball.
     pub(super) episodes: Vec<[ContactEpisode; 2]>,
     /// Largest contact loads at the accepted steps since the sampler took
     /// them ([`super::peaks`]).
-    pub(super) peak_loads: super::peaks::PeakLoads,
+    pub(super) peak_loads: PeakLoads,
     /// Thermal network advanced alongside a run, if coupled.
-    pub(super) thermal: Option<Box<super::thermal_coupling::ThermalCoupling>>,
+    pub(super) thermal: Option<Box<ThermalCoupling>>,
     /// The balls' contact evaluations, serial or across threads.
     pub(super) ball_pass: BallPass,
-    /// The traction grid of `params.traction_integration`, prepared.
-    pub(super) traction_grid: TractionGrid,
 }
 
 impl BearingModel {
@@ -116,113 +80,49 @@ impl BearingModel {
         hertz: HertzModel,
         params: DynamicsParameters,
     ) -> Result<Self, InvalidParameter> {
-        require_positive("inner_ring_mass", params.inner_ring_mass)?;
-        require_positive("inner_ring_tilt_inertia", params.inner_ring_tilt_inertia)?;
-        params.cage.validate()?;
-        if params.cage.pocket_squeeze.is_some() {
-            // Built here, not at the first force evaluation in the time loop.
-            crate::cage::squeeze::build_tables();
-        }
-        params.normal_law.validate()?;
-        require_positive("impact_speed_floor", params.impact_speed_floor)?;
-        params.traction.validate()?;
-        params.inner_support.validate("inner_ring_support")?;
-        if let Some(outer) = &params.outer_ring {
-            require_positive("outer_ring_mass", outer.mass)?;
-            outer.housing.validate("outer_ring_housing")?;
-        }
-        require_non_negative("rolling_hysteresis", params.rolling_hysteresis)?;
-        params.surface.validate(geometry.ball_count)?;
-        for supply in &params.film_supply {
-            supply.validate()?;
-        }
-        if params.film_in_approach {
-            if params.traction.lubricant().is_none() {
-                return Err(InvalidParameter::new(
-                    "film_in_approach",
-                    "true",
-                    "needs a film model: a traction law with a lubricant (ehl)",
-                ));
-            }
-            for supply in &params.film_supply {
-                if let Supply::Flow { flow, .. } = supply {
-                    return Err(InvalidParameter::new(
-                        "oil_flow",
-                        *flow,
-                        "the film in the normal approach needs a flooded supply or an inlet distance ratio",
-                    ));
-                }
-            }
-        }
-        if let Some(mixed) = &params.mixed_lubrication {
-            crate::dynamics::mixed::validate(mixed, &params)?;
-        }
-        let ep = effective_modulus(ball, rings);
-        let ball_mass = geometry.ball_mass(ball.density);
+        let ball_pass = BallPass::new(
+            geometry.ball_count,
+            params
+                .traction
+                .integrates_over_a_grid(&params.traction_integration),
+        );
         Ok(Self {
-            inner_table: ContactTable::new(RacewayContactModel::new(
-                geometry,
-                RingKind::Inner,
-                ep,
-                hertz,
-            ))?,
-            outer_table: ContactTable::new(RacewayContactModel::new(
-                geometry,
-                RingKind::Outer,
-                ep,
-                hertz,
-            ))?,
-            ball_mass,
-            ball_inertia: ball_mass * geometry.ball_diameter.powi(2) / 10.0,
-            effective_modulus: ep,
-            layout: StateLayout {
-                balls: geometry.ball_count,
-                ball_spin_angle: params.surface.has_ball_surfaces(),
-                film_work: params.film_in_approach,
-            },
+            elements: Elements::new(geometry, ball, rings, hertz, params)?,
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
-            peak_loads: Default::default(),
+            peak_loads: PeakLoads::default(),
             thermal: None,
-            traction_grid: TractionGrid::new(params.traction_integration),
-            ball_pass: BallPass::new(
-                geometry.ball_count,
-                params
-                    .traction
-                    .integrates_over_a_grid(&params.traction_integration),
-            ),
-            geometry: geometry.clone(),
-            params,
+            ball_pass,
         })
     }
 
     /// State layout.
     pub fn layout(&self) -> StateLayout {
-        self.layout
+        self.elements.layout
     }
 
     /// Parameters.
     pub fn parameters(&self) -> &DynamicsParameters {
-        &self.params
+        &self.elements.params
     }
 
     /// Bearing geometry.
     pub fn geometry(&self) -> &BearingGeometry {
-        &self.geometry
+        &self.elements.geometry
     }
 
     /// Ball mass \[kg\].
     pub fn ball_mass(&self) -> f64 {
-        self.ball_mass
+        self.elements.ball_mass
     }
 
     /// Pure-rolling start: balls at the pitch circle with the pure-rolling
     /// orbital and spin speeds at the nominal contact angle, the cage turning
     /// with them, the inner ring at `ring_displacement` and at rest.
     pub fn pure_rolling_state(&self, ring_displacement: [f64; 5]) -> Vec<f64> {
-        let g = &self.geometry;
-        let l = self.layout;
+        let g = &self.elements.geometry;
+        let l = self.elements.layout;
         let mut y = vec![0.0; l.len()];
-        let omega_i = self.params.speed.speed_at(0.0);
+        let omega_i = self.elements.params.speed.speed_at(0.0);
         let alpha = g.nominal_contact_angle();
         let gamma = g.ball_diameter / g.pitch_diameter;
         let omega_c = cage_speed_ratio(gamma, alpha, alpha, alpha) * omega_i;
@@ -236,7 +136,7 @@ impl BearingModel {
             y[b + 2] = std::f64::consts::TAU * j as f64 / l.balls as f64;
             y[b + 5] = omega_c;
             y[b + 6] = omega_c + spin_rel * alpha.cos();
-            if !self.params.planar {
+            if !self.elements.params.planar {
                 y[b + 7] = -spin_rel * alpha.sin();
             }
         }
@@ -251,7 +151,7 @@ impl BearingModel {
     /// ball positions and speeds, ring displacement; cage at the mean ball
     /// orbital speed.
     pub fn state_from_equilibrium(&self, eq: &Equilibrium) -> Vec<f64> {
-        let l = self.layout;
+        let l = self.elements.layout;
         let mut y = vec![0.0; l.len()];
         for (j, b) in eq.balls.iter().enumerate().take(l.balls) {
             let o = l.ball(j);
@@ -268,134 +168,6 @@ impl BearingModel {
         y[c + 5] = eq.cage_speed();
         y
     }
-
-    pub(super) fn ring_motion(&self, t: f64, y: &[f64]) -> (RingMotion, RingMotion) {
-        let (r, o) = (self.layout.ring(), self.layout.outer());
-        self.ring_motion_of(
-            t,
-            &y[r..r + StateLayout::RING],
-            &y[o..o + StateLayout::OUTER],
-        )
-    }
-
-    /// [`Self::ring_motion`] from the inner ring's 10 states and the outer
-    /// ring's 4.
-    pub(super) fn ring_motion_of(
-        &self,
-        t: f64,
-        ring: &[f64],
-        outer: &[f64],
-    ) -> (RingMotion, RingMotion) {
-        let y = ring;
-        let r = 0;
-        let pose = RingPose {
-            translation: Vector3::new(y[r], y[r + 1], y[r + 2]),
-            tilt_y: y[r + 3],
-            tilt_z: y[r + 4],
-        };
-        let omega_frame = y[r + 9] * Vector3::z() + y[r + 8] * tilt_axis_y(pose.tilt_z);
-        let unit_axis = pose.axis();
-        let axis = unit_axis.into_inner();
-        let spin_speed = self.params.speed.speed_at(t);
-        let inner = RingMotion {
-            raceway: self.geometry.inner,
-            circle: GrooveCircle::with_axis(&self.geometry.inner, &pose.translation, unit_axis),
-            centre: pose.translation,
-            velocity: Vector3::new(y[r + 5], y[r + 6], y[r + 7]),
-            omega: spin_speed * axis + omega_frame,
-            omega_frame,
-            spin_angle: if self.params.surface.inner.is_smooth() {
-                0.0
-            } else {
-                self.params.speed.angle_at(t)
-            },
-            spin_speed,
-            shaft_speed: spin_speed,
-        };
-        let (y, o) = (outer, 0);
-        let outer_pose = RingPose {
-            translation: Vector3::new(0.0, y[o], y[o + 1]),
-            ..RingPose::default()
-        };
-        let outer = RingMotion {
-            raceway: self.geometry.outer,
-            circle: GrooveCircle::of(&self.geometry.outer, &outer_pose),
-            centre: outer_pose.translation,
-            velocity: Vector3::new(0.0, y[o + 2], y[o + 3]),
-            omega: Vector3::zeros(),
-            omega_frame: Vector3::zeros(),
-            spin_angle: 0.0,
-            spin_speed: 0.0,
-            shaft_speed: spin_speed,
-        };
-        (inner, outer)
-    }
-
-    /// Ball centre, velocity and angular velocity (global), and its frame.
-    #[allow(clippy::type_complexity)]
-    pub(super) fn ball_kinematics(&self, j: usize, y: &[f64]) -> (BallMotion, [Vector3<f64>; 3]) {
-        let b = self.layout.ball(j);
-        self.ball_motion_of(j, &y[b..b + self.layout.ball_len()])
-    }
-
-    /// [`Self::ball_kinematics`] from ball j's block of states.
-    #[allow(clippy::type_complexity)]
-    pub(super) fn ball_motion_of(
-        &self,
-        j: usize,
-        block: &[f64],
-    ) -> (BallMotion, [Vector3<f64>; 3]) {
-        let (y, b) = (block, 0);
-        let (s, c) = y[b + 2].sin_cos();
-        let ex = Vector3::x();
-        let er = Vector3::new(0.0, c, s);
-        let et = Vector3::new(0.0, -s, c);
-        let q = y[b] * ex + y[b + 1] * er;
-        let v = y[b + 3] * ex + y[b + 4] * er + y[b + 1] * y[b + 5] * et;
-        let w = y[b + 6] * ex + y[b + 7] * er + y[b + 8] * et;
-        (
-            BallMotion {
-                index: j,
-                spin_angle: if self.layout.ball_spin_angle {
-                    y[b + StateLayout::SPIN_ANGLE]
-                } else {
-                    0.0
-                },
-                centre: q,
-                velocity: v,
-                omega: w,
-                orbital_rate: y[b + 5],
-            },
-            [ex, er, et],
-        )
-    }
-
-    /// Centre (radial plane), centre velocity and land speed of the guiding ring.
-    pub(super) fn guide_ring(
-        &self,
-        guide: &GuideLand,
-        t: f64,
-        y: &[f64],
-    ) -> (Vector3<f64>, Vector3<f64>, f64) {
-        match guide.ring {
-            RingKind::Outer => {
-                let o = self.layout.outer();
-                (
-                    Vector3::new(0.0, y[o], y[o + 1]),
-                    Vector3::new(0.0, y[o + 2], y[o + 3]),
-                    0.0,
-                )
-            }
-            RingKind::Inner => {
-                let r = self.layout.ring();
-                (
-                    Vector3::new(0.0, y[r + 1], y[r + 2]),
-                    Vector3::new(0.0, y[r + 6], y[r + 7]),
-                    self.params.speed.speed_at(t),
-                )
-            }
-        }
-    }
 }
 
 impl BearingModel {
@@ -411,8 +183,8 @@ impl BearingModel {
         dy: &mut [f64],
         mut sink: Option<&mut Dissipation>,
     ) {
-        let l = self.layout;
-        let p = &self.params;
+        let l = self.elements.layout;
+        let p = &self.elements.params;
         let g = p.gravity;
         let c = l.cage();
         let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
@@ -437,7 +209,7 @@ impl BearingModel {
             l.work() - l.ring(),
         );
         if let Some(guide) = &p.cage.guide {
-            let (centre, centre_velocity, land_speed) = self.guide_ring(guide, t, y);
+            let (centre, centre_velocity, land_speed) = self.elements.guide_ring(guide, t, y);
             let cage_velocity = Vector3::new(0.0, y[c + 3], y[c + 4]);
             let gf = guide.forces(&(cage_centre - centre), y[c + 5], land_speed);
             cage_force += gf.force;
@@ -565,8 +337,8 @@ impl BearingModel {
         mut sink: Option<&mut Dissipation>,
         samples: Option<&mut [ContactSample]>,
     ) {
-        let l = self.layout;
-        let (inner, outer) = self.ring_motion(t, y);
+        let l = self.elements.layout;
+        let (inner, outer) = self.elements.ring_motion(t, y);
         let (dy_balls, border) = dy.split_at_mut(l.ring());
         let balls = self.ball_pass.sum(
             dy_balls,
@@ -601,7 +373,7 @@ impl BearingModel {
         dy: &mut [f64],
         samples: &mut [ContactSample],
     ) -> Dissipation {
-        let balls = self.layout.balls;
+        let balls = self.elements.layout.balls;
         if samples.len() < balls {
             let power = self.rhs_with_power(t, y, dy);
             self.contact_samples(t, y, samples);
@@ -615,11 +387,11 @@ impl BearingModel {
 
 impl OdeSystem for BearingModel {
     fn dimension(&self) -> usize {
-        self.layout.len()
+        self.elements.layout.len()
     }
 
     fn state_name(&self, index: usize) -> String {
-        self.layout.state_name(index)
+        self.elements.layout.state_name(index)
     }
 
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
@@ -640,10 +412,10 @@ impl OdeSystem for BearingModel {
     /// while the Zhang et al. 2025 ramp (hundreds of joules) ran more than three
     /// times as long (docs/performance.md).
     fn error_scale(&self, scale: &mut [f64]) {
-        let l = self.layout;
+        let l = self.elements.layout;
         let micron = 1e-6;
-        let ball_orbit = micron / (0.5 * self.geometry.pitch_diameter);
-        let ball_surface = micron / (0.5 * self.geometry.ball_diameter);
+        let ball_orbit = micron / (0.5 * self.elements.geometry.pitch_diameter);
+        let ball_surface = micron / (0.5 * self.elements.geometry.ball_diameter);
         for j in 0..l.balls {
             let b = l.ball(j);
             scale[b..b + 2].fill(micron);
@@ -662,7 +434,7 @@ impl OdeSystem for BearingModel {
         scale[o + 2..o + 4].fill(1e-3);
         let c = l.cage();
         scale[c..c + 2].fill(micron);
-        scale[c + 2] = micron / self.params.cage.pitch_radius;
+        scale[c + 2] = micron / self.elements.params.cage.pitch_radius;
         scale[c + 3..c + 5].fill(1e-3);
         scale[c + 5] = 1.0;
         let w = l.work();
@@ -674,7 +446,7 @@ impl OdeSystem for BearingModel {
     /// orbit would be allowed an error of rtol × 2π per turn made (after
     /// 1 s of the default case, 4.6 rad for a step).
     fn absolute_error(&self, absolute: &mut [bool]) {
-        let l = self.layout;
+        let l = self.elements.layout;
         for j in 0..l.balls {
             let b = l.ball(j);
             absolute[b + 2] = true;
@@ -699,22 +471,27 @@ impl OdeSystem for BearingModel {
 
     /// Spalls: the step may not carry a contact across one unseen.
     fn step_limit(&self, t: f64, y: &[f64]) -> f64 {
-        self.spall_step_limit(t, y)
+        self.elements.spall_step_limit(t, y)
     }
 
     fn accept_step(&mut self, t: f64, y: &[f64]) -> bool {
-        let (inner, outer) = self.ring_motion(t, y);
-        let floor = self.params.impact_speed_floor;
+        let (inner, outer) = self.elements.ring_motion(t, y);
+        let floor = self.elements.params.impact_speed_floor;
         let mut changed = false;
-        for j in 0..self.layout.balls {
-            let (ball, _) = self.ball_kinematics(j, y);
-            for (k, (ring, table)) in [(&inner, &self.inner_table), (&outer, &self.outer_table)]
-                .into_iter()
-                .enumerate()
+        for j in 0..self.elements.layout.balls {
+            let (ball, _) = self.elements.ball_kinematics(j, y);
+            for (k, (ring, table)) in [
+                (&inner, &self.elements.inner_table),
+                (&outer, &self.elements.outer_table),
+            ]
+            .into_iter()
+            .enumerate()
             {
                 let before = self.episodes[j][k];
                 // Only the penetration matters here: no traction.
-                let contact = self.race_contact(ring, table, &before, &ball, Want::Penetration);
+                let contact =
+                    self.elements
+                        .race_contact(ring, table, &before, &ball, Want::Penetration);
                 let mut episode = before;
                 match contact {
                     Some(cn) => {
@@ -730,15 +507,75 @@ impl OdeSystem for BearingModel {
             }
         }
         let thermal = self.thermal_update(t, y);
-        (changed && self.params.normal_law.hysteresis_factor().is_some()) || thermal
+        (changed
+            && self
+                .elements
+                .params
+                .normal_law
+                .hysteresis_factor()
+                .is_some())
+            || thermal
     }
 }
 
-/// The inner ring's tilted y axis R_z(θ_z) e_y, about which the tilt rate
-/// θ̇_y turns it (docs/model.md §1).
-pub(super) fn tilt_axis_y(tilt_z: f64) -> Vector3<f64> {
-    if tilt_z == 0.0 {
-        return Vector3::y();
+/// The thermal network advanced alongside a run (`thermal_coupling`).
+impl BearingModel {
+    /// Couples the thermal network to this model's run from time `t0` and
+    /// state `y0` (the dissipated energy counts from there) and applies the
+    /// starting viscosities.
+    pub fn couple_thermal(&mut self, mut coupling: ThermalCoupling, t0: f64, y0: &[f64]) {
+        let viscosities = coupling.start(t0, self.work(y0).1, self.dimension());
+        self.elements.apply_viscosities(viscosities);
+        self.thermal = Some(Box::new(coupling));
     }
-    Rotation3::from_axis_angle(&Vector3::z_axis(), tilt_z) * Vector3::y()
+
+    /// The thermal coupling, if the run has one.
+    pub fn thermal(&self) -> Option<&ThermalCoupling> {
+        self.thermal.as_deref()
+    }
+
+    /// The coupling's update at an accepted step; true when the right-hand
+    /// side changed (the viscosity).
+    fn thermal_update(&mut self, t: f64, y: &[f64]) -> bool {
+        let Some(mut c) = self.thermal.take() else {
+            return false;
+        };
+        if !c.due(t) {
+            self.thermal = Some(c);
+            return false;
+        }
+        let dissipated = self.work(y).1;
+        let mut scratch = std::mem::take(&mut c.scratch);
+        let power = self.rhs_with_power(t, y, &mut scratch);
+        c.scratch = scratch;
+        let cage_speed = y[self.elements.layout.cage() + 5];
+        let viscosities = c.advance(t, dissipated, &power, cage_speed, |heat| {
+            self.contact_means(t, y, heat)
+        });
+        self.thermal = Some(c);
+        self.elements.apply_viscosities(viscosities);
+        viscosities.is_some()
+    }
+
+    /// Mean semi-axes, entrainment speeds and counts of the loaded contacts.
+    fn contact_means(&self, t: f64, y: &[f64], heat: &mut HeatSources) {
+        let e = &self.elements;
+        let (inner, outer) = e.ring_motion(t, y);
+        let rings = [(&inner, &e.inner_table), (&outer, &e.outer_table)];
+        heat.set_contact_means((0..e.layout.balls).flat_map(|j| {
+            let (ball, _) = e.ball_kinematics(j, y);
+            rings
+                .into_iter()
+                .enumerate()
+                .filter_map(move |(k, (ring, table))| {
+                    let cn =
+                        e.race_contact(ring, table, &self.episodes[j][k], &ball, Want::Output)?;
+                    let o = cn.output;
+                    (o.load > 0.0).then(|| {
+                        let e = table.at(o.angle).at_load(o.load);
+                        (k, e.semi_major, e.semi_minor, o.entrainment_speed)
+                    })
+                })
+        }));
+    }
 }

@@ -15,24 +15,32 @@ impl BearingModel {
     /// of the current rayon pool when the right-hand side's ball pass is
     /// (each entry is one ball's alone: the same whatever the threads).
     pub fn contact_samples(&self, t: f64, y: &[f64], out: &mut [ContactSample]) {
-        let (inner, outer) = self.ring_motion(t, y);
+        let (inner, outer) = self.elements.ring_motion(t, y);
         let sample = |j: usize| {
-            let (ball, _) = self.ball_kinematics(j, y);
+            let (ball, _) = self.elements.ball_kinematics(j, y);
             let episodes = &self.episodes[j];
             let mut sample = ContactSample::default();
-            if let Some(c) =
-                self.race_contact(&inner, &self.inner_table, &episodes[0], &ball, Want::Output)
-            {
+            if let Some(c) = self.elements.race_contact(
+                &inner,
+                &self.elements.inner_table,
+                &episodes[0],
+                &ball,
+                Want::Output,
+            ) {
                 sample.inner = c.output;
             }
-            if let Some(c) =
-                self.race_contact(&outer, &self.outer_table, &episodes[1], &ball, Want::Output)
-            {
+            if let Some(c) = self.elements.race_contact(
+                &outer,
+                &self.elements.outer_table,
+                &episodes[1],
+                &ball,
+                Want::Output,
+            ) {
                 sample.outer = c.output;
             }
             sample
         };
-        let balls = self.layout.balls.min(out.len());
+        let balls = self.elements.layout.balls.min(out.len());
         let out = &mut out[..balls];
         if self.ball_pass.is_parallel() {
             out.par_iter_mut()
@@ -55,10 +63,10 @@ impl BearingModel {
     /// The ball–pocket normal forces at state `y`: their sum over the
     /// balls and the largest \[N\] (the cage's impact history, docs/model.md §5).
     pub fn pocket_forces(&self, y: &[f64]) -> (f64, f64) {
-        (0..self.layout.balls)
+        (0..self.elements.layout.balls)
             .filter_map(|j| {
-                let (ball, _) = self.ball_kinematics(j, y);
-                self.pocket_contact(j, y, &ball)
+                let (ball, _) = self.elements.ball_kinematics(j, y);
+                self.elements.pocket_contact(j, y, &ball)
             })
             .fold((0.0, 0.0), |(sum, largest), c| {
                 (sum + c.normal_force, f64::max(largest, c.normal_force))
@@ -77,20 +85,21 @@ impl BearingModel {
         ring: RingKind,
         mut map: impl FnMut(&MapCell),
     ) -> Option<ContactOutput> {
-        let (inner, outer) = self.ring_motion(t, y);
-        let (ball, _) = self.ball_kinematics(j, y);
+        let (inner, outer) = self.elements.ring_motion(t, y);
+        let (ball, _) = self.elements.ball_kinematics(j, y);
         let (motion, table, k) = match ring {
-            RingKind::Inner => (&inner, &self.inner_table, 0),
-            RingKind::Outer => (&outer, &self.outer_table, 1),
+            RingKind::Inner => (&inner, &self.elements.inner_table, 0),
+            RingKind::Outer => (&outer, &self.elements.outer_table, 1),
         };
-        self.race_contact(
-            motion,
-            table,
-            &self.episodes[j][k],
-            &ball,
-            Want::Map(&mut map),
-        )
-        .map(|c| c.output)
+        self.elements
+            .race_contact(
+                motion,
+                table,
+                &self.episodes[j][k],
+                &ball,
+                Want::Map(&mut map),
+            )
+            .map(|c| c.output)
     }
 
     /// Pure-rolling cage-speed ratio ω_c/ω_i of docs/model.md §7 for the current
@@ -99,7 +108,7 @@ impl BearingModel {
     /// in the formula with different inner and outer angles. The reference
     /// of the cage speed ratio (CSR) of Zhang et al. 2025 §4.2.
     pub fn pure_rolling_ratio(&self, samples: &[ContactSample], y: &[f64]) -> f64 {
-        let l = self.layout;
+        let l = self.elements.layout;
         let (mut ai, mut ao, mut beta, mut n) = (0.0, 0.0, 0.0, 0.0);
         for (j, s) in samples.iter().enumerate().take(l.balls) {
             if s.inner.load > 0.0 && s.outer.load > 0.0 {
@@ -109,7 +118,7 @@ impl BearingModel {
                 n += 1.0;
             }
         }
-        let g = &self.geometry;
+        let g = &self.elements.geometry;
         let gamma = g.ball_diameter / g.pitch_diameter;
         if n == 0.0 {
             let a = g.nominal_contact_angle();
@@ -123,7 +132,7 @@ impl BearingModel {
     /// with ω'_x = −ω' cos β cos β', ω'_t = ω' cos β sin β', ω'_r = ω' sin β.
     /// A ball rolling on the contact line at angle α has β = α, β' = 0.
     pub fn ball_attitude(&self, j: usize, y: &[f64]) -> (f64, f64) {
-        let b = self.layout.ball(j);
+        let b = self.elements.layout.ball(j);
         let axial = -(y[b + 6] - y[b + 5]);
         let (radial, tangential) = (y[b + 7], y[b + 8]);
         (

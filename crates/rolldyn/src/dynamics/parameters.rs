@@ -6,11 +6,14 @@
 use super::supports::{OuterRing, Support};
 use crate::cage::CageParameters;
 use crate::contact::NormalForceLaw;
+use crate::error::InvalidParameter;
+use crate::geometry::RingKind;
 use crate::lubrication::drag::DragParameters;
 use crate::operating::{LoadProfile, SpeedProfile};
 use crate::surface::SurfaceModel;
 use crate::traction::TractionModel;
 use crate::traction::ellipse::TractionIntegration;
+use crate::traction::mixed::MixedLubrication;
 
 /// Everything the dynamic model needs besides geometry and materials.
 #[derive(Debug, Clone, PartialEq)]
@@ -98,4 +101,36 @@ impl DynamicsParameters {
             mixed_lubrication: None,
         }
     }
+}
+
+/// Checks that mixed lubrication has what it needs: its parameters, a film
+/// model (EHL traction) and a roughness at both raceways' contacts.
+pub(super) fn validate_mixed_lubrication(
+    mixed: &MixedLubrication,
+    params: &DynamicsParameters,
+) -> Result<(), InvalidParameter> {
+    mixed.validate()?;
+    if !matches!(params.traction, TractionModel::Ehl(_)) {
+        return Err(InvalidParameter::new(
+            "mixed_lubrication",
+            "given",
+            "needs a film and a fluid traction law to blend with: traction law ehl (with a lubricant)",
+        ));
+    }
+    for ring in [RingKind::Inner, RingKind::Outer] {
+        if params.surface.composite_roughness(ring) <= 0.0 {
+            return Err(InvalidParameter::new(
+                "roughness",
+                0.0,
+                format!(
+                    "mixed lubrication needs the film parameter Λ = h_min/σ: give the {} raceway's or the balls' RMS roughness",
+                    match ring {
+                        RingKind::Inner => "inner",
+                        RingKind::Outer => "outer",
+                    }
+                ),
+            ));
+        }
+    }
+    Ok(())
 }

@@ -7,7 +7,8 @@
 //! ([`crate::cage::squeeze`]). Friction follows the law's normal force
 //! only: the squeeze film is a pressure, its shear is left out.
 
-use super::model::{BallMotion, BearingModel};
+use super::elements::Elements;
+use super::motion::BallMotion;
 use crate::cage::PocketShape;
 use nalgebra::Vector3;
 
@@ -31,7 +32,7 @@ pub(super) struct PocketContact {
     pub(super) friction_power: f64,
 }
 
-impl BearingModel {
+impl Elements {
     /// Pocket contact of ball j, if closed.
     pub(super) fn pocket_contact(
         &self,

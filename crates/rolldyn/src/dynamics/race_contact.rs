@@ -17,8 +17,9 @@
 //! M_h |ω_roll| is dissipated. A ramp over 1 mm/s of rolling speed makes it
 //! continuous at rest.
 
+use super::elements::Elements;
 use super::film::FilmWork;
-use super::model::{BallMotion, BearingModel, RingMotion};
+use super::motion::{BallMotion, RingMotion};
 use super::surface_contact::SurfaceEffect;
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{ContactTable, TorusContact};
@@ -106,7 +107,7 @@ pub(super) struct RaceContact {
     pub(super) output: ContactOutput,
 }
 
-impl BearingModel {
+impl Elements {
     /// Contact geometry of a ball with a ring, the penetration including the
     /// surfaces (docs/model.md §2.1, §6), and the surfaces' effect per unit load;
     /// None when the bodies do not overlap.

@@ -24,8 +24,9 @@
 //! average to zero over a ball turn; this is the price of the scalar spin
 //! angle ψ of Deng et al. 2022 in place of a full ball orientation.
 
+use super::elements::Elements;
 use super::layout::StateLayout;
-use super::model::{BallMotion, BearingModel, RingMotion};
+use super::motion::{BallMotion, RingMotion};
 use crate::contact::{Curvature, TorusContact};
 use crate::geometry::RingKind;
 use crate::surface::{BALL_CONTACT_SEPARATION, RacePoint, Spall, SpallSite};
@@ -50,7 +51,7 @@ pub(super) struct SurfaceEffect {
     pub(super) ring_force: Vector3<f64>,
 }
 
-impl BearingModel {
+impl Elements {
     /// The surfaces' effect on a contact of `geometry` (penetration without
     /// the surface); None when both surfaces are smooth.
     pub(super) fn surface_effect(

@@ -7,7 +7,7 @@
 //! it), the coupling
 //! 1. takes the dissipated energy over the interval from the energy
 //!    balance's accumulator (exact) and splits it like the dissipation by
-//!    component at that instant ([`BearingModel::rhs_with_power`]): race
+//!    component at that instant ([`super::BearingModel::rhs_with_power`]): race
 //!    contacts to the contact nodes, pocket losses to the balls, guide
 //!    land, drag and support dampers to the oil;
 //! 2. takes the loaded contacts' mean Hertz semi-axes and entrainment
@@ -23,14 +23,11 @@
 //! The step that changes the viscosity tells the integrator
 //! (`accept_step` returns true), which re-evaluates the right-hand side.
 
-use super::model::BearingModel;
-use super::race_contact::Want;
 use crate::error::InvalidParameter;
-use crate::integrate::OdeSystem;
 use crate::integrate::checkpoint::{CheckpointError, StateReader, StateWriter};
+use crate::power::Dissipation;
 use crate::thermal::bearing::{BearingThermal, HeatSources, ThermalInputs, node_index};
 use crate::thermal::viscosity::Walther;
-use crate::traction::TractionModel;
 
 /// The thermal state carried by a coupled run.
 #[derive(Debug, Clone, PartialEq)]
@@ -46,7 +43,9 @@ pub struct ThermalCoupling {
     updates: usize,
     largest_rate: f64,
     heat_supplied: f64,
-    scratch: Vec<f64>,
+    /// The right-hand side's buffer for the update's dissipation by
+    /// component.
+    pub(super) scratch: Vec<f64>,
 }
 
 /// The nodes with a heat capacity (the others follow quasi-statically).
@@ -171,57 +170,45 @@ impl ThermalCoupling {
     }
 }
 
-impl BearingModel {
-    /// Couples the thermal network to this model's run from time `t0` and
-    /// state `y0` (the dissipated energy counts from there) and applies the
-    /// starting viscosities.
-    pub fn couple_thermal(&mut self, mut coupling: ThermalCoupling, t0: f64, y0: &[f64]) {
-        coupling.last_time = t0;
-        coupling.next_update = t0 + coupling.interval;
-        coupling.last_dissipated = self.work(y0).1;
-        coupling.scratch = vec![0.0; self.dimension()];
-        self.apply_viscosities(coupling.viscosities());
-        self.thermal = Some(Box::new(coupling));
+impl ThermalCoupling {
+    /// Prepares the coupling for a run from time `t0`, where the dissipated
+    /// energy is `dissipated` \[J\], with a right-hand-side buffer of
+    /// `dimension` states; returns the starting viscosities.
+    pub(super) fn start(
+        &mut self,
+        t0: f64,
+        dissipated: f64,
+        dimension: usize,
+    ) -> Option<(f64, f64)> {
+        self.last_time = t0;
+        self.next_update = t0 + self.interval;
+        self.last_dissipated = dissipated;
+        self.scratch = vec![0.0; dimension];
+        self.viscosities()
     }
 
-    /// The thermal coupling, if the run has one.
-    pub fn thermal(&self) -> Option<&ThermalCoupling> {
-        self.thermal.as_deref()
+    /// Whether an accepted step at `t` updates the network.
+    pub(super) fn due(&self, t: f64) -> bool {
+        t >= self.next_update
     }
 
-    /// η₀ of the EHL traction, and of the guide land and the pocket
-    /// squeeze film (the oil node's), if `viscosities`.
-    pub(super) fn apply_viscosities(&mut self, viscosities: Option<(f64, f64)>) {
-        let Some((contact, land)) = viscosities else {
-            return;
-        };
-        if let TractionModel::Ehl(ehl) = &mut self.params.traction {
-            ehl.lubricant.viscosity = contact;
-        }
-        if let Some(guide) = &mut self.params.cage.guide {
-            guide.viscosity = land;
-        }
-        if let Some(squeeze) = &mut self.params.cage.pocket_squeeze {
-            squeeze.viscosity = land;
-        }
-    }
-
-    /// The coupling's update at an accepted step; true when the right-hand
-    /// side changed (the viscosity).
-    pub(super) fn thermal_update(&mut self, t: f64, y: &[f64]) -> bool {
-        let Some(mut c) = self.thermal.take() else {
-            return false;
-        };
-        if t < c.next_update {
-            self.thermal = Some(c);
-            return false;
-        }
-        let span = t - c.last_time;
-        let dissipated = self.work(y).1;
-        let mean_power = (dissipated - c.last_dissipated) / span;
-        let mut scratch = std::mem::take(&mut c.scratch);
-        let p = self.rhs_with_power(t, y, &mut scratch);
-        c.scratch = scratch;
+    /// The update at an accepted step at `t` (module doc): `dissipated`,
+    /// the energy dissipated so far \[J\]; `power`, the dissipation by
+    /// component at `t` (from [`super::BearingModel::rhs_with_power`] into
+    /// [`Self::scratch`]); `cage_speed` \[rad/s\]; `contact_means` sets the
+    /// loaded contacts' mean semi-axes and entrainment speeds. Returns the
+    /// viscosities to apply.
+    pub(super) fn advance(
+        &mut self,
+        t: f64,
+        dissipated: f64,
+        power: &Dissipation,
+        cage_speed: f64,
+        contact_means: impl FnOnce(&mut HeatSources),
+    ) -> Option<(f64, f64)> {
+        let span = t - self.last_time;
+        let mean_power = (dissipated - self.last_dissipated) / span;
+        let p = power;
         let scale = if p.total() > 0.0 {
             mean_power / p.total()
         } else {
@@ -232,55 +219,31 @@ impl BearingModel {
             outer_contacts: scale * p.outer.total(),
             balls: scale * (p.pocket_friction + p.pocket_damping),
             oil: scale * (p.guide_land + p.ball_drag + p.cage_drag + p.support_damping),
-            cage_speed: y[self.layout.cage() + 5],
+            cage_speed,
             ..HeatSources::default()
         };
-        self.contact_means(t, y, &mut heat);
-        let mut inputs = c.inputs.clone();
-        if let Some((_, land)) = c.viscosities() {
+        contact_means(&mut heat);
+        let mut inputs = self.inputs.clone();
+        if let Some((_, land)) = self.viscosities() {
             inputs.oil_kinematic_viscosity = land / inputs.oil_density;
         }
-        let before = c.temperatures;
-        if let Ok(s) =
-            BearingThermal::new(&inputs, &heat).and_then(|n| n.transient(&c.temperatures, span, 1))
+        let before = self.temperatures;
+        if let Ok(s) = BearingThermal::new(&inputs, &heat)
+            .and_then(|n| n.transient(&self.temperatures, span, 1))
         {
-            c.temperatures = s.temperatures;
+            self.temperatures = s.temperatures;
         }
-        c.largest_rate = MASSIVE
+        self.largest_rate = MASSIVE
             .iter()
-            .map(|&i| (c.temperatures[i] - before[i]).abs() / span)
+            .map(|&i| (self.temperatures[i] - before[i]).abs() / span)
             .fold(0.0, f64::max);
-        c.heat_supplied +=
+        self.heat_supplied +=
             span * (heat.inner_contacts + heat.outer_contacts + heat.balls + heat.oil);
-        c.updates += 1;
-        c.last_time = t;
-        c.last_dissipated = dissipated;
-        c.next_update = t + c.interval;
-        let viscosities = c.viscosities();
-        self.thermal = Some(c);
-        self.apply_viscosities(viscosities);
-        viscosities.is_some()
-    }
-
-    /// Mean semi-axes, entrainment speeds and counts of the loaded contacts.
-    fn contact_means(&self, t: f64, y: &[f64], heat: &mut HeatSources) {
-        let (inner, outer) = self.ring_motion(t, y);
-        let rings = [(&inner, &self.inner_table), (&outer, &self.outer_table)];
-        heat.set_contact_means((0..self.layout.balls).flat_map(|j| {
-            let (ball, _) = self.ball_kinematics(j, y);
-            rings
-                .into_iter()
-                .enumerate()
-                .filter_map(move |(k, (ring, table))| {
-                    let cn =
-                        self.race_contact(ring, table, &self.episodes[j][k], &ball, Want::Output)?;
-                    let o = cn.output;
-                    (o.load > 0.0).then(|| {
-                        let e = table.at(o.angle).at_load(o.load);
-                        (k, e.semi_major, e.semi_minor, o.entrainment_speed)
-                    })
-                })
-        }));
+        self.updates += 1;
+        self.last_time = t;
+        self.last_dissipated = dissipated;
+        self.next_update = t + self.interval;
+        self.viscosities()
     }
 }
 
@@ -288,6 +251,7 @@ impl BearingModel {
 mod tests {
     use super::*;
     use crate::contact::HertzModel;
+    use crate::dynamics::BearingModel;
     use crate::dynamics::{CageParameters, DynamicsParameters, PocketLaw, PocketShape};
     use crate::integrate::tableau::DOPRI5;
     use crate::integrate::{ExplicitRk, Integrator, StepControl};
@@ -295,6 +259,7 @@ mod tests {
     use crate::operating::{LoadProfile, Loads, SpeedProfile};
     use crate::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
     use crate::thermal::bearing::Solid;
+    use crate::traction::TractionModel;
     use crate::traction::ellipse::TractionIntegration;
     use crate::traction::{EhlRheology, ModifiedCoulomb};
     use crate::{BearingGeometry, Clearance, GeometrySpec};
