@@ -6,8 +6,7 @@ use super::checkpoint::{
     Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
 };
 use super::energy_control::EnergyControl;
-use super::step_control::PiControl;
-use super::step_control::{IntegrationError, IntegrationStats};
+use super::step_control::{IntegrationError, IntegrationStats, PiControl, StepMethod, take_step};
 use super::tableau::Tableau;
 use super::{Integrator, OdeSystem, Tolerances};
 
@@ -235,7 +234,7 @@ impl ExplicitRk {
 
     /// Computes the stages and the candidate y_new for step h; returns the
     /// scaled error norm (0 for methods without an estimate).
-    fn attempt(&mut self, system: &impl OdeSystem, h: f64, rtol: Option<f64>) -> f64 {
+    fn try_step(&mut self, system: &impl OdeSystem, h: f64, rtol: Option<f64>) -> f64 {
         let tab = self.tableau;
         let n = self.y.len();
         self.k[0].copy_from_slice(&self.f);
@@ -351,6 +350,75 @@ impl ExplicitRk {
     }
 }
 
+impl StepMethod for ExplicitRk {
+    fn point(&self) -> (f64, &[f64]) {
+        (self.t, &self.y)
+    }
+
+    fn max_step(&self) -> f64 {
+        match self.control {
+            StepControl::Adaptive { max_step, .. } => max_step,
+            StepControl::Fixed { .. } => f64::INFINITY,
+        }
+    }
+
+    fn error_order(&self) -> Option<f64> {
+        match self.control {
+            StepControl::Adaptive { .. } => Some(self.tableau.order as f64),
+            StepControl::Fixed { .. } => None,
+        }
+    }
+
+    fn step_size(&mut self) -> (&mut f64, &mut PiControl) {
+        (&mut self.h, &mut self.control_state)
+    }
+
+    fn attempt<S: OdeSystem>(&mut self, system: &S, h: f64) -> f64 {
+        let rtol = match self.control {
+            StepControl::Adaptive {
+                relative_tolerance, ..
+            } => Some(relative_tolerance),
+            StepControl::Fixed { .. } => None,
+        };
+        self.try_step(system, h, rtol)
+    }
+
+    fn finish<S: OdeSystem>(&mut self, system: &mut S, h: f64) {
+        self.finish_step(system, h);
+    }
+
+    fn reject(&mut self) {
+        self.stats.rejected_steps += 1;
+    }
+
+    /// A fixed step fails only on a non-finite state: the first one.
+    fn too_small<S: OdeSystem>(
+        &self,
+        system: &S,
+        step: f64,
+        tried: f64,
+        err: f64,
+    ) -> IntegrationError {
+        if let StepControl::Fixed { .. } = self.control {
+            let first = self.y_new.iter().position(|v| !v.is_finite()).unwrap_or(0);
+            return IntegrationError::NonFinite {
+                t: self.t,
+                state: system.state_name(first),
+            };
+        }
+        PiControl::too_small(
+            self.t,
+            step,
+            err,
+            system,
+            self.error_terms(tried),
+            &self.y,
+            &self.f,
+            &self.tolerances,
+        )
+    }
+}
+
 impl Checkpoint for ExplicitRk {
     fn save(&self, out: &mut StateWriter) {
         out.tag(self.tableau.name);
@@ -394,61 +462,10 @@ impl Integrator for ExplicitRk {
         &self.y
     }
 
-    /// Takes one accepted step, not beyond `t_limit`. Calls the system's
-    /// `accept_step` hook once, after acceptance.
+    /// Takes one accepted step, not beyond `t_limit` ([`take_step`]).
+    /// Calls the system's `accept_step` hook once, after acceptance.
     fn step<S: OdeSystem>(&mut self, system: &mut S, t_limit: f64) -> Result<(), IntegrationError> {
-        let remaining = t_limit - self.t;
-        if remaining <= 0.0 {
-            return Ok(());
-        }
-        let min_step = 16.0 * f64::EPSILON * self.t.abs().max(remaining);
-        let (rtol, max_step) = match self.control {
-            StepControl::Adaptive {
-                relative_tolerance,
-                max_step,
-                ..
-            } => (Some(relative_tolerance), max_step),
-            StepControl::Fixed { .. } => (None, f64::INFINITY),
-        };
-        let max_step = max_step.min(system.step_limit(self.t, &self.y));
-        let mut rejected = false;
-        loop {
-            let natural = self.h.min(max_step);
-            let h = PiControl::landing(natural, remaining);
-            let err = self.attempt(system, h, rtol);
-            let fixed = matches!(self.control, StepControl::Fixed { .. });
-            if err <= 1.0 {
-                let order = self.tableau.order as f64;
-                if !fixed {
-                    self.h = self.control_state.accepted(natural, err, order, rejected);
-                }
-                self.finish_step(system, h);
-                return Ok(());
-            }
-            if fixed {
-                let first = self.y_new.iter().position(|v| !v.is_finite()).unwrap_or(0);
-                return Err(IntegrationError::NonFinite {
-                    t: self.t,
-                    state: system.state_name(first),
-                });
-            }
-            self.stats.rejected_steps += 1;
-            rejected = true;
-            self.h = PiControl::rejected(h, err, self.tableau.order as f64);
-            if self.h < min_step {
-                let terms = self.error_terms(h);
-                return Err(PiControl::too_small(
-                    self.t,
-                    self.h,
-                    err,
-                    system,
-                    terms,
-                    &self.y,
-                    &self.f,
-                    &self.tolerances,
-                ));
-            }
-        }
+        take_step(self, system, t_limit)
     }
 
     /// Dense output: the state at time `t` within the last accepted step

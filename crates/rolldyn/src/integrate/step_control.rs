@@ -1,6 +1,8 @@
 //! What both adaptive integrators share: their counters, why an
-//! integration stops, and the PI step-size controller (Gustafsson;
-//! Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4).
+//! integration stops, the PI step-size controller (Gustafsson;
+//! Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4) and the loop that
+//! attempts, accepts and rejects a step ([`take_step`]); each method
+//! supplies only its attempt ([`StepMethod`]).
 
 use super::{OdeSystem, Tolerances};
 
@@ -138,6 +140,83 @@ impl PiControl {
             let mut rates = (0..y.len()).map(|k| f[k].abs() / tolerances.scale(k, y[k].abs()));
             let state = system.state_name(largest(&mut rates));
             IntegrationError::NonFinite { t, state }
+        }
+    }
+}
+
+/// An integrator's side of the step loop ([`take_step`]): its point, its
+/// step size and controller, and its attempt.
+pub(crate) trait StepMethod {
+    /// The current time and state.
+    fn point(&self) -> (f64, &[f64]);
+    /// Largest step its settings allow \[s\].
+    fn max_step(&self) -> f64;
+    /// Exponent q of err ∝ h^q; None: a fixed step without error control.
+    fn error_order(&self) -> Option<f64>;
+    /// The step size to try next and the PI controller's state.
+    fn step_size(&mut self) -> (&mut f64, &mut PiControl);
+    /// Prepares an attempt (an implicit method refreshes its Jacobian).
+    fn prepare<S: OdeSystem>(&mut self, _system: &S) {}
+    /// Attempts step h from the current point; the scaled error norm (≤ 1
+    /// accepts; ∞ when not finite).
+    fn attempt<S: OdeSystem>(&mut self, system: &S, h: f64) -> f64;
+    /// Moves to the attempted step's end and calls the system's
+    /// `accept_step`.
+    fn finish<S: OdeSystem>(&mut self, system: &mut S, h: f64);
+    /// Counts a rejection (an implicit method may also age its Jacobian).
+    fn reject(&mut self);
+    /// The error when the step falls below the smallest (new size `step`,
+    /// after an attempt `tried` of error `err`): names the state.
+    fn too_small<S: OdeSystem>(
+        &self,
+        system: &S,
+        step: f64,
+        tried: f64,
+        err: f64,
+    ) -> IntegrationError;
+}
+
+/// One accepted step of `method`, not beyond `t_limit`: the step limited
+/// by the settings and the system ([`OdeSystem::step_limit`]), landing on
+/// `t_limit` without a sliver, cut after each rejection by the PI
+/// controller until accepted or below the time resolution. A fixed-step
+/// method fails on a non-finite attempt.
+pub(crate) fn take_step<M: StepMethod, S: OdeSystem>(
+    method: &mut M,
+    system: &mut S,
+    t_limit: f64,
+) -> Result<(), IntegrationError> {
+    let (t, y) = method.point();
+    let remaining = t_limit - t;
+    if remaining <= 0.0 {
+        return Ok(());
+    }
+    let min_step = 16.0 * f64::EPSILON * t.abs().max(remaining);
+    let max_step = method.max_step().min(system.step_limit(t, y));
+    let order = method.error_order();
+    let mut rejected = false;
+    loop {
+        method.prepare(system);
+        let natural = (*method.step_size().0).min(max_step);
+        let h = PiControl::landing(natural, remaining);
+        let err = method.attempt(system, h);
+        if err <= 1.0 {
+            if let Some(q) = order {
+                let (step, control) = method.step_size();
+                *step = control.accepted(natural, err, q, rejected);
+            }
+            method.finish(system, h);
+            return Ok(());
+        }
+        let Some(q) = order else {
+            return Err(method.too_small(system, h, h, err));
+        };
+        method.reject();
+        rejected = true;
+        let next = PiControl::rejected(h, err, q);
+        *method.step_size().0 = next;
+        if next < min_step {
+            return Err(method.too_small(system, next, h, err));
         }
     }
 }

@@ -30,7 +30,7 @@ use super::checkpoint::{
 use super::energy_control::EnergyControl;
 use super::jacobian::{JacobianWork, finite_difference};
 use super::linear::{BlockJacobian, BlockLayout, BlockLu};
-use super::step_control::{IntegrationError, IntegrationStats, PiControl};
+use super::step_control::{IntegrationError, IntegrationStats, PiControl, StepMethod, take_step};
 use super::{Integrator, OdeSystem, Tolerances};
 
 /// Largest number of stages of a Rosenbrock tableau.
@@ -371,7 +371,7 @@ impl Rosenbrock {
 
     /// Stages and candidate for step h; the scaled error norm (∞ when the
     /// matrix is singular or the stages are not finite).
-    fn attempt(&mut self, system: &impl OdeSystem, h: f64) -> f64 {
+    fn try_step(&mut self, system: &impl OdeSystem, h: f64) -> f64 {
         let co = self.coefficients;
         let n = self.y.len();
         if self.factored_step != Some(h) {
@@ -462,6 +462,79 @@ impl Rosenbrock {
     }
 }
 
+impl StepMethod for Rosenbrock {
+    fn point(&self) -> (f64, &[f64]) {
+        (self.t, &self.y)
+    }
+
+    fn max_step(&self) -> f64 {
+        self.max_step
+    }
+
+    /// The embedded solution has order q − 1: the error scales as h^q.
+    fn error_order(&self) -> Option<f64> {
+        Some(self.tableau.order as f64)
+    }
+
+    fn step_size(&mut self) -> (&mut f64, &mut PiControl) {
+        (&mut self.h, &mut self.control_state)
+    }
+
+    fn prepare<S: OdeSystem>(&mut self, system: &S) {
+        if self.jacobian_age.is_none_or(|age| age >= MAX_JACOBIAN_AGE) {
+            self.evaluate_jacobian(system);
+        }
+    }
+
+    fn attempt<S: OdeSystem>(&mut self, system: &S, h: f64) -> f64 {
+        self.try_step(system, h)
+    }
+
+    fn finish<S: OdeSystem>(&mut self, system: &mut S, h: f64) {
+        self.finish_step(system, h);
+    }
+
+    /// A rejection with an old Jacobian refreshes it first.
+    fn reject(&mut self) {
+        self.stats.rejected_steps += 1;
+        if self
+            .jacobian_age
+            .is_some_and(|age| age >= MIN_AGE_FOR_REFRESH)
+        {
+            self.jacobian_age = None;
+        }
+    }
+
+    fn too_small<S: OdeSystem>(
+        &self,
+        system: &S,
+        step: f64,
+        _tried: f64,
+        err: f64,
+    ) -> IntegrationError {
+        let terms = (0..self.y.len()).map(|k| {
+            let scale = self
+                .tolerances
+                .scale(k, self.y[k].abs().max(self.y_new[k].abs()));
+            if self.y_new[k].is_finite() {
+                (self.error[k] / scale).abs()
+            } else {
+                f64::INFINITY
+            }
+        });
+        PiControl::too_small(
+            self.t,
+            step,
+            err,
+            system,
+            terms,
+            &self.y,
+            &self.f,
+            &self.tolerances,
+        )
+    }
+}
+
 impl Checkpoint for Rosenbrock {
     fn save(&self, out: &mut StateWriter) {
         out.tag(self.tableau.name);
@@ -536,63 +609,10 @@ impl Integrator for Rosenbrock {
         &self.y
     }
 
-    /// Takes one accepted step, not beyond `t_limit`. Calls the system's
-    /// `accept_step` hook once, after acceptance.
+    /// Takes one accepted step, not beyond `t_limit` ([`take_step`]).
+    /// Calls the system's `accept_step` hook once, after acceptance.
     fn step<S: OdeSystem>(&mut self, system: &mut S, t_limit: f64) -> Result<(), IntegrationError> {
-        let remaining = t_limit - self.t;
-        if remaining <= 0.0 {
-            return Ok(());
-        }
-        let min_step = 16.0 * f64::EPSILON * self.t.abs().max(remaining);
-        // The embedded solution has order q − 1: the error scales as h^q.
-        let q = self.tableau.order as f64;
-        let max_step = self.max_step.min(system.step_limit(self.t, &self.y));
-        let mut rejected = false;
-        loop {
-            if self.jacobian_age.is_none_or(|age| age >= MAX_JACOBIAN_AGE) {
-                self.evaluate_jacobian(system);
-            }
-            let natural = self.h.min(max_step);
-            let h = PiControl::landing(natural, remaining);
-            let err = self.attempt(system, h);
-            if err <= 1.0 {
-                self.h = self.control_state.accepted(natural, err, q, rejected);
-                self.finish_step(system, h);
-                return Ok(());
-            }
-            self.stats.rejected_steps += 1;
-            rejected = true;
-            // A rejection with an old Jacobian: refresh it first.
-            if self
-                .jacobian_age
-                .is_some_and(|age| age >= MIN_AGE_FOR_REFRESH)
-            {
-                self.jacobian_age = None;
-            }
-            self.h = PiControl::rejected(h, err, q);
-            if self.h < min_step {
-                let terms = (0..self.y.len()).map(|k| {
-                    let scale = self
-                        .tolerances
-                        .scale(k, self.y[k].abs().max(self.y_new[k].abs()));
-                    if self.y_new[k].is_finite() {
-                        (self.error[k] / scale).abs()
-                    } else {
-                        f64::INFINITY
-                    }
-                });
-                return Err(PiControl::too_small(
-                    self.t,
-                    self.h,
-                    err,
-                    system,
-                    terms,
-                    &self.y,
-                    &self.f,
-                    &self.tolerances,
-                ));
-            }
-        }
+        take_step(self, system, t_limit)
     }
 
     /// Dense output: cubic Hermite interpolation in the last accepted step
