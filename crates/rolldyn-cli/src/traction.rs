@@ -20,7 +20,8 @@ use rolldyn::traction::exact::{DEFAULT_CELLS, ExactRolling, MAX_CELLS};
 use rolldyn::traction::fastsim::MapCell;
 use rolldyn::traction::kalker::check_axes;
 use rolldyn::traction::{
-    ContactConditions, ContactPatch, ExactTable, Fastsim, TractionModel, TractionResult,
+    ContactConditions, ContactKinematics, ContactPatch, ExactTable, Fastsim, TractionModel,
+    TractionResult,
 };
 use rolldyn_case::Case;
 use rolldyn_case::units::{AngularSpeed, Dimension, Force, Length, Pressure, Quantity, Velocity};
@@ -563,11 +564,13 @@ pub fn evaluate(
             text.push_str(MapCell::CSV_HEADER);
             text.push('\n');
             f.evaluate_mapped(
-                &patch,
-                &Vector3::zeros(),
-                &slip,
-                &relative_spin,
-                &conditions,
+                &ContactKinematics {
+                    patch,
+                    ball_centre: Vector3::zeros(),
+                    slip,
+                    relative_spin,
+                    conditions,
+                },
                 |c: &MapCell| {
                     cells += 1;
                     let _ = writeln!(text, "{}", c.csv_row());
@@ -582,11 +585,13 @@ pub fn evaluate(
         }
         (m, None, None) => m.evaluate(
             &rolldyn::traction::TractionGrid::new(integration),
-            &patch,
-            &Vector3::zeros(),
-            &slip,
-            &relative_spin,
-            &conditions,
+            &ContactKinematics {
+                patch,
+                ball_centre: Vector3::zeros(),
+                slip,
+                relative_spin,
+                conditions,
+            },
         ),
     };
     let (fx, fy) = (result.force.dot(&x), result.force.dot(&y));

@@ -11,8 +11,8 @@ use rolldyn::contact::{GrooveCircle, HertzModel, RingPose};
 use rolldyn::material::{Material, effective_modulus};
 use rolldyn::traction::fastsim::combined_elastic_constants;
 use rolldyn::traction::{
-    ContactConditions, ContactPatch, EhlRheology, ExactTable, Fastsim, ModifiedCoulomb,
-    TractionGrid, TractionIntegration, TractionModel,
+    ContactConditions, ContactKinematics, ContactPatch, EhlRheology, ExactTable, Fastsim,
+    ModifiedCoulomb, TractionGrid, TractionIntegration, TractionModel,
 };
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec, RingKind};
 use std::hint::black_box;
@@ -110,9 +110,15 @@ fn main() {
             &format!("FASTSIM contact, {strips} × {elements}"),
             200_000,
             |i| {
-                m.evaluate(&patch, &Vector3::zeros(), &slip(i), &spin(i), &conditions)
-                    .force
-                    .x
+                m.evaluate(&ContactKinematics {
+                    patch,
+                    ball_centre: Vector3::zeros(),
+                    slip: slip(i),
+                    relative_spin: spin(i),
+                    conditions,
+                })
+                .force
+                .x
             },
         );
     }
@@ -120,7 +126,13 @@ fn main() {
     let table = ExactTable::new(0.1, shear, nu);
     time_per_call("exact-theory table contact", 2_000_000, |i| {
         table
-            .evaluate(&patch, &Vector3::zeros(), &slip(i), &spin(i), &conditions)
+            .evaluate(&ContactKinematics {
+                patch,
+                ball_centre: Vector3::zeros(),
+                slip: slip(i),
+                relative_spin: spin(i),
+                conditions,
+            })
             .force
             .x
     });
@@ -134,11 +146,13 @@ fn main() {
         coulomb
             .evaluate(
                 &grid,
-                &patch,
-                &Vector3::zeros(),
-                &slip(i),
-                &spin(i),
-                &conditions,
+                &ContactKinematics {
+                    patch,
+                    ball_centre: Vector3::zeros(),
+                    slip: slip(i),
+                    relative_spin: spin(i),
+                    conditions,
+                },
             )
             .force
             .x
@@ -159,8 +173,17 @@ fn main() {
         ..conditions
     };
     time_per_call("EHL stress law on the 12 × 6 grid", 200_000, |i| {
-        ehl.evaluate(&grid, &patch, &Vector3::zeros(), &slip(i), &spin(i), &film)
-            .force
-            .x
+        ehl.evaluate(
+            &grid,
+            &ContactKinematics {
+                patch,
+                ball_centre: Vector3::zeros(),
+                slip: slip(i),
+                relative_spin: spin(i),
+                conditions: film,
+            },
+        )
+        .force
+        .x
     });
 }

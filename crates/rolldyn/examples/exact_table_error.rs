@@ -16,7 +16,9 @@
 
 use nalgebra::Vector3;
 use rolldyn::traction::exact::ExactRolling;
-use rolldyn::traction::{ContactConditions, ContactPatch, ExactTable, Fastsim, TractionResult};
+use rolldyn::traction::{
+    ContactConditions, ContactKinematics, ContactPatch, ExactTable, Fastsim, TractionResult,
+};
 
 fn main() -> Result<(), String> {
     let mut args = std::env::args().skip(1);
@@ -76,12 +78,20 @@ fn main() -> Result<(), String> {
         let error = |r: &TractionResult| {
             ((r.force - force).norm() / mu_q).max((r.couple.z - moment).abs() / (mu_q * b))
         };
-        errors[0].push(error(
-            &table.evaluate(&patch, &centre, &slip, &spin, &rolling),
-        ));
-        errors[1].push(error(
-            &fastsim.evaluate(&patch, &centre, &slip, &spin, &rolling),
-        ));
+        errors[0].push(error(&table.evaluate(&ContactKinematics {
+            patch,
+            ball_centre: centre,
+            slip,
+            relative_spin: spin,
+            conditions: rolling,
+        })));
+        errors[1].push(error(&fastsim.evaluate(&ContactKinematics {
+            patch,
+            ball_centre: centre,
+            slip,
+            relative_spin: spin,
+            conditions: rolling,
+        })));
     }
     println!(
         "{samples} bearing contacts against the exact theory ({cells} and {} cells, extrapolated)",

@@ -7,6 +7,9 @@
 //! is an edge from the file's module to the longest module prefix of the
 //! path. Method calls between `impl` blocks of one type are not edges.
 
+// A test that cannot read its sources should fail loudly.
+#![allow(clippy::unwrap_used)]
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 

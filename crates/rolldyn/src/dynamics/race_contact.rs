@@ -25,7 +25,9 @@ use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{ContactTable, TorusContact};
 use crate::power::ContactLosses;
 use crate::traction::fastsim::MapCell;
-use crate::traction::{ContactConditions, ContactPatch, Creep, TractionModel, TractionResult};
+use crate::traction::{
+    ContactConditions, ContactKinematics, ContactPatch, Creep, TractionModel, TractionResult,
+};
 use nalgebra::Vector3;
 
 /// Rolling speed over which the hysteresis couple ramps up from zero
@@ -258,30 +260,24 @@ impl Elements {
             rolling_velocity: entrainment.dot(&rolling_direction),
         };
         let model = &self.params.traction;
+        let kinematics = ContactKinematics {
+            patch,
+            ball_centre: *q,
+            slip,
+            relative_spin,
+            conditions,
+        };
         let traction = match (want, model) {
             (Want::Penetration, _) => TractionResult::default(),
-            (Want::Map(map), TractionModel::Fastsim(f)) => {
-                f.evaluate_mapped(&patch, q, &slip, &relative_spin, &conditions, map)
-            }
+            (Want::Map(map), TractionModel::Fastsim(f)) => f.evaluate_mapped(&kinematics, map),
             _ => match &self.params.mixed_lubrication {
                 Some(mixed) => model.evaluate_blended(
                     &mixed.boundary,
                     asperity_share,
                     &self.traction_grid,
-                    &patch,
-                    q,
-                    &slip,
-                    &relative_spin,
-                    &conditions,
+                    &kinematics,
                 ),
-                None => model.evaluate(
-                    &self.traction_grid,
-                    &patch,
-                    q,
-                    &slip,
-                    &relative_spin,
-                    &conditions,
-                ),
+                None => model.evaluate(&self.traction_grid, &kinematics),
             },
         };
         // Rolling axis e_a = n × û and the rolling rate about it.

@@ -129,7 +129,9 @@ impl Dissipation {
 #[cfg(test)]
 mod tests {
     use crate::traction::TractionGrid;
-    use crate::traction::ellipse::{ContactPatch, TractionIntegration, integrate};
+    use crate::traction::ellipse::{
+        ContactKinematics, ContactPatch, TractionIntegration, integrate,
+    };
     use crate::traction::{ContactConditions, ModifiedCoulomb};
     use nalgebra::Vector3;
 
@@ -157,11 +159,13 @@ mod tests {
         integrate(
             &law,
             &TractionGrid::new(method),
-            &patch,
-            &Vector3::zeros(),
-            &slip,
-            &spin,
-            &conditions,
+            &ContactKinematics {
+                patch,
+                ball_centre: Vector3::zeros(),
+                slip,
+                relative_spin: spin,
+                conditions,
+            },
         )
     }
 

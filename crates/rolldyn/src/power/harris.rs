@@ -229,7 +229,9 @@ mod tests {
     use crate::material::{Material, effective_modulus};
     use crate::math::roots::brent;
     use crate::traction::TractionGrid;
-    use crate::traction::ellipse::{ContactPatch, TractionIntegration, integrate};
+    use crate::traction::ellipse::{
+        ContactKinematics, ContactPatch, TractionIntegration, integrate,
+    };
     use crate::traction::{ContactConditions, ModifiedCoulomb};
     use nalgebra::Vector3;
 
@@ -318,11 +320,13 @@ mod tests {
             integrate(
                 &law,
                 &grid,
-                &p,
-                &Vector3::zeros(),
-                &Vector3::new(0.0, s0, 0.0),
-                &spin,
-                &cond,
+                &ContactKinematics {
+                    patch: p,
+                    ball_centre: Vector3::zeros(),
+                    slip: Vector3::new(0.0, s0, 0.0),
+                    relative_spin: spin,
+                    conditions: cond,
+                },
             )
         };
         let top = roll * r.semi_major.powi(2) / rd;
@@ -350,11 +354,13 @@ mod tests {
                 across: 48,
                 along: 24,
             }),
-            &p,
-            &Vector3::zeros(),
-            &Vector3::zeros(),
-            &(omega_s * p.normal),
-            &ContactConditions::default(),
+            &ContactKinematics {
+                patch: p,
+                ball_centre: Vector3::zeros(),
+                slip: Vector3::zeros(),
+                relative_spin: (omega_s * p.normal),
+                conditions: ContactConditions::default(),
+            },
         );
         let m = 1.0 - (r.semi_minor / r.semi_major).powi(2);
         let harris = 0.375 * 0.1 * load * r.semi_major * elliptic::complete(m).e * omega_s;

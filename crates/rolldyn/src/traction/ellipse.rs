@@ -56,6 +56,25 @@ impl Default for TractionIntegration {
     }
 }
 
+/// The motion at one contact that a traction law turns into forces: the
+/// loaded ellipse and its frame, the ball centre (about which the moment is
+/// taken), the slip and spin of ball material relative to ring material,
+/// and the film's conditions.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactKinematics {
+    /// The contact's ellipse, frame and load.
+    pub patch: ContactPatch,
+    /// Ball centre \[m\].
+    pub ball_centre: Vector3<f64>,
+    /// Sliding velocity of ball material relative to ring material at the
+    /// contact point P \[m/s\].
+    pub slip: Vector3<f64>,
+    /// Relative angular velocity ω_b − ω_ring \[rad/s\].
+    pub relative_spin: Vector3<f64>,
+    /// Film, entrainment speed |u| and rolling velocity u·e_roll.
+    pub conditions: ContactConditions,
+}
+
 /// Geometry and load of one contact for traction integration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactPatch {
@@ -139,19 +158,21 @@ impl TractionGrid {
     }
 }
 
-/// Integrates `law` over `patch` for ball centre `ball_centre`, sliding
-/// velocity at P `slip_at_point` (ball relative to ring, full vector) and
-/// relative angular velocity `relative_spin` (ω_b − ω_ring), under the
-/// contact's `conditions` (film, entrainment). Allocation-free.
+/// Integrates `law` over the ellipse of a contact in motion `kinematics`
+/// (the full slip vector at P, ball relative to ring, and the relative
+/// angular velocity give each cell's slip). Allocation-free.
 pub fn integrate<L: TractionLaw>(
     law: &L,
     grid: &TractionGrid,
-    patch: &ContactPatch,
-    ball_centre: &Vector3<f64>,
-    slip_at_point: &Vector3<f64>,
-    relative_spin: &Vector3<f64>,
-    conditions: &ContactConditions,
+    kinematics: &ContactKinematics,
 ) -> TractionResult {
+    let ContactKinematics {
+        patch,
+        ball_centre,
+        slip: slip_at_point,
+        relative_spin,
+        conditions,
+    } = kinematics;
     let mut out = TractionResult::default();
     if patch.load <= 0.0 {
         return out;
@@ -270,11 +291,13 @@ mod tests {
             let r = integrate(
                 &coulomb(),
                 &TractionGrid::new(method),
-                &p,
-                &q,
-                &slip,
-                &Vector3::zeros(),
-                &ContactConditions::default(),
+                &ContactKinematics {
+                    patch: p,
+                    ball_centre: q,
+                    slip,
+                    relative_spin: Vector3::zeros(),
+                    conditions: ContactConditions::default(),
+                },
             );
             assert!(
                 (r.force - Vector3::new(0.0, -20.0, 0.0)).norm() < 1e-9,
@@ -297,11 +320,13 @@ mod tests {
             let r = integrate(
                 &coulomb(),
                 &TractionGrid::new(TractionIntegration::Grid { across, along }),
-                &p,
-                &p.point,
-                &Vector3::zeros(),
-                &spin,
-                &ContactConditions::default(),
+                &ContactKinematics {
+                    patch: p,
+                    ball_centre: p.point,
+                    slip: Vector3::zeros(),
+                    relative_spin: spin,
+                    conditions: ContactConditions::default(),
+                },
             );
             assert!(r.force.norm() < 1e-9 * p.load, "symmetric: no net force");
             -r.moment.dot(&p.normal)
@@ -335,11 +360,13 @@ mod tests {
                 across: 12,
                 along: 6,
             }),
-            &patch(),
-            &Vector3::zeros(),
-            &Vector3::zeros(),
-            &spin,
-            &ContactConditions::default(),
+            &ContactKinematics {
+                patch: patch(),
+                ball_centre: Vector3::zeros(),
+                slip: Vector3::zeros(),
+                relative_spin: spin,
+                conditions: ContactConditions::default(),
+            },
         );
         let curved = integrate(
             &coulomb(),
@@ -347,11 +374,13 @@ mod tests {
                 across: 12,
                 along: 6,
             }),
-            &p,
-            &Vector3::zeros(),
-            &Vector3::zeros(),
-            &spin,
-            &ContactConditions::default(),
+            &ContactKinematics {
+                patch: p,
+                ball_centre: Vector3::zeros(),
+                slip: Vector3::zeros(),
+                relative_spin: spin,
+                conditions: ContactConditions::default(),
+            },
         );
         assert!(
             (flat.force - curved.force).norm() > 1e-6,

@@ -53,7 +53,9 @@ pub fn require_friction(
 }
 pub use curve::{SlipMeasure, TractionCurve};
 pub use ehl::EhlRheology;
-pub use ellipse::{ContactPatch, TractionGrid, TractionIntegration, TractionResult};
+pub use ellipse::{
+    ContactKinematics, ContactPatch, TractionGrid, TractionIntegration, TractionResult,
+};
 pub use fastsim::{Creep, Fastsim, TractionBound};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
@@ -185,54 +187,21 @@ impl TractionModel {
         }
     }
 
-    /// Traction of one contact: FASTSIM integrates the ellipse itself, the
-    /// stress laws are integrated over `grid` ([`ellipse::integrate`]).
-    /// `slip_at_point` is the sliding velocity of ball material relative to
-    /// ring material at P, `relative_spin` ω_b − ω_ring. Allocation-free.
+    /// Traction of one contact in motion `kinematics`: FASTSIM and the
+    /// exact table take the ellipse whole, the stress laws are integrated
+    /// over `grid` ([`ellipse::integrate`]). Allocation-free.
     pub fn evaluate(
         &self,
         grid: &ellipse::TractionGrid,
-        patch: &ContactPatch,
-        ball_centre: &Vector3<f64>,
-        slip_at_point: &Vector3<f64>,
-        relative_spin: &Vector3<f64>,
-        conditions: &ContactConditions,
+        kinematics: &ContactKinematics,
     ) -> TractionResult {
         match self {
             Self::None => TractionResult::default(),
-            Self::ModifiedCoulomb(m) => ellipse::integrate(
-                m,
-                grid,
-                patch,
-                ball_centre,
-                slip_at_point,
-                relative_spin,
-                conditions,
-            ),
-            Self::TractionCurve(c) => ellipse::integrate(
-                c,
-                grid,
-                patch,
-                ball_centre,
-                slip_at_point,
-                relative_spin,
-                conditions,
-            ),
-            Self::Ehl(e) => ellipse::integrate(
-                e,
-                grid,
-                patch,
-                ball_centre,
-                slip_at_point,
-                relative_spin,
-                conditions,
-            ),
-            Self::Fastsim(f) => {
-                f.evaluate(patch, ball_centre, slip_at_point, relative_spin, conditions)
-            }
-            Self::ExactTable(t) => {
-                t.evaluate(patch, ball_centre, slip_at_point, relative_spin, conditions)
-            }
+            Self::ModifiedCoulomb(m) => ellipse::integrate(m, grid, kinematics),
+            Self::TractionCurve(c) => ellipse::integrate(c, grid, kinematics),
+            Self::Ehl(e) => ellipse::integrate(e, grid, kinematics),
+            Self::Fastsim(f) => f.evaluate(kinematics),
+            Self::ExactTable(t) => t.evaluate(kinematics),
         }
     }
 
@@ -240,17 +209,12 @@ impl TractionModel {
     /// `boundary` friction at asperity share φ = `share` ([`mixed`]). The
     /// other models have no film to share the load with (the case refuses
     /// them); for them, and at φ = 0, this is [`Self::evaluate`].
-    #[allow(clippy::too_many_arguments)]
     pub fn evaluate_blended(
         &self,
         boundary: &ModifiedCoulomb,
         share: f64,
         grid: &ellipse::TractionGrid,
-        patch: &ContactPatch,
-        ball_centre: &Vector3<f64>,
-        slip_at_point: &Vector3<f64>,
-        relative_spin: &Vector3<f64>,
-        conditions: &ContactConditions,
+        kinematics: &ContactKinematics,
     ) -> TractionResult {
         match self {
             Self::Ehl(fluid) if share > 0.0 => ellipse::integrate(
@@ -260,20 +224,9 @@ impl TractionModel {
                     share,
                 },
                 grid,
-                patch,
-                ball_centre,
-                slip_at_point,
-                relative_spin,
-                conditions,
+                kinematics,
             ),
-            _ => self.evaluate(
-                grid,
-                patch,
-                ball_centre,
-                slip_at_point,
-                relative_spin,
-                conditions,
-            ),
+            _ => self.evaluate(grid, kinematics),
         }
     }
 

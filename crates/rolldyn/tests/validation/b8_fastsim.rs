@@ -25,7 +25,9 @@ use rolldyn::material::Material;
 use rolldyn::traction::TractionModel;
 use rolldyn::traction::fastsim::{DEFAULT_ELEMENTS, DEFAULT_STRIPS, combined_elastic_constants};
 use rolldyn::traction::kalker::creep_coefficients;
-use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim, TractionResult};
+use rolldyn::traction::{
+    ContactConditions, ContactKinematics, ContactPatch, Fastsim, TractionResult,
+};
 
 /// An inner-race-like contact of the 7218B: 2.4 mm × 0.36 mm, 3 kN.
 fn patch() -> ContactPatch {
@@ -55,17 +57,17 @@ fn at(m: &Fastsim, p: &ContactPatch, xi: f64, eta: f64, phi: f64) -> TractionRes
     let ex = p.rolling_direction;
     let ey = p.normal.cross(&ex);
     let v = SPEED.hypot(m.regularisation_speed);
-    m.evaluate(
-        p,
-        &Vector3::zeros(),
-        &(v * (xi * ex + eta * ey)),
-        &(v * phi * p.normal),
-        &ContactConditions {
+    m.evaluate(&ContactKinematics {
+        patch: *p,
+        ball_centre: Vector3::zeros(),
+        slip: (v * (xi * ex + eta * ey)),
+        relative_spin: (v * phi * p.normal),
+        conditions: ContactConditions {
             film: 0.0,
             entrainment_speed: SPEED,
             rolling_velocity: SPEED,
         },
-    )
+    })
 }
 
 /// Linear-theory force components (x̂, ŷ) of one creepage.

@@ -85,7 +85,7 @@
 //! and the normal pressure does not change with them.
 
 use super::kalker::{self, CreepCoefficients};
-use super::{ContactConditions, ContactPatch, TractionResult};
+use super::{ContactKinematics, ContactPatch, TractionResult};
 use crate::error::{InvalidParameter, require_positive};
 use nalgebra::{Vector2, Vector3};
 use serde::{Deserialize, Serialize};
@@ -366,38 +366,25 @@ impl Fastsim {
         kalker::creep_coefficients(patch.semi_minor, patch.semi_major, self.poisson_ratio)
     }
 
-    /// Tractions of one contact: `slip_at_point` is the sliding velocity of
-    /// ball material relative to ring material at P, `relative_spin`
-    /// ω_b − ω_ring, `conditions` carries |u| and u·e_roll. Allocation-free.
-    pub fn evaluate(
-        &self,
-        patch: &ContactPatch,
-        ball_centre: &Vector3<f64>,
-        slip_at_point: &Vector3<f64>,
-        relative_spin: &Vector3<f64>,
-        conditions: &ContactConditions,
-    ) -> TractionResult {
-        self.evaluate_mapped(
-            patch,
-            ball_centre,
-            slip_at_point,
-            relative_spin,
-            conditions,
-            |_| {},
-        )
+    /// Tractions of one contact in motion `kinematics` (`conditions`
+    /// carries |u| and u·e_roll). Allocation-free.
+    pub fn evaluate(&self, kinematics: &ContactKinematics) -> TractionResult {
+        self.evaluate_mapped(kinematics, |_| {})
     }
 
     /// As [`Self::evaluate`], calling `map` for every element of the
     /// dominant flow direction (the stick/slip map).
     pub fn evaluate_mapped(
         &self,
-        patch: &ContactPatch,
-        ball_centre: &Vector3<f64>,
-        slip_at_point: &Vector3<f64>,
-        relative_spin: &Vector3<f64>,
-        conditions: &ContactConditions,
+        kinematics: &ContactKinematics,
         mut map: impl FnMut(&MapCell),
     ) -> TractionResult {
+        let ContactKinematics {
+            patch,
+            ball_centre,
+            conditions,
+            ..
+        } = kinematics;
         if patch.load <= 0.0 {
             return TractionResult::default();
         }
@@ -411,9 +398,7 @@ impl Fastsim {
             |direction, dominant| {
                 // The map shows the dominant flow direction only.
                 self.march(
-                    patch,
-                    slip_at_point,
-                    relative_spin,
+                    kinematics,
                     speed,
                     direction,
                     &coefficients,
@@ -515,12 +500,9 @@ impl Fastsim {
     /// own), four lanes to an instruction instead of two, so their results
     /// are bit-identical (test `avx2_march_is_bit_identical_to_baseline`).
     /// Measured on the Zhang et al. 2025 ramp: −20 % wall (docs/performance.md).
-    #[allow(clippy::too_many_arguments)]
     fn march(
         &self,
-        patch: &ContactPatch,
-        slip: &Vector3<f64>,
-        spin: &Vector3<f64>,
+        kinematics: &ContactKinematics,
         speed: f64,
         direction: f64,
         c: &CreepCoefficients,
@@ -531,41 +513,41 @@ impl Fastsim {
             // SAFETY: `march_avx2` requires AVX2 only, and the processor
             // has it (detected just above).
             #[allow(unsafe_code)]
-            return unsafe { self.march_avx2(patch, slip, spin, speed, direction, c, map) };
+            return unsafe { self.march_avx2(kinematics, speed, direction, c, map) };
         }
-        self.march_baseline(patch, slip, spin, speed, direction, c, map)
+        self.march_baseline(kinematics, speed, direction, c, map)
     }
 
     /// [`Self::march_baseline`] compiled with AVX2.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    #[allow(clippy::too_many_arguments)]
     fn march_avx2(
         &self,
-        patch: &ContactPatch,
-        slip: &Vector3<f64>,
-        spin: &Vector3<f64>,
+        kinematics: &ContactKinematics,
         speed: f64,
         direction: f64,
         c: &CreepCoefficients,
         map: &mut impl FnMut(&MapCell),
     ) -> (TractionResult, Creep) {
-        self.march_baseline(patch, slip, spin, speed, direction, c, map)
+        self.march_baseline(kinematics, speed, direction, c, map)
     }
 
     /// The march itself, inlined into both builds of [`Self::march`].
     #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
     fn march_baseline(
         &self,
-        patch: &ContactPatch,
-        slip: &Vector3<f64>,
-        spin: &Vector3<f64>,
+        kinematics: &ContactKinematics,
         speed: f64,
         direction: f64,
         c: &CreepCoefficients,
         map: &mut impl FnMut(&MapCell),
     ) -> (TractionResult, Creep) {
+        let ContactKinematics {
+            patch,
+            slip,
+            relative_spin: spin,
+            ..
+        } = kinematics;
         let n = patch.normal;
         let ex = direction * patch.rolling_direction;
         let ey = n.cross(&ex);

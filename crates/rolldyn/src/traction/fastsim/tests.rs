@@ -1,4 +1,5 @@
 use super::*;
+use crate::traction::ContactConditions;
 
 fn patch() -> ContactPatch {
     ContactPatch {
@@ -25,7 +26,15 @@ fn rolling_reversal_is_continuous() {
     let m = Fastsim::new(0.1, 80e9, 0.3);
     let p = patch();
     let slip = Vector3::new(0.3e-3, 0.0, 0.0);
-    let at = |u: f64| m.evaluate(&p, &Vector3::zeros(), &slip, &Vector3::zeros(), &rolling(u));
+    let at = |u: f64| {
+        m.evaluate(&ContactKinematics {
+            patch: p,
+            ball_centre: Vector3::zeros(),
+            slip,
+            relative_spin: Vector3::zeros(),
+            conditions: rolling(u),
+        })
+    };
     let mut last = at(-2e-3);
     for k in 1..=400 {
         let u = -2e-3 + k as f64 * 1e-5;
@@ -62,7 +71,13 @@ fn default_grid_follows_spin() {
         let ey = p.normal.cross(&ex);
         let slip = (xi * ex + eta * ey) * 10.0;
         let spin = p.normal * phi * 10.0;
-        let r = m.evaluate(&p, &Vector3::zeros(), &slip, &spin, &rolling(10.0));
+        let r = m.evaluate(&ContactKinematics {
+            patch: p,
+            ball_centre: Vector3::zeros(),
+            slip,
+            relative_spin: spin,
+            conditions: rolling(10.0),
+        });
         Vector2::new(r.force.dot(&ex), r.force.dot(&ey))
     };
     let coarse = Fastsim::new(0.1, 76.923e9, 0.3);
@@ -92,13 +107,13 @@ fn default_grid_follows_spin() {
 fn no_load_no_traction() {
     let mut p = patch();
     p.load = 0.0;
-    let r = Fastsim::new(0.1, 80e9, 0.3).evaluate(
-        &p,
-        &Vector3::zeros(),
-        &Vector3::new(1.0, 0.0, 0.0),
-        &Vector3::zeros(),
-        &rolling(1.0),
-    );
+    let r = Fastsim::new(0.1, 80e9, 0.3).evaluate(&ContactKinematics {
+        patch: p,
+        ball_centre: Vector3::zeros(),
+        slip: Vector3::new(1.0, 0.0, 0.0),
+        relative_spin: Vector3::zeros(),
+        conditions: rolling(1.0),
+    });
     assert_eq!(r.force, Vector3::zeros());
 }
 
@@ -151,12 +166,18 @@ fn avx2_march_is_bit_identical_to_baseline() {
             let f = k as f64;
             let slip = Vector3::new(1e-8 * 10f64.powf(0.15 * f), 3e-8 * (0.7 * f).sin(), 0.0);
             let spin = Vector3::new(0.0, 0.0, 1e-3 * 10f64.powf(0.1 * f) * (0.3 * f).cos());
+            let kinematics = ContactKinematics {
+                patch: p,
+                ball_centre: Vector3::zeros(),
+                slip,
+                relative_spin: spin,
+                conditions: ContactConditions::default(),
+            };
             for direction in [1.0, -1.0] {
-                let baseline = m.march_baseline(&p, &slip, &spin, 2.0, direction, &c, &mut |_| {});
+                let baseline = m.march_baseline(&kinematics, 2.0, direction, &c, &mut |_| {});
                 // SAFETY: AVX2 was detected above.
                 #[allow(unsafe_code)]
-                let avx2 =
-                    unsafe { m.march_avx2(&p, &slip, &spin, 2.0, direction, &c, &mut |_| {}) };
+                let avx2 = unsafe { m.march_avx2(&kinematics, 2.0, direction, &c, &mut |_| {}) };
                 assert_eq!(bits(&baseline), bits(&avx2), "strips {strips}, case {k}");
                 compared += 1;
                 least_stick = least_stick.min(baseline.1.stick_fraction);

@@ -57,7 +57,7 @@ pub mod layout;
 mod tests;
 
 use super::fastsim::{Creep, blend_flow_directions};
-use super::{ContactConditions, ContactPatch, TractionResult};
+use super::{ContactKinematics, TractionResult};
 use crate::error::{InvalidParameter, require_positive};
 use layout::{Direction, Layout, Normalisation, OUTPUTS, SLOPES};
 use nalgebra::Vector3;
@@ -358,17 +358,15 @@ impl ExactTable {
         require_positive("regularisation_speed", self.regularisation_speed)
     }
 
-    /// Tractions of one contact, as [`super::Fastsim::evaluate`]: `slip_at_point`
-    /// is the sliding velocity of ball material relative to ring material
-    /// at P, `relative_spin` ω_b − ω_ring. Allocation-free.
-    pub fn evaluate(
-        &self,
-        patch: &ContactPatch,
-        ball_centre: &Vector3<f64>,
-        slip_at_point: &Vector3<f64>,
-        relative_spin: &Vector3<f64>,
-        conditions: &ContactConditions,
-    ) -> TractionResult {
+    /// Tractions of one contact in motion `kinematics`, as
+    /// [`super::Fastsim::evaluate`]. Allocation-free.
+    pub fn evaluate(&self, kinematics: &ContactKinematics) -> TractionResult {
+        let ContactKinematics {
+            patch,
+            ball_centre,
+            conditions,
+            ..
+        } = kinematics;
         if patch.load <= 0.0 || self.friction <= 0.0 {
             return TractionResult::default();
         }
@@ -388,34 +386,27 @@ impl ExactTable {
         let mut out = blend_flow_directions(
             conditions.rolling_velocity,
             self.regularisation_speed,
-            |direction, _| {
-                self.one_direction(
-                    table,
-                    &normalisation,
-                    patch,
-                    slip_at_point,
-                    relative_spin,
-                    speed,
-                    direction,
-                )
-            },
+            |direction, _| self.one_direction(table, &normalisation, kinematics, speed, direction),
         );
         out.moment = out.couple + (patch.point - ball_centre).cross(&out.force);
         out
     }
 
     /// The contact with the material flowing along `direction` · e_roll.
-    #[allow(clippy::too_many_arguments)]
     fn one_direction(
         &self,
         table: &Table,
         normalisation: &Normalisation,
-        patch: &ContactPatch,
-        slip: &Vector3<f64>,
-        spin: &Vector3<f64>,
+        kinematics: &ContactKinematics,
         speed: f64,
         direction: f64,
     ) -> (TractionResult, Creep) {
+        let ContactKinematics {
+            patch,
+            slip,
+            relative_spin: spin,
+            ..
+        } = kinematics;
         let n = patch.normal;
         let ex = direction * patch.rolling_direction;
         let ey = n.cross(&ex);

@@ -2,6 +2,7 @@ use super::layout::{Direction, Layout, Normalisation};
 use super::*;
 use crate::traction::Fastsim;
 use crate::traction::exact::ExactRolling;
+use crate::traction::{ContactConditions, ContactPatch};
 
 /// The embedded table's grid.
 const LAYOUT: Layout = Layout::EMBEDDED;
@@ -118,7 +119,13 @@ fn linear_theory_and_full_sliding() {
         let cc2 = p.semi_minor * p.semi_major;
         let at = |creep: [f64; 4]| {
             let (slip, spin) = kinematics(&p, creep);
-            law.evaluate(&p, &Vector3::zeros(), &slip, &spin, &rolling())
+            law.evaluate(&ContactKinematics {
+                patch: p,
+                ball_centre: Vector3::zeros(),
+                slip,
+                relative_spin: spin,
+                conditions: rolling(),
+            })
         };
         let xi = 1e-7;
         let fx = at([xi, 0.0, 0.0, 0.0]).force.x;
@@ -172,7 +179,13 @@ fn law_scales_the_table_and_closes_the_power() {
     let p = patch(0.122, 11e-3);
     let creep = [1e-3, -5e-4, 20.0, 0.02 / (2.2609e-3f64).powi(2)];
     let (slip, spin) = kinematics(&p, creep);
-    let out = law.evaluate(&p, &Vector3::new(0.0, 0.0, -1e-2), &slip, &spin, &rolling());
+    let out = law.evaluate(&ContactKinematics {
+        patch: p,
+        ball_centre: Vector3::new(0.0, 0.0, -1e-2),
+        slip,
+        relative_spin: spin,
+        conditions: rolling(),
+    });
     let n = Normalisation::new(p.semi_minor, p.semi_major, SHEAR_MODULUS, 0.28, 2088.0, 0.1);
     let b2 = p.semi_major * p.semi_major;
     let mean_depth = b2 / (10.0 * p.deformed_radius);
@@ -241,8 +254,20 @@ fn closer_to_the_exact_theory_than_fastsim() {
         let (force, moment) = (2.0 * f.force - c.force, 2.0 * f.couple.z - c.couple.z);
         let mu_q = mu * p.load;
         let laws = [
-            table.evaluate(&p, &centre, &slip, &spin, &rolling()),
-            fastsim.evaluate(&p, &centre, &slip, &spin, &rolling()),
+            table.evaluate(&ContactKinematics {
+                patch: p,
+                ball_centre: centre,
+                slip,
+                relative_spin: spin,
+                conditions: rolling(),
+            }),
+            fastsim.evaluate(&ContactKinematics {
+                patch: p,
+                ball_centre: centre,
+                slip,
+                relative_spin: spin,
+                conditions: rolling(),
+            }),
         ];
         for (k, r) in laws.iter().enumerate() {
             let error = ((r.force - force).norm() / mu_q)
