@@ -168,7 +168,7 @@ pub enum TractionBound {
 /// it saturates at μQ:
 /// ```
 /// use nalgebra::Vector3;
-/// use rolldyn::traction::{ContactConditions, ContactPatch, Fastsim};
+/// use rolldyn::traction::{ContactConditions, ContactKinematics, ContactPatch, Fastsim};
 ///
 /// let law = Fastsim::new(0.1, 76.9e9, 0.3);
 /// let patch = ContactPatch {
@@ -184,7 +184,14 @@ pub enum TractionBound {
 /// let rolling = ContactConditions { film: 0.0, entrainment_speed: speed, rolling_velocity: speed };
 /// let force = |creepage: f64| {
 ///     let slip = Vector3::new(creepage * speed, 0.0, 0.0);
-///     law.evaluate(&patch, &Vector3::new(0.0, 0.0, -0.02), &slip, &Vector3::zeros(), &rolling).force
+///     let kinematics = ContactKinematics {
+///         patch,
+///         ball_centre: Vector3::new(0.0, 0.0, -0.02),
+///         slip,
+///         relative_spin: Vector3::zeros(),
+///         conditions: rolling,
+///     };
+///     law.evaluate(&kinematics).force
 /// };
 /// // Linear theory: F_x = −G c² C₁₁ ξ with c² = a b.
 /// let creepage = 1e-6;

@@ -294,7 +294,7 @@ impl Table {
 /// and a spin moment against the spin:
 /// ```
 /// use nalgebra::Vector3;
-/// use rolldyn::traction::{ContactConditions, ContactPatch, ExactTable};
+/// use rolldyn::traction::{ContactConditions, ContactKinematics, ContactPatch, ExactTable};
 ///
 /// let law = ExactTable::new(0.1, 76.9e9, 0.3);
 /// let patch = ContactPatch {
@@ -310,8 +310,13 @@ impl Table {
 /// let rolling = ContactConditions { film: 0.0, entrainment_speed: speed, rolling_velocity: speed };
 /// let at = |creepage: f64, spin: f64| {
 ///     let slip = Vector3::new(creepage * speed, 0.0, 0.0);
-///     let spin = Vector3::new(0.0, 0.0, spin * speed);
-///     law.evaluate(&patch, &Vector3::new(0.0, 0.0, -0.02), &slip, &spin, &rolling)
+///     law.evaluate(&ContactKinematics {
+///         patch,
+///         ball_centre: Vector3::new(0.0, 0.0, -0.02),
+///         slip,
+///         relative_spin: Vector3::new(0.0, 0.0, spin * speed),
+///         conditions: rolling,
+///     })
 /// };
 /// // Linear theory: F_x = −G c² C₁₁ ξ with c² = a b.
 /// let c11 = rolldyn::traction::kalker::creep_coefficients(patch.semi_minor, patch.semi_major, 0.3)
