@@ -6,6 +6,7 @@
 //! recorded in docs/performance.md with the machine.
 
 use nalgebra::Vector3;
+use rolldyn::RingKind;
 use rolldyn::contact::table::{ContactTable, RacewayContactModel};
 use rolldyn::contact::{GrooveCircle, HertzModel, RingPose};
 use rolldyn::material::{Material, effective_modulus};
@@ -14,7 +15,6 @@ use rolldyn::traction::{
     ContactConditions, ContactKinematics, ContactPatch, EhlRheology, ExactTable, Fastsim,
     ModifiedCoulomb, TractionGrid, TractionIntegration, TractionModel,
 };
-use rolldyn::{BearingGeometry, Clearance, GeometrySpec, RingKind};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -35,16 +35,7 @@ fn time_per_call(name: &str, calls: usize, mut f: impl FnMut(usize) -> f64) {
 }
 
 fn main() {
-    let g = BearingGeometry::new(&GeometrySpec {
-        ball_diameter: 6.35e-3,
-        ball_count: 22,
-        pitch_diameter: 54e-3,
-        inner_groove_curvature: 3.493 / 6.35,
-        outer_groove_curvature: 3.302 / 6.35,
-        clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
-        preload: false,
-    })
-    .expect("valid geometry");
+    let g = rolldyn::testing::bearing_7008c();
     let steel = Material::STEEL_52100;
     let model = RacewayContactModel::new(
         &g,

@@ -11,7 +11,6 @@ use rolldyn::operating::Loads;
 use rolldyn::quasistatic::films::{FilmInputs, equilibrium_films};
 use rolldyn::quasistatic::modes::natural_modes;
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions, sweep};
-use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -28,16 +27,7 @@ fn median_time(runs: usize, mut f: impl FnMut()) -> f64 {
 }
 
 fn main() {
-    let g = BearingGeometry::new(&GeometrySpec {
-        ball_diameter: 22.23e-3,
-        ball_count: 16,
-        pitch_diameter: 125.26e-3,
-        inner_groove_curvature: 0.5232,
-        outer_groove_curvature: 0.5232,
-        clearance: Clearance::FreeContactAngle(40f64.to_radians()),
-        preload: false,
-    })
-    .expect("7218B geometry");
+    let g = rolldyn::testing::bearing_7218b();
     let steel = Material {
         elastic_modulus: 206e9,
         poisson_ratio: 0.3,

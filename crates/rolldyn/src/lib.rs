@@ -42,6 +42,8 @@ pub mod power;
 pub mod quasistatic;
 pub mod signal;
 pub mod surface;
+#[cfg(any(test, feature = "testing"))]
+pub mod testing;
 pub mod thermal;
 pub mod traction;
 

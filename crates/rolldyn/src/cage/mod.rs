@@ -47,6 +47,39 @@ pub struct CageParameters {
 }
 
 impl CageParameters {
+    /// A cage of `mass` \[kg\] and polar `inertia` \[kg·m²\] whose pockets
+    /// sit at `pitch_radius` \[m\] with diametral `pocket_clearance` \[m\]
+    /// and `pocket_law`; the rest at the case file's defaults
+    /// (docs/case-format.md): cylindrical pockets without squeeze film,
+    /// pocket friction μ = 0.05 (full at 1 mm/s), a whirling cage without
+    /// guide land or unbalance. Change the rest with struct update syntax:
+    /// `CageParameters { whirl: false, ..CageParameters::new(…) }`.
+    pub fn new(
+        mass: f64,
+        inertia: f64,
+        pitch_radius: f64,
+        pocket_clearance: f64,
+        pocket_law: PocketLaw,
+    ) -> Self {
+        Self {
+            mass,
+            inertia,
+            pitch_radius,
+            pocket_clearance,
+            pocket_shape: PocketShape::Cylindrical,
+            pocket_law,
+            pocket_squeeze: None,
+            pocket_friction: ModifiedCoulomb {
+                friction: 0.05,
+                stick_speed: 0.0,
+                full_speed: 1e-3,
+            },
+            whirl: true,
+            guide: None,
+            unbalance: 0.0,
+        }
+    }
+
     /// Checks the cage data.
     pub fn validate(&self) -> Result<(), InvalidParameter> {
         require_positive("cage_mass", self.mass)?;

@@ -252,16 +252,16 @@ mod tests {
     use super::*;
     use crate::contact::HertzModel;
     use crate::dynamics::BearingModel;
-    use crate::dynamics::{CageParameters, DynamicsParameters, PocketLaw, PocketShape};
+    use crate::dynamics::{CageParameters, DynamicsParameters, PocketLaw};
     use crate::integrate::tableau::DOPRI5;
     use crate::integrate::{ExplicitRk, Integrator, StepControl};
     use crate::material::Material;
     use crate::operating::{LoadProfile, Loads, SpeedProfile};
     use crate::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
     use crate::thermal::bearing::Solid;
+    use crate::traction::EhlRheology;
     use crate::traction::TractionModel;
     use crate::traction::ellipse::TractionIntegration;
-    use crate::traction::{EhlRheology, ModifiedCoulomb};
     use crate::{BearingGeometry, Clearance, GeometrySpec};
 
     /// A 30×62×16-like bearing with EHL traction, coupled every 0.1 ms over
@@ -304,24 +304,17 @@ mod tests {
             pressure_model: Default::default(),
         };
         let cage = CageParameters {
-            mass: 6e-3,
-            inertia: 2.8e-6,
-            pitch_radius: 23e-3,
-            pocket_clearance: 0.3e-3,
-            pocket_shape: PocketShape::Cylindrical,
-            pocket_law: PocketLaw::Linear {
-                stiffness: 1e7,
-                damping: 20.0,
-            },
-            unbalance: 0.0,
-            pocket_squeeze: None,
-            pocket_friction: ModifiedCoulomb {
-                friction: 0.05,
-                stick_speed: 0.0,
-                full_speed: 1e-3,
-            },
             whirl: false,
-            guide: None,
+            ..CageParameters::new(
+                6e-3,
+                2.8e-6,
+                23e-3,
+                0.3e-3,
+                PocketLaw::Linear {
+                    stiffness: 1e7,
+                    damping: 20.0,
+                },
+            )
         };
         let params = DynamicsParameters {
             traction: TractionModel::Ehl(EhlRheology {

@@ -437,7 +437,7 @@ pub fn solve_traction_consistent(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cage::{CageParameters, PocketLaw, PocketShape};
+    use crate::cage::{CageParameters, PocketLaw};
     use crate::contact::HertzModel;
     use crate::dynamics::DynamicsParameters;
     use crate::material::Material;
@@ -472,20 +472,18 @@ mod tests {
             full_speed: 1e-3,
         };
         let cage = CageParameters {
-            mass: 0.003,
-            inertia: 2e-6,
-            pitch_radius: 27e-3,
-            pocket_clearance: 0.2e-3,
-            pocket_shape: PocketShape::Cylindrical,
-            pocket_law: PocketLaw::Linear {
-                stiffness: 1e7,
-                damping: 20.0,
-            },
-            unbalance: 0.0,
-            pocket_squeeze: None,
             pocket_friction: friction,
             whirl: false,
-            guide: None,
+            ..CageParameters::new(
+                0.003,
+                2e-6,
+                27e-3,
+                0.2e-3,
+                PocketLaw::Linear {
+                    stiffness: 1e7,
+                    damping: 20.0,
+                },
+            )
         };
         let params = DynamicsParameters {
             traction: TractionModel::ModifiedCoulomb(friction),

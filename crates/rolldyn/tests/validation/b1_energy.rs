@@ -39,24 +39,21 @@ fn model(configure: impl Fn(&mut DynamicsParameters)) -> BearingModel {
         density: 7800.0,
     };
     let cage = CageParameters {
-        mass: 0.01,
-        inertia: 8.2e-7,
-        pitch_radius: 18.005e-3,
-        pocket_clearance: 2e-3,
-        pocket_shape: PocketShape::Cylindrical,
-        pocket_law: PocketLaw::Linear {
-            stiffness: 1e6,
-            damping: 0.0,
-        },
-        unbalance: 0.0,
-        pocket_squeeze: None,
         pocket_friction: ModifiedCoulomb {
             friction: 0.0,
             stick_speed: 0.0,
             full_speed: 1e-3,
         },
-        whirl: true,
-        guide: None,
+        ..CageParameters::new(
+            0.01,
+            8.2e-7,
+            18.005e-3,
+            2e-3,
+            PocketLaw::Linear {
+                stiffness: 1e6,
+                damping: 0.0,
+            },
+        )
     };
     let mut params = DynamicsParameters {
         traction_integration: TractionIntegration::Centre,

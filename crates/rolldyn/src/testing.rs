@@ -1,0 +1,252 @@
+//! Bearings and configurations of the source papers, built from their
+//! printed tables, for tests, benchmarks and examples (feature `testing`;
+//! always in the crate's own tests): the 7008C, 6304 and 7218B geometries,
+//! Shan et al. 2023's and the default case's dynamic configurations, and
+//! the two adaptive integrators the dynamic validation cases run with.
+//! Fixtures of known-valid data: they panic on a bug.
+
+#![allow(clippy::unwrap_used)]
+
+use crate::contact::{HertzModel, NormalForceLaw};
+use crate::dynamics::{CageParameters, DragParameters, DynamicsParameters, PocketLaw};
+use crate::lubrication::Lubricant;
+use crate::material::Material;
+use crate::operating::{LoadProfile, Loads, SpeedProfile};
+use crate::quasistatic::{
+    Conditions, Equilibrium, QuasiStaticSolver, RacewayControl, SolverOptions,
+};
+use crate::traction::{EhlRheology, ModifiedCoulomb, TractionIntegration, TractionModel};
+use crate::{BearingGeometry, Clearance, GeometrySpec};
+
+/// 7008C, Deng et al. 2022 Table 1: d_m 54, D 6.35 mm, Z 22, α₀ 17.7°,
+/// r_i 3.493, r_o 3.302 mm.
+pub fn bearing_7008c() -> BearingGeometry {
+    BearingGeometry::new(&GeometrySpec {
+        ball_diameter: 6.35e-3,
+        ball_count: 22,
+        pitch_diameter: 54e-3,
+        inner_groove_curvature: 3.493 / 6.35,
+        outer_groove_curvature: 3.302 / 6.35,
+        clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
+        preload: false,
+    })
+    .expect("Deng et al. 2022 geometry is valid")
+}
+
+/// 6304, Shan et al. 2023 Table 1: R_i 13.24, R_o 22.77, r_b 4.76 mm, 7 balls.
+/// Groove curvatures are not printed: 0.52 assumed (as the preset).
+pub fn bearing_6304() -> BearingGeometry {
+    BearingGeometry::new(&GeometrySpec {
+        ball_diameter: 9.52e-3,
+        ball_count: 7,
+        pitch_diameter: 0.0,
+        inner_groove_curvature: 0.52,
+        outer_groove_curvature: 0.52,
+        clearance: Clearance::RacewayDiameters {
+            inner: 26.48e-3,
+            outer: 45.54e-3,
+        },
+        preload: false,
+    })
+    .expect("Shan et al. 2023 geometry is valid")
+}
+
+/// 7218B as Harris's 218 angular-contact example: D 22.23 mm, Z 16,
+/// d_m 125.26 mm, f = 0.5232, α₀ 40° (Zhang et al. 2025 Table 2 gives D, Z, α₀, d_i).
+pub fn bearing_7218b() -> BearingGeometry {
+    BearingGeometry::new(&GeometrySpec {
+        ball_diameter: 22.23e-3,
+        ball_count: 16,
+        pitch_diameter: 125.26e-3,
+        inner_groove_curvature: 0.5232,
+        outer_groove_curvature: 0.5232,
+        clearance: Clearance::FreeContactAngle(40f64.to_radians()),
+        preload: false,
+    })
+    .expect("7218B geometry is valid")
+}
+
+/// Shan et al. 2023's steel (Table 1).
+pub fn steel_seed000() -> Material {
+    Material {
+        elastic_modulus: 210e9,
+        poisson_ratio: 0.3,
+        density: 7800.0,
+    }
+}
+
+/// Shan et al. 2023's dynamic configuration (planar, L–N e = 0.9, modified
+/// Coulomb at the contact centre, damped pockets with friction, 8000 rpm,
+/// gravity), with the assumed values of the 6304 preset: μ = 0.1,
+/// v₁ = 10 mm/s, inner ring + shaft 0.5 kg, cage 5 g, pocket clearance
+/// 0.2 mm. `radial_load` acts on the inner ring along z.
+pub fn seed000_dynamics(radial_load: f64) -> DynamicsParameters {
+    let friction = ModifiedCoulomb {
+        friction: 0.1,
+        stick_speed: 0.0,
+        full_speed: 1e-2,
+    };
+    let cage = CageParameters {
+        pocket_friction: friction,
+        ..CageParameters::new(
+            0.005,
+            8.2e-7,
+            18.005e-3,
+            0.2e-3,
+            PocketLaw::Linear {
+                stiffness: 1e7,
+                damping: 20.0,
+            },
+        )
+    };
+    DynamicsParameters {
+        normal_law: NormalForceLaw::LankaraniNikravesh { restitution: 0.9 },
+        traction: TractionModel::ModifiedCoulomb(friction),
+        traction_integration: TractionIntegration::Centre,
+        speed: SpeedProfile::Constant(8000.0 * std::f64::consts::TAU / 60.0),
+        loads: LoadProfile::Constant(Loads {
+            force: [0.0, 0.0, radial_load],
+            moment: [0.0, 0.0],
+        }),
+        gravity: 9.81,
+        planar: true,
+        ..DynamicsParameters::new(0.5, 1e-4, cage)
+    }
+}
+
+/// The default case's dynamic configuration (7008C, 10 000 rpm,
+/// F_x = 200 N, EHL traction τ₀ 5 MPa, Λ_L 0.08 on the 12 × 6 grid, cage
+/// with whirl, inner ring 0.5 kg) with `drag`, and its Jones–Harris start
+/// (outer control).
+pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium) {
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let speed = 10_000.0 * std::f64::consts::TAU / 60.0;
+    let loads = Loads {
+        force: [200.0, 0.0, 0.0],
+        moment: [0.0; 2],
+    };
+    let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
+    let eq = qs
+        .solve(
+            &Conditions {
+                loads,
+                inner_speed: speed,
+                control: RacewayControl::Outer,
+            },
+            &SolverOptions::default(),
+        )
+        .unwrap();
+    let cage = CageParameters {
+        ..CageParameters::new(
+            0.0031,
+            2.4e-6,
+            27e-3,
+            0.175e-3,
+            PocketLaw::Linear {
+                stiffness: 1e7,
+                damping: 20.0,
+            },
+        )
+    };
+    let params = DynamicsParameters {
+        traction: TractionModel::Ehl(EhlRheology {
+            eyring_stress: 5e6,
+            limiting_shear_coefficient: 0.08,
+            lubricant: Lubricant {
+                viscosity: 0.0467,
+                pressure_viscosity: 2.2e-8,
+                pressure_model: Default::default(),
+            },
+        }),
+        traction_integration: TractionIntegration::Grid {
+            across: 12,
+            along: 6,
+        },
+        speed: SpeedProfile::Constant(speed),
+        loads: LoadProfile::Constant(loads),
+        drag,
+        ..DynamicsParameters::new(0.5, 1e-4, cage)
+    };
+    (params, eq)
+}
+
+/// Ball and cage drag of the 7008C cases: effective density of the oil
+/// (860 kg/m³, Deng et al. 2022 Table 1's ρ_e), C_D 0.5, spin drag 0.05, cage
+/// viscous 1e-6 and windage 1e-9 (assumed).
+pub fn drag_7008c() -> DragParameters {
+    DragParameters {
+        effective_density: 860.0,
+        ball_drag_coefficient: 0.5,
+        ball_spin_drag_coefficient: 0.05,
+        cage_viscous: 1e-6,
+        cage_windage: 1e-9,
+    }
+}
+
+/// The 7008C cage's outer-ring guide land, Deng et al. 2022 Table 1: land radius
+/// d_co/2 = 28.665 mm, width G 10.1 mm, radial clearance C_g/2 = 0.175 mm,
+/// η₀ 0.0467 Pa·s; ε capped at 0.95 with a stop of 1e8 N/m.
+pub fn guide_land_7008c() -> crate::dynamics::GuideLand {
+    crate::dynamics::GuideLand {
+        ring: crate::RingKind::Outer,
+        land_radius: 57.33e-3 / 2.0,
+        width: 10.1e-3,
+        radial_clearance: 0.35e-3 / 2.0,
+        viscosity: 0.0467,
+        max_eccentricity: 0.95,
+        stop_stiffness: 1e8,
+    }
+}
+
+/// The adaptive integrators the dynamic validation cases run with: the
+/// explicit DOPRI5 and the stiff ROS34PW2 (both must pass).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// Dormand–Prince 5(4).
+    Dopri5,
+    /// Rosenbrock–W 3(2).
+    Ros34pw2,
+}
+
+/// Both methods, explicit first.
+pub const METHODS: [Method; 2] = [Method::Dopri5, Method::Ros34pw2];
+
+/// An adaptive integrator of `method` for `model` from (0, `y0`).
+pub fn integrator(
+    method: Method,
+    model: &crate::dynamics::BearingModel,
+    y0: &[f64],
+    relative_tolerance: f64,
+    max_step: f64,
+) -> crate::integrate::Solver {
+    use crate::integrate::{ExplicitRk, ROS34PW2, Rosenbrock, Solver, StepControl};
+    match method {
+        Method::Dopri5 => Solver::Explicit(Box::new(
+            ExplicitRk::new(
+                &crate::integrate::tableau::DOPRI5,
+                StepControl::Adaptive {
+                    relative_tolerance,
+                    max_step,
+                    initial_step: None,
+                },
+                model,
+                0.0,
+                y0,
+            )
+            .unwrap(),
+        )),
+        Method::Ros34pw2 => Solver::Rosenbrock(Box::new(
+            Rosenbrock::new(
+                &ROS34PW2,
+                relative_tolerance,
+                max_step,
+                None,
+                model,
+                0.0,
+                y0,
+            )
+            .unwrap(),
+        )),
+    }
+}
