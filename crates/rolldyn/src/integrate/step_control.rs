@@ -1,8 +1,8 @@
 //! What both adaptive integrators share: their counters, why an
 //! integration stops, the PI step-size controller (Gustafsson;
 //! Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4) and the loop that
-//! attempts, accepts and rejects a step ([`take_step`]); each method
-//! supplies only its attempt ([`StepMethod`]).
+//! attempts, accepts and rejects a step (`take_step`); each method
+//! supplies only its attempt (`StepMethod`).
 
 use super::{OdeSystem, Tolerances};
 

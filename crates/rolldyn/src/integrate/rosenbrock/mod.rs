@@ -609,7 +609,7 @@ impl Integrator for Rosenbrock {
         &self.y
     }
 
-    /// Takes one accepted step, not beyond `t_limit` ([`take_step`]).
+    /// Takes one accepted step, not beyond `t_limit` (`step_control::take_step`).
     /// Calls the system's `accept_step` hook once, after acceptance.
     fn step<S: OdeSystem>(&mut self, system: &mut S, t_limit: f64) -> Result<(), IntegrationError> {
         take_step(self, system, t_limit)
