@@ -139,59 +139,163 @@ fn parse<A: clap::Args>(name: &str, argv: Vec<String>) -> PyResult<A> {
     .map_err(|e| CaseError::new_err(e.render().to_string().trim().to_string()))
 }
 
-/// `rolldyn NAME FLAGS… --json` for `contact`, `power`, `thermal` and
-/// `traction` on the given case, and `spectrum` (whose run directory is
-/// among the flags): the JSON it prints.
+/// A command's arguments at the CLI's defaults, from its required flags
+/// (clap: the same defaults as on the command line); the typed functions
+/// below then set what Python gave.
+fn defaults<A: clap::Args>(name: &str, required: &[&str]) -> PyResult<A> {
+    parse(name, required.iter().map(|s| s.to_string()).collect())
+}
+
+/// The case of a typed function: its source, text and overrides.
+fn case_args(source: String, text: Option<String>, sets: Vec<String>) -> CaseArgs {
+    CaseArgs {
+        case: None,
+        overrides: overrides(sets),
+        given: Some((source, text)),
+    }
+}
+
+/// `rolldyn contact --json`.
 #[pyfunction]
-#[pyo3(signature = (name, source, text, sets, argv))]
-fn command(
+#[pyo3(signature = (source, text, sets, load, angle=None, entrainment_speed=None, radii=None, ball_on_flat=None, inlet_distance_ratio=None))]
+#[allow(clippy::too_many_arguments)]
+fn contact(
     py: Python<'_>,
-    name: &str,
     source: String,
     text: Option<String>,
     sets: Vec<String>,
-    argv: Vec<String>,
+    load: String,
+    angle: Option<String>,
+    entrainment_speed: Option<String>,
+    radii: Option<String>,
+    ball_on_flat: Option<String>,
+    inlet_distance_ratio: Option<f64>,
 ) -> PyResult<String> {
-    let case_args = |mut case: CaseArgs| {
-        case.given = Some((source.clone(), text.clone()));
-        case.overrides.set = sets.clone();
-        case
+    let mut args: ContactArgs = defaults("contact", &["--load", &load])?;
+    args.case = case_args(source, text, sets);
+    args.angle = angle;
+    args.entrainment_speed = entrainment_speed;
+    args.radii = radii;
+    args.ball_on_flat = ball_on_flat;
+    args.inlet_distance_ratio = inlet_distance_ratio;
+    py.detach(|| {
+        let (_, case) = args.case.load()?;
+        evaluate(&args, &case).and_then(|r| json_value(&r))
+    })
+    .map_err(to_py)
+}
+
+/// `rolldyn power --json`.
+#[pyfunction]
+#[pyo3(signature = (source, text, sets))]
+fn power_report(
+    py: Python<'_>,
+    source: String,
+    text: Option<String>,
+    sets: Vec<String>,
+) -> PyResult<String> {
+    let args = PowerArgs {
+        case: case_args(source, text, sets),
+        json: true,
     };
-    let output = match name {
-        "contact" => {
-            let mut args: ContactArgs = parse(name, argv)?;
-            args.case = case_args(args.case);
-            py.detach(|| {
-                let (_, case) = args.case.load()?;
-                evaluate(&args, &case).and_then(|r| json_value(&r))
-            })
-        }
-        "power" => {
-            let mut args: PowerArgs = parse(name, argv)?;
-            args.case = case_args(args.case);
-            py.detach(|| power::report(&args).and_then(|r| json_value(&r)))
-        }
-        "thermal" => {
-            let mut args: ThermalArgs = parse(name, argv)?;
-            args.case = case_args(args.case);
-            py.detach(|| thermal::report(&args).and_then(|r| json_value(&r)))
-        }
-        "traction" => {
-            let mut args: TractionArgs = parse(name, argv)?;
-            args.case = case_args(args.case);
-            py.detach(|| traction::report(&args).and_then(|r| json_value(&r)))
-        }
-        "spectrum" => {
-            let args: SpectrumArgs = parse(name, argv)?;
-            py.detach(|| spectrum::report(&args).and_then(|r| json_value(&r)))
-        }
-        other => {
-            return Err(CaseError::new_err(format!(
-                "command {other}: expected contact, power, thermal, traction or spectrum"
-            )));
-        }
-    };
-    output.map_err(to_py)
+    py.detach(|| power::report(&args).and_then(|r| json_value(&r)))
+        .map_err(to_py)
+}
+
+/// `rolldyn thermal --json` (`--transient`, `--steps`: None keeps the
+/// CLI's default).
+#[pyfunction]
+#[pyo3(signature = (source, text, sets, transient=None, steps=None))]
+fn thermal_report(
+    py: Python<'_>,
+    source: String,
+    text: Option<String>,
+    sets: Vec<String>,
+    transient: Option<String>,
+    steps: Option<usize>,
+) -> PyResult<String> {
+    let mut args: ThermalArgs = defaults("thermal", &[])?;
+    args.case = case_args(source, text, sets);
+    args.transient = transient;
+    args.steps = steps.unwrap_or(args.steps);
+    py.detach(|| thermal::report(&args).and_then(|r| json_value(&r)))
+        .map_err(to_py)
+}
+
+/// `rolldyn traction --json`: every flag of the command as a keyword
+/// (None keeps the CLI's default).
+#[pyfunction]
+#[pyo3(signature = (source, text, sets, rolling_speed, ring=None, load=None, approach=None, angle=None, creepages=None, slip=None, spin=None, semi_axes=None, shear_modulus=None, poisson_ratio=None, friction=None, method=None, cells=None, map=None))]
+#[allow(clippy::too_many_arguments)]
+fn traction_report(
+    py: Python<'_>,
+    source: String,
+    text: Option<String>,
+    sets: Vec<String>,
+    rolling_speed: String,
+    ring: Option<String>,
+    load: Option<String>,
+    approach: Option<String>,
+    angle: Option<String>,
+    creepages: Option<String>,
+    slip: Option<String>,
+    spin: Option<String>,
+    semi_axes: Option<String>,
+    shear_modulus: Option<String>,
+    poisson_ratio: Option<f64>,
+    friction: Option<f64>,
+    method: Option<String>,
+    cells: Option<String>,
+    map: Option<String>,
+) -> PyResult<String> {
+    let mut args: TractionArgs = defaults("traction", &["--rolling-speed", &rolling_speed])?;
+    args.case = case_args(source, text, sets);
+    args.ring = ring.unwrap_or(args.ring);
+    args.method = method.unwrap_or(args.method);
+    args.load = load;
+    args.approach = approach;
+    args.angle = angle;
+    args.creepages = creepages;
+    args.slip = slip;
+    args.spin = spin;
+    args.semi_axes = semi_axes;
+    args.shear_modulus = shear_modulus;
+    args.poisson_ratio = poisson_ratio;
+    args.friction = friction;
+    args.cells = cells;
+    args.map = map;
+    py.detach(|| traction::report(&args).and_then(|r| json_value(&r)))
+        .map_err(to_py)
+}
+
+/// `rolldyn spectrum DIR --json` (None keeps the CLI's default).
+#[pyfunction]
+#[pyo3(signature = (directory, channel, kind=None, window=None, segment=None, overlap=None, band=None, start=None, harmonics=None, peaks=None))]
+#[allow(clippy::too_many_arguments)]
+fn spectrum_report(
+    py: Python<'_>,
+    directory: String,
+    channel: String,
+    kind: Option<String>,
+    window: Option<String>,
+    segment: Option<usize>,
+    overlap: Option<f64>,
+    band: Option<String>,
+    start: Option<f64>,
+    harmonics: Option<usize>,
+    peaks: Option<usize>,
+) -> PyResult<String> {
+    let mut args: SpectrumArgs = defaults("spectrum", &[&directory, "--channel", &channel])?;
+    args.kind = kind.unwrap_or(args.kind);
+    args.window = window.unwrap_or(args.window);
+    args.segment = segment;
+    args.overlap = overlap.unwrap_or(args.overlap);
+    args.band = band;
+    args.from = start;
+    args.harmonics = harmonics.unwrap_or(args.harmonics);
+    args.peaks = peaks.unwrap_or(args.peaks);
+    py.detach(|| spectrum::report(&args).and_then(|r| json_value(&r)))
+        .map_err(to_py)
 }
 
 fn json_value<T: serde::Serialize>(value: &T) -> Result<String, Failure> {
@@ -444,7 +548,11 @@ fn _rolldyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(preset_text, m)?)?;
     m.add_function(wrap_pyfunction!(check, m)?)?;
     m.add_function(wrap_pyfunction!(frequencies, m)?)?;
-    m.add_function(wrap_pyfunction!(command, m)?)?;
+    m.add_function(wrap_pyfunction!(contact, m)?)?;
+    m.add_function(wrap_pyfunction!(power_report, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal_report, m)?)?;
+    m.add_function(wrap_pyfunction!(traction_report, m)?)?;
+    m.add_function(wrap_pyfunction!(spectrum_report, m)?)?;
     m.add_function(wrap_pyfunction!(quasistatic_solve, m)?)?;
     m.add_function(wrap_pyfunction!(quasistatic_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;

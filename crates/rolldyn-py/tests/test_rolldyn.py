@@ -128,6 +128,36 @@ def test_quasistatic_equals_the_cli():
         rolldyn.quasistatic(case, control="sideways")
 
 
+def test_reports_are_typed_objects():
+    """Reports have the CLI's keys as attributes: vectors and matrices as
+    NumPy arrays, rows as a Table with NumPy columns, the same numbers."""
+    qs = rolldyn.quasistatic(rolldyn.Case.default())
+    assert isinstance(qs, rolldyn.QuasiStaticResult)
+    assert qs.cage_speed_rpm == qs["cage_speed_rpm"]
+    k = qs.stiffness_matrix
+    assert isinstance(k, np.ndarray) and k.shape == (5, 5)
+    assert k[0, 0] == qs["stiffness_matrix"][0][0]
+    assert qs.displacement[0] == qs["axial_displacement_m"]
+    balls = qs.balls
+    assert isinstance(balls, rolldyn.Table) and len(balls) == 22
+    loads = balls.load_inner_n
+    assert isinstance(loads, np.ndarray) and loads.shape == (22,)
+    assert loads[3] == qs["balls"][3]["load_inner_n"] == balls[3].load_inner_n
+    assert "load_outer_n" in balls.columns and "load_outer_n" in dir(balls)
+    assert qs.rating_life.basic_rating_life_h == qs["rating_life"]["basic_rating_life_h"]
+    # None (no value) is NaN in a column, None as an attribute.
+    assert qs.rating_life.contamination_factor is None
+    with pytest.raises(AttributeError, match="no 'nope'"):
+        qs.nope
+    with pytest.raises(AttributeError, match="read-only"):
+        qs.cage_speed_rpm = 1.0
+    again = pickle.loads(pickle.dumps(qs))
+    assert type(again) is rolldyn.QuasiStaticResult and again == qs
+    assert isinstance(rolldyn.power(), rolldyn.PowerResult)
+    f = rolldyn.frequencies()
+    assert isinstance(f, rolldyn.Frequencies) and f == f.to_dict()
+
+
 def test_bearing_set_equals_the_cli(tmp_path):
     case = rolldyn.Case.load(REPO / "examples" / "spindle_pair" / "case.toml")
     path = str(REPO / "examples" / "spindle_pair" / "case.toml")
@@ -358,9 +388,12 @@ def test_traction_equals_the_cli(tmp_path):
                         "--creepages", "1e-3,0,5", "--map", str(tmp_path / "cli.csv"))
     assert got == expected
     assert (tmp_path / "py.csv").read_text() == (tmp_path / "cli.csv").read_text()
-    # Flag errors are the CLI's (clap) messages.
-    with pytest.raises(rolldyn.CaseError, match="--no-such-flag"):
+    # The keywords are the CLI's flags: an unknown one is a TypeError.
+    with pytest.raises(TypeError, match="no_such_flag"):
         rolldyn.traction(case, no_such_flag=1, **flags)
+    # Bad values get the CLI's message.
+    with pytest.raises(rolldyn.CaseError, match="--rolling-speed"):
+        rolldyn.traction(case, **{**flags, "rolling_speed": "fast"})
 
 
 

@@ -1,5 +1,5 @@
 """Type stubs of the native module ``rolldyn._rolldyn`` (the Rust engine
-behind the Python API in ``rolldyn/__init__.py``). Every function takes a
+behind the Python API in ``rolldyn/_api.py``). Every function takes a
 case as ``(source, text, sets)``: its source name, its TOML text (None:
 the built-in default case or the file named by ``source``) and its
 ``--set key=value`` overrides. Reports come back as the CLI's JSON text
@@ -19,7 +19,57 @@ def preset_names() -> list[tuple[str, str]]: ...
 def preset_text(name: str) -> str: ...
 def check(source: str, text: Optional[str], sets: list[str]) -> str: ...
 def frequencies(source: str, text: Optional[str], sets: list[str], angle: Optional[str]) -> str: ...
-def command(name: str, source: str, text: Optional[str], sets: list[str], argv: list[str]) -> str: ...
+def contact(
+    source: str,
+    text: Optional[str],
+    sets: list[str],
+    load: str,
+    angle: Optional[str] = None,
+    entrainment_speed: Optional[str] = None,
+    radii: Optional[str] = None,
+    ball_on_flat: Optional[str] = None,
+    inlet_distance_ratio: Optional[float] = None,
+) -> str: ...
+def power_report(source: str, text: Optional[str], sets: list[str]) -> str: ...
+def thermal_report(
+    source: str,
+    text: Optional[str],
+    sets: list[str],
+    transient: Optional[str] = None,
+    steps: Optional[int] = None,
+) -> str: ...
+def traction_report(
+    source: str,
+    text: Optional[str],
+    sets: list[str],
+    rolling_speed: str,
+    ring: Optional[str] = None,
+    load: Optional[str] = None,
+    approach: Optional[str] = None,
+    angle: Optional[str] = None,
+    creepages: Optional[str] = None,
+    slip: Optional[str] = None,
+    spin: Optional[str] = None,
+    semi_axes: Optional[str] = None,
+    shear_modulus: Optional[str] = None,
+    poisson_ratio: Optional[float] = None,
+    friction: Optional[float] = None,
+    method: Optional[str] = None,
+    cells: Optional[str] = None,
+    map: Optional[str] = None,
+) -> str: ...
+def spectrum_report(
+    directory: str,
+    channel: str,
+    kind: Optional[str] = None,
+    window: Optional[str] = None,
+    segment: Optional[int] = None,
+    overlap: Optional[float] = None,
+    band: Optional[str] = None,
+    start: Optional[float] = None,
+    harmonics: Optional[int] = None,
+    peaks: Optional[int] = None,
+) -> str: ...
 def quasistatic_solve(source: str, text: Optional[str], sets: list[str], control: Optional[str]) -> str: ...
 def quasistatic_sweep(
     source: str, text: Optional[str], sets: list[str], sweeps: list[str], control: Optional[str]
