@@ -122,6 +122,8 @@ pub struct Case {
     pub start: StartChoice,
     /// Drag of the air–oil mixture.
     pub drag: DragParameters,
+    /// Friction of contact seals (None: an open bearing).
+    pub seals: Option<rolldyn::dynamics::SealFriction>,
     /// Raceway and ball surfaces (waviness, spalls).
     pub surface: rolldyn::surface::SurfaceModel,
     /// Simulated time \[s\], if given.
@@ -376,6 +378,7 @@ impl Case {
         )?
         .unwrap_or(0.0);
         let drag = dynamics::drag(&raw.drag)?;
+        let seals = dynamics::seals(raw.seals.as_ref())?;
         let surface = surface::surface(
             &raw.surface,
             bearing.geometry.ball_count,
@@ -413,6 +416,7 @@ impl Case {
             time_step: solver.time_step,
             start: solver.start,
             drag,
+            seals,
             surface,
             duration: solver.duration,
             relative_tolerance: solver.relative_tolerance,

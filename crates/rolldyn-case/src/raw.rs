@@ -43,6 +43,8 @@ pub struct RawCase {
     /// Drag of the air–oil mixture on balls and cage (dynamic engine).
     #[serde(default)]
     pub drag: RawDrag,
+    /// Friction of contact seals (dynamic engine; absent: an open bearing).
+    pub seals: Option<RawSeals>,
     /// Materials of balls and rings.
     #[serde(default)]
     pub materials: RawMaterials,
@@ -194,6 +196,16 @@ pub struct RawDrag {
     pub cage_viscous: Option<Quantity<RotationalDamping>>,
     /// Cage windage drag c₂ (torque per squared angular speed).
     pub cage_windage: Option<Quantity<WindageCoefficient>>,
+}
+
+/// Contact seals rubbing on the inner ring (docs/dynamics.md, "Seals").
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawSeals {
+    /// Friction moment of all the bearing's seals together (both sides).
+    pub friction_torque: Option<Quantity<Moment>>,
+    /// Speed through which the moment turns with the rotation (default 1 rpm).
+    pub transition_speed: Option<Quantity<AngularSpeed>>,
 }
 
 /// The inner ring as the dynamic engine sees it (ring plus shaft).

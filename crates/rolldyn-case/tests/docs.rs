@@ -65,6 +65,7 @@ fn every_schema_key_is_documented() {
         "inner_ring",
         "outer_ring",
         "drag",
+        "seals",
         "materials",
         "lubricant",
         "operating",

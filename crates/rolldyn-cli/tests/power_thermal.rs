@@ -38,7 +38,7 @@ fn run_reports_power_by_component() {
         "{sum} W vs {exact} W"
     );
     let parts = s["mean_power_loss_by_component_w"].as_object().unwrap();
-    assert_eq!(parts.len(), 18, "{parts:?}");
+    assert_eq!(parts.len(), 19, "{parts:?}");
     for ring in ["inner", "outer"] {
         for m in [
             "rolling_sliding",
@@ -67,6 +67,68 @@ fn run_reports_power_by_component() {
         assert!(series.column(k).is_some(), "{k}");
     }
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Contact seals (`[seals]`): their moment acts on the drive only, so the
+/// motion is the open bearing's (to the step control's tolerance: the
+/// energy control sees more energy turned over), the friction torque grows
+/// by the seals' moment M_s ω/√(ω² + ω₀²) and their power is that moment
+/// times the ring speed, in the energy balance.
+#[test]
+fn seals_add_their_moment_to_the_drive() {
+    let run = |name: &str, sets: &[&str]| {
+        let dir = temp_dir(name);
+        let d = dir.to_string_lossy().into_owned();
+        let mut args = vec!["run", "--duration", "3 ms", "-o", &d];
+        for s in sets {
+            args.extend(["--set", s]);
+        }
+        let o = rolldyn(&args, None);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let s: Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
+                .unwrap();
+        let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
+        std::fs::remove_dir_all(&dir).ok();
+        (s, series)
+    };
+    let (open, open_series) = run("seals-open", &[]);
+    let (sealed, series) = run("seals", &["seals.friction_torque=0.05 N.m"]);
+    let column = |t: &rolldyn_io::TimeSeries, k: &str| t.column(k).unwrap().to_vec();
+    let f = |s: &Value, k: &str| s[k].as_f64().unwrap();
+    let cage = |s: &Value| f(s, "mean_cage_speed_rpm");
+    assert!((cage(&sealed) / cage(&open) - 1.0).abs() < 1e-5);
+    let omega = f(&open, "inner_ring_speed_rpm") * std::f64::consts::TAU / 60.0;
+    let w0 = std::f64::consts::TAU / 60.0;
+    let moment = 0.05 * omega / omega.hypot(w0);
+    let torque = |s: &Value| f(s, "mean_friction_torque_n_m");
+    let added = torque(&sealed) - torque(&open);
+    assert!((added / moment - 1.0).abs() < 0.02, "{added} N·m");
+    for p in column(&series, "power_seals_w") {
+        assert!((p - moment * omega).abs() < 1e-9 * p, "{p}");
+    }
+    assert!(
+        column(&open_series, "power_seals_w")
+            .iter()
+            .all(|&p| p == 0.0)
+    );
+    let seal_power = sealed["mean_power_loss_by_component_w"]["seals"]
+        .as_f64()
+        .unwrap();
+    assert!((seal_power / (moment * omega) - 1.0).abs() < 1e-9);
+    let gained = f(&sealed, "mean_dissipated_power_w") - f(&open, "mean_dissipated_power_w");
+    assert!(
+        (gained / seal_power - 1.0).abs() < 0.02,
+        "{gained} W vs {seal_power} W"
+    );
+    // A [seals] table without its moment is refused, naming the key.
+    let o = rolldyn(&["check", "--set", "seals.transition_speed=2 rpm"], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("seals.friction_torque"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 fn preset(name: &str) -> String {

@@ -2,12 +2,14 @@
 //! inertia (estimated from the ring annulus when not given), cage, pocket
 //! law, guide land, drag, supports and the film supply (docs/model.md §1, §5).
 
-use super::{Case, Invalid, checked, non_negative, positive_number};
-use crate::raw::{CageGuidance, PocketLawChoice, RawDrag};
+use super::{Case, Invalid, checked, non_negative, positive, positive_number};
+use crate::raw::{CageGuidance, PocketLawChoice, RawDrag, RawSeals};
 use rolldyn::RingKind;
 use rolldyn::cage::pocket::hertz_pocket_stiffness;
 use rolldyn::cage::{PocketLaw, PocketSqueeze};
-use rolldyn::dynamics::{CageParameters, DragParameters, DynamicsParameters, GuideLand};
+use rolldyn::dynamics::{
+    CageParameters, DragParameters, DynamicsParameters, GuideLand, SealFriction,
+};
 use rolldyn::operating::LoadProfile;
 use rolldyn::traction::ModifiedCoulomb;
 
@@ -126,6 +128,7 @@ impl Case {
             gravity: if self.gravity { STANDARD_GRAVITY } else { 0.0 },
             planar: self.planar,
             drag: self.drag,
+            seals: self.seals,
             surface: self.surface.clone(),
             film_supply: self
                 .lubricant
@@ -314,4 +317,25 @@ pub(super) fn drag(d: &RawDrag) -> Result<DragParameters, Invalid> {
         cage_viscous: checked("drag.cage_viscous", &d.cage_viscous, non_negative)?.unwrap_or(0.0),
         cage_windage: checked("drag.cage_windage", &d.cage_windage, non_negative)?.unwrap_or(0.0),
     })
+}
+
+/// Checks `[seals]`: the seals' friction moment (needed) and transition
+/// speed (default 1 rpm).
+pub(super) fn seals(raw: Option<&RawSeals>) -> Result<Option<SealFriction>, Invalid> {
+    let Some(raw) = raw else {
+        return Ok(None);
+    };
+    let torque =
+        checked("seals.friction_torque", &raw.friction_torque, non_negative)?.ok_or_else(|| {
+            Invalid::new(
+                "seals.friction_torque",
+                None,
+                "[seals] needs the seals' friction moment, e.g. \"0.05 N.m\" (both seals together)",
+            )
+        })?;
+    let mut seals = SealFriction::new(torque);
+    if let Some(speed) = checked("seals.transition_speed", &raw.transition_speed, positive)? {
+        seals.transition_speed = speed;
+    }
+    Ok(Some(seals))
 }

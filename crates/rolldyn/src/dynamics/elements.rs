@@ -52,6 +52,9 @@ impl Elements {
         require_positive("impact_speed_floor", params.impact_speed_floor)?;
         params.traction.validate()?;
         params.inner_support.validate("inner_ring_support")?;
+        if let Some(seals) = &params.seals {
+            seals.validate()?;
+        }
         if let Some(outer) = &params.outer_ring {
             require_positive("outer_ring_mass", outer.mass)?;
             outer.housing.validate("outer_ring_housing")?;

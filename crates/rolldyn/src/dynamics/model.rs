@@ -298,7 +298,7 @@ impl BearingModel {
         let cage_drag = -(p.drag.cage_viscous * cage_speed
             + p.drag.cage_windage * cage_speed * cage_speed.abs());
         dissipation -= cage_drag * cage_speed;
-        if let Some(d) = sink {
+        if let Some(d) = sink.as_deref_mut() {
             d.cage_drag = -cage_drag * cage_speed;
             // Torque the drive supplies: minus the moment of the bearing's
             // forces on the inner ring about its (tilted) axis.
@@ -314,6 +314,17 @@ impl BearingModel {
         // Drive power: the prescribed spin must supply −ω_i (moment of the
         // contact forces on the ring about its spin axis).
         let spin_axis = inner.omega - inner.omega_frame;
+        if let Some(seals) = &p.seals {
+            // The seals' moment about the ring's axis acts on the
+            // prescribed spin only: the drive supplies what they dissipate.
+            let seal_power = seals.power(inner.spin_speed);
+            external_power += seal_power;
+            dissipation += seal_power;
+            if let Some(d) = sink {
+                d.seals = seal_power;
+                d.drive_torque -= seals.moment(inner.spin_speed);
+            }
+        }
         dy[dw] = -ring_moment.dot(&spin_axis) + external_power;
         dy[dw + 1] = dissipation;
         if l.film_work {

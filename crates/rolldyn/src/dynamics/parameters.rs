@@ -3,6 +3,7 @@
 //! [`DynamicsParameters::new`] setting all but the inner ring's inertia and
 //! the cage to documented defaults (docs/dynamics.md).
 
+use super::seals::SealFriction;
 use super::supports::{OuterRing, Support};
 use crate::cage::CageParameters;
 use crate::contact::NormalForceLaw;
@@ -64,6 +65,8 @@ pub struct DynamicsParameters {
     /// Λ = h_min/σ (`lubrication::mixed`). Needs a film model (EHL
     /// traction) and the raceways' and balls' roughness (`surface`).
     pub mixed_lubrication: Option<crate::traction::mixed::MixedLubrication>,
+    /// Friction of contact seals on the inner ring (None: an open bearing).
+    pub seals: Option<SealFriction>,
 }
 
 impl DynamicsParameters {
@@ -74,7 +77,7 @@ impl DynamicsParameters {
     /// (integrated on the default 12 × 6 grid when one is set), at rest
     /// without loads, a free inner ring and a fixed outer ring, no
     /// hysteresis, gravity or drag, 3-D, smooth surfaces, flooded films
-    /// not in the normal approach, no mixed lubrication. Change the rest
+    /// not in the normal approach, no mixed lubrication, no seals. Change the rest
     /// with struct update syntax, so that a new parameter needs only its
     /// default here:
     /// `DynamicsParameters { traction, ..DynamicsParameters::new(0.5, 1e-4, cage) }`.
@@ -99,6 +102,7 @@ impl DynamicsParameters {
             film_supply: Default::default(),
             film_in_approach: false,
             mixed_lubrication: None,
+            seals: None,
         }
     }
 }

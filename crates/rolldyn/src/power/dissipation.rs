@@ -88,6 +88,8 @@ pub struct Dissipation {
     pub cage_drag: f64,
     /// Dampers of the inner-ring support and the housing.
     pub support_damping: f64,
+    /// Friction of the contact seals on the inner ring.
+    pub seals: f64,
     /// Torque the drive supplies to the inner ring about its axis \[N·m\]
     /// (the bearing's friction torque when steady; not a power).
     pub drive_torque: f64,
@@ -104,6 +106,7 @@ impl Dissipation {
         self.ball_drag += other.ball_drag;
         self.cage_drag += other.cage_drag;
         self.support_damping += other.support_damping;
+        self.seals += other.seals;
         self.drive_torque += other.drive_torque;
     }
 
@@ -114,7 +117,7 @@ impl Dissipation {
     }
 
     /// The components outside the raceway contacts with their channel names.
-    pub fn others(&self) -> [(&'static str, f64); 6] {
+    pub fn others(&self) -> [(&'static str, f64); 7] {
         [
             ("pocket_friction", self.pocket_friction),
             ("pocket_damping", self.pocket_damping),
@@ -122,6 +125,7 @@ impl Dissipation {
             ("ball_drag", self.ball_drag),
             ("cage_drag", self.cage_drag),
             ("support_damping", self.support_damping),
+            ("seals", self.seals),
         ]
     }
 }
