@@ -19,6 +19,7 @@ pub mod recorder;
 pub mod report;
 pub mod run;
 pub mod run_stats;
+pub mod run_summary;
 pub mod run_sweep;
 pub mod spectrum;
 pub mod thermal;

@@ -14,6 +14,7 @@
 //! function to its list.
 
 pub mod run;
+pub mod run_data;
 pub mod svg;
 pub mod sweep;
 pub mod vibration;

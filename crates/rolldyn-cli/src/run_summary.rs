@@ -1,0 +1,243 @@
+//! `summary.json` of a dynamic run (keys and units in docs/cli.md): the
+//! run's statistics over the averaging window (the second half of the
+//! run), its energy balance, accuracy, power, vibration and integration
+//! counters, built from the statistics `run_stats` accumulates while
+//! running.
+
+use crate::power_channels::PowerSummary;
+use crate::run::DEFAULT_SAMPLE_RATE;
+use crate::run_stats::RunStatistics;
+use crate::vibration::VibrationSummary;
+use rolldyn::dynamics::BearingModel;
+use rolldyn::integrate::{IntegrationStats, RunEnd};
+use rolldyn_case::Case;
+use rolldyn_case::simulation::SolverSettings;
+use serde::Serialize;
+
+/// `summary.json`.
+#[derive(Serialize)]
+pub struct Summary {
+    pub source: String,
+    pub title: Option<String>,
+    pub status: &'static str,
+    pub error: Option<String>,
+    pub requested_duration_s: f64,
+    pub simulated_time_s: f64,
+    pub wall_time_s: f64,
+    pub integrator: &'static str,
+    pub relative_tolerance: Option<f64>,
+    /// Energy-balance tolerance of the step control (null: off).
+    pub energy_tolerance: Option<f64>,
+    pub max_step_s: f64,
+    pub steps: u64,
+    pub rejected_steps: u64,
+    pub rhs_evaluations: u64,
+    pub jacobian_evaluations: u64,
+    pub jacobian_rhs_evaluations: u64,
+    pub factorizations: u64,
+    /// `auto`: accepted steps of its explicit method (DOPRI5) and
+    /// hand-overs between its methods (null for the other integrators).
+    pub explicit_steps: Option<u64>,
+    pub integrator_switches: Option<u64>,
+    pub samples: usize,
+    pub sample_rate_hz: f64,
+    pub averaging_window_s: [f64; 2],
+    pub ball_count: usize,
+    pub ball_diameter_m: f64,
+    pub pitch_diameter_m: f64,
+    pub mean_contact_angle_inner_deg: f64,
+    pub mean_contact_angle_outer_deg: f64,
+    pub inner_ring_speed_rpm: f64,
+    pub mean_cage_speed_rpm: f64,
+    pub pure_rolling_cage_speed_rpm: f64,
+    pub cage_speed_ratio: f64,
+    pub pure_rolling_cage_speed_ratio: f64,
+    pub cage_sliding_rate: f64,
+    pub mean_load_inner_n: f64,
+    pub max_load_inner_n: f64,
+    pub mean_load_outer_n: f64,
+    pub max_load_outer_n: f64,
+    pub mean_slide_to_roll_inner: f64,
+    pub mean_slide_to_roll_outer: f64,
+    pub mean_spin_to_roll_inner: f64,
+    pub mean_spin_to_roll_outer: f64,
+    /// FASTSIM creepage and stick means (absent with other traction models).
+    #[serde(flatten)]
+    pub creep: Option<CreepMeans>,
+    pub mean_attitude_deg: f64,
+    pub mean_yaw_deg: f64,
+    pub max_abs_yaw_deg: f64,
+    /// Vibration velocity RMS and cage-whirl metrics.
+    #[serde(flatten)]
+    pub vibration: VibrationSummary,
+    /// The spectra's lines of a run with a spall or waviness.
+    #[serde(flatten)]
+    pub surface_lines: crate::vibration::SurfaceLines,
+    /// Friction power by component and friction torque.
+    #[serde(flatten)]
+    pub power: PowerSummary,
+    /// The thermal network coupled to the run (null when not coupled).
+    pub thermal_coupling: Option<crate::power_channels::ThermalRunSummary>,
+    pub drive_work_j: f64,
+    pub film_work_j: f64,
+    pub dissipated_energy_j: f64,
+    pub mechanical_energy_change_j: f64,
+    pub energy_balance_error_j: f64,
+    pub energy_balance_relative_error: f64,
+    /// How accurate the run is (docs/cli.md).
+    pub accuracy: crate::accuracy::Accuracy,
+}
+
+/// Means of the FASTSIM channels over loaded contacts in the averaging
+/// window (`summary.json`, FASTSIM runs only).
+#[derive(Serialize)]
+pub struct CreepMeans {
+    pub mean_creepage_longitudinal_inner: f64,
+    pub mean_creepage_longitudinal_outer: f64,
+    pub mean_creepage_lateral_inner: f64,
+    pub mean_creepage_lateral_outer: f64,
+    pub mean_creepage_spin_inner_1_m: f64,
+    pub mean_creepage_spin_outer_1_m: f64,
+    pub mean_stick_fraction_inner: f64,
+    pub mean_stick_fraction_outer: f64,
+}
+
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn summarise(
+    source: &str,
+    case: &Case,
+    model: &BearingModel,
+    stats: &RunStatistics,
+    duration: f64,
+    wall: f64,
+    settings: &SolverSettings,
+    integration: IntegrationStats,
+    end: &RunEnd,
+) -> Summary {
+    // Means over the second half of the run (the first half is transient).
+    let window = stats.window();
+    let [window_start, t_end] = window.span();
+    let inner_speed = window.mean("inner_ring_speed_rpm");
+    let cage_speed = window.mean("cage_speed_rpm");
+    let g = &case.bearing.geometry;
+    let rolling_ratio = window.mean("pure_rolling_cage_speed_ratio");
+    let balls = g.ball_count;
+    let loaded_mean = |suffix: &str| window.loaded_mean(suffix);
+    let drive = stats.last("drive_work_j");
+    let film_work = stats.last("film_work_j");
+    let dissipated = stats.last("dissipated_energy_j");
+    let delta_e = stats.last("mechanical_energy_j") - stats.first("mechanical_energy_j");
+    let imbalance = drive + film_work - delta_e - dissipated;
+    let relative_error = if drive.abs() + dissipated.abs() > 0.0 {
+        imbalance / drive.abs().max(dissipated.abs())
+    } else {
+        0.0
+    };
+    let (status, error) = match end {
+        RunEnd::Completed => ("completed", None),
+        RunEnd::Interrupted { .. } => (
+            "interrupted",
+            Some("stopped by the user (Ctrl-C); the files hold what was computed".to_string()),
+        ),
+        RunEnd::Failed { error } => ("failed", Some(error.to_string())),
+    };
+    let signal = window.signal();
+    let characteristic = rolldyn::signal::CharacteristicFrequencies::new(
+        inner_speed / 60.0,
+        cage_speed / 60.0,
+        balls,
+        g.ball_diameter / g.pitch_diameter,
+        (0.5 * (loaded_mean("contact_angle_inner_deg") + loaded_mean("contact_angle_outer_deg")))
+            .to_radians(),
+    );
+    let csr = if inner_speed != 0.0 {
+        cage_speed / inner_speed
+    } else {
+        0.0
+    };
+    Summary {
+        source: source.to_string(),
+        title: case.title.clone(),
+        status,
+        error,
+        requested_duration_s: duration,
+        simulated_time_s: t_end,
+        wall_time_s: wall,
+        integrator: settings.integrator,
+        relative_tolerance: settings.relative_tolerance,
+        energy_tolerance: settings.energy_tolerance,
+        max_step_s: settings.max_step,
+        steps: integration.steps,
+        rejected_steps: integration.rejected_steps,
+        rhs_evaluations: integration.rhs_evaluations,
+        jacobian_evaluations: integration.jacobian_evaluations,
+        jacobian_rhs_evaluations: integration.jacobian_rhs_evaluations,
+        factorizations: integration.factorizations,
+        explicit_steps: None,
+        integrator_switches: None,
+        samples: stats.samples() as usize,
+        sample_rate_hz: case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE),
+        averaging_window_s: [window_start, t_end],
+        ball_count: balls,
+        ball_diameter_m: g.ball_diameter,
+        pitch_diameter_m: g.pitch_diameter,
+        mean_contact_angle_inner_deg: loaded_mean("contact_angle_inner_deg"),
+        mean_contact_angle_outer_deg: loaded_mean("contact_angle_outer_deg"),
+        inner_ring_speed_rpm: inner_speed,
+        mean_cage_speed_rpm: cage_speed,
+        pure_rolling_cage_speed_rpm: rolling_ratio * inner_speed,
+        cage_speed_ratio: csr,
+        pure_rolling_cage_speed_ratio: rolling_ratio,
+        cage_sliding_rate: if rolling_ratio > 0.0 && inner_speed != 0.0 {
+            1.0 - csr / rolling_ratio
+        } else {
+            0.0
+        },
+        mean_load_inner_n: window.pooled_mean("load_inner_n"),
+        max_load_inner_n: window.largest_load("inner"),
+        mean_load_outer_n: window.pooled_mean("load_outer_n"),
+        max_load_outer_n: window.largest_load("outer"),
+        mean_slide_to_roll_inner: loaded_mean("slide_to_roll_inner"),
+        mean_slide_to_roll_outer: loaded_mean("slide_to_roll_outer"),
+        mean_spin_to_roll_inner: loaded_mean("spin_to_roll_inner"),
+        mean_spin_to_roll_outer: loaded_mean("spin_to_roll_outer"),
+        creep: stats.has("ball0_stick_fraction_inner").then(|| CreepMeans {
+            mean_creepage_longitudinal_inner: loaded_mean("creepage_longitudinal_inner"),
+            mean_creepage_longitudinal_outer: loaded_mean("creepage_longitudinal_outer"),
+            mean_creepage_lateral_inner: loaded_mean("creepage_lateral_inner"),
+            mean_creepage_lateral_outer: loaded_mean("creepage_lateral_outer"),
+            mean_creepage_spin_inner_1_m: loaded_mean("creepage_spin_inner_1_m"),
+            mean_creepage_spin_outer_1_m: loaded_mean("creepage_spin_outer_1_m"),
+            mean_stick_fraction_inner: loaded_mean("stick_fraction_inner"),
+            mean_stick_fraction_outer: loaded_mean("stick_fraction_outer"),
+        }),
+        mean_attitude_deg: window.pooled_mean("attitude_deg"),
+        mean_yaw_deg: window.pooled_mean("yaw_deg"),
+        max_abs_yaw_deg: window.pooled_max_abs("yaw_deg"),
+        vibration: crate::vibration::summarise(&signal, 0, case.outer_ring.is_some()),
+        surface_lines: crate::vibration::surface_lines(
+            &signal,
+            &characteristic,
+            balls,
+            &case.surface,
+        ),
+        power: crate::power_channels::summarise(&window, stats),
+        thermal_coupling: model
+            .thermal()
+            .map(crate::power_channels::ThermalRunSummary::from),
+        drive_work_j: drive,
+        film_work_j: film_work,
+        dissipated_energy_j: dissipated,
+        mechanical_energy_change_j: delta_e,
+        energy_balance_error_j: imbalance,
+        energy_balance_relative_error: relative_error,
+        accuracy: crate::accuracy::assess(
+            relative_error,
+            imbalance,
+            drive,
+            settings.integrator,
+            settings.relative_tolerance,
+            settings.energy_tolerance,
+        ),
+    }
+}
