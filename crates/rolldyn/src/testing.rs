@@ -67,7 +67,7 @@ pub fn bearing_7218b() -> BearingGeometry {
 }
 
 /// Shan et al. 2023's steel (Table 1).
-pub fn steel_seed000() -> Material {
+pub fn steel_shan_2023() -> Material {
     Material {
         elastic_modulus: 210e9,
         poisson_ratio: 0.3,
@@ -80,7 +80,7 @@ pub fn steel_seed000() -> Material {
 /// gravity), with the assumed values of the 6304 preset: μ = 0.1,
 /// v₁ = 10 mm/s, inner ring + shaft 0.5 kg, cage 5 g, pocket clearance
 /// 0.2 mm. `radial_load` acts on the inner ring along z.
-pub fn seed000_dynamics(radial_load: f64) -> DynamicsParameters {
+pub fn dynamics_6304(radial_load: f64) -> DynamicsParameters {
     let friction = ModifiedCoulomb {
         friction: 0.1,
         stick_speed: 0.0,

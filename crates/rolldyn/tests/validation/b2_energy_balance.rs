@@ -5,7 +5,7 @@
 
 use super::common::{
     METHODS, Method, bearing_6304, bearing_7008c, drag_7008c, dynamics_7008c, integrator,
-    seed000_dynamics, steel_seed000,
+    dynamics_6304, steel_shan_2023,
 };
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{
@@ -94,7 +94,7 @@ fn b2_balance_with_curve_hysteresis_housing_pockets_unbalance_and_load_ramp() {
 #[test]
 fn b2_balance_with_fastsim() {
     b2_seed000(|p| {
-        let steel = steel_seed000();
+        let steel = steel_shan_2023();
         let (g, nu) = rolldyn::traction::fastsim::combined_elastic_constants(&steel, &steel);
         p.traction = TractionModel::Fastsim(rolldyn::traction::Fastsim::new(0.1, g, nu));
     });
@@ -102,11 +102,11 @@ fn b2_balance_with_fastsim() {
 
 fn b2_seed000(configure: impl Fn(&mut DynamicsParameters)) {
     let g = bearing_6304();
-    let mut params = seed000_dynamics(100.0);
+    let mut params = dynamics_6304(100.0);
     params.inner_ring_mass = 0.1;
     params.inner_ring_tilt_inertia = 1e-5;
     configure(&mut params);
-    let steel = steel_seed000();
+    let steel = steel_shan_2023();
     let model = BearingModel::new(&g, &steel, &steel, HertzModel::HertzCircular, params).unwrap();
     let mut y0 = model.pure_rolling_state([0.0; 5]);
     let l = model.layout();

@@ -8,7 +8,7 @@
 //! cage with whirl and damped pockets), 100 N radial load, 8000 rpm,
 //! from pure rolling.
 
-use crate::common::{METHODS, bearing_6304, integrator, seed000_dynamics, steel_seed000};
+use crate::common::{METHODS, bearing_6304, integrator, dynamics_6304, steel_shan_2023};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::{
@@ -24,13 +24,13 @@ type Samples = Vec<(f64, Vec<f64>)>;
 type Saved = Option<(Vec<u8>, u64)>;
 
 fn model() -> BearingModel {
-    let steel = steel_seed000();
+    let steel = steel_shan_2023();
     BearingModel::new(
         &bearing_6304(),
         &steel,
         &steel,
         HertzModel::HertzCircular,
-        seed000_dynamics(100.0),
+        dynamics_6304(100.0),
     )
     .unwrap()
 }

@@ -17,7 +17,7 @@
 //! the paper's 4.24 %, and at W = 0 (only the ring and shaft weight, 4.9 N)
 //! the cage must be markedly slower (sliding).
 
-use super::common::{METHODS, Method, bearing_6304, integrator, seed000_dynamics, steel_seed000};
+use super::common::{METHODS, Method, bearing_6304, integrator, dynamics_6304, steel_shan_2023};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DynamicsParameters, PocketShape};
 use rolldyn::integrate::Integrator;
@@ -55,8 +55,8 @@ fn run(
     configure: impl Fn(&mut DynamicsParameters),
 ) -> (f64, u64, f64) {
     let g = bearing_6304();
-    let steel = steel_seed000();
-    let mut params = seed000_dynamics(-load);
+    let steel = steel_shan_2023();
+    let mut params = dynamics_6304(-load);
     configure(&mut params);
     let mut model =
         BearingModel::new(&g, &steel, &steel, HertzModel::HertzCircular, params).unwrap();

@@ -17,7 +17,7 @@
 //!   24 × 12 cells. The changes must shrink and the default 12 × 6 must lie
 //!   within 2 % of 24 × 12.
 
-use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, seed000_dynamics, steel_seed000};
+use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, dynamics_6304, steel_shan_2023};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::tableau::DOPRI5;
@@ -37,8 +37,8 @@ fn adaptive(rtol: f64) -> StepControl {
 fn mean_cage_speed_converges_with_the_tolerance() {
     let mean = |rtol: f64| {
         let g = bearing_6304();
-        let steel = steel_seed000();
-        let mut params = seed000_dynamics(-100.0);
+        let steel = steel_shan_2023();
+        let mut params = dynamics_6304(-100.0);
         params.cage.whirl = false;
         let mut m =
             BearingModel::new(&g, &steel, &steel, HertzModel::HertzCircular, params).unwrap();

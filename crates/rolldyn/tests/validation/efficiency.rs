@@ -10,7 +10,7 @@
 //! deterministic on one machine). Wall time is measured by the benchmarks,
 //! never here.
 
-use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, seed000_dynamics, steel_seed000};
+use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, dynamics_6304, steel_shan_2023};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::{IntegrationStats, Integrator, ROS34PW2, Rosenbrock};
@@ -76,13 +76,13 @@ fn check(name: &str, got: IntegrationStats, snapshot: IntegrationStats) {
 #[test]
 fn stiff_solver_work_on_the_6304() {
     let g = bearing_6304();
-    let steel = steel_seed000();
+    let steel = steel_shan_2023();
     let model = BearingModel::new(
         &g,
         &steel,
         &steel,
         HertzModel::HertzCircular,
-        seed000_dynamics(-100.0),
+        dynamics_6304(-100.0),
     )
     .unwrap();
     let y0 = model.pure_rolling_state([0.0; 5]);
