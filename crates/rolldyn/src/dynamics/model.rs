@@ -1,4 +1,6 @@
-//! State, equations of motion and contact forces of the dynamic model.
+//! State and equations of motion of the dynamic model: the assembly of
+//! the force elements' shares into the balls', rings' and cage's
+//! accelerations, and the memory a run carries.
 //!
 //! # State (docs/model.md §1)
 //! Two more states integrate the drive work and the dissipated energy
@@ -23,9 +25,12 @@
 //!
 //!
 //! # Force elements
-//! Each lives in its own file: ball–raceway contact and rolling resistance
-//! ([`super::race_contact`]), ball–pocket ([`super::pocket`]), drag
-//! ([`crate::lubrication::drag`]), ring supports ([`super::supports`]); the energy
+//! Each lives in its own file below this one (ARCHITECTURE.md, "Layers"):
+//! methods of [`super::elements::Elements`] or laws that take the bodies'
+//! motion ([`super::motion`]) and return their share: ball–raceway contact
+//! and rolling resistance ([`super::race_contact`]), ball–pocket
+//! ([`super::pocket`]), drag ([`crate::lubrication::drag`]), ring supports
+//! ([`super::supports`]), seals ([`super::seals`]); the energy
 //! bookkeeping is in [`super::energy`], output quantities in
 //! [`super::outputs`]; a ball's equations sum its contacts' shares in
 //! `dynamics::ball_equations`, and the block structure the implicit
