@@ -4,8 +4,8 @@
 //! balance closes to integrator accuracy.
 
 use super::common::{
-    METHODS, Method, bearing_6304, bearing_7008c, drag_7008c, dynamics_7008c, integrator,
-    dynamics_6304, steel_shan_2023,
+    METHODS, Method, bearing_6304, bearing_7008c, drag_7008c, dynamics_6304, dynamics_7008c,
+    integrator, steel_shan_2023,
 };
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{

@@ -8,7 +8,7 @@
 //! cage with whirl and damped pockets), 100 N radial load, 8000 rpm,
 //! from pure rolling.
 
-use crate::common::{METHODS, bearing_6304, integrator, dynamics_6304, steel_shan_2023};
+use crate::common::{METHODS, bearing_6304, dynamics_6304, integrator, steel_shan_2023};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::{

@@ -17,7 +17,7 @@
 //! the paper's 4.24 %, and at W = 0 (only the ring and shaft weight, 4.9 N)
 //! the cage must be markedly slower (sliding).
 
-use super::common::{METHODS, Method, bearing_6304, integrator, dynamics_6304, steel_shan_2023};
+use super::common::{METHODS, Method, bearing_6304, dynamics_6304, integrator, steel_shan_2023};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DynamicsParameters, PocketShape};
 use rolldyn::integrate::Integrator;

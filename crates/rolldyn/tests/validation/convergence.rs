@@ -17,7 +17,7 @@
 //!   24 × 12 cells. The changes must shrink and the default 12 × 6 must lie
 //!   within 2 % of 24 × 12.
 
-use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, dynamics_6304, steel_shan_2023};
+use super::common::{bearing_6304, bearing_7008c, dynamics_6304, dynamics_7008c, steel_shan_2023};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::tableau::DOPRI5;

@@ -10,7 +10,7 @@
 //! deterministic on one machine). Wall time is measured by the benchmarks,
 //! never here.
 
-use super::common::{bearing_6304, bearing_7008c, dynamics_7008c, dynamics_6304, steel_shan_2023};
+use super::common::{bearing_6304, bearing_7008c, dynamics_6304, dynamics_7008c, steel_shan_2023};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::{IntegrationStats, Integrator, ROS34PW2, Rosenbrock};
