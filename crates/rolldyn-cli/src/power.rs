@@ -56,6 +56,7 @@ pub struct PowerReport {
     pub ball_pocket_w: f64,
     pub ball_drag_w: f64,
     pub cage_drag_w: f64,
+    pub seals_w: f64,
     pub power_loss_w: f64,
     pub friction_torque_n_m: f64,
 }
@@ -74,6 +75,7 @@ impl PowerReport {
             ball_pocket_w: p.ball_pocket,
             ball_drag_w: p.ball_drag,
             cage_drag_w: p.cage_drag,
+            seals_w: p.seals,
             power_loss_w: p.total(),
             friction_torque_n_m: p.friction_torque(),
         })
@@ -115,6 +117,7 @@ impl PowerReport {
             ("ball–pocket", self.ball_pocket_w),
             ("ball drag", self.ball_drag_w),
             ("cage drag", self.cage_drag_w),
+            ("seals", self.seals_w),
         ] {
             let _ = writeln!(out, "  {name:<22} {v:>12.4}");
         }

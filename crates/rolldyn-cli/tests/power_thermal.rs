@@ -121,6 +121,20 @@ fn seals_add_their_moment_to_the_drive() {
         (gained / seal_power - 1.0).abs() < 0.02,
         "{gained} W vs {seal_power} W"
     );
+    // Harris's local method adds the same M_s ω to the power loss.
+    let power = |sets: &[&str]| {
+        let mut args = vec!["power", "--json"];
+        for s in sets {
+            args.extend(["--set", s]);
+        }
+        json_of(&args, None)
+    };
+    let (open, sealed) = (power(&[]), power(&["seals.friction_torque=0.05 N.m"]));
+    let p = |v: &Value, k: &str| v[k].as_f64().unwrap();
+    assert_eq!(p(&open, "seals_w"), 0.0);
+    assert!((p(&sealed, "seals_w") / (moment * omega) - 1.0).abs() < 1e-12);
+    let gained = p(&sealed, "power_loss_w") - p(&open, "power_loss_w");
+    assert!((gained / (moment * omega) - 1.0).abs() < 1e-9, "{gained} W");
     // A [seals] table without its moment is refused, naming the key.
     let o = rolldyn(&["check", "--set", "seals.transition_speed=2 rpm"], None);
     assert_eq!(o.status.code(), Some(2));
@@ -159,7 +173,8 @@ fn power_command_reports_components() {
         + f(&["cage_land_w"])
         + f(&["ball_pocket_w"])
         + f(&["ball_drag_w"])
-        + f(&["cage_drag_w"]);
+        + f(&["cage_drag_w"])
+        + f(&["seals_w"]);
     assert!((parts / f(&["power_loss_w"]) - 1.0).abs() < 1e-12);
     let spin = f(&["inner", "spin_w"]) + f(&["outer", "spin_w"]);
     assert!(spin > 0.5 * f(&["power_loss_w"]), "spin {spin} W");

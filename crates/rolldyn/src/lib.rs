@@ -40,6 +40,7 @@ pub mod math;
 pub mod operating;
 pub mod power;
 pub mod quasistatic;
+pub mod seals;
 pub mod signal;
 pub mod surface;
 #[cfg(any(test, feature = "testing"))]

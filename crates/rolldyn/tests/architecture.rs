@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 
 /// The layers, lowest first: a module may use modules of its own layer and
 /// of lower layers.
-const LAYERS: [(&str, &[&str]); 5] = [
+const LAYERS: [(&str, &[&str]); 6] = [
     (
         "foundations",
         &["math", "error", "material", "integrate", "kinematics"],
@@ -31,6 +31,7 @@ const LAYERS: [(&str, &[&str]); 5] = [
             "cage",
             "life",
             "signal",
+            "seals",
         ],
     ),
     (
@@ -38,6 +39,7 @@ const LAYERS: [(&str, &[&str]); 5] = [
         &["quasistatic", "power", "thermal"],
     ),
     ("dynamics", &["dynamics"]),
+    ("test fixtures", &["testing"]),
 ];
 
 type Module = Vec<String>;

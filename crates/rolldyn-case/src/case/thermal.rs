@@ -249,6 +249,7 @@ impl Case {
             pocket_radius: g.pitch_diameter / 2.0,
             guide: self.guide_land_of(false)?,
             drag: self.drag,
+            seals: self.seals,
         })
     }
 

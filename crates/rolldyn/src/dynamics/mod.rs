@@ -22,7 +22,6 @@
 //! | `film` | the contacts' steady films, and the film in the normal approach |
 //! | `pocket` | ball–pocket contact |
 //! | `supports` | ring spring–dampers |
-//! | `seals` | the contact seals' friction moment on the inner ring |
 //! | `surface_contact` | waviness and spalls in the contacts, spall step limit |
 //! | `energy` | mechanical energy, work and dissipation |
 //! | `outputs` | per-contact output samples, pure-rolling reference |
@@ -47,7 +46,6 @@ pub mod parameters;
 pub mod peaks;
 pub mod pocket;
 pub mod race_contact;
-pub mod seals;
 pub mod supports;
 pub mod surface_contact;
 pub mod thermal_coupling;
@@ -55,12 +53,12 @@ pub mod traction_equilibrium;
 
 pub use crate::cage::{CageParameters, GuideLand, PocketLaw, PocketShape};
 pub use crate::lubrication::drag::DragParameters;
+pub use crate::seals::SealFriction;
 pub use energy::Energy;
 pub use layout::StateLayout;
 pub use model::BearingModel;
 pub use parameters::DynamicsParameters;
 pub use race_contact::{ContactOutput, ContactSample, HYSTERESIS_RAMP_SPEED};
-pub use seals::SealFriction;
 pub use supports::{OuterRing, Support};
 pub use thermal_coupling::ThermalCoupling;
 pub use traction_equilibrium::{

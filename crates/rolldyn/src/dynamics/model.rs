@@ -30,7 +30,7 @@
 //! motion ([`super::motion`]) and return their share: ball–raceway contact
 //! and rolling resistance ([`super::race_contact`]), ball–pocket
 //! ([`super::pocket`]), drag ([`crate::lubrication::drag`]), ring supports
-//! ([`super::supports`]), seals ([`super::seals`]); the energy
+//! ([`super::supports`]), seals ([`crate::seals`]); the energy
 //! bookkeeping is in [`super::energy`], output quantities in
 //! [`super::outputs`]; a ball's equations sum its contacts' shares in
 //! `dynamics::ball_equations`, and the block structure the implicit

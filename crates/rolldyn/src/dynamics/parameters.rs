@@ -3,7 +3,6 @@
 //! [`DynamicsParameters::new`] setting all but the inner ring's inertia and
 //! the cage to documented defaults (docs/dynamics.md).
 
-use super::seals::SealFriction;
 use super::supports::{OuterRing, Support};
 use crate::cage::CageParameters;
 use crate::contact::NormalForceLaw;
@@ -11,6 +10,7 @@ use crate::error::InvalidParameter;
 use crate::geometry::RingKind;
 use crate::lubrication::drag::DragParameters;
 use crate::operating::{LoadProfile, SpeedProfile};
+use crate::seals::SealFriction;
 use crate::surface::SurfaceModel;
 use crate::traction::TractionModel;
 use crate::traction::ellipse::TractionIntegration;

@@ -37,6 +37,7 @@
 //! cage land     H_cl = T_land (ω_land − ω_c)              Petroff shear of the guide land, cage centred (crate::cage::GuideLand)
 //! ball–pocket   H_cb = f_c Σ N_j (D/2) ω_R,j,  Σ N_j = (|T_land| + |T_cage drag|)/r_p + m_c g (no guide land)
 //! drag          balls: −(F v_t + M·ω_b), cage: c₁ ω_c² + c₂ |ω_c|³ (crate::lubrication::drag::DragParameters)
+//! seals         M_s ω_i² / √(ω_i² + ω₀²)                                  (crate::seals::SealFriction)
 //! ```
 //! The pocket forces are those that hold the cage against its drag (Harris
 //! & Kotzalas ch. 7 take the cage weight, Lei et al. 2023 eq 37); they act where
@@ -55,6 +56,7 @@ use crate::lubrication::drag::DragParameters;
 use crate::math::elliptic;
 use crate::quasistatic::Equilibrium;
 use crate::quasistatic::contact_motion::contact_motions;
+use crate::seals::SealFriction;
 
 /// Heathcote's rolling-line position c (ξ = ±c a): the root of
 /// c³ − 3c + 1 = 0 in (0, 1), 2 cos 80°.
@@ -86,6 +88,8 @@ pub struct LocalMethodInputs {
     pub guide: Option<GuideLand>,
     /// Drag of the air–oil mixture.
     pub drag: DragParameters,
+    /// Contact seals, if the bearing has them.
+    pub seals: Option<SealFriction>,
 }
 
 /// Losses of the contacts with one raceway, summed over the balls \[W\].
@@ -121,6 +125,8 @@ pub struct LocalPowerLoss {
     pub ball_drag: f64,
     /// Drag on the cage.
     pub cage_drag: f64,
+    /// Friction of the contact seals.
+    pub seals: f64,
     /// Inner-ring speed ω_i \[rad/s\].
     pub inner_speed: f64,
 }
@@ -134,6 +140,7 @@ impl LocalPowerLoss {
             + self.ball_pocket
             + self.ball_drag
             + self.cage_drag
+            + self.seals
     }
 
     /// Friction torque H/ω_i \[N·m\] (0 at rest).
@@ -219,6 +226,7 @@ pub fn local_power_loss(
             out.ball_drag -= f * v_t + m.dot(&w);
         }
     }
+    out.seals = inputs.seals.map_or(0.0, |s| s.power(eq.inner_speed));
     out
 }
 

@@ -98,7 +98,7 @@ pub fn heat_sources(
         inner_contacts: power.inner.total(),
         outer_contacts: power.outer.total(),
         balls: power.ball_pocket,
-        oil: power.cage_land + power.ball_drag + power.cage_drag,
+        oil: power.cage_land + power.ball_drag + power.cage_drag + power.seals,
         cage_speed: eq.cage_speed(),
         ..Default::default()
     };

@@ -48,6 +48,7 @@ fn inputs() -> LocalMethodInputs {
         pocket_radius: 23e-3,
         guide: None,
         drag: DragParameters::default(),
+        seals: None,
     }
 }
 

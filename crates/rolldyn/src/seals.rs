@@ -9,9 +9,10 @@
 //! M = −M_s ω / √(ω² + ω₀²)        (ω: inner-ring speed relative to the outer ring)
 //! P = −M ω = M_s ω² / √(ω² + ω₀²) ≥ 0
 //! ```
-//! The inner ring's speed is prescribed, so the moment acts on the drive
-//! only: it adds to the drive torque and, as dissipation, to the energy
-//! balance (docs/model.md §10). The lips' viscous and temperature
+//! In the dynamic model the inner ring's speed is prescribed, so the
+//! moment acts on the drive only: it adds to the drive torque and, as
+//! dissipation, to the energy balance (docs/model.md §10); Harris's local
+//! method (`power::harris`) adds M_s ω to the bearing's power loss. The lips' viscous and temperature
 //! dependence, and their drag on the balls' lubricant, are not modelled.
 
 use crate::error::{InvalidParameter, require_non_negative, require_positive};
