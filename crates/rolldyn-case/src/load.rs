@@ -122,18 +122,44 @@ fn displaced_keys(table_path: &str, key: &str) -> Vec<&'static str> {
     }
 }
 
-/// Sets `value` at `path` (creating tables), removing displaced keys.
+/// Sets `value` at `path` (creating tables), removing displaced keys. A
+/// number after an array of tables picks its entry, from 0
+/// (`surface.outer.spall.0.length`).
 fn set_path(table: &mut Table, path: &str, value: Value) -> Result<(), String> {
     let parts: Vec<&str> = path.split('.').collect();
     let (leaf, parents) = parts.split_last().ok_or("empty key")?;
     let mut current = table;
-    for (i, part) in parents.iter().enumerate() {
+    let mut i = 0;
+    while i < parents.len() {
         let entry = current
-            .entry(part.to_string())
+            .entry(parents[i].to_string())
             .or_insert_with(|| Value::Table(Table::new()));
+        let entry = match entry {
+            Value::Array(items) => {
+                let array = parts[..=i].join(".");
+                let index = parents
+                    .get(i + 1)
+                    .and_then(|n| n.parse::<usize>().ok())
+                    .ok_or_else(|| {
+                        format!(
+                            "{array} is an array of tables: name an entry, e.g. {array}.0.<key>"
+                        )
+                    })?;
+                let count = items.len();
+                i += 1;
+                items.get_mut(index).ok_or_else(|| {
+                    format!(
+                        "{array} has {count} {}: index {index} is beyond (they count from 0)",
+                        if count == 1 { "entry" } else { "entries" }
+                    )
+                })?
+            }
+            other => other,
+        };
         current = entry
             .as_table_mut()
             .ok_or_else(|| format!("{} is not a table", parts[..=i].join(".")))?;
+        i += 1;
     }
     for k in displaced_keys(&parents.join("."), leaf) {
         current.remove(k);

@@ -123,9 +123,12 @@ enum Command {
         #[arg(long)]
         verify: bool,
         /// Run a sweep: speed=0rpm..20000rpm/5 (linear range) or
-        /// axial=100N,1kN (list); also radial=... Repeat for a grid. The
-        /// points run in parallel, each into DIR/point-NNNN/, with a
-        /// combined DIR/sweep.csv and DIR/sweep.json.
+        /// axial=100N,1kN (list); also radial=..., and any case key with a
+        /// list of values (--set syntax; entries of arrays of tables by
+        /// index), e.g. "surface.outer.spall.0.length=0.18 mm,0.36 mm",
+        /// whose values label the rows. Repeat for a grid. The points run in
+        /// parallel, each into DIR/point-NNNN/, with a combined
+        /// DIR/sweep.csv and DIR/sweep.json.
         #[arg(long, value_name = "NAME=VALUES", allow_hyphen_values = true)]
         sweep: Vec<String>,
     },

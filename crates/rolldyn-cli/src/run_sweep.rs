@@ -1,6 +1,10 @@
 //! `rolldyn run CASE --sweep speed=… --sweep axial=… -o DIR`: dynamic
 //! runs over a grid (first `--sweep` outermost, as `quasistatic
-//! --sweep`), in parallel on the machine's cores. Each point is an
+//! --sweep`), in parallel on the machine's cores. Besides the operating
+//! point (`speed`, `axial`, `radial`: ranges or lists with units), any
+//! case key takes a list of values as `--set` reads them
+//! (`--sweep "surface.outer.spall.0.length=0.18 mm,0.36 mm"`); its values
+//! label the rows (a labelled dataset of runs). Each point is an
 //! ordinary run directory `DIR/point-NNNN/` (its `run.json` holds the
 //! point's overrides, so `rolldyn run --resume DIR/point-NNNN` continues
 //! an interrupted point); `DIR/sweep.json` and `DIR/sweep.csv` hold one
@@ -33,23 +37,82 @@ pub const MAX_RUN_SWEEP_POINTS: usize = 1000;
 /// Status of a point the sweep did not start (interrupted before it).
 const NOT_STARTED: &str = "not_started";
 
+/// One `--sweep` of a dynamic run.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RunSweep {
+    /// The operating point: speed or a load, in SI.
+    Operating(Swept, Vec<f64>),
+    /// Any case key, its values as `--set` reads them.
+    Key { key: String, values: Vec<String> },
+}
+
+/// Parses `speed=…`, `axial=…`, `radial=…` (ranges or lists with units,
+/// as `quasistatic --sweep`) or `dotted.key=v1,v2,…` (a list).
+pub fn parse_run_sweep(arg: &str) -> Result<RunSweep, String> {
+    let (name, spec) = arg.split_once('=').ok_or(
+        "expected NAME=VALUES, e.g. speed=0rpm..20000rpm/11 or cage.pocket_friction=0.05,0.1",
+    )?;
+    let name = name.trim();
+    if matches!(name, "speed" | "axial" | "radial") {
+        return parse_sweep(arg).map(|(swept, values)| RunSweep::Operating(swept, values));
+    }
+    if !name.contains('.') {
+        return Err(format!(
+            "unknown sweep variable \"{name}\"; expected speed, axial, radial or a case key (dotted, as --set: cage.pocket_friction=0.05,0.1)"
+        ));
+    }
+    let values: Vec<String> = spec.split(',').map(|v| v.trim().to_string()).collect();
+    if values.iter().any(String::is_empty) {
+        return Err(format!(
+            "\"{spec}\": a case key takes a list of values separated by commas, e.g. {name}=0.1,0.2"
+        ));
+    }
+    Ok(RunSweep::Key {
+        key: name.to_string(),
+        values,
+    })
+}
+
+/// A grid point: its overrides and the labels of its case-key sweeps
+/// (key, value as given).
+pub type GridPoint = (CaseOverrides, Vec<(String, String)>);
+
 /// The overrides of each grid point: the base ones plus the swept values
 /// (first sweep outermost).
-pub fn grid(base: &CaseOverrides, sweeps: &[(Swept, Vec<f64>)]) -> Vec<CaseOverrides> {
-    let mut points = vec![base.clone()];
-    for (swept, values) in sweeps {
+pub fn grid(base: &CaseOverrides, sweeps: &[RunSweep]) -> Vec<GridPoint> {
+    let mut points: Vec<GridPoint> = vec![(base.clone(), Vec::new())];
+    for sweep in sweeps {
         points = points
             .iter()
-            .flat_map(|p| {
-                values.iter().map(move |&v| {
-                    let mut o = p.clone();
-                    match swept {
-                        // SI text: the point runs at exactly the swept value.
-                        Swept::Speed => o.speed = Some(format!("{v:?} rad/s")),
-                        Swept::Axial => o.axial_load = Some(format!("{v:?} N")),
-                        Swept::Radial => o.radial_load = Some(format!("{v:?} N")),
+            .flat_map(|(p, labels)| {
+                let values: Vec<(Option<f64>, Option<&String>)> = match sweep {
+                    RunSweep::Operating(_, values) => {
+                        values.iter().map(|&v| (Some(v), None)).collect()
                     }
-                    o
+                    RunSweep::Key { values, .. } => {
+                        values.iter().map(|v| (None, Some(v))).collect()
+                    }
+                };
+                values.into_iter().map(move |(number, text)| {
+                    let (mut o, mut labels) = (p.clone(), labels.clone());
+                    match (sweep, number, text) {
+                        // SI text: the point runs at exactly the swept value.
+                        (RunSweep::Operating(Swept::Speed, _), Some(v), _) => {
+                            o.speed = Some(format!("{v:?} rad/s"))
+                        }
+                        (RunSweep::Operating(Swept::Axial, _), Some(v), _) => {
+                            o.axial_load = Some(format!("{v:?} N"))
+                        }
+                        (RunSweep::Operating(Swept::Radial, _), Some(v), _) => {
+                            o.radial_load = Some(format!("{v:?} N"))
+                        }
+                        (RunSweep::Key { key, .. }, _, Some(v)) => {
+                            o.set.push(format!("{key}={v}"));
+                            labels.push((key.clone(), v.clone()));
+                        }
+                        _ => unreachable!("a sweep's values match its kind"),
+                    }
+                    (o, labels)
                 })
             })
             .collect();
@@ -70,9 +133,15 @@ pub fn command(
 ) -> Result<(), Failure> {
     let sweeps = sweeps
         .iter()
-        .map(|s| parse_sweep(s).map_err(|e| bad_arg("--sweep", s, e)))
+        .map(|s| parse_run_sweep(s).map_err(|e| bad_arg("--sweep", s, e)))
         .collect::<Result<Vec<_>, _>>()?;
-    let count: usize = sweeps.iter().map(|(_, v)| v.len()).product();
+    let count: usize = sweeps
+        .iter()
+        .map(|s| match s {
+            RunSweep::Operating(_, v) => v.len(),
+            RunSweep::Key { values, .. } => values.len(),
+        })
+        .product();
     if count > MAX_RUN_SWEEP_POINTS && !options.force {
         return Err(Failure::BadInput(format!(
             "--sweep: the grid has {count} runs, above the limit of {MAX_RUN_SWEEP_POINTS}; use fewer points or pass --force"
@@ -83,9 +152,10 @@ pub fn command(
     }
     case.overrides.overrides()?;
     let (source, text) = case.read()?;
-    let points = grid(&case.overrides, &sweeps);
+    let grid = grid(&case.overrides, &sweeps);
+    let (points, labels): (Vec<_>, Vec<_>) = grid.into_iter().unzip();
     let dir = Path::new(output);
-    let (rows, interrupted) = run(&source, text.as_deref(), &points, dir, options)?;
+    let (rows, interrupted) = run(&source, text.as_deref(), &points, &labels, dir, options)?;
     let mut out = String::new();
     for row in &rows {
         let _ = writeln!(
@@ -135,6 +205,7 @@ pub fn run(
     source: &str,
     case_text: Option<&str>,
     points: &[CaseOverrides],
+    labels: &[Vec<(String, String)>],
     dir: &Path,
     options: &RunOptions,
 ) -> Result<(Vec<Map<String, Value>>, bool), Failure> {
@@ -171,7 +242,7 @@ pub fn run(
         .enumerate()
         .map(|(k, (overrides, case))| {
             let name = point_name(k, points.len());
-            let row = if stop.load(Ordering::Relaxed) {
+            let mut row = if stop.load(Ordering::Relaxed) {
                 let mut row = inputs_row(&name, case);
                 row.insert("status".into(), Value::from(NOT_STARTED));
                 row.insert("error".into(), Value::Null);
@@ -179,6 +250,9 @@ pub fn run(
             } else {
                 run_point(&name, source, case_text, overrides, case, dir, &options)
             };
+            for (key, value) in labels.get(k).into_iter().flatten() {
+                row.insert(key.clone(), Value::from(value.as_str()));
+            }
             let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
             if let Some(bar) = &bar {
                 bar.set_position(finished as u64);
@@ -193,7 +267,11 @@ pub fn run(
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    write_tables(dir, &rows)?;
+    let label_keys: Vec<&str> = labels
+        .first()
+        .map(|l| l.iter().map(|(k, _)| k.as_str()).collect())
+        .unwrap_or_default();
+    write_tables_labelled(dir, &rows, &label_keys)?;
     Ok((rows, stop.load(Ordering::Relaxed)))
 }
 
@@ -286,16 +364,21 @@ fn flatten(prefix: &str, value: &Value, row: &mut Map<String, Value>) {
 /// Writes `sweep.json` and `sweep.csv` (columns: the union of the rows'
 /// keys in first-seen order).
 pub fn write_tables(dir: &Path, rows: &[Map<String, Value>]) -> Result<(), Failure> {
+    write_tables_labelled(dir, rows, &[])
+}
+
+/// [`write_tables`] with the case-key sweeps' `labels` as columns after
+/// the operating point.
+pub fn write_tables_labelled(
+    dir: &Path,
+    rows: &[Map<String, Value>],
+    labels: &[&str],
+) -> Result<(), Failure> {
     let json = crate::finite::to_json(rows).map_err(|e| Failure::Internal(e.to_string()))?;
     // The point and its inputs first, then the summary's keys.
-    let mut columns: Vec<&str> = vec![
-        "point",
-        "speed_rpm",
-        "force_x_n",
-        "force_z_n",
-        "status",
-        "error",
-    ];
+    let mut columns: Vec<&str> = vec!["point", "speed_rpm", "force_x_n", "force_z_n"];
+    columns.extend(labels);
+    columns.extend(["status", "error"]);
     for row in rows {
         for key in row.keys() {
             if !columns.contains(&key.as_str()) {

@@ -187,6 +187,63 @@ fn dynamic_sweep_is_deterministic_whatever_the_thread_count() {
     assert_eq!(ids, ["points", "quantities"]);
 }
 
+/// A sweep over case keys (any `--set` key, an array entry by index): one
+/// run per value, each labelled by its key's value in the tables, each
+/// run with its value (the spall lengths differ in the point cases).
+#[test]
+fn dynamic_sweep_over_case_keys_labels_its_rows() {
+    let dir = temp_dir("run-sweep-keys");
+    let d = dir.to_string_lossy().into_owned();
+    let case =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/cwru6205/case.toml");
+    let o = rolldyn(
+        &[
+            "run",
+            case.to_str().unwrap(),
+            "--duration",
+            "2 ms",
+            "--sweep",
+            "surface.outer.spall.0.length=0.18 mm,0.36 mm",
+            "--sweep",
+            "cage.pocket_friction=0.05,0.1",
+            "-o",
+            &d,
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    assert_eq!(
+        header[..7],
+        [
+            "point",
+            "speed_rpm",
+            "force_x_n",
+            "force_z_n",
+            "surface.outer.spall.0.length",
+            "cage.pocket_friction",
+            "status"
+        ]
+    );
+    let rows: Vec<Value> =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
+    assert_eq!(rows.len(), 4);
+    assert_eq!(rows[1]["surface.outer.spall.0.length"], "0.18 mm");
+    assert_eq!(rows[1]["cage.pocket_friction"], "0.1");
+    assert_eq!(rows[2]["surface.outer.spall.0.length"], "0.36 mm");
+    for row in &rows {
+        assert_eq!(row["status"], "completed", "{row}");
+    }
+    // Each point's record holds its override.
+    let record = std::fs::read_to_string(dir.join("point-0002").join("run.json")).unwrap();
+    assert!(
+        record.contains("surface.outer.spall.0.length=0.36 mm"),
+        "{record}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn dynamic_sweep_input_errors() {
     let o = rolldyn(&["run", "--sweep", "temperature=1,2"], None);

@@ -486,7 +486,7 @@ fn run_points(
     let (options, stop, fraction) = run_options(force, false);
     let dir = Path::new(directory);
     let (rows, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
-        run_sweep::run(&source, text.as_deref(), &points, dir, &options)
+        run_sweep::run(&source, text.as_deref(), &points, &[], dir, &options)
     })?;
     let (rows, _) = rows.map_err(to_py)?;
     Ok((json_text(&rows)?, interrupted))
