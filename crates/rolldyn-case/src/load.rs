@@ -416,3 +416,29 @@ pub fn load_default(overrides: &[Override]) -> Result<Case, CaseError> {
     let preset = presets::find(presets::DEFAULT_PRESET).map_or("", |p| p.text);
     load_case("built-in default case (7008C)", preset, overrides)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_number_after_an_array_of_tables_picks_its_entry() {
+        let mut table: Table = toml::from_str(
+            "[[surface.outer.spall]]\nlength = \"1 mm\"\n[[surface.outer.spall]]\nlength = \"2 mm\"\n",
+        )
+        .unwrap();
+        set_path(
+            &mut table,
+            "surface.outer.spall.1.length",
+            Value::from("3 mm"),
+        )
+        .unwrap();
+        let spalls = table["surface"]["outer"]["spall"].as_array().unwrap();
+        assert_eq!(spalls[0]["length"].as_str(), Some("1 mm"));
+        assert_eq!(spalls[1]["length"].as_str(), Some("3 mm"));
+        let beyond = set_path(&mut table, "surface.outer.spall.2.length", Value::from(1));
+        assert!(beyond.unwrap_err().contains("has 2 entries"));
+        let unnamed = set_path(&mut table, "surface.outer.spall.length", Value::from(1));
+        assert!(unnamed.unwrap_err().contains("name an entry"));
+    }
+}
