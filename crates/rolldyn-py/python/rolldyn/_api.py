@@ -29,8 +29,8 @@ SWEEP_ALIASES = {
 
 Progress = Optional[Callable[[float], Any]]
 
-#: A value with its unit (``"200 N"``), or a number in SI units.
-Quantity = Union[str, float]
+#: A value with its unit, as in case files (``"200 N"``, ``"10 m/s"``).
+Quantity = str
 
 
 def _value_text(value: Any) -> str:
