@@ -1,7 +1,7 @@
 //! Friction of contact seals: the lips of a sealed bearing (2RS, RS1, …)
 //! rub on the inner ring's land and oppose its turning relative to the
 //! outer ring with a friction moment nearly independent of speed and load
-//! (SKF, *Rolling bearings* catalogue 2018, "Frictional moment of seals":
+//! (SKF 2018, docs/references.md, "frictional moment of seals":
 //! M_seal = K_S1 d_s^β + K_S2 per seal, with constants for each seal type
 //! and counterface diameter d_s). rolldyn takes the bearing's seal moment
 //! M_s as given (both seals together), regularised through zero speed:
