@@ -131,6 +131,14 @@ enum Command {
         /// DIR/sweep.csv and DIR/sweep.json.
         #[arg(long, value_name = "NAME=VALUES", allow_hyphen_values = true)]
         sweep: Vec<String>,
+        /// With --sweep: N runs at random points instead of the grid (Monte
+        /// Carlo): each --sweep NAME=LOW..HIGH is drawn uniformly, each list
+        /// NAME=a,b,c by choice; the draws are labelled in sweep.csv
+        #[arg(long, value_name = "N", requires = "sweep")]
+        sample: Option<usize>,
+        /// Seed of --sample's draws (the same seed, the same points)
+        #[arg(long, value_name = "S", default_value_t = 0, requires = "sample")]
+        seed: u64,
     },
     /// Write DIR/report.html: one self-contained HTML file (inline SVG, no
     /// network, no script) with the case, summary, solver statistics and
@@ -267,6 +275,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
             report: with_report,
             verify,
             sweep,
+            sample,
+            seed,
         } => {
             if let (Some(t), None) = (&until, &resume) {
                 return Err(bad_arg(
@@ -309,7 +319,16 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     checkpoint_interval,
                     ..Default::default()
                 };
-                return run_sweep::command(case, &sweep, duration, &output, &options, with_report);
+                let draw = sample.map(|count| run_sweep::Sampling { count, seed });
+                return run_sweep::command(
+                    case,
+                    &sweep,
+                    draw,
+                    duration,
+                    &output,
+                    &options,
+                    with_report,
+                );
             }
             let resuming = resume.is_some();
             let mut extends = None;

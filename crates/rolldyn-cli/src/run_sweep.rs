@@ -120,28 +120,176 @@ pub fn grid(base: &CaseOverrides, sweeps: &[RunSweep]) -> Vec<GridPoint> {
     points
 }
 
-/// `rolldyn run --sweep`: parses the sweeps, runs the grid, prints a
-/// line per point and the totals; with `report`, writes the sweep's
-/// report and each point's.
+/// `--sample N --seed S`: random points instead of the grid.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Sampling {
+    /// Number of runs.
+    pub count: usize,
+    /// Seed of the draws.
+    pub seed: u64,
+}
+
+/// The case key an operating-point sweep name stands for.
+fn operating_key(name: &str) -> &str {
+    match name {
+        "speed" => "operating.speed",
+        "axial" => "operating.force_x",
+        "radial" => "operating.force_z",
+        other => other,
+    }
+}
+
+/// A value with its unit split: `"0.36 mm"` → (0.36, "mm").
+fn number_and_unit(text: &str) -> Option<(f64, &str)> {
+    let text = text.trim();
+    (1..=text.len())
+        .rev()
+        .filter(|&i| text.is_char_boundary(i))
+        .find_map(|i| {
+            text[..i]
+                .trim()
+                .parse::<f64>()
+                .ok()
+                .map(|v| (v, text[i..].trim()))
+        })
+}
+
+/// What a `--sweep` draws from with `--sample`.
+#[derive(Debug, Clone, PartialEq)]
+enum Draw {
+    /// Uniform in [low, high], in `unit` (as written).
+    Range { low: f64, high: f64, unit: String },
+    /// One of the values, each as likely.
+    Choice(Vec<String>),
+}
+
+/// Parses a sampled sweep: `NAME=LOW..HIGH` (one unit) or `NAME=a,b,c`;
+/// NAME is speed, axial, radial or a case key.
+fn parse_draw(arg: &str) -> Result<(String, Draw), String> {
+    let (name, spec) = arg
+        .split_once('=')
+        .ok_or("expected NAME=LOW..HIGH or NAME=a,b,c, e.g. speed=1000rpm..2000rpm")?;
+    let name = name.trim();
+    if !name.contains('.') && !matches!(name, "speed" | "axial" | "radial") {
+        return Err(format!(
+            "unknown sweep variable \"{name}\"; expected speed, axial, radial or a case key (dotted, as --set)"
+        ));
+    }
+    let key = operating_key(name).to_string();
+    if let Some((low, high)) = spec.split_once("..") {
+        let bad = || {
+            format!(
+                "\"{spec}\": a range to draw from is LOW..HIGH with one unit, e.g. 0.1mm..0.5mm"
+            )
+        };
+        let ((low, a), (high, b)) = (
+            number_and_unit(low).ok_or_else(bad)?,
+            number_and_unit(high).ok_or_else(bad)?,
+        );
+        if a != b || !low.is_finite() || !high.is_finite() || high < low {
+            return Err(bad());
+        }
+        let unit = a.to_string();
+        return Ok((key, Draw::Range { low, high, unit }));
+    }
+    let values: Vec<String> = spec.split(',').map(|v| v.trim().to_string()).collect();
+    if values.iter().any(String::is_empty) {
+        return Err(format!("\"{spec}\": a list to choose from is a,b,c"));
+    }
+    Ok((key, Draw::Choice(values)))
+}
+
+/// SplitMix64 (Steele, Lea & Flood 2014): the draws' generator, the same
+/// sequence on every platform and thread count.
+struct SplitMix64(u64);
+
+impl SplitMix64 {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1) with 53 random bits.
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+}
+
+/// `count` random points (`--sample`): each sweep drawn in turn, point by
+/// point, from one generator seeded with `seed`; labelled like the grid's
+/// case-key sweeps.
+pub fn sample(
+    base: &CaseOverrides,
+    sweeps: &[String],
+    sampling: Sampling,
+) -> Result<Vec<GridPoint>, Failure> {
+    let draws = sweeps
+        .iter()
+        .map(|s| parse_draw(s).map_err(|e| bad_arg("--sweep", s, e)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut rng = SplitMix64(sampling.seed);
+    Ok((0..sampling.count)
+        .map(|_| {
+            let (mut o, mut labels) = (base.clone(), Vec::new());
+            for (key, draw) in &draws {
+                let value = match draw {
+                    Draw::Range { low, high, unit } => {
+                        let v = low + (high - low) * rng.unit();
+                        if unit.is_empty() {
+                            format!("{v:?}")
+                        } else {
+                            format!("{v:?} {unit}")
+                        }
+                    }
+                    Draw::Choice(values) => {
+                        let k = (rng.unit() * values.len() as f64) as usize;
+                        values[k.min(values.len() - 1)].clone()
+                    }
+                };
+                o.set.push(format!("{key}={value}"));
+                labels.push((key.clone(), value));
+            }
+            (o, labels)
+        })
+        .collect())
+}
+
+/// `rolldyn run --sweep`: parses the sweeps, runs the grid (or, with
+/// `sampling`, random points), prints a line per point and the totals;
+/// with `report`, writes the sweep's report and each point's.
+#[allow(clippy::too_many_arguments)]
 pub fn command(
     mut case: CaseArgs,
     sweeps: &[String],
+    sampling: Option<Sampling>,
     duration: Option<String>,
     output: &str,
     options: &RunOptions,
     report: bool,
 ) -> Result<(), Failure> {
-    let sweeps = sweeps
-        .iter()
-        .map(|s| parse_run_sweep(s).map_err(|e| bad_arg("--sweep", s, e)))
-        .collect::<Result<Vec<_>, _>>()?;
-    let count: usize = sweeps
-        .iter()
-        .map(|s| match s {
-            RunSweep::Operating(_, v) => v.len(),
-            RunSweep::Key { values, .. } => values.len(),
-        })
-        .product();
+    let grid_sweeps = match sampling {
+        Some(_) => Vec::new(),
+        None => sweeps
+            .iter()
+            .map(|s| parse_run_sweep(s).map_err(|e| bad_arg("--sweep", s, e)))
+            .collect::<Result<Vec<_>, _>>()?,
+    };
+    let count = match sampling {
+        Some(s) if s.count == 0 => {
+            return Err(bad_arg("--sample", "0", "needs at least one run"));
+        }
+        Some(s) => s.count,
+        None => grid_sweeps
+            .iter()
+            .map(|s| match s {
+                RunSweep::Operating(_, v) => v.len(),
+                RunSweep::Key { values, .. } => values.len(),
+            })
+            .product(),
+    };
     if count > MAX_RUN_SWEEP_POINTS && !options.force {
         return Err(Failure::BadInput(format!(
             "--sweep: the grid has {count} runs, above the limit of {MAX_RUN_SWEEP_POINTS}; use fewer points or pass --force"
@@ -152,7 +300,10 @@ pub fn command(
     }
     case.overrides.overrides()?;
     let (source, text) = case.read()?;
-    let grid = grid(&case.overrides, &sweeps);
+    let grid = match sampling {
+        Some(s) => sample(&case.overrides, sweeps, s)?,
+        None => grid(&case.overrides, &grid_sweeps),
+    };
     let (points, labels): (Vec<_>, Vec<_>) = grid.into_iter().unzip();
     let dir = Path::new(output);
     let (rows, interrupted) = run(&source, text.as_deref(), &points, &labels, dir, options)?;
@@ -405,4 +556,51 @@ pub fn write_tables_labelled(
             .map_err(|e| Failure::BadInput(e.to_string()))?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn splitmix64_is_the_reference_sequence() {
+        // Steele, Lea & Flood's SplitMix64 from seed 0 (the reference
+        // implementation's first outputs).
+        let mut rng = SplitMix64(0);
+        assert_eq!(rng.next(), 0xE220_A839_7B1D_CDAF);
+        assert_eq!(rng.next(), 0x6E78_9E6A_A1B9_65F4);
+    }
+
+    #[test]
+    fn draws_are_seeded_in_range_and_labelled() {
+        let sweeps = [
+            "surface.outer.spall.0.length=0.1 mm..0.5 mm".to_string(),
+            "speed=1000 rpm,2000 rpm".to_string(),
+        ];
+        let at = |seed| {
+            let points = sample(
+                &CaseOverrides::default(),
+                &sweeps,
+                Sampling { count: 50, seed },
+            );
+            points.unwrap_or_else(|_| panic!("the draws parse"))
+        };
+        let points = at(7);
+        assert_eq!(points, at(7));
+        assert_ne!(points, at(8));
+        let mut speeds = std::collections::BTreeSet::new();
+        for (overrides, labels) in &points {
+            assert_eq!(labels[0].0, "surface.outer.spall.0.length");
+            let (v, unit) = number_and_unit(&labels[0].1).unwrap();
+            assert!((0.1..=0.5).contains(&v) && unit == "mm", "{labels:?}");
+            assert_eq!(labels[1].0, "operating.speed");
+            speeds.insert(labels[1].1.clone());
+            assert_eq!(overrides.set[0], format!("{}={}", labels[0].0, labels[0].1));
+        }
+        assert_eq!(speeds.len(), 2);
+        assert_eq!(number_and_unit("0.36 mm"), Some((0.36, "mm")));
+        assert_eq!(number_and_unit("1e-3"), Some((1e-3, "")));
+        assert!(parse_draw("surface.outer.spall.0.length=0.1 mm..0.5 in").is_err());
+        assert!(parse_draw("temperature=1..2").is_err());
+    }
 }

@@ -244,6 +244,50 @@ fn dynamic_sweep_over_case_keys_labels_its_rows() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// `--sample N --seed S`: N runs at random points, each labelled with its
+/// draws; the same seed gives the same points.
+#[test]
+fn sampled_sweep_is_seeded_and_labelled() {
+    let labels = |name: &str| {
+        let dir = temp_dir(name);
+        let d = dir.to_string_lossy().into_owned();
+        let o = rolldyn(
+            &[
+                "run",
+                "--duration",
+                "1 ms",
+                "--sweep",
+                "cage.pocket_friction=0.05..0.1",
+                "--sweep",
+                "radial=100N,200N",
+                "--sample",
+                "3",
+                "--seed",
+                "5",
+                "-o",
+                &d,
+            ],
+            None,
+        );
+        assert!(o.status.success(), "{}", stderr(&o));
+        let rows = rows(&dir);
+        std::fs::remove_dir_all(&dir).ok();
+        rows.iter()
+            .map(|r| {
+                let mu: f64 = r["cage.pocket_friction"].as_str().unwrap().parse().unwrap();
+                assert!((0.05..=0.1).contains(&mu), "{r}");
+                assert_eq!(r["status"], "completed");
+                let radial = r["operating.force_z"].as_str().unwrap().to_string();
+                assert!(radial == "100N" || radial == "200N", "{radial}");
+                (mu.to_bits(), radial)
+            })
+            .collect::<Vec<_>>()
+    };
+    let first = labels("run-sample-a");
+    assert_eq!(first.len(), 3);
+    assert_eq!(first, labels("run-sample-b"));
+}
+
 #[test]
 fn dynamic_sweep_input_errors() {
     let o = rolldyn(&["run", "--sweep", "temperature=1,2"], None);
