@@ -492,6 +492,22 @@ fn run_points(
     Ok((json_text(&rows)?, interrupted))
 }
 
+/// `rolldyn run --sweep … --sample COUNT --seed SEED`'s random points:
+/// each point's `--set` overrides and the drawn values (in sweep order).
+#[pyfunction]
+fn sample_points(
+    sweeps: Vec<String>,
+    count: usize,
+    seed: u64,
+) -> PyResult<Vec<(Vec<String>, Vec<String>)>> {
+    let sampling = run_sweep::Sampling { count, seed };
+    let points = run_sweep::sample(&CaseOverrides::default(), &sweeps, sampling).map_err(to_py)?;
+    Ok(points
+        .into_iter()
+        .map(|(o, labels)| (o.set, labels.into_iter().map(|(_, v)| v).collect()))
+        .collect())
+}
+
 /// One point of a sweep (a Dask task): runs the case with the point's
 /// overrides into `directory/name` and returns its row (JSON), the same
 /// row `run_points` gives.
@@ -560,6 +576,7 @@ fn _rolldyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run_points, m)?)?;
     m.add_function(wrap_pyfunction!(run_point, m)?)?;
     m.add_function(wrap_pyfunction!(point_name, m)?)?;
+    m.add_function(wrap_pyfunction!(sample_points, m)?)?;
     m.add_function(wrap_pyfunction!(write_sweep_tables, m)?)?;
     m.add_function(wrap_pyfunction!(report, m)?)?;
     Ok(())

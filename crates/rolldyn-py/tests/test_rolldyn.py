@@ -325,6 +325,21 @@ def test_sweep_rows_equal_the_clis_run_sweep(tmp_path):
     assert result.column("mean_cage_speed_rpm").shape == (4,)
 
 
+def test_sampled_sweep_equals_the_clis(tmp_path):
+    """``sample=N, seed=S`` draws the same points as ``--sample N --seed S``."""
+    cli("run", "--duration", "1 ms", "--sweep", "cage.pocket_friction=0.05..0.1",
+        "--sweep", "axial=150N,300N", "--sample", "3", "--seed", "4",
+        "-o", str(tmp_path / "cli"))
+    expected = json.loads((tmp_path / "cli" / "sweep.json").read_text())
+    grid = {"cage.pocket_friction": "0.05..0.1", "axial": ["150N", "300N"]}
+    result = rolldyn.sweep(None, grid, duration="1 ms", sample=3, seed=4)
+    assert len(result) == 3
+    for row, cli_row in zip(result, expected):
+        assert row["cage.pocket_friction"] == cli_row["cage.pocket_friction"]
+        assert row["axial"] == cli_row["operating.force_x"]
+        assert row["mean_cage_speed_rpm"] == cli_row["mean_cage_speed_rpm"]
+
+
 def test_sweep_on_a_dask_local_cluster_equals_the_serial_sweep(tmp_path):
     distributed = pytest.importorskip("distributed")
     serial = rolldyn.sweep(None, GRID, duration="1 ms")

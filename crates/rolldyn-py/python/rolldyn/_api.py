@@ -496,6 +496,25 @@ def _grid_points(grid: Mapping[str, Iterable[Any]]) -> tuple:
     return keys, points, overrides
 
 
+def _sampled_points(grid: Mapping[str, Any], count: int, seed: int) -> tuple:
+    """``count`` random points (``rolldyn run --sweep … --sample``): a
+    range text ``"0.1 mm..0.5 mm"`` is drawn uniformly, a list by choice."""
+    if not grid:
+        raise CaseError("grid: give at least one key with a range or a list of values")
+    if count < 1:
+        raise CaseError(f"sample {count}: needs at least one run")
+    specs = []
+    for key, v in grid.items():
+        if isinstance(v, str):
+            if ".." not in v:
+                raise CaseError(f"grid {key}: with sample=, a text is a range LOW..HIGH, got {v!r}")
+            specs.append(f"{key}={v}")
+        else:
+            specs.append(f"{key}=" + ",".join(_value_text(x) for x in v))
+    drawn = _rolldyn.sample_points(specs, count, seed)
+    return list(grid), [tuple(labels) for _, labels in drawn], [sets for sets, _ in drawn]
+
+
 def _with_inputs(row: dict, keys: list, point: tuple) -> dict:
     """The row with the grid's values after the point name."""
     out = {"point": row["point"]}
@@ -514,7 +533,8 @@ def _dask_point(name: str, source: str, text: Optional[str], sets: list,
 
 def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any = None, *,
           duration: Optional[str] = None, output: Optional[Union[str, os.PathLike]] = None,
-          force: bool = False, progress: Progress = None) -> SweepResult:
+          force: bool = False, progress: Progress = None, sample: Optional[int] = None,
+          seed: int = 0) -> SweepResult:
     """Dynamic runs over a grid: ``grid`` maps case keys (or ``speed``,
     ``axial``, ``radial``) to lists of values, e.g. ``{"speed": ["5000 rpm",
     "10000 rpm"], "axial": ["100 N", "1 kN"]}``; the first key is
@@ -523,9 +543,13 @@ def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any =
     ``distributed.Client`` they run as its tasks. The rows are the same
     either way (but for ``wall_time_s``). With ``output`` each point's run
     directory ``output/point-NNNN`` and ``sweep.json``/``sweep.csv`` are
-    kept (on a cluster ``output`` must be a shared file system)."""
+    kept (on a cluster ``output`` must be a shared file system). With
+    ``sample=N`` the sweep runs N random points instead of the grid
+    (``--sample N --seed S``): a range text ``"0.1 mm..0.5 mm"`` is drawn
+    uniformly, a list by choice; the rows hold the drawn values."""
     case = _with_duration(_case(case), duration)
-    keys, points, overrides = _grid_points(grid)
+    keys, points, overrides = _grid_points(grid) if sample is None \
+        else _sampled_points(grid, sample, seed)
     for sets in overrides:  # every point's case is valid before any runs
         _rolldyn.check(case._source, case._text, case._overrides + sets)
     if client is None:
