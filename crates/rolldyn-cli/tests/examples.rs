@@ -1,8 +1,9 @@
 //! Every directory of `examples/` (one per source paper, the CWRU 6205,
 //! the minute-long warm-up and the spindle pair)
 //! holds a README, its case file and a matplotlib script; its case is
-//! valid and runs, shortened. The full reproductions
-//! are the commands in each README.
+//! valid and runs, shortened; a scripted example (the CWRU test matrix)
+//! holds a README, its script and its table script, and runs, shortened.
+//! The full reproductions are the commands in each README.
 
 #![allow(clippy::unwrap_used)]
 
@@ -30,6 +31,9 @@ const EXAMPLES: [(&str, &[&str]); 8] = [
     ("spindle_pair", &["quasistatic"]),
 ];
 
+/// Examples that are a shell script over other examples' cases.
+const SCRIPTED: [&str; 1] = ["cwru_matrix"];
+
 #[test]
 fn every_example_has_its_files_and_its_case_runs() {
     let mut dirs: Vec<String> = std::fs::read_dir(examples())
@@ -37,7 +41,7 @@ fn every_example_has_its_files_and_its_case_runs() {
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
     dirs.sort();
-    let mut listed: Vec<&str> = EXAMPLES.iter().map(|(d, _)| *d).collect();
+    let mut listed: Vec<&str> = EXAMPLES.iter().map(|(d, _)| *d).chain(SCRIPTED).collect();
     listed.sort();
     assert_eq!(dirs, listed, "every example directory is tested");
     for (name, command) in EXAMPLES {
@@ -61,6 +65,39 @@ fn every_example_has_its_files_and_its_case_runs() {
         let readme = std::fs::read_to_string(dir.join("README.md")).unwrap();
         assert!(readme.contains("plot.py"), "{name}: README names plot.py");
     }
+}
+
+/// The CWRU test matrix, each run shortened to 8 ms: 64 labelled runs,
+/// their envelope spectra and the features table.
+#[test]
+fn the_cwru_matrix_script_writes_its_labelled_table() {
+    let dir = examples().join("cwru_matrix");
+    for file in ["README.md", "run.sh", "features.py"] {
+        assert!(dir.join(file).is_file(), "cwru_matrix/{file}");
+    }
+    let out = temp_dir("example-cwru-matrix");
+    let o = std::process::Command::new("sh")
+        .arg(dir.join("run.sh"))
+        .arg(&out)
+        .current_dir(examples().join(".."))
+        .env("ROLLDYN", env!("CARGO_BIN_EXE_rolldyn"))
+        .env("DURATION", "8 ms")
+        .output()
+        .expect("sh runs");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let table = std::fs::read_to_string(out.join("features.csv")).unwrap();
+    let rows: Vec<&str> = table.lines().collect();
+    assert_eq!(rows.len(), 1 + 64);
+    assert!(rows[0].starts_with("fault,position_oclock,size_in,load_hp,speed_rpm,status"));
+    for fault in [
+        "healthy,",
+        "outer,6,0.007,0,1797.0,completed",
+        "inner,",
+        "ball,",
+    ] {
+        assert!(rows.iter().any(|r| r.starts_with(fault)), "{fault}");
+    }
+    std::fs::remove_dir_all(&out).ok();
 }
 
 #[test]
