@@ -84,36 +84,32 @@ pub fn grid(base: &CaseOverrides, sweeps: &[RunSweep]) -> Vec<GridPoint> {
     for sweep in sweeps {
         points = points
             .iter()
-            .flat_map(|(p, labels)| {
-                let values: Vec<(Option<f64>, Option<&String>)> = match sweep {
-                    RunSweep::Operating(_, values) => {
-                        values.iter().map(|&v| (Some(v), None)).collect()
-                    }
-                    RunSweep::Key { values, .. } => {
-                        values.iter().map(|v| (None, Some(v))).collect()
-                    }
-                };
-                values.into_iter().map(move |(number, text)| {
-                    let (mut o, mut labels) = (p.clone(), labels.clone());
-                    match (sweep, number, text) {
-                        // SI text: the point runs at exactly the swept value.
-                        (RunSweep::Operating(Swept::Speed, _), Some(v), _) => {
-                            o.speed = Some(format!("{v:?} rad/s"))
-                        }
-                        (RunSweep::Operating(Swept::Axial, _), Some(v), _) => {
-                            o.axial_load = Some(format!("{v:?} N"))
-                        }
-                        (RunSweep::Operating(Swept::Radial, _), Some(v), _) => {
-                            o.radial_load = Some(format!("{v:?} N"))
-                        }
-                        (RunSweep::Key { key, .. }, _, Some(v)) => {
+            .flat_map(|(p, labels)| -> Vec<GridPoint> {
+                match sweep {
+                    RunSweep::Operating(swept, values) => values
+                        .iter()
+                        .map(|&v| {
+                            let mut o = p.clone();
+                            // SI text: the point runs at exactly the swept value.
+                            match swept {
+                                Swept::Speed => o.speed = Some(format!("{v:?} rad/s")),
+                                Swept::Axial => o.axial_load = Some(format!("{v:?} N")),
+                                Swept::Radial => o.radial_load = Some(format!("{v:?} N")),
+                            }
+                            (o, labels.clone())
+                        })
+                        .collect(),
+                    RunSweep::Key { key, values } => values
+                        .iter()
+                        .map(|v| {
+                            let mut o = p.clone();
                             o.set.push(format!("{key}={v}"));
+                            let mut labels = labels.clone();
                             labels.push((key.clone(), v.clone()));
-                        }
-                        _ => unreachable!("a sweep's values match its kind"),
-                    }
-                    (o, labels)
-                })
+                            (o, labels)
+                        })
+                        .collect(),
+                }
             })
             .collect();
     }
