@@ -4,4 +4,5 @@
 
 pub mod elliptic;
 pub mod interp;
+pub mod random;
 pub mod roots;

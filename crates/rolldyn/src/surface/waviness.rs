@@ -3,6 +3,7 @@
 //! law with random phases (deterministic for a seed).
 
 use crate::error::{InvalidParameter, require_non_negative, require_positive};
+use crate::math::random::SplitMix64;
 use std::f64::consts::TAU;
 
 /// One waviness harmonic: q cos(l θ + η).
@@ -83,27 +84,6 @@ impl RandomWaviness {
                 phase: TAU * rng.unit(),
             })
             .collect()
-    }
-}
-
-/// SplitMix64 (Steele, Lea & Flood 2014): a tiny, fully specified generator,
-/// so random surfaces do not depend on a crate's version.
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn new(seed: u64) -> Self {
-        Self(seed)
-    }
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform on [0, 1) with 53 random bits.
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
     }
 }
 
