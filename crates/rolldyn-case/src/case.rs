@@ -11,6 +11,10 @@ use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
 use rolldyn::traction::{TractionIntegration, TractionModel};
 use rolldyn::{BearingGeometry, Material};
 
+/// The recorder's rate when the case gives none (`output.sample_rate`)
+/// \[Hz\].
+pub const DEFAULT_SAMPLE_RATE: f64 = 10_000.0;
+
 mod arrangement;
 mod bearing;
 mod cage;
@@ -21,6 +25,7 @@ mod material;
 mod operating;
 mod output;
 mod rings;
+mod sensor;
 mod solver;
 mod surface;
 mod thermal;
@@ -124,6 +129,9 @@ pub struct Case {
     pub drag: DragParameters,
     /// Friction of contact seals (None: an open bearing).
     pub seals: Option<rolldyn::dynamics::SealFriction>,
+    /// The accelerometer on the housing and its acquisition (None: no
+    /// sensor), acquiring at the output's sample rate.
+    pub sensor: Option<rolldyn::signal::sensor::SensorSpec>,
     /// Raceway and ball surfaces (waviness, spalls).
     pub surface: rolldyn::surface::SurfaceModel,
     /// Simulated time \[s\], if given.
@@ -379,6 +387,10 @@ impl Case {
         .unwrap_or(0.0);
         let drag = dynamics::drag(&raw.drag)?;
         let seals = dynamics::seals(raw.seals.as_ref())?;
+        let sensor = sensor::sensor(
+            raw.sensor.as_ref(),
+            solver.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE),
+        )?;
         let surface = surface::surface(
             &raw.surface,
             bearing.geometry.ball_count,
@@ -417,6 +429,7 @@ impl Case {
             start: solver.start,
             drag,
             seals,
+            sensor,
             surface,
             duration: solver.duration,
             relative_tolerance: solver.relative_tolerance,

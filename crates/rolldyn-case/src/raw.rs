@@ -16,11 +16,13 @@ use std::fmt;
 mod arrangement;
 mod life;
 mod model;
+mod sensor;
 mod surface;
 mod thermal;
 pub use arrangement::*;
 pub use life::*;
 pub use model::*;
+pub use sensor::*;
 pub use surface::*;
 pub use thermal::*;
 
@@ -46,6 +48,9 @@ pub struct RawCase {
     pub drag: RawDrag,
     /// Friction of contact seals (dynamic engine; absent: an open bearing).
     pub seals: Option<RawSeals>,
+    /// An accelerometer on the housing and its acquisition (dynamic
+    /// engine; absent: no sensor channels).
+    pub sensor: Option<RawSensor>,
     /// Materials of balls and rings.
     #[serde(default)]
     pub materials: RawMaterials,

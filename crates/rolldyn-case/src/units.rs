@@ -137,8 +137,14 @@ dimension!(/// Unbalance (mass × radius), SI kg·m.
     Unbalance, "unbalance", "50 g.mm", 1e3, "kg·m",
     [("kg.m", 1.0), ("g.mm", 1e-6), ("g.cm", 1e-5), ("kg.mm", 1e-3)]);
 
+dimension!(/// Acceleration, SI m/s². "g" and "mg" are the standard gravity
+    /// g_n = 9.806 65 m/s² and its thousandth (in an acceleration's place
+    /// only: elsewhere they are grams).
+    Acceleration, "acceleration", "0.01 m/s^2", 1e9, "m/s²",
+    [("m/s^2", 1.0), ("mm/s^2", 1e-3), ("g", 9.806_65), ("mg", 9.806_65e-3)]);
+
 /// Every dimension's name and units, for "that is a unit of X" messages.
-fn all_units() -> [(&'static str, UnitTable); 25] {
+fn all_units() -> [(&'static str, UnitTable); 26] {
     [
         (Length::NAME, Length::UNITS),
         (Angle::NAME, Angle::UNITS),
@@ -168,6 +174,7 @@ fn all_units() -> [(&'static str, UnitTable); 25] {
         (RotationalDamping::NAME, RotationalDamping::UNITS),
         (WindageCoefficient::NAME, WindageCoefficient::UNITS),
         (Unbalance::NAME, Unbalance::UNITS),
+        (Acceleration::NAME, Acceleration::UNITS),
     ]
 }
 

@@ -66,6 +66,7 @@ fn every_schema_key_is_documented() {
         "outer_ring",
         "drag",
         "seals",
+        "sensor",
         "materials",
         "lubricant",
         "operating",

@@ -43,6 +43,8 @@ pub fn group_of(name: &str) -> Option<(ChannelGroup, Option<usize>)> {
         ChannelGroup::Power
     } else if name.starts_with("temperature_") || name == "oil_viscosity_pa_s" {
         ChannelGroup::Thermal
+    } else if name.starts_with("sensor_") {
+        ChannelGroup::Sensor
     } else if name.ends_with("_work_j") || name.ends_with("_energy_j") {
         ChannelGroup::Energy
     } else {
@@ -73,6 +75,7 @@ mod tests {
         for (name, group, ball) in [
             ("inner_ring_speed_rpm", ChannelGroup::Rings, None),
             ("housing_force_y_n", ChannelGroup::Rings, None),
+            ("sensor_acceleration_m_s2", ChannelGroup::Sensor, None),
             ("outer_ring_acceleration_z_m_s2", ChannelGroup::Rings, None),
             ("cage_velocity_y_m_s", ChannelGroup::Cage, None),
             ("pocket_force_max_n", ChannelGroup::Cage, None),

@@ -410,6 +410,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 output
             );
             emit(&text)?;
+            if let Some(sensor) = summary.sensor.as_ref().filter(|s| s.clipped_samples > 0) {
+                eprintln!(
+                    "warning: sensor: {} samples beyond the ADC's range were clipped; raise sensor.full_scale",
+                    sensor.clipped_samples
+                );
+            }
             if let Some(v) = &summary.accuracy.verify {
                 let worst = v.changes.iter().max_by(|a, b| {
                     (a.relative_change / a.limit).total_cmp(&(b.relative_change / b.limit))

@@ -6,7 +6,6 @@
 //! ([`crate::channel_groups`]).
 
 use crate::run_stats::RunStatistics;
-use nalgebra::Vector3;
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn_io::{OutputError, SeriesWriter, TimeSeries};
 
@@ -99,16 +98,25 @@ pub(crate) struct Channels {
     power_per_ball: bool,
     /// Whether the per-ball asperity shares are recorded (mixed lubrication).
     mixed: bool,
+    /// Whether the sensor's channels are recorded (`[sensor]`).
+    sensor: bool,
     /// Scratch derivative vector (accelerations of the rings).
     derivative: Vec<f64>,
 }
+
+/// The sensor's channels (`[sensor]`, docs/signal.md): the acquired
+/// acceleration and the housing's true acceleration at the sensor.
+pub(crate) const SENSOR_CHANNELS: [&str; 2] = [
+    "sensor_acceleration_m_s2",
+    "sensor_housing_acceleration_m_s2",
+];
 
 impl Channels {
     pub(crate) fn new(
         balls: usize,
         creep: bool,
         thermal: bool,
-        [power_per_ball, mixed]: [bool; 2],
+        [power_per_ball, mixed, sensor]: [bool; 3],
         states: usize,
         [duration, sample_rate]: [f64; 2],
         selection: &rolldyn_case::case::OutputSelection,
@@ -155,6 +163,11 @@ impl Channels {
             series.channel(name, unit);
         }
         crate::power_channels::add_channels(&mut series, thermal);
+        if sensor {
+            for name in SENSOR_CHANNELS {
+                series.channel(name, "m/s^2");
+            }
+        }
         for j in 0..balls {
             for (name, unit) in BALL_CHANNELS {
                 series.channel(format!("ball{j}_{name}"), unit);
@@ -202,6 +215,7 @@ impl Channels {
             creep,
             power_per_ball,
             mixed,
+            sensor,
             derivative: vec![0.0; states],
         }
     }
@@ -222,16 +236,7 @@ impl Channels {
         let power = model.rhs_with_samples(t, y, &mut self.derivative, contacts);
         let dy = &self.derivative;
         let o = l.outer();
-        let housing = model
-            .parameters()
-            .outer_ring
-            .as_ref()
-            .map_or(Vector3::zeros(), |ring| {
-                -ring.housing.force(
-                    &Vector3::new(0.0, y[o], y[o + 1]),
-                    &Vector3::new(0.0, y[o + 2], y[o + 3]),
-                )
-            });
+        let housing = model.support_force(y).unwrap_or_default();
         let (pocket_sum, pocket_max) = model.pocket_forces(y);
         let [peak_inner, peak_outer] = model.take_peak_loads();
         row.clear();
@@ -274,6 +279,13 @@ impl Channels {
         ]);
         row.push(model.pure_rolling_ratio(contacts, y));
         crate::power_channels::push(row, &power, model);
+        if self.sensor {
+            // Produced at the accepted step that reached t (NaN if the run
+            // samples at another rate than the sensor acquires).
+            let sample = model.sensor_sample(t);
+            row.push(sample.map_or(f64::NAN, |s| s.acquired));
+            row.push(sample.map_or(f64::NAN, |s| s.housing));
+        }
         for (j, c) in contacts.iter().enumerate().take(self.balls) {
             let b = l.ball(j);
             let (attitude, yaw) = model.ball_attitude(j, y);

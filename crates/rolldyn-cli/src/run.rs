@@ -26,8 +26,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::Instant;
 
-/// Default recorder rate when the case gives none \[Hz\].
-pub const DEFAULT_SAMPLE_RATE: f64 = 10_000.0;
+pub use rolldyn_case::case::DEFAULT_SAMPLE_RATE;
 /// The time series' directory (a Parquet dataset) in a run directory.
 pub const SERIES_DIR: &str = "timeseries.parquet";
 /// The dataset of the channels recorded at `output.slow_rate`.
@@ -239,7 +238,11 @@ pub(crate) fn run_once(
             TractionModel::Fastsim(_) | TractionModel::ExactTable(_)
         ),
         model.thermal().is_some(),
-        [case.power_per_ball, params.mixed_lubrication.is_some()],
+        [
+            case.power_per_ball,
+            params.mixed_lubrication.is_some(),
+            model.sensor().is_some(),
+        ],
         model.layout().len(),
         [duration, case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE)],
         &case.output,

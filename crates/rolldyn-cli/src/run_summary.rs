@@ -70,9 +70,11 @@ pub struct Summary {
     /// Vibration velocity RMS and cage-whirl metrics.
     #[serde(flatten)]
     pub vibration: VibrationSummary,
-    /// The spectra's lines of a run with a spall or waviness.
+    /// The spectra's lines of a run with a spall, waviness or a sensor.
     #[serde(flatten)]
     pub surface_lines: crate::vibration::SurfaceLines,
+    /// The sensor's record over the window (null without `[sensor]`).
+    pub sensor: Option<crate::vibration::SensorSummary>,
     /// Friction power by component and friction torque.
     #[serde(flatten)]
     pub power: PowerSummary,
@@ -221,6 +223,7 @@ pub(crate) fn summarise(
             balls,
             &case.surface,
         ),
+        sensor: crate::vibration::sensor_summary(&signal, model.sensor()),
         power: crate::power_channels::summarise(&window, stats),
         thermal_coupling: model
             .thermal()

@@ -126,10 +126,58 @@ pub fn summarise(series: &TimeSeries, from: usize, outer_ring: bool) -> Vibratio
     }
 }
 
-/// The channel whose envelope spectrum the summary reports: the inner
-/// ring's vertical acceleration (the accelerometer direction of the CWRU
-/// records; the presets' radial load acts along z).
+/// The channel whose envelope spectrum the summary reports without a
+/// sensor: the inner ring's vertical acceleration (the accelerometer
+/// direction of the CWRU records; the presets' radial load acts along z).
 pub const ENVELOPE_CHANNEL: &str = "inner_ring_acceleration_z_m_s2";
+
+/// The acquired channel of a run with `[sensor]`: the one its summary
+/// analyses.
+pub const SENSOR_CHANNEL: &str = "sensor_acceleration_m_s2";
+
+/// The channel the summary analyses in `series`: the sensor's when the run
+/// has one, else [`ENVELOPE_CHANNEL`].
+pub fn analysed_channel(series: &TimeSeries) -> &'static str {
+    if series.column(SENSOR_CHANNEL).is_some() {
+        SENSOR_CHANNEL
+    } else {
+        ENVELOPE_CHANNEL
+    }
+}
+
+/// The condition indicators of the sensor's record over the averaging
+/// window (`sensor` in `summary.json`, docs/cli.md).
+#[derive(Serialize, Clone, Debug)]
+pub struct SensorSummary {
+    /// RMS about the mean \[m/s²\].
+    pub rms_m_s2: f64,
+    /// Largest |a − mean| \[m/s²\].
+    pub peak_m_s2: f64,
+    /// Peak / RMS.
+    pub crest_factor: f64,
+    /// m₄ / m₂² (3 for Gaussian noise; impacts raise it).
+    pub kurtosis: f64,
+    /// Samples of the whole run beyond the ADC's range (clipped).
+    pub clipped_samples: u64,
+}
+
+/// The sensor's indicators over `series` (the window); None without a
+/// sensor or with fewer than 2 samples.
+pub fn sensor_summary(
+    series: &TimeSeries,
+    sensor: Option<&rolldyn::signal::SensorChain>,
+) -> Option<SensorSummary> {
+    let sensor = sensor?;
+    let record = series.column(SENSOR_CHANNEL).filter(|r| r.len() > 1)?;
+    let [rms, peak, crest_factor, kurtosis] = rolldyn::signal::statistics(record);
+    Some(SensorSummary {
+        rms_m_s2: rms,
+        peak_m_s2: peak,
+        crest_factor,
+        kurtosis,
+        clipped_samples: sensor.clipped(),
+    })
+}
 
 /// The characteristic lines whose envelope amplitudes are reported, and
 /// their keys under `--verify`.
@@ -160,7 +208,7 @@ pub struct EnvelopeLines {
     pub lines: Vec<EnvelopeLine>,
 }
 
-/// The envelope lines of [`ENVELOPE_CHANNEL`] over samples `from..` of
+/// The envelope lines of the [`analysed_channel`] over samples `from..` of
 /// `series` at the lines of `characteristic`; None when the channel is
 /// missing or the record is shorter than 64 samples.
 pub fn envelope_lines(
@@ -188,7 +236,7 @@ pub fn envelope_lines(
         })
         .collect();
     Some(EnvelopeLines {
-        channel: ENVELOPE_CHANNEL,
+        channel: analysed_channel(series),
         band_hz: [band.0, band.1],
         resolution_hz: resolution,
         lines,
@@ -200,14 +248,15 @@ pub fn envelope_lines(
 #[derive(Serialize, Clone, Debug)]
 pub struct SurfaceLines {
     /// Envelope-spectrum amplitudes of the characteristic lines (runs with
-    /// a spall; null otherwise).
+    /// a spall or a sensor; null otherwise).
     pub envelope_lines: Option<EnvelopeLines>,
     /// Amplitude spectrum at the lines the case's waviness excites (runs
     /// with waviness; null otherwise).
     pub waviness_lines: Option<WavinessLines>,
 }
 
-/// [`envelope_lines`] for a surface with a spall and [`waviness_lines`].
+/// [`envelope_lines`] for a surface with a spall or a run with a sensor,
+/// and [`waviness_lines`].
 pub fn surface_lines(
     series: &TimeSeries,
     characteristic: &CharacteristicFrequencies,
@@ -215,18 +264,19 @@ pub fn surface_lines(
     surface: &SurfaceModel,
 ) -> SurfaceLines {
     SurfaceLines {
-        envelope_lines: surface
-            .spalls()
-            .next()
-            .and_then(|_| envelope_lines(series, 0, characteristic)),
+        envelope_lines: (surface.spalls().next().is_some()
+            || series.column(SENSOR_CHANNEL).is_some())
+        .then(|| envelope_lines(series, 0, characteristic))
+        .flatten(),
         waviness_lines: waviness_lines(series, 0, characteristic, ball_count, surface),
     }
 }
 
-/// [`ENVELOPE_CHANNEL`] over samples `from..` of `series` and its sample
-/// rate; None when the channel is missing or has fewer than 64 samples.
+/// The [`analysed_channel`] over samples `from..` of `series` and its
+/// sample rate; None when the channel is missing or has fewer than 64
+/// samples.
 fn analysed_record(series: &TimeSeries, from: usize) -> Option<(&[f64], f64)> {
-    let record = series.column(ENVELOPE_CHANNEL)?.get(from..)?;
+    let record = series.column(analysed_channel(series))?.get(from..)?;
     let time = series.column("time_s")?.get(from..)?;
     let (&first, &last) = (time.first()?, time.last()?);
     if record.len() < 64 || last <= first {
@@ -271,7 +321,7 @@ pub struct WavinessLines {
     pub lines: Vec<WavinessLine>,
 }
 
-/// The waviness lines of [`ENVELOPE_CHANNEL`]'s amplitude spectrum over
+/// The waviness lines of the [`analysed_channel`]'s amplitude spectrum over
 /// samples `from..` of `series`: every order of `surface`'s raceway
 /// (radial and axial) and ball waviness, mapped to its principal
 /// frequencies by Deng et al. 2022's Table 2 at the run's mean speeds
@@ -349,7 +399,7 @@ pub fn waviness_lines(
     lines.sort_by(|a, b| a.frequency_hz.total_cmp(&b.frequency_hz));
     lines.truncate(MAX_WAVINESS_LINES);
     Some(WavinessLines {
-        channel: ENVELOPE_CHANNEL,
+        channel: analysed_channel(series),
         resolution_hz: spectrum.resolution(),
         lines,
     })

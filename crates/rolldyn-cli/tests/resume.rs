@@ -13,7 +13,8 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// The default case, shortened to `duration`; `integrator` chosen.
+/// The default case with a sensor, shortened to `duration`; `integrator`
+/// chosen.
 /// At 40 kHz the ROS34PW2 run's time series spans two part files, so
 /// that a kill can fall on either side of the boundary.
 fn args<'a>(dir: &'a str, integrator: &'a str, duration: &'a str) -> Vec<&'a str> {
@@ -27,6 +28,10 @@ fn args<'a>(dir: &'a str, integrator: &'a str, duration: &'a str) -> Vec<&'a str
         integrator,
         "--set",
         "output.sample_rate=\"40 kHz\"",
+        // The sensor chain's state (modes, filter, noise generator) is in
+        // the checkpoint too.
+        "--set",
+        "sensor={ noise = \"0.05 m/s^2\" }",
         "--checkpoint-interval",
         "0 s",
     ]

@@ -1,6 +1,7 @@
 //! The vibration section of a run report, for a run with a spall,
-//! waviness or a speed ramp: the inner ring's vertical acceleration as a diagnostics
-//! engineer reads a measured record (docs/signal.md). For a spall, over
+//! waviness, a sensor or a speed ramp: the housing accelerometer's signal
+//! (a run with `[sensor]`) or else the inner ring's vertical acceleration,
+//! as a diagnostics engineer reads a measured record (docs/signal.md). For a spall, over
 //! the averaging window: its RMS, peak, crest factor and kurtosis, the
 //! time signal, the amplitude spectrum and the envelope spectrum with the
 //! characteristic lines marked (f_c, BPFO, BPFI ± f_i, 2×BSF ± f_c;
@@ -15,13 +16,33 @@ use crate::run::RunData;
 use crate::svg::{HeatMap, Plot, Series};
 use crate::{Section, cell};
 use rolldyn::signal::{CharacteristicFrequencies, Spectrogram, Spectrum, Window, spectrogram};
-use rolldyn::signal::{amplitude_spectrum, envelope_spectrum};
+use rolldyn::signal::{amplitude_spectrum, envelope_spectrum, statistics};
 use rolldyn_io::{InputError, float_columns, for_each_batch, read_schema};
 use std::collections::VecDeque;
 use std::path::Path;
 
-/// The channel analysed: the one of the summary's `envelope_lines`.
+/// The channel analysed without a sensor: the one of the summary's
+/// `envelope_lines` then.
 pub const CHANNEL: &str = "inner_ring_acceleration_z_m_s2";
+
+/// The channel the summary's lines analysed (`envelope_lines.channel` or
+/// `waviness_lines.channel`: the sensor's in a run with `[sensor]`), else
+/// [`CHANNEL`].
+pub fn analysed_channel(summary: &serde_json::Value) -> &str {
+    ["envelope_lines", "waviness_lines"]
+        .iter()
+        .find_map(|key| summary.get(key)?.get("channel")?.as_str())
+        .unwrap_or(CHANNEL)
+}
+
+/// How the report names `channel`.
+fn describe(channel: &str) -> &'static str {
+    if channel.starts_with("sensor_") {
+        "The housing accelerometer's acquired signal"
+    } else {
+        "The inner ring's vertical acceleration"
+    }
+}
 
 /// Times \[s\] and values of one channel.
 pub type Record = (Vec<f64>, Vec<f64>);
@@ -29,14 +50,18 @@ pub type Record = (Vec<f64>, Vec<f64>);
 /// Most samples of the window kept (the last ones): 2¹⁶, 1 MB.
 pub const MAX_SAMPLES: usize = 1 << 16;
 
-/// Time and [`CHANNEL`] over `[t0, t1]` (the last [`MAX_SAMPLES`]), read in
+/// Time and `channel` over `[t0, t1]` (the last [`MAX_SAMPLES`]), read in
 /// one pass of two columns; None when the run did not record the channel.
-pub fn read_window(path: &Path, [t0, t1]: [f64; 2]) -> Result<Option<Record>, InputError> {
-    if read_schema(path)?.unit(CHANNEL).is_none() {
+pub fn read_window(
+    path: &Path,
+    channel: &str,
+    [t0, t1]: [f64; 2],
+) -> Result<Option<Record>, InputError> {
+    if read_schema(path)?.unit(channel).is_none() {
         return Ok(None);
     }
     let mut kept = VecDeque::new();
-    for_each_batch(path, Some(&["time_s", CHANNEL]), |batch| {
+    for_each_batch(path, Some(&["time_s", channel]), |batch| {
         let columns = float_columns(batch)?;
         for (&t, &a) in columns[0].iter().zip(columns[1]) {
             if t >= t0 && t <= t1 {
@@ -64,34 +89,18 @@ pub fn read_records(
     let has = |key: &str| summary.get(key).is_some_and(|v| !v.is_null());
     let spalled = has("envelope_lines") || has("waviness_lines");
     let ramp = series.column("inner_ring_speed_rpm").is_some_and(is_ramp);
+    let channel = analysed_channel(summary);
     let defect = if spalled {
-        read_window(path, window)?
+        read_window(path, channel, window)?
     } else {
         None
     };
     let run_up = if ramp {
-        read_window(path, [f64::NEG_INFINITY, f64::INFINITY])?
+        read_window(path, channel, [f64::NEG_INFINITY, f64::INFINITY])?
     } else {
         None
     };
     Ok((defect, run_up))
-}
-
-/// RMS, peak |a|, crest factor (peak / RMS) and kurtosis (m₄ / m₂², 3 for
-/// a Gaussian record; impacts raise it) of `record` about its mean.
-pub fn statistics(record: &[f64]) -> [f64; 4] {
-    let n = record.len() as f64;
-    let mean = record.iter().sum::<f64>() / n;
-    let (mut m2, mut m4, mut peak) = (0.0, 0.0, 0.0f64);
-    for &x in record {
-        let d = x - mean;
-        m2 += d * d;
-        m4 += d * d * d * d;
-        peak = peak.max(d.abs());
-    }
-    let (m2, m4) = (m2 / n, m4 / n);
-    let rms = m2.sqrt();
-    [rms, peak, peak / rms, m4 / (m2 * m2)]
 }
 
 /// The run's characteristic frequencies from its summary.
@@ -135,7 +144,9 @@ pub fn section(data: &RunData) -> Option<Section> {
     let defect = defect(data);
     let waviness = waviness(data);
     let run_up = run_up(data);
+    let sensed = data.summary.get("sensor").is_some_and(|v| !v.is_null());
     let title = match (&defect, &waviness, &run_up) {
+        (Some(_), _, _) if sensed => "Vibration: the housing sensor's record",
         (Some(_), _, _) => "Vibration: the defect's signature",
         (None, Some(_), _) => "Vibration: the waviness signature",
         (None, None, Some(_)) => "Vibration: the run-up spectrogram",
@@ -217,7 +228,7 @@ fn defect(data: &RunData) -> Option<Section> {
     let (sf, sv) = cut(&spectrum, 0.5 * rate);
     let spectrum_plot = Plot::new("Amplitude spectrum", "frequency [Hz]", "amplitude [m/s²]")
         .with(Series::line("spectrum", &sf, &sv));
-    let signal_plot = signal_plot(time, record);
+    let signal_plot = signal_plot(time, record, analysed_channel(&data.summary));
     let line_rows = lines
         .get("lines")
         .and_then(serde_json::Value::as_array)
@@ -239,7 +250,8 @@ fn defect(data: &RunData) -> Option<Section> {
     Some(
         Section::new("vibration", "Vibration: the defect's signature")
             .paragraph(format!(
-                "The inner ring's vertical acceleration over the averaging window ({} samples at {} Hz, {}–{} ms). Kurtosis is m₄/m₂² (3 for a Gaussian record; impacts raise it). The envelope spectrum band-passes the record to 0.1–0.4 of the sample rate and takes its Hilbert envelope; markers sit on the characteristic lines from the run's mean shaft and cage speeds and contact angles (BPFO {} Hz, BPFI {} Hz, 2×BSF {} Hz, f_c {} Hz).",
+                "{} over the averaging window ({} samples at {} Hz, {}–{} ms). Kurtosis is m₄/m₂² (3 for a Gaussian record; impacts raise it). The envelope spectrum band-passes the record to 0.1–0.4 of the sample rate and takes its Hilbert envelope; markers sit on the characteristic lines from the run's mean shaft and cage speeds and contact angles (BPFO {} Hz, BPFI {} Hz, 2×BSF {} Hz, f_c {} Hz).",
+                describe(analysed_channel(&data.summary)),
                 record.len(),
                 cell(Some(rate)),
                 cell(Some(1e3 * first)),
@@ -266,14 +278,10 @@ fn statistics_row(record: &[f64]) -> Vec<String> {
 }
 
 /// The record against time.
-fn signal_plot(time: &[f64], record: &[f64]) -> Plot {
+fn signal_plot(time: &[f64], record: &[f64], channel: &str) -> Plot {
     let t_ms: Vec<f64> = time.iter().map(|t| 1e3 * t).collect();
-    Plot::new(
-        "Inner-ring vertical acceleration",
-        "time [ms]",
-        "acceleration [m/s²]",
-    )
-    .with(Series::line("a_z", &t_ms, record))
+    Plot::new(describe(channel), "time [ms]", "acceleration [m/s²]")
+        .with(Series::line(channel, &t_ms, record))
 }
 
 /// The waviness's part (a run whose summary has `waviness_lines` and no
@@ -343,7 +351,8 @@ fn waviness(data: &RunData) -> Option<Section> {
     Some(
         Section::new("vibration", "Vibration: the waviness signature")
             .paragraph(format!(
-                "The inner ring's vertical acceleration over the averaging window ({} samples at {} Hz). The lines are those the case's waviness orders excite (Deng et al. 2022 Table 2: a raceway order kZ ± 1 gives a radial line at kZ f_c on the outer race and kZ(f_i − f_c) ± f_i on the inner, an order kZ an axial one; a ball order 2k gives 2k f_b and 2k f_b ± f_c), at the run's mean shaft and cage speeds; the amplitude is the spectrum's largest within 1.5 bins.",
+                "{} over the averaging window ({} samples at {} Hz). The lines are those the case's waviness orders excite (Deng et al. 2022 Table 2: a raceway order kZ ± 1 gives a radial line at kZ f_c on the outer race and kZ(f_i − f_c) ± f_i on the inner, an order kZ an axial one; a ball order 2k gives 2k f_b and 2k f_b ± f_c), at the run's mean shaft and cage speeds; the amplitude is the spectrum's largest within 1.5 bins.",
+                describe(analysed_channel(&data.summary)),
                 record.len(),
                 cell(Some(rate)),
             ))
@@ -352,7 +361,7 @@ fn waviness(data: &RunData) -> Option<Section> {
                 &["part", "order", "frequency [Hz]", "motion", "amplitude [m/s²]"],
                 rows,
             )
-            .figure(signal_plot(time, record))
+            .figure(signal_plot(time, record, analysed_channel(&data.summary)))
             .figure(plot),
     )
 }
@@ -464,8 +473,9 @@ fn run_up(data: &RunData) -> Option<Section> {
     let sg = spectrogram(record, rate, segment, 0.5, Window::Hann).ok()?;
     let heat = heat_map(&sg, time[0]);
     let top = heat.y_edges.last().copied().unwrap_or(0.5 * rate);
+    let channel = analysed_channel(&data.summary);
     let mut plot = Plot::new(
-        "Spectrogram of the inner ring's vertical acceleration",
+        format!("Spectrogram: {}", describe(channel).to_lowercase()),
         "time [s]",
         "frequency [Hz]",
     )
@@ -496,7 +506,8 @@ fn run_up(data: &RunData) -> Option<Section> {
     Some(
         Section::new("vibration", "")
             .paragraph(format!(
-                "The shaft speed changes over the run, so the spectrum changes with it: the spectrogram of the inner ring's vertical acceleration over the whole run ({} samples at {} Hz; Hann segments of {} samples overlapping by half; levels in dB, 0 dB at the 99.5th percentile of the cells so that a start transient saturates rather than darkens the rest, down to {HEAT_FLOOR_DB} dB). Lines follow the orders of the shaft speed ({}): a component that rises with them is speed-locked, one that stays at a frequency is a resonance.",
+                "The shaft speed changes over the run, so the spectrum changes with it: the spectrogram of {} over the whole run ({} samples at {} Hz; Hann segments of {} samples overlapping by half; levels in dB, 0 dB at the 99.5th percentile of the cells so that a start transient saturates rather than darkens the rest, down to {HEAT_FLOOR_DB} dB). Lines follow the orders of the shaft speed ({}): a component that rises with them is speed-locked, one that stays at a frequency is a resonance.",
+                describe(channel).to_lowercase(),
                 record.len(),
                 cell(Some(rate)),
                 segment,
@@ -513,23 +524,6 @@ fn run_up(data: &RunData) -> Option<Section> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn statistics_of_a_sine_and_of_impacts() {
-        let sine: Vec<f64> = (0..10_000)
-            .map(|k| (std::f64::consts::TAU * k as f64 / 100.0).sin())
-            .collect();
-        let [rms, peak, crest, kurtosis] = statistics(&sine);
-        assert!((rms - 0.5f64.sqrt()).abs() < 1e-9);
-        assert!((peak - 1.0).abs() < 1e-9);
-        assert!((crest - 2.0f64.sqrt()).abs() < 1e-9);
-        // A sine's kurtosis is 1.5; sparse impacts raise it far above 3.
-        assert!((kurtosis - 1.5).abs() < 1e-6);
-        let impacts: Vec<f64> = (0..10_000)
-            .map(|k| if k % 1000 == 0 { 10.0 } else { 0.0 })
-            .collect();
-        assert!(statistics(&impacts)[3] > 100.0);
-    }
 
     #[test]
     fn the_heat_map_puts_a_sine_in_its_row_and_pools_to_its_limits() {

@@ -23,11 +23,13 @@ pub enum ChannelGroup {
     Power,
     /// Temperatures and oil viscosity of a thermally coupled run.
     Thermal,
+    /// The housing accelerometer's channels (a case with `[sensor]`).
+    Sensor,
 }
 
 impl ChannelGroup {
     /// Every group, in the order of their names.
-    pub const ALL: [ChannelGroup; 7] = [
+    pub const ALL: [ChannelGroup; 8] = [
         Self::Rings,
         Self::Cage,
         Self::Balls,
@@ -35,6 +37,7 @@ impl ChannelGroup {
         Self::Energy,
         Self::Power,
         Self::Thermal,
+        Self::Sensor,
     ];
 
     /// Name in case files.
@@ -47,6 +50,7 @@ impl ChannelGroup {
             Self::Energy => "energy",
             Self::Power => "power",
             Self::Thermal => "thermal",
+            Self::Sensor => "sensor",
         }
     }
 }

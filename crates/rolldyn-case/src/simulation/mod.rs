@@ -4,7 +4,8 @@
 //!
 //! * [`Simulation`]: the dynamic model of a case with its initial state
 //!   (`solver.start`), the thermal network coupled when the case asks
-//!   (`thermal.run_coupling`), and its integrator ([`SolverSettings`]);
+//!   (`thermal.run_coupling`), the housing's accelerometer attached when
+//!   it has one (`[sensor]`), and its integrator ([`SolverSettings`]);
 //! * [`QuasiStatic`], [`power_loss`], [`thermal_steady_state`]: the
 //!   quasi-static analyses of a case; [`BearingSet`]: a matched set of
 //!   the case's bearing on one shaft (`[arrangement]`).
@@ -96,7 +97,9 @@ pub struct Simulation {
 
 impl Simulation {
     /// The case's model, started as `solver.start` says, with the thermal
-    /// network coupled when `thermal.run_coupling` is set.
+    /// network coupled when `thermal.run_coupling` is set and the sensor
+    /// attached when the case has `[sensor]` (it acquires at
+    /// `output.sample_rate`: sample the run at that rate to read it).
     pub fn from_case(case: &Case) -> Result<Self, SimulationError> {
         Self::with_start(case, case.start)
     }
@@ -122,6 +125,9 @@ impl Simulation {
         };
         if let Some(interval) = case.thermal.run_coupling {
             couple_thermal(case, &mut model, interval, &initial_state)?;
+        }
+        if let Some(sensor) = &case.sensor {
+            model.attach_sensor(sensor.clone(), 0.0, &initial_state)?;
         }
         let settings = SolverSettings::of(
             case,

@@ -40,7 +40,7 @@ pub const MAX_BLOCKS: usize = 2 * BLOCKS;
 pub const SIGNAL_SAMPLES: usize = 1 << 14;
 
 /// The channels the vibration and whirl metrics read.
-const SIGNAL_CHANNELS: [&str; 12] = [
+const SIGNAL_CHANNELS: [&str; 13] = [
     "time_s",
     "cage_speed_rpm",
     "cage_y_m",
@@ -52,8 +52,10 @@ const SIGNAL_CHANNELS: [&str; 12] = [
     "inner_ring_velocity_z_m_s",
     "outer_ring_velocity_y_m_s",
     "outer_ring_velocity_z_m_s",
-    // The envelope lines of a run with a spall (`crate::vibration`).
+    // The envelope lines of a run with a spall or a sensor
+    // (`crate::vibration`).
     "inner_ring_acceleration_z_m_s2",
+    "sensor_acceleration_m_s2",
 ];
 
 /// One block's statistics.
@@ -462,20 +464,23 @@ impl Window<'_> {
             / count as f64
     }
 
-    /// The vibration and whirl channels over the window (their last
-    /// [`SIGNAL_SAMPLES`] samples).
+    /// The vibration and whirl channels the run has over the window (their
+    /// last [`SIGNAL_SAMPLES`] samples).
     pub fn signal(&self) -> TimeSeries {
         let from = self.span()[0];
         let mut series = TimeSeries::default();
-        for name in SIGNAL_CHANNELS {
-            let unit = self
-                .stats
-                .index(name)
-                .map_or("", |i| self.stats.units[i].as_str());
-            series.channel(name, unit);
+        let mut kept = Vec::with_capacity(SIGNAL_CHANNELS.len());
+        for (k, name) in SIGNAL_CHANNELS.iter().enumerate() {
+            if let Some(i) = self.stats.index(name) {
+                series.channel(*name, self.stats.units[i].as_str());
+                kept.push(k);
+            }
         }
-        for row in self.stats.signal.iter().filter(|r| r[0] >= from) {
-            series.push(row);
+        let mut row = Vec::with_capacity(kept.len());
+        for signal in self.stats.signal.iter().filter(|r| r[0] >= from) {
+            row.clear();
+            row.extend(kept.iter().map(|&k| signal[k]));
+            series.push(&row);
         }
         series
     }

@@ -2,7 +2,7 @@
 //! contact-episode records (impact speeds of the Lankarani–Nikravesh,
 //! Hunt–Crossley and Flores laws, docs/model.md §2.3) and, in a thermally coupled
 //! run, the thermal network's state, from which the viscosities it feeds
-//! back are set again. Everything else the right-hand side reads is the
+//! back are set again, and the sensor chain's state. Everything else the right-hand side reads is the
 //! case's data or the integrator's state.
 
 use super::model::BearingModel;
@@ -20,6 +20,10 @@ impl Checkpoint for BearingModel {
         out.u64(u64::from(self.thermal.is_some()));
         if let Some(thermal) = &self.thermal {
             thermal.save(out);
+        }
+        out.u64(u64::from(self.sensor.is_some()));
+        if let Some(sensor) = &self.sensor {
+            sensor.save(out);
         }
     }
 
@@ -48,6 +52,15 @@ impl Checkpoint for BearingModel {
             let viscosities = thermal.restore(input);
             self.thermal = Some(thermal);
             self.elements.apply_viscosities(viscosities?);
+        }
+        let sensed = input.u64()? == 1;
+        if sensed != self.sensor.is_some() {
+            return Err(CheckpointError::Mismatch(
+                "the sensor differs from the saved run".into(),
+            ));
+        }
+        if let Some(sensor) = self.sensor.as_mut() {
+            sensor.restore(input)?;
         }
         Ok(())
     }

@@ -46,6 +46,7 @@ pub mod parameters;
 pub mod peaks;
 pub mod pocket;
 pub mod race_contact;
+mod sensor_coupling;
 pub mod supports;
 pub mod surface_contact;
 pub mod thermal_coupling;

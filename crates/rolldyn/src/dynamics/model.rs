@@ -55,6 +55,7 @@ use crate::kinematics::cage_speed_ratio;
 use crate::material::Material;
 use crate::power::Dissipation;
 use crate::quasistatic::Equilibrium;
+use crate::signal::sensor::SensorChain;
 use crate::thermal::bearing::HeatSources;
 use nalgebra::Vector3;
 
@@ -72,6 +73,8 @@ pub struct BearingModel {
     pub(super) peak_loads: PeakLoads,
     /// Thermal network advanced alongside a run, if coupled.
     pub(super) thermal: Option<Box<ThermalCoupling>>,
+    /// Sensor chain advanced alongside a run, if attached.
+    pub(super) sensor: Option<Box<SensorChain>>,
     /// The balls' contact evaluations, serial or across threads.
     pub(super) ball_pass: BallPass,
 }
@@ -96,6 +99,7 @@ impl BearingModel {
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
             peak_loads: PeakLoads::default(),
             thermal: None,
+            sensor: None,
             ball_pass,
         })
     }
@@ -494,6 +498,7 @@ impl OdeSystem for BearingModel {
         let (inner, outer) = self.elements.ring_motion(t, y);
         let floor = self.elements.params.impact_speed_floor;
         let mut changed = false;
+        let mut outer_raceway = Vector3::zeros();
         for j in 0..self.elements.layout.balls {
             let (ball, _) = self.elements.ball_kinematics(j, y);
             for (k, (ring, table)) in [
@@ -513,6 +518,9 @@ impl OdeSystem for BearingModel {
                     Some(cn) => {
                         episode.accept(cn.geometry.penetration, cn.penetration_rate, floor);
                         self.peak_loads.raise(k, cn.load);
+                        if k == 1 {
+                            outer_raceway += cn.surface.ring_force - cn.force;
+                        }
                     }
                     None => episode.accept(-1.0, 0.0, floor),
                 }
@@ -522,6 +530,7 @@ impl OdeSystem for BearingModel {
                 }
             }
         }
+        self.sensor_update(t, y, outer_raceway);
         let thermal = self.thermal_update(t, y);
         (changed
             && self

@@ -13,14 +13,18 @@
 //! per segment, `scaling = "density"`), so results can be checked against it.
 
 pub mod lines;
+pub mod sensor;
 pub mod spectrogram;
 pub mod spectrum;
+pub mod statistics;
 pub mod whirl;
 
 pub use lines::{CharacteristicFrequencies, Line, Peak, find_peaks};
+pub use sensor::{HousingMode, SensorChain, SensorSample, SensorSpec};
 pub use spectrogram::{Spectrogram, spectrogram};
 pub use spectrum::{
     Spectrum, SpectrumError, Window, amplitude_spectrum, band_rms, band_velocity_rms,
     envelope_spectrum, welch_psd,
 };
+pub use statistics::statistics;
 pub use whirl::{WhirlMetrics, whirl_metrics};

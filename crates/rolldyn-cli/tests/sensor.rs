@@ -1,0 +1,171 @@
+//! End-to-end tests of the housing sensor (`[sensor]`, docs/signal.md
+//! "Sensor chain"): its channels and summary keys in a run of the CWRU
+//! case, the noise's seed, the channel group, and errors that name the key.
+
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{rolldyn, stderr, temp_dir};
+use rolldyn_io::read_parquet;
+
+const CASE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../../examples/cwru6205/case.toml"
+);
+
+fn run(tag: &str, extra: &[&str]) -> (std::path::PathBuf, serde_json::Value) {
+    let dir = temp_dir(tag);
+    let mut args = vec![
+        "run",
+        CASE,
+        "-o",
+        dir.to_str().unwrap(),
+        "--duration",
+        "0.04 s",
+    ];
+    args.extend_from_slice(extra);
+    let o = rolldyn(&args, None);
+    assert!(o.status.success(), "{tag}: {}", stderr(&o));
+    let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    (dir, serde_json::from_str(&text).unwrap())
+}
+
+#[test]
+fn a_sensor_records_the_housing_and_the_summary_analyses_it() {
+    let (dir, summary) = run("sensor-on", &["--set", "sensor={}"]);
+    let series = read_parquet(&dir.join("timeseries.parquet")).unwrap();
+    let acquired = series.column("sensor_acceleration_m_s2").unwrap();
+    let housing = series.column("sensor_housing_acceleration_m_s2").unwrap();
+    assert_eq!(acquired.len(), series.column("time_s").unwrap().len());
+    assert!(acquired.iter().chain(housing).all(|v| v.is_finite()));
+    // The pit's impacts ring the housing: far above the 0.01 m/s² noise.
+    let rms = |x: &[f64]| (x.iter().map(|v| v * v).sum::<f64>() / x.len() as f64).sqrt();
+    assert!(rms(&housing[housing.len() / 2..]) > 1.0);
+    let s = &summary["sensor"];
+    for key in ["rms_m_s2", "peak_m_s2", "crest_factor", "kurtosis"] {
+        assert!(s[key].as_f64().unwrap() > 0.0, "{key}: {s}");
+    }
+    assert_eq!(s["clipped_samples"], 0);
+    assert!(s["kurtosis"].as_f64().unwrap() > 3.0, "impacts: {s}");
+    assert_eq!(
+        summary["envelope_lines"]["channel"],
+        "sensor_acceleration_m_s2"
+    );
+    // Without a sensor: no channels, a null key, the ring's channel analysed.
+    let (plain, plain_summary) = run("sensor-off", &[]);
+    let plain_series = read_parquet(&plain.join("timeseries.parquet")).unwrap();
+    assert!(plain_series.column("sensor_acceleration_m_s2").is_none());
+    assert!(plain_summary["sensor"].is_null());
+    assert_eq!(
+        plain_summary["envelope_lines"]["channel"],
+        "inner_ring_acceleration_z_m_s2"
+    );
+    // The sensor listens: it leaves the bearing's motion as it was.
+    assert_eq!(
+        series.column("inner_ring_acceleration_z_m_s2").unwrap(),
+        plain_series
+            .column("inner_ring_acceleration_z_m_s2")
+            .unwrap()
+    );
+    for d in [dir, plain] {
+        std::fs::remove_dir_all(d).ok();
+    }
+}
+
+#[test]
+fn the_seed_draws_the_noise_and_the_group_selects_the_channels() {
+    let noisy = |tag: &str, seed: u64| {
+        let set = format!("sensor={{ noise = \"0.5 m/s^2\", seed = {seed} }}");
+        let (dir, _) = run(
+            tag,
+            &["--set", &set, "--set", "output.channels=[\"sensor\"]"],
+        );
+        let series = read_parquet(&dir.join("timeseries.parquet")).unwrap();
+        std::fs::remove_dir_all(dir).ok();
+        series
+    };
+    let (a, b, c) = (noisy("seed-a", 1), noisy("seed-b", 1), noisy("seed-c", 2));
+    assert_eq!(
+        a.names(),
+        [
+            "time_s",
+            "sensor_acceleration_m_s2",
+            "sensor_housing_acceleration_m_s2"
+        ]
+    );
+    let acquired =
+        |s: &rolldyn_io::TimeSeries| s.column("sensor_acceleration_m_s2").unwrap().to_vec();
+    assert_eq!(acquired(&a), acquired(&b));
+    assert_ne!(acquired(&a), acquired(&c));
+    // The noise is the acquisition's: the housing's true motion is the same.
+    let housing = |s: &rolldyn_io::TimeSeries| {
+        s.column("sensor_housing_acceleration_m_s2")
+            .unwrap()
+            .to_vec()
+    };
+    assert_eq!(housing(&a), housing(&c));
+}
+
+#[test]
+fn a_small_range_clips_and_warns() {
+    let dir = temp_dir("sensor-clip");
+    let o = rolldyn(
+        &[
+            "run",
+            CASE,
+            "-o",
+            dir.to_str().unwrap(),
+            "--duration",
+            "0.02 s",
+            "--set",
+            "sensor={ full_scale = \"2 g\" }",
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("raise sensor.full_scale"),
+        "{}",
+        stderr(&o)
+    );
+    let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    let summary: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert!(summary["sensor"]["clipped_samples"].as_u64().unwrap() > 0);
+    let series = read_parquet(&dir.join("timeseries.parquet")).unwrap();
+    let top = 2.0 * 9.806_65;
+    assert!(
+        series
+            .column("sensor_acceleration_m_s2")
+            .unwrap()
+            .iter()
+            .all(|a| a.abs() <= top)
+    );
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn bad_sensor_values_name_the_key() {
+    for (set, key) in [
+        (
+            "sensor={ modes = [{ frequency = \"3 kHz\" }] }",
+            "sensor.modes[0].mass",
+        ),
+        (
+            "sensor={ modes = [{ frequency = \"3 kHz\", mass = \"1 kg\", damping_ratio = 1.5 }] }",
+            "sensor.modes[0].damping_ratio",
+        ),
+        (
+            "sensor={ anti_alias_cutoff = \"7 kHz\" }",
+            "sensor.anti_alias_cutoff",
+        ),
+        ("sensor={ noise = \"-1 m/s^2\" }", "sensor.noise"),
+        ("sensor={ adc_bits = 0 }", "sensor.adc_bits"),
+        ("sensor={ modes = [] }", "sensor.modes"),
+        ("sensor={ noise = \"1 kg\" }", "sensor.noise"),
+    ] {
+        let o = rolldyn(&["run", CASE, "--duration", "1 ms", "--set", set], None);
+        assert_eq!(o.status.code(), Some(2), "{set}");
+        assert!(stderr(&o).contains(key), "{set}: {}", stderr(&o));
+    }
+}
