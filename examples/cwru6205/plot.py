@@ -1,5 +1,5 @@
 """CWRU 6205 with a 0.007 in outer-race fault: envelope spectrum of the
-inner-ring acceleration with the fault's lines, rolldyn's (from the run's
+housing accelerometer's record ([sensor]) with the fault's lines, rolldyn's (from the run's
 speeds) and CWRU's published BPFO = 3.5848 x shaft frequency.
 
     python3 examples/cwru6205/plot.py [RUN_DIR]   # default examples/cwru6205/out
@@ -16,7 +16,7 @@ import matplotlib.pyplot as plt
 
 here = pathlib.Path(__file__).parent
 run = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else here / "out"
-name = "spectrum_inner_ring_acceleration_z_m_s2_envelope"
+name = "spectrum_sensor_acceleration_m_s2_envelope"
 rows = list(csv.DictReader(open(run / f"{name}.csv")))
 freq = [float(r["frequency_hz"]) for r in rows]
 amp = [float(r["value"]) for r in rows]

@@ -13,7 +13,7 @@ import math
 import os
 import sys
 
-CHANNEL = "inner_ring_acceleration_z_m_s2"
+CHANNEL = "sensor_acceleration_m_s2"
 SPECTRUM = f"spectrum_{CHANNEL}_envelope"
 # CWRU's motor loads and the shaft speeds it reports at them.
 LOAD_HP = {1797.0: 0, 1772.0: 1, 1750.0: 2, 1730.0: 3}
@@ -39,6 +39,8 @@ def envelope_features(point):
         "bpfi_minus_f_r": c["bpfi_hz"] - c["shaft_hz"],
         "bpfi_plus_f_r": c["bpfi_hz"] + c["shaft_hz"],
         "2bsf": 2.0 * c["ball_spin_hz"],
+        "2bsf_minus_f_c": 2.0 * c["ball_spin_hz"] - c["cage_hz"],
+        "2bsf_plus_f_c": 2.0 * c["ball_spin_hz"] + c["cage_hz"],
     }
     width = spectrum["resolution_hz"]
     out = {}

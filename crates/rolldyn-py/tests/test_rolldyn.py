@@ -466,3 +466,14 @@ def test_native_stub_matches_the_module():
     assert {"np", "os", "json", "Any"}.isdisjoint(rolldyn.__all__)
     assert all(hasattr(rolldyn, name) for name in rolldyn.__all__)
 
+
+
+def test_a_sensor_gives_the_housing_record_as_numpy(tmp_path):
+    case = rolldyn.Case.load(REPO / "examples" / "cwru6205" / "case.toml").set("sensor.seed", 3)
+    result = rolldyn.run(case, duration="20 ms", output=tmp_path / "py")
+    acquired = result["sensor_acceleration_m_s2"]
+    assert isinstance(acquired, np.ndarray)
+    assert len(acquired) == len(result["time_s"])
+    assert np.isfinite(acquired).all()
+    assert result.summary["sensor"]["kurtosis"] > 0
+    assert result.summary["envelope_lines"]["channel"] == "sensor_acceleration_m_s2"
