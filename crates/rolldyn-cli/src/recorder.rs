@@ -7,6 +7,7 @@
 
 use crate::run_stats::RunStatistics;
 use rolldyn::dynamics::{BearingModel, ContactSample};
+use rolldyn::traction::TractionModel;
 use rolldyn_io::{OutputError, SeriesWriter, TimeSeries};
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
@@ -100,6 +101,8 @@ pub(crate) struct Channels {
     mixed: bool,
     /// Whether the sensor's channels are recorded (`[sensor]`).
     sensor: bool,
+    /// Growing spalls (their lengths are recorded).
+    growing_spalls: usize,
     /// Scratch derivative vector (accelerations of the rings).
     derivative: Vec<f64>,
 }
@@ -112,15 +115,26 @@ pub(crate) const SENSOR_CHANNELS: [&str; 2] = [
 ];
 
 impl Channels {
+    /// The channels of `model`'s run (`power_per_ball`: the case's
+    /// per-ball power channels) over `duration` at `sample_rate`, recorded
+    /// as `selection` says.
     pub(crate) fn new(
-        balls: usize,
-        creep: bool,
-        thermal: bool,
-        [power_per_ball, mixed, sensor]: [bool; 3],
-        states: usize,
+        model: &BearingModel,
+        power_per_ball: bool,
         [duration, sample_rate]: [f64; 2],
         selection: &rolldyn_case::case::OutputSelection,
     ) -> Self {
+        let params = model.parameters();
+        let balls = model.layout().balls;
+        let creep = matches!(
+            params.traction,
+            TractionModel::Fastsim(_) | TractionModel::ExactTable(_)
+        );
+        let thermal = model.thermal().is_some();
+        let mixed = params.mixed_lubrication.is_some();
+        let sensor = model.sensor().is_some();
+        let growing_spalls = model.growing_spall_lengths().len();
+        let states = model.layout().len();
         let mut series = TimeSeries::default();
         for (name, unit) in [
             ("time_s", "s"),
@@ -167,6 +181,9 @@ impl Channels {
             for name in SENSOR_CHANNELS {
                 series.channel(name, "m/s^2");
             }
+        }
+        for k in 0..growing_spalls {
+            series.channel(format!("spall{k}_length_m"), "m");
         }
         for j in 0..balls {
             for (name, unit) in BALL_CHANNELS {
@@ -216,6 +233,7 @@ impl Channels {
             power_per_ball,
             mixed,
             sensor,
+            growing_spalls,
             derivative: vec![0.0; states],
         }
     }
@@ -285,6 +303,9 @@ impl Channels {
             let sample = model.sensor_sample(t);
             row.push(sample.map_or(f64::NAN, |s| s.acquired));
             row.push(sample.map_or(f64::NAN, |s| s.housing));
+        }
+        if self.growing_spalls > 0 {
+            row.extend(model.growing_spall_lengths());
         }
         for (j, c) in contacts.iter().enumerate().take(self.balls) {
             let b = l.ball(j);

@@ -15,7 +15,6 @@ pub use crate::run_summary::{CreepMeans, Summary};
 use indicatif::{ProgressBar, ProgressStyle};
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::{Integrator, RunEnd, Sampling, Solver, run_from};
-use rolldyn::traction::TractionModel;
 use rolldyn_case::Case;
 use rolldyn_case::simulation::{Simulation, SolverSettings};
 use rolldyn_io::{SeriesWriter, write_atomic};
@@ -219,8 +218,7 @@ pub(crate) fn run_once(
     let source = record.source.as_str();
     // The case's dynamic data first (cheap), then the duration, then the
     // model and its start (quasi-static solves).
-    let params = case
-        .dynamics_parameters()
+    case.dynamics_parameters()
         .map_err(|e| bad(format!("{}: {}", e.key, e.rule)))?;
     let duration = case.duration.ok_or_else(|| bad(
         "solver.duration: missing: give the simulated time (or --duration, e.g. --duration \"0.05 s\")".into(),
@@ -232,18 +230,8 @@ pub(crate) fn run_once(
         settings,
     } = Simulation::from_case(case).map_err(|e| bad(e.to_string()))?;
     let mut channels = Channels::new(
-        g.ball_count,
-        matches!(
-            params.traction,
-            TractionModel::Fastsim(_) | TractionModel::ExactTable(_)
-        ),
-        model.thermal().is_some(),
-        [
-            case.power_per_ball,
-            params.mixed_lubrication.is_some(),
-            model.sensor().is_some(),
-        ],
-        model.layout().len(),
+        &model,
+        case.power_per_ball,
         [duration, case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE)],
         &case.output,
     );

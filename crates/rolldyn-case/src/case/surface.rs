@@ -286,6 +286,7 @@ fn spall(key: &str, s: &RawSpall) -> Result<Spall, Invalid> {
         axial_position: s.axial_position.as_ref().map_or(0.0, |a| a.si),
         axial_width: s.axial_width.as_ref().map(|a| a.si),
         edge,
+        growth_rate: s.growth_rate.as_ref().map_or(0.0, |g| g.si),
     };
     spall.validate().map_err(located(key))?;
     Ok(spall)

@@ -121,4 +121,7 @@ pub struct RawSpall {
     pub ramp: Option<Quantity<Length>>,
     /// Ball index (ball spalls only).
     pub ball: Option<i64>,
+    /// Growth of the length along the track per second of simulated time
+    /// (default 0: constant; needs `length`): a run-to-failure trend.
+    pub growth_rate: Option<Quantity<Velocity>>,
 }

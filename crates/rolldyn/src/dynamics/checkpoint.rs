@@ -2,7 +2,8 @@
 //! contact-episode records (impact speeds of the Lankarani–Nikravesh,
 //! Hunt–Crossley and Flores laws, docs/model.md §2.3) and, in a thermally coupled
 //! run, the thermal network's state, from which the viscosities it feeds
-//! back are set again, and the sensor chain's state. Everything else the right-hand side reads is the
+//! back are set again, the growing spalls' lengths and the sensor chain's
+//! state. Everything else the right-hand side reads is the
 //! case's data or the integrator's state.
 
 use super::model::BearingModel;
@@ -21,6 +22,7 @@ impl Checkpoint for BearingModel {
         if let Some(thermal) = &self.thermal {
             thermal.save(out);
         }
+        out.f64s(&self.growing_spall_lengths());
         out.u64(u64::from(self.sensor.is_some()));
         if let Some(sensor) = &self.sensor {
             sensor.save(out);
@@ -53,6 +55,9 @@ impl Checkpoint for BearingModel {
             self.thermal = Some(thermal);
             self.elements.apply_viscosities(viscosities?);
         }
+        let mut lengths = self.growing_spall_lengths();
+        input.f64s_into("growing spall lengths", &mut lengths)?;
+        self.set_growing_spall_lengths(&lengths);
         let sensed = input.u64()? == 1;
         if sensed != self.sensor.is_some() {
             return Err(CheckpointError::Mismatch(

@@ -75,6 +75,8 @@ pub struct BearingModel {
     pub(super) thermal: Option<Box<ThermalCoupling>>,
     /// Sensor chain advanced alongside a run, if attached.
     pub(super) sensor: Option<Box<SensorChain>>,
+    /// The spalls that grow over the run ([`super::spall_growth`]).
+    pub(super) growth: Vec<super::spall_growth::Growing>,
     /// The balls' contact evaluations, serial or across threads.
     pub(super) ball_pass: BallPass,
 }
@@ -94,14 +96,17 @@ impl BearingModel {
                 .traction
                 .integrates_over_a_grid(&params.traction_integration),
         );
-        Ok(Self {
+        let mut model = Self {
             elements: Elements::new(geometry, ball, rings, hertz, params)?,
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
             peak_loads: PeakLoads::default(),
             thermal: None,
             sensor: None,
+            growth: Vec::new(),
             ball_pass,
-        })
+        };
+        model.growth = model.growing_spalls();
+        Ok(model)
     }
 
     /// State layout.
@@ -531,14 +536,16 @@ impl OdeSystem for BearingModel {
             }
         }
         self.sensor_update(t, y, outer_raceway);
+        let grown = !self.growth.is_empty() && self.grow_spalls(t, y);
         let thermal = self.thermal_update(t, y);
-        (changed
-            && self
-                .elements
-                .params
-                .normal_law
-                .hysteresis_factor()
-                .is_some())
+        grown
+            || (changed
+                && self
+                    .elements
+                    .params
+                    .normal_law
+                    .hysteresis_factor()
+                    .is_some())
             || thermal
     }
 }

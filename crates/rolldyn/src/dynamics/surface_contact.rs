@@ -130,41 +130,10 @@ impl Elements {
     /// Angles from the ball azimuth and spin angle at the nominal track radii;
     /// infinite without spalls.
     pub(super) fn spall_step_limit(&self, t: f64, y: &[f64]) -> f64 {
-        let surfaces = &self.params.surface;
         let mut limit = f64::INFINITY;
-        if surfaces.spalls().next().is_none() {
-            return limit;
-        }
-        let g = &self.geometry;
-        let l = self.layout;
-        let alpha = g.nominal_contact_angle();
-        let half_d = 0.5 * g.ball_diameter;
-        let inner_track = 0.5 * g.pitch_diameter - half_d * alpha.cos();
-        let outer_track = 0.5 * g.pitch_diameter + half_d * alpha.cos();
-        let inner_angle = self.params.speed.angle_at(t);
-        let inner_speed = self.params.speed.speed_at(t);
-        for (site, spall) in surfaces.spalls() {
-            for j in 0..l.balls {
-                let b = l.ball(j);
-                let (azimuth, orbital) = (y[b + 2], y[b + 5]);
-                let crossings: [(f64, f64, f64); 2] = match site {
-                    SpallSite::Inner => [
-                        (azimuth - inner_angle, orbital - inner_speed, inner_track),
-                        (0.0, 0.0, 0.0),
-                    ],
-                    SpallSite::Outer => [(azimuth, orbital, outer_track), (0.0, 0.0, 0.0)],
-                    SpallSite::Ball(k) if k == j && l.ball_spin_angle => {
-                        let relative = Vector3::new(y[b + 6] - orbital, y[b + 7], y[b + 8]);
-                        let psi = y[b + StateLayout::SPIN_ANGLE];
-                        let rate = relative.norm();
-                        [
-                            (psi, rate, half_d),
-                            (psi + BALL_CONTACT_SEPARATION, rate, half_d),
-                        ]
-                    }
-                    SpallSite::Ball(_) => continue,
-                };
-                for (angle, rate, track) in crossings {
+        for (site, spall) in self.params.surface.spalls() {
+            for j in 0..self.layout.balls {
+                for (angle, rate, track) in self.spall_track_contacts(t, y, site, j) {
                     if rate != 0.0 {
                         limit = limit.min(time_to_cross(spall, angle, rate, track));
                     }
@@ -172,6 +141,74 @@ impl Elements {
             }
         }
         limit
+    }
+
+    /// Whether a contact centre of any ball lies on `spall` at `site` (with
+    /// a tenth of its half-width to spare) at (t, y): as
+    /// [`Self::spall_step_limit`] places them.
+    pub(super) fn spall_is_loaded(
+        &self,
+        t: f64,
+        y: &[f64],
+        site: SpallSite,
+        spall: &Spall,
+    ) -> bool {
+        (0..self.layout.balls).any(|j| {
+            self.spall_track_contacts(t, y, site, j)
+                .iter()
+                .any(|&(angle, rate, track)| {
+                    let half = spall.half_angle(track);
+                    rate != 0.0
+                        && crate::surface::spall::wrap(angle - spall.position).abs() < 1.1 * half
+                })
+        })
+    }
+
+    /// Ball j's contacts on the track of a spall at `site`: (angle on the
+    /// track, its rate, the track's radius) at the nominal track radii; a
+    /// zero rate marks no contact (one on a raceway, two on its own ball).
+    fn spall_track_contacts(
+        &self,
+        t: f64,
+        y: &[f64],
+        site: SpallSite,
+        j: usize,
+    ) -> [(f64, f64, f64); 2] {
+        let g = &self.geometry;
+        let l = self.layout;
+        let alpha = g.nominal_contact_angle();
+        let half_d = 0.5 * g.ball_diameter;
+        let b = l.ball(j);
+        let (azimuth, orbital) = (y[b + 2], y[b + 5]);
+        let none = (0.0, 0.0, 0.0);
+        match site {
+            SpallSite::Inner => [
+                (
+                    azimuth - self.params.speed.angle_at(t),
+                    orbital - self.params.speed.speed_at(t),
+                    0.5 * g.pitch_diameter - half_d * alpha.cos(),
+                ),
+                none,
+            ],
+            SpallSite::Outer => [
+                (
+                    azimuth,
+                    orbital,
+                    0.5 * g.pitch_diameter + half_d * alpha.cos(),
+                ),
+                none,
+            ],
+            SpallSite::Ball(k) if k == j && l.ball_spin_angle => {
+                let relative = Vector3::new(y[b + 6] - orbital, y[b + 7], y[b + 8]);
+                let psi = y[b + StateLayout::SPIN_ANGLE];
+                let rate = relative.norm();
+                [
+                    (psi, rate, half_d),
+                    (psi + BALL_CONTACT_SEPARATION, rate, half_d),
+                ]
+            }
+            SpallSite::Ball(_) => [none, none],
+        }
     }
 }
 
@@ -204,6 +241,7 @@ mod tests {
             axial_position: 0.0,
             axial_width: None,
             edge: Edge::Sharp,
+            growth_rate: 0.0,
         };
         let crossing = 0.02 / 10.0 / STEPS_PER_SPALL;
         // 0.5 rad before the entry edge at 10 rad/s: 0.05 s to go.

@@ -259,6 +259,7 @@ mod tests {
                 axial_position: 0.0,
                 axial_width: None,
                 edge: Edge::Sharp,
+                growth_rate: 0.0,
             }],
             roughness: 0.1e-6,
         };

@@ -68,6 +68,11 @@ pub struct Spall {
     pub axial_width: Option<f64>,
     /// Edge shape.
     pub edge: Edge,
+    /// Growth of the length along the track per second of simulated time
+    /// \[m/s\] (0: a constant spall; needs a length, not a width). The
+    /// dynamic model lengthens the spall about its centre in steps taken
+    /// while no ball is on it (`dynamics`, "spall growth").
+    pub growth_rate: f64,
 }
 
 impl Spall {
@@ -105,6 +110,20 @@ impl Spall {
         }
         if let Edge::Ramped { length } = self.edge {
             positive("ramp", length)?;
+        }
+        if !(self.growth_rate >= 0.0 && self.growth_rate.is_finite()) {
+            return Err(InvalidParameter::new(
+                "growth_rate",
+                self.growth_rate,
+                "must be finite and not negative",
+            ));
+        }
+        if self.growth_rate > 0.0 && matches!(self.size, SpallSize::Angle(_)) {
+            return Err(InvalidParameter::new(
+                "growth_rate",
+                self.growth_rate,
+                "a growing spall needs its length (not its width)",
+            ));
         }
         Ok(())
     }
@@ -178,6 +197,7 @@ mod tests {
             axial_position: 0.0,
             axial_width: Some(2e-3),
             edge,
+            growth_rate: 0.0,
         }
     }
 

@@ -231,6 +231,7 @@ fn spall(position: f64, length: f64, depth: f64) -> Spall {
         axial_position: 0.0,
         axial_width: None,
         edge: Edge::Sharp,
+        growth_rate: 0.0,
     }
 }
 
