@@ -323,6 +323,14 @@ def test_sweep_rows_equal_the_clis_run_sweep(tmp_path):
     assert (tmp_path / "py" / "sweep.json").is_file()
     assert (tmp_path / "py" / "point-0003" / "timeseries.parquet").is_dir()
     assert result.column("mean_cage_speed_rpm").shape == (4,)
+    # The labelled dataset: every point's signals, keyed by the rows' point.
+    signals = result.signals().to_table(columns=["point", "time_s", "cage_speed_rpm"])
+    for row in result:
+        point = pq.read_table(tmp_path / "py" / row["point"] / "timeseries.parquet")
+        mine = signals.filter(pa.compute.equal(signals["point"], row["point"]))
+        assert mine["cage_speed_rpm"].to_pylist() == point["cage_speed_rpm"].to_pylist()
+    assert signals.num_rows == sum(
+        pq.read_table(tmp_path / "py" / r["point"] / "timeseries.parquet").num_rows for r in result)
 
 
 def test_sampled_sweep_equals_the_clis(tmp_path):

@@ -459,6 +459,25 @@ class SweepResult:
     def to_pandas(self):
         return self.table.to_pandas()
 
+    def signals(self):
+        """Every point's time series as one lazily read Parquet dataset
+        (``pyarrow.dataset.Dataset``) with a ``point`` column, the key of
+        :attr:`table`'s rows: the labelled dataset of a sweep. Needs the
+        sweep's ``output`` directory. ``signals().to_table(columns=["point",
+        "time_s", "sensor_acceleration_m_s2"], filter=ds.field("point") ==
+        "point-0003")`` reads one channel of one point."""
+        if self.directory is None:
+            raise ValueError("signals(): the sweep kept no run directories; pass output=")
+        import pyarrow.dataset as ds
+        series = [os.path.join(self.directory, r["point"], SERIES_DIR) for r in self.rows]
+        files = sorted(
+            os.path.join(path, name)
+            for path in series if os.path.isdir(path)
+            for name in os.listdir(path) if name.endswith(".parquet"))
+        partitioning = ds.DirectoryPartitioning(pa.schema([("point", pa.string())]))
+        return ds.dataset(files, format="parquet", partitioning=partitioning,
+                          partition_base_dir=self.directory)
+
     def column(self, name: str) -> np.ndarray:
         """One column over the points (NaN where a point has no value)."""
         return np.array([np.nan if r.get(name) is None else r[name] for r in self.rows])

@@ -60,7 +60,8 @@ use crate::thermal::bearing::HeatSources;
 use nalgebra::Vector3;
 
 /// The dynamic bearing model: its force elements and the memory a run
-/// carries (contact episodes, peak loads, the thermal network).
+/// carries (contact episodes, peak loads, the thermal network, the
+/// sensor chain, the growing spalls' lengths).
 #[derive(Debug, Clone)]
 pub struct BearingModel {
     /// Geometry, contact tables, masses and parameters: what the force
