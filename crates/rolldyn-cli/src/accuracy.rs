@@ -184,6 +184,10 @@ fn compared(summary: &Summary) -> Vec<(&'static str, f64, f64, f64)> {
             ));
         }
     }
+    // The housing sensor's record (its noise is the same draw in both runs).
+    if let Some(sensor) = &summary.sensor {
+        out.push(("sensor.rms_m_s2", sensor.rms_m_s2, vibration, zero));
+    }
     // A whirl below the position tolerance (rtol × 1 µm) is noise too.
     let noise_m = 1e-6 * VIBRATION_NOISE_FACTOR * summary.relative_tolerance.unwrap_or(0.0);
     out.push((

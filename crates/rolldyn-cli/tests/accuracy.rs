@@ -228,6 +228,28 @@ fn a_bridged_spall_with_damped_contacts_closes_its_balance() {
     }
 }
 
+/// The same case with its pit growing (2 mm/s: 0.18 → 0.38 mm over the
+/// run): the growth steps between ball passes keep the balance closed.
+#[test]
+fn a_growing_spall_closes_its_balance() {
+    let case = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/cwru6205/case.toml"
+    ))
+    .unwrap();
+    let (s, _) = run(
+        "cwru-growth",
+        &[
+            "--duration",
+            "0.1 s",
+            "--set",
+            "surface.outer.spall.0.growth_rate=\"2 mm/s\"",
+        ],
+        Some(&case),
+    );
+    assert_converged("cwru-growth", &s, &IMPACT_MEANS);
+}
+
 /// A 0.533 mm × 0.28 mm outer-race spall under 1 kN on the 6205 preset
 /// (undamped Hertz contacts, dry Coulomb friction): the ball drops into the
 /// pit and strikes its far edge, and the contact vibrations it excites ring
