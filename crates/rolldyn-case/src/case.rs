@@ -26,6 +26,7 @@ mod operating;
 mod output;
 mod rings;
 mod sensor;
+mod shaft;
 mod solver;
 mod surface;
 mod thermal;
@@ -42,6 +43,7 @@ pub use lubricant::Lubricant;
 use lubricant::lubricant;
 use material::material;
 pub use output::{ChannelGroup, OutputSelection};
+pub use shaft::{MAX_SHAFT_POSITION, Shaft, ShaftBearing};
 pub use thermal::{DEFAULT_AIR_CONVECTION, DEFAULT_OIL, DEFAULT_OIL_VISCOSITY, Power, Thermal};
 use traction::traction;
 
@@ -163,6 +165,8 @@ pub struct Case {
     pub life: Life,
     /// A matched set of the bearing on one shaft (`[arrangement]`).
     pub arrangement: Option<Arrangement>,
+    /// Built-in bearings at positions on one rigid shaft (`[shaft]`).
+    pub shaft: Option<Shaft>,
     /// Assumed values: (dotted key, reason).
     pub assumptions: Vec<(String, String)>,
 }
@@ -365,6 +369,14 @@ impl Case {
         let traction_integration = traction::integration(raw.model.traction_integration)?;
         let bearing = bearing(&raw.bearing)?;
         let arrangement = arrangement::arrangement(&raw.arrangement, bearing.width)?;
+        let shaft = shaft::shaft(&raw.shaft)?;
+        if shaft.is_some() && arrangement.is_some() {
+            return Err(Invalid::new(
+                "shaft",
+                None,
+                "give either [arrangement] (a matched set of the case's bearing) or [shaft] (presets at positions), not both",
+            ));
+        }
         let lubricant = raw
             .lubricant
             .as_ref()
@@ -445,6 +457,7 @@ impl Case {
             thermal,
             life: life::life(&raw.life)?,
             arrangement,
+            shaft,
             assumptions: raw
                 .assumptions
                 .iter()

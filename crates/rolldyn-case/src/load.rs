@@ -325,6 +325,22 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
             .insert(o.key.clone(), (o.text.clone(), o.value.to_string()));
     }
 
+    // A `[shaft]` system names its bearings' presets; without a `[bearing]`
+    // of its own, the first of them stands in for the case's bearing.
+    if !table.contains_key("bearing") {
+        let first = table
+            .get("shaft")
+            .and_then(|s| s.get("bearings"))
+            .and_then(|b| b.as_array())
+            .and_then(|b| b.first())
+            .and_then(|b| b.get("preset"))
+            .cloned();
+        if let Some(preset) = first {
+            let mut bearing = Table::new();
+            bearing.insert("preset".into(), preset);
+            table.insert("bearing".into(), Value::Table(bearing));
+        }
+    }
     let preset_name = table
         .get("bearing")
         .and_then(|b| b.get("preset"))

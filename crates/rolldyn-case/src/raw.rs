@@ -17,12 +17,14 @@ mod arrangement;
 mod life;
 mod model;
 mod sensor;
+mod shaft;
 mod surface;
 mod thermal;
 pub use arrangement::*;
 pub use life::*;
 pub use model::*;
 pub use sensor::*;
+pub use shaft::*;
 pub use surface::*;
 pub use thermal::*;
 
@@ -76,6 +78,8 @@ pub struct RawCase {
     pub life: RawLife,
     /// A matched set of the bearing on one shaft (absent: one bearing).
     pub arrangement: Option<RawArrangement>,
+    /// Several built-in bearings on one rigid shaft (absent: one bearing).
+    pub shaft: Option<RawShaft>,
     /// Time-integration settings (used by `rolldyn run`).
     #[serde(default)]
     pub solver: RawSolver,

@@ -78,6 +78,7 @@ fn every_schema_key_is_documented() {
         "thermal",
         "life",
         "arrangement",
+        "shaft",
     ];
     for key in all {
         let documented = if sections.contains(&key.as_str()) {

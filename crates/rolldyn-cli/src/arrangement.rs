@@ -10,10 +10,12 @@ use crate::{Failure, simulation_failure};
 use rayon::prelude::*;
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::Conditions;
-use rolldyn::quasistatic::system::{Orientation, SystemEquilibrium};
+use rolldyn::quasistatic::system::{
+    MountedBearing, Orientation, SystemConditions, SystemEquilibrium,
+};
 use rolldyn_case::Case;
 use rolldyn_case::case::{Preload, kind_name};
-use rolldyn_case::simulation::BearingSet;
+use rolldyn_case::simulation::{BearingSet, ShaftModel};
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -60,8 +62,10 @@ pub struct SetBearingRow {
 /// `arrangement` in `rolldyn quasistatic --json`.
 #[derive(Serialize)]
 pub struct ArrangementReport {
+    /// The set's kind, or "shaft" for a `[shaft]` system.
     pub kind: &'static str,
-    pub spacing_m: f64,
+    /// Distance between a set's pitch planes (null for a `[shaft]`).
+    pub spacing_m: Option<f64>,
     /// The preload as given: force (at rest) or displacement.
     pub preload_given: String,
     /// Axial offset of each inner ring that sets the preload.
@@ -108,6 +112,85 @@ fn compliance(k: &[[f64; 5]; 5]) -> Option<[[f64; 5]; 5]> {
         .map(|c| std::array::from_fn(|i| std::array::from_fn(|j| c[(i, j)])))
 }
 
+/// Each bearing's row: its loads and its quasi-static report (from its
+/// own case: rating life, films, modes) at the system's equilibrium.
+fn bearing_rows<'a>(
+    mounted: impl Iterator<Item = (&'a MountedBearing, &'a Case)>,
+    eq: &SystemEquilibrium,
+    c: &SystemConditions,
+) -> Vec<SetBearingRow> {
+    mounted
+        .zip(&eq.bearings)
+        .zip(&eq.shaft_loads)
+        .map(|(((b, case), sol), share)| {
+            let quasistatic = sol.as_ref().map(|sol| {
+                let r = sol.reaction;
+                let conditions = Conditions {
+                    loads: Loads {
+                        force: [r[0], r[1], r[2]],
+                        moment: [r[3], r[4]],
+                    },
+                    inner_speed: c.inner_speed,
+                    control: c.control,
+                };
+                Box::new(
+                    QuasiStaticReport::new(sol, &conditions, [false; 5])
+                        .with_films_and_modes(case, sol),
+                )
+            });
+            SetBearingRow {
+                position_m: b.position,
+                orientation: match b.orientation {
+                    Orientation::Forward => "forward",
+                    Orientation::Reversed => "reversed",
+                },
+                axial_load_n: sol.as_ref().map_or(0.0, |s| s.reaction[0]),
+                radial_load_n: sol
+                    .as_ref()
+                    .map_or(0.0, |s| s.reaction[1].hypot(s.reaction[2])),
+                shaft_load: *share,
+                quasistatic,
+            }
+        })
+        .collect()
+}
+
+impl ArrangementReport {
+    /// The system's part of the report: displacement, stiffness, the
+    /// bearings and the series lives; no set, spacing or preload (a
+    /// `[shaft]` system: kind "shaft").
+    fn of_system(eq: &SystemEquilibrium, bearings: Vec<SetBearingRow>) -> Self {
+        let lives = |pick: fn(&crate::quasistatic::RatingLife) -> Option<f64>| {
+            let each: Vec<Option<f64>> = bearings
+                .iter()
+                .map(|b| match &b.quasistatic {
+                    Some(q) => q.rating_life.as_ref().and_then(pick),
+                    // Unloaded: it does not fail.
+                    None => Some(f64::INFINITY),
+                })
+                .collect();
+            system_life(&each)
+        };
+        Self {
+            kind: "shaft",
+            spacing_m: None,
+            preload_given: "none".into(),
+            preload_offset_m: 0.0,
+            preload_n: None,
+            lift_off_axial_load_n: None,
+            shaft_displacement: eq.displacement,
+            axial_stiffness_n_per_m: eq.stiffness[0][0],
+            stiffness_matrix: eq.stiffness,
+            compliance_matrix: compliance(&eq.stiffness),
+            iterations: eq.iterations,
+            system_basic_rating_life_h: lives(|r| r.basic_rating_life_h),
+            system_reference_rating_life_h: lives(|r| r.reference_rating_life_h),
+            system_modified_reference_rating_life_h: lives(|r| r.modified_reference_rating_life_h),
+            bearings,
+        }
+    }
+}
+
 impl SetReport {
     /// Solves the case's set at its operating point.
     pub fn new(case: &Case, set: &BearingSet) -> Result<Self, Failure> {
@@ -124,58 +207,11 @@ impl SetReport {
         preload: Option<f64>,
         lift_off: Option<f64>,
     ) -> Self {
-        let c = &set.conditions;
-        let bearings: Vec<SetBearingRow> = set
-            .system
-            .bearings
-            .iter()
-            .zip(&eq.bearings)
-            .zip(&eq.shaft_loads)
-            .map(|((b, sol), share)| {
-                let quasistatic = sol.as_ref().map(|sol| {
-                    let r = sol.reaction;
-                    let conditions = Conditions {
-                        loads: Loads {
-                            force: [r[0], r[1], r[2]],
-                            moment: [r[3], r[4]],
-                        },
-                        inner_speed: c.inner_speed,
-                        control: c.control,
-                    };
-                    Box::new(
-                        QuasiStaticReport::new(sol, &conditions, [false; 5])
-                            .with_films_and_modes(case, sol),
-                    )
-                });
-                SetBearingRow {
-                    position_m: b.position,
-                    orientation: match b.orientation {
-                        Orientation::Forward => "forward",
-                        Orientation::Reversed => "reversed",
-                    },
-                    axial_load_n: sol.as_ref().map_or(0.0, |s| s.reaction[0]),
-                    radial_load_n: sol
-                        .as_ref()
-                        .map_or(0.0, |s| s.reaction[1].hypot(s.reaction[2])),
-                    shaft_load: *share,
-                    quasistatic,
-                }
-            })
-            .collect();
-        let lives = |pick: fn(&crate::quasistatic::RatingLife) -> Option<f64>| {
-            let each: Vec<Option<f64>> = bearings
-                .iter()
-                .map(|b| match &b.quasistatic {
-                    Some(q) => q.rating_life.as_ref().and_then(pick),
-                    // Unloaded: it does not fail.
-                    None => Some(f64::INFINITY),
-                })
-                .collect();
-            system_life(&each)
-        };
+        let mounted = set.system.bearings.iter().map(|b| (b, case));
+        let bearings = bearing_rows(mounted, eq, &set.conditions);
         let arrangement = ArrangementReport {
             kind: kind_name(set.arrangement.kind),
-            spacing_m: set.arrangement.spacing,
+            spacing_m: Some(set.arrangement.spacing),
             preload_given: match set.arrangement.preload {
                 Preload::None => "none".into(),
                 Preload::Force(f) => format!("{f} N at rest"),
@@ -184,16 +220,23 @@ impl SetReport {
             preload_offset_m: set.offset,
             preload_n: preload,
             lift_off_axial_load_n: lift_off,
-            shaft_displacement: eq.displacement,
-            axial_stiffness_n_per_m: eq.stiffness[0][0],
-            stiffness_matrix: eq.stiffness,
-            compliance_matrix: compliance(&eq.stiffness),
-            iterations: eq.iterations,
-            system_basic_rating_life_h: lives(|r| r.basic_rating_life_h),
-            system_reference_rating_life_h: lives(|r| r.reference_rating_life_h),
-            system_modified_reference_rating_life_h: lives(|r| r.modified_reference_rating_life_h),
-            bearings,
+            ..ArrangementReport::of_system(eq, bearings)
         };
+        Self::at(&set.conditions, arrangement)
+    }
+
+    /// Solves the case's `[shaft]` system at its operating point.
+    pub fn of_shaft(model: &ShaftModel) -> Result<Self, Failure> {
+        let eq = model.solve().map_err(simulation_failure)?;
+        let mounted = model.bearings.iter().map(|b| (&b.mounted, &b.case));
+        let bearings = bearing_rows(mounted, &eq, &model.conditions);
+        Ok(Self::at(
+            &model.conditions,
+            ArrangementReport::of_system(&eq, bearings),
+        ))
+    }
+
+    fn at(c: &SystemConditions, arrangement: ArrangementReport) -> Self {
         Self {
             speed_rpm: c.inner_speed / RPM,
             raceway_control: c.control,
@@ -212,27 +255,42 @@ impl SetReport {
         let mut out = String::new();
         let f =
             |v: Option<f64>, unit: &str| v.map_or("—".to_string(), |v| format!("{v:.2} {unit}"));
+        match a.spacing_m {
+            Some(spacing) => {
+                let _ = writeln!(
+                    out,
+                    "Bearing set: {}, pitch planes {:.2} mm apart, at {:.0} rpm ({:?} raceway control)",
+                    a.kind,
+                    spacing * 1e3,
+                    self.speed_rpm,
+                    self.raceway_control
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    out,
+                    "Shaft with {} bearings, at {:.0} rpm ({:?} raceway control)",
+                    a.bearings.len(),
+                    self.speed_rpm,
+                    self.raceway_control
+                );
+            }
+        }
         let _ = writeln!(
             out,
-            "Bearing set: {}, pitch planes {:.2} mm apart, at {:.0} rpm ({:?} raceway control)",
-            a.kind,
-            a.spacing_m * 1e3,
-            self.speed_rpm,
-            self.raceway_control
-        );
-        let _ = writeln!(
-            out,
-            "  shaft loads at the middle: F_x {} N, F_y {} N, F_z {} N, M_y {} N·m, M_z {} N·m",
+            "  shaft loads about the reference point: F_x {} N, F_y {} N, F_z {} N, M_y {} N·m, M_z {} N·m",
             self.force_x_n, self.force_y_n, self.force_z_n, self.moment_y_n_m, self.moment_z_n_m
         );
-        let _ = writeln!(
-            out,
-            "  preload {} (offset {:.3} µm per ring): {} at this speed; lift-off axial load {} (at rest)",
-            a.preload_given,
-            a.preload_offset_m * 1e6,
-            f(a.preload_n, "N"),
-            f(a.lift_off_axial_load_n, "N")
-        );
+        if a.spacing_m.is_some() {
+            let _ = writeln!(
+                out,
+                "  preload {} (offset {:.3} µm per ring): {} at this speed; lift-off axial load {} (at rest)",
+                a.preload_given,
+                a.preload_offset_m * 1e6,
+                f(a.preload_n, "N"),
+                f(a.lift_off_axial_load_n, "N")
+            );
+        }
         let u = a.shaft_displacement;
         let _ = writeln!(
             out,

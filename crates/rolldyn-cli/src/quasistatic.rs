@@ -580,6 +580,25 @@ impl QuasiStaticOutput {
 /// Solves the case at its operating point with the chosen control.
 pub fn solve(case: &Case, control: ControlChoice) -> Result<QuasiStaticOutput, crate::Failure> {
     use crate::Failure;
+    if let Some(model) =
+        rolldyn_case::simulation::ShaftModel::from_case(case).map_err(crate::simulation_failure)?
+    {
+        if let ControlChoice::Raceway(Some(control)) = control {
+            let mut model = model;
+            model.conditions.control = control;
+            return crate::arrangement::SetReport::of_shaft(&model)
+                .map(|r| QuasiStaticOutput::Set(Box::new(r)));
+        }
+        if matches!(control, ControlChoice::Traction) {
+            return Err(crate::bad_arg(
+                "--control",
+                "traction",
+                "not with [shaft] (shaft systems are solved with raceway control)",
+            ));
+        }
+        return crate::arrangement::SetReport::of_shaft(&model)
+            .map(|r| QuasiStaticOutput::Set(Box::new(r)));
+    }
     if let Some(mut set) =
         rolldyn_case::simulation::BearingSet::from_case(case).map_err(crate::simulation_failure)?
     {

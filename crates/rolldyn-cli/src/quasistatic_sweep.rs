@@ -294,6 +294,11 @@ pub fn sweep_case(
     control: Option<RacewayControl>,
     sweeps: &[(Swept, Vec<f64>)],
 ) -> Result<SweepRows, crate::Failure> {
+    if case.shaft.is_some() {
+        return Err(crate::Failure::BadInput(
+            "shaft: `quasistatic --sweep` solves one bearing or an [arrangement] set; for a [shaft] system run `rolldyn quasistatic` per point (`rolldyn run --sweep` does not take it either)".into(),
+        ));
+    }
     match rolldyn_case::simulation::BearingSet::from_case(case)
         .map_err(crate::simulation_failure)?
     {

@@ -212,3 +212,106 @@ fn errors_name_the_key() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--control traction"), "{}", stderr(&o));
 }
+
+/// Two 6206 on a rigid shaft 120 mm apart, a gear force of 4 kN at
+/// x = +20 mm with a 300 N thrust (`[shaft]`).
+const SHAFT: &str = r#"
+[operating]
+speed = "3000 rpm"
+[shaft]
+[[shaft.bearings]]
+preset = "6206"
+position = "-60 mm"
+[[shaft.bearings]]
+preset = "6206"
+position = "60 mm"
+orientation = "ORIENTATION"
+[[shaft.loads]]
+position = "20 mm"
+force_z = "-4 kN"
+force_x = "300 N"
+"#;
+
+/// The shaft's loads balance the applied ones; the radial reactions are
+/// the lever rule's (4000 × 40/120 and 4000 × 80/120 N) but for the small
+/// moments the deep-groove bearings take with the shaft's tilt; a
+/// deep-groove bearing carries thrust either way, so its orientation
+/// changes nothing.
+#[test]
+fn a_shaft_on_two_bearings_follows_statics() {
+    let solve = |orientation: &str| {
+        json(
+            &["quasistatic", "-", "--json"],
+            Some(&SHAFT.replace("ORIENTATION", orientation)),
+        )
+    };
+    let v = solve("forward");
+    let a = &v["arrangement"];
+    assert_eq!(a["kind"], "shaft");
+    assert!(a["spacing_m"].is_null());
+    let bearings = a["bearings"].as_array().unwrap();
+    assert_eq!(bearings.len(), 2);
+    // The applied load about the reference point: M_y = −0.02 × (−4000).
+    let applied = [300.0, 0.0, -4000.0, 80.0, 0.0];
+    for (k, expected) in applied.iter().enumerate() {
+        let carried: f64 = bearings
+            .iter()
+            .map(|b| b["shaft_load"][k].as_f64().unwrap())
+            .sum();
+        assert!(
+            (carried - expected).abs() < 1e-6 * 4000.0,
+            "{k}: {carried} vs {expected}"
+        );
+    }
+    let radial: Vec<f64> = bearings
+        .iter()
+        .map(|b| b["radial_load_n"].as_f64().unwrap())
+        .collect();
+    for (r, lever) in radial.iter().zip([4000.0 / 3.0, 8000.0 / 3.0]) {
+        assert!((r / lever - 1.0).abs() < 0.05, "{radial:?}");
+    }
+    assert!((radial[0] + radial[1] - 4000.0).abs() < 40.0, "{radial:?}");
+    let reversed = solve("reversed");
+    for (b, r) in reversed["arrangement"]["bearings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(&radial)
+    {
+        assert!((b["radial_load_n"].as_f64().unwrap() - r).abs() < 1e-6 * r);
+    }
+    assert!(a["system_basic_rating_life_h"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn shaft_errors_name_the_key() {
+    let case = SHAFT.replace("ORIENTATION", "forward");
+    for (text, key) in [
+        (
+            case.replace(
+                "preset = \"6206\"\nposition = \"60 mm\"",
+                "preset = \"9999\"\nposition = \"60 mm\"",
+            ),
+            "shaft.bearings[1].preset",
+        ),
+        (
+            case.replace("\"60 mm\"", "\"-60 mm\""),
+            "shaft.bearings[1].position",
+        ),
+        (
+            format!("{case}\n[arrangement]\nkind = \"tandem\"\n"),
+            "shaft",
+        ),
+        (
+            "[bearing]\npreset = \"6206\"\n[shaft]\n".to_string(),
+            "shaft.bearings",
+        ),
+    ] {
+        let o = rolldyn(&["quasistatic", "-"], Some(&text));
+        assert_eq!(o.status.code(), Some(2), "{key}: {}", stderr(&o));
+        assert!(stderr(&o).contains(key), "{key}: {}", stderr(&o));
+    }
+    let o = rolldyn(&["run", "-", "--duration", "1 ms"], Some(&case));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("shaft"), "{}", stderr(&o));
+}

@@ -35,7 +35,7 @@ pub use integrator::{
     DEFAULT_MAX_STEP, DEFAULT_RELATIVE_TOLERANCE, DEFAULT_RK4_STEP, DEFAULT_STIFF_MAX_STEP,
     STEPS_PER_FILM_PERIOD, SolverSettings, stiff_max_step,
 };
-pub use sets::BearingSet;
+pub use sets::{BearingSet, ShaftBearingModel, ShaftModel};
 pub use steady::{QuasiStatic, conditions, film_inputs, power_loss, thermal_steady_state};
 
 use crate::Case;
@@ -174,6 +174,15 @@ impl Simulation {
 /// Refuses a case with a bearing set for an analysis that models one
 /// bearing (`what`), naming the key.
 pub fn single_bearing(case: &Case, what: &str) -> Result<(), SimulationError> {
+    if case.shaft.is_some() {
+        return Err(SimulationError::Case(Invalid {
+            key: "shaft".into(),
+            value: None,
+            rule: format!(
+                "{what} models one bearing; of a shaft system only the quasi-static solution is available (`rolldyn quasistatic`, docs/systems.md)"
+            ),
+        }));
+    }
     match case.bearing_set() {
         Some(set) => Err(SimulationError::Case(Invalid {
             key: "arrangement.kind".into(),

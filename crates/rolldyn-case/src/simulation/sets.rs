@@ -1,7 +1,8 @@
-//! A case's matched bearing set on one rigid shaft (`[arrangement]`;
-//! docs/systems.md): the set built from the case's bearing, its preload
-//! offset, its equilibrium under the case's loads, the preload at the
-//! operating speed and the lift-off load at rest.
+//! A case's bearings on one rigid shaft (docs/systems.md): the matched set
+//! of `[arrangement]` built from the case's bearing, its preload offset,
+//! its equilibrium under the case's loads, the preload at the operating
+//! speed and the lift-off load at rest; and the general system of
+//! `[shaft]`, built-in bearings at positions.
 
 use super::{QuasiStatic, SimulationError};
 use crate::Case;
@@ -109,5 +110,95 @@ impl BearingSet {
         Ok(self
             .system
             .lift_off_load(0.0, self.conditions.control, &self.options)?)
+    }
+}
+
+/// One bearing of a `[shaft]` system: its preset's case at the system's
+/// speed and raceway control, and its mounting.
+#[derive(Debug, Clone)]
+pub struct ShaftBearingModel {
+    /// The preset's case (its geometry, materials, lubricant, life
+    /// settings) with the system case's speed.
+    pub case: Case,
+    /// On the shaft.
+    pub mounted: MountedBearing,
+}
+
+/// The `[shaft]` system of a case at its operating point.
+#[derive(Debug, Clone)]
+pub struct ShaftModel {
+    /// Its bearings, in the case's order.
+    pub bearings: Vec<ShaftBearingModel>,
+    /// The shaft with them.
+    pub system: ShaftSystem,
+    /// The `[operating]` loads and the `[[shaft.loads]]` about the
+    /// reference point, the speed and the raceway control.
+    pub conditions: SystemConditions,
+    /// Quasi-static solver options (the first bearing's).
+    pub options: SolverOptions,
+}
+
+impl ShaftModel {
+    /// The system of `case`, or None without `[shaft]`.
+    pub fn from_case(case: &Case) -> Result<Option<Self>, SimulationError> {
+        let Some(shaft) = &case.shaft else {
+            return Ok(None);
+        };
+        let at = super::conditions(case, None);
+        let speed =
+            crate::Override::parse_set(&format!("operating.speed=\"{} rad/s\"", at.inner_speed))
+                .map_err(|e| {
+                    SimulationError::Case(Invalid {
+                        key: "operating.speed".into(),
+                        value: None,
+                        rule: e.to_string(),
+                    })
+                })?;
+        let mut bearings = Vec::with_capacity(shaft.bearings.len());
+        for (i, b) in shaft.bearings.iter().enumerate() {
+            let preset = crate::presets::find(b.preset).expect("checked with the case");
+            let bearing_case =
+                crate::load_case(preset.name, preset.text, std::slice::from_ref(&speed)).map_err(
+                    |e| {
+                        SimulationError::Case(Invalid {
+                            key: format!("shaft.bearings[{i}].preset"),
+                            value: Some(b.preset.into()),
+                            rule: e.to_string(),
+                        })
+                    },
+                )?;
+            let problem = QuasiStatic::from_case(&bearing_case)?;
+            bearings.push(ShaftBearingModel {
+                mounted: MountedBearing {
+                    solver: problem.solver,
+                    position: b.position,
+                    orientation: b.orientation,
+                    axial_offset: 0.0,
+                },
+                case: bearing_case,
+            });
+        }
+        let problem = QuasiStatic::from_case(&bearings[0].case)?;
+        let loads = Loads {
+            force: std::array::from_fn(|k| case.loads.force[k] + shaft.loads.force[k]),
+            moment: std::array::from_fn(|k| case.loads.moment[k] + shaft.loads.moment[k]),
+        };
+        Ok(Some(Self {
+            system: ShaftSystem {
+                bearings: bearings.iter().map(|b| b.mounted.clone()).collect(),
+            },
+            bearings,
+            conditions: SystemConditions {
+                loads,
+                inner_speed: at.inner_speed,
+                control: at.control,
+            },
+            options: problem.options,
+        }))
+    }
+
+    /// The system's equilibrium.
+    pub fn solve(&self) -> Result<SystemEquilibrium, SimulationError> {
+        Ok(self.system.solve_general(&self.conditions, &self.options)?)
     }
 }

@@ -422,6 +422,103 @@ impl ShaftSystem {
             .map_or([0.0; 5], |inv| (inv * ring).into()))
     }
 
+    /// The equilibrium of a general shaft system (bearings at different
+    /// positions, none preloaded: a `[shaft]`): from the displacement the
+    /// rigid shaft's statics suggest ([`Self::start_from_statics`]), else
+    /// as [`Self::solve`].
+    pub fn solve_general(
+        &self,
+        conditions: &SystemConditions,
+        options: &SolverOptions,
+    ) -> Result<SystemEquilibrium, SystemError> {
+        match self
+            .start_from_statics(conditions, options)
+            .and_then(|start| self.solve_from(start, conditions, options))
+        {
+            Ok(eq) => Ok(eq),
+            Err(_) => self.solve(conditions, options),
+        }
+    }
+
+    /// A start for a statically spread system: the external load shared
+    /// among the bearings by the rigid shaft's statics (forces only, the
+    /// least-norm shares that balance forces and moments; the axial load
+    /// on the bearings that carry its direction), each bearing solved
+    /// under its share with its ring free, and the shaft displacement that
+    /// fits their ring displacements best (least squares).
+    pub fn start_from_statics(
+        &self,
+        conditions: &SystemConditions,
+        options: &SolverOptions,
+    ) -> Result<[f64; 5], SystemError> {
+        let n = self.bearings.len();
+        let l = conditions.loads;
+        // Radial shares: Σ R = F, Σ x R = M (y: M_z; z: −M_y), least norm.
+        let shares = |force: f64, moment: f64| -> Vec<f64> {
+            let (s0, s1, s2) = self.bearings.iter().fold((0.0, 0.0, 0.0), |(a, b, c), m| {
+                (a + 1.0, b + m.position, c + m.position * m.position)
+            });
+            let det = s0 * s2 - s1 * s1;
+            if n == 1 || det.abs() < 1e-18 {
+                return vec![force / n as f64; n];
+            }
+            // R_i = λ + μ x_i with [s0 s1; s1 s2] (λ, μ) = (F, M).
+            let lambda = (force * s2 - moment * s1) / det;
+            let mu = (s0 * moment - s1 * force) / det;
+            self.bearings
+                .iter()
+                .map(|m| lambda + mu * m.position)
+                .collect()
+        };
+        let ry = shares(l.force[1], l.moment[1]);
+        let rz = shares(l.force[2], -l.moment[0]);
+        let carriers: Vec<bool> = self
+            .bearings
+            .iter()
+            .map(|m| match m.orientation {
+                Orientation::Forward => l.force[0] >= 0.0,
+                Orientation::Reversed => l.force[0] <= 0.0,
+            })
+            .collect();
+        let count = carriers.iter().filter(|c| **c).count().max(1) as f64;
+        let mut normal = Matrix5::zeros();
+        let mut right = Vector5::zeros();
+        for (i, b) in self.bearings.iter().enumerate() {
+            let axial = if carriers[i] { l.force[0] / count } else { 0.0 };
+            // The share on the shaft is −(the load on the ring) by the
+            // bearing's reaction; in its own frame M_i flips x.
+            let sign = if b.orientation == Orientation::Reversed {
+                -1.0
+            } else {
+                1.0
+            };
+            let local = super::Conditions {
+                loads: Loads {
+                    force: [sign * axial, ry[i], rz[i]],
+                    moment: [0.0, 0.0],
+                },
+                inner_speed: conditions.inner_speed,
+                control: conditions.control,
+            };
+            let Ok(eq) = b.solver.solve(&local, options) else {
+                continue;
+            };
+            let mut ring = Vector5::from(eq.displacement);
+            ring[0] -= b.axial_offset;
+            let t = b.transform();
+            normal += t.transpose() * t;
+            right += t.transpose() * ring;
+        }
+        let u = normal
+            .lu()
+            .solve(&right)
+            .ok_or(SystemError::NoConvergence {
+                iterations: 0,
+                residual: f64::INFINITY,
+            })?;
+        Ok(u.into())
+    }
+
     /// The shaft equilibrium under `conditions`, from displacement `start`.
     pub fn solve_from(
         &self,

@@ -1,0 +1,60 @@
+//! `[shaft]`: several bearings, each a built-in bearing, on one rigid
+//! shaft, as written.
+
+use crate::units::*;
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// Bearings on one rigid shaft (`rolldyn quasistatic`; docs/systems.md,
+/// "General shaft systems"): each bearing a preset at an axial position,
+/// the `[operating]` loads at the shaft's reference point x = 0 and more
+/// loads at positions. Speed and raceway control from `[operating]` and
+/// `[model]`.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawShaft {
+    /// The bearings (`[[shaft.bearings]]`), at least one.
+    #[serde(default)]
+    pub bearings: Vec<RawShaftBearing>,
+    /// Forces at axial positions (`[[shaft.loads]]`: gear mesh, unbalance
+    /// at rest, a belt pull).
+    #[serde(default)]
+    pub loads: Vec<RawShaftLoad>,
+}
+
+/// Which thrust direction a bearing of a shaft carries.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RawOrientation {
+    /// As built: it carries +x thrust on its inner ring.
+    Forward,
+    /// Mirrored: it carries −x thrust.
+    Reversed,
+}
+
+/// One bearing on the shaft.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawShaftBearing {
+    /// A built-in bearing (`rolldyn presets`): its geometry, materials and
+    /// model settings.
+    pub preset: String,
+    /// Axial position of its pitch plane from the shaft's reference point.
+    pub position: Quantity<Length>,
+    /// "forward" (default: +x thrust on its inner ring) or "reversed".
+    pub orientation: Option<RawOrientation>,
+}
+
+/// A force on the shaft at an axial position.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawShaftLoad {
+    /// Axial position from the shaft's reference point.
+    pub position: Quantity<Length>,
+    /// Axial force (default 0).
+    pub force_x: Option<Quantity<Force>>,
+    /// Force along y (default 0).
+    pub force_y: Option<Quantity<Force>>,
+    /// Force along z (default 0).
+    pub force_z: Option<Quantity<Force>>,
+}
