@@ -19,6 +19,7 @@ mod arrangement;
 mod bearing;
 mod cage;
 mod dynamics;
+mod fits;
 mod life;
 mod lubricant;
 mod material;
@@ -38,6 +39,7 @@ pub use dynamics::{
     DEFAULT_POCKET_FRICTION, DEFAULT_POCKET_MIN_FILM, GUIDE_MAX_ECCENTRICITY, GUIDE_STOP_STIFFNESS,
     GUPTA_WALL_FORCE, STANDARD_GRAVITY,
 };
+pub use fits::FitEffect;
 pub use life::{Life, MAX_VISCOSITY_RATIO};
 pub use lubricant::Lubricant;
 use lubricant::lubricant;
@@ -186,6 +188,8 @@ pub struct Bearing {
     pub outside_diameter: Option<f64>,
     /// Width \[m\].
     pub width: Option<f64>,
+    /// What `[fits]` did to the clearance (None without fits).
+    pub fits: Option<FitEffect>,
 }
 
 /// Cage data in SI.
@@ -367,7 +371,7 @@ impl Case {
         .unwrap_or(DEFAULT_IMPACT_SPEED_FLOOR);
         let solver = solver::solver(raw)?;
         let traction_integration = traction::integration(raw.model.traction_integration)?;
-        let bearing = bearing(&raw.bearing)?;
+        let bearing = bearing(&raw.bearing, raw.fits.as_ref())?;
         let arrangement = arrangement::arrangement(&raw.arrangement, bearing.width)?;
         let shaft = shaft::shaft(&raw.shaft)?;
         if shaft.is_some() && arrangement.is_some() {

@@ -14,6 +14,7 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 mod arrangement;
+mod fits;
 mod life;
 mod model;
 mod sensor;
@@ -21,6 +22,7 @@ mod shaft;
 mod surface;
 mod thermal;
 pub use arrangement::*;
+pub use fits::*;
 pub use life::*;
 pub use model::*;
 pub use sensor::*;
@@ -80,6 +82,9 @@ pub struct RawCase {
     pub arrangement: Option<RawArrangement>,
     /// Several built-in bearings on one rigid shaft (absent: one bearing).
     pub shaft: Option<RawShaft>,
+    /// Interference fits on the shaft and in the housing (absent: the
+    /// clearance as given).
+    pub fits: Option<RawFits>,
     /// Time-integration settings (used by `rolldyn run`).
     #[serde(default)]
     pub solver: RawSolver,

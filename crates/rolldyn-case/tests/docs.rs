@@ -79,6 +79,7 @@ fn every_schema_key_is_documented() {
         "life",
         "arrangement",
         "shaft",
+        "fits",
     ];
     for key in all {
         let documented = if sections.contains(&key.as_str()) {

@@ -282,6 +282,8 @@ pub struct QuasiStaticReport {
     pub conventional_stiffness_without_film: Option<ConventionalStiffness>,
     /// Natural modes of the inner ring (null without its mass and tilt inertia).
     pub modes: Option<crate::quasistatic_films::ModesReport>,
+    /// What `[fits]` did to the clearance (null without fits).
+    pub fits: Option<rolldyn_case::case::FitEffect>,
 }
 
 impl QuasiStaticReport {
@@ -359,6 +361,7 @@ impl QuasiStaticReport {
             stiffness_matrix_without_film: None,
             conventional_stiffness_without_film: None,
             modes: None,
+            fits: None,
         }
     }
 
@@ -386,6 +389,7 @@ impl QuasiStaticReport {
         ));
         self.films = crate::quasistatic_films::films(case, sol);
         self.modes = crate::quasistatic_films::modes(case, sol);
+        self.fits = case.bearing.fits;
         self
     }
 
@@ -412,6 +416,16 @@ impl QuasiStaticReport {
             self.moment_z_n_m,
             self.first_ball_azimuth_deg
         );
+        if let Some(f) = &self.fits {
+            let _ = writeln!(
+                out,
+                "  fits: inner raceway +{:.2} µm, outer raceway −{:.2} µm; diametral clearance {:.2} µm unmounted, {:.2} µm mounted",
+                f.inner_raceway_expansion_m * 1e6,
+                f.outer_raceway_contraction_m * 1e6,
+                f.diametral_clearance_unmounted_m * 1e6,
+                f.diametral_clearance_mounted_m * 1e6
+            );
+        }
         let _ = writeln!(
             out,
             "  inner ring: x {:.3} µm, y {:.3} µm, z {:.3} µm, θ_y {:.3e} rad, θ_z {:.3e} rad",

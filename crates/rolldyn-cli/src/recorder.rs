@@ -133,7 +133,7 @@ impl Channels {
         let thermal = model.thermal().is_some();
         let mixed = params.mixed_lubrication.is_some();
         let sensor = model.sensor().is_some();
-        let growing_spalls = model.growing_spall_lengths().len();
+        let growing_spalls = model.growing_spall_lengths().count();
         let states = model.layout().len();
         let mut series = TimeSeries::default();
         for (name, unit) in [

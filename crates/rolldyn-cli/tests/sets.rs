@@ -315,3 +315,38 @@ fn shaft_errors_name_the_key() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("shaft"), "{}", stderr(&o));
 }
+
+/// `[fits]`: the 6206's 13 µm shrink to −3.8 µm with a 15 µm shaft and a
+/// 5 µm housing interference; the report says so, and the mounted bearing
+/// (now preloaded) carries the same radial load on more balls.
+#[test]
+fn fits_reduce_the_clearance_quasistatic_reports() {
+    let case = stdout(&rolldyn(&["new", "--preset", "6206"], None));
+    let mounted = format!(
+        "{case}\n[fits]\nshaft_interference = \"15 um\"\nhousing_interference = \"5 um\"\n"
+    );
+    let args = ["quasistatic", "-", "--json", "--radial-load", "2 kN"];
+    let free = json(&args, Some(&case));
+    let fitted = json(&args, Some(&mounted));
+    assert!(free["fits"].is_null());
+    let f = &fitted["fits"];
+    let g = |k: &str| f[k].as_f64().unwrap();
+    assert!((g("diametral_clearance_unmounted_m") - 13e-6).abs() < 1e-12);
+    let lost = g("inner_raceway_expansion_m") + g("outer_raceway_contraction_m");
+    assert!((g("diametral_clearance_mounted_m") - (13e-6 - lost)).abs() < 1e-12);
+    assert!(g("diametral_clearance_mounted_m") < 0.0);
+    let loaded = |v: &serde_json::Value| {
+        v["balls"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|b| b["load_inner_n"].as_f64().unwrap() > 1.0)
+            .count()
+    };
+    assert!(
+        loaded(&fitted) > loaded(&free),
+        "{} vs {}",
+        loaded(&fitted),
+        loaded(&free)
+    );
+}

@@ -4,6 +4,7 @@
 
 use super::{Bearing, Invalid, checked, positive, text};
 use crate::raw::RawBearing;
+use crate::raw::RawFits;
 use crate::units::Quantity;
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
@@ -45,7 +46,7 @@ fn groove(
     }
 }
 
-pub(super) fn bearing(b: &RawBearing) -> Result<Bearing, Invalid> {
+pub(super) fn bearing(b: &RawBearing, fits: Option<&RawFits>) -> Result<Bearing, Invalid> {
     let d = b.ball_diameter.as_ref().ok_or_else(|| {
         Invalid::missing(
             "bearing.ball_diameter",
@@ -142,6 +143,18 @@ pub(super) fn bearing(b: &RawBearing) -> Result<Bearing, Invalid> {
                 .si
         }
     };
+    let optional =
+        |key: &str, q: &Option<Quantity<crate::units::Length>>| checked(key, q, positive);
+    let bore = optional("bearing.bore", &b.bore)?;
+    let outside_diameter = optional("bearing.outside_diameter", &b.outside_diameter)?;
+    let (clearance, pitch, fit) = match fits {
+        Some(fits) => {
+            let (c, p, effect) =
+                super::fits::mount(fits, clearance, pitch, d.si, bore, outside_diameter)?;
+            (c, p, Some(effect))
+        }
+        None => (clearance, pitch, None),
+    };
     let spec = GeometrySpec {
         ball_diameter: d.si,
         ball_count: z as usize,
@@ -149,7 +162,9 @@ pub(super) fn bearing(b: &RawBearing) -> Result<Bearing, Invalid> {
         inner_groove_curvature: fi,
         outer_groove_curvature: fo,
         clearance,
-        preload: b.preload.unwrap_or(false),
+        // A fit that closes the clearance preloads the bearing.
+        preload: b.preload.unwrap_or(false)
+            || fit.is_some_and(|f| f.diametral_clearance_mounted_m < 0.0),
     };
     let geometry = BearingGeometry::new(&spec).map_err(|e| {
         let key = match (e.field, fi_form, fo_form) {
@@ -173,15 +188,14 @@ pub(super) fn bearing(b: &RawBearing) -> Result<Bearing, Invalid> {
         };
         Invalid::new(format!("bearing.{key}"), value, e.rule)
     })?;
-    let optional =
-        |key: &str, q: &Option<Quantity<crate::units::Length>>| checked(key, q, positive);
     Ok(Bearing {
         preset: b.preset.clone(),
         designation: b.designation.clone(),
         geometry,
-        bore: optional("bearing.bore", &b.bore)?,
-        outside_diameter: optional("bearing.outside_diameter", &b.outside_diameter)?,
+        bore,
+        outside_diameter,
         width: optional("bearing.width", &b.width)?,
+        fits: fit,
     })
 }
 

@@ -22,7 +22,7 @@ impl Checkpoint for BearingModel {
         if let Some(thermal) = &self.thermal {
             thermal.save(out);
         }
-        out.f64s(&self.growing_spall_lengths());
+        out.f64s(&self.growing_spall_lengths().collect::<Vec<_>>());
         out.u64(u64::from(self.sensor.is_some()));
         if let Some(sensor) = &self.sensor {
             sensor.save(out);
@@ -55,7 +55,7 @@ impl Checkpoint for BearingModel {
             self.thermal = Some(thermal);
             self.elements.apply_viscosities(viscosities?);
         }
-        let mut lengths = self.growing_spall_lengths();
+        let mut lengths: Vec<f64> = self.growing_spall_lengths().collect();
         input.f64s_into("growing spall lengths", &mut lengths)?;
         self.set_growing_spall_lengths(&lengths);
         let sensed = input.u64()? == 1;

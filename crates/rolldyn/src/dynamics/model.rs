@@ -77,7 +77,7 @@ pub struct BearingModel {
     /// Sensor chain advanced alongside a run, if attached.
     pub(super) sensor: Option<Box<SensorChain>>,
     /// The spalls that grow over the run ([`super::spall_growth`]).
-    pub(super) growth: Vec<super::spall_growth::Growing>,
+    pub(super) growth: Vec<crate::surface::GrowingSpall>,
     /// The balls' contact evaluations, serial or across threads.
     pub(super) ball_pass: BallPass,
 }
@@ -106,7 +106,7 @@ impl BearingModel {
             growth: Vec::new(),
             ball_pass,
         };
-        model.growth = model.growing_spalls();
+        model.growth = model.elements.params.surface.growing_spalls();
         Ok(model)
     }
 

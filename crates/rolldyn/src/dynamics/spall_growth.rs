@@ -13,80 +13,28 @@
 //! exact: the drop is zero wherever the surface changed.
 
 use super::model::BearingModel;
-use crate::surface::{SpallSite, SpallSize};
+use crate::surface::SpallSize;
 
 /// Smallest growth step, relative to the spall's length.
 pub const MIN_INCREMENT: f64 = 0.01;
 
-/// A growing spall: where it is (its site and index among that surface's
-/// spalls), its length at t = 0 \[m\] and its rate \[m/s\].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct Growing {
-    site: SpallSite,
-    index: usize,
-    initial_length: f64,
-    rate: f64,
-}
-
 impl BearingModel {
-    /// The growing spalls of the model's surfaces.
-    pub(super) fn growing_spalls(&self) -> Vec<Growing> {
-        let surface = &self.elements.params.surface;
-        let mut out = Vec::new();
-        let mut push = |site, spalls: &[crate::surface::Spall]| {
-            for (index, s) in spalls.iter().enumerate() {
-                if let (SpallSize::Length(length), true) = (s.size, s.growth_rate > 0.0) {
-                    out.push(Growing {
-                        site,
-                        index,
-                        initial_length: length,
-                        rate: s.growth_rate,
-                    });
-                }
-            }
-        };
-        push(SpallSite::Inner, &surface.inner.spalls);
-        push(SpallSite::Outer, &surface.outer.spalls);
-        for (j, ball) in surface.balls.iter().enumerate() {
-            push(SpallSite::Ball(j), &ball.spalls);
-        }
-        out
-    }
-
-    fn spall_mut(&mut self, site: SpallSite, index: usize) -> &mut crate::surface::Spall {
-        let surface = &mut self.elements.params.surface;
-        match site {
-            SpallSite::Inner => &mut surface.inner.spalls[index],
-            SpallSite::Outer => &mut surface.outer.spalls[index],
-            SpallSite::Ball(j) => &mut surface.balls[j].spalls[index],
-        }
-    }
-
     /// The growing spalls' current lengths \[m\], in the order of
     /// [`crate::surface::SurfaceModel::spalls`] (empty without growth).
-    pub fn growing_spall_lengths(&self) -> Vec<f64> {
-        self.growth
-            .iter()
-            .map(|g| match self.spall(g.site, g.index).size {
+    pub fn growing_spall_lengths(&self) -> impl Iterator<Item = f64> + '_ {
+        self.growth.iter().map(
+            |g| match self.elements.params.surface.spall(g.site, g.index).size {
                 SpallSize::Length(l) => l,
                 SpallSize::Angle(_) => f64::NAN,
-            })
-            .collect()
-    }
-
-    fn spall(&self, site: SpallSite, index: usize) -> &crate::surface::Spall {
-        let surface = &self.elements.params.surface;
-        match site {
-            SpallSite::Inner => &surface.inner.spalls[index],
-            SpallSite::Outer => &surface.outer.spalls[index],
-            SpallSite::Ball(j) => &surface.balls[j].spalls[index],
-        }
+            },
+        )
     }
 
     /// Sets the growing spalls' lengths (a checkpoint's).
     pub(super) fn set_growing_spall_lengths(&mut self, lengths: &[f64]) {
-        for (g, &length) in self.growth.clone().iter().zip(lengths) {
-            self.spall_mut(g.site, g.index).size = SpallSize::Length(length);
+        let surface = &mut self.elements.params.surface;
+        for (g, &length) in self.growth.iter().zip(lengths) {
+            surface.spall_mut(g.site, g.index).size = SpallSize::Length(length);
         }
     }
 
@@ -94,8 +42,9 @@ impl BearingModel {
     /// (the right-hand side changed).
     pub(super) fn grow_spalls(&mut self, t: f64, y: &[f64]) -> bool {
         let mut grown = false;
-        for g in self.growth.clone() {
-            let spall = *self.spall(g.site, g.index);
+        for k in 0..self.growth.len() {
+            let g = self.growth[k];
+            let spall = *self.elements.params.surface.spall(g.site, g.index);
             let SpallSize::Length(current) = spall.size else {
                 continue;
             };
@@ -108,7 +57,7 @@ impl BearingModel {
                 ..spall
             };
             if !self.elements.spall_is_loaded(t, y, g.site, &grown_spall) {
-                *self.spall_mut(g.site, g.index) = grown_spall;
+                *self.elements.params.surface.spall_mut(g.site, g.index) = grown_spall;
                 grown = true;
             }
         }

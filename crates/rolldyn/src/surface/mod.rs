@@ -220,6 +220,65 @@ impl SurfaceModel {
     }
 }
 
+/// A spall that grows over a run ([`Spall::growth_rate`]): where it sits
+/// (its site and its index among that surface's spalls), its length at
+/// t = 0 \[m\] and its rate \[m/s\].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GrowingSpall {
+    /// Its surface.
+    pub site: SpallSite,
+    /// Its index among that surface's spalls.
+    pub index: usize,
+    /// Its length at t = 0 \[m\].
+    pub initial_length: f64,
+    /// Its growth rate \[m/s\].
+    pub rate: f64,
+}
+
+impl SurfaceModel {
+    /// The spalls with a growth rate (given by their length), in the order
+    /// of [`Self::spalls`].
+    pub fn growing_spalls(&self) -> Vec<GrowingSpall> {
+        let mut out = Vec::new();
+        let mut push = |site, spalls: &[Spall]| {
+            for (index, s) in spalls.iter().enumerate() {
+                if let (SpallSize::Length(length), true) = (s.size, s.growth_rate > 0.0) {
+                    out.push(GrowingSpall {
+                        site,
+                        index,
+                        initial_length: length,
+                        rate: s.growth_rate,
+                    });
+                }
+            }
+        };
+        push(SpallSite::Inner, &self.inner.spalls);
+        push(SpallSite::Outer, &self.outer.spalls);
+        for (j, ball) in self.balls.iter().enumerate() {
+            push(SpallSite::Ball(j), &ball.spalls);
+        }
+        out
+    }
+
+    /// Spall `index` of the surface at `site`.
+    pub fn spall_mut(&mut self, site: SpallSite, index: usize) -> &mut Spall {
+        match site {
+            SpallSite::Inner => &mut self.inner.spalls[index],
+            SpallSite::Outer => &mut self.outer.spalls[index],
+            SpallSite::Ball(j) => &mut self.balls[j].spalls[index],
+        }
+    }
+
+    /// Spall `index` of the surface at `site`.
+    pub fn spall(&self, site: SpallSite, index: usize) -> &Spall {
+        match site {
+            SpallSite::Inner => &self.inner.spalls[index],
+            SpallSite::Outer => &self.outer.spalls[index],
+            SpallSite::Ball(j) => &self.balls[j].spalls[index],
+        }
+    }
+}
+
 /// Where a spall sits.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SpallSite {
