@@ -14,18 +14,35 @@ const CASE: &str = concat!(
     "/../../examples/cwru6205/case.toml"
 );
 
-fn run(tag: &str, extra: &[&str]) -> (std::path::PathBuf, serde_json::Value) {
+/// The CWRU case (with its `[sensor]`), or without the sensor.
+fn case_text(sensor: bool) -> String {
+    let text = std::fs::read_to_string(CASE).unwrap();
+    if sensor {
+        return text;
+    }
+    let start = text.find("\n[sensor]").unwrap();
+    let end = text.find("\n[assumptions]").unwrap();
+    let assumptions: Vec<&str> = text[end..]
+        .lines()
+        .filter(|l| !l.starts_with("\"sensor."))
+        .collect();
+    format!("{}{}\n", &text[..start], assumptions.join("\n"))
+}
+
+/// Runs the case (`sensor`: with its `[sensor]`) for 0.04 s with `extra`
+/// arguments; its directory and summary.
+fn run(tag: &str, sensor: bool, extra: &[&str]) -> (std::path::PathBuf, serde_json::Value) {
     let dir = temp_dir(tag);
     let mut args = vec![
         "run",
-        CASE,
+        "-",
         "-o",
         dir.to_str().unwrap(),
         "--duration",
         "0.04 s",
     ];
     args.extend_from_slice(extra);
-    let o = rolldyn(&args, None);
+    let o = rolldyn(&args, Some(&case_text(sensor)));
     assert!(o.status.success(), "{tag}: {}", stderr(&o));
     let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
     (dir, serde_json::from_str(&text).unwrap())
@@ -33,7 +50,7 @@ fn run(tag: &str, extra: &[&str]) -> (std::path::PathBuf, serde_json::Value) {
 
 #[test]
 fn a_sensor_records_the_housing_and_the_summary_analyses_it() {
-    let (dir, summary) = run("sensor-on", &["--set", "sensor={}"]);
+    let (dir, summary) = run("sensor-on", true, &[]);
     let series = read_parquet(&dir.join("timeseries.parquet")).unwrap();
     let acquired = series.column("sensor_acceleration_m_s2").unwrap();
     let housing = series.column("sensor_housing_acceleration_m_s2").unwrap();
@@ -53,7 +70,7 @@ fn a_sensor_records_the_housing_and_the_summary_analyses_it() {
         "sensor_acceleration_m_s2"
     );
     // Without a sensor: no channels, a null key, the ring's channel analysed.
-    let (plain, plain_summary) = run("sensor-off", &[]);
+    let (plain, plain_summary) = run("sensor-off", false, &[]);
     let plain_series = read_parquet(&plain.join("timeseries.parquet")).unwrap();
     assert!(plain_series.column("sensor_acceleration_m_s2").is_none());
     assert!(plain_summary["sensor"].is_null());
@@ -76,10 +93,18 @@ fn a_sensor_records_the_housing_and_the_summary_analyses_it() {
 #[test]
 fn the_seed_draws_the_noise_and_the_group_selects_the_channels() {
     let noisy = |tag: &str, seed: u64| {
-        let set = format!("sensor={{ noise = \"0.5 m/s^2\", seed = {seed} }}");
+        let seed = format!("sensor.seed={seed}");
         let (dir, _) = run(
             tag,
-            &["--set", &set, "--set", "output.channels=[\"sensor\"]"],
+            true,
+            &[
+                "--set",
+                "sensor.noise=\"0.5 m/s^2\"",
+                "--set",
+                &seed,
+                "--set",
+                "output.channels=[\"sensor\"]",
+            ],
         );
         let series = read_parquet(&dir.join("timeseries.parquet")).unwrap();
         std::fs::remove_dir_all(dir).ok();
@@ -119,7 +144,7 @@ fn a_small_range_clips_and_warns() {
             "--duration",
             "0.02 s",
             "--set",
-            "sensor={ full_scale = \"2 g\" }",
+            "sensor.full_scale=\"2 g\"",
         ],
         None,
     );
@@ -148,21 +173,21 @@ fn a_small_range_clips_and_warns() {
 fn bad_sensor_values_name_the_key() {
     for (set, key) in [
         (
-            "sensor={ modes = [{ frequency = \"3 kHz\" }] }",
+            "sensor.modes=[{ frequency = \"3 kHz\" }]",
             "sensor.modes[0].mass",
         ),
         (
-            "sensor={ modes = [{ frequency = \"3 kHz\", mass = \"1 kg\", damping_ratio = 1.5 }] }",
+            "sensor.modes=[{ frequency = \"3 kHz\", mass = \"1 kg\", damping_ratio = 1.5 }]",
             "sensor.modes[0].damping_ratio",
         ),
         (
-            "sensor={ anti_alias_cutoff = \"7 kHz\" }",
+            "sensor.anti_alias_cutoff=\"7 kHz\"",
             "sensor.anti_alias_cutoff",
         ),
-        ("sensor={ noise = \"-1 m/s^2\" }", "sensor.noise"),
-        ("sensor={ adc_bits = 0 }", "sensor.adc_bits"),
-        ("sensor={ modes = [] }", "sensor.modes"),
-        ("sensor={ noise = \"1 kg\" }", "sensor.noise"),
+        ("sensor.noise=\"-1 m/s^2\"", "sensor.noise"),
+        ("sensor.adc_bits=0", "sensor.adc_bits"),
+        ("sensor.modes=[]", "sensor.modes"),
+        ("sensor.noise=\"1 kg\"", "sensor.noise"),
     ] {
         let o = rolldyn(&["run", CASE, "--duration", "1 ms", "--set", set], None);
         assert_eq!(o.status.code(), Some(2), "{set}");
