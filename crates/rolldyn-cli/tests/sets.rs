@@ -350,3 +350,55 @@ fn fits_reduce_the_clearance_quasistatic_reports() {
         loaded(&free)
     );
 }
+
+/// A locating and a floating bearing: the floating one carries no thrust,
+/// the locating one all of it; the reported compliance (the floating
+/// bearing's free axial motion condensed out) predicts the shaft's move
+/// under 10 N more of the gear force.
+#[test]
+fn a_floating_bearing_carries_no_thrust() {
+    let case = |force_z: &str| {
+        SHAFT
+            .replace("orientation = \"ORIENTATION\"", "axial = \"floating\"")
+            .replace("force_z = \"-4 kN\"", &format!("force_z = \"{force_z}\""))
+    };
+    let solve = |force_z: &str| json(&["quasistatic", "-", "--json"], Some(&case(force_z)));
+    let v = solve("-4000 N");
+    let a = &v["arrangement"];
+    let bearings = a["bearings"].as_array().unwrap();
+    let axial = |b: &serde_json::Value| b["axial_load_n"].as_f64().unwrap();
+    assert!(
+        (axial(&bearings[0]) - 300.0).abs() < 1e-6 * 300.0,
+        "{}",
+        axial(&bearings[0])
+    );
+    assert!(
+        axial(&bearings[1]).abs() < 1e-6 * 300.0,
+        "{}",
+        axial(&bearings[1])
+    );
+    let more = solve("-4010 N");
+    let u = |v: &serde_json::Value, k: usize| {
+        v["arrangement"]["shaft_displacement"][k].as_f64().unwrap()
+    };
+    // The extra −10 N at x = +20 mm: ΔF_z = −10 N, ΔM_y = +0.2 N·m.
+    let c = &a["compliance_matrix"];
+    let g = |i: usize, j: usize| c[i][j].as_f64().unwrap();
+    for k in [2, 3] {
+        let predicted = g(k, 2) * -10.0 + g(k, 3) * 0.2;
+        let moved = u(&more, k) - u(&v, k);
+        assert!(
+            (moved / predicted - 1.0).abs() < 0.02,
+            "{k}: {moved} vs {predicted}"
+        );
+    }
+    let o = rolldyn(
+        &["quasistatic", "-"],
+        Some(&case("-4000 N").replace(
+            "preset = \"6206\"\nposition = \"-60 mm\"",
+            "preset = \"6206\"\nposition = \"-60 mm\"\naxial = \"floating\"",
+        )),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("shaft.bearings"), "{}", stderr(&o));
+}

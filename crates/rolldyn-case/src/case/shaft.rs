@@ -2,7 +2,7 @@
 //! the loads on it, checked with the key of the offending entry.
 
 use super::{Invalid, checked};
-use crate::raw::{RawOrientation, RawShaft};
+use crate::raw::{RawAxial, RawOrientation, RawShaft};
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::system::Orientation;
 
@@ -18,6 +18,8 @@ pub struct ShaftBearing {
     pub position: f64,
     /// Which thrust it carries.
     pub orientation: Orientation,
+    /// Its outer ring slides in the housing (no thrust).
+    pub floating: bool,
 }
 
 /// `[shaft]`, checked.
@@ -83,7 +85,15 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
                 None | Some(RawOrientation::Forward) => Orientation::Forward,
                 Some(RawOrientation::Reversed) => Orientation::Reversed,
             },
+            floating: b.axial == Some(RawAxial::Floating),
         });
+    }
+    if bearings.iter().all(|b| b.floating) {
+        return Err(Invalid::new(
+            "shaft.bearings",
+            None,
+            "every bearing floats: at least one must locate the shaft axially (axial = \"located\")",
+        ));
     }
     let mut loads = Loads::default();
     for (i, l) in raw.loads.iter().enumerate() {

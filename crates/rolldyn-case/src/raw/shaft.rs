@@ -32,6 +32,17 @@ pub enum RawOrientation {
     Reversed,
 }
 
+/// How a bearing of a shaft is held axially.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RawAxial {
+    /// Both rings held: it locates the shaft and carries thrust.
+    Located,
+    /// Its outer ring slides in the housing: no thrust (a deep-groove
+    /// bearing as the non-locating one of a fixed–floating pair).
+    Floating,
+}
+
 /// One bearing on the shaft.
 #[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -43,6 +54,8 @@ pub struct RawShaftBearing {
     pub position: Quantity<Length>,
     /// "forward" (default: +x thrust on its inner ring) or "reversed".
     pub orientation: Option<RawOrientation>,
+    /// "located" (default) or "floating".
+    pub axial: Option<RawAxial>,
 }
 
 /// A force on the shaft at an axial position.

@@ -174,6 +174,7 @@ impl ShaftModel {
                     position: b.position,
                     orientation: b.orientation,
                     axial_offset: 0.0,
+                    floating: b.floating,
                 },
                 case: bearing_case,
             });

@@ -106,6 +106,11 @@ pub struct MountedBearing {
     /// Axial offset s_i of its inner ring towards its loaded side at zero
     /// shaft displacement \[m\] (the preload displacement).
     pub axial_offset: f64,
+    /// A floating bearing: its outer ring slides in the housing, so the
+    /// shaft's axial motion does not reach it and it carries no thrust; its
+    /// inner ring finds the axial place where its balls carry none
+    /// (held in the other four).
+    pub floating: bool,
 }
 
 impl MountedBearing {
@@ -114,6 +119,11 @@ impl MountedBearing {
         let mut p = Matrix5::identity();
         p[(1, 4)] = self.position;
         p[(2, 3)] = -self.position;
+        if self.floating {
+            // The shaft's axial motion does not reach it, nor its thrust
+            // the shaft.
+            p[(0, 0)] = 0.0;
+        }
         if self.orientation == Orientation::Reversed {
             for k in [0, 3, 4] {
                 p.row_mut(k).neg_mut();
@@ -145,7 +155,7 @@ impl MountedBearing {
     /// from its loaded side, to at most its preload offset: where its
     /// balls can leave the inner raceway.
     fn unloaded_by(&self, u: &[f64; 5]) -> bool {
-        self.ring_displacement(u)[0] <= self.axial_offset
+        !self.floating && self.ring_displacement(u)[0] <= self.axial_offset
     }
 
     /// The bearing's equilibrium with its ring held at its displacement
@@ -166,8 +176,12 @@ impl MountedBearing {
             inner_speed,
             control,
         };
+        // A floating bearing's inner ring finds its own axial place (no
+        // thrust); the others are held in all five.
         let held = |ring: [f64; 5]| SolverOptions {
-            prescribed_displacement: ring.map(Some),
+            prescribed_displacement: std::array::from_fn(|k| {
+                (k > 0 || !self.floating).then_some(ring[k])
+            }),
             ..*options
         };
         let target = self.ring_displacement(u);
@@ -279,6 +293,7 @@ impl ShaftSystem {
             position,
             orientation,
             axial_offset: 0.0,
+            floating: false,
         };
         let half = 0.5 * spacing;
         use Orientation::{Forward, Reversed};
@@ -340,7 +355,12 @@ impl ShaftSystem {
             let t = b.transform();
             let share = b.shaft_load(&eq.reaction);
             residual += Vector5::from(share);
-            stiffness += t.transpose() * Matrix5::from(eq.stiffness).transpose() * t;
+            let mut k = Matrix5::from(eq.stiffness).transpose();
+            if b.floating && k[(0, 0)] != 0.0 {
+                // Its axial motion is free (no thrust): condense it out.
+                k -= k.column(0) * k.row(0) / k[(0, 0)];
+            }
+            stiffness += t.transpose() * k * t;
             shares.push(share);
             bearings.push(Some(eq));
         }
@@ -475,9 +495,12 @@ impl ShaftSystem {
         let carriers: Vec<bool> = self
             .bearings
             .iter()
-            .map(|m| match m.orientation {
-                Orientation::Forward => l.force[0] >= 0.0,
-                Orientation::Reversed => l.force[0] <= 0.0,
+            .map(|m| {
+                !m.floating
+                    && match m.orientation {
+                        Orientation::Forward => l.force[0] >= 0.0,
+                        Orientation::Reversed => l.force[0] <= 0.0,
+                    }
             })
             .collect();
         let count = carriers.iter().filter(|c| **c).count().max(1) as f64;
