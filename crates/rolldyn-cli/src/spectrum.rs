@@ -23,9 +23,11 @@ use std::path::Path;
 pub struct SpectrumArgs {
     /// Run directory (timeseries.parquet, summary.json).
     pub dir: String,
-    /// Channel to analyse (`rolldyn spectrum DIR --list` lists them).
-    #[arg(long, default_value = "inner_ring_acceleration_z_m_s2")]
-    pub channel: String,
+    /// Channel to analyse (`rolldyn spectrum DIR --list` lists them;
+    /// default: the housing sensor's `sensor_acceleration_m_s2` when the
+    /// run has one, else `inner_ring_acceleration_z_m_s2`).
+    #[arg(long)]
+    pub channel: Option<String>,
     /// amplitude, psd (Welch), envelope or spectrogram (amplitude spectra
     /// of overlapping segments, for speed ramps).
     #[arg(long, default_value = "amplitude")]
@@ -174,16 +176,23 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     let mut path = dir.join(crate::run::SERIES_DIR);
     let mut channels =
         rolldyn_io::read_schema(&path).map_err(|e| Failure::BadInput(e.to_string()))?;
+    let channel = match &args.channel {
+        Some(channel) => channel.clone(),
+        None if channels.unit(crate::vibration::SENSOR_CHANNEL).is_some() => {
+            crate::vibration::SENSOR_CHANNEL.to_string()
+        }
+        None => crate::vibration::ENVELOPE_CHANNEL.to_string(),
+    };
     let slow = dir.join(crate::run::SLOW_SERIES_DIR);
-    if channels.unit(&args.channel).is_none() && slow.is_dir() {
+    if channels.unit(&channel).is_none() && slow.is_dir() {
         // A channel recorded at output.slow_rate.
         path = slow;
         channels = rolldyn_io::read_schema(&path).map_err(|e| Failure::BadInput(e.to_string()))?;
     }
-    if channels.unit(&args.channel).is_none() {
+    if channels.unit(&channel).is_none() {
         return Err(bad_arg(
             "--channel",
-            &args.channel,
+            &channel,
             "no such channel (rolldyn spectrum DIR --list shows them)",
         ));
     }
@@ -192,7 +201,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
             "timeseries.parquet has no time_s column".into(),
         ));
     }
-    let series = rolldyn_io::read_columns(&path, Some(&["time_s", args.channel.as_str()]))
+    let series = rolldyn_io::read_columns(&path, Some(&["time_s", channel.as_str()]))
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     let summary_path = dir.join("summary.json");
     let summary: RunSummary = std::fs::read_to_string(&summary_path)
@@ -204,10 +213,10 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
                 summary_path.display()
             ))
         })?;
-    let values = series.column(&args.channel).ok_or_else(|| {
+    let values = series.column(&channel).ok_or_else(|| {
         bad_arg(
             "--channel",
-            &args.channel,
+            &channel,
             "no such channel (rolldyn spectrum DIR --list shows them)",
         )
     })?;
@@ -235,7 +244,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
                 "{}: the run's averaging window (from t = {from_time} s, its second half) holds {} samples of {}; a spectrum needs at least 16: run longer or at a higher output.sample_rate, or pass --from 0 for the whole record",
                 dir.display(),
                 record.len(),
-                args.channel
+                channel
             )),
         });
     }
@@ -245,7 +254,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         "rectangular" => Window::Rectangular,
         w => return Err(bad_arg("--window", w, "expected hann or rectangular")),
     };
-    let unit = series.unit(&args.channel).unwrap_or("").to_string();
+    let unit = series.unit(&channel).unwrap_or("").to_string();
     let spectrum_error = |e: rolldyn::signal::SpectrumError| Failure::BadInput(e.to_string());
     let default_segment = || (record.len() / 8).max(16).next_power_of_two() / 2;
     let mut frames = None;
@@ -322,7 +331,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         _ => None,
     }
     .map(|v| 1e3 * v);
-    let stem = format!("spectrum_{}_{}", args.channel, args.kind);
+    let stem = format!("spectrum_{}_{}", channel, args.kind);
     let mut csv = String::new();
     match &frames {
         // A spectrogram: one row per segment and frequency, the segment
@@ -346,7 +355,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     rolldyn_io::write_atomic(&csv_path, csv.as_bytes())
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     let report = Report {
-        channel: args.channel.clone(),
+        channel: channel.clone(),
         unit,
         kind: args.kind.clone(),
         value_unit,

@@ -69,6 +69,20 @@ fn a_sensor_records_the_housing_and_the_summary_analyses_it() {
         summary["envelope_lines"]["channel"],
         "sensor_acceleration_m_s2"
     );
+    // `spectrum` analyses the sensor's record by default.
+    let o = rolldyn(
+        &[
+            "spectrum",
+            dir.to_str().unwrap(),
+            "--kind",
+            "envelope",
+            "--json",
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let spectrum: serde_json::Value = serde_json::from_str(&common::stdout(&o)).unwrap();
+    assert_eq!(spectrum["channel"], "sensor_acceleration_m_s2");
     // Without a sensor: no channels, a null key, the ring's channel analysed.
     let (plain, plain_summary) = run("sensor-off", false, &[]);
     let plain_series = read_parquet(&plain.join("timeseries.parquet")).unwrap();
