@@ -155,6 +155,7 @@ impl ShaftModel {
                     })
                 })?;
         let mut bearings = Vec::with_capacity(shaft.bearings.len());
+        let mut options = None;
         for (i, b) in shaft.bearings.iter().enumerate() {
             let preset = crate::presets::find(b.preset).expect("checked with the case");
             let bearing_case =
@@ -168,6 +169,7 @@ impl ShaftModel {
                     },
                 )?;
             let problem = QuasiStatic::from_case(&bearing_case)?;
+            options.get_or_insert(problem.options);
             bearings.push(ShaftBearingModel {
                 mounted: MountedBearing {
                     solver: problem.solver,
@@ -179,7 +181,13 @@ impl ShaftModel {
                 case: bearing_case,
             });
         }
-        let problem = QuasiStatic::from_case(&bearings[0].case)?;
+        let options = options.ok_or_else(|| {
+            SimulationError::Case(Invalid {
+                key: "shaft.bearings".into(),
+                value: None,
+                rule: "[shaft] needs at least one bearing".into(),
+            })
+        })?;
         let loads = Loads {
             force: std::array::from_fn(|k| case.loads.force[k] + shaft.loads.force[k]),
             moment: std::array::from_fn(|k| case.loads.moment[k] + shaft.loads.moment[k]),
@@ -194,7 +202,7 @@ impl ShaftModel {
                 inner_speed: at.inner_speed,
                 control: at.control,
             },
-            options: problem.options,
+            options,
         }))
     }
 

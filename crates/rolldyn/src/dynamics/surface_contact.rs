@@ -131,9 +131,13 @@ impl Elements {
     /// infinite without spalls.
     pub(super) fn spall_step_limit(&self, t: f64, y: &[f64]) -> f64 {
         let mut limit = f64::INFINITY;
+        if self.params.surface.spalls().next().is_none() {
+            return limit;
+        }
+        let tracks = self.spall_tracks(t);
         for (site, spall) in self.params.surface.spalls() {
             for j in 0..self.layout.balls {
-                for (angle, rate, track) in self.spall_track_contacts(t, y, site, j) {
+                for (angle, rate, track) in self.spall_track_contacts(&tracks, y, site, j) {
                     if rate != 0.0 {
                         limit = limit.min(time_to_cross(spall, angle, rate, track));
                     }
@@ -153,8 +157,9 @@ impl Elements {
         site: SpallSite,
         spall: &Spall,
     ) -> bool {
+        let tracks = self.spall_tracks(t);
         (0..self.layout.balls).any(|j| {
-            self.spall_track_contacts(t, y, site, j)
+            self.spall_track_contacts(&tracks, y, site, j)
                 .iter()
                 .any(|&(angle, rate, track)| {
                     let half = spall.half_angle(track);
@@ -164,40 +169,45 @@ impl Elements {
         })
     }
 
+    /// What places the contacts on the spalls' tracks at time `t`.
+    fn spall_tracks(&self, t: f64) -> SpallTracks {
+        let g = &self.geometry;
+        let half_d = 0.5 * g.ball_diameter;
+        let radial = half_d * g.nominal_contact_angle().cos();
+        SpallTracks {
+            inner_angle: self.params.speed.angle_at(t),
+            inner_speed: self.params.speed.speed_at(t),
+            inner_track: 0.5 * g.pitch_diameter - radial,
+            outer_track: 0.5 * g.pitch_diameter + radial,
+            half_d,
+        }
+    }
+
     /// Ball j's contacts on the track of a spall at `site`: (angle on the
     /// track, its rate, the track's radius) at the nominal track radii; a
     /// zero rate marks no contact (one on a raceway, two on its own ball).
     fn spall_track_contacts(
         &self,
-        t: f64,
+        tracks: &SpallTracks,
         y: &[f64],
         site: SpallSite,
         j: usize,
     ) -> [(f64, f64, f64); 2] {
-        let g = &self.geometry;
         let l = self.layout;
-        let alpha = g.nominal_contact_angle();
-        let half_d = 0.5 * g.ball_diameter;
+        let half_d = tracks.half_d;
         let b = l.ball(j);
         let (azimuth, orbital) = (y[b + 2], y[b + 5]);
         let none = (0.0, 0.0, 0.0);
         match site {
             SpallSite::Inner => [
                 (
-                    azimuth - self.params.speed.angle_at(t),
-                    orbital - self.params.speed.speed_at(t),
-                    0.5 * g.pitch_diameter - half_d * alpha.cos(),
+                    azimuth - tracks.inner_angle,
+                    orbital - tracks.inner_speed,
+                    tracks.inner_track,
                 ),
                 none,
             ],
-            SpallSite::Outer => [
-                (
-                    azimuth,
-                    orbital,
-                    0.5 * g.pitch_diameter + half_d * alpha.cos(),
-                ),
-                none,
-            ],
+            SpallSite::Outer => [(azimuth, orbital, tracks.outer_track), none],
             SpallSite::Ball(k) if k == j && l.ball_spin_angle => {
                 let relative = Vector3::new(y[b + 6] - orbital, y[b + 7], y[b + 8]);
                 let psi = y[b + StateLayout::SPIN_ANGLE];
@@ -210,6 +220,16 @@ impl Elements {
             SpallSite::Ball(_) => [none, none],
         }
     }
+}
+
+/// The shaft's angle and speed at a time and the nominal track radii
+/// (inner race, outer race, ball).
+struct SpallTracks {
+    inner_angle: f64,
+    inner_speed: f64,
+    inner_track: f64,
+    outer_track: f64,
+    half_d: f64,
 }
 
 /// Step limit for one contact at `angle` moving at `rate` on a track of

@@ -106,13 +106,7 @@ impl SensorSpec {
             }
         }
         require_non_negative("sensor.noise", self.noise_rms)?;
-        if !(1..=8).contains(&self.anti_alias_order) {
-            return Err(InvalidParameter::new(
-                "sensor.anti_alias_order",
-                f64::from(self.anti_alias_order),
-                "must be 1 to 8",
-            ));
-        }
+        require_count("sensor.anti_alias_order", self.anti_alias_order, 1..=8)?;
         if !(self.anti_alias_cutoff > 0.0 && self.anti_alias_cutoff < 0.5 * self.sample_rate) {
             return Err(InvalidParameter::new(
                 "sensor.anti_alias_cutoff",
@@ -121,19 +115,29 @@ impl SensorSpec {
             ));
         }
         require_positive("sensor.full_scale", self.full_scale)?;
-        if !(1..=32).contains(&self.adc_bits) {
-            return Err(InvalidParameter::new(
-                "sensor.adc_bits",
-                f64::from(self.adc_bits),
-                "must be 1 to 32",
-            ));
-        }
-        Ok(())
+        require_count("sensor.adc_bits", self.adc_bits, 1..=32)
     }
 
     /// The unit vector of the sensor's axis (y, z).
     fn axis(&self) -> [f64; 2] {
         [self.direction.cos(), self.direction.sin()]
+    }
+}
+
+/// `Ok` when the count `value` lies in `range`, else the error naming it.
+fn require_count(
+    field: &'static str,
+    value: u32,
+    range: std::ops::RangeInclusive<u32>,
+) -> Result<(), InvalidParameter> {
+    if range.contains(&value) {
+        Ok(())
+    } else {
+        Err(InvalidParameter::new(
+            field,
+            value,
+            format!("must be {} to {}", range.start(), range.end()),
+        ))
     }
 }
 
