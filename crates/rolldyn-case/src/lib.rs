@@ -9,6 +9,8 @@
 //! * [`raw`] — the file's structure (and its JSON Schema);
 //! * [`case`] — the validated case and its rules;
 //! * [`presets`] — the papers' bearings and common catalogue bearings;
+//! * [`catalogue`] — ISO 15 catalogue bearings (60/62/63, 70/72/73) with
+//!   estimated internal geometry, as case text;
 //! * [`load_case`] — the pipeline text → [`Case`];
 //! * [`simulation`] — a case to the engine: dynamic model, start, integrator,
 //!   quasi-static, power and thermal analyses.
@@ -33,6 +35,7 @@
 //! ```
 
 pub mod case;
+pub mod catalogue;
 pub mod error;
 mod load;
 pub mod presets;

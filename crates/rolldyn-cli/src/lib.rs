@@ -5,6 +5,7 @@
 
 pub mod accuracy;
 pub mod arrangement;
+pub mod catalogue;
 pub mod channel_groups;
 pub mod checkpoint;
 pub mod contact;

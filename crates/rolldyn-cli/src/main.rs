@@ -10,9 +10,9 @@ use clap::{Parser, Subcommand};
 use rolldyn_case::presets;
 use rolldyn_case::units::{Quantity, Time};
 use rolldyn_cli::{
-    CaseArgs, CaseOverrides, DEFAULT_RUN_DIR, Failure, bad_arg, checkpoint, contact, emit,
-    html_report, json, parse_angle, power, quasistatic, report, run, run_sweep, spectrum, thermal,
-    traction,
+    CaseArgs, CaseOverrides, DEFAULT_RUN_DIR, Failure, bad_arg, catalogue, checkpoint, contact,
+    emit, html_report, json, parse_angle, power, quasistatic, report, run, run_sweep, spectrum,
+    thermal, traction,
 };
 use std::process::ExitCode;
 
@@ -165,11 +165,30 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Print a complete, commented case file to start from.
+    /// Print a complete, commented case file to start from: a preset, or
+    /// a catalogue bearing with estimated internal geometry.
     New {
-        /// Preset name (see `rolldyn presets`).
-        #[arg(long, default_value = presets::DEFAULT_PRESET)]
-        preset: String,
+        /// Preset name (see `rolldyn presets`); default 7008C.
+        #[arg(long, conflicts_with = "bearing")]
+        preset: Option<String>,
+        /// Catalogue designation, e.g. 6205 or 7210B (see `rolldyn
+        /// catalogue`; internal geometry estimated, docs/catalogue.md).
+        #[arg(long, value_name = "DESIGNATION")]
+        bearing: Option<String>,
+        /// ISO 5753-1 clearance group of a deep-groove catalogue bearing:
+        /// C2, CN (default), C3 or C4.
+        #[arg(long, value_name = "GROUP", requires = "bearing")]
+        clearance: Option<String>,
+    },
+    /// List the catalogue bearings (ISO 15 60/62/63 and 70/72/73 series)
+    /// with their estimated ball sets and ISO 281/76 ratings.
+    Catalogue {
+        /// Only this series, e.g. 62 or 72.
+        #[arg(long)]
+        series: Option<String>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
     },
     /// Print the JSON Schema of the case-file format.
     Schema,
@@ -480,14 +499,35 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 emit(&text)
             }
         }
-        Command::New { preset } => match presets::find(&preset) {
-            Some(p) => emit(p.text),
-            None => Err(bad_arg(
-                "--preset",
-                &preset,
-                format!("unknown preset; available: {}", presets::names()),
-            )),
+        Command::New {
+            preset,
+            bearing,
+            clearance,
+        } => match bearing {
+            Some(designation) => emit(&catalogue::case_text(&designation, clearance.as_deref())?),
+            None => {
+                let preset = preset.unwrap_or_else(|| presets::DEFAULT_PRESET.to_string());
+                match presets::find(&preset) {
+                    Some(p) => emit(p.text),
+                    None => Err(bad_arg(
+                        "--preset",
+                        &preset,
+                        format!("unknown preset; available: {}", presets::names()),
+                    )),
+                }
+            }
         },
+        Command::Catalogue {
+            series,
+            json: as_json,
+        } => {
+            let list = catalogue::entries(series.as_deref())?;
+            if as_json {
+                json(&list)
+            } else {
+                emit(&catalogue::table(&list))
+            }
+        }
         Command::Schema => json(&rolldyn_case::json_schema()),
     }
 }

@@ -166,6 +166,21 @@ fn verify_refines_the_default_grid() {
     assert!(verify["changes"].as_array().is_some_and(|c| !c.is_empty()));
 }
 
+/// Catalogue bearings at the defaults `rolldyn new --bearing` writes
+/// (EHL traction on a 16 × 8 grid; docs/catalogue.md): a deep-groove one
+/// under radial load, converged in everything, and a 40° angular-contact
+/// one under axial load, whose spin losses converge slowly with the grid
+/// (its power moves by about 2 % per grid doubling; the table in
+/// docs/catalogue.md), so its loads and cage speed only.
+#[test]
+fn catalogue_bearings_close_their_balance() {
+    for (bearing, quantities) in [("6205", &MEANS[..]), ("7210B", &MEANS[..5])] {
+        let case = String::from_utf8(rolldyn(&["new", "--bearing", bearing], None).stdout).unwrap();
+        let (s, _) = run(bearing, &["--duration", "20 ms", "--verify"], Some(&case));
+        assert_converged(bearing, &s, quantities);
+    }
+}
+
 /// Zhang et al. 2025's 7218B with FASTSIM (its preset) and with Kalker's
 /// exact theory tabulated (`exact_table`): solid-lubricated rolling,
 /// where the traction law alone carries the balls.

@@ -19,6 +19,7 @@
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
+use rolldyn_case::catalogue::CatalogueBearing;
 use rolldyn_case::{Case, presets};
 use rolldyn_cli::checkpoint::RunRecord;
 use rolldyn_cli::contact::{ContactArgs, evaluate};
@@ -547,6 +548,24 @@ fn write_sweep_tables(directory: &str, rows: &str) -> PyResult<()> {
     run_sweep::write_tables(Path::new(directory), &rows).map_err(to_py)
 }
 
+/// The case text of a catalogue bearing (as `rolldyn new --bearing`).
+#[pyfunction]
+#[pyo3(signature = (designation, clearance=None))]
+fn catalogue_text(designation: &str, clearance: Option<&str>) -> PyResult<String> {
+    let bearing = CatalogueBearing::lookup(designation, clearance)
+        .map_err(|e| CaseError::new_err(e.to_string()))?;
+    bearing
+        .case_text()
+        .map_err(|e| ModelError::new_err(format!("{}: {e}", bearing.designation)))
+}
+
+/// `rolldyn catalogue --json` (all, or one series such as "62").
+#[pyfunction]
+#[pyo3(signature = (series=None))]
+fn catalogue_entries(series: Option<&str>) -> PyResult<String> {
+    json_text(&rolldyn_cli::catalogue::entries(series).map_err(to_py)?)
+}
+
 /// Writes `directory/report.html` (as `rolldyn report`); returns its path.
 #[pyfunction]
 fn report(directory: &str) -> PyResult<String> {
@@ -562,6 +581,8 @@ fn _rolldyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(preset_names, m)?)?;
     m.add_function(wrap_pyfunction!(preset_text, m)?)?;
+    m.add_function(wrap_pyfunction!(catalogue_text, m)?)?;
+    m.add_function(wrap_pyfunction!(catalogue_entries, m)?)?;
     m.add_function(wrap_pyfunction!(check, m)?)?;
     m.add_function(wrap_pyfunction!(frequencies, m)?)?;
     m.add_function(wrap_pyfunction!(contact, m)?)?;

@@ -90,6 +90,20 @@ def test_unknown_preset_names_the_choices():
         rolldyn.Case.preset("nope")
 
 
+def test_catalogue_is_the_clis():
+    # The table and a bearing's case text, as `rolldyn catalogue` and
+    # `rolldyn new --bearing` give them.
+    assert rolldyn.catalogue("72") == cli_json("catalogue", "--series", "72", "--json")
+    case = rolldyn.Case.catalogue("6205", clearance="C3")
+    assert case.text.rstrip() == cli("new", "--bearing", "6205", "--clearance", "C3").stdout.rstrip()
+    geometry = case.describe()["geometry"]
+    assert geometry["ball_count"] == 9
+    with pytest.raises(rolldyn.CaseError, match="contact angle code"):
+        rolldyn.Case.catalogue("7210")
+    with pytest.raises(rolldyn.CaseError, match="C2, CN, C3 or C4"):
+        rolldyn.Case.catalogue("6205", clearance="C9")
+
+
 def test_cases_pickle():
     case = rolldyn.Case.preset("7218B").set("speed", "2000 rpm")
     assert pickle.loads(pickle.dumps(case)) == case

@@ -73,6 +73,15 @@ class Case:
         return cls(f"preset {name}", _rolldyn.preset_text(name))
 
     @classmethod
+    def catalogue(cls, designation: str, clearance: Optional[str] = None) -> "Case":
+        """A catalogue bearing (ISO 15 60/62/63, 70/72/73) with estimated
+        internal geometry, as ``rolldyn new --bearing DESIGNATION
+        --clearance GROUP``: e.g. ``Case.catalogue("6205", clearance="C3")``
+        or ``Case.catalogue("7210B")``. See :func:`catalogue` and
+        docs/catalogue.md."""
+        return cls(f"catalogue {designation}", _rolldyn.catalogue_text(designation, clearance))
+
+    @classmethod
     def load(cls, path: Union[str, os.PathLike]) -> "Case":
         """A case file (TOML)."""
         try:
@@ -150,6 +159,13 @@ def _case(case: Optional[Case]) -> Case:
 def presets() -> dict:
     """The built-in bearings: name -> one-line description with its source."""
     return dict(_rolldyn.preset_names())
+
+
+def catalogue(series: Optional[str] = None) -> list:
+    """``rolldyn catalogue --json``: the catalogue bearings (or one series,
+    e.g. ``"62"``) with their estimated ball sets and ISO 281/76 ratings,
+    one dict per bearing (units in the keys)."""
+    return json.loads(_rolldyn.catalogue_entries(series))
 
 
 def frequencies(case: Optional[Case] = None, angle: Optional[str] = None) -> "Frequencies":
