@@ -20,7 +20,8 @@ pub enum Origin {
     /// An override, described with its source (``command-line override
     /// `--set bearing.ball_count=22` ``, or a Python `Case.set`).
     Override(String),
-    /// A value taken from a built-in preset.
+    /// A value taken from a built-in preset or a catalogue bearing
+    /// ("preset 6304", "catalogue bearing 6205").
     Preset(String),
     /// No position known (e.g. a key that is missing from an empty file).
     Unknown,
@@ -51,7 +52,7 @@ impl fmt::Display for CaseError {
                 write!(f, "{}:{line}:{column}: ", self.source_name)?
             }
             Origin::Override(text) => write!(f, "{text}: ")?,
-            Origin::Preset(name) => write!(f, "{} (value from preset {name}): ", self.source_name)?,
+            Origin::Preset(name) => write!(f, "{} (value from {name}): ", self.source_name)?,
             Origin::Unknown => write!(f, "{}: ", self.source_name)?,
         }
         match (&self.key, &self.value) {

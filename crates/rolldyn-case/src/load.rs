@@ -4,6 +4,7 @@
 //! value came from.
 
 use crate::case::{Case, Invalid, PARAMETRIZATIONS};
+use crate::catalogue::{CatalogueBearing, CatalogueError};
 use crate::error::{CaseError, Origin, SpanMap, position};
 use crate::presets;
 use crate::raw::RawCase;
@@ -279,6 +280,95 @@ impl Sources<'_> {
     }
 }
 
+/// The bearing a case builds on: `bearing.preset` (a built-in case) or
+/// `bearing.catalogue` with `bearing.clearance_group` (a catalogue
+/// bearing's generated case, docs/catalogue.md): its name for messages
+/// and its case text. None when the case gives its own geometry. Errors
+/// name the keys under `prefix` (`bearing`, or `shaft.bearings[0]` when
+/// the shaft's first bearing stands in).
+fn base_bearing(
+    table: &Table,
+    sources: &Sources,
+    prefix: &str,
+) -> Result<Option<(String, String)>, CaseError> {
+    let Some(bearing) = table.get("bearing").and_then(|b| b.as_table()) else {
+        return Ok(None);
+    };
+    let text_of = |key: &str| -> Result<Option<String>, CaseError> {
+        bearing
+            .get(key)
+            .map(|v| {
+                v.as_str().map(str::to_string).ok_or_else(|| {
+                    sources.error(
+                        Some(format!("{prefix}.{key}")),
+                        Some(v.to_string()),
+                        "must be a string".into(),
+                    )
+                })
+            })
+            .transpose()
+    };
+    let (preset, designation, group) = (
+        text_of("preset")?,
+        text_of("catalogue")?,
+        text_of("clearance_group")?,
+    );
+    if group.is_some() && designation.is_none() {
+        return Err(sources.error(
+            Some(format!("{prefix}.clearance_group")),
+            group,
+            "a clearance group applies to a catalogue bearing: give bearing.catalogue, or bearing.diametral_clearance".into(),
+        ));
+    }
+    match (preset, designation) {
+        (Some(_), Some(d)) => Err(sources.error(
+            Some(format!("{prefix}.catalogue")),
+            Some(format!("\"{d}\"")),
+            "give either bearing.preset or bearing.catalogue, not both".into(),
+        )),
+        (Some(name), None) => {
+            let preset = presets::find(&name).ok_or_else(|| {
+                sources.error(
+                    Some(format!("{prefix}.preset")),
+                    Some(format!("\"{name}\"")),
+                    format!("unknown preset; available: {}", presets::names()),
+                )
+            })?;
+            Ok(Some((
+                format!("preset {}", preset.name),
+                preset.text.to_string(),
+            )))
+        }
+        (None, Some(d)) => {
+            let found = CatalogueBearing::lookup(&d, group.as_deref()).map_err(|e| {
+                let (key, value) = match &e {
+                    CatalogueError::Designation { designation, .. } => {
+                        ("catalogue", designation.clone())
+                    }
+                    CatalogueError::Clearance { group, .. } => ("clearance_group", group.clone()),
+                };
+                sources.error(
+                    Some(format!("{prefix}.{key}")),
+                    Some(format!("\"{value}\"")),
+                    e.to_string(),
+                )
+            })?;
+            let text = found.case_text().map_err(|e| {
+                sources.error(
+                    Some(format!("{prefix}.catalogue")),
+                    Some(d.clone()),
+                    e.to_string(),
+                )
+            })?;
+            Ok(Some((
+                format!("catalogue bearing {}", found.designation),
+                text,
+            )))
+        }
+        (None, None) => Ok(None),
+    }
+}
+
 /// Loads and validates a case from `text` (named `source_name` in messages),
 /// applying `overrides` in order.
 pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Result<Case, CaseError> {
@@ -325,58 +415,41 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
             .insert(o.key.clone(), (o.text.clone(), o.value.to_string()));
     }
 
-    // A `[shaft]` system names its bearings' presets; without a `[bearing]`
-    // of its own, the first of them stands in for the case's bearing.
+    // A `[shaft]` system names its bearings (presets or catalogue
+    // bearings); without a `[bearing]` of its own, the first of them
+    // stands in for the case's bearing.
+    let mut bearing_key = "bearing";
     if !table.contains_key("bearing") {
         let first = table
             .get("shaft")
             .and_then(|s| s.get("bearings"))
             .and_then(|b| b.as_array())
             .and_then(|b| b.first())
-            .and_then(|b| b.get("preset"))
-            .cloned();
-        if let Some(preset) = first {
-            let mut bearing = Table::new();
-            bearing.insert("preset".into(), preset);
-            table.insert("bearing".into(), Value::Table(bearing));
+            .and_then(|b| b.as_table());
+        if let Some(first) = first {
+            let bearing: Table = ["preset", "catalogue", "clearance_group"]
+                .iter()
+                .filter_map(|k| first.get(*k).map(|v| (k.to_string(), v.clone())))
+                .collect();
+            if !bearing.is_empty() {
+                table.insert("bearing".into(), Value::Table(bearing));
+                bearing_key = "shaft.bearings[0]";
+            }
         }
     }
-    let preset_name = table
-        .get("bearing")
-        .and_then(|b| b.get("preset"))
-        .map(|p| p.as_str().map(str::to_string).ok_or(p.to_string()));
-    if let Some(name) = preset_name {
-        let key = Some("bearing.preset".to_string());
-        let name = name.map_err(|v| {
-            sources.error(
-                key.clone(),
-                Some(v),
-                "must be a preset name (a string)".into(),
-            )
-        })?;
-        let preset = presets::find(&name).ok_or_else(|| {
-            sources.error(
-                key.clone(),
-                Some(format!("\"{name}\"")),
-                format!("unknown preset; available: {}", presets::names()),
-            )
-        })?;
-        let preset_table: Table = toml::from_str(preset.text).map_err(|e| {
-            sources.error(
-                key.clone(),
-                Some(name.clone()),
-                format!("preset does not parse: {e}"),
-            )
-        })?;
+    if let Some((name, base_text)) = base_bearing(&table, &sources, bearing_key)? {
+        let key = Some(bearing_key.to_string());
+        let base_table: Table = toml::from_str(&base_text)
+            .map_err(|e| sources.error(key.clone(), None, format!("{name} does not parse: {e}")))?;
         let mut merged = Table::new();
         for section in PRESET_SECTIONS {
-            if let Some(v) = preset_table.get(section) {
+            if let Some(v) = base_table.get(section) {
                 merged.insert(section.to_string(), v.clone());
             }
         }
         let mut user_leaves = Vec::new();
         leaf_paths(&table, "", &mut user_leaves);
-        if let Some(Value::Table(assumed)) = preset_table.get("assumptions") {
+        if let Some(Value::Table(assumed)) = base_table.get("assumptions") {
             let inherited: Table = assumed
                 .iter()
                 .filter(|(k, _)| {
@@ -390,7 +463,7 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
             merged.insert("assumptions".into(), Value::Table(inherited));
         }
         overlay(&mut merged, &table, "");
-        sources.preset = Some((preset.name.to_string(), merged.clone()));
+        sources.preset = Some((name, merged.clone()));
         table = merged;
     }
 

@@ -108,6 +108,13 @@ pub struct RawCase {
 pub struct RawBearing {
     /// Name of a built-in bearing (`rolldyn presets` lists them).
     pub preset: Option<String>,
+    /// A catalogue designation instead (`rolldyn catalogue` lists them,
+    /// e.g. "6205", "7210B"): its estimated geometry and cage
+    /// (docs/catalogue.md).
+    pub catalogue: Option<String>,
+    /// ISO 5753-1 clearance group of a deep-groove catalogue bearing: "C2",
+    /// "CN" (default), "C3" or "C4".
+    pub clearance_group: Option<String>,
     /// Designation, free text (e.g. "7008C").
     pub designation: Option<String>,
     /// Ball diameter D.

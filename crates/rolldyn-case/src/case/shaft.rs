@@ -1,19 +1,58 @@
-//! `[shaft]` in SI: built-in bearings at positions on one rigid shaft and
-//! the loads on it, checked with the key of the offending entry.
+//! `[shaft]` in SI: built-in or catalogue bearings at positions on one
+//! rigid shaft and the loads on it, checked with the key of the offending
+//! entry.
 
 use super::{Invalid, checked};
+use crate::catalogue::{CatalogueBearing, CatalogueError};
+use crate::presets::Preset;
 use crate::raw::{RawAxial, RawOrientation, RawShaft};
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::system::Orientation;
+use std::borrow::Cow;
 
 /// Largest distance of a bearing or a load from the reference point \[m\].
 pub const MAX_SHAFT_POSITION: f64 = 10.0;
 
+/// Where a shaft bearing's geometry and settings come from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum BearingSource {
+    /// A built-in bearing (`rolldyn presets`).
+    Preset(&'static Preset),
+    /// A catalogue bearing (docs/catalogue.md), its clearance group given.
+    Catalogue(CatalogueBearing),
+}
+
+impl BearingSource {
+    /// The case text the bearing is solved with.
+    pub fn case_text(&self) -> Result<Cow<'static, str>, String> {
+        match self {
+            Self::Preset(p) => Ok(Cow::Borrowed(p.text)),
+            Self::Catalogue(b) => b.case_text().map(Cow::Owned).map_err(|e| e.to_string()),
+        }
+    }
+
+    /// Its name in messages: the preset's name or the designation.
+    pub fn name(&self) -> &str {
+        match self {
+            Self::Preset(p) => p.name,
+            Self::Catalogue(b) => &b.designation,
+        }
+    }
+
+    /// The case key that named it.
+    pub fn key(&self) -> &'static str {
+        match self {
+            Self::Preset(_) => "preset",
+            Self::Catalogue(_) => "catalogue",
+        }
+    }
+}
+
 /// One bearing of the shaft.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShaftBearing {
-    /// The preset's name, as `rolldyn presets` lists it.
-    pub preset: &'static str,
+    /// Its geometry and settings: a preset or a catalogue bearing.
+    pub source: BearingSource,
     /// Axial position of its pitch plane \[m\].
     pub position: f64,
     /// Which thrust it carries.
@@ -57,16 +96,53 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
     let mut bearings = Vec::with_capacity(raw.bearings.len());
     for (i, b) in raw.bearings.iter().enumerate() {
         let key = |name: &str| format!("shaft.bearings[{i}].{name}");
-        let preset = crate::presets::find(&b.preset).ok_or_else(|| {
-            Invalid::new(
-                key("preset"),
-                Some(b.preset.clone()),
-                format!(
-                    "unknown bearing; built-in bearings: {}",
-                    crate::presets::names()
-                ),
-            )
-        })?;
+        let source = match (&b.preset, &b.catalogue) {
+            (Some(name), None) => {
+                if let Some(group) = &b.clearance_group {
+                    return Err(Invalid::new(
+                        key("clearance_group"),
+                        Some(group.clone()),
+                        "a clearance group applies to a catalogue bearing (catalogue = \"6206\"), not to a preset",
+                    ));
+                }
+                BearingSource::Preset(crate::presets::find(name).ok_or_else(|| {
+                    Invalid::new(
+                        key("preset"),
+                        Some(name.clone()),
+                        format!(
+                            "unknown bearing; built-in bearings: {}",
+                            crate::presets::names()
+                        ),
+                    )
+                })?)
+            }
+            (None, Some(designation)) => BearingSource::Catalogue(
+                CatalogueBearing::lookup(designation, b.clearance_group.as_deref()).map_err(
+                    |e| match &e {
+                        CatalogueError::Designation { designation, .. } => {
+                            Invalid::new(key("catalogue"), Some(designation.clone()), e.to_string())
+                        }
+                        CatalogueError::Clearance { group, .. } => {
+                            Invalid::new(key("clearance_group"), Some(group.clone()), e.to_string())
+                        }
+                    },
+                )?,
+            ),
+            (Some(_), Some(designation)) => {
+                return Err(Invalid::new(
+                    key("catalogue"),
+                    Some(designation.clone()),
+                    "give either preset or catalogue, not both",
+                ));
+            }
+            (None, None) => {
+                return Err(Invalid::new(
+                    key("preset"),
+                    None,
+                    "missing: name the bearing by preset (rolldyn presets) or catalogue (rolldyn catalogue)",
+                ));
+            }
+        };
         let at = position(key("position"), &b.position)?;
         if let Some(j) = bearings
             .iter()
@@ -79,7 +155,7 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
             ));
         }
         bearings.push(ShaftBearing {
-            preset: preset.name,
+            source,
             position: at,
             orientation: match b.orientation {
                 None | Some(RawOrientation::Forward) => Orientation::Forward,

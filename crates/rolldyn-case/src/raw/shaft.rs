@@ -1,12 +1,13 @@
-//! `[shaft]`: several bearings, each a built-in bearing, on one rigid
-//! shaft, as written.
+//! `[shaft]`: several bearings, each a built-in or a catalogue bearing,
+//! on one rigid shaft, as written.
 
 use crate::units::*;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 /// Bearings on one rigid shaft (`rolldyn quasistatic`; docs/systems.md,
-/// "General shaft systems"): each bearing a preset at an axial position,
+/// "General shaft systems"): each bearing a preset or a catalogue
+/// bearing at an axial position,
 /// the `[operating]` loads at the shaft's reference point x = 0 and more
 /// loads at positions. Speed and raceway control from `[operating]` and
 /// `[model]`.
@@ -49,7 +50,14 @@ pub enum RawAxial {
 pub struct RawShaftBearing {
     /// A built-in bearing (`rolldyn presets`): its geometry, materials and
     /// model settings.
-    pub preset: String,
+    pub preset: Option<String>,
+    /// Or a catalogue designation (`rolldyn catalogue`, e.g. "6206"): its
+    /// estimated geometry and the generated case's settings
+    /// (docs/catalogue.md).
+    pub catalogue: Option<String>,
+    /// ISO 5753-1 clearance group of a deep-groove catalogue bearing: "C2",
+    /// "CN" (default), "C3" or "C4".
+    pub clearance_group: Option<String>,
     /// Axial position of its pitch plane from the shaft's reference point.
     pub position: Quantity<Length>,
     /// "forward" (default: +x thrust on its inner ring) or "reversed".

@@ -157,17 +157,17 @@ impl ShaftModel {
         let mut bearings = Vec::with_capacity(shaft.bearings.len());
         let mut options = None;
         for (i, b) in shaft.bearings.iter().enumerate() {
-            let preset = crate::presets::find(b.preset).expect("checked with the case");
+            let invalid = |rule: String| {
+                SimulationError::Case(Invalid {
+                    key: format!("shaft.bearings[{i}].{}", b.source.key()),
+                    value: Some(b.source.name().into()),
+                    rule,
+                })
+            };
+            let text = b.source.case_text().map_err(invalid)?;
             let bearing_case =
-                crate::load_case(preset.name, preset.text, std::slice::from_ref(&speed)).map_err(
-                    |e| {
-                        SimulationError::Case(Invalid {
-                            key: format!("shaft.bearings[{i}].preset"),
-                            value: Some(b.preset.into()),
-                            rule: e.to_string(),
-                        })
-                    },
-                )?;
+                crate::load_case(b.source.name(), &text, std::slice::from_ref(&speed))
+                    .map_err(|e| invalid(e.to_string()))?;
             let problem = QuasiStatic::from_case(&bearing_case)?;
             options.get_or_insert(problem.options);
             bearings.push(ShaftBearingModel {
