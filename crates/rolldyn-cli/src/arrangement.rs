@@ -382,56 +382,91 @@ pub struct SetSweepRow {
     pub error: Option<String>,
 }
 
-/// The set at every point of the grid (speed, F_x, F_z), in parallel; the
-/// preload offset stays that of the case (set at rest).
+/// The set at every point of the grid (speed, F_x, F_z); the preload
+/// offset stays that of the case (set at rest). The rows of the innermost
+/// sweep run in parallel, each point of a row solved from the previous
+/// one's equilibrium (the same equilibria as cold solves to the solvers'
+/// tolerances; the rows are fixed by the grid, so the results do not
+/// depend on the thread count), and the preload at speed, which the loads
+/// do not change, once per speed.
 pub fn run_sweep(set: &BearingSet, sweeps: &[(Swept, Vec<f64>)]) -> Vec<SetSweepRow> {
     let points = grid(set.conditions, sweeps, |c, swept, v| match swept {
         Swept::Speed => c.inner_speed = v,
         Swept::Axial => c.loads.force[0] = v,
         Swept::Radial => c.loads.force[2] = v,
     });
-    points
+    let at = |c: &SystemConditions| BearingSet {
+        conditions: *c,
+        ..set.clone()
+    };
+    let mut speeds: Vec<f64> = points.iter().map(|c| c.inner_speed).collect();
+    speeds.sort_by(f64::total_cmp);
+    speeds.dedup();
+    let preloads: Vec<Result<Option<f64>, String>> = speeds
         .par_iter()
-        .map(|c| {
-            let at = BearingSet {
-                conditions: *c,
-                ..set.clone()
+        .map(|&speed| {
+            let c = SystemConditions {
+                inner_speed: speed,
+                ..set.conditions
             };
-            let solved = at.solve().and_then(|eq| Ok((eq, at.preload_at_speed()?)));
-            let mut row = SetSweepRow {
-                speed_rpm: c.inner_speed / RPM,
-                force_x_n: c.loads.force[0],
-                force_z_n: c.loads.force[2],
-                converged: solved.is_ok(),
-                preload_n: None,
-                axial_displacement_m: None,
-                axial_stiffness_n_per_m: None,
-                radial_stiffness_z_n_per_m: None,
-                tilt_stiffness_y_n_m_per_rad: None,
-                axial_loads_n: None,
-                cage_speeds_rpm: None,
-                error: solved.as_ref().err().map(|e| e.to_string()),
-            };
-            if let Ok((eq, preload)) = solved {
-                row.preload_n = preload;
-                row.axial_displacement_m = Some(eq.displacement[0]);
-                row.axial_stiffness_n_per_m = Some(eq.stiffness[0][0]);
-                row.radial_stiffness_z_n_per_m = Some(eq.stiffness[2][2]);
-                row.tilt_stiffness_y_n_m_per_rad = Some(eq.stiffness[3][3]);
-                row.axial_loads_n = Some(
-                    eq.bearings
-                        .iter()
-                        .map(|b| b.as_ref().map_or(0.0, |b| b.reaction[0]))
-                        .collect(),
-                );
-                row.cage_speeds_rpm = Some(
-                    eq.bearings
-                        .iter()
-                        .map(|b| b.as_ref().map(|b| b.cage_speed() / RPM))
-                        .collect(),
-                );
+            at(&c).preload_at_speed().map_err(|e| e.to_string())
+        })
+        .collect();
+    let preload_at = |speed: f64| {
+        let k = speeds.partition_point(|&s| s < speed);
+        preloads[k].clone()
+    };
+    let row_len = sweeps.last().map_or(1, |(_, values)| values.len().max(1));
+    points
+        .par_chunks(row_len)
+        .flat_map_iter(|row| {
+            let mut near: Option<SystemEquilibrium> = None;
+            let mut out = Vec::with_capacity(row.len());
+            for c in row {
+                let point = at(c);
+                let solved = match &near {
+                    Some(n) => point.solve_near(n),
+                    None => point.solve(),
+                }
+                .map_err(|e| e.to_string())
+                .and_then(|eq| Ok((eq, preload_at(c.inner_speed)?)));
+                let mut row = SetSweepRow {
+                    speed_rpm: c.inner_speed / RPM,
+                    force_x_n: c.loads.force[0],
+                    force_z_n: c.loads.force[2],
+                    converged: solved.is_ok(),
+                    preload_n: None,
+                    axial_displacement_m: None,
+                    axial_stiffness_n_per_m: None,
+                    radial_stiffness_z_n_per_m: None,
+                    tilt_stiffness_y_n_m_per_rad: None,
+                    axial_loads_n: None,
+                    cage_speeds_rpm: None,
+                    error: solved.as_ref().err().cloned(),
+                };
+                if let Ok((eq, preload)) = solved {
+                    row.preload_n = preload;
+                    row.axial_displacement_m = Some(eq.displacement[0]);
+                    row.axial_stiffness_n_per_m = Some(eq.stiffness[0][0]);
+                    row.radial_stiffness_z_n_per_m = Some(eq.stiffness[2][2]);
+                    row.tilt_stiffness_y_n_m_per_rad = Some(eq.stiffness[3][3]);
+                    row.axial_loads_n = Some(
+                        eq.bearings
+                            .iter()
+                            .map(|b| b.as_ref().map_or(0.0, |b| b.reaction[0]))
+                            .collect(),
+                    );
+                    row.cage_speeds_rpm = Some(
+                        eq.bearings
+                            .iter()
+                            .map(|b| b.as_ref().map(|b| b.cage_speed() / RPM))
+                            .collect(),
+                    );
+                    near = Some(eq);
+                }
+                out.push(row);
             }
-            row
+            out
         })
         .collect()
 }

@@ -78,6 +78,17 @@ impl BearingSet {
         Ok(self.system.solve(&self.conditions, &self.options)?)
     }
 
+    /// The set's equilibrium from a nearby one (a neighbouring sweep
+    /// point): the same as [`Self::solve`] to the solvers' tolerances.
+    pub fn solve_near(
+        &self,
+        near: &SystemEquilibrium,
+    ) -> Result<SystemEquilibrium, SimulationError> {
+        Ok(self
+            .system
+            .solve_near(near, &self.conditions, &self.options)?)
+    }
+
     /// The preload at the operating speed: bearing 0's axial load without
     /// external load \[N\] (None without a preload: the set is then not
     /// determined without load).

@@ -158,18 +158,35 @@ impl MountedBearing {
         !self.floating && self.ring_displacement(u)[0] <= self.axial_offset
     }
 
+    /// Whether shaft displacement `u` leaves this bearing's balls free of
+    /// its inner raceway at rest for certain: its inner ring held back
+    /// along the axis (x ≤ 0, where the balls at most touch both raceways),
+    /// no radial or tilt displacement, no interference. A solve there
+    /// would only fail (slowly: the continuation tries first).
+    fn open_at_rest(&self, u: &[f64; 5], inner_speed: f64) -> bool {
+        let ring = self.ring_displacement(u);
+        !self.floating
+            && inner_speed == 0.0
+            && ring[0] <= 0.0
+            && ring[1..].iter().all(|&v| v == 0.0)
+            && self.solver.geometry().diametral_clearance >= 0.0
+    }
+
     /// The bearing's equilibrium with its ring held at its displacement
     /// for shaft displacement `u`. Where the direct solve fails (at speed
     /// the solver's path from the static solution cannot reach a ring
     /// that is open at rest but closed by the balls' centrifugal
     /// displacement), by continuation in the ring displacement from the
-    /// preload state, warm-started, with the step halved on failure.
+    /// preload state, warm-started, with the step halved on failure. With
+    /// `warm` (its equilibrium at a nearby shaft displacement: the previous
+    /// Newton iterate, bisection point or sweep point) from there first.
     fn solve(
         &self,
         u: &[f64; 5],
         inner_speed: f64,
         control: RacewayControl,
         options: &SolverOptions,
+        warm: Option<&Equilibrium>,
     ) -> Result<Equilibrium, QuasiStaticError> {
         let conditions = super::Conditions {
             loads: Loads::default(),
@@ -185,8 +202,14 @@ impl MountedBearing {
             ..*options
         };
         let target = self.ring_displacement(u);
-        let direct = self.solver.solve(&conditions, &held(target));
-        if direct.is_ok() || self.axial_offset == 0.0 {
+        // `solve_from` falls back to the cold solve itself.
+        let direct = match warm {
+            Some(previous) => self.solver.solve_from(previous, &conditions, &held(target)),
+            None => self.solver.solve(&conditions, &held(target)),
+        };
+        // At rest there is no centrifugal path to follow: the direct
+        // solve's answer stands.
+        if direct.is_ok() || self.axial_offset == 0.0 || inner_speed == 0.0 {
             return direct;
         }
         let start = [self.axial_offset, 0.0, 0.0, 0.0, 0.0];
@@ -330,6 +353,7 @@ impl ShaftSystem {
         u: &[f64; 5],
         conditions: &SystemConditions,
         options: &SolverOptions,
+        warm: Option<&[Option<Equilibrium>]>,
     ) -> Result<Evaluation, SystemError> {
         let mut bearings = Vec::with_capacity(self.bearings.len());
         let mut shares = Vec::with_capacity(self.bearings.len());
@@ -343,7 +367,13 @@ impl ShaftSystem {
         let mut residual = -applied;
         let mut stiffness = Matrix5::zeros();
         for (index, b) in self.bearings.iter().enumerate() {
-            let eq = match b.solve(u, conditions.inner_speed, conditions.control, options) {
+            let near = warm.and_then(|w| w.get(index)).and_then(Option::as_ref);
+            if b.open_at_rest(u, conditions.inner_speed) {
+                shares.push([0.0; 5]);
+                bearings.push(None);
+                continue;
+            }
+            let eq = match b.solve(u, conditions.inner_speed, conditions.control, options, near) {
                 Ok(eq) => eq,
                 Err(_) if b.unloaded_by(u) => {
                     shares.push([0.0; 5]);
@@ -549,8 +579,34 @@ impl ShaftSystem {
         conditions: &SystemConditions,
         options: &SolverOptions,
     ) -> Result<SystemEquilibrium, SystemError> {
+        self.newton(start, None, conditions, options)
+    }
+
+    /// The shaft equilibrium under `conditions`, from a nearby one (a
+    /// neighbouring sweep point, bisection point or preload offset): its
+    /// displacement and its bearings' states as the first guesses. The
+    /// same equilibrium as [`Self::solve`] to the solvers' tolerances.
+    pub fn solve_near(
+        &self,
+        near: &SystemEquilibrium,
+        conditions: &SystemConditions,
+        options: &SolverOptions,
+    ) -> Result<SystemEquilibrium, SystemError> {
+        self.newton(near.displacement, Some(&near.bearings), conditions, options)
+            .or_else(|_| self.solve(conditions, options))
+    }
+
+    /// Newton on the shaft displacement from `start`, each bearing solved
+    /// from its state at the previous iterate (or from `warm`).
+    fn newton(
+        &self,
+        start: [f64; 5],
+        warm: Option<&[Option<Equilibrium>]>,
+        conditions: &SystemConditions,
+        options: &SolverOptions,
+    ) -> Result<SystemEquilibrium, SystemError> {
         let mut u = start;
-        let mut state = self.evaluate(&u, conditions, options)?;
+        let mut state = self.evaluate(&u, conditions, options, warm)?;
         // Load scale: the external load, or what the bearings carry.
         let carried = state
             .shares
@@ -584,7 +640,7 @@ impl ShaftSystem {
             let mut factor = 1.0;
             loop {
                 let trial: [f64; 5] = std::array::from_fn(|k| u[k] - factor * step[k]);
-                match self.evaluate(&trial, conditions, options) {
+                match self.evaluate(&trial, conditions, options, Some(&state.bearings)) {
                     Ok(next) => {
                         let e = self.relative(&next.residual, scale);
                         if e < error || factor < 1e-3 {
@@ -645,13 +701,20 @@ impl ShaftSystem {
         // determined: a failed solve there counts as no load, and the last
         // failure is reported if no offset up to 1 mm carries the preload.
         let mut failure = None;
+        let mut near: Option<SystemEquilibrium> = None;
         let mut carried = |s: f64| -> f64 {
-            match self.with_axial_offset(s).solve(&unloaded, options) {
+            let set = self.with_axial_offset(s);
+            let solved = match &near {
+                Some(n) => set.solve_near(n, &unloaded, options),
+                None => set.solve(&unloaded, options),
+            };
+            match solved {
                 Ok(eq) => {
-                    eq.bearings[0]
+                    let load = eq.bearings[0]
                         .as_ref()
-                        .map_or(0.0, MountedBearing::axial_load)
-                        - preload
+                        .map_or(0.0, MountedBearing::axial_load);
+                    near = Some(eq);
+                    load - preload
                 }
                 Err(e) => {
                     failure = Some(e);
@@ -706,13 +769,18 @@ impl ShaftSystem {
             return Ok(None);
         }
         // Sum of the reversed bearings' axial loads at shaft axial
-        // displacement x (the shaft otherwise held: pure axial load).
-        let opposed = |x: f64| -> Result<(f64, f64), SystemError> {
+        // displacement x (the shaft otherwise held: pure axial load), each
+        // bearing solved from its last loaded state.
+        let mut warm: Vec<Option<Equilibrium>> = vec![None; self.bearings.len()];
+        let mut opposed = |x: f64| -> Result<(f64, f64), SystemError> {
             let u = [x, 0.0, 0.0, 0.0, 0.0];
             let mut reversed = 0.0;
             let mut total = 0.0;
             for (index, b) in self.bearings.iter().enumerate() {
-                let eq = match b.solve(&u, inner_speed, control, options) {
+                if b.open_at_rest(&u, inner_speed) {
+                    continue;
+                }
+                let eq = match b.solve(&u, inner_speed, control, options, warm[index].as_ref()) {
                     Ok(eq) => eq,
                     // Once its inner contacts open, the opposed bearing's
                     // balls have no equilibrium on the inner raceway: it
@@ -724,6 +792,7 @@ impl ShaftSystem {
                 if b.orientation == Orientation::Reversed {
                     reversed += MountedBearing::axial_load(&eq);
                 }
+                warm[index] = Some(eq);
             }
             Ok((reversed, total))
         };
@@ -742,42 +811,61 @@ impl ShaftSystem {
             lo = hi;
             hi *= 2.0;
         }
-        // Bisection: the reversed bearing's axial load falls to zero and
-        // stays there (contacts open), so bisect on its sign.
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if opposed(mid)?.0 > 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
+        // Near the onset the opposed bearing's load goes as (x_on − x)^{3/2}
+        // (Hertz), so R^{2/3} is nearly linear in x: the onset is where the
+        // line through the last two loaded points meets zero. Step 90 % of
+        // the way there (less after a point whose balls found no
+        // equilibrium: within about a nanometre of the onset, at
+        // millinewtons, they hardly converge) and repeat until the
+        // prediction settles; the lift-off load is what the other bearings
+        // carry at the predicted onset.
+        let c = |r: f64| r.max(0.0).powf(2.0 / 3.0);
+        let (mut b, mut c_b) = (lo, c(opposed(lo)?.0));
+        let a0 = lo - 0.02 * (hi - lo);
+        let (mut a, mut c_a) = (a0, c(opposed(a0)?.0));
+        let mut onset = hi;
+        let mut previous = f64::NAN;
+        for _ in 0..60 {
+            if c_a <= c_b {
+                break;
             }
-            if hi - lo <= 1e-14 {
+            onset = b + c_b * (b - a) / (c_a - c_b);
+            if (onset - previous).abs() <= 1e-12 * onset.abs().max(1e-9) {
+                break;
+            }
+            previous = onset;
+            let mut reach = 0.9;
+            let mut stepped = false;
+            while reach > 1e-3 {
+                let trial = b + reach * (onset - b);
+                let r = opposed(trial)?.0;
+                if r > 0.0 {
+                    (a, c_a, b, c_b) = (b, c_b, trial, c(r));
+                    stepped = true;
+                    break;
+                }
+                reach *= 0.5;
+            }
+            if !stepped {
                 break;
             }
         }
-        // Below about a millinewton the opposed bearing's balls no longer
-        // converge; its load near the onset goes as (x_on − x)^{3/2}
-        // (Hertz), so x_on follows from R^{2/3} extrapolated linearly from
-        // two loaded points, and the lift-off load is what the other
-        // bearings carry there.
-        let (r_a, _) = opposed(lo)?;
-        let x_b = lo - 0.02 * lo.abs().max(1e-9);
-        let (r_b, _) = opposed(x_b)?;
-        let (c_a, c_b) = (r_a.powf(2.0 / 3.0), r_b.powf(2.0 / 3.0));
-        let onset = if c_b > c_a {
-            lo + c_a * (lo - x_b) / (c_b - c_a)
-        } else {
-            hi
-        };
         let forward: Result<f64, SystemError> = self
             .bearings
             .iter()
             .enumerate()
             .filter(|(_, b)| b.orientation == Orientation::Forward)
             .map(|(index, b)| {
-                b.solve(&[onset, 0.0, 0.0, 0.0, 0.0], inner_speed, control, options)
-                    .map(|eq| b.shaft_load(&eq.reaction)[0])
-                    .map_err(|source| SystemError::Bearing { index, source })
+                let near = warm[index].as_ref();
+                b.solve(
+                    &[onset, 0.0, 0.0, 0.0, 0.0],
+                    inner_speed,
+                    control,
+                    options,
+                    near,
+                )
+                .map(|eq| b.shaft_load(&eq.reaction)[0])
+                .map_err(|source| SystemError::Bearing { index, source })
             })
             .sum();
         Ok(Some(forward?))
