@@ -421,11 +421,16 @@ pub fn run_sweep(set: &BearingSet, sweeps: &[(Swept, Vec<f64>)]) -> Vec<SetSweep
         .par_chunks(row_len)
         .flat_map_iter(|row| {
             let mut near: Option<SystemEquilibrium> = None;
+            let mut before: Option<[f64; 5]> = None;
             let mut out = Vec::with_capacity(row.len());
             for c in row {
                 let point = at(c);
+                // Newton from the line through the last two points.
                 let solved = match &near {
-                    Some(n) => point.solve_near(n),
+                    Some(n) => point.solve_near(
+                        n,
+                        before.map(|b| std::array::from_fn(|k| 2.0 * n.displacement[k] - b[k])),
+                    ),
                     None => point.solve(),
                 }
                 .map_err(|e| e.to_string())
@@ -462,6 +467,7 @@ pub fn run_sweep(set: &BearingSet, sweeps: &[(Swept, Vec<f64>)]) -> Vec<SetSweep
                             .map(|b| b.as_ref().map(|b| b.cage_speed() / RPM))
                             .collect(),
                     );
+                    before = near.as_ref().map(|n| n.displacement);
                     near = Some(eq);
                 }
                 out.push(row);

@@ -166,6 +166,92 @@ fn sweep_over_speed_writes_the_preload() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A sweep solves each point from its neighbour along the innermost
+/// sweep: every row is the single solve at its point (to the solvers'
+/// tolerances), and the files are the same bytes on one thread as on all.
+#[test]
+fn set_sweep_rows_are_the_single_solves_whatever_the_threads() {
+    let case = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
+    let sweep = |threads: Option<&str>, tag: &str| {
+        let dir = temp_dir(tag);
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_rolldyn"));
+        command.args([
+            "quasistatic",
+            "-",
+            "--sweep",
+            "speed=10000rpm,15000rpm",
+            "--sweep",
+            "axial=0N..400N/5",
+            "--radial-load",
+            "150 N",
+            "-o",
+            dir.to_str().unwrap(),
+        ]);
+        if let Some(n) = threads {
+            command.env("RAYON_NUM_THREADS", n);
+        }
+        let mut child = command
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        use std::io::Write;
+        child
+            .stdin
+            .take()
+            .unwrap()
+            .write_all(case.as_bytes())
+            .unwrap();
+        let o = child.wait_with_output().unwrap();
+        assert!(o.status.success(), "{}", stderr(&o));
+        let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
+        let rows: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap())
+                .unwrap();
+        std::fs::remove_dir_all(&dir).ok();
+        (csv, rows)
+    };
+    let (one, rows) = sweep(Some("1"), "set-sweep-1");
+    let (all, _) = sweep(None, "set-sweep-all");
+    assert_eq!(one, all);
+    for row in rows.as_array().unwrap() {
+        let speed = format!("{} rpm", row["speed_rpm"]);
+        let axial = format!("{} N", row["force_x_n"]);
+        let single = json(
+            &[
+                "quasistatic",
+                "-",
+                "--json",
+                "--speed",
+                &speed,
+                "--axial-load",
+                &axial,
+                "--radial-load",
+                "150 N",
+            ],
+            Some(&case),
+        );
+        let a = &single["arrangement"];
+        for (key, swept) in [
+            (
+                "axial_displacement_m",
+                a["shaft_displacement"][0].as_f64().unwrap(),
+            ),
+            (
+                "axial_stiffness_n_per_m",
+                a["axial_stiffness_n_per_m"].as_f64().unwrap(),
+            ),
+        ] {
+            let v = row[key].as_f64().unwrap();
+            assert!(
+                (v - swept).abs() <= 1e-8 * swept.abs().max(1e-9),
+                "{speed}, {axial}: {key} {v} vs {swept}"
+            );
+        }
+    }
+}
+
 #[test]
 fn errors_name_the_key() {
     for (arrangement, key, rule) in [

@@ -1,7 +1,10 @@
 //! `cargo bench -p rolldyn --bench quasistatic`: one Jones–Harris solve of
 //! the 7218B (16 balls) from the built-in start, and warm-started solves,
 //! on one core, and the films and natural modes of each solution.
-//! Target: ≤ 1 ms per solve; with film outputs still ≤ 1 ms.
+//! Target: ≤ 1 ms per solve; with film outputs still ≤ 1 ms. Then a
+//! 7008C back-to-back pair (200 N preload at rest): its solve cold and from
+//! a neighbouring point, against one bearing's solve in the same run
+//! (target: ≤ 2 ms per pair solve), and its lift-off load.
 //! Figures in docs/performance.md.
 
 use rolldyn::contact::HertzModel;
@@ -10,6 +13,7 @@ use rolldyn::material::Material;
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::films::{FilmInputs, equilibrium_films};
 use rolldyn::quasistatic::modes::natural_modes;
+use rolldyn::quasistatic::system::{SetKind, ShaftSystem, SystemConditions};
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions, sweep};
 use std::hint::black_box;
 use std::time::Instant;
@@ -143,4 +147,62 @@ fn main() {
             elapsed
         );
     }
+
+    pair();
+}
+
+/// The 7008C back-to-back pair at 15 000 rpm under F_x 300 N, F_z 200 N.
+fn pair() {
+    let g = rolldyn::testing::bearing_7008c();
+    let steel = Material {
+        elastic_modulus: 208e9,
+        poisson_ratio: 0.3,
+        density: 7830.0,
+    };
+    let solver = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).expect("tables");
+    let options = SolverOptions::default();
+    let rpm = std::f64::consts::TAU / 60.0;
+    let set = ShaftSystem::matched(&solver, SetKind::BackToBack, 15e-3);
+    let offset = set
+        .offset_for_preload(200.0, 0.0, RacewayControl::Outer, &options)
+        .expect("preload");
+    let set = set.with_axial_offset(offset);
+    let loads = Loads {
+        force: [300.0, 0.0, 200.0],
+        moment: [0.0; 2],
+    };
+    let conditions = SystemConditions {
+        loads,
+        inner_speed: 15_000.0 * rpm,
+        control: RacewayControl::Outer,
+    };
+    let eq = set.solve(&conditions, &options).expect("pair converges");
+    let cold = median_time(11, || {
+        black_box(set.solve(&conditions, &options).ok());
+    });
+    let mut nearby = conditions;
+    nearby.loads.force[0] += 5.0;
+    let warm = median_time(11, || {
+        black_box(set.solve_near(&eq, &nearby, &options).ok());
+    });
+    let single_conditions = Conditions {
+        loads,
+        inner_speed: conditions.inner_speed,
+        control: RacewayControl::Outer,
+    };
+    let single = median_time(11, || {
+        black_box(solver.solve(&single_conditions, &options).ok());
+    });
+    let lift_off = median_time(5, || {
+        black_box(set.lift_off_load(0.0, RacewayControl::Outer, &options).ok());
+    });
+    println!(
+        "7008C pair 15 000 rpm, F_x 300 N, F_z 200 N: cold {:>7.3} ms ({} shaft it), warm (+5 N) {:>7.3} ms, one bearing's cold solve {:>7.3} ms (ratio {:.1}); lift-off load {:>7.3} ms",
+        cold * 1e3,
+        eq.iterations,
+        warm * 1e3,
+        single * 1e3,
+        cold / single,
+        lift_off * 1e3
+    );
 }

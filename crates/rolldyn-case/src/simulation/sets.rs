@@ -79,14 +79,17 @@ impl BearingSet {
     }
 
     /// The set's equilibrium from a nearby one (a neighbouring sweep
-    /// point): the same as [`Self::solve`] to the solvers' tolerances.
+    /// point), Newton from `start` (default: its displacement): the same
+    /// as [`Self::solve`] to the solvers' tolerances.
     pub fn solve_near(
         &self,
         near: &SystemEquilibrium,
+        start: Option<[f64; 5]>,
     ) -> Result<SystemEquilibrium, SimulationError> {
+        let start = start.unwrap_or(near.displacement);
         Ok(self
             .system
-            .solve_near(near, &self.conditions, &self.options)?)
+            .solve_predicted(start, near, &self.conditions, &self.options)?)
     }
 
     /// The preload at the operating speed: bearing 0's axial load without
