@@ -383,39 +383,88 @@ pub struct SetSweepRow {
 }
 
 /// The set at every point of the grid (speed, F_x, F_z); the preload
-/// offset stays that of the case (set at rest). The rows of the innermost
-/// sweep run in parallel, each point of a row solved from the previous
-/// one's equilibrium (the same equilibria as cold solves to the solvers'
-/// tolerances; the rows are fixed by the grid, so the results do not
-/// depend on the thread count), and the preload at speed, which the loads
-/// do not change, once per speed.
+/// offset stays that of the case (set at rest); the preload at speed,
+/// which the loads do not change, once per speed.
 pub fn run_sweep(set: &BearingSet, sweeps: &[(Swept, Vec<f64>)]) -> Vec<SetSweepRow> {
-    let points = grid(set.conditions, sweeps, |c, swept, v| match swept {
+    let (system, options) = (&set.system, &set.options);
+    sweep_rows(
+        set.conditions,
+        [0.0; 3],
+        sweeps,
+        |c, near| {
+            near.and_then(|(n, start)| system.solve_predicted(start, n, c, options).ok())
+                .map_or_else(|| system.solve(c, options), Ok)
+                .map_err(|e| e.to_string())
+        },
+        |speed| {
+            BearingSet {
+                conditions: SystemConditions {
+                    inner_speed: speed,
+                    ..set.conditions
+                },
+                ..set.clone()
+            }
+            .preload_at_speed()
+            .map_err(|e| e.to_string())
+        },
+    )
+}
+
+/// A `[shaft]` system at every point of the grid (speed, and the
+/// `[operating]` F_x, F_z at the reference point, on top of the
+/// `[[shaft.loads]]` (`shaft_loads`, their resultant forces); no preload.
+pub fn run_shaft_sweep(
+    model: &ShaftModel,
+    shaft_loads: [f64; 3],
+    sweeps: &[(Swept, Vec<f64>)],
+) -> Vec<SetSweepRow> {
+    let (system, options) = (&model.system, &model.options);
+    sweep_rows(
+        model.conditions,
+        shaft_loads,
+        sweeps,
+        |c, near| {
+            near.and_then(|(n, start)| system.solve_predicted(start, n, c, options).ok())
+                .map_or_else(|| system.solve_general(c, options), Ok)
+                .map_err(|e| e.to_string())
+        },
+        |_| Ok(None),
+    )
+}
+
+/// The grid's points solved by `solve`: the rows of the innermost sweep in
+/// parallel, each point of a row from the previous one's equilibrium and
+/// from the shaft displacement extrapolated through the last two (the same
+/// equilibria as cold solves to the solvers' tolerances; the rows are
+/// fixed by the grid, so the results do not depend on the thread count);
+/// `preload` once per distinct speed. A swept load is added to `fixed`
+/// (loads the sweep does not set; the rows report the swept value).
+fn sweep_rows<S, P>(
+    base: SystemConditions,
+    fixed: [f64; 3],
+    sweeps: &[(Swept, Vec<f64>)],
+    solve: S,
+    preload: P,
+) -> Vec<SetSweepRow>
+where
+    S: Fn(
+            &SystemConditions,
+            Option<(&SystemEquilibrium, [f64; 5])>,
+        ) -> Result<SystemEquilibrium, String>
+        + Sync,
+    P: Fn(f64) -> Result<Option<f64>, String> + Sync,
+{
+    let points = grid(base, sweeps, |c, swept, v| match swept {
         Swept::Speed => c.inner_speed = v,
-        Swept::Axial => c.loads.force[0] = v,
-        Swept::Radial => c.loads.force[2] = v,
+        Swept::Axial => c.loads.force[0] = fixed[0] + v,
+        Swept::Radial => c.loads.force[2] = fixed[2] + v,
     });
-    let at = |c: &SystemConditions| BearingSet {
-        conditions: *c,
-        ..set.clone()
-    };
     let mut speeds: Vec<f64> = points.iter().map(|c| c.inner_speed).collect();
     speeds.sort_by(f64::total_cmp);
     speeds.dedup();
-    let preloads: Vec<Result<Option<f64>, String>> = speeds
-        .par_iter()
-        .map(|&speed| {
-            let c = SystemConditions {
-                inner_speed: speed,
-                ..set.conditions
-            };
-            at(&c).preload_at_speed().map_err(|e| e.to_string())
-        })
-        .collect();
-    let preload_at = |speed: f64| {
-        let k = speeds.partition_point(|&s| s < speed);
-        preloads[k].clone()
-    };
+    let preloads: Vec<Result<Option<f64>, String>> =
+        speeds.par_iter().map(|&speed| preload(speed)).collect();
+    let preload_at = |speed: f64| preloads[speeds.partition_point(|&s| s < speed)].clone();
     let row_len = sweeps.last().map_or(1, |(_, values)| values.len().max(1));
     points
         .par_chunks(row_len)
@@ -424,21 +473,18 @@ pub fn run_sweep(set: &BearingSet, sweeps: &[(Swept, Vec<f64>)]) -> Vec<SetSweep
             let mut before: Option<[f64; 5]> = None;
             let mut out = Vec::with_capacity(row.len());
             for c in row {
-                let point = at(c);
                 // Newton from the line through the last two points.
-                let solved = match &near {
-                    Some(n) => point.solve_near(
-                        n,
-                        before.map(|b| std::array::from_fn(|k| 2.0 * n.displacement[k] - b[k])),
-                    ),
-                    None => point.solve(),
-                }
-                .map_err(|e| e.to_string())
-                .and_then(|eq| Ok((eq, preload_at(c.inner_speed)?)));
+                let guess = near.as_ref().map(|n| {
+                    let start = before.map_or(n.displacement, |b| {
+                        std::array::from_fn(|k| 2.0 * n.displacement[k] - b[k])
+                    });
+                    (n, start)
+                });
+                let solved = solve(c, guess).and_then(|eq| Ok((eq, preload_at(c.inner_speed)?)));
                 let mut row = SetSweepRow {
                     speed_rpm: c.inner_speed / RPM,
-                    force_x_n: c.loads.force[0],
-                    force_z_n: c.loads.force[2],
+                    force_x_n: c.loads.force[0] - fixed[0],
+                    force_z_n: c.loads.force[2] - fixed[2],
                     converged: solved.is_ok(),
                     preload_n: None,
                     axial_displacement_m: None,

@@ -288,16 +288,26 @@ impl SweepRows {
     }
 }
 
-/// The case over a grid of speed and loads: its bearing, or its set.
+/// The case over a grid of speed and loads: its bearing, its set or its
+/// shaft system.
 pub fn sweep_case(
     case: &Case,
     control: Option<RacewayControl>,
     sweeps: &[(Swept, Vec<f64>)],
 ) -> Result<SweepRows, crate::Failure> {
-    if case.shaft.is_some() {
-        return Err(crate::Failure::BadInput(
-            "shaft: `quasistatic --sweep` solves one bearing or an [arrangement] set; for a [shaft] system run `rolldyn quasistatic` per point (`rolldyn run --sweep` does not take it either)".into(),
-        ));
+    if let Some(mut model) =
+        rolldyn_case::simulation::ShaftModel::from_case(case).map_err(crate::simulation_failure)?
+    {
+        if let Some(control) = control {
+            model.conditions.control = control;
+        }
+        let shaft_loads: [f64; 3] =
+            std::array::from_fn(|k| model.conditions.loads.force[k] - case.loads.force[k]);
+        return Ok(SweepRows::Set(crate::arrangement::run_shaft_sweep(
+            &model,
+            shaft_loads,
+            sweeps,
+        )));
     }
     match rolldyn_case::simulation::BearingSet::from_case(case)
         .map_err(crate::simulation_failure)?

@@ -252,6 +252,77 @@ fn set_sweep_rows_are_the_single_solves_whatever_the_threads() {
     }
 }
 
+/// `quasistatic --sweep` of a `[shaft]` system: the swept loads act at
+/// the reference point on top of the shaft's own; every row is the single
+/// solve at its point.
+#[test]
+fn a_shaft_sweeps_over_speed_and_load() {
+    let case = SHAFT.replace("ORIENTATION", "forward");
+    let dir = temp_dir("shaft-sweep");
+    let o = rolldyn(
+        &[
+            "quasistatic",
+            "-",
+            "--sweep",
+            "speed=1000rpm,3000rpm",
+            "--sweep",
+            "radial=0N..1000N/3",
+            "-o",
+            dir.to_str().unwrap(),
+        ],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let rows: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    let rows = rows.as_array().unwrap();
+    assert_eq!(rows.len(), 6);
+    for row in rows {
+        assert_eq!(row["converged"], true, "{row}");
+        let speed = format!("{} rpm", row["speed_rpm"]);
+        let radial = format!("{} N", row["force_z_n"]);
+        let single = json(
+            &[
+                "quasistatic",
+                "-",
+                "--json",
+                "--speed",
+                &speed,
+                "--radial-load",
+                &radial,
+            ],
+            Some(&case),
+        );
+        let a = &single["arrangement"];
+        let z = a["shaft_displacement"][2].as_f64().unwrap();
+        let k = a["stiffness_matrix"][2][2].as_f64().unwrap();
+        assert!(
+            (row["radial_stiffness_z_n_per_m"].as_f64().unwrap() - k).abs() <= 1e-7 * k,
+            "{speed}, {radial}"
+        );
+        let axial: Vec<f64> = a["bearings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|b| b["axial_load_n"].as_f64().unwrap())
+            .collect();
+        let swept: Vec<f64> = row["axial_loads_n"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect();
+        for (x, y) in axial.iter().zip(&swept) {
+            assert!(
+                (x - y).abs() <= 1e-6 * 300.0,
+                "{speed}, {radial}: {x} vs {y}"
+            );
+        }
+        assert!(z.is_finite());
+    }
+}
+
 #[test]
 fn errors_name_the_key() {
     for (arrangement, key, rule) in [

@@ -78,20 +78,6 @@ impl BearingSet {
         Ok(self.system.solve(&self.conditions, &self.options)?)
     }
 
-    /// The set's equilibrium from a nearby one (a neighbouring sweep
-    /// point), Newton from `start` (default: its displacement): the same
-    /// as [`Self::solve`] to the solvers' tolerances.
-    pub fn solve_near(
-        &self,
-        near: &SystemEquilibrium,
-        start: Option<[f64; 5]>,
-    ) -> Result<SystemEquilibrium, SimulationError> {
-        let start = start.unwrap_or(near.displacement);
-        Ok(self
-            .system
-            .solve_predicted(start, near, &self.conditions, &self.options)?)
-    }
-
     /// The preload at the operating speed: bearing 0's axial load without
     /// external load \[N\] (None without a preload: the set is then not
     /// determined without load).

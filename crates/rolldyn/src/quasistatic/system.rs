@@ -610,10 +610,13 @@ impl ShaftSystem {
         options: &SolverOptions,
     ) -> Result<SystemEquilibrium, SystemError> {
         self.solve_predicted(near.displacement, near, conditions, options)
+            .or_else(|_| self.solve(conditions, options))
     }
 
-    /// As [`Self::solve_near`], Newton starting from the displacement
-    /// `start` (e.g. extrapolated from the last two sweep points).
+    /// Newton from the displacement `start` (e.g. extrapolated from the
+    /// last two sweep points), each bearing from its state in `near`; no
+    /// fallback (the caller's: [`Self::solve`] for a set,
+    /// [`Self::solve_general`] for a shaft).
     pub fn solve_predicted(
         &self,
         start: [f64; 5],
@@ -622,7 +625,6 @@ impl ShaftSystem {
         options: &SolverOptions,
     ) -> Result<SystemEquilibrium, SystemError> {
         self.newton(start, Some(&near.bearings), conditions, options)
-            .or_else(|_| self.solve(conditions, options))
     }
 
     /// Newton on the shaft displacement from `start`, each bearing solved
