@@ -323,6 +323,68 @@ fn a_shaft_sweeps_over_speed_and_load() {
     }
 }
 
+/// A preloaded pair built bearing by bearing on a `[shaft]` (each inner
+/// ring offset 8 µm towards its loaded side) is the `[arrangement]`
+/// back-to-back pair with an 8 µm preload displacement: the same
+/// stiffness and bearing loads.
+#[test]
+fn a_shaft_pair_with_preload_offsets_is_the_matched_pair() {
+    let matched = pair("kind = \"back_to_back\"\npreload_displacement = \"8 um\"");
+    let shaft = r#"
+[operating]
+speed = "10000 rpm"
+force_x = "300 N"
+force_z = "200 N"
+[shaft]
+[[shaft.bearings]]
+preset = "7008C"
+position = "-7.5 mm"
+preload_offset = "8 um"
+[[shaft.bearings]]
+preset = "7008C"
+position = "7.5 mm"
+orientation = "reversed"
+preload_offset = "8 um"
+"#;
+    let loads = ["--axial-load", "300 N", "--radial-load", "200 N"];
+    let mut args = vec!["quasistatic", "-", "--json"];
+    args.extend(loads);
+    let a = json(&args, Some(&matched));
+    let b = json(&["quasistatic", "-", "--json"], Some(shaft));
+    let (a, b) = (&a["arrangement"], &b["arrangement"]);
+    for (i, j) in [(0, 0), (2, 2), (3, 3), (0, 3)] {
+        let (x, y) = (
+            a["stiffness_matrix"][i][j].as_f64().unwrap(),
+            b["stiffness_matrix"][i][j].as_f64().unwrap(),
+        );
+        assert!(
+            (x - y).abs() <= 1e-6 * x.abs().max(1.0),
+            "K[{i}][{j}]: {x} vs {y}"
+        );
+    }
+    for k in 0..2 {
+        let load = |v: &serde_json::Value| v["bearings"][k]["axial_load_n"].as_f64().unwrap();
+        assert!(
+            (load(a) - load(b)).abs() < 1e-6 * 300.0,
+            "{} vs {}",
+            load(a),
+            load(b)
+        );
+    }
+    let floating = shaft.replacen(
+        "preload_offset = \"8 um\"",
+        "preload_offset = \"8 um\"\naxial = \"floating\"",
+        1,
+    );
+    let o = rolldyn(&["quasistatic", "-"], Some(&floating));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("shaft.bearings[0].preload_offset"),
+        "{}",
+        stderr(&o)
+    );
+}
+
 #[test]
 fn errors_name_the_key() {
     for (arrangement, key, rule) in [

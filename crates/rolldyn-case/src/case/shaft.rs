@@ -13,6 +13,9 @@ use std::borrow::Cow;
 /// Largest distance of a bearing or a load from the reference point \[m\].
 pub const MAX_SHAFT_POSITION: f64 = 10.0;
 
+/// Largest preload offset of a shaft bearing \[m\].
+pub const MAX_PRELOAD_OFFSET: f64 = 1e-3;
+
 /// Where a shaft bearing's geometry and settings come from.
 #[derive(Debug, Clone, PartialEq)]
 pub enum BearingSource {
@@ -59,6 +62,9 @@ pub struct ShaftBearing {
     pub orientation: Orientation,
     /// Its outer ring slides in the housing (no thrust).
     pub floating: bool,
+    /// Axial offset of its inner ring towards its loaded side at zero
+    /// shaft displacement \[m\] (its preload displacement).
+    pub preload_offset: f64,
 }
 
 /// `[shaft]`, checked.
@@ -154,6 +160,20 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
                 format!("bearing {j} sits there already (pitch planes at least 1 µm apart)"),
             ));
         }
+        let floating = b.axial == Some(RawAxial::Floating);
+        let preload_offset = checked(&key("preload_offset"), &b.preload_offset, |v| {
+            if floating && v != 0.0 {
+                Err("a floating bearing takes no preload (its outer ring slides)".into())
+            } else if (0.0..=MAX_PRELOAD_OFFSET).contains(&v) {
+                Ok(())
+            } else {
+                Err(format!(
+                    "must lie in [0, {} mm] (towards the bearing's loaded side)",
+                    MAX_PRELOAD_OFFSET * 1e3
+                ))
+            }
+        })?
+        .unwrap_or(0.0);
         bearings.push(ShaftBearing {
             source,
             position: at,
@@ -161,7 +181,8 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
                 None | Some(RawOrientation::Forward) => Orientation::Forward,
                 Some(RawOrientation::Reversed) => Orientation::Reversed,
             },
-            floating: b.axial == Some(RawAxial::Floating),
+            floating,
+            preload_offset,
         });
     }
     if bearings.iter().all(|b| b.floating) {

@@ -64,6 +64,10 @@ pub struct RawShaftBearing {
     pub orientation: Option<RawOrientation>,
     /// "located" (default) or "floating".
     pub axial: Option<RawAxial>,
+    /// Axial offset of its inner ring towards its loaded side at zero
+    /// shaft displacement (default 0): the preload displacement of a
+    /// bearing set against an opposed one (a ground spacer, a locknut).
+    pub preload_offset: Option<Quantity<Length>>,
 }
 
 /// A force on the shaft at an axial position.

@@ -175,7 +175,7 @@ impl ShaftModel {
                     solver: problem.solver,
                     position: b.position,
                     orientation: b.orientation,
-                    axial_offset: 0.0,
+                    axial_offset: b.preload_offset,
                     floating: b.floating,
                 },
                 case: bearing_case,
