@@ -31,6 +31,7 @@ mod shaft;
 mod solver;
 mod surface;
 mod thermal;
+pub mod tolerances;
 mod traction;
 pub use arrangement::{Arrangement, MAX_PRELOAD, MAX_PRELOAD_DISPLACEMENT, Preload, kind_name};
 pub use bearing::PARAMETRIZATIONS;

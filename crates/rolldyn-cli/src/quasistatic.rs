@@ -389,7 +389,7 @@ impl QuasiStaticReport {
         ));
         self.films = crate::quasistatic_films::films(case, sol);
         self.modes = crate::quasistatic_films::modes(case, sol);
-        self.fits = case.bearing.fits;
+        self.fits = case.bearing.fits.clone();
         self
     }
 

@@ -652,6 +652,26 @@ fn fits_reduce_the_clearance_quasistatic_reports() {
         loaded(&fitted),
         loaded(&free)
     );
+    // By tolerance class: the 6206 (bore 30 mm, 0/−10 µm) on m5 (+8/+17 µm):
+    // 8 … 27 µm, 17.5 µm used.
+    let by_class = json(
+        &args,
+        Some(&format!("{case}\n[fits]\nshaft_tolerance = \"m5\"\n")),
+    );
+    let s = &by_class["fits"]["shaft_fit"];
+    assert_eq!(s["class"], "m5");
+    for (key, um) in [
+        ("interference_min_m", 8.0),
+        ("interference_max_m", 27.0),
+        ("interference_used_m", 17.5),
+    ] {
+        assert!(
+            (s[key].as_f64().unwrap() - um * 1e-6).abs() < 1e-12,
+            "{key}: {}",
+            s[key]
+        );
+    }
+    assert!(by_class["fits"]["housing_fit"].is_null());
 }
 
 /// A locating and a floating bearing: the floating one carries no thrust,

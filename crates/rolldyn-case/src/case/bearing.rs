@@ -164,7 +164,9 @@ pub(super) fn bearing(b: &RawBearing, fits: Option<&RawFits>) -> Result<Bearing,
         clearance,
         // A fit that closes the clearance preloads the bearing.
         preload: b.preload.unwrap_or(false)
-            || fit.is_some_and(|f| f.diametral_clearance_mounted_m < 0.0),
+            || fit
+                .as_ref()
+                .is_some_and(|f| f.diametral_clearance_mounted_m < 0.0),
     };
     let geometry = BearingGeometry::new(&spec).map_err(|e| {
         let key = match (e.field, fi_form, fo_form) {

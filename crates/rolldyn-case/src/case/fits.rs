@@ -23,13 +23,19 @@
 //! the interference is the effective one (the measured one less the
 //! surfaces' smoothing).
 
+use super::tolerances::{ClassFit, housing_fit, shaft_fit};
 use super::{Invalid, checked, non_negative, positive};
 use crate::raw::RawFits;
 use rolldyn::geometry::Clearance;
 
 /// What the fits do to the bearing.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct FitEffect {
+    /// The shaft's tolerance class and its interference range, when given
+    /// by class.
+    pub shaft_fit: Option<ClassFit>,
+    /// The housing's, likewise.
+    pub housing_fit: Option<ClassFit>,
     /// Growth of the inner raceway diameter \[m\].
     pub inner_raceway_expansion_m: f64,
     /// Shrinkage of the outer raceway diameter \[m\].
@@ -62,18 +68,61 @@ pub(super) fn mount(
             ));
         }
     };
-    let shaft = checked(
-        "fits.shaft_interference",
-        &fits.shaft_interference,
-        non_negative,
-    )?
-    .unwrap_or(0.0);
-    let housing = checked(
-        "fits.housing_interference",
-        &fits.housing_interference,
-        non_negative,
-    )?
-    .unwrap_or(0.0);
+    let by_class = |key: &str,
+                    class: &Option<String>,
+                    given: bool,
+                    size: Option<f64>,
+                    size_key: &str,
+                    of: fn(&str, f64) -> Result<ClassFit, String>|
+     -> Result<Option<ClassFit>, Invalid> {
+        let Some(class) = class else { return Ok(None) };
+        if given {
+            return Err(Invalid::new(
+                key,
+                Some(class.clone()),
+                "give the interference or the tolerance class, not both",
+            ));
+        }
+        let size =
+            size.ok_or_else(|| Invalid::missing(size_key, "the ring's diameter, for its fit"))?;
+        of(class, size)
+            .map(Some)
+            .map_err(|rule| Invalid::new(key, Some(class.clone()), rule))
+    };
+    let shaft_class = by_class(
+        "fits.shaft_tolerance",
+        &fits.shaft_tolerance,
+        fits.shaft_interference.is_some(),
+        bore,
+        "bearing.bore",
+        shaft_fit,
+    )?;
+    let housing_class = by_class(
+        "fits.housing_tolerance",
+        &fits.housing_tolerance,
+        fits.housing_interference.is_some(),
+        outside,
+        "bearing.outside_diameter",
+        housing_fit,
+    )?;
+    let shaft = match &shaft_class {
+        Some(f) => f.interference_used_m,
+        None => checked(
+            "fits.shaft_interference",
+            &fits.shaft_interference,
+            non_negative,
+        )?
+        .unwrap_or(0.0),
+    };
+    let housing = match &housing_class {
+        Some(f) => f.interference_used_m,
+        None => checked(
+            "fits.housing_interference",
+            &fits.housing_interference,
+            non_negative,
+        )?
+        .unwrap_or(0.0),
+    };
     let expansion = if shaft > 0.0 {
         let d = bore.ok_or_else(|| {
             Invalid::missing(
@@ -124,6 +173,8 @@ pub(super) fn mount(
     let unmounted = outer - inner - 2.0 * ball;
     let mounted = unmounted - expansion - contraction;
     let effect = FitEffect {
+        shaft_fit: shaft_class,
+        housing_fit: housing_class,
         inner_raceway_expansion_m: expansion,
         outer_raceway_contraction_m: contraction,
         diametral_clearance_unmounted_m: unmounted,
@@ -186,6 +237,45 @@ mod tests {
     /// A thin hollow shaft gives way (less growth); a thin housing too
     /// (less shrinkage); as the hollow and the housing wall thicken, both
     /// tend to the solid limits.
+    /// A fit by tolerance class is the explicit fit of its probable
+    /// interference; with both on one side, the case names the key.
+    #[test]
+    fn class_fits_are_their_probable_interference() {
+        let by_class = mounted(&RawFits {
+            shaft_tolerance: Some("m5".into()),
+            housing_tolerance: Some("K7".into()),
+            ..RawFits::default()
+        })
+        .unwrap()
+        .2;
+        let shaft = by_class.shaft_fit.as_ref().unwrap().interference_used_m;
+        let housing = by_class.housing_fit.as_ref().unwrap().interference_used_m;
+        let explicit = mounted(&RawFits {
+            shaft_interference: length(&format!("{} um", shaft * 1e6)),
+            housing_interference: length(&format!("{} um", housing * 1e6)),
+            ..RawFits::default()
+        })
+        .unwrap()
+        .2;
+        assert!(
+            (by_class.diametral_clearance_mounted_m - explicit.diametral_clearance_mounted_m).abs()
+                < 1e-15
+        );
+        let both = mounted(&RawFits {
+            shaft_tolerance: Some("m5".into()),
+            shaft_interference: length("5 um"),
+            ..RawFits::default()
+        })
+        .unwrap_err();
+        assert_eq!(both.key, "fits.shaft_tolerance");
+        let bad = mounted(&RawFits {
+            housing_tolerance: Some("X7".into()),
+            ..RawFits::default()
+        })
+        .unwrap_err();
+        assert!(bad.rule.contains("housing class"), "{}", bad.rule);
+    }
+
     #[test]
     fn hollow_shafts_and_thin_housings_give_way() {
         let solid = mounted(&RawFits {
@@ -200,6 +290,7 @@ mod tests {
             shaft_bore: length("25 mm"),
             housing_interference: length("5 um"),
             housing_outside_diameter: length("70 mm"),
+            ..RawFits::default()
         })
         .unwrap()
         .2;
@@ -208,6 +299,7 @@ mod tests {
             shaft_bore: length("1 mm"),
             housing_interference: length("5 um"),
             housing_outside_diameter: length("10 m"),
+            ..RawFits::default()
         })
         .unwrap()
         .2;

@@ -17,11 +17,16 @@ pub struct RawFits {
     /// Effective diametral interference of the inner ring on the shaft
     /// (≥ 0; default 0: a loose or transition fit).
     pub shaft_interference: Option<Quantity<Length>>,
+    /// Or the shaft's ISO 286 tolerance class (e.g. "k5", "m6"): the
+    /// probable interference on a ring of ISO 492 normal class.
+    pub shaft_tolerance: Option<String>,
     /// Bore of a hollow shaft (default 0: solid).
     pub shaft_bore: Option<Quantity<Length>>,
     /// Effective diametral interference of the outer ring in the housing
     /// (≥ 0; default 0).
     pub housing_interference: Option<Quantity<Length>>,
+    /// Or the housing's ISO 286 tolerance class (e.g. "H7", "M7").
+    pub housing_tolerance: Option<String>,
     /// Outside diameter of the housing around the ring (default: a housing
     /// much larger than the ring).
     pub housing_outside_diameter: Option<Quantity<Length>>,
