@@ -382,6 +382,13 @@ impl Case {
                 "give either [arrangement] (a matched set of the case's bearing) or [shaft] (presets at positions), not both",
             ));
         }
+        if shaft.is_some() && raw.fits.is_some() {
+            return Err(Invalid::new(
+                "fits",
+                None,
+                "[fits] applies to the case's one bearing; a [shaft]'s bearings do not take fits yet (choose a catalogue bearing's clearance_group instead, or solve the bearing alone with its fits)",
+            ));
+        }
         let lubricant = raw
             .lubricant
             .as_ref()

@@ -609,6 +609,10 @@ fn shaft_errors_name_the_key() {
             "[bearing]\npreset = \"6206\"\n[shaft]\n".to_string(),
             "shaft.bearings",
         ),
+        (
+            format!("{case}\n[fits]\nshaft_tolerance = \"k5\"\n"),
+            "fits",
+        ),
     ] {
         let o = rolldyn(&["quasistatic", "-"], Some(&text));
         assert_eq!(o.status.code(), Some(2), "{key}: {}", stderr(&o));
