@@ -159,17 +159,20 @@ impl MountedBearing {
     }
 
     /// Whether shaft displacement `u` leaves this bearing's balls free of
-    /// its inner raceway at rest for certain: its inner ring held back
-    /// along the axis (x ≤ 0, where the balls at most touch both raceways),
-    /// no radial or tilt displacement, no interference. A solve there
-    /// would only fail (slowly: the continuation tries first).
+    /// both raceways at rest for certain: its inner ring held back along
+    /// the axis (x ≤ 0, where the balls at most touch), by less than half
+    /// its axial play (short of the opposite shoulders, whether x = 0 is
+    /// the middle of the play or its end), no radial or tilt displacement,
+    /// no interference. A solve there would only fail, slowly.
     fn open_at_rest(&self, u: &[f64; 5], inner_speed: f64) -> bool {
         let ring = self.ring_displacement(u);
+        let geometry = self.solver.geometry();
         !self.floating
             && inner_speed == 0.0
+            && geometry.diametral_clearance >= 0.0
             && ring[0] <= 0.0
+            && ring[0] > -0.5 * geometry.axial_play()
             && ring[1..].iter().all(|&v| v == 0.0)
-            && self.solver.geometry().diametral_clearance >= 0.0
     }
 
     /// The bearing's equilibrium with its ring held at its displacement
@@ -367,6 +370,11 @@ impl ShaftSystem {
         let mut residual = -applied;
         let mut stiffness = Matrix5::zeros();
         for (index, b) in self.bearings.iter().enumerate() {
+            if b.open_at_rest(u, conditions.inner_speed) {
+                shares.push([0.0; 5]);
+                bearings.push(None);
+                continue;
+            }
             // From its own state nearby, else from an identical bearing
             // already solved at the same ring displacement (a matched
             // set's mirror-image bearings at the start).
@@ -385,11 +393,6 @@ impl ShaftSystem {
                 .and_then(|w| w.get(index))
                 .and_then(Option::as_ref)
                 .or_else(twin);
-            if b.open_at_rest(u, conditions.inner_speed) {
-                shares.push([0.0; 5]);
-                bearings.push(None);
-                continue;
-            }
             let eq = match b.solve(u, conditions.inner_speed, conditions.control, options, near) {
                 Ok(eq) => eq,
                 Err(_) if b.unloaded_by(u) => {
