@@ -415,7 +415,7 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
             .insert(o.key.clone(), (o.text.clone(), o.value.to_string()));
     }
 
-    // A `[shaft]` system names its bearings (presets or catalogue
+    // A `[shaft]` system names its bearings (presets, catalogue or inline
     // bearings); without a `[bearing]` of its own, the first of them
     // stands in for the case's bearing.
     let mut bearing_key = "bearing";
@@ -427,10 +427,14 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
             .and_then(|b| b.first())
             .and_then(|b| b.as_table());
         if let Some(first) = first {
-            let bearing: Table = ["preset", "catalogue", "clearance_group"]
-                .iter()
-                .filter_map(|k| first.get(*k).map(|v| (k.to_string(), v.clone())))
-                .collect();
+            let bearing: Table = match first.get("bearing").and_then(|b| b.as_table()) {
+                // An inline bearing stands in as it is.
+                Some(inline) => inline.clone(),
+                None => ["preset", "catalogue", "clearance_group"]
+                    .iter()
+                    .filter_map(|k| first.get(*k).map(|v| (k.to_string(), v.clone())))
+                    .collect(),
+            };
             if !bearing.is_empty() {
                 table.insert("bearing".into(), Value::Table(bearing));
                 bearing_key = "shaft.bearings[0]";

@@ -481,6 +481,8 @@ fn material_report(m: &rolldyn_case::case::NamedMaterial) -> MaterialReport {
 
 impl CheckReport {
     pub fn new(source: &str, case: &Case) -> Result<Self, String> {
+        // A shaft's bearings are cases of their own: check them too.
+        rolldyn_case::simulation::ShaftModel::from_case(case).map_err(|e| e.to_string())?;
         let g = &case.bearing.geometry;
         let alpha = g.nominal_contact_angle();
         let frequencies = case

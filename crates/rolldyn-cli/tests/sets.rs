@@ -385,6 +385,48 @@ preload_offset = "8 um"
     );
 }
 
+/// A bearing given inline on the shaft (`[shaft.bearings.bearing]`, here
+/// the 6206 preset's geometry written out) is that bearing: the shaft's
+/// solution equals the presets'; a bad inline value is named with its
+/// shaft key, by `check` too.
+#[test]
+fn an_inline_bearing_sits_on_a_shaft() {
+    let presets = json(
+        &["quasistatic", "-", "--json"],
+        Some(&SHAFT.replace("ORIENTATION", "forward")),
+    );
+    let inline = SHAFT.replace("ORIENTATION", "forward").replacen(
+        "preset = \"6206\"\nposition = \"60 mm\"\norientation = \"forward\"",
+        "position = \"60 mm\"\norientation = \"forward\"\n[shaft.bearings.bearing]\nball_diameter = \"9.525 mm\"\nball_count = 9\npitch_diameter = \"46 mm\"\ndiametral_clearance = \"12.5 um\"\ninner_groove_curvature = 0.52\nouter_groove_curvature = 0.52",
+        1,
+    );
+    assert!(inline.contains("[shaft.bearings.bearing]"));
+    let v = json(&["quasistatic", "-", "--json"], Some(&inline));
+    for k in 0..2 {
+        let load = |v: &serde_json::Value| {
+            v["arrangement"]["bearings"][k]["radial_load_n"]
+                .as_f64()
+                .unwrap()
+        };
+        assert!(
+            (load(&presets) - load(&v)).abs() < 1e-6 * load(&presets),
+            "{} vs {}",
+            load(&presets),
+            load(&v)
+        );
+    }
+    let bad = inline.replace("ball_count = 9", "ball_count = 2");
+    for command in ["quasistatic", "check"] {
+        let o = rolldyn(&[command, "-"], Some(&bad));
+        assert_eq!(o.status.code(), Some(2), "{command}");
+        let e = stderr(&o);
+        assert!(
+            e.contains("shaft.bearings[1].bearing") && e.contains("ball_count"),
+            "{command}: {e}"
+        );
+    }
+}
+
 #[test]
 fn errors_name_the_key() {
     for (arrangement, key, rule) in [

@@ -23,6 +23,14 @@ pub enum BearingSource {
     Preset(&'static Preset),
     /// A catalogue bearing (docs/catalogue.md), its clearance group given.
     Catalogue(CatalogueBearing),
+    /// A bearing given inline: its case text (the `[bearing]` table) and
+    /// its name in messages.
+    Inline {
+        /// `shaft.bearings[i]`, or its designation.
+        name: String,
+        /// A case of that `[bearing]` alone.
+        text: String,
+    },
 }
 
 impl BearingSource {
@@ -31,6 +39,7 @@ impl BearingSource {
         match self {
             Self::Preset(p) => Ok(Cow::Borrowed(p.text)),
             Self::Catalogue(b) => b.case_text().map(Cow::Owned).map_err(|e| e.to_string()),
+            Self::Inline { text, .. } => Ok(Cow::Owned(text.clone())),
         }
     }
 
@@ -39,6 +48,7 @@ impl BearingSource {
         match self {
             Self::Preset(p) => p.name,
             Self::Catalogue(b) => &b.designation,
+            Self::Inline { name, .. } => name,
         }
     }
 
@@ -47,6 +57,7 @@ impl BearingSource {
         match self {
             Self::Preset(_) => "preset",
             Self::Catalogue(_) => "catalogue",
+            Self::Inline { .. } => "bearing",
         }
     }
 }
@@ -102,27 +113,38 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
     let mut bearings = Vec::with_capacity(raw.bearings.len());
     for (i, b) in raw.bearings.iter().enumerate() {
         let key = |name: &str| format!("shaft.bearings[{i}].{name}");
-        let source = match (&b.preset, &b.catalogue) {
-            (Some(name), None) => {
-                if let Some(group) = &b.clearance_group {
-                    return Err(Invalid::new(
-                        key("clearance_group"),
-                        Some(group.clone()),
-                        "a clearance group applies to a catalogue bearing (catalogue = \"6206\"), not to a preset",
-                    ));
-                }
-                BearingSource::Preset(crate::presets::find(name).ok_or_else(|| {
-                    Invalid::new(
-                        key("preset"),
-                        Some(name.clone()),
-                        format!(
-                            "unknown bearing; built-in bearings: {}",
-                            crate::presets::names()
-                        ),
-                    )
-                })?)
-            }
-            (None, Some(designation)) => BearingSource::Catalogue(
+        let given = [
+            b.preset.is_some(),
+            b.catalogue.is_some(),
+            b.bearing.is_some(),
+        ];
+        if given.iter().filter(|g| **g).count() != 1 {
+            return Err(Invalid::new(
+                key("preset"),
+                None,
+                "name the bearing once: by preset (rolldyn presets), catalogue (rolldyn catalogue) or an inline [shaft.bearings.bearing] table",
+            ));
+        }
+        if let (Some(group), None) = (&b.clearance_group, &b.catalogue) {
+            return Err(Invalid::new(
+                key("clearance_group"),
+                Some(group.clone()),
+                "a clearance group applies to a catalogue bearing (catalogue = \"6206\"); inline, give bearing.clearance_group with bearing.catalogue",
+            ));
+        }
+        let source = if let Some(name) = &b.preset {
+            BearingSource::Preset(crate::presets::find(name).ok_or_else(|| {
+                Invalid::new(
+                    key("preset"),
+                    Some(name.clone()),
+                    format!(
+                        "unknown bearing; built-in bearings: {}",
+                        crate::presets::names()
+                    ),
+                )
+            })?)
+        } else if let Some(designation) = &b.catalogue {
+            BearingSource::Catalogue(
                 CatalogueBearing::lookup(designation, b.clearance_group.as_deref()).map_err(
                     |e| match &e {
                         CatalogueError::Designation { designation, .. } => {
@@ -133,20 +155,21 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
                         }
                     },
                 )?,
-            ),
-            (Some(_), Some(designation)) => {
-                return Err(Invalid::new(
-                    key("catalogue"),
-                    Some(designation.clone()),
-                    "give either preset or catalogue, not both",
-                ));
+            )
+        } else {
+            #[derive(serde::Serialize)]
+            struct Inline<'a> {
+                bearing: &'a crate::raw::RawBearing,
             }
-            (None, None) => {
-                return Err(Invalid::new(
-                    key("preset"),
-                    None,
-                    "missing: name the bearing by preset (rolldyn presets) or catalogue (rolldyn catalogue)",
-                ));
+            let bearing = b.bearing.as_ref().expect("one source is given");
+            let text = toml::to_string(&Inline { bearing })
+                .map_err(|e| Invalid::new(key("bearing"), None, e.to_string()))?;
+            BearingSource::Inline {
+                name: bearing
+                    .designation
+                    .clone()
+                    .unwrap_or_else(|| format!("shaft.bearings[{i}]")),
+                text,
             }
         };
         let at = position(key("position"), &b.position)?;

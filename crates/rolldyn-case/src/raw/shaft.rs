@@ -58,6 +58,10 @@ pub struct RawShaftBearing {
     /// ISO 5753-1 clearance group of a deep-groove catalogue bearing: "C2",
     /// "CN" (default), "C3" or "C4".
     pub clearance_group: Option<String>,
+    /// Or the bearing inline (`[shaft.bearings.bearing]`, the keys of
+    /// `[bearing]`, which may name a preset or a catalogue bearing and
+    /// change its values), with default materials and model settings.
+    pub bearing: Option<super::RawBearing>,
     /// Axial position of its pitch plane from the shaft's reference point.
     pub position: Quantity<Length>,
     /// "forward" (default: +x thrust on its inner ring) or "reversed".
