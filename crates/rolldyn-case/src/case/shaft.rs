@@ -113,38 +113,27 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
     let mut bearings = Vec::with_capacity(raw.bearings.len());
     for (i, b) in raw.bearings.iter().enumerate() {
         let key = |name: &str| format!("shaft.bearings[{i}].{name}");
-        let given = [
-            b.preset.is_some(),
-            b.catalogue.is_some(),
-            b.bearing.is_some(),
-        ];
-        if given.iter().filter(|g| **g).count() != 1 {
-            return Err(Invalid::new(
-                key("preset"),
-                None,
-                "name the bearing once: by preset (rolldyn presets), catalogue (rolldyn catalogue) or an inline [shaft.bearings.bearing] table",
-            ));
-        }
         if let (Some(group), None) = (&b.clearance_group, &b.catalogue) {
             return Err(Invalid::new(
                 key("clearance_group"),
                 Some(group.clone()),
-                "a clearance group applies to a catalogue bearing (catalogue = \"6206\"); inline, give bearing.clearance_group with bearing.catalogue",
+                "a clearance group applies to a catalogue bearing (catalogue = \"6206\"; inline: bearing.catalogue with bearing.clearance_group)",
             ));
         }
-        let source = if let Some(name) = &b.preset {
-            BearingSource::Preset(crate::presets::find(name).ok_or_else(|| {
-                Invalid::new(
-                    key("preset"),
-                    Some(name.clone()),
-                    format!(
-                        "unknown bearing; built-in bearings: {}",
-                        crate::presets::names()
-                    ),
-                )
-            })?)
-        } else if let Some(designation) = &b.catalogue {
-            BearingSource::Catalogue(
+        let source = match (&b.preset, &b.catalogue, &b.bearing) {
+            (Some(name), None, None) => {
+                BearingSource::Preset(crate::presets::find(name).ok_or_else(|| {
+                    Invalid::new(
+                        key("preset"),
+                        Some(name.clone()),
+                        format!(
+                            "unknown bearing; built-in bearings: {}",
+                            crate::presets::names()
+                        ),
+                    )
+                })?)
+            }
+            (None, Some(designation), None) => BearingSource::Catalogue(
                 CatalogueBearing::lookup(designation, b.clearance_group.as_deref()).map_err(
                     |e| match &e {
                         CatalogueError::Designation { designation, .. } => {
@@ -155,21 +144,28 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
                         }
                     },
                 )?,
-            )
-        } else {
-            #[derive(serde::Serialize)]
-            struct Inline<'a> {
-                bearing: &'a crate::raw::RawBearing,
+            ),
+            (None, None, Some(bearing)) => {
+                #[derive(serde::Serialize)]
+                struct Inline<'a> {
+                    bearing: &'a crate::raw::RawBearing,
+                }
+                let text = toml::to_string(&Inline { bearing })
+                    .map_err(|e| Invalid::new(key("bearing"), None, e.to_string()))?;
+                BearingSource::Inline {
+                    name: bearing
+                        .designation
+                        .clone()
+                        .unwrap_or_else(|| format!("shaft.bearings[{i}]")),
+                    text,
+                }
             }
-            let bearing = b.bearing.as_ref().expect("one source is given");
-            let text = toml::to_string(&Inline { bearing })
-                .map_err(|e| Invalid::new(key("bearing"), None, e.to_string()))?;
-            BearingSource::Inline {
-                name: bearing
-                    .designation
-                    .clone()
-                    .unwrap_or_else(|| format!("shaft.bearings[{i}]")),
-                text,
+            _ => {
+                return Err(Invalid::new(
+                    key("preset"),
+                    None,
+                    "name the bearing once: by preset (rolldyn presets), catalogue (rolldyn catalogue) or an inline [shaft.bearings.bearing] table",
+                ));
             }
         };
         let at = position(key("position"), &b.position)?;
