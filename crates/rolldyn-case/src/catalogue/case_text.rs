@@ -1,0 +1,262 @@
+//! The case file of a catalogue bearing: its estimated geometry, an
+//! assumed lubricant and operating point, and every estimated or assumed
+//! value under `[assumptions]` (docs/catalogue.md).
+
+use super::{BALL_SECTION_FRACTION, BearingKind, CatalogueBearing};
+use rolldyn::error::InvalidParameter;
+
+impl CatalogueBearing {
+    /// A complete case file for the bearing: 3000 rpm, a load of 5 % of the
+    /// estimated C_r (radial on a deep-groove bearing, axial on an
+    /// angular-contact one), an ISO VG 68 mineral oil at 40 °C with EHL
+    /// traction on a 16 × 8 grid; every estimated or assumed value under
+    /// `[assumptions]`.
+    pub fn case_text(&self) -> Result<String, InvalidParameter> {
+        let ratings = self.ratings()?;
+        let mm = |x: f64| format!("{} mm", trim(x * 1e3, 6));
+        let load_n = ((0.05 * ratings.dynamic) / 10.0).round() * 10.0;
+        let kind_text = match self.kind {
+            BearingKind::DeepGroove => "deep-groove",
+            BearingKind::AngularContact => "angular-contact",
+        };
+        let published = match (ratings.published_dynamic, ratings.published_static) {
+            (Some(c), Some(c0)) => format!(
+                "\n# NSK lists C_r {:.2} kN, C_0r {:.2} kN for its own ball set.",
+                c * 1e-3,
+                c0 * 1e-3
+            ),
+            _ => String::new(),
+        };
+        let mut t = String::new();
+        t.push_str(&format!(
+            "# rolldyn case — {} {} ball bearing, {} × {} × {} mm (ISO 15), catalogue\n\
+             # estimate: the internal geometry is not published, and every value below\n\
+             # marked \"estimated\" comes from the rules of docs/catalogue.md. Measure\n\
+             # the bearing or ask its maker before trusting absolute numbers.\n\
+             # ISO 281 C_r {:.2} kN and ISO 76 C_0r {:.2} kN of this estimated geometry.{}\n",
+            self.designation,
+            kind_text,
+            trim(self.bore * 1e3, 1),
+            trim(self.outside_diameter * 1e3, 1),
+            trim(self.width * 1e3, 1),
+            ratings.dynamic * 1e-3,
+            ratings.r#static * 1e-3,
+            published
+        ));
+        t.push_str(&format!(
+            "title = \"{} (catalogue estimate) at 3000 rpm\"\n\n",
+            self.designation
+        ));
+        t.push_str("[bearing]\n");
+        t.push_str(&format!(
+            "designation = \"{} (catalogue estimate)\"\n",
+            self.designation
+        ));
+        let est = "# estimated: see [assumptions]";
+        t.push_str(&format!(
+            "{:<37}{est}\n",
+            format!("ball_diameter = \"{}\"", mm(self.ball_diameter))
+        ));
+        t.push_str(&format!(
+            "{:<37}{est}\n",
+            format!("ball_count = {}", self.ball_count)
+        ));
+        t.push_str(&format!(
+            "{:<37}{est}\n",
+            format!("pitch_diameter = \"{}\"", mm(self.pitch_diameter))
+        ));
+        if let Some(p_d) = self.diametral_clearance {
+            t.push_str(&format!(
+                "{:<37}{est}\n",
+                format!("diametral_clearance = \"{}\"", mm(p_d))
+            ));
+        }
+        if let Some(angle) = self.contact_angle {
+            t.push_str(&format!(
+                "{:<37}# contact angle code of the designation\n",
+                format!(
+                    "free_contact_angle = \"{} deg\"",
+                    trim(angle.to_degrees(), 1)
+                )
+            ));
+        }
+        for ring in ["inner", "outer"] {
+            t.push_str(&format!(
+                "{:<37}{est}\n",
+                format!("{ring}_groove_curvature = {}", self.groove_curvature)
+            ));
+        }
+        t.push_str(&format!(
+            "{:<37}# ISO 15\n",
+            format!("bore = \"{}\"", mm(self.bore))
+        ));
+        t.push_str(&format!(
+            "outside_diameter = \"{}\"\nwidth = \"{}\"\n\n",
+            mm(self.outside_diameter),
+            mm(self.width)
+        ));
+        t.push_str("[cage]\n");
+        t.push_str(&format!("{:<37}{est}\n", "guidance = \"ball\"".to_string()));
+        t.push_str(&format!(
+            "{:<37}{est}\n",
+            format!("mass = \"{} g\"", trim(self.cage_mass * 1e3, 2))
+        ));
+        t.push_str(&format!(
+            "{:<37}{est}\n",
+            format!("inertia = \"{:.3e} kg.m^2\"", self.cage_inertia)
+        ));
+        t.push_str(&format!(
+            "{:<37}{est}\n",
+            format!("pocket_clearance = \"{}\"", mm(self.pocket_clearance))
+        ));
+        for line in [
+            "pocket_stiffness = \"1e7 N/m\"",
+            "pocket_damping = \"20 N.s/m\"",
+            "pocket_friction = 0.05",
+        ] {
+            t.push_str(&format!("{line:<37}{est}\n"));
+        }
+        t.push_str("whirl = false                        # cage rotation only\n\n");
+        t.push_str("[materials]\nball = \"steel_52100\"\nrings = \"steel_52100\"\n\n");
+        let assumed = "# assumed: see [assumptions]";
+        t.push_str("[lubricant]\nname = \"ISO VG 68 mineral oil\"\n");
+        for line in [
+            "viscosity = \"0.059 Pa.s\"",
+            "temperature = \"40 degC\"",
+            "second_viscosity = \"7.1 mPa.s\"",
+            "second_temperature = \"100 degC\"",
+            "pressure_viscosity = \"2.2e-8 1/Pa\"",
+            "density = \"870 kg/m^3\"",
+        ] {
+            t.push_str(&format!("{line:<37}{assumed}\n"));
+        }
+        t.push_str(
+            "\n[operating]\nspeed = \"3000 rpm\"                   # assumed: see [assumptions]\n",
+        );
+        let load_key = match self.kind {
+            BearingKind::DeepGroove => "force_z",
+            BearingKind::AngularContact => "force_x",
+        };
+        t.push_str(&format!(
+            "{:<37}# 5 % of the estimated C_r\n",
+            format!("{load_key} = \"{load_n} N\"")
+        ));
+        t.push_str(
+            "\n[model]\n\
+             traction = { law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }  # assumed: see [assumptions]\n\
+             traction_integration = { method = \"grid\", across = 16, along = 8 }   # see [assumptions]\n\n\
+             [solver]\n\
+             duration = \"0.1 s\"                   # about two cage revolutions at 3000 rpm\n\
+             start = \"jones_harris\"\n\n",
+        );
+        t.push_str("[assumptions]\n");
+        let rule = |key: &str, text: String| format!("\"{key}\" = \"{text}\"\n");
+        t.push_str(&rule(
+            "bearing.ball_diameter",
+            format!(
+                "estimated: 0.3 (D - d) = {} mm to the nearest 1/64 in",
+                trim(
+                    BALL_SECTION_FRACTION * (self.outside_diameter - self.bore) * 1e3,
+                    3
+                )
+            ),
+        ));
+        t.push_str(&rule(
+            "bearing.ball_count",
+            match self.kind {
+                BearingKind::DeepGroove => format!(
+                    "estimated: the most balls with a Conrad assembly angle 2 (Z - 1) asin(D_w/d_m) <= 192 deg (this set: {:.1} deg)",
+                    self.assembly_angle_deg()
+                ),
+                BearingKind::AngularContact => {
+                    "estimated: the most balls with centres at least 1.2 D_w apart on the pitch circle (a cage bar of 0.2 D_w)".to_string()
+                }
+            },
+        ));
+        t.push_str(&rule(
+            "bearing.pitch_diameter",
+            "estimated: mean of bore and outside diameter".into(),
+        ));
+        if let (Some(group), Some((lo, hi))) = (self.clearance_group, self.clearance_range) {
+            t.push_str(&rule(
+                "bearing.diametral_clearance",
+                format!(
+                    "mid-range of ISO 5753-1 group {} ({}-{} um) for the {} mm bore",
+                    group.name(),
+                    trim(lo * 1e6, 0),
+                    trim(hi * 1e6, 0),
+                    trim(self.bore * 1e3, 0)
+                ),
+            ));
+        }
+        for ring in ["inner", "outer"] {
+            t.push_str(&rule(
+                &format!("bearing.{ring}_groove_curvature"),
+                "estimated: 0.52, a typical value (Harris & Kotzalas: 0.515-0.53)".into(),
+            ));
+        }
+        t.push_str(&rule(
+            "cage.guidance",
+            match self.kind {
+                BearingKind::DeepGroove => {
+                    "estimated: pressed-steel ribbon cage, centred on the balls".into()
+                }
+                BearingKind::AngularContact => {
+                    "estimated: polyamide window cage, centred on the balls".into()
+                }
+            },
+        ));
+        t.push_str(&rule("cage.mass", match self.kind {
+            BearingKind::DeepGroove => "estimated: two steel half-shells, each a strip D_w wide and 0.06 D_w thick round the pitch circle".into(),
+            BearingKind::AngularContact => "estimated: polyamide 66 (1300 kg/m^3) ring 0.4 D_w thick and 0.8 B wide at the pitch circle, less the pockets".into(),
+        }));
+        t.push_str(&rule(
+            "cage.inertia",
+            "estimated: cage mass times the squared pitch radius".into(),
+        ));
+        t.push_str(&rule("cage.pocket_clearance", "estimated: 0.02 D_w".into()));
+        t.push_str(&rule(
+            "cage.pocket_stiffness",
+            "not published; linear 1e7 N/m as a stiff-contact placeholder (as the 6304 preset)"
+                .into(),
+        ));
+        t.push_str(&rule(
+            "cage.pocket_damping",
+            "not published; a small damping so that pocket impacts settle".into(),
+        ));
+        t.push_str(&rule(
+            "cage.pocket_friction",
+            "not published; a boundary-friction value for a lubricated pocket".into(),
+        ));
+        t.push_str(&rule(
+            "lubricant",
+            "assumed: an ISO VG 68 mineral oil (68 mm^2/s at 40 degC, about 8.2 mm^2/s at 100 degC, 870 kg/m^3), run isothermal at 40 degC; pressure-viscosity 2.2e-8 1/Pa typical of mineral oils (1-3e-8 1/Pa: Hamrock, Schmid & Jacobson 2004, ch. 8)".into(),
+        ));
+        t.push_str(&rule(
+            "operating.speed",
+            "assumed: a moderate speed for a first run; set your own".into(),
+        ));
+        t.push_str(&rule(
+            "model.traction",
+            "assumed: EHL traction with Eyring stress 5 MPa and limiting shear 0.08, typical of mineral oils (Johnson & Tevaarwerk 1977)".into(),
+        ));
+        t.push_str(&rule(
+            "model.traction_integration",
+            match self.kind {
+                BearingKind::DeepGroove => "16 x 8 cells: the dissipated power within 0.2 % of a 32 x 16 grid (6205, docs/catalogue.md)".into(),
+                BearingKind::AngularContact => "16 x 8 cells; at large contact angles the spin dissipation converges slowly with the grid (7210B: +2.6 % from 16 x 8 to 48 x 24 cells; docs/catalogue.md), loads and speeds are converged".into(),
+            },
+        ));
+        Ok(t)
+    }
+}
+
+/// `x` with at most `digits` decimals, trailing zeros removed.
+fn trim(x: f64, digits: usize) -> String {
+    let s = format!("{x:.digits$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
