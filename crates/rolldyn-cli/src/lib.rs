@@ -24,6 +24,7 @@ pub mod run_summary;
 pub mod run_sweep;
 pub mod spectrum;
 pub mod thermal;
+pub mod thermal_set;
 pub mod traction;
 pub mod traction_equilibrium;
 pub mod vibration;

@@ -84,8 +84,48 @@ pub fn command(args: ThermalArgs) -> Result<(), Failure> {
     emit(&report.to_text())
 }
 
+/// `rolldyn thermal`'s output: one bearing's, or a bearing set's.
+#[derive(Serialize)]
+#[serde(untagged)]
+pub enum ThermalOutput {
+    /// One bearing.
+    Bearing(Box<ThermalReport>),
+    /// A set (`[arrangement]`).
+    Set(crate::thermal_set::SetThermalReport),
+}
+
+impl ThermalOutput {
+    /// The text `rolldyn thermal` prints.
+    pub fn to_text(&self) -> String {
+        match self {
+            Self::Bearing(r) => r.to_text(),
+            Self::Set(r) => r.to_text(),
+        }
+    }
+}
+
 /// What `rolldyn thermal --json` prints.
-pub fn report(args: &ThermalArgs) -> Result<ThermalReport, Failure> {
+pub fn report(args: &ThermalArgs) -> Result<ThermalOutput, Failure> {
+    let (_, case) = args.case.load()?;
+    if let Some(set) =
+        rolldyn_case::simulation::BearingSet::from_case(&case).map_err(crate::simulation_failure)?
+    {
+        if let Some(t) = &args.transient {
+            return Err(bad_arg(
+                "--transient",
+                t,
+                "the warm-up is computed for one bearing; a bearing set ([arrangement]) gives its steady state only",
+            ));
+        }
+        return Ok(ThermalOutput::Set(crate::thermal_set::report(&case, &set)?));
+    }
+    Ok(ThermalOutput::Bearing(Box::new(bearing_report(
+        args, &case,
+    )?)))
+}
+
+/// One bearing's report.
+fn bearing_report(args: &ThermalArgs, case: &Case) -> Result<ThermalReport, Failure> {
     let duration = args
         .transient
         .as_deref()
@@ -109,8 +149,7 @@ pub fn report(args: &ThermalArgs) -> Result<ThermalReport, Failure> {
             "must lie in [1, 1000000]",
         ));
     }
-    let (_, case) = args.case.load()?;
-    let s = solve(&case)?;
+    let s = solve(case)?;
     let inputs = case.thermal_inputs().map_err(bad)?;
     let transient = match duration {
         None => None,
@@ -154,7 +193,7 @@ pub fn report(args: &ThermalArgs) -> Result<ThermalReport, Failure> {
         oil_flow_m3_s: inputs.oil_flow,
         reference_clearance_m: case.bearing.geometry.equivalent_diametral_clearance(),
         operating_clearance_m: s.operating_clearance,
-        power: PowerReport::new(&case, &s.equilibrium, &s.power)?,
+        power: PowerReport::new(case, &s.equilibrium, &s.power)?,
         transient,
     })
 }

@@ -48,6 +48,9 @@ pub struct Thermal {
     pub housing: Solid,
     /// Expansion coefficients and reference temperature.
     pub expansion: Expansion,
+    /// Shaft and housing expansion coefficients of a set's axial growth
+    /// \[1/K\] (docs/systems.md).
+    pub shaft_housing_expansion: [f64; 2],
     /// Coupled to `rolldyn run`: the update interval \[s\] (None: not coupled).
     pub run_coupling: Option<f64>,
     /// A coupled run starts with every part at the ambient temperature
@@ -150,6 +153,12 @@ pub(super) fn thermal(t: &RawThermal, ball_material: &str) -> Result<Thermal, In
     };
     let ambient =
         temperature("thermal.ambient_temperature", &t.ambient_temperature)?.unwrap_or(293.15);
+    let ring_expansion = checked(
+        "thermal.ring_expansion",
+        &t.ring_expansion,
+        super::non_negative,
+    )?
+    .unwrap_or(STEEL_EXPANSION);
     Ok(Thermal {
         ambient_temperature: ambient,
         oil_inlet_temperature: temperature(
@@ -184,13 +193,22 @@ pub(super) fn thermal(t: &RawThermal, ball_material: &str) -> Result<Thermal, In
             None
         },
         run_from_ambient: matches!(t.run_start, Some(crate::raw::RawThermalStart::Ambient)),
-        expansion: Expansion {
-            ring: checked(
-                "thermal.ring_expansion",
-                &t.ring_expansion,
+        shaft_housing_expansion: [
+            checked(
+                "thermal.shaft_expansion",
+                &t.shaft_expansion,
                 super::non_negative,
             )?
-            .unwrap_or(STEEL_EXPANSION),
+            .unwrap_or(ring_expansion),
+            checked(
+                "thermal.housing_expansion",
+                &t.housing_expansion,
+                super::non_negative,
+            )?
+            .unwrap_or(ring_expansion),
+        ],
+        expansion: Expansion {
+            ring: ring_expansion,
             ball: checked(
                 "thermal.ball_expansion",
                 &t.ball_expansion,

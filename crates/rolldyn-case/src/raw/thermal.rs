@@ -53,6 +53,12 @@ pub struct RawThermal {
     pub ring_expansion: Option<Quantity<ThermalExpansion>>,
     /// Ball expansion coefficient (default 11.9e-6 1/K; 3.2e-6 for silicon nitride).
     pub ball_expansion: Option<Quantity<ThermalExpansion>>,
+    /// Shaft expansion coefficient of a bearing set's thermal preload
+    /// (default: the ring's).
+    pub shaft_expansion: Option<Quantity<ThermalExpansion>>,
+    /// Housing expansion coefficient of a bearing set's thermal preload
+    /// (default: the ring's; cast iron ~10.5e-6, aluminium ~23e-6 1/K).
+    pub housing_expansion: Option<Quantity<ThermalExpansion>>,
     /// Temperature at which the geometry is given (default 20 °C).
     pub reference_temperature: Option<Quantity<Temperature>>,
     /// Couple the network to `rolldyn run` (default false): it starts at

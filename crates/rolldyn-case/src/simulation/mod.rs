@@ -35,7 +35,7 @@ pub use integrator::{
     DEFAULT_MAX_STEP, DEFAULT_RELATIVE_TOLERANCE, DEFAULT_RK4_STEP, DEFAULT_STIFF_MAX_STEP,
     STEPS_PER_FILM_PERIOD, SolverSettings, stiff_max_step,
 };
-pub use sets::{BearingSet, ShaftBearingModel, ShaftModel};
+pub use sets::{BearingSet, SetThermal, ShaftBearingModel, ShaftModel};
 pub use steady::{QuasiStatic, conditions, film_inputs, power_loss, thermal_steady_state};
 
 use crate::Case;

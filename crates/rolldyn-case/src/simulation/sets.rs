@@ -12,6 +12,23 @@ use rolldyn::quasistatic::SolverOptions;
 use rolldyn::quasistatic::system::{
     MountedBearing, ShaftSystem, SystemConditions, SystemEquilibrium,
 };
+use rolldyn::thermal::coupled::CoupledOptions;
+use rolldyn::thermal::set::{
+    AxialExpansion, SetThermalError, SetThermalProblem, SetThermalSolution, set_steady,
+};
+
+/// A set's thermal steady state (docs/systems.md, "Temperature").
+#[derive(Debug, Clone)]
+pub struct SetThermal {
+    /// The set's equilibrium at the reference temperature.
+    pub cold: SystemEquilibrium,
+    /// At operating temperature.
+    pub hot: SetThermalSolution,
+    /// The preload at speed without external load, at the reference and
+    /// at the operating temperatures: bearing 0's axial load \[N\] (None
+    /// without a preload).
+    pub preload_at_speed: Option<[f64; 2]>,
+}
 
 /// The case's bearing set, preloaded, at the case's operating point.
 #[derive(Debug, Clone)]
@@ -95,6 +112,50 @@ impl BearingSet {
                 .as_ref()
                 .map_or(0.0, MountedBearing::axial_load),
         ))
+    }
+
+    /// The set's coupled thermal steady state under the case's loads
+    /// (`case` is the set's own case: its bearing, lubricant and
+    /// `[thermal]` are every bearing's).
+    pub fn thermal_steady_state(&self, case: &Case) -> Result<SetThermal, SimulationError> {
+        let heat = super::steady::coupled_problem(case)?;
+        let [shaft, housing] = case.thermal.shaft_housing_expansion;
+        let problem = SetThermalProblem {
+            bearings: vec![heat; self.system.bearings.len()],
+            system: &self.system,
+            conditions: self.conditions,
+            options: self.options,
+            axial: AxialExpansion { shaft, housing },
+        };
+        let cold = self.solve()?;
+        let hot = set_steady(&problem, &cold, &CoupledOptions::default()).map_err(|e| match e {
+            SetThermalError::Coupled(c) => super::steady::coupled_failure(c),
+            SetThermalError::System(s) => SimulationError::Set(s),
+            unloaded @ SetThermalError::Unloaded { .. } => SimulationError::Case(Invalid {
+                key: "arrangement".into(),
+                value: None,
+                rule: unloaded.to_string(),
+            }),
+        })?;
+        let preload_at_speed = match self.preload_at_speed()? {
+            None => None,
+            Some(cold_preload) => {
+                let unloaded = SystemConditions {
+                    loads: Loads::default(),
+                    ..self.conditions
+                };
+                let eq = hot.system.solve(&unloaded, &self.options)?;
+                let hot_preload = eq.bearings[0]
+                    .as_ref()
+                    .map_or(0.0, MountedBearing::axial_load);
+                Some([cold_preload, hot_preload])
+            }
+        };
+        Ok(SetThermal {
+            cold,
+            hot,
+            preload_at_speed,
+        })
     }
 
     /// The lift-off load: the external axial load that unloads the

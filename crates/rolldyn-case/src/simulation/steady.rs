@@ -121,7 +121,13 @@ pub fn power_loss(case: &Case) -> Result<(Equilibrium, LocalPowerLoss), Simulati
 /// loss, thermal network, oil viscosity and operating clearance, iterated.
 pub fn thermal_steady_state(case: &Case) -> Result<CoupledSolution, SimulationError> {
     super::single_bearing(case, "the thermal network")?;
-    let problem = CoupledProblem {
+    coupled_steady(&coupled_problem(case)?, &CoupledOptions::default()).map_err(coupled_failure)
+}
+
+/// The coupled iteration's inputs from a case (its bearing, materials,
+/// operating point, power and network inputs, viscosity law, expansion).
+pub fn coupled_problem(case: &Case) -> Result<CoupledProblem<'_>, SimulationError> {
+    Ok(CoupledProblem {
         geometry: &case.bearing.geometry,
         ball: &case.materials.ball.material,
         rings: &case.materials.rings.material,
@@ -132,9 +138,13 @@ pub fn thermal_steady_state(case: &Case) -> Result<CoupledSolution, SimulationEr
         thermal: case.thermal_inputs()?,
         viscosity: case.lubricant.as_ref().and_then(|l| l.viscosity_law),
         expansion: case.thermal.expansion,
-    };
-    coupled_steady(&problem, &CoupledOptions::default()).map_err(|e| match e {
+    })
+}
+
+/// A coupled iteration's failure as the case's.
+pub fn coupled_failure(e: CoupledError) -> SimulationError {
+    match e {
         CoupledError::QuasiStatic(q) => SimulationError::QuasiStatic(q),
         CoupledError::Invalid(p) => SimulationError::Thermal(p),
-    })
+    }
 }

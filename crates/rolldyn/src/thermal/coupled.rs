@@ -113,20 +113,40 @@ pub fn heat_sources(
     h
 }
 
-/// `geometry` with its equivalent diametral clearance changed by `delta` \[m\].
+/// `geometry` with its equivalent diametral clearance changed by `delta` \[m\],
+/// in the parametrization it was given in: an angular-contact bearing
+/// given by its free contact angle (grooves offset so that the balls touch
+/// at x = 0) keeps that form with the free contact angle of the new
+/// clearance, cos α₀ = 1 − P_d/(2(f_i + f_o − 1)D); a bearing given by its
+/// clearance or raceway diameters (grooves centred) takes the new
+/// diametral clearance.
 pub fn with_clearance_change(
     geometry: &BearingGeometry,
     delta: f64,
 ) -> Result<BearingGeometry, InvalidParameter> {
     let clearance = geometry.equivalent_diametral_clearance() + delta;
+    let (clearance, preload) = match geometry.clearance {
+        Clearance::FreeContactAngle(_) => {
+            let cos = 1.0 - clearance / (2.0 * geometry.total_curvature() * geometry.ball_diameter);
+            if !(clearance > 0.0 && cos > 0.0) {
+                return Err(InvalidParameter::new(
+                    "free_contact_angle",
+                    format!("operating diametral clearance {clearance} m"),
+                    "the thermal expansion closes the clearance of a bearing given by its free contact angle (its balls would be preloaded radially); give the bearing by its diametral_clearance instead",
+                ));
+            }
+            (Clearance::FreeContactAngle(cos.acos()), false)
+        }
+        _ => (Clearance::Diametral(clearance), clearance < 0.0),
+    };
     BearingGeometry::new(&GeometrySpec {
         ball_diameter: geometry.ball_diameter,
         ball_count: geometry.ball_count,
         pitch_diameter: geometry.pitch_diameter,
         inner_groove_curvature: geometry.inner.groove_curvature,
         outer_groove_curvature: geometry.outer.groove_curvature,
-        clearance: Clearance::Diametral(clearance),
-        preload: clearance < 0.0,
+        clearance,
+        preload,
     })
 }
 
@@ -155,70 +175,118 @@ pub struct CoupledProblem<'a> {
     pub expansion: Expansion,
 }
 
+/// The node temperatures an iteration starts from: every part at the
+/// reference temperature, the oil at its inlet temperature.
+pub fn start_temperatures(problem: &CoupledProblem) -> [f64; 10] {
+    let mut temperatures = [problem.expansion.reference_temperature; 10];
+    temperatures[8] = problem.thermal.ambient_temperature;
+    temperatures[9] = problem.thermal.oil_inlet_temperature;
+    temperatures[7] = problem.thermal.oil_inlet_temperature;
+    temperatures
+}
+
+/// Node `name`'s temperature in `temperatures` (ordered as
+/// [`super::bearing::NODES`]) \[K\].
+pub fn node_temperature(temperatures: &[f64; 10], name: &str) -> f64 {
+    super::bearing::node_index(name).map_or(f64::NAN, |i| temperatures[i])
+}
+
+/// The bearing's geometry `g` (at the reference temperature) at node
+/// `temperatures`: the diametral clearance changed by the rings' and
+/// balls' expansion `e` from the reference temperature (module doc).
+pub fn operating_geometry(
+    g: &BearingGeometry,
+    e: &Expansion,
+    temperatures: &[f64; 10],
+) -> Result<BearingGeometry, InvalidParameter> {
+    let rise = |name| node_temperature(temperatures, name) - e.reference_temperature;
+    let delta = e.ring
+        * ((g.pitch_diameter + g.ball_diameter) * rise("outer_ring")
+            - (g.pitch_diameter - g.ball_diameter) * rise("inner_ring"))
+        - 2.0 * e.ball * g.ball_diameter * rise("ball");
+    if delta != 0.0 {
+        with_clearance_change(g, delta)
+    } else {
+        Ok(g.clone())
+    }
+}
+
+/// One pass's heat: the local power loss of equilibrium `eq` with the oil
+/// at its viscosity at node `temperatures`, and the network's steady
+/// temperatures from it.
+pub struct HeatPass {
+    /// Power loss.
+    pub power: LocalPowerLoss,
+    /// The network's steady state.
+    pub thermal: ThermalSolution,
+    /// Oil dynamic viscosity at the oil node \[Pa·s\].
+    pub oil_viscosity: f64,
+}
+
+/// The heat pass of `problem`'s bearing with operating `geometry` at
+/// equilibrium `eq`, the oil at its node temperature in `temperatures`.
+pub fn heat_pass(
+    problem: &CoupledProblem,
+    geometry: &BearingGeometry,
+    eq: &Equilibrium,
+    temperatures: &[f64; 10],
+) -> Result<HeatPass, CoupledError> {
+    let mut power_inputs = problem.power.clone();
+    let mut thermal_inputs = problem.thermal.clone();
+    let oil_viscosity = match &problem.viscosity {
+        Some(w) => w.dynamic(node_temperature(temperatures, "oil")),
+        None => thermal_inputs.oil_kinematic_viscosity * thermal_inputs.oil_density,
+    };
+    if let Some(guide) = &mut power_inputs.guide {
+        guide.viscosity = oil_viscosity;
+    }
+    thermal_inputs.oil_kinematic_viscosity = oil_viscosity / thermal_inputs.oil_density;
+    let power = local_power_loss(geometry, eq, &power_inputs);
+    let network = BearingThermal::new(&thermal_inputs, &heat_sources(geometry, eq, &power))?;
+    Ok(HeatPass {
+        power,
+        thermal: network.steady()?,
+        oil_viscosity,
+    })
+}
+
+/// Largest change between two sets of node temperatures \[K\].
+pub fn largest_change(a: &[f64; 10], b: &[f64; 10]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max)
+}
+
 /// Iterates to thermal steady state.
 pub fn coupled_steady(
     problem: &CoupledProblem,
     options: &CoupledOptions,
 ) -> Result<CoupledSolution, CoupledError> {
     let p = problem;
-    let mut power_inputs = p.power.clone();
-    let mut thermal_inputs = p.thermal.clone();
-    let reference = p.expansion.reference_temperature;
-    let mut temperatures = [reference; 10];
-    temperatures[8] = thermal_inputs.ambient_temperature;
-    temperatures[9] = thermal_inputs.oil_inlet_temperature;
-    // The oil starts at its inlet temperature.
-    temperatures[7] = thermal_inputs.oil_inlet_temperature;
+    let mut temperatures = start_temperatures(p);
     let mut history = Vec::new();
     let mut last: Option<CoupledSolution> = None;
     let mut warm_start: Option<Equilibrium> = None;
     let base = QuasiStaticSolver::new(p.geometry, p.ball, p.rings, p.hertz)?;
     for _ in 0..options.max_iterations {
-        let t =
-            |name: &str| super::bearing::node_index(name).map_or(reference, |i| temperatures[i]);
-        let e = &p.expansion;
-        let delta = e.ring
-            * ((p.geometry.pitch_diameter + p.geometry.ball_diameter)
-                * (t("outer_ring") - reference)
-                - (p.geometry.pitch_diameter - p.geometry.ball_diameter)
-                    * (t("inner_ring") - reference))
-            - 2.0 * e.ball * p.geometry.ball_diameter * (t("ball") - reference);
-        let geometry = if delta != 0.0 {
-            with_clearance_change(p.geometry, delta)?
-        } else {
-            p.geometry.clone()
-        };
+        let geometry = operating_geometry(p.geometry, &p.expansion, &temperatures)?;
         let solver = base.with_geometry(&geometry)?;
         let eq = match &warm_start {
             Some(previous) => solver.solve_from(previous, &p.conditions, &p.options)?,
             None => solver.solve(&p.conditions, &p.options)?,
         };
-        let oil_viscosity = match &p.viscosity {
-            Some(w) => w.dynamic(t("oil")),
-            None => thermal_inputs.oil_kinematic_viscosity * thermal_inputs.oil_density,
-        };
-        if let Some(guide) = &mut power_inputs.guide {
-            guide.viscosity = oil_viscosity;
-        }
-        thermal_inputs.oil_kinematic_viscosity = oil_viscosity / thermal_inputs.oil_density;
-        let power = local_power_loss(&geometry, &eq, &power_inputs);
-        let network = BearingThermal::new(&thermal_inputs, &heat_sources(&geometry, &eq, &power))?;
-        let thermal = network.steady()?;
-        let change = thermal
-            .temperatures
-            .iter()
-            .zip(&temperatures)
-            .map(|(a, b)| (a - b).abs())
-            .fold(0.0, f64::max);
+        let pass = heat_pass(p, &geometry, &eq, &temperatures)?;
+        let change = largest_change(&pass.thermal.temperatures, &temperatures);
         history.push(change);
-        temperatures = thermal.temperatures;
+        temperatures = pass.thermal.temperatures;
         let converged = change <= options.tolerance;
         last = Some(CoupledSolution {
             operating_clearance: geometry.equivalent_diametral_clearance(),
             equilibrium: eq.clone(),
-            power,
-            thermal,
-            oil_viscosity,
+            power: pass.power,
+            thermal: pass.thermal,
+            oil_viscosity: pass.oil_viscosity,
             history: history.clone(),
             converged,
         });

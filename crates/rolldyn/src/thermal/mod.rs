@@ -11,7 +11,9 @@
 //!   outer-race contacts, rings, shaft, housing, oil, ambient, oil inlet);
 //! * [`viscosity`] — the Walther (ASTM D341) viscosity–temperature law;
 //! * [`coupled`] — temperatures fed back (viscosity, thermal expansion of
-//!   the clearance) in a quasi-static iteration to thermal steady state.
+//!   the clearance) in a quasi-static iteration to thermal steady state;
+//! * [`set`] — the same for the bearings of a shaft system, with the
+//!   shaft's axial growth against the housing's: thermal preload growth.
 //!
 //! docs/thermal.md is the user guide.
 
@@ -19,6 +21,7 @@ pub mod bearing;
 pub mod coupled;
 pub mod network;
 pub mod resistance;
+pub mod set;
 pub mod viscosity;
 
 pub use bearing::{BearingThermal, HeatSources, ThermalInputs, ThermalSolution};

@@ -39,3 +39,4 @@ mod quasistatic_fixed_tilt;
 mod quasistatic_high_speed;
 mod quasistatic_static;
 mod rolling_resistance;
+mod thermal_preload;
