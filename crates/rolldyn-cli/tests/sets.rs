@@ -460,7 +460,7 @@ fn errors_name_the_key() {
     }
     // Analyses of one bearing refuse a set, naming the key.
     let case = pair("kind = \"back_to_back\"\npreload = \"100 N\"");
-    for args in [["run", "-"], ["power", "-"], ["thermal", "-"]] {
+    for args in [["run", "-"], ["power", "-"]] {
         let o = rolldyn(&args, Some(&case));
         assert_eq!(o.status.code(), Some(2), "{args:?}");
         assert!(
@@ -472,6 +472,99 @@ fn errors_name_the_key() {
     let o = rolldyn(&["quasistatic", "-", "--control", "traction"], Some(&case));
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--control traction"), "{}", stderr(&o));
+}
+
+/// `rolldyn thermal` of a pair: every bearing's network with the set in
+/// the loop; the preload at the operating temperatures above the one at
+/// the reference temperature (the inner rings run warmer); the keys; a
+/// warm-up is refused.
+#[test]
+fn thermal_preload_of_a_pair() {
+    let case = pair(
+        "kind = \"back_to_back\"\npreload = \"200 N\"\n[thermal]\noil_flow = \"0.5 L/min\"\noil_inlet_temperature = \"25 degC\"",
+    );
+    let v = json(
+        &["thermal", "-", "--json", "--axial-load", "0 N"],
+        Some(&case),
+    );
+    assert_eq!(
+        keys(&v),
+        [
+            "axial_strain",
+            "bearings",
+            "converged",
+            "heat_generated_w",
+            "history_k",
+            "iterations",
+            "kind",
+            "mounting_preload_n",
+            "oil_flow_m3_s",
+            "operating_preload_at_speed_n",
+            "reference_preload_at_speed_n",
+        ]
+    );
+    assert_eq!(v["converged"], true);
+    assert_eq!(v["kind"], "back_to_back");
+    let bearings = v["bearings"].as_array().unwrap();
+    assert_eq!(bearings.len(), 2);
+    assert_eq!(
+        keys(&bearings[0]),
+        [
+            "heat_generated_w",
+            "heat_to_ambient_w",
+            "heat_to_oil_w",
+            "oil_viscosity_pa_s",
+            "operating_axial_load_n",
+            "operating_axial_offset_m",
+            "operating_clearance_m",
+            "orientation",
+            "position_m",
+            "power",
+            "reference_axial_load_n",
+            "reference_axial_offset_m",
+            "reference_clearance_m",
+            "temperatures_c",
+        ]
+    );
+    let f = |b: &serde_json::Value, k: &str| b[k].as_f64().unwrap();
+    let (cold, hot) = (
+        f(&v, "reference_preload_at_speed_n"),
+        f(&v, "operating_preload_at_speed_n"),
+    );
+    assert!(cold > 200.0 && hot > cold, "{cold} {hot}");
+    // Without external load the pair is symmetric: equal temperatures
+    // and loads, the heat the sum of both, and the inner ring above the
+    // outer (the clearance closes).
+    let (a, b) = (&bearings[0], &bearings[1]);
+    for k in [
+        "operating_axial_load_n",
+        "heat_generated_w",
+        "operating_clearance_m",
+    ] {
+        assert!((f(a, k) - f(b, k)).abs() <= 1e-6 * f(a, k).abs(), "{k}");
+    }
+    assert!((f(a, "operating_axial_load_n") - hot).abs() < 1e-6 * hot);
+    assert!((f(&v, "heat_generated_w") - 2.0 * f(a, "heat_generated_w")).abs() < 1e-9);
+    let t = &a["temperatures_c"];
+    assert!(f(t, "inner_ring") > f(t, "outer_ring"));
+    assert!(f(a, "operating_clearance_m") < f(a, "reference_clearance_m"));
+    assert!(f(a, "operating_axial_offset_m") > f(a, "reference_axial_offset_m"));
+    let o = rolldyn(&["thermal", "-", "--transient", "10 min"], Some(&case));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--transient"), "{}", stderr(&o));
+    // Under 200 N of thrust the +x bearing runs hotter and the pair
+    // still balances it.
+    let v = json(&["thermal", "-", "--json"], Some(&case));
+    let bearings = v["bearings"].as_array().unwrap();
+    let thrust =
+        f(&bearings[0], "operating_axial_load_n") - f(&bearings[1], "operating_axial_load_n");
+    assert!((thrust - 200.0).abs() < 1e-6, "{thrust}");
+    assert!(f(&bearings[0], "heat_generated_w") > f(&bearings[1], "heat_generated_w"));
+    let text = stdout(&rolldyn(&["thermal", "-"], Some(&case)));
+    assert!(
+        text.contains("preload at speed") && text.contains("axial load N (operating)"),
+        "{text}"
+    );
 }
 
 /// Two 6206 on a rigid shaft 120 mm apart, a gear force of 4 kN at
