@@ -415,6 +415,14 @@ def test_power_and_thermal_equal_the_cli():
         rolldyn.thermal(case, transient="-1 s")
 
 
+def test_thermal_of_a_bearing_set_equals_the_cli():
+    pair = REPO / "examples" / "spindle_pair" / "case.toml"
+    got = rolldyn.thermal(rolldyn.Case.load(pair))
+    assert got == cli_json("thermal", str(pair), "--json")
+    assert got["operating_preload_at_speed_n"] > got["reference_preload_at_speed_n"]
+    assert len(got["bearings"]) == 2
+
+
 def test_traction_equals_the_cli(tmp_path):
     law = '{ law = "fastsim", friction = 0.1 }'
     case = rolldyn.Case.default().set("model.traction", law)

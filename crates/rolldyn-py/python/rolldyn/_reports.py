@@ -165,7 +165,8 @@ class PowerResult(Report):
 
 class ThermalResult(Report):
     """``rolldyn thermal``: the bearing's temperatures coupled to its power
-    loss, and the warm-up when asked (keys in docs/cli.md)."""
+    loss, and the warm-up when asked; of a bearing set, every bearing's and
+    the preload at the operating temperatures (keys in docs/cli.md)."""
 
 
 class Frequencies(Report):
