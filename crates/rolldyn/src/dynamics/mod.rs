@@ -47,6 +47,7 @@ pub mod peaks;
 pub mod pocket;
 pub mod race_contact;
 mod sensor_coupling;
+pub mod shaft;
 pub mod spall_growth;
 pub mod supports;
 pub mod surface_contact;

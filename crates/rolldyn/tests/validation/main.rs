@@ -39,4 +39,5 @@ mod quasistatic_fixed_tilt;
 mod quasistatic_high_speed;
 mod quasistatic_static;
 mod rolling_resistance;
+mod shaft_dynamics;
 mod thermal_preload;

@@ -1,0 +1,704 @@
+//! Several bearings on one rigid shaft, each with its full ball and cage
+//! dynamics, the shaft's five rigid-body degrees of freedom shared
+//! (docs/systems.md, "Dynamics").
+//!
+//! Each bearing is a [`BearingModel`] whose inner ring does not move by
+//! itself: its states are those of the shaft seen from the bearing,
+//! q_i = M_i P_i u + s_i e_x and q̇_i = M_i P_i u̇, with P_i the rigid
+//! shaft's small-rotation map to the bearing's pitch plane at x_i, M_i the
+//! reflection of a mirrored bearing and s_i its preload offset (the
+//! kinematics of the quasi-static set, `quasistatic::system`). The balls'
+//! forces and moments on each inner ring, F_i, act on the shaft:
+//!
+//! ```text
+//! m_s ü = Σ_i (M_i P_i)ᵀ F_i + F_applied − m_s g e_z     (x, y, z)
+//! I_t θ̈ = Σ_i (M_i P_i)ᵀ F_i + M_applied                 (θ_y, θ_z)
+//! ```
+//!
+//! the rotation about the axis prescribed (every bearing's inner-ring
+//! speed). A mirrored bearing's own frame is the reflection x → −x of the
+//! shaft's: positions and forces along x change sign, and so do the tilts
+//! and moments about y and z (pseudovectors); the spin about x does not,
+//! so every bearing turns with the shaft's speed in its own frame.
+//!
+//! The state: every bearing's balls (the implicit integrators' blocks),
+//! then each bearing's outer ring, cage and energy accumulators, then the
+//! shaft's displacement and velocity. A bearing's right-hand side is its
+//! own, evaluated on its state gathered from the system's with the inner
+//! ring's slots set from the shaft, its inner ring of unit mass and
+//! inertia without load or support so that its computed ring
+//! accelerations are F_i (+g along z). The energy: each bearing's balls,
+//! outer ring, cage and contacts, the shaft's kinetic energy and the
+//! potential of the applied loads and gravity; work and dissipation are
+//! the bearings' accumulators.
+
+use super::coupling::BallCoupling;
+use super::model::BearingModel;
+use crate::error::InvalidParameter;
+use crate::integrate::linear::BlockLayout;
+use crate::integrate::{BlockSplit, EnergyBalance, OdeSystem};
+use crate::operating::{LoadProfile, Loads};
+use crate::quasistatic::system::{MountedBearing, SystemEquilibrium};
+use std::sync::Mutex;
+
+/// Shaft states: displacement (x, y, z, θ_y, θ_z) and velocity.
+pub const SHAFT_STATES: usize = 10;
+
+/// The rigid shaft's inertia.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShaftBody {
+    /// Mass with everything that moves with it (inner rings, hubs) \[kg\].
+    pub mass: f64,
+    /// Moment of inertia about a diameter through the reference point
+    /// \[kg·m²\].
+    pub tilt_inertia: f64,
+}
+
+/// One bearing of the system: its model and where it sits.
+#[derive(Debug, Clone)]
+struct Mounted {
+    model: BearingModel,
+    /// M_i P_i, row-major (ring displacement of unit shaft displacements).
+    transform: [[f64; 5]; 5],
+    /// Preload offset s_i \[m\].
+    offset: f64,
+    /// First state of its balls and of its border in the system's state.
+    first_ball: usize,
+    first_border: usize,
+    /// Its first block.
+    first_block: usize,
+}
+
+impl Mounted {
+    fn ring(&self, u: &[f64]) -> [f64; 5] {
+        std::array::from_fn(|r| (0..5).map(|k| self.transform[r][k] * u[k]).sum())
+    }
+
+    /// (M_i P_i)ᵀ f: a ring load on the shaft.
+    fn to_shaft(&self, f: &[f64; 5]) -> [f64; 5] {
+        std::array::from_fn(|k| (0..5).map(|r| self.transform[r][k] * f[r]).sum())
+    }
+}
+
+/// Work buffers: a bearing's state and derivative in its own layout.
+#[derive(Debug, Clone, Default)]
+struct Buffers {
+    y: Vec<f64>,
+    dy: Vec<f64>,
+}
+
+/// Bearings on one rigid shaft (module doc).
+#[derive(Debug)]
+pub struct ShaftDynamics {
+    bearings: Vec<Mounted>,
+    body: ShaftBody,
+    loads: Loads,
+    gravity: f64,
+    ball_len: usize,
+    first_shaft: usize,
+    dimension: usize,
+    /// A pool of buffers (taken and returned around each bearing's
+    /// evaluation; allocated once per concurrent evaluation).
+    pool: Mutex<Vec<Buffers>>,
+}
+
+impl Clone for ShaftDynamics {
+    fn clone(&self) -> Self {
+        Self {
+            bearings: self.bearings.clone(),
+            body: self.body,
+            loads: self.loads,
+            gravity: self.gravity,
+            ball_len: self.ball_len,
+            first_shaft: self.first_shaft,
+            dimension: self.dimension,
+            pool: Mutex::new(Vec::new()),
+        }
+    }
+}
+
+impl ShaftDynamics {
+    /// The system of `bearings` (each model with its mounting on the
+    /// shaft: position, orientation, preload offset), the shaft `body` and
+    /// the constant `loads` on it at its reference point. The models'
+    /// inner-ring mass, loads and support are replaced (the shaft carries
+    /// them); their speeds should agree (the shaft's).
+    pub fn new(
+        bearings: Vec<(BearingModel, &MountedBearing)>,
+        body: ShaftBody,
+        loads: Loads,
+    ) -> Result<Self, InvalidParameter> {
+        let Some((first, _)) = bearings.first() else {
+            return Err(InvalidParameter::new(
+                "bearings",
+                0.0,
+                "needs at least one bearing",
+            ));
+        };
+        let ball_len = first.layout().ball_len();
+        let gravity = first.parameters().gravity;
+        for (field, value) in [("mass", body.mass), ("tilt_inertia", body.tilt_inertia)] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(InvalidParameter::new(field, value, "must be positive"));
+            }
+        }
+        let balls: usize = bearings.iter().map(|(m, _)| m.layout().balls).sum();
+        let mut first_ball = 0;
+        let mut first_border = balls * ball_len;
+        let mut first_block = 0;
+        let mut mounted = Vec::with_capacity(bearings.len());
+        for (mut model, mount) in bearings {
+            let l = model.layout();
+            if l.ball_len() != ball_len {
+                return Err(InvalidParameter::new(
+                    "bearings",
+                    l.ball_len() as f64,
+                    "every bearing needs the same ball states (all with surfaces or none)",
+                ));
+            }
+            if l.film_work || model.parameters().planar || mount.floating {
+                return Err(InvalidParameter::new(
+                    "bearings",
+                    0.0,
+                    "a shaft system's bearings run without the film in the approach, in 3-D, located (not floating)",
+                ));
+            }
+            if model.parameters().gravity != gravity {
+                return Err(InvalidParameter::new(
+                    "gravity",
+                    model.parameters().gravity,
+                    "every bearing needs the same gravity",
+                ));
+            }
+            let p = &mut model.elements.params;
+            p.inner_ring_mass = 1.0;
+            p.inner_ring_tilt_inertia = 1.0;
+            p.loads = LoadProfile::Constant(Loads::default());
+            p.inner_support = super::Support::default();
+            let zero = mount.ring_displacement(&[0.0; 5]);
+            let transform = std::array::from_fn(|r| {
+                std::array::from_fn(|k| {
+                    let mut e = [0.0; 5];
+                    e[k] = 1.0;
+                    mount.ring_displacement(&e)[r] - zero[r]
+                })
+            });
+            let border = l.len() - l.ring() - 10;
+            mounted.push(Mounted {
+                transform,
+                offset: mount.axial_offset,
+                first_ball,
+                first_border,
+                first_block,
+                model,
+            });
+            first_ball += l.balls * ball_len;
+            first_border += border;
+            first_block += l.balls;
+        }
+        Ok(Self {
+            bearings: mounted,
+            body,
+            loads,
+            gravity,
+            ball_len,
+            first_shaft: first_border,
+            dimension: first_border + SHAFT_STATES,
+            pool: Mutex::new(Vec::new()),
+        })
+    }
+
+    /// Number of bearings.
+    pub fn bearing_count(&self) -> usize {
+        self.bearings.len()
+    }
+
+    /// Bearing `i`'s model (its inner ring slaved to the shaft).
+    pub fn bearing(&self, i: usize) -> &BearingModel {
+        &self.bearings[i].model
+    }
+
+    /// First shaft state.
+    pub fn shaft(&self) -> usize {
+        self.first_shaft
+    }
+
+    /// Bearing `i`'s state in its own layout (as a [`BearingModel`]'s)
+    /// from the system's state `y`, into `out`.
+    pub fn bearing_state(&self, i: usize, y: &[f64], out: &mut [f64]) {
+        gather(&self.bearings[i], self.ball_len, self.first_shaft, y, out);
+    }
+
+    /// The system's state at a quasi-static equilibrium of the same set
+    /// (balls, cages, shaft displacement; velocities of rings zero).
+    pub fn initial_state(&self, eq: &SystemEquilibrium) -> Result<Vec<f64>, InvalidParameter> {
+        let mut y = vec![0.0; self.dimension];
+        for (i, b) in self.bearings.iter().enumerate() {
+            let Some(state) = eq.bearings.get(i).and_then(Option::as_ref) else {
+                return Err(InvalidParameter::new(
+                    "equilibrium",
+                    i as f64,
+                    "every bearing needs its equilibrium (none may be lifted off)",
+                ));
+            };
+            let own = b.model.state_from_equilibrium(state);
+            let l = b.model.layout();
+            let n = l.balls * self.ball_len;
+            y[b.first_ball..b.first_ball + n].copy_from_slice(&own[..n]);
+            let border = l.len() - l.ring() - 10;
+            y[b.first_border..b.first_border + border].copy_from_slice(&own[l.ring() + 10..]);
+        }
+        y[self.first_shaft..self.first_shaft + 5].copy_from_slice(&eq.displacement);
+        Ok(y)
+    }
+
+    /// Writes bearing `b`'s inner ring (from the shaft) and its border
+    /// states into its own-layout `out`.
+    fn gather_border(&self, b: &Mounted, y: &[f64], out: &mut [f64]) {
+        gather_border(b, self.first_shaft, y, out);
+    }
+
+    fn take(&self) -> Buffers {
+        let mut buffers = self
+            .pool
+            .lock()
+            .map_or_else(|_| Buffers::default(), |mut p| p.pop().unwrap_or_default());
+        let n = self
+            .bearings
+            .iter()
+            .map(|b| b.model.layout().len())
+            .max()
+            .unwrap_or(0);
+        if buffers.y.len() < n {
+            buffers.y.resize(n, 0.0);
+            buffers.dy.resize(n, 0.0);
+        }
+        buffers
+    }
+
+    fn give(&self, buffers: Buffers) {
+        if let Ok(mut p) = self.pool.lock() {
+            p.push(buffers);
+        }
+    }
+
+    /// The ring load F_i from a bearing's computed inner-ring
+    /// accelerations (unit mass and inertia, gravity along −z).
+    fn ring_load(&self, acceleration: &[f64]) -> [f64; 5] {
+        let mut f: [f64; 5] = std::array::from_fn(|k| acceleration[k]);
+        f[2] += self.gravity;
+        f
+    }
+
+    /// The shaft's derivatives `out` (10) from its `state` (10) and the
+    /// summed bearing loads on it.
+    fn shaft_rhs(&self, state: &[f64], load: &[f64; 5], out: &mut [f64]) {
+        out[..5].copy_from_slice(&state[5..SHAFT_STATES]);
+        let applied = [
+            self.loads.force[0],
+            self.loads.force[1],
+            self.loads.force[2],
+            self.loads.moment[0],
+            self.loads.moment[1],
+        ];
+        for k in 0..5 {
+            let inertia = if k < 3 {
+                self.body.mass
+            } else {
+                self.body.tilt_inertia
+            };
+            out[5 + k] = (load[k] + applied[k]) / inertia;
+        }
+        out[7] -= self.gravity;
+    }
+
+    /// The applied loads' potential and gravity's at shaft `state` plus
+    /// the shaft's kinetic energy \[J\].
+    fn shaft_energy(&self, state: &[f64]) -> f64 {
+        let v = &state[5..SHAFT_STATES];
+        let applied = [
+            self.loads.force[0],
+            self.loads.force[1],
+            self.loads.force[2],
+            self.loads.moment[0],
+            self.loads.moment[1],
+        ];
+        0.5 * self.body.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+            + 0.5 * self.body.tilt_inertia * (v[3] * v[3] + v[4] * v[4])
+            - (0..5).map(|k| applied[k] * state[k]).sum::<f64>()
+            + self.body.mass * self.gravity * state[2]
+    }
+
+    /// Which bearing and which of its balls system block `block` is.
+    fn block_owner(&self, block: usize) -> (usize, usize) {
+        let i = self
+            .bearings
+            .iter()
+            .rposition(|b| b.first_block <= block)
+            .unwrap_or(0);
+        (i, block - self.bearings[i].first_block)
+    }
+
+    /// Which bearing a system border state (counted from the first border
+    /// state) belongs to and its index counted from that bearing's inner
+    /// ring; None for the shaft's.
+    fn border_owner(&self, column: usize) -> Option<(usize, usize)> {
+        let state = self.bearings[0].first_border + column;
+        if state >= self.first_shaft {
+            return None;
+        }
+        let i = self
+            .bearings
+            .iter()
+            .rposition(|b| b.first_border <= state)
+            .unwrap_or(0);
+        Some((i, 10 + state - self.bearings[i].first_border))
+    }
+
+    /// The system state index of bearing `b`'s own state `local`, None for
+    /// its inner ring's (slaved).
+    fn system_index(&self, b: &Mounted, local: usize) -> Option<usize> {
+        let l = b.model.layout();
+        if local < l.ring() {
+            Some(b.first_ball + local)
+        } else if local >= l.ring() + 10 {
+            Some(b.first_border + local - l.ring() - 10)
+        } else {
+            None
+        }
+    }
+
+    fn memo_parts(&self) -> (usize, usize) {
+        let own = self.bearings[0].model.memo_len();
+        (own, own + self.ball_len + BallCoupling::LEN)
+    }
+}
+
+impl OdeSystem for ShaftDynamics {
+    fn dimension(&self) -> usize {
+        self.dimension
+    }
+
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        let mut shaft_load = [0.0; 5];
+        let mut work = self.take();
+        for b in &self.bearings {
+            let l = b.model.layout();
+            let (n, r, len) = (l.balls * self.ball_len, l.ring(), l.len());
+            self.bearing_state_into(b, y, &mut work.y[..len]);
+            b.model.rhs(t, &work.y[..len], &mut work.dy[..len]);
+            dy[b.first_ball..b.first_ball + n].copy_from_slice(&work.dy[..n]);
+            dy[b.first_border..b.first_border + len - r - 10]
+                .copy_from_slice(&work.dy[r + 10..len]);
+            let load = b.to_shaft(&self.ring_load(&work.dy[r + 5..r + 10]));
+            shaft_load.iter_mut().zip(load).for_each(|(s, f)| *s += f);
+        }
+        self.give(work);
+        let sh = self.first_shaft;
+        self.shaft_rhs(&y[sh..], &shaft_load, &mut dy[sh..]);
+    }
+
+    fn blocks(&self) -> Option<&dyn BlockSplit> {
+        Some(self)
+    }
+
+    fn error_scale(&self, scale: &mut [f64]) {
+        let mut own = Vec::new();
+        for b in &self.bearings {
+            own.resize(b.model.layout().len(), 0.0);
+            b.model.error_scale(&mut own);
+            for (local, v) in own.iter().enumerate() {
+                if let Some(k) = self.system_index(b, local) {
+                    scale[k] = *v;
+                }
+            }
+            // The shaft's scales are the inner ring's.
+            let r = b.model.layout().ring();
+            scale[self.first_shaft..].copy_from_slice(&own[r..r + 10]);
+        }
+    }
+
+    fn absolute_error(&self, absolute: &mut [bool]) {
+        let mut own = Vec::new();
+        for b in &self.bearings {
+            own.clear();
+            own.resize(b.model.layout().len(), false);
+            b.model.absolute_error(&mut own);
+            for (local, v) in own.iter().enumerate() {
+                if let Some(k) = self.system_index(b, local) {
+                    absolute[k] = *v;
+                }
+            }
+        }
+    }
+
+    fn state_name(&self, index: usize) -> String {
+        if index >= self.first_shaft {
+            const SHAFT: [&str; 10] = [
+                "axial position x",
+                "position y",
+                "position z",
+                "tilt θ_y",
+                "tilt θ_z",
+                "axial velocity ẋ",
+                "velocity ẏ",
+                "velocity ż",
+                "tilt rate θ̇_y",
+                "tilt rate θ̇_z",
+            ];
+            return format!("shaft {}", SHAFT[index - self.first_shaft]);
+        }
+        for (i, b) in self.bearings.iter().enumerate() {
+            let l = b.model.layout();
+            let local = if (b.first_ball..b.first_ball + l.balls * self.ball_len).contains(&index) {
+                Some(index - b.first_ball)
+            } else if (b.first_border..b.first_border + l.len() - l.ring() - 10).contains(&index) {
+                Some(index - b.first_border + l.ring() + 10)
+            } else {
+                None
+            };
+            if let Some(local) = local {
+                return format!("bearing {i}: {}", b.model.state_name(local));
+            }
+        }
+        format!("y[{index}]")
+    }
+
+    fn step_limit(&self, t: f64, y: &[f64]) -> f64 {
+        let mut work = self.take();
+        let limit = self
+            .bearings
+            .iter()
+            .map(|b| {
+                let len = b.model.layout().len();
+                self.bearing_state_into(b, y, &mut work.y[..len]);
+                b.model.step_limit(t, &work.y[..len])
+            })
+            .fold(f64::INFINITY, f64::min);
+        self.give(work);
+        limit
+    }
+
+    fn accept_step(&mut self, t: f64, y: &[f64]) -> bool {
+        let mut work = self.take();
+        let mut changed = false;
+        let ball_len = self.ball_len;
+        let shaft = self.first_shaft;
+        for b in &mut self.bearings {
+            let len = b.model.layout().len();
+            gather(b, ball_len, shaft, y, &mut work.y[..len]);
+            changed |= b.model.accept_step(t, &work.y[..len]);
+        }
+        self.give(work);
+        changed
+    }
+
+    fn energy_balance(&self, t: f64, y: &[f64]) -> Option<EnergyBalance> {
+        let mut work = self.take();
+        let s = self.first_shaft;
+        let (mut done, mut dissipated, mut mechanical) = (0.0, 0.0, 0.0);
+        for b in &self.bearings {
+            let l = b.model.layout();
+            let len = l.len();
+            self.bearing_state_into(b, y, &mut work.y[..len]);
+            let own = &work.y[..len];
+            let (w, d) = b.model.work(own);
+            done += w;
+            dissipated += d;
+            // Its inner ring's share (unit mass and inertia) is the shaft's.
+            let r = l.ring();
+            let ring_kinetic = 0.5 * own[r + 5..r + 10].iter().map(|v| v * v).sum::<f64>();
+            mechanical += b.model.energy(t, own).total() - ring_kinetic - self.gravity * own[r + 2];
+        }
+        self.give(work);
+        mechanical += self.shaft_energy(&y[s..]);
+        Some(EnergyBalance {
+            work: done,
+            dissipated,
+            mechanical,
+        })
+    }
+}
+
+/// Bearing `b`'s inner ring from the shaft states at `shaft` and its
+/// border states, from the system's `y` into its own-layout `out`.
+fn gather_border(b: &Mounted, shaft: usize, y: &[f64], out: &mut [f64]) {
+    let l = b.model.layout();
+    let r = l.ring();
+    let mut ring = b.ring(&y[shaft..shaft + 5]);
+    ring[0] += b.offset;
+    out[r..r + 5].copy_from_slice(&ring);
+    out[r + 5..r + 10].copy_from_slice(&b.ring(&y[shaft + 5..shaft + 10]));
+    let border = l.len() - r - 10;
+    out[r + 10..l.len()].copy_from_slice(&y[b.first_border..b.first_border + border]);
+}
+
+/// Bearing `b`'s full own-layout state from the system's `y` (a free
+/// function for the mutable pass of `accept_step`).
+fn gather(b: &Mounted, ball_len: usize, shaft: usize, y: &[f64], out: &mut [f64]) {
+    let n = b.model.layout().balls * ball_len;
+    out[..n].copy_from_slice(&y[b.first_ball..b.first_ball + n]);
+    gather_border(b, shaft, y, out);
+}
+
+impl ShaftDynamics {
+    fn bearing_state_into(&self, b: &Mounted, y: &[f64], out: &mut [f64]) {
+        gather(b, self.ball_len, self.first_shaft, y, out);
+    }
+
+    /// Ball `j` of bearing `b` and the bearing's border into `out` (the
+    /// other balls' slots are not read by one ball's equations).
+    fn gather_ball(&self, b: &Mounted, j: usize, y: &[f64], out: &mut [f64]) {
+        let at = j * self.ball_len;
+        out[at..at + self.ball_len]
+            .copy_from_slice(&y[b.first_ball + at..b.first_ball + at + self.ball_len]);
+        self.gather_border(b, y, out);
+    }
+}
+
+impl BlockSplit for ShaftDynamics {
+    fn block_layout(&self) -> BlockLayout {
+        BlockLayout {
+            blocks: self.bearings.iter().map(|b| b.model.layout().balls).sum(),
+            block_size: self.ball_len,
+            border: self.dimension - self.bearings[0].first_border,
+        }
+    }
+
+    fn coupling_len(&self) -> usize {
+        BallCoupling::LEN * self.bearings.len()
+    }
+
+    fn parallel(&self) -> bool {
+        self.bearings[0].model.parallel()
+    }
+
+    fn block_rhs(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+    ) {
+        let (i, j) = self.block_owner(block);
+        let b = &self.bearings[i];
+        let mut work = self.take();
+        let len = b.model.layout().len();
+        self.gather_ball(b, j, y, &mut work.y[..len]);
+        coupling.fill(0.0);
+        let slot = &mut coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN];
+        b.model.block_rhs(t, &work.y[..len], j, dy_block, slot);
+        self.give(work);
+    }
+
+    fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
+        let mut work = self.take();
+        let mut shaft_load = [0.0; 5];
+        let start = self.bearings[0].first_border;
+        for (i, b) in self.bearings.iter().enumerate() {
+            let l = b.model.layout();
+            let (r, len) = (l.ring(), l.len());
+            self.gather_border(b, y, &mut work.y[..len]);
+            let slot = &coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN];
+            b.model
+                .border_rhs(t, &work.y[..len], slot, &mut work.dy[r..len]);
+            let at = b.first_border - start;
+            dy_border[at..at + len - r - 10].copy_from_slice(&work.dy[r + 10..len]);
+            let load = b.to_shaft(&self.ring_load(&work.dy[r + 5..r + 10]));
+            shaft_load.iter_mut().zip(load).for_each(|(s, f)| *s += f);
+        }
+        self.give(work);
+        let s = self.first_shaft;
+        self.shaft_rhs(&y[s..], &shaft_load, &mut dy_border[s - start..]);
+    }
+
+    fn memo_len(&self) -> usize {
+        self.memo_parts().1
+    }
+
+    fn block_rhs_memo(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+        memo: &mut [f64],
+    ) {
+        let (i, j) = self.block_owner(block);
+        let b = &self.bearings[i];
+        let (own, _) = self.memo_parts();
+        let mut work = self.take();
+        let len = b.model.layout().len();
+        self.gather_ball(b, j, y, &mut work.y[..len]);
+        coupling.fill(0.0);
+        let slot = &mut coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN];
+        b.model
+            .block_rhs_memo(t, &work.y[..len], j, dy_block, slot, &mut memo[..own]);
+        self.give(work);
+        memo[own..own + self.ball_len].copy_from_slice(dy_block);
+        memo[own + self.ball_len..].copy_from_slice(slot);
+    }
+
+    /// A border state of another bearing leaves the block as it was (its
+    /// memo); one of its own bearing reuses what the bearing's memo
+    /// allows; a shaft state moves the ring and evaluates the ball again.
+    fn block_rhs_border_column(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        column: usize,
+        memo: &[f64],
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+    ) {
+        let (i, j) = self.block_owner(block);
+        let (own, _) = self.memo_parts();
+        match self.border_owner(column) {
+            Some((k, _)) if k != i => {
+                coupling.fill(0.0);
+                dy_block.copy_from_slice(&memo[own..own + self.ball_len]);
+                coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN]
+                    .copy_from_slice(&memo[own + self.ball_len..]);
+            }
+            Some((_, local)) => {
+                let b = &self.bearings[i];
+                let mut work = self.take();
+                let len = b.model.layout().len();
+                self.gather_ball(b, j, y, &mut work.y[..len]);
+                coupling.fill(0.0);
+                let slot = &mut coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN];
+                b.model.block_rhs_border_column(
+                    t,
+                    &work.y[..len],
+                    j,
+                    local,
+                    &memo[..own],
+                    dy_block,
+                    slot,
+                );
+                self.give(work);
+            }
+            None => self.block_rhs(t, y, block, dy_block, coupling),
+        }
+    }
+
+    fn inert(&self, state: usize) -> bool {
+        if state >= self.first_shaft {
+            return false;
+        }
+        for b in &self.bearings {
+            let l = b.model.layout();
+            let n = l.balls * self.ball_len;
+            if (b.first_ball..b.first_ball + n).contains(&state) {
+                return b.model.inert(state - b.first_ball);
+            }
+            if (b.first_border..b.first_border + l.len() - l.ring() - 10).contains(&state) {
+                return b.model.inert(state - b.first_border + l.ring() + 10);
+            }
+        }
+        false
+    }
+}

@@ -1,0 +1,208 @@
+//! Bearings on a rigid shaft in motion (`dynamics::shaft`, docs/systems.md,
+//! "Dynamics"):
+//!
+//! * one bearing on a shaft of its inner ring's mass and inertia, loaded
+//!   as the bearing, has the bearing's equations: the same derivatives and
+//!   energy to rounding, whatever the states' order, and its block split
+//!   composes to its right-hand side;
+//! * a 7008C back-to-back pair with a 200 N position preload, started from
+//!   its quasi-static state at 10 000 rpm, keeps the preload the
+//!   quasi-static set gives (within the raceway-control bracket of one
+//!   bearing, B6: the dynamics shares the gyroscopic friction between the
+//!   contacts), both bearings alike, and closes its energy balance.
+
+use super::common::{bearing_7008c, dynamics_7008c, rel};
+use rolldyn::contact::HertzModel;
+use rolldyn::dynamics::shaft::{ShaftBody, ShaftDynamics};
+use rolldyn::dynamics::{BearingModel, DragParameters};
+use rolldyn::integrate::{BlockSplit, Integrator, OdeSystem, ROS34PW2, Rosenbrock};
+use rolldyn::material::Material;
+use rolldyn::operating::Loads;
+use rolldyn::quasistatic::system::{
+    MountedBearing, Orientation, SetKind, ShaftSystem, SystemConditions,
+};
+use rolldyn::quasistatic::{QuasiStaticSolver, RacewayControl, SolverOptions};
+
+fn solver() -> QuasiStaticSolver {
+    let steel = Material::STEEL_52100;
+    QuasiStaticSolver::new(&bearing_7008c(), &steel, &steel, HertzModel::Exact).unwrap()
+}
+
+#[test]
+fn one_bearing_on_a_shaft_is_the_bearing() {
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let (params, eq) = dynamics_7008c(DragParameters::default());
+    let (mass, tilt) = (params.inner_ring_mass, params.inner_ring_tilt_inertia);
+    let loads = params.loads.at(0.0);
+    let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
+    let mount = MountedBearing {
+        solver: solver(),
+        position: 0.0,
+        orientation: Orientation::Forward,
+        axial_offset: 0.0,
+        floating: false,
+    };
+    let system = ShaftDynamics::new(
+        vec![(model.clone(), &mount)],
+        ShaftBody {
+            mass,
+            tilt_inertia: tilt,
+        },
+        loads,
+    )
+    .unwrap();
+    // The bearing's start with its ring moving and tilting.
+    let mut y = model.state_from_equilibrium(&eq);
+    let l = model.layout();
+    let r = l.ring();
+    y[r + 1] += 0.3e-6;
+    y[r + 4] += 2e-5;
+    y[r + 6] = 1e-3;
+    y[r + 8] = 0.02;
+    let mut ys = vec![0.0; system.dimension()];
+    let n = l.ring();
+    ys[..n].copy_from_slice(&y[..n]);
+    let s = system.shaft();
+    ys[n..s].copy_from_slice(&y[r + 10..]);
+    ys[s..].copy_from_slice(&y[r..r + 10]);
+    let mut back = vec![0.0; l.len()];
+    system.bearing_state(0, &ys, &mut back);
+    assert_eq!(back, y);
+    let (mut dy, mut dys) = (vec![0.0; l.len()], vec![0.0; system.dimension()]);
+    model.rhs(0.0, &y, &mut dy);
+    system.rhs(0.0, &ys, &mut dys);
+    let close = |a: &[f64], b: &[f64], what: &str| {
+        let size = b.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-300);
+        for (k, (x, e)) in a.iter().zip(b).enumerate() {
+            assert!((x - e).abs() <= 1e-12 * size, "{what}[{k}]: {x} vs {e}");
+        }
+    };
+    close(&dys[..n], &dy[..n], "balls");
+    close(&dys[n..s], &dy[r + 10..], "outer ring, cage, work");
+    close(&dys[s..s + 5], &dy[r..r + 5], "shaft velocity");
+    close(&dys[s + 5..], &dy[r + 5..r + 10], "shaft acceleration");
+    let (a, b) = (
+        system.energy_balance(0.0, &ys).unwrap(),
+        model.energy_balance(0.0, &y).unwrap(),
+    );
+    assert!(rel(a.mechanical, b.mechanical) < 1e-12, "{a:?} vs {b:?}");
+    assert_eq!((a.work, a.dissipated), (b.work, b.dissipated));
+    // The block split composes to the right-hand side.
+    let layout = system.block_layout();
+    let c = system.coupling_len();
+    let (mut sum, mut coupling) = (vec![0.0; c], vec![0.0; c]);
+    let mut split = vec![0.0; system.dimension()];
+    let size = layout.block_size;
+    for j in 0..layout.blocks {
+        system.block_rhs(
+            0.0,
+            &ys,
+            j,
+            &mut split[j * size..(j + 1) * size],
+            &mut coupling,
+        );
+        sum.iter_mut().zip(&coupling).for_each(|(s, v)| *s += v);
+    }
+    system.border_rhs(0.0, &ys, &sum, &mut split[layout.blocks * size..]);
+    close(&split, &dys, "block split");
+}
+
+#[test]
+fn preloaded_pair_in_motion_keeps_its_quasi_static_preload() {
+    let g = bearing_7008c();
+    let steel = Material::STEEL_52100;
+    let (params, _) = dynamics_7008c(DragParameters::default());
+    let speed = params.speed.speed_at(0.0);
+    let options = SolverOptions::default();
+    let set = ShaftSystem::matched(&solver(), SetKind::BackToBack, 15e-3);
+    let offset = set
+        .offset_for_preload(200.0, 0.0, RacewayControl::Outer, &options)
+        .unwrap();
+    let set = set.with_axial_offset(offset);
+    let conditions = SystemConditions {
+        loads: Loads::default(),
+        inner_speed: speed,
+        control: RacewayControl::Outer,
+    };
+    let eq = set.solve(&conditions, &options).unwrap();
+    // The balls' axial push Σ Q_i sin α_i of bearing 0 under outer and
+    // inner raceway control: the bracket of B6.
+    let push = |eq: &rolldyn::quasistatic::system::SystemEquilibrium| {
+        eq.bearings[0]
+            .as_ref()
+            .unwrap()
+            .balls
+            .iter()
+            .map(|b| b.inner.load * b.inner.contact_angle.sin())
+            .sum::<f64>()
+    };
+    let inner_control = set
+        .solve(
+            &SystemConditions {
+                control: RacewayControl::Inner,
+                ..conditions
+            },
+            &options,
+        )
+        .unwrap();
+    let bracket = [push(&eq), push(&inner_control)];
+    let preload = eq.bearings[0].as_ref().unwrap().reaction[0];
+    let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
+    let system = ShaftDynamics::new(
+        set.bearings.iter().map(|m| (model.clone(), m)).collect(),
+        ShaftBody {
+            mass: 1.0,
+            tilt_inertia: 2e-3,
+        },
+        Loads::default(),
+    )
+    .unwrap();
+    let mut system = system;
+    let y0 = system.initial_state(&eq).unwrap();
+    let mut rk = Rosenbrock::new(&ROS34PW2, 1e-4, 1e-4, None, &system, 0.0, &y0).unwrap();
+    let (t_start, t_end, dt) = (2e-3, 5e-3, 1e-5);
+    let l = model.layout();
+    let mut own = vec![0.0; l.len()];
+    let mut sample = vec![0.0; y0.len()];
+    let mut contacts = vec![rolldyn::dynamics::ContactSample::default(); l.balls];
+    let mut axial = [0.0; 2];
+    let mut count = 0usize;
+    let mut next = t_start;
+    let start = system.energy_balance(0.0, &y0).unwrap();
+    while rk.t() < t_end {
+        rk.step(&mut system, t_end).unwrap();
+        while next <= rk.t() {
+            rk.interpolate(next, &mut sample);
+            for (i, a) in axial.iter_mut().enumerate() {
+                system.bearing_state(i, &sample, &mut own);
+                system.bearing(i).contact_samples(next, &own, &mut contacts);
+                // The balls' axial push on the inner ring: Σ Q_i sin α_i.
+                *a += contacts
+                    .iter()
+                    .map(|c| c.inner.load * c.inner.angle.sin())
+                    .sum::<f64>();
+            }
+            count += 1;
+            next += dt;
+        }
+    }
+    let mean = axial.map(|a| a / count as f64);
+    let end = system.energy_balance(rk.t(), rk.y()).unwrap();
+    let balance = (end.work - end.dissipated) - (end.mechanical - start.mechanical);
+    eprintln!(
+        "7008C pair at {:.0} rpm: quasi-static preload {preload:.2} N, Σ Q_i sin α_i {bracket:?} N (outer, inner control), dynamic {:.2} / {:.2} N; energy balance {balance:.3e} J of {:.3e} J dissipated; {} steps",
+        speed * 60.0 / std::f64::consts::TAU,
+        mean[0],
+        mean[1],
+        end.dissipated,
+        rk.stats().steps
+    );
+    assert!(rel(mean[0], mean[1]) < 1e-3, "{mean:?}");
+    let (lo, hi) = (bracket[0].min(bracket[1]), bracket[0].max(bracket[1]));
+    assert!(
+        lo <= mean[0] && mean[0] <= hi,
+        "{mean:?} outside {bracket:?}"
+    );
+    assert!(balance.abs() < 1e-3 * end.dissipated, "{balance}");
+}
