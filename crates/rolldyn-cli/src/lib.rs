@@ -19,6 +19,7 @@ pub mod quasistatic_sweep;
 pub mod recorder;
 pub mod report;
 pub mod run;
+pub mod run_set;
 pub mod run_stats;
 pub mod run_summary;
 pub mod run_sweep;

@@ -405,6 +405,54 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 verify,
                 ..Default::default()
             };
+            if case.bearing_set().is_some() {
+                if with_report {
+                    return Err(bad_arg(
+                        "--report",
+                        "",
+                        "the HTML report shows one bearing's run; a bearing set's run writes its time series and summary only",
+                    ));
+                }
+                let summary = rolldyn_cli::run_set::run(&record, &case, dir, &options)?;
+                let mut text = format!(
+                    "{}: {} set, simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS); energy balance error {:.2e}\n",
+                    summary.status,
+                    summary.kind,
+                    summary.simulated_time_s,
+                    summary.requested_duration_s,
+                    summary.wall_time_s,
+                    summary.integrator,
+                    summary.steps,
+                    summary.rejected_steps,
+                    summary.rhs_evaluations,
+                    summary.energy_balance_relative_error,
+                );
+                for (i, b) in summary.bearings.iter().enumerate() {
+                    text += &format!(
+                        "  bearing {i} ({}, {:+.1} mm): axial load {:.2} N (quasi-static {:.2} N), cage {:.1} rpm, largest contact loads {:.1} / {:.1} N\n",
+                        b.orientation,
+                        b.position_m * 1e3,
+                        b.mean_axial_load_n,
+                        b.quasistatic_axial_load_n,
+                        b.mean_cage_speed_rpm,
+                        b.largest_inner_load_n,
+                        b.largest_outer_load_n
+                    );
+                }
+                text += &format!(
+                    "wrote {output}/timeseries.parquet ({} samples) and {output}/summary.json\n",
+                    summary.samples
+                );
+                emit(&text)?;
+                return match summary.status {
+                    "failed" => Err(Failure::Model(format!(
+                        "{}; the files hold the run up to t = {:.6} s",
+                        summary.error.unwrap_or_default(),
+                        summary.simulated_time_s
+                    ))),
+                    _ => Ok(()),
+                };
+            }
             let summary = run::run_case(&record, &case, dir, &options)?;
             let text = format!(
                 "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS, {} Jacobians costing {} RHS, {} factorizations)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e} (accuracy {})\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",

@@ -246,6 +246,25 @@ impl Channels {
         row: &mut Vec<f64>,
         contacts: &mut [ContactSample],
     ) {
+        self.fill(model, t, y, row, contacts);
+        self.sink(row);
+    }
+
+    /// The derivative of the last filled row's state (its rings'
+    /// accelerations).
+    pub(crate) fn derivative(&self) -> &[f64] {
+        &self.derivative
+    }
+
+    /// A sample's row of every channel, not yet recorded ([`Self::sink`]).
+    pub(crate) fn fill(
+        &mut self,
+        model: &BearingModel,
+        t: f64,
+        y: &[f64],
+        row: &mut Vec<f64>,
+        contacts: &mut [ContactSample],
+    ) {
         let l = model.layout();
         let (c, r) = (l.cage(), l.ring());
         let (drive, dissipated) = model.work(y);
@@ -349,11 +368,22 @@ impl Channels {
                 row.extend_from_slice(&[c.inner.asperity_share, c.outer.asperity_share]);
             }
         }
-        self.sink(row);
+    }
+
+    /// The recorded channels of `row` (as [`Self::sink`] writes them).
+    pub(crate) fn project<'a>(&'a mut self, row: &'a [f64]) -> &'a [f64] {
+        match &self.selected {
+            None => row,
+            Some(selected) => {
+                self.projected.clear();
+                self.projected.extend(selected.iter().map(|&i| row[i]));
+                &self.projected
+            }
+        }
     }
 
     /// A recorded row: into the statistics and the time series.
-    fn sink(&mut self, row: &[f64]) {
+    pub(crate) fn sink(&mut self, row: &[f64]) {
         self.stats.push(row);
         let recorded = match &self.selected {
             None => row,

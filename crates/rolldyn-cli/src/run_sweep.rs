@@ -278,6 +278,16 @@ pub fn command(
     }
     case.overrides.overrides()?;
     let (source, text) = case.read()?;
+    if let Some(set) = case
+        .overrides
+        .load_text(&source, text.as_deref())?
+        .bearing_set()
+    {
+        return Err(Failure::BadInput(format!(
+            "arrangement.kind: \"{}\": a bearing set runs one case at a time (`rolldyn run`, no sweeps yet); its quasi-static solution sweeps (`rolldyn quasistatic --sweep`, docs/systems.md)",
+            rolldyn_case::case::kind_name(set.kind)
+        )));
+    }
     let grid = match sampling {
         Some(s) => sample(&case.overrides, sweeps, s)?,
         None => grid(&case.overrides, &grid_sweeps),

@@ -460,7 +460,7 @@ fn errors_name_the_key() {
     }
     // Analyses of one bearing refuse a set, naming the key.
     let case = pair("kind = \"back_to_back\"\npreload = \"100 N\"");
-    for args in [["run", "-"], ["power", "-"]] {
+    for args in [["power", "-"]] {
         let o = rolldyn(&args, Some(&case));
         assert_eq!(o.status.code(), Some(2), "{args:?}");
         assert!(
@@ -565,6 +565,133 @@ fn thermal_preload_of_a_pair() {
         text.contains("preload at speed") && text.contains("axial load N (operating)"),
         "{text}"
     );
+}
+
+/// `rolldyn run` of a pair: both bearings' dynamics on the shaft, the
+/// series with each bearing's channels and the shaft's, the summary's
+/// keys, the preload kept near the quasi-static one, the energy balance
+/// closed; what a set's run refuses.
+#[test]
+fn dynamic_run_of_a_pair() {
+    let case = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
+    let dir = temp_dir("set-run");
+    let out = dir.join("run");
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--axial-load",
+            "0 N",
+            "--duration",
+            "4 ms",
+            "--set",
+            "output.sample_rate=\"5 kHz\"",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        Some(&case),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("back_to_back set"), "{}", stdout(&o));
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(
+        keys(&v),
+        [
+            "bearings",
+            "dissipated_energy_j",
+            "drive_work_j",
+            "energy_balance_relative_error",
+            "error",
+            "integrator",
+            "kind",
+            "mechanical_energy_change_j",
+            "mounting_preload_n",
+            "rejected_steps",
+            "relative_tolerance",
+            "requested_duration_s",
+            "rhs_evaluations",
+            "samples",
+            "simulated_time_s",
+            "status",
+            "steps",
+            "wall_time_s",
+        ]
+    );
+    assert_eq!(v["status"], "completed");
+    assert_eq!(v["samples"], 21);
+    assert!(v["energy_balance_relative_error"].as_f64().unwrap() < 1e-3);
+    let b = v["bearings"].as_array().unwrap();
+    assert_eq!(
+        keys(&b[0]),
+        [
+            "dissipated_energy_j",
+            "drive_work_j",
+            "largest_inner_load_n",
+            "largest_outer_load_n",
+            "mean_axial_load_n",
+            "mean_cage_speed_rpm",
+            "mean_inner_load_n",
+            "orientation",
+            "position_m",
+            "quasistatic_axial_load_n",
+        ]
+    );
+    let f = |b: &serde_json::Value, k: &str| b[k].as_f64().unwrap();
+    let (a0, a1, qs) = (
+        f(&b[0], "mean_axial_load_n"),
+        f(&b[1], "mean_axial_load_n"),
+        f(&b[0], "quasistatic_axial_load_n"),
+    );
+    assert!((a0 - a1).abs() < 1e-3 * a0, "{a0} {a1}");
+    assert!((a0 / qs - 1.0).abs() < 0.1, "{a0} vs {qs}");
+    let names = rolldyn_io::read_parquet(&out.join("timeseries.parquet"))
+        .unwrap()
+        .names()
+        .to_vec();
+    for name in [
+        "time_s",
+        "bearing0_cage_speed_rpm",
+        "bearing1_ball0_load_inner_n",
+        "bearing1_axial_load_n",
+        "shaft_x_m",
+        "mechanical_energy_j",
+    ] {
+        assert!(names.iter().any(|n| n == name), "{name}");
+    }
+    // What a set's run does not do yet.
+    for (flags, word) in [
+        (vec!["--report"], "--report"),
+        (vec!["--verify"], "--verify"),
+    ] {
+        let mut args = vec![
+            "run",
+            "-",
+            "--duration",
+            "1 ms",
+            "-o",
+            out.to_str().unwrap(),
+        ];
+        args.extend(flags);
+        let o = rolldyn(&args, Some(&case));
+        assert_eq!(o.status.code(), Some(2), "{word}");
+        assert!(stderr(&o).contains(word), "{}", stderr(&o));
+    }
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--sweep",
+            "speed=1000rpm,2000rpm",
+            "--duration",
+            "1 ms",
+            "-o",
+            dir.join("sweep").to_str().unwrap(),
+        ],
+        Some(&case),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("no sweeps"), "{}", stderr(&o));
 }
 
 /// Two 6206 on a rigid shaft 120 mm apart, a gear force of 4 kN at

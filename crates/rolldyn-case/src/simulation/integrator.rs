@@ -7,7 +7,7 @@
 use crate::Case;
 use crate::raw::IntegratorChoice;
 use rolldyn::cage::CageParameters;
-use rolldyn::dynamics::BearingModel;
+use rolldyn::integrate::OdeSystem;
 use rolldyn::integrate::tableau::{DOPRI5, RK4};
 use rolldyn::integrate::{
     DEFAULT_ENERGY_TOLERANCE, ExplicitRk, IntegrationError, ROS34PW2, Rosenbrock, Solver,
@@ -124,7 +124,7 @@ impl SolverSettings {
     }
 
     /// The integrator, started at t = 0 from `y0`.
-    pub fn build(&self, model: &BearingModel, y0: &[f64]) -> Result<Solver, IntegrationError> {
+    pub fn build(&self, model: &impl OdeSystem, y0: &[f64]) -> Result<Solver, IntegrationError> {
         let rtol = self
             .relative_tolerance
             .unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
@@ -159,7 +159,7 @@ impl SolverSettings {
     /// ROS34PW2 with the energy control, if on.
     fn stiff(
         &self,
-        model: &BearingModel,
+        model: &impl OdeSystem,
         y0: &[f64],
         rtol: f64,
         max_step: f64,
@@ -174,7 +174,7 @@ impl SolverSettings {
     /// DOPRI5 with the energy control, if on.
     fn explicit(
         &self,
-        model: &BearingModel,
+        model: &impl OdeSystem,
         y0: &[f64],
         rtol: f64,
         max_step: f64,

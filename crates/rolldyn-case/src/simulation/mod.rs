@@ -35,7 +35,7 @@ pub use integrator::{
     DEFAULT_MAX_STEP, DEFAULT_RELATIVE_TOLERANCE, DEFAULT_RK4_STEP, DEFAULT_STIFF_MAX_STEP,
     STEPS_PER_FILM_PERIOD, SolverSettings, stiff_max_step,
 };
-pub use sets::{BearingSet, SetThermal, ShaftBearingModel, ShaftModel};
+pub use sets::{BearingSet, SetSimulation, SetThermal, ShaftBearingModel, ShaftModel};
 pub use steady::{QuasiStatic, conditions, film_inputs, power_loss, thermal_steady_state};
 
 use crate::Case;
@@ -188,7 +188,7 @@ pub fn single_bearing(case: &Case, what: &str) -> Result<(), SimulationError> {
             key: "arrangement.kind".into(),
             value: Some(crate::case::kind_name(set.kind).into()),
             rule: format!(
-                "\"{}\": {what} models one bearing; of a bearing set only the quasi-static solution is available (`rolldyn quasistatic`, docs/systems.md)",
+                "\"{}\": {what} models one bearing; a bearing set has its quasi-static solution (`rolldyn quasistatic`), thermal steady state (`rolldyn thermal`) and a single run on the command line (`rolldyn run`, no sweeps; docs/systems.md)",
                 crate::case::kind_name(set.kind)
             ),
         })),

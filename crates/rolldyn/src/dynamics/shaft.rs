@@ -229,6 +229,54 @@ impl ShaftDynamics {
         gather(&self.bearings[i], self.ball_len, self.first_shaft, y, out);
     }
 
+    /// `v` (a shaft displacement, velocity or acceleration: x, y, z, θ_y,
+    /// θ_z) as bearing `i`'s inner ring sees it, M_i P_i v.
+    pub fn at_bearing(&self, i: usize, v: &[f64; 5]) -> [f64; 5] {
+        self.bearings[i].ring(v)
+    }
+
+    /// The load on bearing `i`'s inner ring from its balls (and an inner
+    /// guide land), in its own frame, from its derivative `dy` as its
+    /// right-hand side computes it on its gathered state \[N, N·m\].
+    pub fn ring_load(&self, i: usize, dy: &[f64]) -> [f64; 5] {
+        let r = self.bearings[i].model.layout().ring();
+        self.ring_load_from(&dy[r + 5..r + 10])
+    }
+
+    /// The shaft's acceleration (x, y, z, θ_y, θ_z) under the bearings'
+    /// ring loads `loads` (each in its own frame, [`Self::ring_load`]) and
+    /// the applied loads.
+    pub fn shaft_acceleration(&self, loads: &[[f64; 5]]) -> [f64; 5] {
+        let mut total = [0.0; 5];
+        for (b, f) in self.bearings.iter().zip(loads) {
+            total
+                .iter_mut()
+                .zip(b.to_shaft(f))
+                .for_each(|(t, v)| *t += v);
+        }
+        let state = [0.0; SHAFT_STATES];
+        let mut out = [0.0; SHAFT_STATES];
+        self.shaft_rhs(&state, &total, &mut out);
+        std::array::from_fn(|k| out[5 + k])
+    }
+
+    /// Bearing `i`'s mechanical energy without its inner ring's (the
+    /// shaft's) at time `t`, from its own-layout state `own` \[J\]: balls,
+    /// outer ring, cage, contacts, pockets, gravity.
+    pub fn bearing_energy(&self, i: usize, t: f64, own: &[f64]) -> f64 {
+        let model = &self.bearings[i].model;
+        let r = model.layout().ring();
+        // Its inner ring has unit mass and inertia (module doc).
+        let ring_kinetic = 0.5 * own[r + 5..r + 10].iter().map(|v| v * v).sum::<f64>();
+        model.energy(t, own).total() - ring_kinetic - self.gravity * own[r + 2]
+    }
+
+    /// The shaft's mechanical energy at system state `y` (kinetic, applied
+    /// loads' and gravity's potential) \[J\].
+    pub fn shaft_mechanical_energy(&self, y: &[f64]) -> f64 {
+        self.shaft_energy(&y[self.first_shaft..])
+    }
+
     /// The system's state at a quasi-static equilibrium of the same set
     /// (balls, cages, shaft displacement; velocities of rings zero).
     pub fn initial_state(&self, eq: &SystemEquilibrium) -> Result<Vec<f64>, InvalidParameter> {
@@ -284,7 +332,7 @@ impl ShaftDynamics {
 
     /// The ring load F_i from a bearing's computed inner-ring
     /// accelerations (unit mass and inertia, gravity along −z).
-    fn ring_load(&self, acceleration: &[f64]) -> [f64; 5] {
+    fn ring_load_from(&self, acceleration: &[f64]) -> [f64; 5] {
         let mut f: [f64; 5] = std::array::from_fn(|k| acceleration[k]);
         f[2] += self.gravity;
         f
@@ -390,7 +438,7 @@ impl OdeSystem for ShaftDynamics {
             dy[b.first_ball..b.first_ball + n].copy_from_slice(&work.dy[..n]);
             dy[b.first_border..b.first_border + len - r - 10]
                 .copy_from_slice(&work.dy[r + 10..len]);
-            let load = b.to_shaft(&self.ring_load(&work.dy[r + 5..r + 10]));
+            let load = b.to_shaft(&self.ring_load_from(&work.dy[r + 5..r + 10]));
             shaft_load.iter_mut().zip(load).for_each(|(s, f)| *s += f);
         }
         self.give(work);
@@ -497,18 +545,14 @@ impl OdeSystem for ShaftDynamics {
         let mut work = self.take();
         let s = self.first_shaft;
         let (mut done, mut dissipated, mut mechanical) = (0.0, 0.0, 0.0);
-        for b in &self.bearings {
-            let l = b.model.layout();
-            let len = l.len();
+        for (i, b) in self.bearings.iter().enumerate() {
+            let len = b.model.layout().len();
             self.bearing_state_into(b, y, &mut work.y[..len]);
             let own = &work.y[..len];
             let (w, d) = b.model.work(own);
             done += w;
             dissipated += d;
-            // Its inner ring's share (unit mass and inertia) is the shaft's.
-            let r = l.ring();
-            let ring_kinetic = 0.5 * own[r + 5..r + 10].iter().map(|v| v * v).sum::<f64>();
-            mechanical += b.model.energy(t, own).total() - ring_kinetic - self.gravity * own[r + 2];
+            mechanical += self.bearing_energy(i, t, own);
         }
         self.give(work);
         mechanical += self.shaft_energy(&y[s..]);
@@ -605,7 +649,7 @@ impl BlockSplit for ShaftDynamics {
                 .border_rhs(t, &work.y[..len], slot, &mut work.dy[r..len]);
             let at = b.first_border - start;
             dy_border[at..at + len - r - 10].copy_from_slice(&work.dy[r + 10..len]);
-            let load = b.to_shaft(&self.ring_load(&work.dy[r + 5..r + 10]));
+            let load = b.to_shaft(&self.ring_load_from(&work.dy[r + 5..r + 10]));
             shaft_load.iter_mut().zip(load).for_each(|(s, f)| *s += f);
         }
         self.give(work);

@@ -1,0 +1,325 @@
+//! `rolldyn run` of a bearing set (`[arrangement]`): every bearing's ball
+//! and cage dynamics on the rigid shaft (docs/systems.md, "Dynamics").
+//! Writes `DIR/run.json`, `DIR/timeseries.parquet` (each bearing's
+//! channels prefixed `bearing{i}_`, then the shaft's and the system's
+//! energy) as the run goes, and `DIR/summary.json` at the end (keys in
+//! docs/cli.md). No checkpoints: an interrupted run keeps its time series
+//! and summary, but is not resumed.
+
+use crate::Failure;
+use crate::checkpoint::{RECORD_FILE, RunRecord};
+use crate::recorder::Channels;
+use crate::run::{DEFAULT_SAMPLE_RATE, RunOptions, SERIES_DIR};
+use indicatif::{ProgressBar, ProgressStyle};
+use rolldyn::dynamics::ContactSample;
+use rolldyn::dynamics::shaft::ShaftDynamics;
+use rolldyn::integrate::{Integrator, RunEnd, Sampling, run_from};
+use rolldyn::quasistatic::system::Orientation;
+use rolldyn_case::Case;
+use rolldyn_case::case::{Preload, kind_name};
+use rolldyn_case::simulation::SetSimulation;
+use rolldyn_io::{SeriesWriter, TimeSeries, write_atomic};
+use serde::Serialize;
+use std::io::IsTerminal;
+use std::path::Path;
+use std::sync::atomic::Ordering;
+use std::time::Instant;
+
+/// The shaft's channels after the bearings' (name, unit).
+const SHAFT_CHANNELS: [(&str, &str); 8] = [
+    ("shaft_x_m", "m"),
+    ("shaft_y_m", "m"),
+    ("shaft_z_m", "m"),
+    ("shaft_tilt_y_rad", "rad"),
+    ("shaft_tilt_z_rad", "rad"),
+    ("drive_work_j", "J"),
+    ("dissipated_energy_j", "J"),
+    ("mechanical_energy_j", "J"),
+];
+
+/// One bearing in `summary.json`.
+#[derive(Serialize)]
+pub struct SetBearingSummary {
+    pub position_m: f64,
+    pub orientation: &'static str,
+    pub quasistatic_axial_load_n: f64,
+    pub mean_axial_load_n: f64,
+    pub mean_cage_speed_rpm: f64,
+    pub mean_inner_load_n: f64,
+    pub largest_inner_load_n: f64,
+    pub largest_outer_load_n: f64,
+    pub drive_work_j: f64,
+    pub dissipated_energy_j: f64,
+}
+
+/// `DIR/summary.json` of a set's run.
+#[derive(Serialize)]
+pub struct SetSummary {
+    pub status: &'static str,
+    pub error: Option<String>,
+    pub kind: &'static str,
+    pub mounting_preload_n: Option<f64>,
+    pub requested_duration_s: f64,
+    pub simulated_time_s: f64,
+    pub wall_time_s: f64,
+    pub integrator: &'static str,
+    pub relative_tolerance: Option<f64>,
+    pub steps: u64,
+    pub rejected_steps: u64,
+    pub rhs_evaluations: u64,
+    pub samples: u64,
+    pub drive_work_j: f64,
+    pub dissipated_energy_j: f64,
+    pub mechanical_energy_change_j: f64,
+    pub energy_balance_relative_error: f64,
+    pub bearings: Vec<SetBearingSummary>,
+}
+
+/// Index of the first recorded channel of `names` called `name`.
+fn index_of(series: &TimeSeries, name: &str) -> Option<usize> {
+    series.names().iter().position(|n| n == name)
+}
+
+/// Runs the set of `case` into `dir`.
+pub fn run(
+    record: &RunRecord,
+    case: &Case,
+    dir: &Path,
+    options: &RunOptions,
+) -> Result<SetSummary, Failure> {
+    let bad = Failure::BadInput;
+    if options.resume || options.verify {
+        return Err(bad(
+            "arrangement: a bearing set's run keeps no checkpoint and has no --verify yet; run it again with tighter solver.relative_tolerance to check it (docs/systems.md)".into(),
+        ));
+    }
+    let duration = case.duration.ok_or_else(|| {
+        bad("solver.duration: missing: give the simulated time (or --duration, e.g. --duration \"0.05 s\")".into())
+    })?;
+    let SetSimulation {
+        set,
+        mut system,
+        initial_state: y0,
+        settings,
+    } = SetSimulation::from_case(case)
+        .map_err(crate::simulation_failure)?
+        .ok_or_else(|| Failure::Internal("not a bearing set".into()))?;
+    let cold = set.solve().map_err(crate::simulation_failure)?;
+    let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
+    let count = system.bearing_count();
+    let mut channels: Vec<Channels> = (0..count)
+        .map(|i| {
+            Channels::new(
+                system.bearing(i),
+                case.power_per_ball,
+                [duration, sample_rate],
+                &case.output,
+            )
+        })
+        .collect();
+    // The combined series: time, each bearing's recorded channels but
+    // time, its axial load, then the shaft's.
+    let mut series = TimeSeries::default();
+    series.channel("time_s", "s");
+    for (i, c) in channels.iter().enumerate() {
+        for (name, unit) in c.recorded.names().iter().zip(c.recorded.units()).skip(1) {
+            series.channel(format!("bearing{i}_{name}"), unit.clone());
+        }
+        series.channel(format!("bearing{i}_axial_load_n"), "N");
+    }
+    for (name, unit) in SHAFT_CHANNELS {
+        series.channel(name, unit);
+    }
+    let patch = {
+        let s = &channels[0].series;
+        [
+            "inner_ring_acceleration_x_m_s2",
+            "inner_ring_acceleration_y_m_s2",
+            "inner_ring_acceleration_z_m_s2",
+            "mechanical_energy_j",
+        ]
+        .map(|name| index_of(s, name))
+    };
+    let mut solver = settings
+        .build(&system, &y0)
+        .map_err(|e| bad(e.to_string()))?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| bad(format!("cannot create {}: {e}", dir.display())))?;
+    let _ = std::fs::remove_file(dir.join(crate::checkpoint::CHECKPOINT_FILE));
+    let text = record.to_json().map_err(Failure::Internal)?;
+    write_atomic(&dir.join(RECORD_FILE), text.as_bytes()).map_err(|e| bad(e.to_string()))?;
+    let metadata = [
+        ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
+        ("case", record.source.clone()),
+        ("title", case.title.clone().unwrap_or_default()),
+    ];
+    let mut writer = SeriesWriter::create(
+        &dir.join(SERIES_DIR),
+        &series,
+        &metadata,
+        case.output.float32,
+    )
+    .map_err(|e| bad(e.to_string()))?;
+    let stop = options.stop_flag();
+    let bar = (!options.quiet && std::io::stderr().is_terminal()).then(|| {
+        let bar = ProgressBar::new(1000);
+        bar.set_style(
+            ProgressStyle::with_template(
+                "{spinner} [{elapsed_precise}] {wide_bar} {msg} ETA {eta}",
+            )
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+        );
+        bar
+    });
+    let l = system.bearing(0).layout();
+    let mut own = vec![0.0; l.len()];
+    let mut rows = vec![Vec::with_capacity(channels[0].series.width()); count];
+    let mut contacts = vec![ContactSample::default(); l.balls];
+    let mut combined = Vec::with_capacity(series.width());
+    let mut loads = vec![[0.0; 5]; count];
+    let mut axial_sums = vec![0.0; count];
+    let mut samples = 0u64;
+    let mut write_error = None;
+    let start = Instant::now();
+    let mut last_draw = 0.0;
+    let balance0 =
+        rolldyn::integrate::OdeSystem::energy_balance(&system, 0.0, &y0).unwrap_or_default();
+    let report = run_from(
+        &mut system,
+        &mut solver,
+        duration,
+        Sampling {
+            t0: 0.0,
+            rate: sample_rate,
+            next: 0,
+        },
+        &stop,
+        |s: &ShaftDynamics, t, y| {
+            for (i, (c, row)) in channels.iter_mut().zip(&mut rows).enumerate() {
+                s.bearing_state(i, y, &mut own);
+                c.fill(s.bearing(i), t, &own, row, &mut contacts);
+                loads[i] = s.ring_load(i, c.derivative());
+                if let Some(k) = patch[3] {
+                    row[k] = s.bearing_energy(i, t, &own);
+                }
+            }
+            let acceleration = s.shaft_acceleration(&loads);
+            combined.clear();
+            combined.push(t);
+            for (i, (c, row)) in channels.iter_mut().zip(&mut rows).enumerate() {
+                let ring = s.at_bearing(i, &acceleration);
+                for (k, a) in patch[..3].iter().zip(ring) {
+                    if let Some(k) = k {
+                        row[*k] = a;
+                    }
+                }
+                c.sink(row);
+                combined.extend_from_slice(&c.project(row)[1..]);
+                // The bearing's balls push its ring back from its loaded
+                // side: the axial load it carries is −F_x.
+                combined.push(-loads[i][0]);
+                axial_sums[i] += -loads[i][0];
+            }
+            let sh = s.shaft();
+            combined.extend_from_slice(&y[sh..sh + 5]);
+            let b = rolldyn::integrate::OdeSystem::energy_balance(s, t, y).unwrap_or_default();
+            combined.extend_from_slice(&[b.work, b.dissipated, b.mechanical]);
+            samples += 1;
+            if write_error.is_none() {
+                write_error = writer.push(&combined).err();
+                if write_error.is_some() {
+                    stop.store(true, Ordering::Relaxed);
+                }
+            }
+        },
+        |_, s, _| {
+            let t = s.t();
+            if t - last_draw >= duration / 1000.0 {
+                last_draw = t;
+                if let Some(bar) = &bar {
+                    bar.set_position((1000.0 * t / duration) as u64);
+                    bar.set_message(format!("t = {t:.4} s"));
+                }
+                if let Some(progress) = &options.progress {
+                    progress.store((t / duration).to_bits(), Ordering::Relaxed);
+                }
+            }
+        },
+    );
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    writer.sync().map_err(|e| bad(e.to_string()))?;
+    if let Some(e) = write_error {
+        return Err(bad(format!(
+            "{e}; the run stopped at t = {:.6} s",
+            solver.t()
+        )));
+    }
+    let end = rolldyn::integrate::OdeSystem::energy_balance(&system, solver.t(), solver.y())
+        .unwrap_or_default();
+    let change = end.mechanical - balance0.mechanical;
+    let stats = solver.stats();
+    let (status, error) = match &report.end {
+        RunEnd::Completed => ("completed", None),
+        RunEnd::Interrupted { .. } => ("interrupted", None),
+        RunEnd::Failed { error } => ("failed", Some(error.to_string())),
+    };
+    let summary = SetSummary {
+        status,
+        error,
+        kind: kind_name(set.arrangement.kind),
+        mounting_preload_n: match set.arrangement.preload {
+            Preload::Force(f) => Some(f),
+            _ => None,
+        },
+        requested_duration_s: duration,
+        simulated_time_s: solver.t(),
+        wall_time_s: start.elapsed().as_secs_f64(),
+        integrator: settings.integrator,
+        relative_tolerance: settings.relative_tolerance,
+        steps: stats.steps,
+        rejected_steps: stats.rejected_steps,
+        rhs_evaluations: stats.rhs_evaluations,
+        samples,
+        drive_work_j: end.work,
+        dissipated_energy_j: end.dissipated,
+        mechanical_energy_change_j: change,
+        energy_balance_relative_error: ((end.work - end.dissipated) - change).abs()
+            / end
+                .work
+                .abs()
+                .max(end.dissipated.abs())
+                .max(change.abs())
+                .max(f64::MIN_POSITIVE),
+        bearings: channels
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                let m = &set.system.bearings[i];
+                let w = c.stats.window();
+                SetBearingSummary {
+                    position_m: m.position,
+                    orientation: match m.orientation {
+                        Orientation::Forward => "forward",
+                        Orientation::Reversed => "reversed",
+                    },
+                    quasistatic_axial_load_n: cold.bearings[i]
+                        .as_ref()
+                        .map_or(0.0, |e| e.reaction[0]),
+                    mean_axial_load_n: axial_sums[i] / samples.max(1) as f64,
+                    mean_cage_speed_rpm: w.mean("cage_speed_rpm"),
+                    mean_inner_load_n: w.loaded_mean("load_inner_n"),
+                    largest_inner_load_n: w.largest_load("inner"),
+                    largest_outer_load_n: w.largest_load("outer"),
+                    drive_work_j: c.stats.last("drive_work_j"),
+                    dissipated_energy_j: c.stats.last("dissipated_energy_j"),
+                }
+            })
+            .collect(),
+    };
+    let json = crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
+    write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes())
+        .map_err(|e| bad(e.to_string()))?;
+    Ok(summary)
+}
