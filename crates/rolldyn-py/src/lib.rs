@@ -444,11 +444,16 @@ fn run(
     let record = RunRecord::new(source, text, overrides, force);
     let (options, stop, fraction) = run_options(force, verify);
     let dir = Path::new(directory);
-    let (output, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
-        run_case_series(&record, &case, dir, &options)
+    // A bearing set runs on its shaft (its own summary, docs/cli.md).
+    let set = case.bearing_set().is_some();
+    let (summary, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
+        if set {
+            rolldyn_cli::run_set::run(&record, &case, dir, &options).and_then(|s| json_value(&s))
+        } else {
+            run_case_series(&record, &case, dir, &options).and_then(|o| json_value(&o.summary))
+        }
     })?;
-    let output = output.map_err(to_py)?;
-    Ok((json_text(&output.summary)?, interrupted))
+    Ok((summary.map_err(to_py)?, interrupted))
 }
 
 /// Opens a run directory: its summary (JSON); checks that its time series

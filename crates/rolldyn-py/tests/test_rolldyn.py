@@ -415,6 +415,17 @@ def test_power_and_thermal_equal_the_cli():
         rolldyn.thermal(case, transient="-1 s")
 
 
+def test_run_of_a_bearing_set(tmp_path):
+    pair = REPO / "examples" / "spindle_pair" / "case.toml"
+    case = rolldyn.Case.load(pair).set("output.sample_rate", "5 kHz")
+    result = rolldyn.run(case, "2 ms", output=tmp_path / "pair")
+    assert result.summary["kind"] == "back_to_back"
+    assert result.summary["status"] == "completed"
+    assert len(result.summary["bearings"]) == 2
+    assert result["bearing1_axial_load_n"].unit == "N"
+    assert len(result["shaft_x_m"]) == 11
+
+
 def test_thermal_of_a_bearing_set_equals_the_cli():
     pair = REPO / "examples" / "spindle_pair" / "case.toml"
     got = rolldyn.thermal(rolldyn.Case.load(pair))

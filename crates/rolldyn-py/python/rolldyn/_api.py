@@ -444,7 +444,8 @@ def run(case: Optional[Case] = None, duration: Optional[str] = None, *,
     do. ``summary["accuracy"]`` says how accurate the run is; with
     ``verify=True`` the case also runs at ten times tighter tolerances
     (``--verify``) and ``summary["accuracy"]["verify"]`` holds the
-    changes."""
+    changes. A case with ``[arrangement]`` runs its bearings on their
+    shaft (the set's summary and channels, docs/cli.md; no ``verify``)."""
     case = _with_duration(_case(case), duration)
     with _Directory(output) as d:
         summary, interrupted = _rolldyn.run(
