@@ -203,7 +203,7 @@ pub fn run(
                     row[k] = s.bearing_energy(i, t, &own);
                 }
             }
-            let acceleration = s.shaft_acceleration(&loads);
+            let acceleration = s.shaft_acceleration(t, &loads);
             combined.clear();
             combined.push(t);
             for (i, (c, row)) in channels.iter_mut().zip(&mut rows).enumerate() {

@@ -451,6 +451,16 @@ fn errors_name_the_key() {
             "must be positive",
         ),
         ("kind = \"diagonal\"", "arrangement.kind", "unknown variant"),
+        (
+            "kind = \"back_to_back\"\nunbalance = \"-5 g.mm\"",
+            "arrangement.unbalance",
+            "must lie in [0",
+        ),
+        (
+            "kind = \"back_to_back\"\nunbalance_position = \"5 mm\"",
+            "arrangement.unbalance_position",
+            "not given",
+        ),
     ] {
         let case = pair(arrangement);
         let o = rolldyn(&["quasistatic", "-"], Some(&case));

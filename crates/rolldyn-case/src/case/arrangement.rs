@@ -32,6 +32,9 @@ pub struct Arrangement {
     pub preload: Preload,
     /// Distance between the pitch planes \[m\].
     pub spacing: f64,
+    /// A rotating unbalance on the shaft: mass × radius \[kg·m\] and its
+    /// position from the middle between the bearings \[m\] (dynamics only).
+    pub unbalance: Option<(f64, f64)>,
 }
 
 /// The raw kind as the engine's.
@@ -53,6 +56,10 @@ pub fn kind_name(kind: SetKind) -> &'static str {
         SetKind::Tandem => "tandem",
     }
 }
+
+/// Largest unbalance accepted \[kg·m\]: 10 kg·mm, far beyond any balance
+/// grade of a bearing-sized rotor (a typo guard).
+pub const MAX_UNBALANCE: f64 = 1e-2;
 
 pub(super) fn arrangement(
     raw: &Option<RawArrangement>,
@@ -119,10 +126,39 @@ pub(super) fn arrangement(
             }
         },
     };
+    let amount = checked("arrangement.unbalance", &raw.unbalance, |v| {
+        if v >= 0.0 && v <= MAX_UNBALANCE {
+            Ok(())
+        } else {
+            Err(format!("must lie in [0, {MAX_UNBALANCE}] kg·m"))
+        }
+    })?;
+    let position = checked(
+        "arrangement.unbalance_position",
+        &raw.unbalance_position,
+        |v| {
+            if v.abs() <= super::MAX_SHAFT_POSITION {
+                Ok(())
+            } else {
+                Err(format!(
+                    "must lie within ±{} m of the middle between the bearings",
+                    super::MAX_SHAFT_POSITION
+                ))
+            }
+        },
+    )?;
+    if position.is_some() && amount.is_none() {
+        return Err(Invalid::new(
+            "arrangement.unbalance_position",
+            raw.unbalance_position.as_ref().map(|q| q.to_string()),
+            "places arrangement.unbalance, which is not given",
+        ));
+    }
     Ok(Some(Arrangement {
         kind,
         preload,
         spacing,
+        unbalance: amount.map(|a| (a, position.unwrap_or(0.0))),
     }))
 }
 

@@ -37,4 +37,11 @@ pub struct RawArrangement {
     /// Distance between the bearings' pitch planes (default: the bearing
     /// width, i.e. the rings side by side).
     pub spacing: Option<Quantity<Length>>,
+    /// A rotating unbalance on the shaft, mass × radius (e.g. "50 g.mm"):
+    /// its force m_u e ω² turns with the shaft in `rolldyn run` (the
+    /// quasi-static solution does not see it).
+    pub unbalance: Option<Quantity<Unbalance>>,
+    /// Where the unbalance sits, from the middle between the bearings
+    /// along the shaft's +x (default 0).
+    pub unbalance_position: Option<Quantity<Length>>,
 }

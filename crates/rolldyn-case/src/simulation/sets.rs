@@ -7,7 +7,7 @@
 use super::{QuasiStatic, SimulationError};
 use crate::Case;
 use crate::case::{Arrangement, Invalid, Preload};
-use rolldyn::dynamics::shaft::{ShaftBody, ShaftDynamics};
+use rolldyn::dynamics::shaft::{ShaftBody, ShaftDynamics, Unbalance};
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::SolverOptions;
 use rolldyn::quasistatic::system::{
@@ -194,7 +194,8 @@ impl SetSimulation {
     /// The case's set in motion, or None when the case has one bearing.
     /// The shaft carries each bearing's inner ring (`inner_ring.mass` and
     /// its tilt inertia, at the bearing's pitch plane); the case's loads
-    /// act on it at the reference point, constant.
+    /// act on it at the reference point, constant, and
+    /// `arrangement.unbalance` turns with it.
     pub fn from_case(case: &Case) -> Result<Option<Self>, SimulationError> {
         let Some(set) = BearingSet::from_case(case)? else {
             return Ok(None);
@@ -244,7 +245,7 @@ impl SetSimulation {
                 .map(|b| ring_tilt + ring_mass * b.position * b.position)
                 .sum(),
         };
-        let system = ShaftDynamics::new(
+        let mut system = ShaftDynamics::new(
             set.system
                 .bearings
                 .iter()
@@ -253,6 +254,9 @@ impl SetSimulation {
             body,
             case.loads,
         )?;
+        if let Some((amount, position)) = set.arrangement.unbalance {
+            system = system.with_unbalance(Unbalance { amount, position })?;
+        }
         let equilibrium = set.solve().map_err(|e| SimulationError::Start {
             start: "jones_harris",
             reason: format!("the set's quasi-static equilibrium: {e}"),

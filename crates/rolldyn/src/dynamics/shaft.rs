@@ -16,7 +16,10 @@
 //! ```
 //!
 //! the rotation about the axis prescribed (every bearing's inner-ring
-//! speed). A mirrored bearing's own frame is the reflection x → −x of the
+//! speed, constant). A rotating unbalance U = m_u e at x_u adds
+//! U ω² (cos ωt, sin ωt) along (y, z) at x_u, with the moments of that
+//! force about the reference point (θ_y: −x_u F_z, θ_z: x_u F_y); its work
+//! is accumulated in one more shaft state for the energy balance. A mirrored bearing's own frame is the reflection x → −x of the
 //! shaft's: positions and forces along x change sign, and so do the tilts
 //! and moments about y and z (pseudovectors); the spin about x does not,
 //! so every bearing turns with the shaft's speed in its own frame.
@@ -43,6 +46,17 @@ use std::sync::Mutex;
 
 /// Shaft states: displacement (x, y, z, θ_y, θ_z) and velocity.
 pub const SHAFT_STATES: usize = 10;
+/// The shaft's states with the work of its rotating loads (the last).
+const SHAFT_LEN: usize = SHAFT_STATES + 1;
+
+/// A rotating unbalance on the shaft.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Unbalance {
+    /// Mass times eccentricity m_u e \[kg·m\].
+    pub amount: f64,
+    /// Axial position on the shaft from the reference point \[m\].
+    pub position: f64,
+}
 
 /// The rigid shaft's inertia.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -93,6 +107,7 @@ pub struct ShaftDynamics {
     bearings: Vec<Mounted>,
     body: ShaftBody,
     loads: Loads,
+    unbalance: Option<Unbalance>,
     gravity: f64,
     ball_len: usize,
     first_shaft: usize,
@@ -108,6 +123,7 @@ impl Clone for ShaftDynamics {
             bearings: self.bearings.clone(),
             body: self.body,
             loads: self.loads,
+            unbalance: self.unbalance,
             gravity: self.gravity,
             ball_len: self.ball_len,
             first_shaft: self.first_shaft,
@@ -200,12 +216,33 @@ impl ShaftDynamics {
             bearings: mounted,
             body,
             loads,
+            unbalance: None,
             gravity,
             ball_len,
             first_shaft: first_border,
-            dimension: first_border + SHAFT_STATES,
+            dimension: first_border + SHAFT_LEN,
             pool: Mutex::new(Vec::new()),
         })
+    }
+
+    /// With a rotating unbalance (at constant speed).
+    pub fn with_unbalance(mut self, unbalance: Unbalance) -> Result<Self, InvalidParameter> {
+        if !(unbalance.amount.is_finite() && unbalance.amount >= 0.0) {
+            return Err(InvalidParameter::new(
+                "unbalance",
+                unbalance.amount,
+                "must be a finite, non-negative mass times radius",
+            ));
+        }
+        if !unbalance.position.is_finite() {
+            return Err(InvalidParameter::new(
+                "unbalance.position",
+                unbalance.position,
+                "must be finite",
+            ));
+        }
+        self.unbalance = Some(unbalance);
+        Ok(self)
     }
 
     /// Number of bearings.
@@ -243,20 +280,20 @@ impl ShaftDynamics {
         self.ring_load_from(&dy[r + 5..r + 10])
     }
 
-    /// The shaft's acceleration (x, y, z, θ_y, θ_z) under the bearings'
-    /// ring loads `loads` (each in its own frame, [`Self::ring_load`]) and
-    /// the applied loads.
-    pub fn shaft_acceleration(&self, loads: &[[f64; 5]]) -> [f64; 5] {
+    /// The shaft's acceleration (x, y, z, θ_y, θ_z) at time `t` under the
+    /// bearings' ring loads `loads` (each in its own frame,
+    /// [`Self::ring_load`]), the applied loads and the unbalance.
+    pub fn shaft_acceleration(&self, t: f64, loads: &[[f64; 5]]) -> [f64; 5] {
         let mut total = [0.0; 5];
         for (b, f) in self.bearings.iter().zip(loads) {
             total
                 .iter_mut()
                 .zip(b.to_shaft(f))
-                .for_each(|(t, v)| *t += v);
+                .for_each(|(sum, v)| *sum += v);
         }
-        let state = [0.0; SHAFT_STATES];
-        let mut out = [0.0; SHAFT_STATES];
-        self.shaft_rhs(&state, &total, &mut out);
+        let state = [0.0; SHAFT_LEN];
+        let mut out = [0.0; SHAFT_LEN];
+        self.shaft_rhs(t, &state, &total, &mut out);
         std::array::from_fn(|k| out[5 + k])
     }
 
@@ -338,9 +375,24 @@ impl ShaftDynamics {
         f
     }
 
-    /// The shaft's derivatives `out` (10) from its `state` (10) and the
-    /// summed bearing loads on it.
-    fn shaft_rhs(&self, state: &[f64], load: &[f64; 5], out: &mut [f64]) {
+    /// The unbalance's generalized force on the shaft at time `t` (x, y,
+    /// z, θ_y, θ_z; zero without one).
+    fn rotating_load(&self, t: f64) -> [f64; 5] {
+        let Some(u) = self.unbalance else {
+            return [0.0; 5];
+        };
+        let speed = &self.bearings[0].model.parameters().speed;
+        let (omega, angle) = (speed.speed_at(t), speed.angle_at(t));
+        let (fy, fz) = (
+            u.amount * omega * omega * angle.cos(),
+            u.amount * omega * omega * angle.sin(),
+        );
+        [0.0, fy, fz, -u.position * fz, u.position * fy]
+    }
+
+    /// The shaft's derivatives `out` (its states with the rotating loads'
+    /// work) from its `state` and the summed bearing loads on it at `t`.
+    fn shaft_rhs(&self, t: f64, state: &[f64], load: &[f64; 5], out: &mut [f64]) {
         out[..5].copy_from_slice(&state[5..SHAFT_STATES]);
         let applied = [
             self.loads.force[0],
@@ -349,15 +401,17 @@ impl ShaftDynamics {
             self.loads.moment[0],
             self.loads.moment[1],
         ];
+        let rotating = self.rotating_load(t);
         for k in 0..5 {
             let inertia = if k < 3 {
                 self.body.mass
             } else {
                 self.body.tilt_inertia
             };
-            out[5 + k] = (load[k] + applied[k]) / inertia;
+            out[5 + k] = (load[k] + applied[k] + rotating[k]) / inertia;
         }
         out[7] -= self.gravity;
+        out[SHAFT_STATES] = (0..5).map(|k| rotating[k] * state[5 + k]).sum();
     }
 
     /// The applied loads' potential and gravity's at shaft `state` plus
@@ -443,7 +497,7 @@ impl OdeSystem for ShaftDynamics {
         }
         self.give(work);
         let sh = self.first_shaft;
-        self.shaft_rhs(&y[sh..], &shaft_load, &mut dy[sh..]);
+        self.shaft_rhs(t, &y[sh..], &shaft_load, &mut dy[sh..]);
     }
 
     fn blocks(&self) -> Option<&dyn BlockSplit> {
@@ -462,7 +516,10 @@ impl OdeSystem for ShaftDynamics {
             }
             // The shaft's scales are the inner ring's.
             let r = b.model.layout().ring();
-            scale[self.first_shaft..].copy_from_slice(&own[r..r + 10]);
+            scale[self.first_shaft..self.first_shaft + SHAFT_STATES]
+                .copy_from_slice(&own[r..r + 10]);
+            // As a bearing's energy accumulators.
+            scale[self.first_shaft + SHAFT_STATES] = own[b.model.layout().work()];
         }
     }
 
@@ -482,7 +539,7 @@ impl OdeSystem for ShaftDynamics {
 
     fn state_name(&self, index: usize) -> String {
         if index >= self.first_shaft {
-            const SHAFT: [&str; 10] = [
+            const SHAFT: [&str; SHAFT_LEN] = [
                 "axial position x",
                 "position y",
                 "position z",
@@ -493,6 +550,7 @@ impl OdeSystem for ShaftDynamics {
                 "velocity ż",
                 "tilt rate θ̇_y",
                 "tilt rate θ̇_z",
+                "work of the unbalance",
             ];
             return format!("shaft {}", SHAFT[index - self.first_shaft]);
         }
@@ -555,6 +613,7 @@ impl OdeSystem for ShaftDynamics {
             mechanical += self.bearing_energy(i, t, own);
         }
         self.give(work);
+        done += y[s + SHAFT_STATES];
         mechanical += self.shaft_energy(&y[s..]);
         Some(EnergyBalance {
             work: done,
@@ -654,7 +713,7 @@ impl BlockSplit for ShaftDynamics {
         }
         self.give(work);
         let s = self.first_shaft;
-        self.shaft_rhs(&y[s..], &shaft_load, &mut dy_border[s - start..]);
+        self.shaft_rhs(t, &y[s..], &shaft_load, &mut dy_border[s - start..]);
     }
 
     fn memo_len(&self) -> usize {
