@@ -127,7 +127,7 @@ pub(super) fn arrangement(
         },
     };
     let amount = checked("arrangement.unbalance", &raw.unbalance, |v| {
-        if v >= 0.0 && v <= MAX_UNBALANCE {
+        if (0.0..=MAX_UNBALANCE).contains(&v) {
             Ok(())
         } else {
             Err(format!("must lie in [0, {MAX_UNBALANCE}] kg·m"))
