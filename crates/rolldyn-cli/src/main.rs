@@ -405,7 +405,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 verify,
                 ..Default::default()
             };
-            if case.bearing_set().is_some() {
+            if case.bearing_set().is_some() || case.shaft.is_some() {
                 if with_report {
                     return Err(bad_arg(
                         "--report",
@@ -415,7 +415,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 }
                 let summary = rolldyn_cli::run_set::run(&record, &case, dir, &options)?;
                 let mut text = format!(
-                    "{}: {} set, simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS); energy balance error {:.2e}\n",
+                    "{}: {} system, simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS); energy balance error {:.2e}\n",
                     summary.status,
                     summary.kind,
                     summary.simulated_time_s,

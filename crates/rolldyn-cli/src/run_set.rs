@@ -1,5 +1,6 @@
-//! `rolldyn run` of a bearing set (`[arrangement]`): every bearing's ball
-//! and cage dynamics on the rigid shaft (docs/systems.md, "Dynamics").
+//! `rolldyn run` of bearings on a shaft (a matched set, `[arrangement]`, or
+//! a `[shaft]`): every bearing's ball and cage dynamics on the rigid shaft
+//! (docs/systems.md, "Dynamics").
 //! Writes `DIR/run.json`, `DIR/timeseries.parquet` (each bearing's
 //! channels prefixed `bearing{i}_`, then the shaft's and the system's
 //! energy) as the run goes, and `DIR/summary.json` at the end (keys in
@@ -16,7 +17,7 @@ use rolldyn::dynamics::shaft::ShaftDynamics;
 use rolldyn::integrate::{Integrator, RunEnd, Sampling, run_from};
 use rolldyn::quasistatic::system::Orientation;
 use rolldyn_case::Case;
-use rolldyn_case::case::{Preload, kind_name};
+use rolldyn_case::case::kind_name;
 use rolldyn_case::simulation::SetSimulation;
 use rolldyn_io::{SeriesWriter, TimeSeries, write_atomic};
 use serde::Serialize;
@@ -97,14 +98,16 @@ pub fn run(
         bad("solver.duration: missing: give the simulated time (or --duration, e.g. --duration \"0.05 s\")".into())
     })?;
     let SetSimulation {
-        set,
+        kind,
+        mounting_preload,
+        mounted,
+        quasistatic: cold,
         mut system,
         initial_state: y0,
         settings,
     } = SetSimulation::from_case(case)
         .map_err(crate::simulation_failure)?
         .ok_or_else(|| Failure::Internal("not a bearing set".into()))?;
-    let cold = set.solve().map_err(crate::simulation_failure)?;
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
     let count = system.bearing_count();
     let mut channels: Vec<Channels> = (0..count)
@@ -268,11 +271,8 @@ pub fn run(
     let summary = SetSummary {
         status,
         error,
-        kind: kind_name(set.arrangement.kind),
-        mounting_preload_n: match set.arrangement.preload {
-            Preload::Force(f) => Some(f),
-            _ => None,
-        },
+        kind: kind.map_or("shaft", kind_name),
+        mounting_preload_n: mounting_preload,
         requested_duration_s: duration,
         simulated_time_s: solver.t(),
         wall_time_s: start.elapsed().as_secs_f64(),
@@ -296,7 +296,7 @@ pub fn run(
             .iter()
             .enumerate()
             .map(|(i, c)| {
-                let m = &set.system.bearings[i];
+                let m = &mounted[i];
                 let w = c.stats.window();
                 SetBearingSummary {
                     position_m: m.position,

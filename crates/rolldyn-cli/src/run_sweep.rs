@@ -278,14 +278,19 @@ pub fn command(
     }
     case.overrides.overrides()?;
     let (source, text) = case.read()?;
-    if let Some(set) = case
-        .overrides
-        .load_text(&source, text.as_deref())?
+    let loaded = case.overrides.load_text(&source, text.as_deref())?;
+    if let Some(key) = loaded
         .bearing_set()
+        .map(|set| {
+            format!(
+                "arrangement.kind: \"{}\"",
+                rolldyn_case::case::kind_name(set.kind)
+            )
+        })
+        .or(loaded.shaft.as_ref().map(|_| "shaft".to_string()))
     {
         return Err(Failure::BadInput(format!(
-            "arrangement.kind: \"{}\": a bearing set runs one case at a time (`rolldyn run`, no sweeps yet); its quasi-static solution sweeps (`rolldyn quasistatic --sweep`, docs/systems.md)",
-            rolldyn_case::case::kind_name(set.kind)
+            "{key}: bearings on a shaft run one case at a time (`rolldyn run`, no sweeps yet); their quasi-static solution sweeps (`rolldyn quasistatic --sweep`, docs/systems.md)"
         )));
     }
     let grid = match sampling {

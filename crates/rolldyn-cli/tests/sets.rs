@@ -600,7 +600,7 @@ fn dynamic_run_of_a_pair() {
         Some(&case),
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    assert!(stdout(&o).contains("back_to_back set"), "{}", stdout(&o));
+    assert!(stdout(&o).contains("back_to_back system"), "{}", stdout(&o));
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     assert_eq!(
@@ -888,7 +888,7 @@ fn shaft_errors_name_the_key() {
         assert_eq!(o.status.code(), Some(2), "{key}: {}", stderr(&o));
         assert!(stderr(&o).contains(key), "{key}: {}", stderr(&o));
     }
-    let o = rolldyn(&["run", "-", "--duration", "1 ms"], Some(&case));
+    let o = rolldyn(&["power", "-"], Some(&case));
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("shaft"), "{}", stderr(&o));
 }
@@ -946,6 +946,65 @@ fn fits_reduce_the_clearance_quasistatic_reports() {
         );
     }
     assert!(by_class["fits"]["housing_fit"].is_null());
+}
+
+/// `rolldyn run` of a `[shaft]`: two 6206 under a gear force, each with
+/// its dynamics; the bearings share the 300 N thrust as the quasi-static
+/// solution does (their sum balances it); a floating bearing is refused,
+/// naming its key.
+#[test]
+fn dynamic_run_of_a_shaft() {
+    let case = SHAFT.replace("ORIENTATION", "forward");
+    let dir = temp_dir("shaft-run");
+    let out = dir.join("run");
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "3 ms",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        Some(&case),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(v["kind"], "shaft");
+    assert!(v["mounting_preload_n"].is_null());
+    let b = v["bearings"].as_array().unwrap();
+    let f = |b: &serde_json::Value, k: &str| b[k].as_f64().unwrap();
+    let thrust: f64 = b.iter().map(|b| f(b, "mean_axial_load_n")).sum();
+    assert!((thrust - 300.0).abs() < 0.01 * 300.0, "{thrust}");
+    for bearing in b {
+        let (dynamic, quasistatic) = (
+            f(bearing, "mean_axial_load_n"),
+            f(bearing, "quasistatic_axial_load_n"),
+        );
+        assert!(
+            (dynamic / quasistatic - 1.0).abs() < 0.05,
+            "{dynamic} vs {quasistatic}"
+        );
+    }
+    let floating = case.replacen("orientation = \"forward\"", "axial = \"floating\"", 1);
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "1 ms",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        Some(&floating),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("shaft.bearings[1].axial"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 /// A locating and a floating bearing: the floating one carries no thrust,

@@ -445,7 +445,7 @@ fn run(
     let (options, stop, fraction) = run_options(force, verify);
     let dir = Path::new(directory);
     // A bearing set runs on its shaft (its own summary, docs/cli.md).
-    let set = case.bearing_set().is_some();
+    let set = case.bearing_set().is_some() || case.shaft.is_some();
     let (summary, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
         if set {
             rolldyn_cli::run_set::run(&record, &case, dir, &options).and_then(|s| json_value(&s))

@@ -28,6 +28,7 @@
 //! ```
 
 mod integrator;
+mod set_dynamics;
 mod sets;
 mod steady;
 
@@ -35,7 +36,8 @@ pub use integrator::{
     DEFAULT_MAX_STEP, DEFAULT_RELATIVE_TOLERANCE, DEFAULT_RK4_STEP, DEFAULT_STIFF_MAX_STEP,
     STEPS_PER_FILM_PERIOD, SolverSettings, stiff_max_step,
 };
-pub use sets::{BearingSet, SetSimulation, SetThermal, ShaftBearingModel, ShaftModel};
+pub use set_dynamics::SetSimulation;
+pub use sets::{BearingSet, SetThermal, ShaftBearingModel, ShaftModel};
 pub use steady::{QuasiStatic, conditions, film_inputs, power_loss, thermal_steady_state};
 
 use crate::Case;
@@ -179,7 +181,7 @@ pub fn single_bearing(case: &Case, what: &str) -> Result<(), SimulationError> {
             key: "shaft".into(),
             value: None,
             rule: format!(
-                "{what} models one bearing; of a shaft system only the quasi-static solution is available (`rolldyn quasistatic`, docs/systems.md)"
+                "{what} models one bearing; a shaft system has its quasi-static solution (`rolldyn quasistatic`) and a single run on the command line (`rolldyn run`, no sweeps; docs/systems.md)"
             ),
         }));
     }

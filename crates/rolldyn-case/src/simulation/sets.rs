@@ -7,7 +7,6 @@
 use super::{QuasiStatic, SimulationError};
 use crate::Case;
 use crate::case::{Arrangement, Invalid, Preload};
-use rolldyn::dynamics::shaft::{ShaftBody, ShaftDynamics, Unbalance};
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::SolverOptions;
 use rolldyn::quasistatic::system::{
@@ -172,107 +171,6 @@ impl BearingSet {
         Ok(self
             .system
             .lift_off_load(0.0, self.conditions.control, &self.options)?)
-    }
-}
-
-/// The dynamic model of a case's bearing set (docs/systems.md,
-/// "Dynamics"): every bearing's ball and cage dynamics on the rigid shaft,
-/// started from the set's quasi-static equilibrium at the case's speed and
-/// loads.
-pub struct SetSimulation {
-    /// The set (its mounting, preload and quasi-static solution).
-    pub set: BearingSet,
-    /// The bearings on the shaft.
-    pub system: ShaftDynamics,
-    /// The initial state.
-    pub initial_state: Vec<f64>,
-    /// The integrator and its tolerances.
-    pub settings: super::SolverSettings,
-}
-
-impl SetSimulation {
-    /// The case's set in motion, or None when the case has one bearing.
-    /// The shaft carries each bearing's inner ring (`inner_ring.mass` and
-    /// its tilt inertia, at the bearing's pitch plane); the case's loads
-    /// act on it at the reference point, constant, and
-    /// `arrangement.unbalance` turns with it.
-    pub fn from_case(case: &Case) -> Result<Option<Self>, SimulationError> {
-        let Some(set) = BearingSet::from_case(case)? else {
-            return Ok(None);
-        };
-        let refuse = |key: &str, rule: &str| {
-            Err(SimulationError::Case(Invalid {
-                key: key.into(),
-                value: None,
-                rule: format!(
-                    "{rule}: not available for a bearing set in motion (docs/systems.md)"
-                ),
-            }))
-        };
-        if case.load_profile.is_some() {
-            return refuse("operating.load_profile", "time-varying loads");
-        }
-        if case.thermal.run_coupling.is_some() {
-            return refuse(
-                "thermal.run_coupling",
-                "the thermal network coupled to the run",
-            );
-        }
-        if case.sensor.is_some() {
-            return refuse("sensor", "the sensor chain");
-        }
-        if case.start != crate::raw::StartChoice::JonesHarris {
-            return refuse(
-                "solver.start",
-                "a set starts from its quasi-static equilibrium (\"jones_harris\"); other starts",
-            );
-        }
-        let parameters = case.dynamics_parameters()?;
-        if parameters.speed.speed_at(0.0) != set.conditions.inner_speed {
-            return refuse("operating.speed", "a speed that changes over the run");
-        }
-        let (ring_mass, ring_tilt) = (
-            parameters.inner_ring_mass,
-            parameters.inner_ring_tilt_inertia,
-        );
-        let model = super::model(case, parameters)?;
-        let body = ShaftBody {
-            mass: ring_mass * set.system.bearings.len() as f64,
-            tilt_inertia: set
-                .system
-                .bearings
-                .iter()
-                .map(|b| ring_tilt + ring_mass * b.position * b.position)
-                .sum(),
-        };
-        let mut system = ShaftDynamics::new(
-            set.system
-                .bearings
-                .iter()
-                .map(|b| (model.clone(), b))
-                .collect(),
-            body,
-            case.loads,
-        )?;
-        if let Some((amount, position)) = set.arrangement.unbalance {
-            system = system.with_unbalance(Unbalance { amount, position })?;
-        }
-        let equilibrium = set.solve().map_err(|e| SimulationError::Start {
-            start: "jones_harris",
-            reason: format!("the set's quasi-static equilibrium: {e}"),
-        })?;
-        let initial_state = system.initial_state(&equilibrium)?;
-        let settings = super::SolverSettings::of(
-            case,
-            &model.parameters().cage,
-            case.bearing.geometry.ball_count,
-        );
-        Ok(Some(Self {
-            set,
-            system,
-            initial_state,
-            settings,
-        }))
     }
 }
 
