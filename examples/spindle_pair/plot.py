@@ -1,9 +1,12 @@
 """A 7008C back-to-back pair with a 200 N mounting preload: the preload,
 the set's axial and radial stiffness and the cage speed against speed,
-from the sweep the README runs.
+from the sweep the README runs; and, when the README's dynamic run is in
+OUT_DIR/run, the shaft's orbit and vibration spectrum in motion.
 
     cargo run --release -- quasistatic examples/spindle_pair/case.toml \\
         --sweep speed=0rpm..20000rpm/21 -o examples/spindle_pair/out
+    cargo run --release -- run examples/spindle_pair/case.toml \\
+        --set 'arrangement.unbalance="20 g.mm"' -o examples/spindle_pair/out/run
     python3 examples/spindle_pair/plot.py [OUT_DIR]
 """
 import csv
@@ -27,7 +30,10 @@ cage_ratio = [
     for r, s in zip(rows, speed)
 ]
 
-fig, (a, b, c) = plt.subplots(1, 3, figsize=(12, 3.6))
+run = out / "run" / "timeseries.parquet"
+rows_of_panels = 2 if run.exists() else 1
+fig, axes = plt.subplots(rows_of_panels, 3, figsize=(12, 3.6 * rows_of_panels), squeeze=False)
+a, b, c = axes[0]
 a.plot(speed, preload, "o-", ms=3)
 a.set_xlabel("shaft speed [rpm]")
 a.set_ylabel("preload [N]")
@@ -42,7 +48,35 @@ c.plot(speed, cage_ratio, "o-", ms=3)
 c.set_xlabel("shaft speed [rpm]")
 c.set_ylabel("cage / shaft speed")
 c.set_title("cage speed ratio (Jones–Harris)")
-fig.suptitle("7008C back-to-back pair, position preload (rolldyn quasistatic)")
+if run.exists():
+    import numpy as np
+    import pyarrow.parquet as pq
+
+    t = pq.read_table(run)
+    time = t.column("time_s").to_numpy()
+    late = time >= time[-1] / 2
+    y = t.column("shaft_y_m").to_numpy()[late] * 1e6
+    z = t.column("shaft_z_m").to_numpy()[late] * 1e6
+    d, e, f = axes[1]
+    d.plot(y - y.mean(), z - z.mean(), lw=0.6)
+    d.set_aspect("equal")
+    d.set_xlabel("shaft y [µm]")
+    d.set_ylabel("shaft z [µm]")
+    d.set_title("shaft orbit (second half of the run)")
+    rate = 1.0 / (time[1] - time[0])
+    spectrum = 2 * np.abs(np.fft.rfft((z - z.mean()) * np.hanning(len(z)))) / (len(z) / 2)
+    freq = np.fft.rfftfreq(len(z), 1.0 / rate)
+    e.semilogy(freq, spectrum * 1e3)
+    e.set_xlabel("frequency [Hz]")
+    e.set_ylabel("shaft z amplitude [nm]")
+    e.set_title("shaft vibration spectrum")
+    for k in (0, 1):
+        f.plot(time, t.column(f"bearing{k}_cage_speed_rpm").to_numpy(), lw=0.8, label=f"bearing {k}")
+    f.set_xlabel("time [s]")
+    f.set_ylabel("cage speed [rpm]")
+    f.set_title("cage speeds in motion")
+    f.legend()
+fig.suptitle("7008C back-to-back pair, position preload (rolldyn quasistatic and run)")
 fig.tight_layout()
 fig.savefig(out / "spindle_pair.png", dpi=150)
 print(f"wrote {out / 'spindle_pair.png'}")

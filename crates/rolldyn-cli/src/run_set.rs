@@ -69,6 +69,14 @@ pub struct SetSummary {
     pub rejected_steps: u64,
     pub rhs_evaluations: u64,
     pub samples: u64,
+    pub averaging_window_s: [f64; 2],
+    pub inner_ring_speed_rpm: f64,
+    pub mean_cage_speed_rpm: f64,
+    pub ball_count: usize,
+    pub ball_diameter_m: f64,
+    pub pitch_diameter_m: f64,
+    pub mean_contact_angle_inner_deg: f64,
+    pub mean_contact_angle_outer_deg: f64,
     pub drive_work_j: f64,
     pub dissipated_energy_j: f64,
     pub mechanical_energy_change_j: f64,
@@ -262,6 +270,10 @@ pub fn run(
     let end = rolldyn::integrate::OdeSystem::energy_balance(&system, solver.t(), solver.y())
         .unwrap_or_default();
     let change = end.mechanical - balance0.mechanical;
+    // Bearing 0's kinematics for the characteristic lines of
+    // `rolldyn spectrum` (as a single bearing's summary gives them).
+    let first = channels[0].stats.window();
+    let g = system.bearing(0).geometry();
     let stats = solver.stats();
     let (status, error) = match &report.end {
         RunEnd::Completed => ("completed", None),
@@ -282,6 +294,14 @@ pub fn run(
         rejected_steps: stats.rejected_steps,
         rhs_evaluations: stats.rhs_evaluations,
         samples,
+        averaging_window_s: first.span(),
+        inner_ring_speed_rpm: first.mean("inner_ring_speed_rpm"),
+        mean_cage_speed_rpm: first.mean("cage_speed_rpm"),
+        ball_count: g.ball_count,
+        ball_diameter_m: g.ball_diameter,
+        pitch_diameter_m: g.pitch_diameter,
+        mean_contact_angle_inner_deg: first.loaded_mean("contact_angle_inner_deg"),
+        mean_contact_angle_outer_deg: first.loaded_mean("contact_angle_outer_deg"),
         drive_work_j: end.work,
         dissipated_energy_j: end.dissipated,
         mechanical_energy_change_j: change,

@@ -606,15 +606,23 @@ fn dynamic_run_of_a_pair() {
     assert_eq!(
         keys(&v),
         [
+            "averaging_window_s",
+            "ball_count",
+            "ball_diameter_m",
             "bearings",
             "dissipated_energy_j",
             "drive_work_j",
             "energy_balance_relative_error",
             "error",
+            "inner_ring_speed_rpm",
             "integrator",
             "kind",
+            "mean_cage_speed_rpm",
+            "mean_contact_angle_inner_deg",
+            "mean_contact_angle_outer_deg",
             "mechanical_energy_change_j",
             "mounting_preload_n",
+            "pitch_diameter_m",
             "rejected_steps",
             "relative_tolerance",
             "requested_duration_s",
@@ -667,6 +675,20 @@ fn dynamic_run_of_a_pair() {
     ] {
         assert!(names.iter().any(|n| n == name), "{name}");
     }
+    // `rolldyn spectrum` analyses the set's channels with bearing 0's lines.
+    let o = rolldyn(
+        &[
+            "spectrum",
+            out.to_str().unwrap(),
+            "--channel",
+            "shaft_z_m",
+            "--from",
+            "0",
+        ],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("BPFO"), "{}", stdout(&o));
     // What a set's run does not do yet.
     for (flags, word) in [
         (vec!["--report"], "--report"),
