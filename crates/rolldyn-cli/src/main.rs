@@ -406,13 +406,6 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 ..Default::default()
             };
             if case.bearing_set().is_some() || case.shaft.is_some() {
-                if with_report {
-                    return Err(bad_arg(
-                        "--report",
-                        "",
-                        "the HTML report shows one bearing's run; a bearing set's run writes its time series and summary only",
-                    ));
-                }
                 let summary = rolldyn_cli::run_set::run(&record, &case, dir, &options)?;
                 let mut text = format!(
                     "{}: {} system, simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS); energy balance error {:.2e}\n",
@@ -444,6 +437,10 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     summary.samples
                 );
                 emit(&text)?;
+                if with_report {
+                    let path = html_report::write(dir)?;
+                    emit(&format!("wrote {}\n", path.display()))?;
+                }
                 return match summary.status {
                     "failed" => Err(Failure::Model(format!(
                         "{}; the files hold the run up to t = {:.6} s",

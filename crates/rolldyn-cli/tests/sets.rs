@@ -689,24 +689,33 @@ fn dynamic_run_of_a_pair() {
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(stdout(&o).contains("BPFO"), "{}", stdout(&o));
-    // What a set's run does not do yet.
-    for (flags, word) in [
-        (vec!["--report"], "--report"),
-        (vec!["--verify"], "--verify"),
+    // The report of a set's run: its own sections.
+    let o = rolldyn(&["report", out.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    for heading in [
+        "The bearings",
+        "Axial loads and cage speeds",
+        "The shaft",
+        "Energy balance",
     ] {
-        let mut args = vec![
+        assert!(html.contains(heading), "{heading}");
+    }
+    // What a set's run does not do yet.
+    let o = rolldyn(
+        &[
             "run",
             "-",
             "--duration",
             "1 ms",
+            "--verify",
             "-o",
             out.to_str().unwrap(),
-        ];
-        args.extend(flags);
-        let o = rolldyn(&args, Some(&case));
-        assert_eq!(o.status.code(), Some(2), "{word}");
-        assert!(stderr(&o).contains(word), "{}", stderr(&o));
-    }
+        ],
+        Some(&case),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--verify"), "{}", stderr(&o));
     let o = rolldyn(
         &[
             "run",

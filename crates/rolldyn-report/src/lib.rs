@@ -15,6 +15,7 @@
 
 pub mod run;
 pub mod run_data;
+pub mod set;
 pub mod svg;
 pub mod sweep;
 pub mod vibration;
@@ -234,7 +235,11 @@ pub fn report_for(dir: &Path, case_description: Option<String>) -> Result<Report
     if dir.join(sweep::SWEEP_FILE).is_file() {
         sweep::report(dir)
     } else if dir.join(run::SUMMARY_FILE).is_file() {
-        run::report(dir, case_description)
+        if set::is_set_summary(&read_json(&dir.join(run::SUMMARY_FILE))?) {
+            set::report(dir, case_description)
+        } else {
+            run::report(dir, case_description)
+        }
     } else {
         Err(ReportError::NotAResultDirectory {
             dir: dir.display().to_string(),

@@ -172,7 +172,7 @@ fn sentence(text: &str) -> String {
         .unwrap_or_default()
 }
 
-fn rows(data: &RunData, keys: &[(&str, &str)]) -> Vec<Vec<String>> {
+pub(crate) fn rows(data: &RunData, keys: &[(&str, &str)]) -> Vec<Vec<String>> {
     keys.iter()
         .filter(|(key, _)| data.summary.get(*key).is_some())
         .map(|(key, label)| vec![label.to_string(), cell(data.number(key)), key.to_string()])
@@ -220,7 +220,7 @@ fn summary(data: &RunData) -> Option<Section> {
     ))
 }
 
-fn case(data: &RunData) -> Option<Section> {
+pub(crate) fn case(data: &RunData) -> Option<Section> {
     let mut s = Section::new("case", "Case and assumptions");
     if let Some(record) = &data.record {
         let source = record.get("source").and_then(Value::as_str).unwrap_or("?");
@@ -269,7 +269,7 @@ fn case(data: &RunData) -> Option<Section> {
     (!s.blocks.is_empty()).then_some(s)
 }
 
-fn solver(data: &RunData) -> Option<Section> {
+pub(crate) fn solver(data: &RunData) -> Option<Section> {
     let mut table = rows(
         data,
         &[
@@ -442,7 +442,7 @@ fn cage_orbit(data: &RunData) -> Option<Section> {
     )
 }
 
-fn energy(data: &RunData) -> Option<Section> {
+pub(crate) fn energy(data: &RunData) -> Option<Section> {
     let drive = data.channel("drive_work_j")?;
     let dissipated = data.channel("dissipated_energy_j")?;
     let mechanical = data.channel("mechanical_energy_j")?;
@@ -520,7 +520,7 @@ fn power(data: &RunData) -> Option<Section> {
     Some(s)
 }
 
-fn all_values(data: &RunData) -> Option<Section> {
+pub(crate) fn all_values(data: &RunData) -> Option<Section> {
     let Value::Object(map) = &data.summary else {
         return None;
     };

@@ -111,29 +111,40 @@ pub const PLOT_ROWS: usize = 16_384;
 /// row by row \[J\].
 pub(crate) const BALANCE_ERROR: &str = "energy_balance_error_j";
 
-/// Whether a channel is another ball's than ball 0 (window means only).
+/// Whether a channel is another ball's than ball 0 (window means only),
+/// also of a bearing of a set (`bearing{i}_ball{j}_…`).
 fn other_ball(name: &str) -> bool {
+    let name = name
+        .strip_prefix("bearing")
+        .and_then(|rest| rest.split_once('_'))
+        .map_or(name, |(_, rest)| rest);
     name.strip_prefix("ball")
         .and_then(|rest| rest.split_once('_'))
         .is_some_and(|(j, _)| j != "0")
 }
 
+/// What [`read_for_plots`] gives: the plotted series, the window means
+/// and an orbit's last samples.
+pub type PlotData = (
+    TimeSeries,
+    HashMap<String, f64>,
+    Option<(Vec<f64>, Vec<f64>)>,
+);
+
 /// One pass over the time series at `path`, one batch in memory: the
 /// channels to plot (reduced to bucket extremes when longer than
 /// [`PLOT_ROWS`]), every channel's mean over `window` (finite values with
 /// t in it) and the cage orbit's last [`PLOT_ROWS`] samples.
-#[allow(clippy::type_complexity)]
-pub fn read_for_plots(
+pub fn read_for_plots(path: &Path, window: [f64; 2]) -> Result<PlotData, rolldyn_io::InputError> {
+    read_with_orbit(path, window, ["cage_y_m", "cage_z_m"])
+}
+
+/// [`read_for_plots`] with the orbit of the channels `orbit` (y, z).
+pub fn read_with_orbit(
     path: &Path,
     [t0, t1]: [f64; 2],
-) -> Result<
-    (
-        TimeSeries,
-        HashMap<String, f64>,
-        Option<(Vec<f64>, Vec<f64>)>,
-    ),
-    rolldyn_io::InputError,
-> {
+    orbit: [&str; 2],
+) -> Result<PlotData, rolldyn_io::InputError> {
     let all = read_schema(path)?;
     let rows = row_count(path)? as usize;
     let names = all.names().to_vec();
@@ -163,8 +174,8 @@ pub fn read_for_plots(
     let mut first_energy = None;
     let time = index("time_s");
     let orbit_columns = (
-        names.iter().position(|n| n == "cage_y_m"),
-        names.iter().position(|n| n == "cage_z_m"),
+        names.iter().position(|n| n == orbit[0]),
+        names.iter().position(|n| n == orbit[1]),
     );
     // Rows per bucket; each bucket gives two rows (its extremes in order).
     let bucket = if rows > PLOT_ROWS {
