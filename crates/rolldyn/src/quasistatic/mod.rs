@@ -15,6 +15,7 @@
 //! [`stiffness`]: compliance and the conventional scalar stiffnesses.
 
 pub mod contact_motion;
+pub mod elastic_shaft;
 pub mod equilibrium;
 pub mod error;
 pub mod films;

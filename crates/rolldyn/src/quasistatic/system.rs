@@ -47,7 +47,7 @@ use super::{Equilibrium, QuasiStaticError, QuasiStaticSolver, RacewayControl, So
 use crate::operating::Loads;
 use nalgebra::{SMatrix, SVector};
 
-type Matrix5 = SMatrix<f64, 5, 5>;
+pub(crate) type Matrix5 = SMatrix<f64, 5, 5>;
 type Vector5 = SVector<f64, 5>;
 
 /// Newton iteration limit of the shaft equilibrium.
@@ -173,6 +173,37 @@ impl MountedBearing {
             && ring[0] <= 0.0
             && ring[0] > -0.5 * geometry.axial_play()
             && ring[1..].iter().all(|&v| v == 0.0)
+    }
+
+    /// The bearing at shaft displacement `u`: its equilibrium with its ring
+    /// held there (from `near`, a nearby state, when given), its load on
+    /// the shaft about the reference point P_iᵀ M_i R_i and its stiffness
+    /// there P_iᵀ M_i K_i M_i P_i (a floating bearing's free axial motion
+    /// condensed out); None when it is open at rest or unloaded (lifted
+    /// off).
+    pub(crate) fn contribution(
+        &self,
+        u: &[f64; 5],
+        conditions: &SystemConditions,
+        options: &SolverOptions,
+        near: Option<&Equilibrium>,
+    ) -> Result<Option<(Equilibrium, [f64; 5], Matrix5)>, QuasiStaticError> {
+        if self.open_at_rest(u, conditions.inner_speed) {
+            return Ok(None);
+        }
+        let eq = match self.solve(u, conditions.inner_speed, conditions.control, options, near) {
+            Ok(eq) => eq,
+            Err(_) if self.unloaded_by(u) => return Ok(None),
+            Err(e) => return Err(e),
+        };
+        let t = self.transform();
+        let share = self.shaft_load(&eq.reaction);
+        let mut k = Matrix5::from(eq.stiffness).transpose();
+        if self.floating && k[(0, 0)] != 0.0 {
+            // Its axial motion is free (no thrust): condense it out.
+            k -= k.column(0) * k.row(0) / k[(0, 0)];
+        }
+        Ok(Some((eq, share, t.transpose() * k * t)))
     }
 
     /// The bearing's equilibrium with its ring held at its displacement
@@ -370,11 +401,6 @@ impl ShaftSystem {
         let mut residual = -applied;
         let mut stiffness = Matrix5::zeros();
         for (index, b) in self.bearings.iter().enumerate() {
-            if b.open_at_rest(u, conditions.inner_speed) {
-                shares.push([0.0; 5]);
-                bearings.push(None);
-                continue;
-            }
             // From its own state nearby, else from an identical bearing
             // already solved at the same ring displacement (a matched
             // set's mirror-image bearings at the start).
@@ -393,26 +419,21 @@ impl ShaftSystem {
                 .and_then(|w| w.get(index))
                 .and_then(Option::as_ref)
                 .or_else(twin);
-            let eq = match b.solve(u, conditions.inner_speed, conditions.control, options, near) {
-                Ok(eq) => eq,
-                Err(_) if b.unloaded_by(u) => {
+            match b
+                .contribution(u, conditions, options, near)
+                .map_err(|source| SystemError::Bearing { index, source })?
+            {
+                Some((eq, share, k)) => {
+                    residual += Vector5::from(share);
+                    stiffness += k;
+                    shares.push(share);
+                    bearings.push(Some(eq));
+                }
+                None => {
                     shares.push([0.0; 5]);
                     bearings.push(None);
-                    continue;
                 }
-                Err(source) => return Err(SystemError::Bearing { index, source }),
-            };
-            let t = b.transform();
-            let share = b.shaft_load(&eq.reaction);
-            residual += Vector5::from(share);
-            let mut k = Matrix5::from(eq.stiffness).transpose();
-            if b.floating && k[(0, 0)] != 0.0 {
-                // Its axial motion is free (no thrust): condense it out.
-                k -= k.column(0) * k.row(0) / k[(0, 0)];
             }
-            stiffness += t.transpose() * k * t;
-            shares.push(share);
-            bearings.push(Some(eq));
         }
         Ok(Evaluation {
             bearings,
