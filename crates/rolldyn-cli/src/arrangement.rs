@@ -51,12 +51,24 @@ pub struct SetBearingRow {
     /// Its radial load.
     pub radial_load_n: f64,
     /// Its load on the shaft about the reference point (F_x, F_y, F_z
-    /// \[N\], M_y, M_z \[N·m\]).
+    /// \[N\], M_y, M_z \[N·m\]); on an elastic shaft about its own node.
     pub shaft_load: [f64; 5],
+    /// The tilt of its inner ring against its outer ring, √(θ_y² + θ_z²)
+    /// \[rad\] (on an elastic shaft: with the shaft's bending).
+    pub misalignment_rad: f64,
     /// Its quasi-static report in its own frame, its loads being what the
     /// shaft applies to it; null where the external load has unloaded it
     /// (beyond lift-off).
     pub quasistatic: Option<Box<QuasiStaticReport>>,
+}
+
+/// A node of an elastic shaft.
+#[derive(Serialize)]
+pub struct ShaftNode {
+    /// Axial position from the reference point \[m\].
+    pub position_m: f64,
+    /// Its displacement (x, y, z \[m\], θ_y, θ_z \[rad\]).
+    pub displacement: [f64; 5],
 }
 
 /// `arrangement` in `rolldyn quasistatic --json`.
@@ -86,6 +98,8 @@ pub struct ArrangementReport {
     /// Its inverse (null where singular).
     pub compliance_matrix: Option<[[f64; 5]; 5]>,
     pub iterations: usize,
+    /// An elastic shaft's nodes (null for a rigid shaft).
+    pub shaft_nodes: Option<Vec<ShaftNode>>,
     pub bearings: Vec<SetBearingRow>,
     /// Series-system lives (null where a bearing's life is unknown).
     pub system_basic_rating_life_h: Option<f64>,
@@ -149,6 +163,9 @@ fn bearing_rows<'a>(
                     .as_ref()
                     .map_or(0.0, |s| s.reaction[1].hypot(s.reaction[2])),
                 shaft_load: *share,
+                misalignment_rad: sol
+                    .as_ref()
+                    .map_or(0.0, |s| s.displacement[3].hypot(s.displacement[4])),
                 quasistatic,
             }
         })
@@ -183,6 +200,7 @@ impl ArrangementReport {
             stiffness_matrix: eq.stiffness,
             compliance_matrix: compliance(&eq.stiffness),
             iterations: eq.iterations,
+            shaft_nodes: None,
             system_basic_rating_life_h: lives(|r| r.basic_rating_life_h),
             system_reference_rating_life_h: lives(|r| r.reference_rating_life_h),
             system_modified_reference_rating_life_h: lives(|r| r.modified_reference_rating_life_h),
@@ -227,12 +245,28 @@ impl SetReport {
 
     /// Solves the case's `[shaft]` system at its operating point.
     pub fn of_shaft(model: &ShaftModel) -> Result<Self, Failure> {
-        let eq = model.solve().map_err(simulation_failure)?;
+        let elastic = model.solve_elastic().map_err(simulation_failure)?;
+        let eq = match &elastic {
+            Some(e) => e.system.clone(),
+            None => model.solve().map_err(simulation_failure)?,
+        };
         let mounted = model.bearings.iter().map(|b| (&b.mounted, &b.case));
         let bearings = bearing_rows(mounted, &eq, &model.conditions);
         Ok(Self::at(
             &model.conditions,
-            ArrangementReport::of_system(&eq, bearings),
+            ArrangementReport {
+                shaft_nodes: elastic.map(|e| {
+                    e.nodes
+                        .iter()
+                        .zip(&e.displacements)
+                        .map(|(x, u)| ShaftNode {
+                            position_m: *x,
+                            displacement: *u,
+                        })
+                        .collect()
+                }),
+                ..ArrangementReport::of_system(&eq, bearings)
+            },
         ))
     }
 
@@ -350,6 +384,34 @@ impl SetReport {
                 } else {
                     ""
                 }
+            );
+        }
+        if let Some(nodes) = &a.shaft_nodes {
+            let _ = writeln!(
+                out,
+                "  elastic shaft: node  position mm   y µm       z µm       θ_y rad      θ_z rad"
+            );
+            for (n, node) in nodes.iter().enumerate() {
+                let u = node.displacement;
+                let _ = writeln!(
+                    out,
+                    "                 {n:<4}  {:>11.2}  {:>9.3}  {:>9.3}  {:>11.3e}  {:>11.3e}",
+                    node.position_m * 1e3,
+                    u[1] * 1e6,
+                    u[2] * 1e6,
+                    u[3],
+                    u[4]
+                );
+            }
+            let _ = writeln!(
+                out,
+                "  misalignment of the inner rings (shaft bending and tilt): {}",
+                a.bearings
+                    .iter()
+                    .enumerate()
+                    .map(|(i, b)| format!("{i}: {:.3e} rad", b.misalignment_rad))
+                    .collect::<Vec<_>>()
+                    .join(", ")
             );
         }
         let _ = writeln!(

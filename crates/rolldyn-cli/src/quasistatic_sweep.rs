@@ -298,6 +298,11 @@ pub fn sweep_case(
     if let Some(mut model) =
         rolldyn_case::simulation::ShaftModel::from_case(case).map_err(crate::simulation_failure)?
     {
+        if model.elastic.is_some() {
+            return Err(crate::Failure::BadInput(
+                "shaft.diameter: an elastic shaft solves one operating point at a time (no --sweep yet); drop shaft.diameter to sweep the rigid shaft".into(),
+            ));
+        }
         if let Some(control) = control {
             model.conditions.control = control;
         }

@@ -86,6 +86,10 @@ pub struct Shaft {
     /// The `[[shaft.loads]]` as one load about the reference point x = 0
     /// (a force F at x = a adds the moments M_y = −a F_z, M_z = a F_y).
     pub loads: Loads,
+    /// The `[[shaft.loads]]` each at its position (x \[m\], load there).
+    pub point_loads: Vec<(f64, Loads)>,
+    /// The elastic shaft's section (None: rigid).
+    pub section: Option<rolldyn::quasistatic::elastic_shaft::ShaftSection>,
 }
 
 fn position(key: String, q: &crate::units::Quantity<crate::units::Length>) -> Result<f64, Invalid> {
@@ -100,6 +104,10 @@ fn position(key: String, q: &crate::units::Quantity<crate::units::Length>) -> Re
     })
     .map(|v| v.unwrap_or(0.0))
 }
+
+/// Young's modulus of an elastic shaft without `shaft.elastic_modulus`
+/// \[Pa\]: steel.
+pub const DEFAULT_SHAFT_MODULUS: f64 = 206e9;
 
 pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
     let Some(raw) = raw else { return Ok(None) };
@@ -212,6 +220,7 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
         ));
     }
     let mut loads = Loads::default();
+    let mut point_loads = Vec::with_capacity(raw.loads.len());
     for (i, l) in raw.loads.iter().enumerate() {
         let key = |name: &str| format!("shaft.loads[{i}].{name}");
         let a = position(key("position"), &l.position)?;
@@ -228,6 +237,56 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
         loads.force[2] += fz;
         loads.moment[0] -= a * fz;
         loads.moment[1] += a * fy;
+        point_loads.push((
+            a,
+            Loads {
+                force: [fx, fy, fz],
+                moment: [0.0; 2],
+            },
+        ));
     }
-    Ok(Some(Shaft { bearings, loads }))
+    let section = match checked("shaft.diameter", &raw.diameter, super::positive)? {
+        None => {
+            for (key, given) in [
+                ("shaft.bore", raw.bore.is_some()),
+                ("shaft.elastic_modulus", raw.elastic_modulus.is_some()),
+            ] {
+                if given {
+                    return Err(Invalid::new(
+                        key,
+                        None,
+                        "describes an elastic shaft: give shaft.diameter too (without it the shaft is rigid)",
+                    ));
+                }
+            }
+            None
+        }
+        Some(diameter) => {
+            let bore = checked("shaft.bore", &raw.bore, |v| {
+                if (0.0..diameter).contains(&v) {
+                    Ok(())
+                } else {
+                    Err(format!("must lie in [0, shaft.diameter = {diameter} m)"))
+                }
+            })?
+            .unwrap_or(0.0);
+            let elastic_modulus = checked(
+                "shaft.elastic_modulus",
+                &raw.elastic_modulus,
+                super::positive,
+            )?
+            .unwrap_or(DEFAULT_SHAFT_MODULUS);
+            Some(rolldyn::quasistatic::elastic_shaft::ShaftSection {
+                diameter,
+                bore,
+                elastic_modulus,
+            })
+        }
+    };
+    Ok(Some(Shaft {
+        bearings,
+        loads,
+        point_loads,
+        section,
+    }))
 }

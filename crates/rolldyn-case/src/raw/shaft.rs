@@ -21,6 +21,14 @@ pub struct RawShaft {
     /// at rest, a belt pull).
     #[serde(default)]
     pub loads: Vec<RawShaftLoad>,
+    /// Outside diameter of a uniform elastic shaft (absent: rigid). With
+    /// it the shaft bends between its nodes (Euler–Bernoulli beam) and the
+    /// bearings see the misalignment (`rolldyn quasistatic`).
+    pub diameter: Option<Quantity<Length>>,
+    /// Bore of a hollow elastic shaft (default 0: solid).
+    pub bore: Option<Quantity<Length>>,
+    /// Young's modulus of the elastic shaft (default 206 GPa, steel).
+    pub elastic_modulus: Option<Quantity<Pressure>>,
 }
 
 /// Which thrust direction a bearing of a shaft carries.

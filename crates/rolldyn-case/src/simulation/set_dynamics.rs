@@ -82,6 +82,9 @@ impl SetSimulation {
                     set.conditions,
                 )
             } else if let Some(shaft) = ShaftModel::from_case(case)? {
+                if shaft.elastic.is_some() {
+                    return refuse("shaft.diameter", "an elastic shaft (quasi-static only)");
+                }
                 if let Some(i) = shaft.bearings.iter().position(|b| b.mounted.floating) {
                     return refuse(
                         &format!("shaft.bearings[{i}].axial"),

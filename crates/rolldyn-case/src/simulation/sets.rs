@@ -9,6 +9,7 @@ use crate::Case;
 use crate::case::{Arrangement, Invalid, Preload};
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::SolverOptions;
+use rolldyn::quasistatic::elastic_shaft::{ElasticEquilibrium, ElasticShaft};
 use rolldyn::quasistatic::system::{
     MountedBearing, ShaftSystem, SystemConditions, SystemEquilibrium,
 };
@@ -197,6 +198,11 @@ pub struct ShaftModel {
     pub conditions: SystemConditions,
     /// Quasi-static solver options (the first bearing's).
     pub options: SolverOptions,
+    /// The elastic shaft with its bearings and point loads (None: rigid).
+    pub elastic: Option<ElasticShaft>,
+    /// The `[operating]` loads alone (at the reference point; the elastic
+    /// shaft takes the `[[shaft.loads]]` at their nodes).
+    pub reference_loads: Loads,
 }
 
 impl ShaftModel {
@@ -253,10 +259,17 @@ impl ShaftModel {
             force: std::array::from_fn(|k| case.loads.force[k] + shaft.loads.force[k]),
             moment: std::array::from_fn(|k| case.loads.moment[k] + shaft.loads.moment[k]),
         };
+        let system = ShaftSystem {
+            bearings: bearings.iter().map(|b| b.mounted.clone()).collect(),
+        };
+        let elastic = shaft
+            .section
+            .map(|section| ElasticShaft::new(section, system.clone(), shaft.point_loads.clone()))
+            .transpose()?;
         Ok(Some(Self {
-            system: ShaftSystem {
-                bearings: bearings.iter().map(|b| b.mounted.clone()).collect(),
-            },
+            system,
+            elastic,
+            reference_loads: case.loads,
             bearings,
             conditions: SystemConditions {
                 loads,
@@ -267,8 +280,24 @@ impl ShaftModel {
         }))
     }
 
-    /// The system's equilibrium.
+    /// The system's equilibrium (on the elastic shaft's, its reference
+    /// node's displacement and stiffness).
     pub fn solve(&self) -> Result<SystemEquilibrium, SimulationError> {
-        Ok(self.system.solve_general(&self.conditions, &self.options)?)
+        match self.solve_elastic()? {
+            Some(eq) => Ok(eq.system),
+            None => Ok(self.system.solve_general(&self.conditions, &self.options)?),
+        }
+    }
+
+    /// The elastic shaft's equilibrium (None for a rigid shaft).
+    pub fn solve_elastic(&self) -> Result<Option<ElasticEquilibrium>, SimulationError> {
+        let Some(elastic) = &self.elastic else {
+            return Ok(None);
+        };
+        let conditions = SystemConditions {
+            loads: self.reference_loads,
+            ..self.conditions
+        };
+        Ok(Some(elastic.solve(&conditions, &self.options)?))
     }
 }
