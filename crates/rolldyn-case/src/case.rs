@@ -386,7 +386,7 @@ impl Case {
             return Err(Invalid::new(
                 "fits",
                 None,
-                "[fits] applies to the case's one bearing; a [shaft]'s bearings do not take fits yet (choose a catalogue bearing's clearance_group instead, or solve the bearing alone with its fits)",
+                "[fits] applies to the case's one bearing; give each shaft bearing its own as [shaft.bearings.fits] (the same keys)",
             ));
         }
         let lubricant = raw

@@ -1109,6 +1109,46 @@ fn an_elastic_shaft_tilts_its_bearings() {
     }
 }
 
+/// Fits on a shaft's bearing (`[shaft.bearings.fits]`): the same mounted
+/// clearance as the bearing alone with `[fits]`; bad fits name the
+/// bearing's key.
+#[test]
+fn a_shaft_bearing_takes_its_fits() {
+    let fits = "shaft_tolerance = \"k5\"\nhousing_tolerance = \"H7\"\n";
+    let case = SHAFT.replace("ORIENTATION", "forward").replacen(
+        "position = \"-60 mm\"\n",
+        &format!("position = \"-60 mm\"\n[shaft.bearings.fits]\n{fits}"),
+        1,
+    );
+    let v = json(&["quasistatic", "-", "--json"], Some(&case));
+    let bearings = &v["arrangement"]["bearings"];
+    let mounted = |f: &serde_json::Value| f["diametral_clearance_mounted_m"].as_f64().unwrap();
+    let alone = json(
+        &["quasistatic", "-", "--json"],
+        Some(&format!(
+            "{}\n[fits]\n{fits}",
+            stdout(&rolldyn(&["new", "--preset", "6206"], None))
+        )),
+    );
+    assert!(bearings[1]["quasistatic"]["fits"].is_null());
+    let on_shaft = mounted(&bearings[0]["quasistatic"]["fits"]);
+    assert!(
+        (on_shaft - mounted(&alone["fits"])).abs() < 1e-12,
+        "{on_shaft}"
+    );
+    assert!(on_shaft < 12.5e-6);
+    let o = rolldyn(
+        &["quasistatic", "-"],
+        Some(&case.replace("\"k5\"", "\"q9\"")),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("shaft.bearings[0].fits"),
+        "{}",
+        stderr(&o)
+    );
+}
+
 /// A locating and a floating bearing: the floating one carries no thrust,
 /// the locating one all of it; the reported compliance (the floating
 /// bearing's free axial motion condensed out) predicts the shaft's move

@@ -76,6 +76,21 @@ pub struct ShaftBearing {
     /// Axial offset of its inner ring towards its loaded side at zero
     /// shaft displacement \[m\] (its preload displacement).
     pub preload_offset: f64,
+    /// Its `[shaft.bearings.fits]` as a `[fits]` table, added to its case
+    /// text (None: no fits).
+    pub fits: Option<String>,
+}
+
+impl ShaftBearing {
+    /// The case text the bearing is solved with: its source's, with its
+    /// fits.
+    pub fn case_text(&self) -> Result<Cow<'static, str>, String> {
+        let text = self.source.case_text()?;
+        Ok(match &self.fits {
+            None => text,
+            Some(fits) => Cow::Owned(format!("{text}\n{fits}")),
+        })
+    }
 }
 
 /// `[shaft]`, checked.
@@ -210,6 +225,18 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
             },
             floating,
             preload_offset,
+            fits: b
+                .fits
+                .as_ref()
+                .map(|fits| {
+                    #[derive(serde::Serialize)]
+                    struct Fits<'a> {
+                        fits: &'a crate::raw::RawFits,
+                    }
+                    toml::to_string(&Fits { fits })
+                        .map_err(|e| Invalid::new(key("fits"), None, e.to_string()))
+                })
+                .transpose()?,
         });
     }
     if bearings.iter().all(|b| b.floating) {

@@ -80,6 +80,9 @@ pub struct RawShaftBearing {
     /// shaft displacement (default 0): the preload displacement of a
     /// bearing set against an opposed one (a ground spacer, a locknut).
     pub preload_offset: Option<Quantity<Length>>,
+    /// Its interference fits (`[shaft.bearings.fits]`: the keys of
+    /// `[fits]`), applied to its clearance as for a bearing alone.
+    pub fits: Option<super::RawFits>,
 }
 
 /// A force on the shaft at an axial position.

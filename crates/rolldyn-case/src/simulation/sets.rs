@@ -231,10 +231,23 @@ impl ShaftModel {
                     rule,
                 })
             };
-            let text = b.source.case_text().map_err(invalid)?;
+            let text = b.case_text().map_err(invalid)?;
             let bearing_case =
-                crate::load_case(b.source.name(), &text, std::slice::from_ref(&speed))
-                    .map_err(|e| invalid(e.to_string()))?;
+                crate::load_case(b.source.name(), &text, std::slice::from_ref(&speed)).map_err(
+                    |e| {
+                        let rule = e.to_string();
+                        // Its fits' errors name its fits.
+                        if b.fits.is_some() && rule.contains("fits.") {
+                            SimulationError::Case(Invalid {
+                                key: format!("shaft.bearings[{i}].fits"),
+                                value: None,
+                                rule,
+                            })
+                        } else {
+                            invalid(rule)
+                        }
+                    },
+                )?;
             let problem = QuasiStatic::from_case(&bearing_case)?;
             options.get_or_insert(problem.options);
             bearings.push(ShaftBearingModel {
