@@ -1109,6 +1109,34 @@ fn an_elastic_shaft_tilts_its_bearings() {
     }
 }
 
+/// A moment among the shaft loads: on a rigid shaft the same as that
+/// moment about the reference point (`operating.moment_y`).
+#[test]
+fn a_shaft_load_may_be_a_moment() {
+    let base = SHAFT.replace("ORIENTATION", "forward");
+    let at_load = base.replacen(
+        "force_x = \"300 N\"\n",
+        "force_x = \"300 N\"\nmoment_y = \"10 N.m\"\n",
+        1,
+    );
+    let solve = |text: &str, extra: &[&str]| {
+        let mut args = vec!["quasistatic", "-", "--json"];
+        args.extend_from_slice(extra);
+        json(&args, Some(text))["arrangement"]["shaft_displacement"].clone()
+    };
+    let (a, b) = (
+        solve(&at_load, &[]),
+        solve(&base, &["--set", "operating.moment_y=\"10 N.m\""]),
+    );
+    for k in 0..5 {
+        let (x, y) = (a[k].as_f64().unwrap(), b[k].as_f64().unwrap());
+        assert!(
+            (x - y).abs() <= 1e-9 * y.abs().max(1e-12),
+            "{k}: {x} vs {y}"
+        );
+    }
+}
+
 /// Fits on a shaft's bearing (`[shaft.bearings.fits]`): the same mounted
 /// clearance as the bearing alone with `[fits]`; bad fits name the
 /// bearing's key.

@@ -259,16 +259,23 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
             force("force_y", &l.force_y)?,
             force("force_z", &l.force_z)?,
         );
+        let moment = |name: &str, q: &Option<crate::units::Quantity<crate::units::Moment>>| {
+            checked(&key(name), q, |_| Ok(())).map(|v| v.unwrap_or(0.0))
+        };
+        let (my, mz) = (
+            moment("moment_y", &l.moment_y)?,
+            moment("moment_z", &l.moment_z)?,
+        );
         loads.force[0] += fx;
         loads.force[1] += fy;
         loads.force[2] += fz;
-        loads.moment[0] -= a * fz;
-        loads.moment[1] += a * fy;
+        loads.moment[0] += my - a * fz;
+        loads.moment[1] += mz + a * fy;
         point_loads.push((
             a,
             Loads {
                 force: [fx, fy, fz],
-                moment: [0.0; 2],
+                moment: [my, mz],
             },
         ));
     }

@@ -85,7 +85,7 @@ pub struct RawShaftBearing {
     pub fits: Option<super::RawFits>,
 }
 
-/// A force on the shaft at an axial position.
+/// A force (and moment) on the shaft at an axial position.
 #[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RawShaftLoad {
@@ -97,4 +97,9 @@ pub struct RawShaftLoad {
     pub force_y: Option<Quantity<Force>>,
     /// Force along z (default 0).
     pub force_z: Option<Quantity<Force>>,
+    /// Moment about y there (default 0; a helical gear's axial force off
+    /// the axis, a coupling's bending moment).
+    pub moment_y: Option<Quantity<Moment>>,
+    /// Moment about z there (default 0).
+    pub moment_z: Option<Quantity<Moment>>,
 }
