@@ -469,15 +469,37 @@ fn errors_name_the_key() {
         let e = stderr(&o);
         assert!(e.contains(key) && e.contains(rule), "{arrangement}: {e}");
     }
-    // Analyses of one bearing refuse a set, naming the key.
+    // What a set does not do names the key: sweeps of runs.
     let case = pair("kind = \"back_to_back\"\npreload = \"100 N\"");
-    let o = rolldyn(&["power", "-"], Some(&case));
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--sweep",
+            "speed=1000rpm,2000rpm",
+            "-o",
+            "/nonexistent/never",
+        ],
+        Some(&case),
+    );
     assert_eq!(o.status.code(), Some(2));
     assert!(
         stderr(&o).contains("arrangement.kind: \"back_to_back\""),
         "{}",
         stderr(&o)
     );
+    // The power loss of every bearing at the set's equilibrium, each as
+    // the bearing's own power report.
+    let v = json(&["power", "-", "--json"], Some(&case));
+    assert_eq!(v["kind"], "back_to_back");
+    let rows = v["bearings"].as_array().unwrap();
+    assert_eq!(rows.len(), 2);
+    let sum: f64 = rows
+        .iter()
+        .map(|r| r["power"]["power_loss_w"].as_f64().unwrap())
+        .sum();
+    assert!((sum - v["power_loss_w"].as_f64().unwrap()).abs() < 1e-12);
+    assert!(sum > 0.0);
     let o = rolldyn(&["quasistatic", "-", "--control", "traction"], Some(&case));
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--control traction"), "{}", stderr(&o));
@@ -920,7 +942,7 @@ fn shaft_errors_name_the_key() {
         assert_eq!(o.status.code(), Some(2), "{key}: {}", stderr(&o));
         assert!(stderr(&o).contains(key), "{key}: {}", stderr(&o));
     }
-    let o = rolldyn(&["power", "-"], Some(&case));
+    let o = rolldyn(&["thermal", "-"], Some(&case));
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("shaft"), "{}", stderr(&o));
 }
