@@ -74,3 +74,28 @@ pub fn series_bytes(run: &std::path::Path) -> Vec<u8> {
     }
     bytes
 }
+
+/// The default case (7008C) as a matched set.
+pub fn pair(arrangement: &str) -> String {
+    let o = rolldyn(&["new", "--preset", "7008C"], None);
+    format!("{}\n[arrangement]\n{arrangement}\n", stdout(&o))
+}
+
+/// Two 6206 on a rigid shaft 120 mm apart, a gear force of 4 kN at
+/// x = +20 mm with a 300 N thrust (`[shaft]`).
+pub const SHAFT: &str = r#"
+[operating]
+speed = "3000 rpm"
+[shaft]
+[[shaft.bearings]]
+preset = "6206"
+position = "-60 mm"
+[[shaft.bearings]]
+preset = "6206"
+position = "60 mm"
+orientation = "ORIENTATION"
+[[shaft.loads]]
+position = "20 mm"
+force_z = "-4 kN"
+force_x = "300 N"
+"#;
