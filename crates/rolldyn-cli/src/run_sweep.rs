@@ -278,21 +278,6 @@ pub fn command(
     }
     case.overrides.overrides()?;
     let (source, text) = case.read()?;
-    let loaded = case.overrides.load_text(&source, text.as_deref())?;
-    if let Some(key) = loaded
-        .bearing_set()
-        .map(|set| {
-            format!(
-                "arrangement.kind: \"{}\"",
-                rolldyn_case::case::kind_name(set.kind)
-            )
-        })
-        .or(loaded.shaft.as_ref().map(|_| "shaft".to_string()))
-    {
-        return Err(Failure::BadInput(format!(
-            "{key}: bearings on a shaft run one case at a time (`rolldyn run`, no sweeps yet); their quasi-static solution sweeps (`rolldyn quasistatic --sweep`, docs/systems.md)"
-        )));
-    }
     let grid = match sampling {
         Some(s) => sample(&case.overrides, sweeps, s)?,
         None => grid(&case.overrides, &grid_sweeps),
@@ -456,7 +441,15 @@ pub fn run_point(
         overrides.clone(),
         options.force,
     );
-    match run_case(&record, case, &dir.join(name), options) {
+    // Bearings on a shaft run as a system, with their own summary.
+    let run = if case.bearing_set().is_some() || case.shaft.is_some() {
+        crate::run_set::run(&record, case, &dir.join(name), options)
+            .map(|s| serde_json::to_value(&s).unwrap_or(Value::Null))
+    } else {
+        run_case(&record, case, &dir.join(name), options)
+            .map(|s| serde_json::to_value(&s).unwrap_or(Value::Null))
+    };
+    match run {
         Err(
             Failure::BadInput(m)
             | Failure::Model(m)
@@ -466,8 +459,7 @@ pub fn run_point(
             row.insert("status".into(), Value::from("failed"));
             row.insert("error".into(), Value::from(m));
         }
-        Ok(summary) => {
-            let value = serde_json::to_value(&summary).unwrap_or(Value::Null);
+        Ok(value) => {
             row.insert("status".into(), value["status"].clone());
             row.insert("error".into(), value["error"].clone());
             flatten("", &value, &mut row);

@@ -463,25 +463,7 @@ fn errors_name_the_key() {
         let e = stderr(&o);
         assert!(e.contains(key) && e.contains(rule), "{arrangement}: {e}");
     }
-    // What a set does not do names the key: sweeps of runs.
     let case = pair("kind = \"back_to_back\"\npreload = \"100 N\"");
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--sweep",
-            "speed=1000rpm,2000rpm",
-            "-o",
-            "/nonexistent/never",
-        ],
-        Some(&case),
-    );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("arrangement.kind: \"back_to_back\""),
-        "{}",
-        stderr(&o)
-    );
     // The power loss of every bearing at the set's equilibrium, each as
     // the bearing's own power report.
     let v = json(&["power", "-", "--json"], Some(&case));

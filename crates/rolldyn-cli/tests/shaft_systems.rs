@@ -243,21 +243,37 @@ fn dynamic_run_of_a_pair() {
     );
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--verify"), "{}", stderr(&o));
+    // A sweep of the set in motion: one row per point with each
+    // bearing's numbers.
     let o = rolldyn(
         &[
             "run",
             "-",
             "--sweep",
-            "speed=1000rpm,2000rpm",
+            "speed=8000rpm,10000rpm",
             "--duration",
             "1 ms",
+            "--set",
+            "output.sample_rate=\"5 kHz\"",
             "-o",
             dir.join("sweep").to_str().unwrap(),
         ],
         Some(&case),
     );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let rows: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join("sweep").join("sweep.json")).unwrap(),
+    )
+    .unwrap();
+    let rows = rows.as_array().unwrap();
+    assert_eq!(rows.len(), 2);
+    for row in rows {
+        assert_eq!(row["status"], "completed");
+        assert!(row["bearings.1.mean_axial_load_n"].as_f64().unwrap() > 100.0);
+    }
+    // No checkpoint to resume from.
+    let o = rolldyn(&["run", "--resume", out.to_str().unwrap()], None);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("no sweeps"), "{}", stderr(&o));
 }
 
 /// `rolldyn run` of a `[shaft]`: two 6206 under a gear force, each with

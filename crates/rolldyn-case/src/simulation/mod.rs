@@ -181,7 +181,7 @@ pub fn single_bearing(case: &Case, what: &str) -> Result<(), SimulationError> {
             key: "shaft".into(),
             value: None,
             rule: format!(
-                "{what} models one bearing; a shaft system has its quasi-static solution (`rolldyn quasistatic`) and a single run on the command line (`rolldyn run`, no sweeps; docs/systems.md)"
+                "{what} models one bearing; a shaft system has its quasi-static solution (`rolldyn quasistatic`), power loss (`rolldyn power`) and runs (`rolldyn run`, Python's rolldyn.run; docs/systems.md)"
             ),
         }));
     }
@@ -190,7 +190,7 @@ pub fn single_bearing(case: &Case, what: &str) -> Result<(), SimulationError> {
             key: "arrangement.kind".into(),
             value: Some(crate::case::kind_name(set.kind).into()),
             rule: format!(
-                "\"{}\": {what} models one bearing; a bearing set has its quasi-static solution (`rolldyn quasistatic`), thermal steady state (`rolldyn thermal`) and a single run on the command line (`rolldyn run`, no sweeps; docs/systems.md)",
+                "\"{}\": {what} models one bearing; a bearing set has its quasi-static solution (`rolldyn quasistatic`), power loss (`rolldyn power`), thermal steady state (`rolldyn thermal`) and runs (`rolldyn run`, Python's rolldyn.run; docs/systems.md)",
                 crate::case::kind_name(set.kind)
             ),
         })),
