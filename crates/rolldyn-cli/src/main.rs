@@ -437,6 +437,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     summary.samples
                 );
                 emit(&text)?;
+                if summary.energy_balance_relative_error > 1e-3 {
+                    eprintln!(
+                        "warning: the energy balance closes only to {:.2e} (a converged run: ≤ 1e-3); tighten solver.relative_tolerance",
+                        summary.energy_balance_relative_error
+                    );
+                }
                 if with_report {
                     let path = html_report::write(dir)?;
                     emit(&format!("wrote {}\n", path.display()))?;
