@@ -55,7 +55,7 @@ pub struct Accuracy {
 #[derive(Debug, Clone, Serialize)]
 pub struct Change {
     /// Summary key.
-    pub key: &'static str,
+    pub key: std::borrow::Cow<'static, str>,
     /// Value of the run.
     pub value: f64,
     /// Value at the tighter tolerances.
@@ -221,7 +221,7 @@ pub fn verify(
         let relative_change = (value - reference_value).abs() / reference_value.abs();
         worst = worst.max(relative_change / limit);
         changes.push(Change {
-            key,
+            key: key.into(),
             value,
             reference: reference_value,
             relative_change,
@@ -245,7 +245,7 @@ pub fn verify(
 /// and its description: FASTSIM's strips and elements, or a stress law's
 /// strip grid (left alone beyond the case's limits: FASTSIM's
 /// [`rolldyn::traction::fastsim::MAX_DIVISIONS`], 10 000 grid cells).
-fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<String>, String)> {
+pub(crate) fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<String>, String)> {
     use rolldyn::traction::{TractionIntegration, TractionModel, fastsim::MAX_DIVISIONS};
     match (&case.traction, case.traction_integration) {
         // No grid: the table's error is stated with it (docs/validation.md).

@@ -406,7 +406,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 ..Default::default()
             };
             if case.bearing_set().is_some() || case.shaft.is_some() {
-                let summary = rolldyn_cli::run_set::run(&record, &case, dir, &options)?;
+                let summary = rolldyn_cli::run_set::run_and_verify(&record, &case, dir, &options)?;
                 let mut text = format!(
                     "{}: {} system, simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS); energy balance error {:.2e}\n",
                     summary.status,
@@ -437,6 +437,29 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     summary.samples
                 );
                 emit(&text)?;
+                if let Some(v) = &summary.verify {
+                    let worst = v.changes.iter().max_by(|a, b| {
+                        (a.relative_change / a.limit).total_cmp(&(b.relative_change / b.limit))
+                    });
+                    emit(&format!(
+                        "verify ({}): at ten times tighter tolerances{} the largest change is {}\n",
+                        v.status,
+                        v.traction_grid
+                            .as_ref()
+                            .map_or(String::new(), |g| format!(" and a traction grid of {g}")),
+                        worst.map_or("none".into(), |c| format!(
+                            "{} {:.3} % (limit {} %)",
+                            c.key,
+                            100.0 * c.relative_change,
+                            100.0 * c.limit
+                        ))
+                    ))?;
+                    if v.status != "ok" {
+                        eprintln!(
+                            "warning: --verify: the set's results moved beyond 1 % at ten times tighter tolerances; they are not converged at these settings"
+                        );
+                    }
+                }
                 if summary.energy_balance_relative_error > 1e-3 {
                     eprintln!(
                         "warning: the energy balance closes only to {:.2e} (a converged run: ≤ 1e-3); tighten solver.relative_tolerance",

@@ -8,6 +8,7 @@
 //! and summary, but is not resumed.
 
 use crate::Failure;
+use crate::accuracy::{Change, VERIFY_LIMIT_MEANS, VERIFY_TIGHTENING, Verification};
 use crate::checkpoint::{RECORD_FILE, RunRecord};
 use crate::recorder::Channels;
 use crate::run::{DEFAULT_SAMPLE_RATE, RunOptions, SERIES_DIR};
@@ -65,6 +66,7 @@ pub struct SetSummary {
     pub wall_time_s: f64,
     pub integrator: &'static str,
     pub relative_tolerance: Option<f64>,
+    pub energy_tolerance: Option<f64>,
     pub steps: u64,
     pub rejected_steps: u64,
     pub rhs_evaluations: u64,
@@ -82,6 +84,8 @@ pub struct SetSummary {
     pub mechanical_energy_change_j: f64,
     pub energy_balance_relative_error: f64,
     pub bearings: Vec<SetBearingSummary>,
+    /// The `--verify` comparison (null without `--verify`).
+    pub verify: Option<Verification>,
 }
 
 /// Index of the first recorded channel of `names` called `name`.
@@ -97,9 +101,9 @@ pub fn run(
     options: &RunOptions,
 ) -> Result<SetSummary, Failure> {
     let bad = Failure::BadInput;
-    if options.resume || options.verify {
+    if options.resume {
         return Err(bad(
-            "arrangement: a bearing set's run keeps no checkpoint and has no --verify yet; run it again with tighter solver.relative_tolerance to check it (docs/systems.md)".into(),
+            "--resume: a run of bearings on a shaft keeps no checkpoint (docs/systems.md); run it again".into(),
         ));
     }
     let duration = case.duration.ok_or_else(|| {
@@ -290,6 +294,7 @@ pub fn run(
         wall_time_s: start.elapsed().as_secs_f64(),
         integrator: settings.integrator,
         relative_tolerance: settings.relative_tolerance,
+        energy_tolerance: settings.energy_tolerance,
         steps: stats.steps,
         rejected_steps: stats.rejected_steps,
         rhs_evaluations: stats.rhs_evaluations,
@@ -337,9 +342,117 @@ pub fn run(
                 }
             })
             .collect(),
+        verify: None,
     };
     let json = crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
     write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes())
         .map_err(|e| bad(e.to_string()))?;
+    Ok(summary)
+}
+
+/// [`run`], then with `options.verify` the case again into `DIR/verify/`
+/// at ten times tighter tolerances and a two-fold finer traction grid
+/// (as a single bearing's `--verify`), each bearing's mean axial load,
+/// cage speed and mean inner load compared (limit 1 %) in the summary's
+/// `verify`.
+pub fn run_and_verify(
+    record: &RunRecord,
+    case: &Case,
+    dir: &Path,
+    options: &RunOptions,
+) -> Result<SetSummary, Failure> {
+    let mut summary = run(record, case, dir, options)?;
+    if !options.verify || summary.status != "completed" {
+        return Ok(summary);
+    }
+    let mut tight = record.clone();
+    if let Some(rtol) = summary.relative_tolerance {
+        tight.overrides.set.push(format!(
+            "solver.relative_tolerance={:e}",
+            (rtol / VERIFY_TIGHTENING).max(1e-12)
+        ));
+    }
+    if let Some(eps) = summary.energy_tolerance {
+        tight.overrides.set.push(format!(
+            "solver.energy_tolerance={:e}",
+            (eps / VERIFY_TIGHTENING).max(1e-9)
+        ));
+    }
+    let mut tight_case = tight
+        .overrides
+        .load_text(&tight.source, tight.case_text.as_deref())?;
+    let traction_grid = crate::accuracy::refined_traction_grid(&tight_case).map(|(sets, text)| {
+        tight.overrides.set.extend(sets);
+        text
+    });
+    if traction_grid.is_some() {
+        tight_case = tight
+            .overrides
+            .load_text(&tight.source, tight.case_text.as_deref())?;
+    }
+    let verify_dir = dir.join("verify");
+    let quiet = RunOptions {
+        quiet: true,
+        progress: None,
+        verify: false,
+        ..options.clone()
+    };
+    let reference = run(&tight, &tight_case, &verify_dir, &quiet)?;
+    if reference.status != "completed" {
+        return Err(Failure::Model(format!(
+            "--verify: the run at ten times tighter tolerances in {} ended {}: {}",
+            verify_dir.display(),
+            reference.status,
+            reference.error.unwrap_or_default()
+        )));
+    }
+    let mut changes = Vec::new();
+    let mut worst: f64 = 0.0;
+    for (i, (a, b)) in summary.bearings.iter().zip(&reference.bearings).enumerate() {
+        for (key, value, reference_value) in [
+            (
+                "mean_axial_load_n",
+                a.mean_axial_load_n,
+                b.mean_axial_load_n,
+            ),
+            (
+                "mean_cage_speed_rpm",
+                a.mean_cage_speed_rpm,
+                b.mean_cage_speed_rpm,
+            ),
+            (
+                "mean_inner_load_n",
+                a.mean_inner_load_n,
+                b.mean_inner_load_n,
+            ),
+        ] {
+            if reference_value == 0.0 || !value.is_finite() || !reference_value.is_finite() {
+                continue;
+            }
+            let relative_change = (value - reference_value).abs() / reference_value.abs();
+            worst = worst.max(relative_change / VERIFY_LIMIT_MEANS);
+            changes.push(Change {
+                key: format!("bearings.{i}.{key}").into(),
+                value,
+                reference: reference_value,
+                relative_change,
+                limit: VERIFY_LIMIT_MEANS,
+            });
+        }
+    }
+    summary.verify = Some(Verification {
+        relative_tolerance: reference.relative_tolerance,
+        energy_tolerance: reference.energy_tolerance,
+        traction_grid,
+        directory: verify_dir.display().to_string(),
+        wall_time_s: reference.wall_time_s,
+        energy_balance_relative_error: reference.energy_balance_relative_error,
+        changes,
+        worst_ratio_to_limit: worst,
+        status: if worst <= 1.0 { "ok" } else { "warning" },
+    });
+    let json = crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
+    write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes())
+        .map_err(|e| Failure::BadInput(e.to_string()))?;
     Ok(summary)
 }

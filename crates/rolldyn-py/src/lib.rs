@@ -448,7 +448,8 @@ fn run(
     let set = case.bearing_set().is_some() || case.shaft.is_some();
     let (summary, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
         if set {
-            rolldyn_cli::run_set::run(&record, &case, dir, &options).and_then(|s| json_value(&s))
+            rolldyn_cli::run_set::run_and_verify(&record, &case, dir, &options)
+                .and_then(|s| json_value(&s))
         } else {
             run_case_series(&record, &case, dir, &options).and_then(|o| json_value(&o.summary))
         }
