@@ -130,6 +130,20 @@ pub fn encode(
     model: &BearingModel,
     stats: &RunStatistics,
 ) -> Vec<u8> {
+    encode_parts(record_hash, position, solver, model, &[stats], &[])
+}
+
+/// The bytes of a checkpoint of any system: its state (`model`), one
+/// statistics accumulator per recorded part, and `extra` numbers the run
+/// accumulates itself (none for one bearing: the format stays as it was).
+pub fn encode_parts(
+    record_hash: u64,
+    position: Position,
+    solver: &Solver,
+    model: &dyn Checkpoint,
+    stats: &[&RunStatistics],
+    extra: &[f64],
+) -> Vec<u8> {
     let mut w = StateWriter::new();
     w.tag(TAG);
     w.u64(FORMAT);
@@ -139,7 +153,12 @@ pub fn encode(
     w.f64(position.wall_time);
     solver.save(&mut w);
     model.save(&mut w);
-    stats.save(&mut w);
+    for s in stats {
+        s.save(&mut w);
+    }
+    if !extra.is_empty() {
+        w.f64s(extra);
+    }
     w.into_bytes()
 }
 
@@ -151,6 +170,19 @@ pub fn restore(
     solver: &mut Solver,
     model: &mut BearingModel,
     stats: &mut RunStatistics,
+) -> Result<Position, String> {
+    restore_parts(dir, record_hash, solver, model, &mut [stats], &mut [])
+}
+
+/// [`restore`] of a checkpoint written by [`encode_parts`] (the same
+/// number of statistics and extras).
+pub fn restore_parts(
+    dir: &Path,
+    record_hash: u64,
+    solver: &mut Solver,
+    model: &mut dyn Checkpoint,
+    stats: &mut [&mut RunStatistics],
+    extra: &mut [f64],
 ) -> Result<Position, String> {
     let path = dir.join(CHECKPOINT_FILE);
     let bytes = std::fs::read(&path).map_err(|e| {
@@ -186,7 +218,12 @@ pub fn restore(
     };
     solver.restore(&mut r).map_err(bad)?;
     model.restore(&mut r).map_err(bad)?;
-    stats.restore(&mut r).map_err(bad)?;
+    for s in stats.iter_mut() {
+        s.restore(&mut r).map_err(bad)?;
+    }
+    if !extra.is_empty() {
+        r.f64s_into("the run's accumulators", extra).map_err(bad)?;
+    }
     if !r.is_done() {
         return Err(format!(
             "--resume {}: {} has trailing bytes",

@@ -4,18 +4,25 @@
 //! Writes `DIR/run.json`, `DIR/timeseries.parquet` (each bearing's
 //! channels prefixed `bearing{i}_`, then the shaft's and the system's
 //! energy) as the run goes, and `DIR/summary.json` at the end (keys in
-//! docs/cli.md). No checkpoints: an interrupted run keeps its time series
-//! and summary, but is not resumed.
+//! docs/cli.md), with checkpoints as a single bearing's run
+//! (`crate::checkpoint`): `--resume` continues an interrupted run, `--until`
+//! extends a finished one.
 
 use crate::Failure;
 use crate::accuracy::{Change, VERIFY_LIMIT_MEANS, VERIFY_TIGHTENING, Verification};
-use crate::checkpoint::{RECORD_FILE, RunRecord};
+use crate::checkpoint::{self, Position, RECORD_FILE, RunRecord};
 use crate::recorder::Channels;
 use crate::run::{DEFAULT_SAMPLE_RATE, RunOptions, SERIES_DIR};
+use crate::run_stats::RunStatistics;
+use std::cell::RefCell;
+
+/// A checkpoint waits at least this many times as long as the last one
+/// took (as a single bearing's run).
+const CHECKPOINT_COST_FACTOR: f64 = 50.0;
 use indicatif::{ProgressBar, ProgressStyle};
 use rolldyn::dynamics::ContactSample;
 use rolldyn::dynamics::shaft::ShaftDynamics;
-use rolldyn::integrate::{Integrator, RunEnd, Sampling, run_from};
+use rolldyn::integrate::{Integrator, RunEnd, Sampling, Solver, run_from};
 use rolldyn::quasistatic::system::Orientation;
 use rolldyn_case::Case;
 use rolldyn_case::case::kind_name;
@@ -101,11 +108,6 @@ pub fn run(
     options: &RunOptions,
 ) -> Result<SetSummary, Failure> {
     let bad = Failure::BadInput;
-    if options.resume {
-        return Err(bad(
-            "--resume: a run of bearings on a shaft keeps no checkpoint (docs/systems.md); run it again".into(),
-        ));
-    }
     let duration = case.duration.ok_or_else(|| {
         bad("solver.duration: missing: give the simulated time (or --duration, e.g. --duration \"0.05 s\")".into())
     })?;
@@ -158,23 +160,66 @@ pub fn run(
     let mut solver = settings
         .build(&system, &y0)
         .map_err(|e| bad(e.to_string()))?;
-    std::fs::create_dir_all(dir)
-        .map_err(|e| bad(format!("cannot create {}: {e}", dir.display())))?;
-    let _ = std::fs::remove_file(dir.join(crate::checkpoint::CHECKPOINT_FILE));
-    let text = record.to_json().map_err(Failure::Internal)?;
-    write_atomic(&dir.join(RECORD_FILE), text.as_bytes()).map_err(|e| bad(e.to_string()))?;
+    let record_hash = record.hash();
     let metadata = [
         ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
         ("case", record.source.clone()),
         ("title", case.title.clone().unwrap_or_default()),
     ];
-    let mut writer = SeriesWriter::create(
-        &dir.join(SERIES_DIR),
-        &series,
-        &metadata,
-        case.output.float32,
-    )
-    .map_err(|e| bad(e.to_string()))?;
+    let series_dir = dir.join(SERIES_DIR);
+    let mut axial_sums = vec![0.0; count];
+    let (next_sample, wall_before, writer) = if options.resume {
+        let mut stats: Vec<&mut RunStatistics> =
+            channels.iter_mut().map(|c| &mut c.stats).collect();
+        let position = checkpoint::restore_parts(
+            dir,
+            options.extends.unwrap_or(record_hash),
+            &mut solver,
+            &mut system,
+            &mut stats,
+            &mut axial_sums,
+        )
+        .map_err(bad)?;
+        let reached = solver.t();
+        match options.extends {
+            Some(_) if reached >= duration => {
+                return Err(bad(format!(
+                    "--until {duration} s: the run in {} is already at t = {reached} s; extend it beyond that",
+                    dir.display()
+                )));
+            }
+            Some(_) => {
+                let text = record.to_json().map_err(Failure::Internal)?;
+                write_atomic(&dir.join(RECORD_FILE), text.as_bytes())
+                    .map_err(|e| bad(e.to_string()))?;
+            }
+            None if reached >= duration => {
+                return Err(bad(format!(
+                    "--resume {}: the run is complete (t = {reached} s); `--until T` extends it",
+                    dir.display()
+                )));
+            }
+            None => {}
+        }
+        let writer = SeriesWriter::resume(
+            &series_dir,
+            &series,
+            &metadata,
+            position.rows,
+            case.output.float32,
+        )
+        .map_err(|e| bad(format!("--resume: {e}")))?;
+        (position.next_sample, position.wall_time, writer)
+    } else {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| bad(format!("cannot create {}: {e}", dir.display())))?;
+        let _ = std::fs::remove_file(dir.join(checkpoint::CHECKPOINT_FILE));
+        let text = record.to_json().map_err(Failure::Internal)?;
+        write_atomic(&dir.join(RECORD_FILE), text.as_bytes()).map_err(|e| bad(e.to_string()))?;
+        let writer = SeriesWriter::create(&series_dir, &series, &metadata, case.output.float32)
+            .map_err(|e| bad(e.to_string()))?;
+        (0, 0.0, writer)
+    };
     let stop = options.stop_flag();
     let bar = (!options.quiet && std::io::stderr().is_terminal()).then(|| {
         let bar = ProgressBar::new(1000);
@@ -192,13 +237,31 @@ pub fn run(
     let mut contacts = vec![ContactSample::default(); l.balls];
     let mut combined = Vec::with_capacity(series.width());
     let mut loads = vec![[0.0; 5]; count];
-    let mut axial_sums = vec![0.0; count];
-    let mut samples = 0u64;
-    let mut write_error = None;
     let start = Instant::now();
     let mut last_draw = 0.0;
-    let balance0 =
-        rolldyn::integrate::OdeSystem::energy_balance(&system, 0.0, &y0).unwrap_or_default();
+    let context = Context {
+        kind,
+        mounting_preload,
+        mounted: &mounted,
+        cold: &cold,
+        settings: &settings,
+        duration,
+        balance0: rolldyn::integrate::OdeSystem::energy_balance(&system, 0.0, &y0)
+            .unwrap_or_default(),
+        dir,
+        record_hash,
+    };
+    let recording = RefCell::new(Recording {
+        channels,
+        axial_sums,
+        writer,
+        write_error: None,
+    });
+    // A fresh run delivers sample 0 before its first step.
+    let mut next_sample = next_sample + u64::from(!options.resume);
+    let mut last_checkpoint = Instant::now();
+    let mut checkpoint_cost = 0.0;
+    let mut checkpoint_error = None;
     let report = run_from(
         &mut system,
         &mut solver,
@@ -206,11 +269,12 @@ pub fn run(
         Sampling {
             t0: 0.0,
             rate: sample_rate,
-            next: 0,
+            next: next_sample.saturating_sub(u64::from(!options.resume)),
         },
         &stop,
         |s: &ShaftDynamics, t, y| {
-            for (i, (c, row)) in channels.iter_mut().zip(&mut rows).enumerate() {
+            let r = &mut *recording.borrow_mut();
+            for (i, (c, row)) in r.channels.iter_mut().zip(&mut rows).enumerate() {
                 s.bearing_state(i, y, &mut own);
                 c.fill(s.bearing(i), t, &own, row, &mut contacts);
                 loads[i] = s.ring_load(i, c.derivative());
@@ -221,7 +285,7 @@ pub fn run(
             let acceleration = s.shaft_acceleration(t, &loads);
             combined.clear();
             combined.push(t);
-            for (i, (c, row)) in channels.iter_mut().zip(&mut rows).enumerate() {
+            for (i, (c, row)) in r.channels.iter_mut().zip(&mut rows).enumerate() {
                 let ring = s.at_bearing(i, &acceleration);
                 for (k, a) in patch[..3].iter().zip(ring) {
                     if let Some(k) = k {
@@ -233,22 +297,22 @@ pub fn run(
                 // The bearing's balls push its ring back from its loaded
                 // side: the axial load it carries is −F_x.
                 combined.push(-loads[i][0]);
-                axial_sums[i] += -loads[i][0];
+                r.axial_sums[i] += -loads[i][0];
             }
             let sh = s.shaft();
             combined.extend_from_slice(&y[sh..sh + 5]);
             let b = rolldyn::integrate::OdeSystem::energy_balance(s, t, y).unwrap_or_default();
             combined.extend_from_slice(&[b.work, b.dissipated, b.mechanical]);
-            samples += 1;
-            if write_error.is_none() {
-                write_error = writer.push(&combined).err();
-                if write_error.is_some() {
+            if r.write_error.is_none() {
+                r.write_error = r.writer.push(&combined).err();
+                if r.write_error.is_some() {
                     stop.store(true, Ordering::Relaxed);
                 }
             }
         },
-        |_, s, _| {
-            let t = s.t();
+        |s, solver, next| {
+            next_sample = next;
+            let t = solver.t();
             if t - last_draw >= duration / 1000.0 {
                 last_draw = t;
                 if let Some(bar) = &bar {
@@ -259,95 +323,217 @@ pub fn run(
                     progress.store((t / duration).to_bits(), Ordering::Relaxed);
                 }
             }
+            let since = last_checkpoint.elapsed().as_secs_f64();
+            if checkpoint_error.is_none()
+                && since
+                    >= options
+                        .checkpoint_interval
+                        .max(CHECKPOINT_COST_FACTOR * checkpoint_cost)
+            {
+                let begun = Instant::now();
+                let wall = wall_before + start.elapsed().as_secs_f64();
+                let position = Position {
+                    next_sample: next,
+                    rows: recording.borrow().channels[0].rows(),
+                    wall_time: wall,
+                };
+                checkpoint_error = context
+                    .write(
+                        s,
+                        solver,
+                        &mut recording.borrow_mut(),
+                        None,
+                        Some(position),
+                        wall,
+                    )
+                    .err();
+                checkpoint_cost = begun.elapsed().as_secs_f64();
+                last_checkpoint = Instant::now();
+            }
         },
     );
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    writer.sync().map_err(|e| bad(e.to_string()))?;
-    if let Some(e) = write_error {
+    if let Some(e) = checkpoint_error {
+        return Err(e);
+    }
+    let mut recording = recording.into_inner();
+    if let Some(e) = recording.write_error.take() {
         return Err(bad(format!(
-            "{e}; the run stopped at t = {:.6} s",
+            "{e}; the run stopped at t = {:.6} s (the checkpoint before it, if any, resumes it)",
             solver.t()
         )));
     }
-    let end = rolldyn::integrate::OdeSystem::energy_balance(&system, solver.t(), solver.y())
-        .unwrap_or_default();
-    let change = end.mechanical - balance0.mechanical;
-    // Bearing 0's kinematics for the characteristic lines of
-    // `rolldyn spectrum` (as a single bearing's summary gives them).
-    let first = channels[0].stats.window();
-    let g = system.bearing(0).geometry();
-    let stats = solver.stats();
-    let (status, error) = match &report.end {
-        RunEnd::Completed => ("completed", None),
-        RunEnd::Interrupted { .. } => ("interrupted", None),
-        RunEnd::Failed { error } => ("failed", Some(error.to_string())),
-    };
-    let summary = SetSummary {
-        status,
-        error,
-        kind: kind.map_or("shaft", kind_name),
-        mounting_preload_n: mounting_preload,
-        requested_duration_s: duration,
-        simulated_time_s: solver.t(),
-        wall_time_s: start.elapsed().as_secs_f64(),
-        integrator: settings.integrator,
-        relative_tolerance: settings.relative_tolerance,
-        energy_tolerance: settings.energy_tolerance,
-        steps: stats.steps,
-        rejected_steps: stats.rejected_steps,
-        rhs_evaluations: stats.rhs_evaluations,
-        samples,
-        averaging_window_s: first.span(),
-        inner_ring_speed_rpm: first.mean("inner_ring_speed_rpm"),
-        mean_cage_speed_rpm: first.mean("cage_speed_rpm"),
-        ball_count: g.ball_count,
-        ball_diameter_m: g.ball_diameter,
-        pitch_diameter_m: g.pitch_diameter,
-        mean_contact_angle_inner_deg: first.loaded_mean("contact_angle_inner_deg"),
-        mean_contact_angle_outer_deg: first.loaded_mean("contact_angle_outer_deg"),
-        drive_work_j: end.work,
-        dissipated_energy_j: end.dissipated,
-        mechanical_energy_change_j: change,
-        energy_balance_relative_error: ((end.work - end.dissipated) - change).abs()
-            / end
-                .work
-                .abs()
-                .max(end.dissipated.abs())
-                .max(change.abs())
-                .max(f64::MIN_POSITIVE),
-        bearings: channels
-            .iter()
-            .enumerate()
-            .map(|(i, c)| {
-                let m = &mounted[i];
-                let w = c.stats.window();
-                SetBearingSummary {
-                    position_m: m.position,
-                    orientation: match m.orientation {
-                        Orientation::Forward => "forward",
-                        Orientation::Reversed => "reversed",
-                    },
-                    quasistatic_axial_load_n: cold.bearings[i]
-                        .as_ref()
-                        .map_or(0.0, |e| e.reaction[0]),
-                    mean_axial_load_n: axial_sums[i] / samples.max(1) as f64,
-                    mean_cage_speed_rpm: w.mean("cage_speed_rpm"),
-                    mean_inner_load_n: w.loaded_mean("load_inner_n"),
-                    largest_inner_load_n: w.largest_load("inner"),
-                    largest_outer_load_n: w.largest_load("outer"),
-                    drive_work_j: c.stats.last("drive_work_j"),
-                    dissipated_energy_j: c.stats.last("dissipated_energy_j"),
-                }
-            })
-            .collect(),
-        verify: None,
-    };
-    let json = crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
-    write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes())
-        .map_err(|e| bad(e.to_string()))?;
-    Ok(summary)
+    let wall = wall_before + start.elapsed().as_secs_f64();
+    // An interrupted or completed run keeps a checkpoint at its last step
+    // (to continue, or to extend with `--until`); a failed one keeps its
+    // last periodic checkpoint.
+    let position = (!matches!(report.end, RunEnd::Failed { .. })).then(|| Position {
+        next_sample,
+        rows: recording.channels[0].rows(),
+        wall_time: wall,
+    });
+    context.write(
+        &system,
+        &solver,
+        &mut recording,
+        Some(&report.end),
+        position,
+        wall,
+    )
+}
+
+/// What a set's run records besides the integrator: each bearing's
+/// channels (with their statistics), the axial loads' sums, the series.
+struct Recording {
+    channels: Vec<Channels>,
+    axial_sums: Vec<f64>,
+    writer: SeriesWriter,
+    write_error: Option<rolldyn_io::OutputError>,
+}
+
+/// What a set's summary and checkpoint are written from.
+struct Context<'a> {
+    kind: Option<rolldyn::quasistatic::system::SetKind>,
+    mounting_preload: Option<f64>,
+    mounted: &'a [rolldyn::quasistatic::system::MountedBearing],
+    cold: &'a rolldyn::quasistatic::system::SystemEquilibrium,
+    settings: &'a rolldyn_case::simulation::SolverSettings,
+    duration: f64,
+    balance0: rolldyn::integrate::EnergyBalance,
+    dir: &'a Path,
+    record_hash: u64,
+}
+
+impl Context<'_> {
+    /// Writes the series' rows not yet on disk, the checkpoint (when
+    /// `position` is given) and `summary.json`, each atomically, in that
+    /// order; `end` None: a checkpoint during the run (status `partial`).
+    fn write(
+        &self,
+        system: &ShaftDynamics,
+        solver: &Solver,
+        recording: &mut Recording,
+        end: Option<&RunEnd>,
+        position: Option<Position>,
+        wall: f64,
+    ) -> Result<SetSummary, Failure> {
+        let bad = |e: String| Failure::BadInput(e);
+        recording.writer.sync().map_err(|e| bad(e.to_string()))?;
+        if let Some(position) = position {
+            let stats: Vec<&RunStatistics> = recording.channels.iter().map(|c| &c.stats).collect();
+            let bytes = checkpoint::encode_parts(
+                self.record_hash,
+                position,
+                solver,
+                system,
+                &stats,
+                &recording.axial_sums,
+            );
+            write_atomic(&self.dir.join(checkpoint::CHECKPOINT_FILE), &bytes)
+                .map_err(|e| bad(e.to_string()))?;
+        }
+        let summary = self.summarise(system, solver, recording, end, wall);
+        let json =
+            crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
+        write_atomic(&self.dir.join("summary.json"), (json + "\n").as_bytes())
+            .map_err(|e| bad(e.to_string()))?;
+        Ok(summary)
+    }
+
+    fn summarise(
+        &self,
+        system: &ShaftDynamics,
+        solver: &Solver,
+        recording: &Recording,
+        end: Option<&RunEnd>,
+        wall: f64,
+    ) -> SetSummary {
+        let balance = rolldyn::integrate::OdeSystem::energy_balance(system, solver.t(), solver.y())
+            .unwrap_or_default();
+        let change = balance.mechanical - self.balance0.mechanical;
+        // Bearing 0's kinematics for the characteristic lines of
+        // `rolldyn spectrum` (as a single bearing's summary gives them).
+        let channels = &recording.channels;
+        let first = channels[0].stats.window();
+        let g = system.bearing(0).geometry();
+        let stats = solver.stats();
+        let samples = channels[0].rows();
+        let (status, error) = match end {
+            None => (
+                "partial",
+                Some(format!(
+                    "checkpoint at t = {:.6} s of a run in progress (or killed); `rolldyn run --resume {}` continues it",
+                    solver.t(),
+                    self.dir.display()
+                )),
+            ),
+            Some(RunEnd::Completed) => ("completed", None),
+            Some(RunEnd::Interrupted { .. }) => ("interrupted", None),
+            Some(RunEnd::Failed { error }) => ("failed", Some(error.to_string())),
+        };
+        SetSummary {
+            status,
+            error,
+            kind: self.kind.map_or("shaft", kind_name),
+            mounting_preload_n: self.mounting_preload,
+            requested_duration_s: self.duration,
+            simulated_time_s: solver.t(),
+            wall_time_s: wall,
+            integrator: self.settings.integrator,
+            relative_tolerance: self.settings.relative_tolerance,
+            energy_tolerance: self.settings.energy_tolerance,
+            steps: stats.steps,
+            rejected_steps: stats.rejected_steps,
+            rhs_evaluations: stats.rhs_evaluations,
+            samples,
+            averaging_window_s: first.span(),
+            inner_ring_speed_rpm: first.mean("inner_ring_speed_rpm"),
+            mean_cage_speed_rpm: first.mean("cage_speed_rpm"),
+            ball_count: g.ball_count,
+            ball_diameter_m: g.ball_diameter,
+            pitch_diameter_m: g.pitch_diameter,
+            mean_contact_angle_inner_deg: first.loaded_mean("contact_angle_inner_deg"),
+            mean_contact_angle_outer_deg: first.loaded_mean("contact_angle_outer_deg"),
+            drive_work_j: balance.work,
+            dissipated_energy_j: balance.dissipated,
+            mechanical_energy_change_j: change,
+            energy_balance_relative_error: ((balance.work - balance.dissipated) - change).abs()
+                / balance
+                    .work
+                    .abs()
+                    .max(balance.dissipated.abs())
+                    .max(change.abs())
+                    .max(f64::MIN_POSITIVE),
+            bearings: channels
+                .iter()
+                .enumerate()
+                .map(|(i, c)| {
+                    let m = &self.mounted[i];
+                    let w = c.stats.window();
+                    SetBearingSummary {
+                        position_m: m.position,
+                        orientation: match m.orientation {
+                            Orientation::Forward => "forward",
+                            Orientation::Reversed => "reversed",
+                        },
+                        quasistatic_axial_load_n: self.cold.bearings[i]
+                            .as_ref()
+                            .map_or(0.0, |e| e.reaction[0]),
+                        mean_axial_load_n: recording.axial_sums[i] / samples.max(1) as f64,
+                        mean_cage_speed_rpm: w.mean("cage_speed_rpm"),
+                        mean_inner_load_n: w.loaded_mean("load_inner_n"),
+                        largest_inner_load_n: w.largest_load("inner"),
+                        largest_outer_load_n: w.largest_load("outer"),
+                        drive_work_j: c.stats.last("drive_work_j"),
+                        dissipated_energy_j: c.stats.last("dissipated_energy_j"),
+                    }
+                })
+                .collect(),
+            verify: None,
+        }
+    }
 }
 
 /// [`run`], then with `options.verify` the case again into `DIR/verify/`

@@ -259,9 +259,10 @@ fn dynamic_run_of_a_pair() {
         assert_eq!(row["status"], "completed");
         assert!(row["bearings.1.mean_axial_load_n"].as_f64().unwrap() > 100.0);
     }
-    // No checkpoint to resume from.
+    // A completed run is not resumed, only extended.
     let o = rolldyn(&["run", "--resume", out.to_str().unwrap()], None);
     assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--until"), "{}", stderr(&o));
 }
 
 /// `rolldyn run` of a `[shaft]`: two 6206 under a gear force, each with
@@ -459,4 +460,93 @@ fn a_shaft_bearing_takes_its_fits() {
         "{}",
         stderr(&o)
     );
+}
+
+/// A set's run killed after two checkpoints resumes to the bytes of the
+/// uninterrupted run (series and summary), as a single bearing's does;
+/// `--until` extends a finished one without a gap.
+#[test]
+fn a_set_run_resumes_bit_identically() {
+    use std::process::{Command, Stdio};
+    use std::time::{Duration, Instant};
+    let case = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
+    let dir = temp_dir("set-resume");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("case.toml");
+    std::fs::write(&path, &case).unwrap();
+    let args = |out: &str| {
+        vec![
+            "run".to_string(),
+            path.to_str().unwrap().to_string(),
+            "--duration".into(),
+            "80 ms".into(),
+            "--set".into(),
+            "output.sample_rate=\"5 kHz\"".into(),
+            "--checkpoint-interval".into(),
+            "0 s".into(),
+            "-o".into(),
+            out.to_string(),
+        ]
+    };
+    let (whole, killed) = (dir.join("whole"), dir.join("killed"));
+    let o = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .args(args(whole.to_str().unwrap()))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .args(args(killed.to_str().unwrap()))
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let begun = Instant::now();
+    let mut seen = Vec::new();
+    while seen.len() < 2 {
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "the run ended before it could be killed; lengthen it"
+        );
+        assert!(begun.elapsed() < Duration::from_secs(120));
+        if let Ok(m) = std::fs::metadata(killed.join("checkpoint.bin")) {
+            let stamp = m.modified().unwrap();
+            if !seen.contains(&stamp) {
+                seen.push(stamp);
+            }
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let read = |d: &std::path::Path| {
+        let mut v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(d.join("summary.json")).unwrap())
+                .unwrap();
+        v.as_object_mut().unwrap().remove("wall_time_s");
+        v
+    };
+    assert_eq!(read(&killed)["status"], "partial");
+    let o = rolldyn(&["run", "--resume", killed.to_str().unwrap()], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(
+        common::series_bytes(&killed),
+        common::series_bytes(&whole),
+        "the resumed series differs from the uninterrupted one"
+    );
+    assert_eq!(read(&killed), read(&whole));
+    let o = rolldyn(
+        &[
+            "run",
+            "--resume",
+            whole.to_str().unwrap(),
+            "--until",
+            "84 ms",
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let extended = read(&whole);
+    assert_eq!(extended["status"], "completed");
+    assert_eq!(extended["samples"], 421);
+    std::fs::remove_dir_all(&dir).ok();
 }

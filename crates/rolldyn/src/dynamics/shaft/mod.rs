@@ -41,6 +41,7 @@ use crate::error::InvalidParameter;
 use crate::integrate::{BlockSplit, EnergyBalance, OdeSystem};
 
 mod block_split;
+mod checkpoint;
 use crate::operating::{LoadProfile, Loads};
 use crate::quasistatic::system::{MountedBearing, SystemEquilibrium};
 use std::sync::Mutex;
