@@ -107,17 +107,17 @@ impl ThermalOutput {
 /// What `rolldyn thermal --json` prints.
 pub fn report(args: &ThermalArgs) -> Result<ThermalOutput, Failure> {
     let (_, case) = args.case.load()?;
-    if let Some(set) =
-        rolldyn_case::simulation::BearingSet::from_case(&case).map_err(crate::simulation_failure)?
-    {
+    if case.bearing_set().is_some() || case.shaft.is_some() {
         if let Some(t) = &args.transient {
             return Err(bad_arg(
                 "--transient",
                 t,
-                "the warm-up is computed for one bearing; a bearing set ([arrangement]) gives its steady state only",
+                "the warm-up is computed for one bearing; bearings on a shaft give their steady state only",
             ));
         }
-        return Ok(ThermalOutput::Set(crate::thermal_set::report(&case, &set)?));
+    }
+    if let Some(report) = crate::thermal_set::report(&case)? {
+        return Ok(ThermalOutput::Set(report));
     }
     Ok(ThermalOutput::Bearing(Box::new(bearing_report(
         args, &case,

@@ -1,7 +1,7 @@
-//! `rolldyn thermal` of a bearing set (`[arrangement]`): every bearing's
-//! coupled thermal steady state with the set's equilibrium in the loop,
-//! and the preload at the operating temperatures against the preload at
-//! the reference temperature (docs/systems.md, "Temperature"; keys in
+//! `rolldyn thermal` of a bearing set (`[arrangement]`) or a `[shaft]`:
+//! every bearing's coupled thermal steady state with the system's
+//! equilibrium in the loop, and a set's preload at the operating
+//! temperatures against its preload at the reference temperature (docs/systems.md, "Temperature"; keys in
 //! docs/cli.md).
 
 use crate::Failure;
@@ -10,7 +10,7 @@ use crate::thermal::temperatures;
 use rolldyn::quasistatic::system::{MountedBearing, Orientation};
 use rolldyn_case::Case;
 use rolldyn_case::case::{Preload, kind_name};
-use rolldyn_case::simulation::{BearingSet, SetThermal};
+use rolldyn_case::simulation::{BearingSet, SetThermal, ShaftModel};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -55,21 +55,56 @@ fn axial_load(state: &Option<rolldyn::quasistatic::Equilibrium>) -> f64 {
     state.as_ref().map_or(0.0, MountedBearing::axial_load)
 }
 
-/// The set's report (`set` built from `case`).
-pub fn report(case: &Case, set: &BearingSet) -> Result<SetThermalReport, Failure> {
+/// The report of a set's (`[arrangement]`) or shaft's (`[shaft]`)
+/// thermal steady state, None for one bearing.
+pub fn report(case: &Case) -> Result<Option<SetThermalReport>, Failure> {
+    let fail = crate::simulation_failure;
+    if let Some(set) = BearingSet::from_case(case).map_err(fail)? {
+        let thermal = set.thermal_steady_state(case).map_err(fail)?;
+        let n = set.system.bearings.len();
+        let preload = match set.arrangement.preload {
+            Preload::Force(f) => Some(f),
+            _ => None,
+        };
+        return build(
+            case,
+            kind_name(set.arrangement.kind),
+            preload,
+            &set.system.bearings,
+            &vec![case.clone(); n],
+            thermal,
+        )
+        .map(Some);
+    }
+    if let Some(shaft) = ShaftModel::from_case(case).map_err(fail)? {
+        let thermal = shaft.thermal_steady_state(case).map_err(fail)?;
+        let cases: Vec<Case> = shaft.bearings.iter().map(|b| b.case.clone()).collect();
+        return build(case, "shaft", None, &shaft.system.bearings, &cases, thermal).map(Some);
+    }
+    Ok(None)
+}
+
+/// The report of a system's thermal steady state: `mounted` its bearings
+/// with their own `cases`.
+fn build(
+    case: &Case,
+    kind: &'static str,
+    mounting_preload: Option<f64>,
+    mounted: &[MountedBearing],
+    cases: &[Case],
+    thermal: SetThermal,
+) -> Result<SetThermalReport, Failure> {
     let SetThermal {
         cold,
         hot,
         preload_at_speed,
-    } = set
-        .thermal_steady_state(case)
-        .map_err(crate::simulation_failure)?;
+    } = thermal;
     let inputs = case
         .thermal_inputs()
         .map_err(|e| Failure::BadInput(format!("{}: {}", e.key, e.rule)))?;
     let mut bearings = Vec::with_capacity(hot.bearings.len());
     for (i, b) in hot.bearings.iter().enumerate() {
-        let mounted = &set.system.bearings[i];
+        let mounted = &mounted[i];
         let state = hot.equilibrium.bearings[i]
             .as_ref()
             .ok_or_else(|| Failure::Model(format!("bearing {i} is unloaded")))?;
@@ -84,24 +119,21 @@ pub fn report(case: &Case, set: &BearingSet) -> Result<SetThermalReport, Failure
             heat_to_ambient_w: b.thermal.to_ambient,
             heat_to_oil_w: b.thermal.to_oil,
             oil_viscosity_pa_s: b.oil_viscosity,
-            reference_clearance_m: case.bearing.geometry.equivalent_diametral_clearance(),
+            reference_clearance_m: cases[i].bearing.geometry.equivalent_diametral_clearance(),
             operating_clearance_m: b.operating_clearance,
             reference_axial_offset_m: mounted.axial_offset,
             operating_axial_offset_m: b.axial_offset,
             reference_axial_load_n: axial_load(&cold.bearings[i]),
             operating_axial_load_n: MountedBearing::axial_load(state),
-            power: PowerReport::new(case, state, &b.power)?,
+            power: PowerReport::new(&cases[i], state, &b.power)?,
         });
     }
     Ok(SetThermalReport {
         converged: hot.converged,
         iterations: hot.history.len(),
         history_k: hot.history.clone(),
-        kind: kind_name(set.arrangement.kind),
-        mounting_preload_n: match set.arrangement.preload {
-            Preload::Force(f) => Some(f),
-            _ => None,
-        },
+        kind,
+        mounting_preload_n: mounting_preload,
         reference_preload_at_speed_n: preload_at_speed.map(|p| p[0]),
         operating_preload_at_speed_n: preload_at_speed.map(|p| p[1]),
         axial_strain: hot.axial_strain,
@@ -117,8 +149,12 @@ impl SetThermalReport {
         let mut out = String::new();
         let _ = writeln!(
             out,
-            "Thermal steady state of the {} set ({} after {} passes; last change {:.2e} K)",
-            self.kind,
+            "Thermal steady state of the {} ({} after {} passes; last change {:.2e} K)",
+            if self.kind == "shaft" {
+                "shaft system".to_string()
+            } else {
+                format!("{} set", self.kind)
+            },
             if self.converged {
                 "converged"
             } else {

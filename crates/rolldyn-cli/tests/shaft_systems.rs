@@ -550,3 +550,38 @@ fn a_set_run_resumes_bit_identically() {
     assert_eq!(extended["samples"], 421);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `rolldyn thermal` of a `[shaft]`: every bearing's network under the
+/// case's `[thermal]`; the more loaded bearing runs warmer; the shaft's
+/// axial growth moves the located bearings' offsets apart; an elastic
+/// shaft is refused with the key.
+#[test]
+fn thermal_steady_state_of_a_shaft() {
+    let case = format!(
+        "{}\n[thermal]\noil_flow = \"0.5 L/min\"\n",
+        SHAFT.replace("ORIENTATION", "forward")
+    );
+    let v = json(&["thermal", "-", "--json"], Some(&case));
+    assert_eq!(v["kind"], "shaft");
+    assert_eq!(v["converged"], true);
+    assert!(v["operating_preload_at_speed_n"].is_null());
+    let b = v["bearings"].as_array().unwrap();
+    let f = |b: &serde_json::Value, k: &str| b[k].as_f64().unwrap();
+    // Bearing 1 carries two thirds of the radial load.
+    assert!(f(&b[1], "heat_generated_w") > f(&b[0], "heat_generated_w"));
+    assert!(f(&b[1]["temperatures_c"], "inner_ring") > f(&b[0]["temperatures_c"], "inner_ring"));
+    let strain = f(&v, "axial_strain");
+    assert!(strain > 0.0);
+    for (bearing, x) in b.iter().zip([-0.06, 0.06]) {
+        let moved = f(bearing, "operating_axial_offset_m") - f(bearing, "reference_axial_offset_m");
+        assert!(
+            (moved - x * strain).abs() < 1e-12,
+            "{moved} vs {}",
+            x * strain
+        );
+    }
+    let elastic = case.replacen("[shaft]\n", "[shaft]\ndiameter = \"25 mm\"\n", 1);
+    let o = rolldyn(&["thermal", "-"], Some(&elastic));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("shaft.diameter"), "{}", stderr(&o));
+}

@@ -119,25 +119,16 @@ impl BearingSet {
     /// (`case` is the set's own case: its bearing, lubricant and
     /// `[thermal]` are every bearing's).
     pub fn thermal_steady_state(&self, case: &Case) -> Result<SetThermal, SimulationError> {
-        let heat = super::steady::coupled_problem(case)?;
-        let [shaft, housing] = case.thermal.shaft_housing_expansion;
-        let problem = SetThermalProblem {
-            bearings: vec![heat; self.system.bearings.len()],
-            system: &self.system,
-            conditions: self.conditions,
-            options: self.options,
-            axial: AxialExpansion { shaft, housing },
-        };
         let cold = self.solve()?;
-        let hot = set_steady(&problem, &cold, &CoupledOptions::default()).map_err(|e| match e {
-            SetThermalError::Coupled(c) => super::steady::coupled_failure(c),
-            SetThermalError::System(s) => SimulationError::Set(s),
-            unloaded @ SetThermalError::Unloaded { .. } => SimulationError::Case(Invalid {
-                key: "arrangement".into(),
-                value: None,
-                rule: unloaded.to_string(),
-            }),
-        })?;
+        let hot = system_thermal(
+            &vec![case.clone(); self.system.bearings.len()],
+            case,
+            &self.system,
+            &self.conditions,
+            &self.options,
+            &cold,
+            "arrangement",
+        )?;
         let preload_at_speed = match self.preload_at_speed()? {
             None => None,
             Some(cold_preload) => {
@@ -173,6 +164,50 @@ impl BearingSet {
             .system
             .lift_off_load(0.0, self.conditions.control, &self.options)?)
     }
+}
+
+/// The coupled thermal steady state of bearings on a shaft: bearing i
+/// with `cases[i]`'s geometry, materials and lubricant under `system_case`'s
+/// `[thermal]` (one machine: one ambient, one oil supply, one shaft and
+/// housing), from their equilibrium `cold`; an unloaded bearing is
+/// refused under `key`.
+fn system_thermal(
+    cases: &[Case],
+    system_case: &Case,
+    system: &ShaftSystem,
+    conditions: &SystemConditions,
+    options: &SolverOptions,
+    cold: &SystemEquilibrium,
+    key: &str,
+) -> Result<SetThermalSolution, SimulationError> {
+    let cases: Vec<Case> = cases
+        .iter()
+        .map(|c| Case {
+            thermal: system_case.thermal.clone(),
+            ..c.clone()
+        })
+        .collect();
+    let bearings = cases
+        .iter()
+        .map(super::steady::coupled_problem)
+        .collect::<Result<Vec<_>, _>>()?;
+    let [shaft, housing] = system_case.thermal.shaft_housing_expansion;
+    let problem = SetThermalProblem {
+        bearings,
+        system,
+        conditions: *conditions,
+        options: *options,
+        axial: AxialExpansion { shaft, housing },
+    };
+    set_steady(&problem, cold, &CoupledOptions::default()).map_err(|e| match e {
+        SetThermalError::Coupled(c) => super::steady::coupled_failure(c),
+        SetThermalError::System(s) => SimulationError::Set(s),
+        unloaded @ SetThermalError::Unloaded { .. } => SimulationError::Case(Invalid {
+            key: key.into(),
+            value: None,
+            rule: unloaded.to_string(),
+        }),
+    })
 }
 
 /// One bearing of a `[shaft]` system: its preset's case at the system's
@@ -300,6 +335,35 @@ impl ShaftModel {
             Some(eq) => Ok(eq.system),
             None => Ok(self.system.solve_general(&self.conditions, &self.options)?),
         }
+    }
+
+    /// The system's coupled thermal steady state (every bearing's network
+    /// with `case`'s `[thermal]`; a rigid shaft's), with no preload to
+    /// report.
+    pub fn thermal_steady_state(&self, case: &Case) -> Result<SetThermal, SimulationError> {
+        if self.elastic.is_some() {
+            return Err(SimulationError::Case(Invalid {
+                key: "shaft.diameter".into(),
+                value: None,
+                rule: "the thermal steady state is solved on a rigid shaft; drop shaft.diameter for it".into(),
+            }));
+        }
+        let cold = self.system.solve_general(&self.conditions, &self.options)?;
+        let cases: Vec<Case> = self.bearings.iter().map(|b| b.case.clone()).collect();
+        let hot = system_thermal(
+            &cases,
+            case,
+            &self.system,
+            &self.conditions,
+            &self.options,
+            &cold,
+            "shaft",
+        )?;
+        Ok(SetThermal {
+            cold,
+            hot,
+            preload_at_speed: None,
+        })
     }
 
     /// The elastic shaft's equilibrium (None for a rigid shaft).
