@@ -28,6 +28,7 @@
 //! | `thermal_coupling` | the thermal network advanced alongside a run, oil viscosity fed back |
 //! | `traction_equilibrium` | the traction-consistent steady state the runs start from (no raceway control) |
 //! | `checkpoint` | the model's memory (contact episodes, thermal network) in a run's checkpoint |
+//! | `shaft` | several bearing models on one rigid shaft sharing its five degrees of freedom, with an unbalance (docs/systems.md, "Dynamics") |
 
 mod ball_equations;
 mod ball_pass;

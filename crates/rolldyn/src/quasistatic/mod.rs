@@ -13,6 +13,10 @@
 //! [`contact_motion`]; [`modes`]: natural frequencies and mode
 //! shapes of the supported inner ring on the bearing stiffness;
 //! [`stiffness`]: compliance and the conventional scalar stiffnesses.
+//! [`system`]: bearing sets and several bearings on a rigid shaft, with
+//! preload and lift-off; [`elastic_shaft`]: the same on an
+//! Euler–Bernoulli shaft, whose bending misaligns the bearings
+//! (docs/systems.md).
 
 pub mod contact_motion;
 pub mod elastic_shaft;
