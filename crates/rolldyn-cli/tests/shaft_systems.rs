@@ -585,3 +585,34 @@ fn thermal_steady_state_of_a_shaft() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("shaft.diameter"), "{}", stderr(&o));
 }
+
+/// A set's run is the same bytes on one thread as on two (the balls of
+/// each bearing are evaluated across threads, summed in ball order).
+#[test]
+fn a_set_run_is_the_same_whatever_the_threads() {
+    use std::process::Command;
+    let case = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
+    let dir = temp_dir("set-threads");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("case.toml");
+    std::fs::write(&path, &case).unwrap();
+    let run = |threads: &str| {
+        let out = dir.join(format!("run-{threads}"));
+        let o = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+            .args([
+                "run",
+                path.to_str().unwrap(),
+                "--duration",
+                "3 ms",
+                "-o",
+                out.to_str().unwrap(),
+            ])
+            .env("RAYON_NUM_THREADS", threads)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        common::series_bytes(&out)
+    };
+    assert_eq!(run("1"), run("2"));
+    std::fs::remove_dir_all(&dir).ok();
+}
