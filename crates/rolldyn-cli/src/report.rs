@@ -424,6 +424,10 @@ pub struct CheckArrangement {
     pub preload_n: Option<f64>,
     /// The preload displacement as given (null if none or a force).
     pub preload_displacement_m: Option<f64>,
+    /// A rotating unbalance on the shaft: mass × radius \[kg·m\] (null:
+    /// none) and its position \[m\].
+    pub unbalance_kg_m: Option<f64>,
+    pub unbalance_position_m: Option<f64>,
 }
 
 /// One surface feature set of `[surface]` (check report).
@@ -549,6 +553,8 @@ impl CheckReport {
                         Preload::Displacement(d) => Some(d),
                         _ => None,
                     },
+                    unbalance_kg_m: a.unbalance.map(|u| u.0),
+                    unbalance_position_m: a.unbalance.map(|u| u.1),
                 }
             }),
             assumptions: case
@@ -676,9 +682,17 @@ impl CheckReport {
                 (_, Some(d)) => format!("preload displacement {:.3} µm", d * 1e6),
                 _ => "no preload".into(),
             };
+            let unbalance = match (a.unbalance_kg_m, a.unbalance_position_m) {
+                (Some(u), Some(x)) => format!(
+                    "; a rotating unbalance of {:.3} g·mm at {:+.1} mm (in runs)",
+                    u * 1e6,
+                    x * 1e3
+                ),
+                _ => String::new(),
+            };
             let _ = writeln!(
                 out,
-                "Bearing set ([arrangement], docs/systems.md): {}, pitch planes {:.2} mm apart, {preload}; the loads act on the shaft between the bearings",
+                "Bearing set ([arrangement], docs/systems.md): {}, pitch planes {:.2} mm apart, {preload}; the loads act on the shaft between the bearings{unbalance}",
                 a.kind,
                 a.spacing_m * 1e3
             );
