@@ -93,7 +93,7 @@ fn pressure_estimate(case: &Case) -> Option<(f64, f64)> {
 
 /// Refuses a run that cannot finish or whose time series cannot fit:
 /// at least `duration / step` steps, `duration × rate` rows of `channels`.
-fn check_limits(
+pub(crate) fn check_limits(
     duration: f64,
     step: f64,
     step_key: &str,

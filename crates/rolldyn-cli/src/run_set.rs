@@ -147,6 +147,16 @@ pub fn run(
     for (name, unit) in SHAFT_CHANNELS {
         series.channel(name, unit);
     }
+    if !options.force {
+        crate::run::check_limits(
+            duration,
+            settings.max_step,
+            settings.step_key(),
+            sample_rate,
+            series.width(),
+        )
+        .map_err(bad)?;
+    }
     let patch = {
         let s = &channels[0].series;
         [
