@@ -616,3 +616,64 @@ fn a_set_run_is_the_same_whatever_the_threads() {
     assert_eq!(run("1"), run("2"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A gear mesh's fluctuation (`mesh_order`, `mesh_fluctuation` of a
+/// `[[shaft.loads]]` entry) shakes the shaft in a run, its work in the
+/// energy balance; half a pair of keys is refused.
+#[test]
+fn a_gear_mesh_shakes_the_shaft() {
+    let base = SHAFT.replace("ORIENTATION", "forward");
+    let mesh = base.replacen(
+        "force_x = \"300 N\"\n",
+        "force_x = \"300 N\"\nmesh_order = 23\nmesh_fluctuation = 0.05\n",
+        1,
+    );
+    let dir = temp_dir("mesh");
+    let shake = |case: &str, tag: &str| {
+        let out = dir.join(tag);
+        let o = rolldyn(
+            &[
+                "run",
+                "-",
+                "--duration",
+                "4 ms",
+                "-o",
+                out.to_str().unwrap(),
+            ],
+            Some(case),
+        );
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let s: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap())
+                .unwrap();
+        assert!(s["energy_balance_relative_error"].as_f64().unwrap() < 1e-3);
+        let series = rolldyn_io::read_parquet(&out.join("timeseries.parquet")).unwrap();
+        let (t, z) = (
+            series.column("time_s").unwrap(),
+            series.column("shaft_z_m").unwrap(),
+        );
+        let late: Vec<f64> = t
+            .iter()
+            .zip(z)
+            .filter(|(t, _)| **t >= 2e-3)
+            .map(|(_, z)| *z)
+            .collect();
+        late.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+            - late.iter().cloned().fold(f64::INFINITY, f64::min)
+    };
+    let (quiet, shaken) = (shake(&base, "quiet"), shake(&mesh, "mesh"));
+    assert!(shaken > 10.0 * quiet, "{shaken} vs {quiet}");
+    let half = base.replacen(
+        "force_x = \"300 N\"\n",
+        "force_x = \"300 N\"\nmesh_order = 23\n",
+        1,
+    );
+    let o = rolldyn(&["check", "-"], Some(&half));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("shaft.loads[0].mesh_fluctuation"),
+        "{}",
+        stderr(&o)
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

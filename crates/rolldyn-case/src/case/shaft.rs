@@ -103,6 +103,9 @@ pub struct Shaft {
     pub loads: Loads,
     /// The `[[shaft.loads]]` each at its position (x \[m\], load there).
     pub point_loads: Vec<(f64, Loads)>,
+    /// The loads' fluctuations with the shaft's angle (gear meshes; in
+    /// runs).
+    pub harmonic_loads: Vec<rolldyn::dynamics::shaft::HarmonicLoad>,
     /// The elastic shaft's section (None: rigid).
     pub section: Option<rolldyn::quasistatic::elastic_shaft::ShaftSection>,
 }
@@ -248,6 +251,7 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
     }
     let mut loads = Loads::default();
     let mut point_loads = Vec::with_capacity(raw.loads.len());
+    let mut harmonic_loads = Vec::new();
     for (i, l) in raw.loads.iter().enumerate() {
         let key = |name: &str| format!("shaft.loads[{i}].{name}");
         let a = position(key("position"), &l.position)?;
@@ -278,6 +282,45 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
                 moment: [my, mz],
             },
         ));
+        match (l.mesh_order, l.mesh_fluctuation) {
+            (None, None) => {}
+            (Some(order), Some(fluctuation)) => {
+                if !(order.is_finite() && order > 0.0) {
+                    return Err(Invalid::new(
+                        key("mesh_order"),
+                        Some(order.to_string()),
+                        "must be positive (the gear's tooth count)",
+                    ));
+                }
+                if !(0.0..=1.0).contains(&fluctuation) {
+                    return Err(Invalid::new(
+                        key("mesh_fluctuation"),
+                        Some(fluctuation.to_string()),
+                        "must lie in [0, 1] (a fraction of the force)",
+                    ));
+                }
+                harmonic_loads.push(rolldyn::dynamics::shaft::HarmonicLoad {
+                    position: a,
+                    amplitude: [fx, fy, fz].map(|f| fluctuation * f),
+                    order,
+                    phase: 0.0,
+                });
+            }
+            (Some(_), None) => {
+                return Err(Invalid::new(
+                    key("mesh_fluctuation"),
+                    None,
+                    "missing: a mesh_order needs the fluctuation's amplitude as a fraction of the force",
+                ));
+            }
+            (None, Some(_)) => {
+                return Err(Invalid::new(
+                    key("mesh_order"),
+                    None,
+                    "missing: a mesh_fluctuation needs the gear's tooth count",
+                ));
+            }
+        }
     }
     let section = match checked("shaft.diameter", &raw.diameter, super::positive)? {
         None => {
@@ -321,6 +364,7 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
         bearings,
         loads,
         point_loads,
+        harmonic_loads,
         section,
     }))
 }

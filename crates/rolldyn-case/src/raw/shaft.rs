@@ -102,4 +102,10 @@ pub struct RawShaftLoad {
     pub moment_y: Option<Quantity<Moment>>,
     /// Moment about z there (default 0).
     pub moment_z: Option<Quantity<Moment>>,
+    /// A gear mesh's tooth count: the force fluctuates this many times a
+    /// shaft revolution (`rolldyn run`; with `mesh_fluctuation`).
+    pub mesh_order: Option<f64>,
+    /// The fluctuation's amplitude as a fraction of the force, in [0, 1]:
+    /// F (1 + ε sin(k θ)) (`rolldyn run`; with `mesh_order`).
+    pub mesh_fluctuation: Option<f64>,
 }

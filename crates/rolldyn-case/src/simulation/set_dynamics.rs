@@ -63,6 +63,10 @@ impl SetSimulation {
                 "the bearings start from their quasi-static equilibrium (\"jones_harris\"); other starts",
             );
         }
+        let harmonic_loads = case
+            .shaft
+            .as_ref()
+            .map_or(Vec::new(), |s| s.harmonic_loads.clone());
         let (kind, mounting_preload, unbalance, bearing_cases, mounted, quasistatic, conditions) =
             if let Some(set) = BearingSet::from_case(case)? {
                 let equilibrium = set.solve().map_err(|e| SimulationError::Start {
@@ -134,6 +138,9 @@ impl SetSimulation {
         )?;
         if let Some((amount, position)) = unbalance {
             system = system.with_unbalance(Unbalance { amount, position })?;
+        }
+        if !harmonic_loads.is_empty() {
+            system = system.with_harmonic_loads(harmonic_loads)?;
         }
         let initial_state = system.initial_state(&quasistatic)?;
         Ok(Some(Self {

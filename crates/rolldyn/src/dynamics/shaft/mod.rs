@@ -19,7 +19,9 @@
 //! speed, constant). A rotating unbalance U = m_u e at x_u adds
 //! U ω² (cos ωt, sin ωt) along (y, z) at x_u, with the moments of that
 //! force about the reference point (θ_y: −x_u F_z, θ_z: x_u F_y); its work
-//! is accumulated in one more shaft state for the energy balance. A mirrored bearing's own frame is the reflection x → −x of the
+//! is accumulated in one more shaft state for the energy balance, as is
+//! that of harmonic loads F sin(k θ + φ) at their positions (a gear mesh's
+//! fluctuation, k the tooth count). A mirrored bearing's own frame is the reflection x → −x of the
 //! shaft's: positions and forces along x change sign, and so do the tilts
 //! and moments about y and z (pseudovectors); the spin about x does not,
 //! so every bearing turns with the shaft's speed in its own frame.
@@ -50,6 +52,21 @@ use std::sync::Mutex;
 pub const SHAFT_STATES: usize = 10;
 /// The shaft's states with the work of its rotating loads (the last).
 const SHAFT_LEN: usize = SHAFT_STATES + 1;
+
+/// A load on the shaft that fluctuates with the shaft's angle θ: a gear
+/// mesh's, F(θ) = amplitude · sin(order · θ + phase) at `position`, on top
+/// of the constant loads (the mesh's mean force among them).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HarmonicLoad {
+    /// Axial position on the shaft from the reference point \[m\].
+    pub position: f64,
+    /// Force amplitude (x, y, z) \[N\].
+    pub amplitude: [f64; 3],
+    /// Cycles per shaft revolution (a gear's tooth count).
+    pub order: f64,
+    /// Phase at θ = 0 \[rad\].
+    pub phase: f64,
+}
 
 /// A rotating unbalance on the shaft.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -110,6 +127,7 @@ pub struct ShaftDynamics {
     body: ShaftBody,
     loads: Loads,
     unbalance: Option<Unbalance>,
+    harmonic_loads: Vec<HarmonicLoad>,
     gravity: f64,
     ball_len: usize,
     first_shaft: usize,
@@ -126,6 +144,7 @@ impl Clone for ShaftDynamics {
             body: self.body,
             loads: self.loads,
             unbalance: self.unbalance,
+            harmonic_loads: self.harmonic_loads.clone(),
             gravity: self.gravity,
             ball_len: self.ball_len,
             first_shaft: self.first_shaft,
@@ -219,6 +238,7 @@ impl ShaftDynamics {
             body,
             loads,
             unbalance: None,
+            harmonic_loads: Vec::new(),
             gravity,
             ball_len,
             first_shaft: first_border,
@@ -244,6 +264,27 @@ impl ShaftDynamics {
             ));
         }
         self.unbalance = Some(unbalance);
+        Ok(self)
+    }
+
+    /// With loads that fluctuate with the shaft's angle (gear meshes).
+    pub fn with_harmonic_loads(
+        mut self,
+        loads: Vec<HarmonicLoad>,
+    ) -> Result<Self, InvalidParameter> {
+        for l in &loads {
+            let finite = l.position.is_finite()
+                && l.phase.is_finite()
+                && l.amplitude.iter().all(|a| a.is_finite());
+            if !finite || !(l.order.is_finite() && l.order > 0.0) {
+                return Err(InvalidParameter::new(
+                    "harmonic load",
+                    l.order,
+                    "needs a finite position, amplitude and phase and a positive order",
+                ));
+            }
+        }
+        self.harmonic_loads = loads;
         Ok(self)
     }
 
@@ -377,19 +418,35 @@ impl ShaftDynamics {
         f
     }
 
-    /// The unbalance's generalized force on the shaft at time `t` (x, y,
-    /// z, θ_y, θ_z; zero without one).
+    /// The generalized force on the shaft at time `t` (x, y, z, θ_y, θ_z)
+    /// of the loads that turn or fluctuate with it: the unbalance and the
+    /// harmonic loads (zero without them).
     fn rotating_load(&self, t: f64) -> [f64; 5] {
-        let Some(u) = self.unbalance else {
+        if self.unbalance.is_none() && self.harmonic_loads.is_empty() {
             return [0.0; 5];
-        };
+        }
         let speed = &self.bearings[0].model.parameters().speed;
         let (omega, angle) = (speed.speed_at(t), speed.angle_at(t));
-        let (fy, fz) = (
-            u.amount * omega * omega * angle.cos(),
-            u.amount * omega * omega * angle.sin(),
-        );
-        [0.0, fy, fz, -u.position * fz, u.position * fy]
+        let mut total = [0.0; 5];
+        let mut add = |x: f64, f: [f64; 3]| {
+            total[0] += f[0];
+            total[1] += f[1];
+            total[2] += f[2];
+            total[3] -= x * f[2];
+            total[4] += x * f[1];
+        };
+        if let Some(u) = self.unbalance {
+            let magnitude = u.amount * omega * omega;
+            add(
+                u.position,
+                [0.0, magnitude * angle.cos(), magnitude * angle.sin()],
+            );
+        }
+        for l in &self.harmonic_loads {
+            let s = (l.order * angle + l.phase).sin();
+            add(l.position, l.amplitude.map(|a| a * s));
+        }
+        total
     }
 
     /// The shaft's derivatives `out` (its states with the rotating loads'
@@ -552,7 +609,7 @@ impl OdeSystem for ShaftDynamics {
                 "velocity ż",
                 "tilt rate θ̇_y",
                 "tilt rate θ̇_z",
-                "work of the unbalance",
+                "work of the unbalance and harmonic loads",
             ];
             return format!("shaft {}", SHAFT[index - self.first_shaft]);
         }
