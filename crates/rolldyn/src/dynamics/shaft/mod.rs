@@ -276,7 +276,7 @@ impl ShaftDynamics {
             let finite = l.position.is_finite()
                 && l.phase.is_finite()
                 && l.amplitude.iter().all(|a| a.is_finite());
-            if !finite || !(l.order.is_finite() && l.order > 0.0) {
+            if !(finite && l.order.is_finite() && l.order > 0.0) {
                 return Err(InvalidParameter::new(
                     "harmonic load",
                     l.order,
