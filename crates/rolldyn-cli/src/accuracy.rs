@@ -92,6 +92,33 @@ pub struct Verification {
     pub status: &'static str,
 }
 
+impl Verification {
+    /// The line `rolldyn run --verify` prints: the tighter settings and
+    /// the largest change against its limit.
+    pub fn line(&self) -> String {
+        let worst = self
+            .changes
+            .iter()
+            .max_by(|a, b| (a.relative_change / a.limit).total_cmp(&(b.relative_change / b.limit)));
+        format!(
+            "verify ({}): at rtol {}{} the largest change is {}; energy balance error {:.2e}\n",
+            self.status,
+            self.relative_tolerance
+                .map_or("-".into(), |r| format!("{r:e}")),
+            self.traction_grid
+                .as_ref()
+                .map_or(String::new(), |g| format!(" and a traction grid of {g}")),
+            worst.map_or("none".into(), |c| format!(
+                "{} {:.3} % (limit {} %)",
+                c.key,
+                100.0 * c.relative_change,
+                100.0 * c.limit
+            )),
+            self.energy_balance_relative_error
+        )
+    }
+}
+
 /// The accuracy of a run from its summary's energy balance (relative, and
 /// the error and drive work in joules for the message); the integrator and
 /// tolerances name what to tighten in the hint.

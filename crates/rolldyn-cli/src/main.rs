@@ -438,22 +438,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 );
                 emit(&text)?;
                 if let Some(v) = &summary.verify {
-                    let worst = v.changes.iter().max_by(|a, b| {
-                        (a.relative_change / a.limit).total_cmp(&(b.relative_change / b.limit))
-                    });
-                    emit(&format!(
-                        "verify ({}): at ten times tighter tolerances{} the largest change is {}\n",
-                        v.status,
-                        v.traction_grid
-                            .as_ref()
-                            .map_or(String::new(), |g| format!(" and a traction grid of {g}")),
-                        worst.map_or("none".into(), |c| format!(
-                            "{} {:.3} % (limit {} %)",
-                            c.key,
-                            100.0 * c.relative_change,
-                            100.0 * c.limit
-                        ))
-                    ))?;
+                    emit(&v.line())?;
                     if v.status != "ok" {
                         eprintln!(
                             "warning: --verify: the set's results moved beyond 1 % at ten times tighter tolerances; they are not converged at these settings"
@@ -510,25 +495,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 );
             }
             if let Some(v) = &summary.accuracy.verify {
-                let worst = v.changes.iter().max_by(|a, b| {
-                    (a.relative_change / a.limit).total_cmp(&(b.relative_change / b.limit))
-                });
-                emit(&format!(
-                    "verify ({}): at rtol {}{} the largest change is {}; energy balance error {:.2e}\n",
-                    v.status,
-                    v.relative_tolerance
-                        .map_or("-".into(), |r| format!("{r:e}")),
-                    v.traction_grid
-                        .as_ref()
-                        .map_or(String::new(), |g| format!(" and a traction grid of {g}")),
-                    worst.map_or("none".into(), |c| format!(
-                        "{} {:.3} % (limit {} %)",
-                        c.key,
-                        100.0 * c.relative_change,
-                        100.0 * c.limit
-                    )),
-                    v.energy_balance_relative_error
-                ))?;
+                emit(&v.line())?;
             }
             if let Some(text) = rolldyn_cli::accuracy::warning(&summary.accuracy) {
                 eprint!("{text}");

@@ -272,28 +272,7 @@ pub(crate) fn run_once(
             &mut channels.stats,
         )
         .map_err(bad)?;
-        let reached = solver.t();
-        match options.extends {
-            Some(_) if reached >= duration => {
-                return Err(bad(format!(
-                    "--until {duration} s: the run in {} is already at t = {reached} s; extend it beyond that",
-                    dir.display()
-                )));
-            }
-            Some(_) => {
-                // From now on the checkpoints belong to the extended record.
-                let text = record.to_json().map_err(Failure::Internal)?;
-                write_atomic(&dir.join(RECORD_FILE), text.as_bytes())
-                    .map_err(|e| bad(e.to_string()))?;
-            }
-            None if reached >= duration => {
-                return Err(bad(format!(
-                    "--resume {}: the run is complete (t = {reached} s); `--until T` extends it",
-                    dir.display()
-                )));
-            }
-            None => {}
-        }
+        continue_to(record, options, dir, solver.t(), duration)?;
         // The summary's statistics came with the checkpoint.
         channels.writer = Some(
             SeriesWriter::resume(
@@ -475,6 +454,35 @@ pub(crate) fn run_once(
         );
     }
     Ok(RunOutput { summary })
+}
+
+/// Whether a run restored at time `reached` may go on to `duration`: a
+/// resumed run must not be complete, an extended one (`--until`) must
+/// go beyond; an extension's checkpoints belong to the extended record
+/// from now on, so `DIR/run.json` is written again.
+pub(crate) fn continue_to(
+    record: &RunRecord,
+    options: &RunOptions,
+    dir: &Path,
+    reached: f64,
+    duration: f64,
+) -> Result<(), Failure> {
+    let bad = Failure::BadInput;
+    match options.extends {
+        Some(_) if reached >= duration => Err(bad(format!(
+            "--until {duration} s: the run in {} is already at t = {reached} s; extend it beyond that",
+            dir.display()
+        ))),
+        Some(_) => {
+            let text = record.to_json().map_err(Failure::Internal)?;
+            write_atomic(&dir.join(RECORD_FILE), text.as_bytes()).map_err(|e| bad(e.to_string()))
+        }
+        None if reached >= duration => Err(bad(format!(
+            "--resume {}: the run is complete (t = {reached} s); `--until T` extends it",
+            dir.display()
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// Removes `DIR/checkpoint.bin` if there is one.

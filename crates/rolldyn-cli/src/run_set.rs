@@ -190,27 +190,7 @@ pub fn run(
             &mut axial_sums,
         )
         .map_err(bad)?;
-        let reached = solver.t();
-        match options.extends {
-            Some(_) if reached >= duration => {
-                return Err(bad(format!(
-                    "--until {duration} s: the run in {} is already at t = {reached} s; extend it beyond that",
-                    dir.display()
-                )));
-            }
-            Some(_) => {
-                let text = record.to_json().map_err(Failure::Internal)?;
-                write_atomic(&dir.join(RECORD_FILE), text.as_bytes())
-                    .map_err(|e| bad(e.to_string()))?;
-            }
-            None if reached >= duration => {
-                return Err(bad(format!(
-                    "--resume {}: the run is complete (t = {reached} s); `--until T` extends it",
-                    dir.display()
-                )));
-            }
-            None => {}
-        }
+        crate::run::continue_to(record, options, dir, solver.t(), duration)?;
         let writer = SeriesWriter::resume(
             &series_dir,
             &series,

@@ -11,7 +11,6 @@ mod common;
 use common::{rolldyn, stderr, temp_dir};
 use std::path::Path;
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
 
 /// The default case with a sensor, shortened to `duration`; `integrator`
 /// chosen.
@@ -68,24 +67,7 @@ fn killed_run_is_readable_and_resumes_bit_identically() {
             .stderr(Stdio::null())
             .spawn()
             .unwrap();
-        let begun = Instant::now();
-        let mut seen = Vec::new();
-        while seen.len() < 2 {
-            assert!(
-                child.try_wait().unwrap().is_none(),
-                "{tag}: the run ended before it could be killed; lengthen it"
-            );
-            assert!(begun.elapsed() < Duration::from_secs(120));
-            if let Ok(m) = std::fs::metadata(killed.join("checkpoint.bin")) {
-                let stamp = m.modified().unwrap();
-                if !seen.contains(&stamp) {
-                    seen.push(stamp);
-                }
-            }
-            std::thread::sleep(Duration::from_millis(5));
-        }
-        child.kill().unwrap(); // SIGKILL
-        child.wait().unwrap();
+        common::kill_after_two_checkpoints(&mut child, &killed);
 
         // What is left is readable: the Parquet file and a partial summary.
         let partial = rolldyn_io::read_parquet(&killed.join("timeseries.parquet")).unwrap();

@@ -468,7 +468,7 @@ fn a_shaft_bearing_takes_its_fits() {
 #[test]
 fn a_set_run_resumes_bit_identically() {
     use std::process::{Command, Stdio};
-    use std::time::{Duration, Instant};
+
     let case = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
     let dir = temp_dir("set-resume");
     std::fs::create_dir_all(&dir).unwrap();
@@ -500,24 +500,7 @@ fn a_set_run_resumes_bit_identically() {
         .stderr(Stdio::null())
         .spawn()
         .unwrap();
-    let begun = Instant::now();
-    let mut seen = Vec::new();
-    while seen.len() < 2 {
-        assert!(
-            child.try_wait().unwrap().is_none(),
-            "the run ended before it could be killed; lengthen it"
-        );
-        assert!(begun.elapsed() < Duration::from_secs(120));
-        if let Ok(m) = std::fs::metadata(killed.join("checkpoint.bin")) {
-            let stamp = m.modified().unwrap();
-            if !seen.contains(&stamp) {
-                seen.push(stamp);
-            }
-        }
-        std::thread::sleep(Duration::from_millis(5));
-    }
-    child.kill().unwrap();
-    child.wait().unwrap();
+    common::kill_after_two_checkpoints(&mut child, &killed);
     let read = |d: &std::path::Path| {
         let mut v: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(d.join("summary.json")).unwrap())

@@ -42,13 +42,7 @@ pub const SECTIONS: [SectionBuilder; 11] = [
 pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, ReportError> {
     let summary = read_json(&dir.join(SUMMARY_FILE))?;
     let series_path = dir.join(TIMESERIES_FILE);
-    let window = match summary.get("averaging_window_s") {
-        Some(Value::Array(w)) if w.len() == 2 => [
-            w[0].as_f64().unwrap_or(f64::NAN),
-            w[1].as_f64().unwrap_or(f64::NAN),
-        ],
-        _ => [f64::NAN; 2],
-    };
+    let window = averaging_window(&summary);
     let read = |path: &Path| {
         read_for_plots(path, window).map_err(|e| ReportError::Read {
             path: path.display().to_string(),
@@ -73,11 +67,7 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
                 message: e.to_string(),
             }
         })?;
-    let record = dir
-        .join(RECORD_FILE)
-        .is_file()
-        .then(|| read_json(&dir.join(RECORD_FILE)))
-        .transpose()?;
+    let record = read_record(dir)?;
     Ok(build(&RunData {
         summary,
         series,
@@ -89,6 +79,25 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
         vibration,
         run_up,
     }))
+}
+
+/// The summary's averaging window \[s\] (NaN where absent).
+pub(crate) fn averaging_window(summary: &Value) -> [f64; 2] {
+    match summary.get("averaging_window_s") {
+        Some(Value::Array(w)) if w.len() == 2 => [
+            w[0].as_f64().unwrap_or(f64::NAN),
+            w[1].as_f64().unwrap_or(f64::NAN),
+        ],
+        _ => [f64::NAN; 2],
+    }
+}
+
+/// `DIR/run.json`, when present.
+pub(crate) fn read_record(dir: &Path) -> Result<Option<Value>, ReportError> {
+    dir.join(RECORD_FILE)
+        .is_file()
+        .then(|| read_json(&dir.join(RECORD_FILE)))
+        .transpose()
 }
 
 /// The report of a run's data.

@@ -9,7 +9,7 @@
 //! one bearing the case, solver statistics, energy balance and all summary
 //! values ([`crate::run`]).
 
-use crate::run::{RECORD_FILE, RunData, SUMMARY_FILE, TIMESERIES_FILE};
+use crate::run::{RunData, SUMMARY_FILE, TIMESERIES_FILE};
 use crate::svg::{Plot, Series};
 use crate::{Report, ReportError, Section, cell, read_json};
 use serde_json::Value;
@@ -24,27 +24,14 @@ pub fn is_set_summary(summary: &Value) -> bool {
 pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, ReportError> {
     let summary = read_json(&dir.join(SUMMARY_FILE))?;
     let series_path = dir.join(TIMESERIES_FILE);
-    let window = summary
-        .get("averaging_window_s")
-        .and_then(Value::as_array)
-        .filter(|w| w.len() == 2)
-        .map_or([f64::NAN; 2], |w| {
-            [
-                w[0].as_f64().unwrap_or(f64::NAN),
-                w[1].as_f64().unwrap_or(f64::NAN),
-            ]
-        });
+    let window = crate::run::averaging_window(&summary);
     let (series, window_means, orbit) =
         crate::run_data::read_with_orbit(&series_path, window, ["shaft_y_m", "shaft_z_m"])
             .map_err(|e| ReportError::Read {
                 path: series_path.display().to_string(),
                 message: e.to_string(),
             })?;
-    let record = dir
-        .join(RECORD_FILE)
-        .is_file()
-        .then(|| read_json(&dir.join(RECORD_FILE)))
-        .transpose()?;
+    let record = crate::run::read_record(dir)?;
     Ok(build(&RunData {
         summary,
         series,

@@ -99,3 +99,27 @@ position = "20 mm"
 force_z = "-4 kN"
 force_x = "300 N"
 "#;
+
+/// Waits until the run `child` writing into `dir` has written two
+/// checkpoints, then kills it (SIGKILL).
+pub fn kill_after_two_checkpoints(child: &mut std::process::Child, dir: &std::path::Path) {
+    use std::time::{Duration, Instant};
+    let begun = Instant::now();
+    let mut seen = Vec::new();
+    while seen.len() < 2 {
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "the run ended before it could be killed; lengthen it"
+        );
+        assert!(begun.elapsed() < Duration::from_secs(120));
+        if let Ok(m) = std::fs::metadata(dir.join("checkpoint.bin")) {
+            let stamp = m.modified().unwrap();
+            if !seen.contains(&stamp) {
+                seen.push(stamp);
+            }
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+}

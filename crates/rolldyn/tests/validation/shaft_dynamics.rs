@@ -113,23 +113,32 @@ fn one_bearing_on_a_shaft_is_the_bearing() {
     close(&split, &dys, "block split");
 }
 
-#[test]
-fn preloaded_pair_in_motion_keeps_its_quasi_static_preload() {
-    let g = bearing_7008c();
-    let steel = Material::STEEL_52100;
+/// The 7008C back-to-back pair with a 200 N position preload (offset set
+/// at rest), its operating point without external load at the default
+/// case's speed (outer raceway control), and the default case's model.
+fn preloaded_pair() -> (ShaftSystem, SystemConditions, BearingModel) {
     let (params, _) = dynamics_7008c(DragParameters::default());
-    let speed = params.speed.speed_at(0.0);
     let options = SolverOptions::default();
     let set = ShaftSystem::matched(&solver(), SetKind::BackToBack, 15e-3);
     let offset = set
         .offset_for_preload(200.0, 0.0, RacewayControl::Outer, &options)
         .unwrap();
-    let set = set.with_axial_offset(offset);
     let conditions = SystemConditions {
         loads: Loads::default(),
-        inner_speed: speed,
+        inner_speed: params.speed.speed_at(0.0),
         control: RacewayControl::Outer,
     };
+    let steel = Material::STEEL_52100;
+    let model =
+        BearingModel::new(&bearing_7008c(), &steel, &steel, HertzModel::Exact, params).unwrap();
+    (set.with_axial_offset(offset), conditions, model)
+}
+
+#[test]
+fn preloaded_pair_in_motion_keeps_its_quasi_static_preload() {
+    let (set, conditions, model) = preloaded_pair();
+    let speed = conditions.inner_speed;
+    let options = SolverOptions::default();
     let eq = set.solve(&conditions, &options).unwrap();
     // The balls' axial push Σ Q_i sin α_i of bearing 0 under outer and
     // inner raceway control: the bracket of B6.
@@ -153,7 +162,6 @@ fn preloaded_pair_in_motion_keeps_its_quasi_static_preload() {
         .unwrap();
     let bracket = [push(&eq), push(&inner_control)];
     let preload = eq.bearings[0].as_ref().unwrap().reaction[0];
-    let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
     let system = ShaftDynamics::new(
         set.bearings.iter().map(|m| (model.clone(), m)).collect(),
         ShaftBody {
@@ -225,28 +233,11 @@ fn preloaded_pair_in_motion_keeps_its_quasi_static_preload() {
 /// not the rotation).
 #[test]
 fn unbalance_response_of_a_pair_is_the_rigid_rotor_on_the_set_stiffness() {
-    let g = bearing_7008c();
-    let steel = Material::STEEL_52100;
-    let (params, _) = dynamics_7008c(DragParameters::default());
-    let speed = params.speed.speed_at(0.0);
+    let (set, conditions, model) = preloaded_pair();
+    let speed = conditions.inner_speed;
     let options = SolverOptions::default();
-    let set = ShaftSystem::matched(&solver(), SetKind::BackToBack, 15e-3);
-    let offset = set
-        .offset_for_preload(200.0, 0.0, RacewayControl::Outer, &options)
-        .unwrap();
-    let set = set.with_axial_offset(offset);
-    let eq = set
-        .solve(
-            &SystemConditions {
-                loads: Loads::default(),
-                inner_speed: speed,
-                control: RacewayControl::Outer,
-            },
-            &options,
-        )
-        .unwrap();
+    let eq = set.solve(&conditions, &options).unwrap();
     let mass = 1.0;
-    let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
     let amount = 2e-5; // 20 g·mm
     let mut system = ShaftDynamics::new(
         set.bearings.iter().map(|m| (model.clone(), m)).collect(),
@@ -288,9 +279,8 @@ fn unbalance_response_of_a_pair_is_the_rigid_rotor_on_the_set_stiffness() {
     let inner_control = set
         .solve(
             &SystemConditions {
-                loads: Loads::default(),
-                inner_speed: speed,
                 control: RacewayControl::Inner,
+                ..conditions
             },
             &options,
         )
