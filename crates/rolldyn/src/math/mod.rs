@@ -1,8 +1,10 @@
 //! Numerical building blocks with no bearing physics in them: complete
 //! elliptic integrals (Carlson's symmetric forms), a bracketed scalar root
-//! finder (Brent) and monotone cubic (Fritsch–Carlson / PCHIP) interpolation.
+//! finder (Brent), monotone cubic (Fritsch–Carlson / PCHIP) interpolation
+//! and a logarithm that vectorizes.
 
 pub mod elliptic;
 pub mod interp;
+pub mod logarithm;
 pub mod random;
 pub mod roots;

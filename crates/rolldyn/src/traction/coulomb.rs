@@ -65,18 +65,19 @@ impl ModifiedCoulomb {
 }
 
 impl TractionLaw for ModifiedCoulomb {
+    /// g = c_d(|v|) μ p / |v|.
     #[inline]
-    fn shear_stress(
+    fn stress_ratio(
         &self,
         pressure: f64,
-        slip: &Vector3<f64>,
+        _term: f64,
+        speed: f64,
         _conditions: &ContactConditions,
-    ) -> Vector3<f64> {
-        let speed = slip.norm();
+    ) -> f64 {
         if speed <= self.stick_speed || pressure <= 0.0 {
-            return Vector3::zeros();
+            return 0.0;
         }
-        -(self.correction(speed) * self.friction * pressure / speed) * slip
+        self.correction(speed) * self.friction * pressure / speed
     }
 }
 

@@ -16,9 +16,9 @@
 //! dimensionless load, speed and temperature that the paper does not
 //! define; rolldyn ships no preset from it (docs/model.md §3).
 
-use super::{BATCH, ContactConditions, TractionLaw};
+use super::{ContactConditions, TractionLaw};
 use crate::error::{InvalidParameter, require_positive};
-use nalgebra::Vector3;
+
 use serde::{Deserialize, Serialize};
 
 /// What the traction curve's S is.
@@ -126,61 +126,31 @@ impl TractionCurve {
 }
 
 impl TractionLaw for TractionCurve {
+    /// g = ramp(|v|) μ(S) p / |v|.
     #[inline]
-    fn shear_stress(
+    fn stress_ratio(
         &self,
         pressure: f64,
-        slip: &Vector3<f64>,
+        _term: f64,
+        speed: f64,
         conditions: &ContactConditions,
-    ) -> Vector3<f64> {
-        let speed = slip.norm();
+    ) -> f64 {
         if speed == 0.0 || pressure <= 0.0 {
-            return Vector3::zeros();
+            return 0.0;
         }
         let s = match self.slip {
             SlipMeasure::SlideToRoll => speed / conditions.entrainment_speed.max(self.full_speed),
             SlipMeasure::SlipSpeed => speed,
         };
         let ramp = (speed / self.full_speed).min(1.0);
-        -(ramp * self.coefficient(s) * pressure / speed) * slip
-    }
-
-    /// Slip speeds of all cells first, then the stresses (same arithmetic
-    /// per cell as [`Self::shear_stress`]).
-    #[inline]
-    fn shear_stresses(
-        &self,
-        pressures: &[f64],
-        slips: &[Vector3<f64>],
-        conditions: &ContactConditions,
-        stresses: &mut [Vector3<f64>],
-    ) {
-        let n = pressures.len().min(BATCH);
-        let mut speed = [0.0; BATCH];
-        for k in 0..n {
-            speed[k] = slips[k].norm();
-        }
-        for k in 0..n {
-            let (v, pressure) = (speed[k], pressures[k]);
-            stresses[k] = if v == 0.0 || pressure <= 0.0 {
-                Vector3::zeros()
-            } else {
-                let s = match self.slip {
-                    SlipMeasure::SlideToRoll => {
-                        v / conditions.entrainment_speed.max(self.full_speed)
-                    }
-                    SlipMeasure::SlipSpeed => v,
-                };
-                let ramp = (v / self.full_speed).min(1.0);
-                -(ramp * self.coefficient(s) * pressure / v) * slips[k]
-            };
-        }
+        ramp * self.coefficient(s) * pressure / speed
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::Vector3;
 
     fn curve() -> TractionCurve {
         // A rising-then-falling curve: peak μ near S = 1/C − A/B.

@@ -9,10 +9,11 @@
 //! contact (docs/model.md §4). The stress is continuous in the slip (asinh is odd
 //! and smooth), so no regularisation is needed.
 
-use super::{BATCH, ContactConditions, TractionLaw};
+use super::{BATCH, Cells, ContactConditions, TractionLaw};
 use crate::error::{InvalidParameter, require_positive};
 use crate::lubrication::Lubricant;
-use nalgebra::Vector3;
+use crate::math::logarithm::asinh_non_negative;
+
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the EHL traction rheology.
@@ -40,98 +41,74 @@ impl EhlRheology {
 }
 
 impl TractionLaw for EhlRheology {
+    /// The viscosity η(p) (Barus or Roelands).
     #[inline]
-    fn shear_stress(
-        &self,
-        pressure: f64,
-        slip: &Vector3<f64>,
-        conditions: &ContactConditions,
-    ) -> Vector3<f64> {
-        let film = conditions.film;
-        let speed = slip.norm();
-        if speed == 0.0 || pressure <= 0.0 || film <= 0.0 {
-            return Vector3::zeros();
-        }
-        let tau0 = self.eyring_stress;
-        let eta = self.lubricant.viscosity_at(pressure);
-        let x = eta * speed * (1.0 / (film * tau0));
-        let eyring = tau0 * asinh_non_negative(x);
-        let tau = eyring.min(self.limiting_shear_coefficient * pressure);
-        -(tau * (1.0 / speed)) * slip
+    fn pressure_term(&self, pressure: f64) -> f64 {
+        self.lubricant.viscosity_at(pressure)
     }
 
-    /// The cells stage by stage: slip speeds, viscosities and Eyring
-    /// arguments of all cells first, then the stresses; per cell the same
-    /// arithmetic as [`Self::shear_stress`] (bit-identical), but the
-    /// square roots, exponentials and divisions of different cells no
-    /// longer wait for each other.
+    /// g = min(τ₀ asinh(η |v| / (h τ₀)), Λ_L p) / |v|, η the cell's term.
     #[inline]
-    fn shear_stresses(
+    fn stress_ratio(
         &self,
-        pressures: &[f64],
-        slips: &[Vector3<f64>],
+        pressure: f64,
+        viscosity: f64,
+        speed: f64,
         conditions: &ContactConditions,
-        stresses: &mut [Vector3<f64>],
-    ) {
-        let n = pressures.len().min(BATCH);
+    ) -> f64 {
         let film = conditions.film;
+        if speed == 0.0 || pressure <= 0.0 || film <= 0.0 {
+            return 0.0;
+        }
+        let tau0 = self.eyring_stress;
+        let x = viscosity * speed * (1.0 / (film * tau0));
+        let eyring = tau0 * asinh_non_negative(x);
+        eyring.min(self.limiting_shear_coefficient * pressure) * (1.0 / speed)
+    }
+
+    /// The cells stage by stage: Eyring arguments of all cells first, then
+    /// their asinh, then the ratios; per cell the same arithmetic as
+    /// [`Self::stress_ratio`] (bit-identical). asinh is plain arithmetic
+    /// (`math::logarithm`), so each stage is a loop the compiler
+    /// vectorizes.
+    #[inline(always)]
+    fn stress_ratios(
+        &self,
+        pressures: &Cells,
+        viscosities: &Cells,
+        speeds: &Cells,
+        conditions: &ContactConditions,
+        ratios: &mut Cells,
+    ) {
+        let film = conditions.film;
+        if film <= 0.0 {
+            *ratios = [0.0; BATCH];
+            return;
+        }
         let tau0 = self.eyring_stress;
         let per_film_stress = 1.0 / (film * tau0);
-        let mut speed = [0.0; BATCH];
-        let mut x = [0.0; BATCH];
-        for k in 0..n {
-            speed[k] = slips[k].norm();
+        let mut eyring = [0.0; BATCH];
+        for k in 0..BATCH {
+            eyring[k] = viscosities[k] * speeds[k] * per_film_stress;
         }
-        for k in 0..n {
-            let eta = self.lubricant.viscosity_at(pressures[k]);
-            x[k] = eta * speed[k] * per_film_stress;
+        for e in &mut eyring {
+            *e = tau0 * asinh_non_negative(*e);
         }
-        for k in 0..n {
-            let pressure = pressures[k];
-            stresses[k] = if speed[k] == 0.0 || pressure <= 0.0 || film <= 0.0 {
-                Vector3::zeros()
+        for k in 0..BATCH {
+            let (pressure, speed) = (pressures[k], speeds[k]);
+            ratios[k] = if speed == 0.0 || pressure <= 0.0 {
+                0.0
             } else {
-                let eyring = tau0 * asinh_non_negative(x[k]);
-                let tau = eyring.min(self.limiting_shear_coefficient * pressure);
-                -(tau * (1.0 / speed[k])) * slips[k]
+                eyring[k].min(self.limiting_shear_coefficient * pressure) * (1.0 / speed)
             };
         }
     }
 }
 
-/// asinh(x) for x ≥ 0 without `hypot` (the standard library's asinh
-/// spends most of its time there; the traction grid calls it per cell):
-/// ln(x + √(x² + 1)) from x = 0.5 on (no cancellation there), the
-/// cancellation-free log1p(x + x²/(1 + √(1 + x²))) below, and ln(2x)
-/// above 1e8 (no overflow of x²; relative error below 1e-16).
-#[inline]
-fn asinh_non_negative(x: f64) -> f64 {
-    if x > 1e8 {
-        (2.0 * x).ln()
-    } else if x >= 0.5 {
-        (x + (x * x + 1.0).sqrt()).ln()
-    } else {
-        let x2 = x * x;
-        (x + x2 / (1.0 + (1.0 + x2).sqrt())).ln_1p()
-    }
-}
-
 #[cfg(test)]
 pub(super) mod tests {
-    #[test]
-    fn fast_asinh_matches_the_standard_library() {
-        for k in -300..=100 {
-            let x = 1.3f64.powi(k);
-            let (fast, std) = (super::asinh_non_negative(x), x.asinh());
-            assert!(
-                (fast - std).abs() <= 4.0 * f64::EPSILON * std,
-                "x = {x}: {fast} vs {std}"
-            );
-        }
-        assert_eq!(super::asinh_non_negative(0.0), 0.0);
-    }
-
     use super::*;
+    use nalgebra::Vector3;
 
     /// The default case's EHL rheology (also the traction module's batch test).
     pub(crate) fn law() -> EhlRheology {

@@ -116,18 +116,48 @@ pub struct TractionResult {
 /// prepared once (a model keeps one): per strip its position s and
 /// half-width w = √(1 − s²), per cell its position t along the strip and
 /// the unit Hertz shape √(1 − s² − t²), and Σ shape · w for the
-/// normalisation. These depend on the grid only; [`integrate`] scales
-/// them by the contact's semi-axes and load, with the same arithmetic as
-/// evaluating them in place.
+/// normalisation. The grid is symmetric in s and in t (mirrored cells are
+/// built from the same |s|, |t|), so each shape occurs up to four times:
+/// the distinct shapes are the grid's pressure **levels**, at which
+/// [`integrate`] evaluates a law's pressure term (the EHL viscosity) once.
+/// These depend on the grid only; [`integrate`] scales them by the
+/// contact's semi-axes and load.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TractionGrid {
     method: TractionIntegration,
     /// (s, w) per strip.
     strips: Vec<(f64, f64)>,
-    /// (t, shape) per cell, strip by strip.
-    cells: Vec<(f64, f64)>,
+    /// Per cell, strip by strip: its position t, unit shape and level.
+    cells: Vec<GridCell>,
+    /// The distinct unit shapes.
+    levels: Vec<f64>,
     /// Σ shape · w over the cells.
     shape_sum: f64,
+}
+
+/// One cell of a [`TractionGrid`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct GridCell {
+    /// Position along the strip, in units of b.
+    t: f64,
+    /// Unit Hertz shape √(1 − s² − t²).
+    shape: f64,
+    /// Index of `shape` in the grid's levels.
+    level: usize,
+}
+
+/// Most pressure levels [`integrate`] holds on the stack (12 × 6 has 18,
+/// 24 × 12 has 72); finer grids evaluate the pressure term per cell.
+const MAX_LEVELS: usize = 96;
+
+/// Midpoints of n equal cells of [−1, 1], mirror-symmetric to the bit:
+/// the upper half is the negated lower half.
+fn symmetric_midpoints(n: usize) -> impl Iterator<Item = f64> {
+    (0..n).map(move |k| {
+        let lower = k.min(n - 1 - k);
+        let u = -1.0 + (lower as f64 + 0.5) * 2.0 / n as f64;
+        if k == lower { u } else { -u }
+    })
 }
 
 impl TractionGrid {
@@ -137,19 +167,24 @@ impl TractionGrid {
             method,
             strips: Vec::new(),
             cells: Vec::new(),
+            levels: Vec::new(),
             shape_sum: 0.0,
         };
         if let TractionIntegration::Grid { across, along } = method {
             let (across, along) = (across.max(1), along.max(1));
-            let ds = 2.0 / across as f64;
-            for i in 0..across {
-                let s = -1.0 + (i as f64 + 0.5) * ds;
+            let mut level_of = std::collections::HashMap::new();
+            for s in symmetric_midpoints(across) {
                 let w = (1.0 - s * s).sqrt();
                 grid.strips.push((s, w));
-                for k in 0..along {
-                    let t = w * (-1.0 + (k as f64 + 0.5) * 2.0 / along as f64);
+                for u in symmetric_midpoints(along) {
+                    let t = w * u;
                     let shape = (1.0 - s * s - t * t).max(0.0).sqrt();
-                    grid.cells.push((t, shape));
+                    let next = grid.levels.len();
+                    let level = *level_of.entry(shape.to_bits()).or_insert(next);
+                    if level == next {
+                        grid.levels.push(shape);
+                    }
+                    grid.cells.push(GridCell { t, shape, level });
                     grid.shape_sum += shape * w;
                 }
             }
@@ -161,7 +196,42 @@ impl TractionGrid {
 /// Integrates `law` over the ellipse of a contact in motion `kinematics`
 /// (the full slip vector at P, ball relative to ring, and the relative
 /// angular velocity give each cell's slip). Allocation-free.
+///
+/// Compiled for AVX2 where the processor has it (detected at run time),
+/// else for the target's baseline (SSE2 on x86-64). Both builds run the
+/// same IEEE operations in the same order (the cells' loops four lanes to
+/// an instruction instead of two; Rust never fuses a multiply and an add
+/// on its own), so their results are bit-identical (test
+/// `avx2_build_is_bit_identical_to_baseline`).
 pub fn integrate<L: TractionLaw>(
+    law: &L,
+    grid: &TractionGrid,
+    kinematics: &ContactKinematics,
+) -> TractionResult {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: `integrate_avx2` requires AVX2 only, and the processor
+        // has it (detected just above).
+        #[allow(unsafe_code)]
+        return unsafe { integrate_avx2(law, grid, kinematics) };
+    }
+    integrate_baseline(law, grid, kinematics)
+}
+
+/// [`integrate_baseline`] compiled with AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn integrate_avx2<L: TractionLaw>(
+    law: &L,
+    grid: &TractionGrid,
+    kinematics: &ContactKinematics,
+) -> TractionResult {
+    integrate_baseline(law, grid, kinematics)
+}
+
+/// The integration itself, inlined into both builds of [`integrate`].
+#[inline(always)]
+fn integrate_baseline<L: TractionLaw>(
     law: &L,
     grid: &TractionGrid,
     kinematics: &ContactKinematics,
@@ -194,6 +264,15 @@ pub fn integrate<L: TractionLaw>(
             let ds = 2.0 / across as f64;
             let cell = a * ds * b * 2.0 / along as f64;
             let p_scale = patch.load / (grid.shape_sum * cell);
+            // The law's pressure term once per pressure level (per cell on
+            // grids finer than MAX_LEVELS levels).
+            let mut level_terms = [0.0; MAX_LEVELS];
+            let shared = grid.levels.len() <= MAX_LEVELS;
+            if shared {
+                for (term, &shape) in level_terms.iter_mut().zip(&grid.levels) {
+                    *term = law.pressure_term(p_scale * shape);
+                }
+            }
             for (&(s, w), cells) in grid.strips.iter().zip(grid.cells.chunks(along)) {
                 let xi = a * s;
                 let (sin_t, drop) = if patch.deformed_radius.is_finite() {
@@ -212,36 +291,50 @@ pub fn integrate<L: TractionLaw>(
                 let r1 = b * e_roll;
                 let s0 = tangential(slip_at_point + relative_spin.cross(&r0));
                 let d = tangential(relative_spin.cross(&r1));
-                // Σ τ, Σ t τ and Σ τ·s_t over the strip's cells.
-                let (mut sum, mut moment_t, mut power) = (Vector3::zeros(), Vector3::zeros(), 0.0);
+                // With τ = −g s_t: Σ g s_t, Σ t g s_t and Σ g |s_t|² over the
+                // strip's cells, component by component.
+                let (mut sum, mut moment_t, mut power) = ([0.0; 3], [0.0; 3], 0.0);
                 for batch in cells.chunks(BATCH) {
-                    let m = batch.len();
                     let mut pressures = [0.0; BATCH];
-                    let mut slips = [Vector3::zeros(); BATCH];
-                    let mut stresses = [Vector3::zeros(); BATCH];
-                    for (k, &(t, shape)) in batch.iter().enumerate() {
-                        slips[k] = s0 + t * d;
-                        pressures[k] = p_scale * shape;
+                    let mut terms = [0.0; BATCH];
+                    let mut slips = [[0.0; BATCH]; 3];
+                    let mut speeds = [0.0; BATCH];
+                    let mut ratios = [0.0; BATCH];
+                    for (k, c) in batch.iter().enumerate() {
+                        pressures[k] = p_scale * c.shape;
+                        terms[k] = if shared {
+                            level_terms[c.level]
+                        } else {
+                            law.pressure_term(pressures[k])
+                        };
+                        for i in 0..3 {
+                            slips[i][k] = s0[i] + c.t * d[i];
+                        }
                     }
-                    law.shear_stresses(
-                        &pressures[..m],
-                        &slips[..m],
-                        conditions,
-                        &mut stresses[..m],
-                    );
-                    for (k, &(t, _)) in batch.iter().enumerate() {
-                        sum += stresses[k];
-                        moment_t += t * stresses[k];
-                        power += stresses[k].dot(&slips[k]);
+                    for k in 0..BATCH {
+                        let squared = slips[0][k] * slips[0][k]
+                            + slips[1][k] * slips[1][k]
+                            + slips[2][k] * slips[2][k];
+                        speeds[k] = squared.sqrt();
+                    }
+                    law.stress_ratios(&pressures, &terms, &speeds, conditions, &mut ratios);
+                    for (k, c) in batch.iter().enumerate() {
+                        let g = ratios[k];
+                        for i in 0..3 {
+                            sum[i] += g * slips[i][k];
+                            moment_t[i] += c.t * (g * slips[i][k]);
+                        }
+                        power += g * (speeds[k] * speeds[k]);
                     }
                 }
                 // Each cell of the strip has area `cell · w`; the couple
                 // about P is Σ (r₀ + t r₁) × dF = r₀ × ΣdF + r₁ × Σ t dF.
                 let area = cell * w;
-                let (force, moment_t) = (area * sum, area * moment_t);
+                let force = -area * Vector3::from(sum);
+                let moment_t = -area * Vector3::from(moment_t);
                 out.force += force;
                 out.couple += r0.cross(&force) + r1.cross(&moment_t);
-                out.dissipation -= area * power;
+                out.dissipation += area * power;
             }
         }
     }
@@ -386,5 +479,101 @@ mod tests {
             (flat.force - curved.force).norm() > 1e-6,
             "curvature changes the slip field"
         );
+    }
+
+    /// The AVX2 build of the integration gives the baseline build's bits
+    /// for the EHL rheology (Newtonian to limiting shear), its blend with
+    /// boundary friction and Coulomb friction, with slip and spin, on flat
+    /// and curved patches, on grids that leave padding lanes and one finer
+    /// than the shared pressure levels. Skipped without AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn avx2_build_is_bit_identical_to_baseline() {
+        use crate::traction::mixed::Blended;
+        if !std::arch::is_x86_feature_detected!("avx2") {
+            return;
+        }
+        let bits = |r: &TractionResult| -> Vec<u64> {
+            r.force
+                .iter()
+                .chain(r.couple.iter())
+                .chain(r.moment.iter())
+                .chain([r.dissipation].iter())
+                .map(|x| x.to_bits())
+                .collect()
+        };
+        let fluid = crate::traction::ehl::tests::law();
+        let boundary = coulomb();
+        let blend = Blended {
+            fluid: &fluid,
+            boundary: &boundary,
+            share: 0.3,
+        };
+        let mut compared = 0;
+        for (across, along, curved) in [(12, 6, true), (7, 5, false), (40, 20, true)] {
+            let grid = TractionGrid::new(TractionIntegration::Grid { across, along });
+            let mut p = patch();
+            p.load = 400.0;
+            if curved {
+                p.deformed_radius = 3.3e-3;
+            }
+            for k in 0..30 {
+                let f = k as f64;
+                let kinematics = ContactKinematics {
+                    patch: p,
+                    ball_centre: Vector3::zeros(),
+                    slip: Vector3::new(1e-7 * 10f64.powf(0.25 * f), 2e-4 * (0.7 * f).sin(), 0.0),
+                    relative_spin: Vector3::new(0.0, 300.0 * f, -50.0 * (0.3 * f).cos()),
+                    conditions: ContactConditions {
+                        film: 2e-7,
+                        entrainment_speed: 10.0,
+                        rolling_velocity: 10.0,
+                    },
+                };
+                let pairs = [
+                    (
+                        integrate_baseline(&fluid, &grid, &kinematics),
+                        // SAFETY: AVX2 was detected above.
+                        #[allow(unsafe_code)]
+                        unsafe {
+                            integrate_avx2(&fluid, &grid, &kinematics)
+                        },
+                    ),
+                    (
+                        integrate_baseline(&blend, &grid, &kinematics),
+                        #[allow(unsafe_code)]
+                        unsafe {
+                            integrate_avx2(&blend, &grid, &kinematics)
+                        },
+                    ),
+                    (
+                        integrate_baseline(&boundary, &grid, &kinematics),
+                        #[allow(unsafe_code)]
+                        unsafe {
+                            integrate_avx2(&boundary, &grid, &kinematics)
+                        },
+                    ),
+                ];
+                for (baseline, avx2) in &pairs {
+                    assert!(baseline.force.norm() > 0.0);
+                    assert_eq!(bits(baseline), bits(avx2), "{across} × {along}, case {k}");
+                    compared += 1;
+                }
+            }
+        }
+        assert_eq!(compared, 270);
+    }
+
+    #[test]
+    fn grid_levels_are_the_distinct_shapes() {
+        // 12 × 6: mirror-symmetric in s and t, so 6 × 3 distinct shapes;
+        // 7 × 5: 4 × 3.
+        for (across, along, levels) in [(12, 6, 18), (7, 5, 12)] {
+            let grid = TractionGrid::new(TractionIntegration::Grid { across, along });
+            assert_eq!(grid.levels.len(), levels);
+            for c in &grid.cells {
+                assert_eq!(grid.levels[c.level].to_bits(), c.shape.to_bits());
+            }
+        }
     }
 }

@@ -10,10 +10,10 @@
 //! modified Coulomb law's. Both parts oppose the slip, so the blend
 //! dissipates and the energy balance (B2) needs nothing more.
 
-use super::{BATCH, ContactConditions, ModifiedCoulomb, TractionLaw};
+use super::{BATCH, Cells, ContactConditions, ModifiedCoulomb, TractionLaw};
 use crate::error::{InvalidParameter, require_positive};
 use crate::lubrication;
-use nalgebra::Vector3;
+
 use serde::{Deserialize, Serialize};
 
 /// Mixed lubrication of the ball–raceway contacts (case file:
@@ -90,35 +90,43 @@ pub struct Blended<'a, L: TractionLaw> {
 }
 
 impl<L: TractionLaw> TractionLaw for Blended<'_, L> {
+    /// The fluid's term (the boundary friction needs none).
     #[inline]
-    fn shear_stress(
+    fn pressure_term(&self, pressure: f64) -> f64 {
+        self.fluid.pressure_term(pressure)
+    }
+
+    /// (1 − φ) g_fluid + φ g_boundary.
+    #[inline]
+    fn stress_ratio(
         &self,
         pressure: f64,
-        slip: &Vector3<f64>,
+        term: f64,
+        speed: f64,
         conditions: &ContactConditions,
-    ) -> Vector3<f64> {
-        (1.0 - self.share) * self.fluid.shear_stress(pressure, slip, conditions)
-            + self.share * self.boundary.shear_stress(pressure, slip, conditions)
+    ) -> f64 {
+        (1.0 - self.share) * self.fluid.stress_ratio(pressure, term, speed, conditions)
+            + self.share * self.boundary.stress_ratio(pressure, 0.0, speed, conditions)
     }
 
     /// The fluid's cells in its own batches, then the boundary's.
-    #[inline]
-    fn shear_stresses(
+    #[inline(always)]
+    fn stress_ratios(
         &self,
-        pressures: &[f64],
-        slips: &[Vector3<f64>],
+        pressures: &Cells,
+        terms: &Cells,
+        speeds: &Cells,
         conditions: &ContactConditions,
-        stresses: &mut [Vector3<f64>],
+        ratios: &mut Cells,
     ) {
-        let n = pressures.len().min(BATCH);
         self.fluid
-            .shear_stresses(pressures, slips, conditions, &mut stresses[..n]);
-        for k in 0..n {
-            stresses[k] = (1.0 - self.share) * stresses[k]
+            .stress_ratios(pressures, terms, speeds, conditions, ratios);
+        for k in 0..BATCH {
+            ratios[k] = (1.0 - self.share) * ratios[k]
                 + self.share
                     * self
                         .boundary
-                        .shear_stress(pressures[k], &slips[k], conditions);
+                        .stress_ratio(pressures[k], 0.0, speeds[k], conditions);
         }
     }
 }
@@ -126,6 +134,7 @@ impl<L: TractionLaw> TractionLaw for Blended<'_, L> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::Vector3;
 
     #[test]
     fn the_blend_ends_at_its_two_laws() {
@@ -163,16 +172,14 @@ mod tests {
             boundary: &boundary,
             share: 0.3,
         };
-        let pressures = [0.0, 5e8, 1.2e9, 2e9];
-        let slips = [v, v * 1e-4, Vector3::zeros(), -v];
-        let mut out = [Vector3::zeros(); 4];
-        law.shear_stresses(&pressures, &slips, &c, &mut out);
-        for k in 0..4 {
-            let single = law.shear_stress(pressures[k], &slips[k], &c);
-            assert!(
-                (out[k] - single).norm() <= 1e-12 * single.norm().max(1.0),
-                "cell {k}"
-            );
+        let pressures = [0.0, 5e8, 1.2e9, 2e9, 1e9, 0.0, 3e9, 1e8];
+        let speeds = [0.3, 3e-5, 0.0, 0.3, 1e-9, 0.0, 2.0, 1e3];
+        let terms = pressures.map(|p| law.pressure_term(p));
+        let mut out = [0.0; BATCH];
+        law.stress_ratios(&pressures, &terms, &speeds, &c, &mut out);
+        for k in 0..BATCH {
+            let single = law.stress_ratio(pressures[k], terms[k], speeds[k], &c);
+            assert_eq!(out[k].to_bits(), single.to_bits(), "cell {k}");
         }
     }
 

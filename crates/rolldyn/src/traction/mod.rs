@@ -74,38 +74,69 @@ pub struct ContactConditions {
     pub rolling_velocity: f64,
 }
 
-/// A traction stress law.
+/// A traction stress law whose stress opposes the local slip:
+/// τ = −g(p, |v|) v with a ratio g ≥ 0 (every built-in law: Coulomb,
+/// traction curve, EHL rheology, and their blend).
 pub trait TractionLaw {
+    /// What the law needs of a cell's pressure alone (the EHL rheology:
+    /// the viscosity η(p)), computed once per distinct pressure of a grid.
+    /// Default: nothing (0).
+    #[inline]
+    fn pressure_term(&self, _pressure: f64) -> f64 {
+        0.0
+    }
+
+    /// The ratio g = |τ|/|v| ≥ 0 \[Pa·s/m\] at Hertz pressure `pressure`
+    /// \[Pa\] (with its [`Self::pressure_term`] `term`) and slip speed
+    /// `speed` = |v| \[m/s\], under the contact's `conditions`; 0 where the
+    /// law gives no stress (no slip, no pressure, no film).
+    fn stress_ratio(
+        &self,
+        pressure: f64,
+        term: f64,
+        speed: f64,
+        conditions: &ContactConditions,
+    ) -> f64;
+
+    /// [`Self::stress_ratio`] of [`BATCH`] cells at once, into `ratios`
+    /// (cells the caller leaves empty have pressure and speed 0, and get
+    /// 0). A law may override it to evaluate the cells stage by stage
+    /// (loops over the lanes that the compiler vectorizes), with the same
+    /// arithmetic per cell. Default: cell by cell.
+    #[inline(always)]
+    fn stress_ratios(
+        &self,
+        pressures: &Cells,
+        terms: &Cells,
+        speeds: &Cells,
+        conditions: &ContactConditions,
+        ratios: &mut Cells,
+    ) {
+        for (k, out) in ratios.iter_mut().enumerate() {
+            *out = self.stress_ratio(pressures[k], terms[k], speeds[k], conditions);
+        }
+    }
+
     /// Shear stress on the ball \[Pa\] (tangential vector) at Hertz pressure
     /// `pressure` \[Pa\] and local `slip` \[m/s\] (tangential), under the
-    /// contact's `conditions`; it opposes the slip.
+    /// contact's `conditions`: −g v.
+    #[inline]
     fn shear_stress(
         &self,
         pressure: f64,
         slip: &Vector3<f64>,
         conditions: &ContactConditions,
-    ) -> Vector3<f64>;
-
-    /// [`Self::shear_stress`] of up to [`BATCH`] cells at once, into
-    /// `stresses` (same length as `pressures` and `slips`). A law may
-    /// override it to evaluate the cells stage by stage (independent
-    /// square roots and divisions overlap in the processor), with the same
-    /// arithmetic per cell. Default: cell by cell.
-    fn shear_stresses(
-        &self,
-        pressures: &[f64],
-        slips: &[Vector3<f64>],
-        conditions: &ContactConditions,
-        stresses: &mut [Vector3<f64>],
-    ) {
-        for ((p, s), out) in pressures.iter().zip(slips).zip(stresses.iter_mut()) {
-            *out = self.shear_stress(*p, s, conditions);
-        }
+    ) -> Vector3<f64> {
+        let term = self.pressure_term(pressure);
+        -self.stress_ratio(pressure, term, slip.norm(), conditions) * slip
     }
 }
 
-/// Most cells a traction law is handed at once ([`TractionLaw::shear_stresses`]).
+/// Most cells a traction law is handed at once ([`TractionLaw::stress_ratios`]).
 pub const BATCH: usize = 8;
+
+/// One value per cell of a batch.
+pub type Cells = [f64; BATCH];
 
 /// The built-in traction models (case file: `model.traction`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
@@ -247,11 +278,11 @@ impl TractionModel {
 mod batch_tests {
     use super::*;
 
-    /// Cells spread over slips from 0 to 10 m/s and pressures from 0 to
-    /// 3 GPa, with the edge cases each law guards (zero slip, zero
+    /// Cells spread over slip speeds from 0 to 10 m/s and pressures from 0
+    /// to 3 GPa, with the edge cases each law guards (zero slip, zero
     /// pressure).
-    fn cells() -> (Vec<f64>, Vec<Vector3<f64>>) {
-        let (mut p, mut s) = (Vec::new(), Vec::new());
+    fn cells() -> (Vec<f64>, Vec<f64>) {
+        let (mut p, mut v) = (Vec::new(), Vec::new());
         for k in 0..23 {
             let f = k as f64;
             p.push(if k % 7 == 3 {
@@ -259,26 +290,30 @@ mod batch_tests {
             } else {
                 3e9 * (0.37 * f).sin().abs()
             });
-            let v = 10f64.powf(-6.0 + 0.33 * f);
-            s.push(if k % 5 == 2 {
-                Vector3::zeros()
+            v.push(if k % 5 == 2 {
+                0.0
             } else {
-                v * Vector3::new((0.7 * f).cos(), (0.7 * f).sin(), 0.0)
+                10f64.powf(-6.0 + 0.33 * f)
             });
         }
-        (p, s)
+        (p, v)
     }
 
     fn assert_batch_is_cell_by_cell(law: &impl TractionLaw, conditions: &ContactConditions) {
-        let (p, s) = cells();
-        for (pc, sc) in p.chunks(BATCH).zip(s.chunks(BATCH)) {
-            let mut batch = [Vector3::zeros(); BATCH];
-            law.shear_stresses(pc, sc, conditions, &mut batch[..pc.len()]);
-            for k in 0..pc.len() {
-                let single = law.shear_stress(pc[k], &sc[k], conditions);
-                for i in 0..3 {
-                    assert_eq!(batch[k][i].to_bits(), single[i].to_bits(), "cell {k}");
-                }
+        let (p, v) = cells();
+        for (pc, vc) in p.chunks(BATCH).zip(v.chunks(BATCH)) {
+            let (mut pressures, mut speeds, mut terms) = ([0.0; BATCH], [0.0; BATCH], [0.0; BATCH]);
+            pressures[..pc.len()].copy_from_slice(pc);
+            speeds[..vc.len()].copy_from_slice(vc);
+            for k in 0..BATCH {
+                terms[k] = law.pressure_term(pressures[k]);
+            }
+            let mut batch = [0.0; BATCH];
+            law.stress_ratios(&pressures, &terms, &speeds, conditions, &mut batch);
+            for k in 0..BATCH {
+                let single = law.stress_ratio(pressures[k], terms[k], speeds[k], conditions);
+                assert_eq!(batch[k].to_bits(), single.to_bits(), "cell {k}");
+                assert!(single >= 0.0 && single.is_finite(), "cell {k}: {single}");
             }
         }
     }
