@@ -61,11 +61,14 @@ pub fn ln_1p(u: f64) -> f64 {
     let m = f64::from_bits((shifted & MANTISSA).wrapping_add(SQRT_HALF_BITS));
     let f = (m - 1.0) / (m + 1.0);
     let s = f * f;
-    // (atanh f − f)/f³ = 1/3 + s/5 + … + s⁹/21 + …, by Horner.
-    let mut series = ATANH_SERIES[9];
-    for k in (0..9).rev() {
-        series = series * s + ATANH_SERIES[k];
-    }
+    // (atanh f − f)/f³ = 1/3 + s/5 + … + s⁹/21 + …, by Estrin's scheme
+    // (pairs, then powers s², s⁴, s⁸: a chain of 5 steps instead of 9).
+    let c = &ATANH_SERIES;
+    let (s2, pair) = (s * s, |k: usize| c[k] + c[k + 1] * s);
+    let s4 = s2 * s2;
+    let low = pair(0) + pair(2) * s2;
+    let high = pair(4) + pair(6) * s2;
+    let series = (low + high * s4) + pair(8) * (s4 * s4);
     let two_f = 2.0 * f;
     let ln_m = two_f + two_f * s * series;
     exponent * LN2_HI + (ln_m + (exponent * LN2_LO + error / sum))

@@ -26,7 +26,7 @@
 //! area πab. It is exact for Coulomb friction at uniform slip; it ignores
 //! spin and differential slip.
 
-use super::{BATCH, ContactConditions, Creep, TractionLaw};
+use super::{BATCH, Cells, ContactConditions, Creep, TractionLaw};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
@@ -273,6 +273,8 @@ fn integrate_baseline<L: TractionLaw>(
                     *term = law.pressure_term(p_scale * shape);
                 }
             }
+            let mut pack = Pack::default();
+            let mut sums = Sums::default();
             for (&(s, w), cells) in grid.strips.iter().zip(grid.cells.chunks(along)) {
                 let xi = a * s;
                 let (sin_t, drop) = if patch.deformed_radius.is_finite() {
@@ -285,62 +287,129 @@ fn integrate_baseline<L: TractionLaw>(
                 let cos_t = (1.0 - sin_t * sin_t).sqrt();
                 let local_normal = cos_t * n + sin_t * e_across;
                 let tangential = |v: Vector3<f64>| v - v.dot(&local_normal) * local_normal;
-                // Along the strip X − P = r₀ + t r₁, so the tangential slip
-                // is linear in t: s_t = s₀ + t d.
+                // Along the strip X − P = r₀ + t r₁ (r₀ = ξ e_⊥ − drop n,
+                // r₁ = b e_roll), so the tangential slip is linear in t:
+                // s_t = s₀ + t d.
                 let r0 = xi * e_across - drop * n;
-                let r1 = b * e_roll;
                 let s0 = tangential(slip_at_point + relative_spin.cross(&r0));
-                let d = tangential(relative_spin.cross(&r1));
-                // With τ = −g s_t: Σ g s_t, Σ t g s_t and Σ g |s_t|² over the
-                // strip's cells, component by component.
-                let (mut sum, mut moment_t, mut power) = ([0.0; 3], [0.0; 3], 0.0);
-                for batch in cells.chunks(BATCH) {
-                    let mut pressures = [0.0; BATCH];
-                    let mut terms = [0.0; BATCH];
-                    let mut slips = [[0.0; BATCH]; 3];
-                    let mut speeds = [0.0; BATCH];
-                    let mut ratios = [0.0; BATCH];
-                    for (k, c) in batch.iter().enumerate() {
-                        pressures[k] = p_scale * c.shape;
-                        terms[k] = if shared {
-                            level_terms[c.level]
-                        } else {
-                            law.pressure_term(pressures[k])
-                        };
-                        for i in 0..3 {
-                            slips[i][k] = s0[i] + c.t * d[i];
-                        }
+                let d = tangential(relative_spin.cross(&(b * e_roll)));
+                // Each cell of the strip has area `cell · w`.
+                let area = cell * w;
+                for c in cells {
+                    let k = pack.len;
+                    pack.pressure[k] = p_scale * c.shape;
+                    pack.term[k] = if shared {
+                        level_terms[c.level]
+                    } else {
+                        law.pressure_term(pack.pressure[k])
+                    };
+                    for i in 0..3 {
+                        pack.slip[i][k] = s0[i] + c.t * d[i];
                     }
-                    for k in 0..BATCH {
-                        let squared = slips[0][k] * slips[0][k]
-                            + slips[1][k] * slips[1][k]
-                            + slips[2][k] * slips[2][k];
-                        speeds[k] = squared.sqrt();
-                    }
-                    law.stress_ratios(&pressures, &terms, &speeds, conditions, &mut ratios);
-                    for (k, c) in batch.iter().enumerate() {
-                        let g = ratios[k];
-                        for i in 0..3 {
-                            sum[i] += g * slips[i][k];
-                            moment_t[i] += c.t * (g * slips[i][k]);
-                        }
-                        power += g * (speeds[k] * speeds[k]);
+                    pack.t[k] = c.t;
+                    pack.xi[k] = xi;
+                    pack.drop[k] = drop;
+                    pack.area[k] = area;
+                    pack.len += 1;
+                    if pack.len == BATCH {
+                        sums.add(law, &pack, conditions);
+                        pack.len = 0;
                     }
                 }
-                // Each cell of the strip has area `cell · w`; the couple
-                // about P is Σ (r₀ + t r₁) × dF = r₀ × ΣdF + r₁ × Σ t dF.
-                let area = cell * w;
-                let force = -area * Vector3::from(sum);
-                let moment_t = -area * Vector3::from(moment_t);
-                out.force += force;
-                out.couple += r0.cross(&force) + r1.cross(&moment_t);
-                out.dissipation += area * power;
             }
+            if pack.len > 0 {
+                pack.clear_tail();
+                sums.add(law, &pack, conditions);
+            }
+            // dF = −area g s_t per cell; the couple about P is
+            // Σ (r₀ + t r₁) × dF = e_⊥ × Σ ξ dF − n × Σ drop dF + r₁ × Σ t dF.
+            let total = |lanes: &[Cells; 3]| -Vector3::from(lanes.map(|l| l.iter().sum::<f64>()));
+            out.force = total(&sums.force);
+            out.couple = e_across.cross(&total(&sums.across_moment))
+                - n.cross(&total(&sums.drop_moment))
+                + (b * e_roll).cross(&total(&sums.along_moment));
+            out.dissipation = sums.power.iter().sum();
         }
     }
     // Σ (X − q) × dF = Σ (X − P) × dF + (P − q) × Σ dF.
     out.moment = out.couple + (patch.point - ball_centre).cross(&out.force);
     out
+}
+
+/// Cells packed for the law, [`BATCH`] at a time across strip ends:
+/// pressure, pressure term, tangential slip, position t along the strip,
+/// and the strip's ξ, drop and cell area.
+#[derive(Default)]
+struct Pack {
+    len: usize,
+    pressure: Cells,
+    term: Cells,
+    slip: [Cells; 3],
+    t: Cells,
+    xi: Cells,
+    drop: Cells,
+    area: Cells,
+}
+
+impl Pack {
+    /// Empties the lanes from `len` on: no pressure, no slip, no area, so
+    /// they give g = 0 and add nothing.
+    #[inline(always)]
+    fn clear_tail(&mut self) {
+        let tail = self.len..BATCH;
+        let [x, y, z] = &mut self.slip;
+        for lanes in [
+            &mut self.pressure,
+            &mut self.term,
+            x,
+            y,
+            z,
+            &mut self.t,
+            &mut self.xi,
+            &mut self.drop,
+            &mut self.area,
+        ] {
+            lanes[tail.clone()].fill(0.0);
+        }
+    }
+}
+
+/// Lane-wise sums over the packs (each lane adds its cells in grid order,
+/// the lanes are added at the end: a fixed order, so the same bits on
+/// every build): with w = area · g, Σ w s_t, Σ ξ w s_t, Σ drop w s_t,
+/// Σ t w s_t and Σ w |s_t|².
+#[derive(Default)]
+struct Sums {
+    force: [Cells; 3],
+    across_moment: [Cells; 3],
+    drop_moment: [Cells; 3],
+    along_moment: [Cells; 3],
+    power: Cells,
+}
+
+impl Sums {
+    /// The law's ratios for `pack`'s cells, added lane by lane.
+    #[inline(always)]
+    fn add<L: TractionLaw>(&mut self, law: &L, pack: &Pack, conditions: &ContactConditions) {
+        let [x, y, z] = &pack.slip;
+        let mut speed = [0.0; BATCH];
+        for (k, v) in speed.iter_mut().enumerate() {
+            *v = (x[k] * x[k] + y[k] * y[k] + z[k] * z[k]).sqrt();
+        }
+        let mut ratio = [0.0; BATCH];
+        law.stress_ratios(&pack.pressure, &pack.term, &speed, conditions, &mut ratio);
+        for k in 0..BATCH {
+            let w = pack.area[k] * ratio[k];
+            for i in 0..3 {
+                let f = w * pack.slip[i][k];
+                self.force[i][k] += f;
+                self.across_moment[i][k] += pack.xi[k] * f;
+                self.drop_moment[i][k] += pack.drop[k] * f;
+                self.along_moment[i][k] += pack.t[k] * f;
+            }
+            self.power[k] += w * (speed[k] * speed[k]);
+        }
+    }
 }
 
 #[cfg(test)]

@@ -172,8 +172,10 @@ mod tests {
             boundary: &boundary,
             share: 0.3,
         };
-        let pressures = [0.0, 5e8, 1.2e9, 2e9, 1e9, 0.0, 3e9, 1e8];
-        let speeds = [0.3, 3e-5, 0.0, 0.3, 1e-9, 0.0, 2.0, 1e3];
+        let cells = [0.0, 5e8, 1.2e9, 2e9, 1e9, 0.0, 3e9, 1e8];
+        let pressures: [f64; BATCH] = std::array::from_fn(|k| cells[k % 8]);
+        let speeds: [f64; BATCH] =
+            std::array::from_fn(|k| [0.3, 3e-5, 0.0, 0.3, 1e-9, 0.0, 2.0, 1e3][(k + k / 8) % 8]);
         let terms = pressures.map(|p| law.pressure_term(p));
         let mut out = [0.0; BATCH];
         law.stress_ratios(&pressures, &terms, &speeds, &c, &mut out);

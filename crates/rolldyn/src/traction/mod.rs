@@ -133,7 +133,7 @@ pub trait TractionLaw {
 }
 
 /// Most cells a traction law is handed at once ([`TractionLaw::stress_ratios`]).
-pub const BATCH: usize = 8;
+pub const BATCH: usize = 24;
 
 /// One value per cell of a batch.
 pub type Cells = [f64; BATCH];

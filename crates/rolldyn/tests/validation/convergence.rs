@@ -91,8 +91,10 @@ fn smooth_means_converge_with_the_tolerance() {
     );
     for (k, tol) in [(0, 1e-5), (1, 1e-3)] {
         let v = |i: usize| if k == 0 { r[i].0 } else { r[i].1 };
+        // Differences at round-off (the cage speed agrees to 1e-15 at
+        // rtol 1e-5 and 1e-6) say nothing about the order of the two.
         let (d1, d2) = ((v(0) - v(1)).abs(), (v(1) - v(2)).abs());
-        assert!(d2 <= d1, "not converging: {r:?}");
+        assert!(d2 <= d1.max(1e-12 * v(2).abs()), "not converging: {r:?}");
         assert!(d2 / v(2).abs() < tol, "{r:?}");
     }
 }
