@@ -23,12 +23,14 @@ pub enum BearingSource {
     Preset(&'static Preset),
     /// A catalogue bearing (docs/catalogue.md), its clearance group given.
     Catalogue(CatalogueBearing),
-    /// A bearing given inline: its case text (the `[bearing]` table) and
-    /// its name in messages.
+    /// A bearing given inline: its case text (its `[bearing]` table and
+    /// any `materials`, `cage`, `lubricant`, `model` and `inner_ring`
+    /// tables) and its
+    /// name in messages.
     Inline {
         /// `shaft.bearings[i]`, or its designation.
         name: String,
-        /// A case of that `[bearing]` alone.
+        /// A case of those tables alone.
         text: String,
     },
 }
@@ -146,6 +148,22 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
                 "a clearance group applies to a catalogue bearing (catalogue = \"6206\"; inline: bearing.catalogue with bearing.clearance_group)",
             ));
         }
+        // The tables that complete an inline bearing.
+        let with_inline = [
+            ("materials", b.materials.is_some()),
+            ("cage", b.cage.is_some()),
+            ("lubricant", b.lubricant.is_some()),
+            ("model", b.model.is_some()),
+            ("inner_ring", b.inner_ring.is_some()),
+        ];
+        if let (None, Some((table, _))) = (&b.bearing, with_inline.iter().find(|(_, given)| *given))
+        {
+            return Err(Invalid::new(
+                key(table),
+                None,
+                "applies to an inline bearing ([shaft.bearings.bearing]); a preset or catalogue bearing brings its own",
+            ));
+        }
         let source = match (&b.preset, &b.catalogue, &b.bearing) {
             (Some(name), None, None) => {
                 BearingSource::Preset(crate::presets::find(name).ok_or_else(|| {
@@ -175,9 +193,26 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
                 #[derive(serde::Serialize)]
                 struct Inline<'a> {
                     bearing: &'a crate::raw::RawBearing,
+                    #[serde(skip_serializing_if = "Option::is_none")]
+                    materials: &'a Option<crate::raw::RawMaterials>,
+                    #[serde(skip_serializing_if = "Option::is_none")]
+                    cage: &'a Option<crate::raw::RawCage>,
+                    #[serde(skip_serializing_if = "Option::is_none")]
+                    lubricant: &'a Option<crate::raw::RawLubricant>,
+                    #[serde(skip_serializing_if = "Option::is_none")]
+                    model: &'a Option<crate::raw::RawModel>,
+                    #[serde(skip_serializing_if = "Option::is_none")]
+                    inner_ring: &'a Option<crate::raw::RawInnerRing>,
                 }
-                let text = toml::to_string(&Inline { bearing })
-                    .map_err(|e| Invalid::new(key("bearing"), None, e.to_string()))?;
+                let text = toml::to_string(&Inline {
+                    bearing,
+                    materials: &b.materials,
+                    cage: &b.cage,
+                    lubricant: &b.lubricant,
+                    model: &b.model,
+                    inner_ring: &b.inner_ring,
+                })
+                .map_err(|e| Invalid::new(key("bearing"), None, e.to_string()))?;
                 BearingSource::Inline {
                     name: bearing
                         .designation

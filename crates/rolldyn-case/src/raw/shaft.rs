@@ -68,8 +68,21 @@ pub struct RawShaftBearing {
     pub clearance_group: Option<String>,
     /// Or the bearing inline (`[shaft.bearings.bearing]`, the keys of
     /// `[bearing]`, which may name a preset or a catalogue bearing and
-    /// change its values), with default materials and model settings.
+    /// change its values), with the tables below (default materials and
+    /// model settings without them).
     pub bearing: Option<super::RawBearing>,
+    /// An inline bearing's materials (`[shaft.bearings.materials]`: the
+    /// keys of `[materials]`).
+    pub materials: Option<super::RawMaterials>,
+    /// An inline bearing's cage (the keys of `[cage]`).
+    pub cage: Option<super::RawCage>,
+    /// An inline bearing's lubricant (the keys of `[lubricant]`).
+    pub lubricant: Option<super::RawLubricant>,
+    /// An inline bearing's model settings (the keys of `[model]`).
+    pub model: Option<super::RawModel>,
+    /// An inline bearing's inner ring (the keys of `[inner_ring]`: in a
+    /// run its mass and tilt inertia ride on the shaft).
+    pub inner_ring: Option<super::RawInnerRing>,
     /// Axial position of its pitch plane from the shaft's reference point.
     pub position: Quantity<Length>,
     /// "forward" (default: +x thrust on its inner ring) or "reversed".

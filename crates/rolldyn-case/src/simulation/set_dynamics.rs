@@ -116,15 +116,29 @@ impl SetSimulation {
             mass: 0.0,
             tilt_inertia: 0.0,
         };
-        for (b, bearing_case) in mounted.iter().zip(&bearing_cases) {
-            let parameters = bearing_case.dynamics_parameters()?;
+        let on_shaft = kind.is_none();
+        for (i, (b, bearing_case)) in mounted.iter().zip(&bearing_cases).enumerate() {
+            // A shaft bearing's own case: its errors name it.
+            let name = |mut invalid: Invalid| {
+                if on_shaft {
+                    invalid.key = format!("shaft.bearings[{i}].{}", invalid.key);
+                }
+                invalid
+            };
+            let named = |e: SimulationError| match e {
+                SimulationError::Case(invalid) => SimulationError::Case(name(invalid)),
+                e => e,
+            };
+            let parameters = bearing_case
+                .dynamics_parameters()
+                .map_err(|e| named(e.into()))?;
             if parameters.speed.speed_at(0.0) != conditions.inner_speed {
                 return refuse("operating.speed", "a speed that changes over the run");
             }
             body.mass += parameters.inner_ring_mass;
             body.tilt_inertia += parameters.inner_ring_tilt_inertia
                 + parameters.inner_ring_mass * b.position * b.position;
-            models.push(super::model(bearing_case, parameters)?);
+            models.push(super::model(bearing_case, parameters).map_err(named)?);
         }
         let settings = SolverSettings::of(
             case,
