@@ -126,18 +126,18 @@ pub fn hamrock_dowson(
     let speed = lubricant.viscosity * u / (effective_modulus * rx);
     let weight = load / (effective_modulus * rx * rx);
     let material = lubricant.pressure_viscosity * effective_modulus;
+    // The powers as exponentials of the three logarithms (3 ln + 2 exp
+    // instead of 6 pow: the films are evaluated at every contact of every
+    // right-hand side; the same values to ~1e-15).
+    let (ln_u, ln_g, ln_w) = (speed.ln(), material.ln(), weight.ln());
     Film {
         central: rx
             * 2.69
-            * speed.powf(0.67)
-            * material.powf(0.53)
-            * weight.powf(-0.067)
+            * (0.67 * ln_u + 0.53 * ln_g - 0.067 * ln_w).exp()
             * (1.0 - 0.61 * (-0.73 * ellipticity).exp()),
         minimum: rx
             * 3.63
-            * speed.powf(0.68)
-            * material.powf(0.49)
-            * weight.powf(-0.073)
+            * (0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w).exp()
             * (1.0 - (-0.68 * ellipticity).exp()),
     }
 }
