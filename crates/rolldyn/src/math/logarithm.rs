@@ -9,11 +9,12 @@
 //! in SIMD lanes alike, and a loop over cells compiles to vector
 //! instructions.
 //!
-//! Method (the classic one of Sun's fdlibm `log1p`, written without
+//! Method (fdlibm's `log1p`, docs/references.md, written without
 //! branches): 1 + u = 2^e m with m in [√½, √2), the rounding error of
 //! 1 + u carried as a correction c/(1 + u), and
 //! ln m = 2 atanh f = 2f (1 + f²/3 + f⁴/5 + …), f = (m − 1)/(m + 1),
-//! |f| ≤ 0.1716, summed to f²⁰/21 (truncation below 2⁻⁵⁵ of the sum).
+//! |f| ≤ 0.1716, summed to the f²¹/21 term (truncation below 2⁻⁵⁵ of the
+//! sum) by Estrin's scheme (Estrin 1960).
 //! Accuracy: within 2 ulp of the exact value over [0, 1e300] (test).
 
 /// ln 2 split so that e · `LN2_HI` is exact for |e| < 2¹¹ (fdlibm's).
