@@ -19,8 +19,11 @@
 //! Its part tangent to n_X drives the stress law. Forces and moments (about
 //! the ball centre) are the sums over cells. The dissipated power is
 //! −Σ dF·s. Along a strip X − P = r₀ + t r₁ and n_X is constant, so the
-//! tangential slip is s₀ + t d and the couple about P is
-//! r₀ × Σ dF + r₁ × Σ t dF: a cell costs the stress law and three sums.
+//! tangential slip is s₀ + t d. Every law's stress is τ = −g s_t with a
+//! ratio g ≥ 0, and with r₀ = ξ e_⊥ − drop n the couple about P is
+//! e_⊥ × Σ ξ dF − n × Σ drop dF + r₁ × Σ t dF: a cell costs its ratio and
+//! a few lane-wise sums, the cells packed [`BATCH`] at a time across strip
+//! ends so that the loops vectorize (docs/dynamics.md).
 //!
 //! `centre` evaluates one point at P with the mean pressure Q/(πab) over the
 //! area πab. It is exact for Coulomb friction at uniform slip; it ignores
