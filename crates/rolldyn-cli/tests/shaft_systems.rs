@@ -1,7 +1,7 @@
 //! End-to-end tests of bearings on a shaft beyond the quasi-static
 //! solution of a rigid one (docs/systems.md): the thermal preload of a
 //! pair, sets and shafts in motion, the elastic shaft, moments among the
-//! shaft loads and fits on a shaft's bearings.
+//! shaft loads, fits on a shaft's bearings and inline bearings.
 
 #![allow(clippy::unwrap_used)]
 
@@ -659,4 +659,118 @@ fn a_gear_mesh_shakes_the_shaft() {
         stderr(&o)
     );
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A bearing given inline on the shaft (`[shaft.bearings.bearing]`, here
+/// the 6206 preset's geometry written out) is that bearing: the shaft's
+/// solution equals the presets'; a bad inline value is named with its
+/// shaft key, by `check` too.
+#[test]
+fn an_inline_bearing_sits_on_a_shaft() {
+    let presets = json(
+        &["quasistatic", "-", "--json"],
+        Some(&SHAFT.replace("ORIENTATION", "forward")),
+    );
+    let inline = SHAFT.replace("ORIENTATION", "forward").replacen(
+        "preset = \"6206\"\nposition = \"60 mm\"\norientation = \"forward\"",
+        "position = \"60 mm\"\norientation = \"forward\"\n[shaft.bearings.bearing]\nball_diameter = \"9.525 mm\"\nball_count = 9\npitch_diameter = \"46 mm\"\ndiametral_clearance = \"12.5 um\"\ninner_groove_curvature = 0.52\nouter_groove_curvature = 0.52",
+        1,
+    );
+    assert!(inline.contains("[shaft.bearings.bearing]"));
+    let v = json(&["quasistatic", "-", "--json"], Some(&inline));
+    for k in 0..2 {
+        let load = |v: &serde_json::Value| {
+            v["arrangement"]["bearings"][k]["radial_load_n"]
+                .as_f64()
+                .unwrap()
+        };
+        assert!(
+            (load(&presets) - load(&v)).abs() < 1e-6 * load(&presets),
+            "{} vs {}",
+            load(&presets),
+            load(&v)
+        );
+    }
+    let bad = inline.replace("ball_count = 9", "ball_count = 2");
+    for command in ["quasistatic", "check"] {
+        let o = rolldyn(&[command, "-"], Some(&bad));
+        assert_eq!(o.status.code(), Some(2), "{command}");
+        let e = stderr(&o);
+        assert!(
+            e.contains("shaft.bearings[1].bearing") && e.contains("ball_count"),
+            "{command}: {e}"
+        );
+    }
+}
+
+/// An inline bearing takes its own materials (`[shaft.bearings.materials]`):
+/// steel written out is the default, silicon nitride balls (a hybrid
+/// bearing, E 310 GPa against 208) make it stiffer under the same load;
+/// the tables are refused beside a preset, and a bad material is named
+/// with its shaft key.
+#[test]
+fn an_inline_bearing_takes_its_own_materials() {
+    let inline = SHAFT.replace("ORIENTATION", "forward").replacen(
+        "preset = \"6206\"\nposition = \"60 mm\"\norientation = \"forward\"",
+        "position = \"60 mm\"\norientation = \"forward\"\n[shaft.bearings.bearing]\nball_diameter = \"9.525 mm\"\nball_count = 9\npitch_diameter = \"46 mm\"\ndiametral_clearance = \"12.5 um\"\ninner_groove_curvature = 0.52\nouter_groove_curvature = 0.52\n[shaft.bearings.materials]\nball = \"BALL\"",
+        1,
+    );
+    let displacement = |ball: &str| {
+        let v = json(
+            &["quasistatic", "-", "--json"],
+            Some(&inline.replace("BALL", ball)),
+        );
+        v["arrangement"]["bearings"][1]["quasistatic"]["radial_displacement_z_m"]
+            .as_f64()
+            .unwrap()
+            .abs()
+    };
+    let plain = SHAFT.replace("ORIENTATION", "forward");
+    let preset = json(&["quasistatic", "-", "--json"], Some(&plain))["arrangement"]["bearings"][1]
+        ["quasistatic"]["radial_displacement_z_m"]
+        .as_f64()
+        .unwrap()
+        .abs();
+    let (steel, hybrid) = (displacement("steel_52100"), displacement("silicon_nitride"));
+    assert!(
+        (steel - preset).abs() < 1e-9 * preset,
+        "{steel} vs {preset}"
+    );
+    assert!(hybrid < 0.97 * steel, "hybrid {hybrid} vs steel {steel}");
+    let beside_preset = plain.replacen(
+        "orientation = \"forward\"",
+        "orientation = \"forward\"\n[shaft.bearings.materials]\nball = \"silicon_nitride\"",
+        1,
+    );
+    let bad = inline.replace("BALL", "glass");
+    for (case, key) in [
+        (&beside_preset, "shaft.bearings[1].materials"),
+        (&bad, "shaft.bearings[1].bearing"),
+    ] {
+        let o = rolldyn(&["quasistatic", "-"], Some(case));
+        assert_eq!(o.status.code(), Some(2));
+        let e = stderr(&o);
+        assert!(e.contains(key), "{e}");
+    }
+    assert!(stderr(&rolldyn(&["quasistatic", "-"], Some(&bad))).contains("glass"));
+    // In motion the inline bearing needs its inner ring and cage, asked
+    // for with its shaft key.
+    let out = temp_dir("inline-run").join("run");
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "1 ms",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        Some(&inline.replace("BALL", "silicon_nitride")),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("shaft.bearings[1].inner_ring.mass"),
+        "{}",
+        stderr(&o)
+    );
 }
