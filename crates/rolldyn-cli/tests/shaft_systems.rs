@@ -305,23 +305,17 @@ fn dynamic_run_of_a_shaft() {
         );
     }
     let floating = case.replacen("orientation = \"forward\"", "axial = \"floating\"", 1);
+    assert_run_refused(&floating, "shaft.bearings[1].axial");
+}
+
+/// A 1 ms run of `case` is refused (exit 2) with `key` in its message.
+fn assert_run_refused(case: &str, key: &str) {
     let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--duration",
-            "1 ms",
-            "-o",
-            out.to_str().unwrap(),
-        ],
-        Some(&floating),
+        &["run", "-", "--duration", "1 ms", "-o", "/nonexistent/never"],
+        Some(case),
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("shaft.bearings[1].axial"),
-        "{}",
-        stderr(&o)
-    );
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains(key), "{}", stderr(&o));
 }
 
 /// An elastic shaft (`shaft.diameter`): nodes at the bearings, the load
@@ -755,22 +749,8 @@ fn an_inline_bearing_takes_its_own_materials() {
     assert!(stderr(&rolldyn(&["quasistatic", "-"], Some(&bad))).contains("glass"));
     // In motion the inline bearing needs its inner ring and cage, asked
     // for with its shaft key.
-    let out = temp_dir("inline-run").join("run");
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--duration",
-            "1 ms",
-            "-o",
-            out.to_str().unwrap(),
-        ],
-        Some(&inline.replace("BALL", "silicon_nitride")),
-    );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("shaft.bearings[1].inner_ring.mass"),
-        "{}",
-        stderr(&o)
+    assert_run_refused(
+        &inline.replace("BALL", "silicon_nitride"),
+        "shaft.bearings[1].inner_ring.mass",
     );
 }

@@ -132,7 +132,7 @@ pub trait TractionLaw {
     }
 }
 
-/// Most cells a traction law is handed at once ([`TractionLaw::stress_ratios`]).
+/// Cells a traction law is handed at once ([`TractionLaw::stress_ratios`]; unused lanes empty).
 pub const BATCH: usize = 24;
 
 /// One value per cell of a batch.
