@@ -279,7 +279,7 @@ impl Channels {
         row.clear();
         row.extend_from_slice(&[
             t,
-            model.parameters().speed.speed_at(t) / RPM,
+            model.inner_speed(t, y) / RPM,
             y[c + 2],
             y[c + 5] / RPM,
             y[c],

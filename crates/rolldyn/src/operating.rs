@@ -51,18 +51,7 @@ impl SpeedProfile {
     pub fn speed_at(&self, t: f64) -> f64 {
         match self {
             Self::Constant(w) => *w,
-            Self::PiecewiseLinear(points) => {
-                let i = points.partition_point(|p| p.0 <= t);
-                match i {
-                    0 => points[0].1,
-                    i if i == points.len() => points[i - 1].1,
-                    i => {
-                        let (t0, w0) = points[i - 1];
-                        let (t1, w1) = points[i];
-                        w0 + (w1 - w0) * (t - t0) / (t1 - t0)
-                    }
-                }
-            }
+            Self::PiecewiseLinear(points) => interpolate(points, t),
         }
     }
 
@@ -94,6 +83,65 @@ impl SpeedProfile {
             Self::Constant(w) => *w,
             Self::PiecewiseLinear(points) => points.last().map_or(0.0, |p| p.1),
         }
+    }
+}
+
+/// The value at t of a piecewise-linear table of (time, value), held
+/// constant outside it (the table is not empty).
+fn interpolate(points: &[(f64, f64)], t: f64) -> f64 {
+    let i = points.partition_point(|p| p.0 <= t);
+    match i {
+        0 => points[0].1,
+        i if i == points.len() => points[i - 1].1,
+        i => {
+            let (t0, v0) = points[i - 1];
+            let (t1, v1) = points[i];
+            v0 + (v1 - v0) * (t - t0) / (t1 - t0)
+        }
+    }
+}
+
+/// The inner ring driven by a torque instead of a prescribed speed: its
+/// speed is then a state of the run, J ω̇ = T(t) + M_x, M_x the moment of
+/// the bearing's forces (contacts, guide land, seals) on the ring about
+/// its axis (Euler's equation of a rotor about a fixed axis). The speed
+/// profile of the parameters gives the speed at t = 0 (docs/dynamics.md,
+/// "Driven rotation").
+#[derive(Debug, Clone, PartialEq)]
+pub struct TorqueDrive {
+    /// Polar moment of inertia J of everything turning with the inner
+    /// ring (ring, shaft, rotor) \[kg·m²\].
+    pub inertia: f64,
+    /// Drive torque about the bearing axis as (time \[s\], torque \[N·m\]),
+    /// piecewise linear and held constant outside the table (one point:
+    /// a constant torque; 0: a run-down).
+    pub torque: Vec<(f64, f64)>,
+}
+
+impl TorqueDrive {
+    /// A drive of constant torque \[N·m\] on a rotor of polar inertia
+    /// `inertia` \[kg·m²\].
+    pub fn constant(inertia: f64, torque: f64) -> Self {
+        Self {
+            inertia,
+            torque: vec![(0.0, torque)],
+        }
+    }
+
+    /// Drive torque at time t \[N·m\].
+    pub fn torque_at(&self, t: f64) -> f64 {
+        interpolate(&self.torque, t)
+    }
+
+    /// Checks the inertia and the torque table (times strictly increasing,
+    /// values finite).
+    pub fn validate(&self) -> Result<(), InvalidParameter> {
+        crate::error::require_positive("rotor_inertia", self.inertia)?;
+        SpeedProfile::piecewise_linear(self.torque.clone())
+            .map(|_| ())
+            .map_err(|(i, e)| {
+                InvalidParameter::new("drive_torque", e.value, format!("point {i}: {}", e.rule))
+            })
     }
 }
 

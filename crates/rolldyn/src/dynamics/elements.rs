@@ -82,6 +82,23 @@ impl Elements {
                 }
             }
         }
+        if let Some(drive) = &params.drive {
+            drive.validate()?;
+            if params.film_in_approach {
+                return Err(InvalidParameter::new(
+                    "film_in_approach",
+                    "true",
+                    "is not available with a torque-driven ring yet (the films' power would miss the ring's speed change)",
+                ));
+            }
+            if let crate::operating::SpeedProfile::PiecewiseLinear(_) = params.speed {
+                return Err(InvalidParameter::new(
+                    "speed_profile",
+                    "given",
+                    "a torque-driven ring's speed is the run's outcome: give its speed at the start as a constant speed",
+                ));
+            }
+        }
         if let Some(mixed) = &params.mixed_lubrication {
             super::parameters::validate_mixed_lubrication(mixed, &params)?;
         }
@@ -107,6 +124,7 @@ impl Elements {
                 balls: geometry.ball_count,
                 ball_spin_angle: params.surface.has_ball_surfaces(),
                 film_work: params.film_in_approach,
+                driven: params.drive.is_some(),
             },
             traction_grid: TractionGrid::new(params.traction_integration),
             geometry: geometry.clone(),

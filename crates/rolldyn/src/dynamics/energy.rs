@@ -1,7 +1,7 @@
 //! Energy bookkeeping of the dynamic model (docs/model.md §10).
 //!
 //! [`BearingModel::energy`] gives kinetic energy (balls, ring translation
-//! and tilt, cage), elastic energy (Σ (2/5) K_c δ^{5/2} + ½ k δ_p²; with the
+//! and tilt, cage, a torque-driven rotor's ½ J ω²), elastic energy (Σ (2/5) K_c δ^{5/2} + ½ k δ_p²; with the
 //! film in the approach each contact stores (2/5) K_c δ_el^{5/2} − Q h +
 //! ∫₀^Q h dq, `dynamics::film`) and the potential of constant applied loads
 //! and gravity. With no dissipation and
@@ -15,7 +15,8 @@ use nalgebra::Vector3;
 /// Energy of a state \[J\].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Energy {
-    /// Kinetic energy (balls, ring translation and tilt, cage).
+    /// Kinetic energy (balls, ring translation and tilt, cage; a driven
+    /// rotor's rotation).
     pub kinetic: f64,
     /// Elastic energy of the contacts.
     pub elastic: f64,
@@ -100,6 +101,9 @@ impl BearingModel {
         e.kinetic += 0.5 * p.cage.mass * (y[c + 3].powi(2) + y[c + 4].powi(2))
             + 0.5 * p.cage.inertia * y[c + 5].powi(2);
         e.potential += p.cage.mass * g * y[c + 1];
+        if let Some(drive) = &p.drive {
+            e.kinetic += 0.5 * drive.inertia * y[l.spin() + 1].powi(2);
+        }
         if let Some(guide) = &p.cage.guide {
             // The stop beyond ε_max is a spring.
             let (centre, _, _) = self.elements.guide_ring(guide, t, y);

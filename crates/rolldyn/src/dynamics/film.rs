@@ -29,7 +29,7 @@
 
 use super::coupling::{BallCoupling, add_to};
 use super::elements::Elements;
-use super::motion::{BallMotion, RingMotion, tilt_axis_y};
+use super::motion::{BallMotion, RingMotion, Spin, tilt_axis_y};
 use crate::contact::{ContactTable, Curvature, HertzCoefficients, TorusContact};
 use crate::geometry::RingKind;
 use crate::lubrication::approach::{FilmGeometry, FilmLaw};
@@ -227,6 +227,19 @@ impl Elements {
         let b = l.ball(j);
         let len = l.ball_len();
         let (r, o) = (l.ring(), l.outer());
+        // A prescribed rotation at t + s; a driven one (refused with the
+        // film in the approach, `Elements::new`) would move at its speed.
+        let spin = self.spin(t, y);
+        let spin_along = |s: f64| {
+            if l.driven {
+                Spin {
+                    angle: spin.angle + s * spin.speed,
+                    ..spin
+                }
+            } else {
+                self.spin(t + s, y)
+            }
+        };
         let integral_at = |s: f64| {
             let mut block = [0.0; super::layout::StateLayout::BALL + 1];
             for k in 0..len {
@@ -241,7 +254,7 @@ impl Elements {
             outer.copy_from_slice(&y[o..o + 4]);
             outer[0] += s * y[o + 2];
             outer[1] += s * y[o + 3];
-            let (inner_ring, outer_ring) = self.ring_motion_of(t + s, &ring, &outer);
+            let (inner_ring, outer_ring) = self.ring_motion_of(spin_along(s), &ring, &outer);
             let (ball, _) = self.ball_motion_of(j, &block[..len]);
             let mut total = 0.0;
             if let Some(q) = loads[0] {

@@ -11,6 +11,9 @@ pub struct StateLayout {
     /// Whether a third accumulator holds the work of the films: only with
     /// the film in the normal approach (docs/model.md §4, `dynamics::film`).
     pub film_work: bool,
+    /// Whether the inner ring's rotation (angle, speed) is a state: a
+    /// torque drive (`operating::TorqueDrive`) instead of a prescribed speed.
+    pub driven: bool,
 }
 
 impl StateLayout {
@@ -36,17 +39,24 @@ impl StateLayout {
     pub fn ring(&self) -> usize {
         self.ball_len() * self.balls
     }
+    /// First of the inner ring's rotation states (angle, speed), present
+    /// when [`Self::driven`]: right after its other states, so that a
+    /// shaft's bearing has its inner ring's states in one run.
+    pub fn spin(&self) -> usize {
+        self.ring() + Self::RING
+    }
     /// First outer-ring state.
     pub fn outer(&self) -> usize {
-        self.ring() + Self::RING
+        self.spin() + 2 * usize::from(self.driven)
     }
     /// First cage state.
     pub fn cage(&self) -> usize {
         self.outer() + Self::OUTER
     }
     /// The states that the contacts of ball j touch (read or write): its
-    /// own block, both rings and the cage. Nothing else couples the balls,
-    /// so the Jacobian is bordered block-diagonal (docs/model.md §8).
+    /// own block, both rings (a driven inner ring's rotation too) and the
+    /// cage. Nothing else couples the balls, so the Jacobian is bordered
+    /// block-diagonal (docs/model.md §8).
     pub fn ball_coupling(&self, j: usize) -> [std::ops::Range<usize>; 2] {
         [
             self.ball(j)..self.ball(j) + self.ball_len(),
@@ -101,8 +111,10 @@ impl StateLayout {
         if index < n {
             let (j, k) = (index / self.ball_len(), index % self.ball_len());
             format!("ball {j} {}", BALL[k])
-        } else if index < self.outer() {
+        } else if index < self.spin() {
             format!("inner ring {}", RING[index - self.ring()])
+        } else if index < self.outer() {
+            ["inner ring rotation angle", "inner ring speed"][index - self.spin()].into()
         } else if index < self.cage() {
             format!("outer ring {}", OUTER[index - self.outer()])
         } else if index < self.work() {
@@ -128,15 +140,28 @@ impl StateLayout {
 mod tests {
     use super::*;
 
+    fn names_of(l: &StateLayout) -> Vec<String> {
+        (0..l.len()).map(|i| l.state_name(i)).collect()
+    }
+
     #[test]
     fn every_state_has_a_name() {
-        for (spin, films) in [(false, false), (true, false), (false, true), (true, true)] {
+        for (spin, films, driven) in [
+            (false, false, false),
+            (true, false, true),
+            (false, true, false),
+            (true, true, true),
+        ] {
             let l = StateLayout {
                 balls: 2,
                 ball_spin_angle: spin,
                 film_work: films,
+                driven,
             };
-            let names: Vec<String> = (0..l.len()).map(|i| l.state_name(i)).collect();
+            if driven {
+                assert_eq!(names_of(&l)[l.spin() + 1], "inner ring speed");
+            }
+            let names = names_of(&l);
             assert_eq!(names[0], "ball 0 axial position x");
             if spin {
                 assert_eq!(names[l.ball(1) + 9], "ball 1 spin angle ψ");

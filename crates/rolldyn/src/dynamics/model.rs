@@ -125,6 +125,12 @@ impl BearingModel {
         &self.elements.geometry
     }
 
+    /// The inner ring's speed \[rad/s\] at (t, y): a torque-driven ring's
+    /// state, else the prescribed profile's.
+    pub fn inner_speed(&self, t: f64, y: &[f64]) -> f64 {
+        self.elements.spin(t, y).speed
+    }
+
     /// Ball mass \[kg\].
     pub fn ball_mass(&self) -> f64 {
         self.elements.ball_mass
@@ -159,7 +165,16 @@ impl BearingModel {
         y[r..r + 5].copy_from_slice(&ring_displacement);
         let c = l.cage();
         y[c + 5] = omega_c;
+        self.start_rotation(&mut y);
         y
+    }
+
+    /// A driven ring starts at the profile's speed, at angle 0.
+    fn start_rotation(&self, y: &mut [f64]) {
+        let l = self.elements.layout;
+        if l.driven {
+            y[l.spin() + 1] = self.elements.params.speed.speed_at(0.0);
+        }
     }
 
     /// Start from a quasi-static (Jones–Harris) solution (Zhang et al. 2025 §3.1):
@@ -181,6 +196,7 @@ impl BearingModel {
         y[r..r + 5].copy_from_slice(&eq.displacement);
         let c = l.cage();
         y[c + 5] = eq.cage_speed();
+        self.start_rotation(&mut y);
         y
     }
 }
@@ -313,34 +329,35 @@ impl BearingModel {
         let cage_drag = -(p.drag.cage_viscous * cage_speed
             + p.drag.cage_windage * cage_speed * cage_speed.abs());
         dissipation -= cage_drag * cage_speed;
-        if let Some(d) = sink.as_deref_mut() {
-            d.cage_drag = -cage_drag * cage_speed;
-            // Torque the drive supplies: minus the moment of the bearing's
-            // forces on the inner ring about its (tilted) axis.
-            let speed = p.speed.speed_at(t);
-            let axis = if speed != 0.0 {
-                (inner.omega - inner.omega_frame) / speed
-            } else {
-                Vector3::x()
-            };
-            d.drive_torque = -ring_moment.dot(&axis);
-        }
         dy[dc + 5] = (cage_torque + cage_drag) / p.cage.inertia;
-        // Drive power: the prescribed spin must supply −ω_i (moment of the
-        // contact forces on the ring about its spin axis).
-        let spin_axis = inner.omega - inner.omega_frame;
+        // The moment about the ring's (tilted) axis of the bearing's forces
+        // on the inner ring (contacts, an inner guide land) and its seals'.
+        let mut axial_moment = ring_moment.dot(&inner.axis);
         if let Some(seals) = &p.seals {
-            // The seals' moment about the ring's axis acts on the
-            // prescribed spin only: the drive supplies what they dissipate.
             let seal_power = seals.power(inner.spin_speed);
-            external_power += seal_power;
             dissipation += seal_power;
-            if let Some(d) = sink {
+            axial_moment += seals.moment(inner.spin_speed);
+            if let Some(d) = sink.as_deref_mut() {
                 d.seals = seal_power;
-                d.drive_torque -= seals.moment(inner.spin_speed);
             }
         }
-        dy[dw] = -ring_moment.dot(&spin_axis) + external_power;
+        // Drive power: a prescribed spin supplies −M_x ω (the torque that
+        // holds the speed); a torque drive T ω, the rotor's speed then
+        // following J ω̇ = T + M_x.
+        let drive_torque = match &p.drive {
+            None => -axial_moment,
+            Some(drive) => {
+                let s = l.spin() - l.ring();
+                dy[s] = inner.spin_speed;
+                dy[s + 1] = (drive.torque_at(t) + axial_moment) / drive.inertia;
+                drive.torque_at(t)
+            }
+        };
+        if let Some(d) = sink {
+            d.cage_drag = -cage_drag * cage_speed;
+            d.drive_torque = drive_torque;
+        }
+        dy[dw] = drive_torque * inner.spin_speed + external_power;
         dy[dw + 1] = dissipation;
         if l.film_work {
             // The rings' accelerations complete the films' power.
@@ -463,6 +480,10 @@ impl OdeSystem for BearingModel {
         scale[c + 2] = micron / self.elements.params.cage.pitch_radius;
         scale[c + 3..c + 5].fill(1e-3);
         scale[c + 5] = 1.0;
+        if l.driven {
+            scale[l.spin()] = micron / (0.5 * self.elements.geometry.pitch_diameter);
+            scale[l.spin() + 1] = 1.0;
+        }
         let w = l.work();
         scale[w..w + 2].fill(micron);
     }
@@ -481,6 +502,9 @@ impl OdeSystem for BearingModel {
             }
         }
         absolute[l.cage() + 2] = true;
+        if l.driven {
+            absolute[l.spin()] = true;
+        }
     }
 
     /// Drive and external work (with the films' work), dissipated energy

@@ -37,25 +37,53 @@ pub(super) struct RingMotion {
     pub(super) spin_angle: f64,
     /// Spin speed of the ring about its axis \[rad/s\].
     pub(super) spin_speed: f64,
+    /// The ring's (tilted) axis, unit.
+    pub(super) axis: Vector3<f64>,
     /// Inner-ring (shaft) speed \[rad/s\] (the oil-flow supply, docs/model.md §4).
     pub(super) shaft_speed: f64,
 }
 
+/// The inner ring's rotation about its axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Spin {
+    /// Speed \[rad/s\].
+    pub(super) speed: f64,
+    /// Angle turned since t = 0 \[rad\].
+    pub(super) angle: f64,
+}
+
 impl Elements {
+    /// The inner ring's rotation at `t`: its states for a torque-driven
+    /// ring, else the prescribed profile's.
+    pub(super) fn spin(&self, t: f64, y: &[f64]) -> Spin {
+        if self.layout.driven {
+            let s = self.layout.spin();
+            Spin {
+                angle: y[s],
+                speed: y[s + 1],
+            }
+        } else {
+            Spin {
+                speed: self.params.speed.speed_at(t),
+                angle: self.params.speed.angle_at(t),
+            }
+        }
+    }
+
     pub(super) fn ring_motion(&self, t: f64, y: &[f64]) -> (RingMotion, RingMotion) {
         let (r, o) = (self.layout.ring(), self.layout.outer());
         self.ring_motion_of(
-            t,
+            self.spin(t, y),
             &y[r..r + StateLayout::RING],
             &y[o..o + StateLayout::OUTER],
         )
     }
 
-    /// [`Self::ring_motion`] from the inner ring's 10 states and the outer
-    /// ring's 4.
+    /// [`Self::ring_motion`] from the inner ring's rotation, its 10 states
+    /// and the outer ring's 4.
     pub(super) fn ring_motion_of(
         &self,
-        t: f64,
+        spin: Spin,
         ring: &[f64],
         outer: &[f64],
     ) -> (RingMotion, RingMotion) {
@@ -69,7 +97,7 @@ impl Elements {
         let omega_frame = y[r + 9] * Vector3::z() + y[r + 8] * tilt_axis_y(pose.tilt_z);
         let unit_axis = pose.axis();
         let axis = unit_axis.into_inner();
-        let spin_speed = self.params.speed.speed_at(t);
+        let spin_speed = spin.speed;
         let inner = RingMotion {
             raceway: self.geometry.inner,
             circle: GrooveCircle::with_axis(&self.geometry.inner, &pose.translation, unit_axis),
@@ -80,9 +108,10 @@ impl Elements {
             spin_angle: if self.params.surface.inner.is_smooth() {
                 0.0
             } else {
-                self.params.speed.angle_at(t)
+                spin.angle
             },
             spin_speed,
+            axis,
             shaft_speed: spin_speed,
         };
         let (y, o) = (outer, 0);
@@ -99,6 +128,7 @@ impl Elements {
             omega_frame: Vector3::zeros(),
             spin_angle: 0.0,
             spin_speed: 0.0,
+            axis: Vector3::x(),
             shaft_speed: spin_speed,
         };
         (inner, outer)
@@ -164,7 +194,7 @@ impl Elements {
                 (
                     Vector3::new(0.0, y[r + 1], y[r + 2]),
                     Vector3::new(0.0, y[r + 6], y[r + 7]),
-                    self.params.speed.speed_at(t),
+                    self.spin(t, y).speed,
                 )
             }
         }

@@ -9,7 +9,7 @@ use crate::contact::NormalForceLaw;
 use crate::error::InvalidParameter;
 use crate::geometry::RingKind;
 use crate::lubrication::drag::DragParameters;
-use crate::operating::{LoadProfile, SpeedProfile};
+use crate::operating::{LoadProfile, SpeedProfile, TorqueDrive};
 use crate::seals::SealFriction;
 use crate::surface::SurfaceModel;
 use crate::traction::TractionModel;
@@ -33,8 +33,11 @@ pub struct DynamicsParameters {
     pub traction: TractionModel,
     /// How traction is integrated over each contact ellipse.
     pub traction_integration: TractionIntegration,
-    /// Inner-ring speed profile.
+    /// Inner-ring speed profile (with a `drive`, the speed at t = 0).
     pub speed: SpeedProfile,
+    /// A torque driving the inner ring, whose speed is then a state of the
+    /// run (None: the speed follows `speed`).
+    pub drive: Option<TorqueDrive>,
     /// Loads on the inner ring (constant or tabulated in time).
     pub loads: LoadProfile,
     /// Spring–damper between the inner ring and ground (zero: free).
@@ -75,7 +78,7 @@ impl DynamicsParameters {
     /// inertia `inner_ring_tilt_inertia` \[kg·m²\], with `cage`; the rest at
     /// its default: Hertz contacts (impact-speed floor 1 mm/s), no traction
     /// (integrated on the default 12 × 6 grid when one is set), at rest
-    /// without loads, a free inner ring and a fixed outer ring, no
+    /// (speed prescribed) without loads, a free inner ring and a fixed outer ring, no
     /// hysteresis, gravity or drag, 3-D, smooth surfaces, flooded films
     /// not in the normal approach, no mixed lubrication, no seals. Change the rest
     /// with struct update syntax, so that a new parameter needs only its
@@ -91,6 +94,7 @@ impl DynamicsParameters {
             traction: TractionModel::None,
             traction_integration: TractionIntegration::default(),
             speed: SpeedProfile::Constant(0.0),
+            drive: None,
             loads: LoadProfile::Constant(crate::operating::Loads::default()),
             inner_support: Support::default(),
             outer_ring: None,

@@ -134,7 +134,7 @@ impl Elements {
         if self.params.surface.spalls().next().is_none() {
             return limit;
         }
-        let tracks = self.spall_tracks(t);
+        let tracks = self.spall_tracks(t, y);
         for (site, spall) in self.params.surface.spalls() {
             for j in 0..self.layout.balls {
                 for (angle, rate, track) in self.spall_track_contacts(&tracks, y, site, j) {
@@ -157,7 +157,7 @@ impl Elements {
         site: SpallSite,
         spall: &Spall,
     ) -> bool {
-        let tracks = self.spall_tracks(t);
+        let tracks = self.spall_tracks(t, y);
         (0..self.layout.balls).any(|j| {
             self.spall_track_contacts(&tracks, y, site, j)
                 .iter()
@@ -170,13 +170,14 @@ impl Elements {
     }
 
     /// What places the contacts on the spalls' tracks at time `t`.
-    fn spall_tracks(&self, t: f64) -> SpallTracks {
+    fn spall_tracks(&self, t: f64, y: &[f64]) -> SpallTracks {
         let g = &self.geometry;
+        let spin = self.spin(t, y);
         let half_d = 0.5 * g.ball_diameter;
         let radial = half_d * g.nominal_contact_angle().cos();
         SpallTracks {
-            inner_angle: self.params.speed.angle_at(t),
-            inner_speed: self.params.speed.speed_at(t),
+            inner_angle: spin.angle,
+            inner_speed: spin.speed,
             inner_track: 0.5 * g.pitch_diameter - radial,
             outer_track: 0.5 * g.pitch_diameter + radial,
             half_d,

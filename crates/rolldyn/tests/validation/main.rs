@@ -32,6 +32,7 @@ mod cage_guide;
 mod common;
 mod convergence;
 mod efficiency;
+mod driven_rotation;
 mod elastic_shaft;
 mod jacobian_reuse;
 mod life_reference;
