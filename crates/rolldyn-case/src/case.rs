@@ -94,6 +94,9 @@ pub struct Case {
     pub loads: Loads,
     /// Load table of a dynamic run, if given.
     pub load_profile: Option<LoadProfile>,
+    /// A torque driving the inner ring in a dynamic run (None: the speed
+    /// is prescribed).
+    pub drive: Option<rolldyn::operating::TorqueDrive>,
     /// Spring–damper between inner ring and ground.
     pub inner_support: Support,
     /// Outer ring on a housing spring–damper, if given.
@@ -433,6 +436,7 @@ impl Case {
             speed: operating.speed,
             loads: operating.loads,
             load_profile: operating.load_profile,
+            drive: operating.drive,
             inner_support: rings.inner_support,
             outer_ring: rings.outer_ring,
             rolling_hysteresis,

@@ -443,6 +443,25 @@ pub struct RawOperating {
     /// dynamic runs): `[{ time = "0 s", force_x = "200 N" }, ...]`, times
     /// increasing, missing components 0.
     pub load_profile: Option<Vec<RawLoadPoint>>,
+    /// A constant torque driving the inner ring (dynamic runs): its speed
+    /// is then the run's outcome, `speed` the speed at the start.
+    pub drive_torque: Option<Quantity<Moment>>,
+    /// A piecewise-linear drive torque instead: `[{ time = "0 s", torque
+    /// = "0.2 N.m" }, ...]`, times increasing.
+    pub drive_torque_profile: Option<Vec<RawTorquePoint>>,
+    /// Polar moment of inertia of everything turning with the inner ring
+    /// (ring, shaft, rotor), for a drive torque.
+    pub rotor_inertia: Option<Quantity<Inertia>>,
+}
+
+/// One point of a drive-torque table.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawTorquePoint {
+    /// Time of the point.
+    pub time: Quantity<Time>,
+    /// Drive torque at that time.
+    pub torque: Quantity<Moment>,
 }
 
 /// One point of a load table.

@@ -272,7 +272,7 @@ pub fn run(
                     row[k] = s.bearing_energy(i, t, &own);
                 }
             }
-            let acceleration = s.shaft_acceleration(t, &loads);
+            let acceleration = s.shaft_acceleration(t, y, &loads);
             combined.clear();
             combined.push(t);
             for (i, (c, row)) in r.channels.iter_mut().zip(&mut rows).enumerate() {

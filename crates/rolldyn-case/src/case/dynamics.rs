@@ -118,6 +118,7 @@ impl Case {
             traction: self.traction,
             traction_integration: self.traction_integration,
             speed,
+            drive: self.drive.clone(),
             loads: self
                 .load_profile
                 .clone()

@@ -5,7 +5,7 @@
 use super::{Invalid, check_force, check_speed};
 use crate::raw::RawOperating;
 use crate::units::Quantity;
-use rolldyn::operating::{LoadProfile, Loads, SpeedProfile};
+use rolldyn::operating::{LoadProfile, Loads, SpeedProfile, TorqueDrive};
 
 /// The checked `[operating]` section.
 pub(super) struct Operating {
@@ -15,6 +15,7 @@ pub(super) struct Operating {
     pub(super) load_profile: Option<LoadProfile>,
     pub(super) first_ball_azimuth: f64,
     pub(super) prescribed_displacement: [Option<f64>; 5],
+    pub(super) drive: Option<TorqueDrive>,
 }
 
 /// Checks `[operating]`.
@@ -136,7 +137,95 @@ pub(super) fn operating(op: &RawOperating) -> Result<Operating, Invalid> {
         load_profile,
         first_ball_azimuth: op.first_ball_azimuth.as_ref().map_or(0.0, |a| a.si),
         prescribed_displacement: prescribed(op)?,
+        drive: drive(op)?,
     })
+}
+
+/// The torque drive of `[operating]`, if any: a constant torque or a
+/// table, on a rotor of the given inertia, from the constant `speed`.
+fn drive(op: &RawOperating) -> Result<Option<TorqueDrive>, Invalid> {
+    let torque = match (&op.drive_torque, &op.drive_torque_profile) {
+        (None, None) => {
+            if let Some(j) = &op.rotor_inertia {
+                return Err(Invalid::new(
+                    "operating.rotor_inertia",
+                    Some(j.to_string()),
+                    "is the inertia a drive torque turns: give operating.drive_torque (or drive_torque_profile), or leave it out for a prescribed speed",
+                ));
+            }
+            return Ok(None);
+        }
+        (Some(_), Some(_)) => {
+            return Err(Invalid::new(
+                "operating.drive_torque_profile",
+                None,
+                "give either operating.drive_torque (constant) or operating.drive_torque_profile, not both",
+            ));
+        }
+        (Some(t), None) => vec![(0.0, t.si)],
+        (None, Some(points)) => points.iter().map(|p| (p.time.si, p.torque.si)).collect(),
+    };
+    for (i, &(time, value)) in torque.iter().enumerate() {
+        if !(value.is_finite() && value.abs() <= 1e6) {
+            let key = if op.drive_torque.is_some() {
+                "operating.drive_torque".to_string()
+            } else {
+                format!("operating.drive_torque_profile[{i}].torque")
+            };
+            return Err(Invalid::new(
+                key,
+                Some(format!("{value} N·m")),
+                "must be finite, within ±1 MN·m",
+            ));
+        }
+        if i > 0 && time <= torque[i - 1].0 {
+            return Err(Invalid::new(
+                format!("operating.drive_torque_profile[{i}].time"),
+                Some(format!("{time} s")),
+                format!(
+                    "times must increase strictly (previous point: {} s)",
+                    torque[i - 1].0
+                ),
+            ));
+        }
+    }
+    if op.drive_torque_profile.as_ref().is_some_and(Vec::is_empty) {
+        return Err(Invalid::new(
+            "operating.drive_torque_profile",
+            Some("[]".into()),
+            "needs at least one point",
+        ));
+    }
+    let inertia = op.rotor_inertia.as_ref().ok_or_else(|| {
+        Invalid::missing(
+            "operating.rotor_inertia",
+            "a drive torque needs the polar moment of inertia of what it turns (ring, shaft, rotor), e.g. rotor_inertia = \"2e-3 kg.m^2\"",
+        )
+    })?;
+    if !(inertia.si.is_finite() && inertia.si > 0.0) {
+        return Err(Invalid::new(
+            "operating.rotor_inertia",
+            Some(inertia.to_string()),
+            "must be positive",
+        ));
+    }
+    if op.speed_profile.is_some() {
+        return Err(Invalid::new(
+            "operating.speed_profile",
+            None,
+            "a driven ring's speed is the run's outcome: give its speed at the start as operating.speed",
+        ));
+    }
+    if op.speed.is_none() {
+        return Err(Invalid::missing(
+            "operating.speed",
+            "a drive torque needs the speed at the start (0 rpm: from rest)",
+        ));
+    }
+    Ok(Some(TorqueDrive {
+        inertia: inertia.si,
+        torque,
+    }))
 }
 
 /// The prescribed displacements of `[operating]`: each instead of its load.

@@ -54,7 +54,11 @@ fn a_heavy_rotor_turns_at_the_prescribed_speed() {
     assert_eq!(z0[l.spin() + 1], SPEED);
     let y = run(&mut prescribed, &y0, 1e-3);
     let z = run(&mut heavy, &z0, 1e-3);
-    assert!((z[l.spin() + 1] - SPEED).abs() < 1e-6, "{}", z[l.spin() + 1]);
+    assert!(
+        (z[l.spin() + 1] - SPEED).abs() < 1e-6,
+        "{}",
+        z[l.spin() + 1]
+    );
     assert!((z[l.spin()] - SPEED * 1e-3).abs() < 1e-9);
     let c = prescribed.layout().cage();
     let cage = (z[l.cage() + 5] - y[c + 5]).abs() / y[c + 5];

@@ -4,7 +4,8 @@
 //! * one bearing on a shaft of its inner ring's mass and inertia, loaded
 //!   as the bearing, has the bearing's equations: the same derivatives and
 //!   energy to rounding, whatever the states' order, and its block split
-//!   composes to its right-hand side;
+//!   composes to its right-hand side; so has a torque-driven one (the
+//!   drive's work then the shaft's);
 //! * a 7008C back-to-back pair with a 200 N position preload, started from
 //!   its quasi-static state at 10 000 rpm, keeps the preload the
 //!   quasi-static set gives (within the raceway-control bracket of one
@@ -17,7 +18,7 @@ use rolldyn::dynamics::shaft::{ShaftBody, ShaftDynamics, Unbalance};
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::{BlockSplit, Integrator, OdeSystem, ROS34PW2, Rosenbrock};
 use rolldyn::material::Material;
-use rolldyn::operating::Loads;
+use rolldyn::operating::{Loads, TorqueDrive};
 use rolldyn::quasistatic::system::{
     MountedBearing, Orientation, SetKind, ShaftSystem, SystemConditions,
 };
@@ -30,9 +31,24 @@ fn solver() -> QuasiStaticSolver {
 
 #[test]
 fn one_bearing_on_a_shaft_is_the_bearing() {
+    one_bearing_is_the_bearing(None);
+}
+
+#[test]
+fn one_driven_bearing_on_a_driven_shaft_is_the_driven_bearing() {
+    one_bearing_is_the_bearing(Some(TorqueDrive {
+        inertia: 1e-3,
+        torque: vec![(0.0, 0.3)],
+    }));
+}
+
+/// The bearing's equations against the shaft's, with `drive` (None: the
+/// speed prescribed).
+fn one_bearing_is_the_bearing(drive: Option<TorqueDrive>) {
     let g = bearing_7008c();
     let steel = Material::STEEL_52100;
-    let (params, eq) = dynamics_7008c(DragParameters::default());
+    let (mut params, eq) = dynamics_7008c(DragParameters::default());
+    params.drive = drive.clone();
     let (mass, tilt) = (params.inner_ring_mass, params.inner_ring_tilt_inertia);
     let loads = params.loads.at(0.0);
     let model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
@@ -64,8 +80,11 @@ fn one_bearing_on_a_shaft_is_the_bearing() {
     let n = l.ring();
     ys[..n].copy_from_slice(&y[..n]);
     let s = system.shaft();
-    ys[n..s].copy_from_slice(&y[r + 10..]);
+    ys[n..s].copy_from_slice(&y[l.outer()..]);
     ys[s..s + 10].copy_from_slice(&y[r..r + 10]);
+    // A driven shaft's angle and speed follow its work.
+    ys[s + 11..].copy_from_slice(&y[l.spin()..l.outer()]);
+    assert_eq!(system.dimension(), l.len() + 1);
     let mut back = vec![0.0; l.len()];
     system.bearing_state(0, &ys, &mut back);
     assert_eq!(back, y);
@@ -79,20 +98,37 @@ fn one_bearing_on_a_shaft_is_the_bearing() {
         }
     };
     close(&dys[..n], &dy[..n], "balls");
-    close(&dys[n..s], &dy[r + 10..], "outer ring, cage, work");
+    let w = l.work() - l.outer();
+    close(&dys[n..n + w], &dy[l.outer()..l.work()], "outer ring, cage");
+    close(&dys[n + w + 1..s], &dy[l.work() + 1..], "dissipation");
     close(&dys[s..s + 5], &dy[r..r + 5], "shaft velocity");
     close(
         &dys[s + 5..s + 10],
         &dy[r + 5..r + 10],
         "shaft acceleration",
     );
-    assert_eq!(dys[s + 10], 0.0, "no unbalance, no work");
+    close(&dys[s + 11..], &dy[l.spin()..l.outer()], "shaft rotation");
+    // The drive's work is the shaft's; the bearing's only with a
+    // prescribed speed.
+    let drive_power = drive
+        .as_ref()
+        .map_or(0.0, |d| d.torque[0].1 * y[l.spin() + 1]);
+    assert_eq!(dys[s + 10], drive_power, "no unbalance: the drive's work");
+    let work = dys[s + 10] + dys[n + w];
+    assert!(
+        (work - dy[l.work()]).abs() <= 1e-12 * work.abs(),
+        "{work} W"
+    );
     let (a, b) = (
         system.energy_balance(0.0, &ys).unwrap(),
         model.energy_balance(0.0, &y).unwrap(),
     );
     assert!(rel(a.mechanical, b.mechanical) < 1e-12, "{a:?} vs {b:?}");
-    assert_eq!((a.work, a.dissipated), (b.work, b.dissipated));
+    assert_eq!(a.dissipated, b.dissipated);
+    assert!(
+        (a.work - b.work).abs() <= 1e-12 * a.work.abs(),
+        "{a:?} vs {b:?}"
+    );
     // The block split composes to the right-hand side.
     let layout = system.block_layout();
     let c = system.coupling_len();

@@ -59,7 +59,7 @@ impl BlockSplit for ShaftDynamics {
 
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
         let mut work = self.take();
-        let mut shaft_load = [0.0; 5];
+        let (mut shaft_load, mut axial_moment) = ([0.0; 5], 0.0);
         let start = self.bearings[0].first_border;
         for (i, b) in self.bearings.iter().enumerate() {
             let l = b.model.layout();
@@ -68,14 +68,17 @@ impl BlockSplit for ShaftDynamics {
             let slot = &coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN];
             b.model
                 .border_rhs(t, &work.y[..len], slot, &mut work.dy[r..len]);
-            let at = b.first_border - start;
-            dy_border[at..at + len - r - 10].copy_from_slice(&work.dy[r + 10..len]);
-            let load = b.to_shaft(&self.ring_load_from(&work.dy[r + 5..r + 10]));
-            shaft_load.iter_mut().zip(load).for_each(|(s, f)| *s += f);
+            axial_moment += self.collect_border(b, &work.dy[..len], dy_border, &mut shaft_load);
         }
         self.give(work);
         let s = self.first_shaft;
-        self.shaft_rhs(t, &y[s..], &shaft_load, &mut dy_border[s - start..]);
+        self.shaft_rhs(
+            t,
+            &y[s..],
+            &shaft_load,
+            axial_moment,
+            &mut dy_border[s - start..],
+        );
     }
 
     fn memo_len(&self) -> usize {
@@ -160,8 +163,8 @@ impl BlockSplit for ShaftDynamics {
             if (b.first_ball..b.first_ball + n).contains(&state) {
                 return b.model.inert(state - b.first_ball);
             }
-            if (b.first_border..b.first_border + l.len() - l.ring() - 10).contains(&state) {
-                return b.model.inert(state - b.first_border + l.ring() + 10);
+            if (b.first_border..b.first_border + l.len() - l.outer()).contains(&state) {
+                return b.model.inert(state - b.first_border + l.outer());
             }
         }
         false

@@ -16,7 +16,11 @@
 //! ```
 //!
 //! the rotation about the axis prescribed (every bearing's inner-ring
-//! speed, constant). A rotating unbalance U = m_u e at x_u adds
+//! speed, constant) or driven by a torque T(t): J ω̇ = T + Σ_i M_x,i with
+//! J the rotor's polar inertia and M_x,i bearing i's moment about the
+//! axis, the shaft's angle and speed then two more states after its work
+//! (each bearing's model turns a unit inertia without torque, so that its
+//! computed ring acceleration is M_x,i). A rotating unbalance U = m_u e at x_u adds
 //! U ω² (cos ωt, sin ωt) along (y, z) at x_u, with the moments of that
 //! force about the reference point (θ_y: −x_u F_z, θ_z: x_u F_y); its work
 //! is accumulated in one more shaft state for the energy balance, as is
@@ -44,38 +48,17 @@ use crate::integrate::{BlockSplit, EnergyBalance, OdeSystem};
 
 mod block_split;
 mod checkpoint;
-use crate::operating::{LoadProfile, Loads};
+mod rotating;
+use crate::operating::{LoadProfile, Loads, TorqueDrive};
 use crate::quasistatic::system::{MountedBearing, SystemEquilibrium};
+pub use rotating::{HarmonicLoad, Unbalance};
 use std::sync::Mutex;
 
 /// Shaft states: displacement (x, y, z, θ_y, θ_z) and velocity.
 pub const SHAFT_STATES: usize = 10;
-/// The shaft's states with the work of its rotating loads (the last).
+/// The shaft's states with the work of its rotating loads and drive; a
+/// torque-driven shaft's rotation angle and speed follow.
 const SHAFT_LEN: usize = SHAFT_STATES + 1;
-
-/// A load on the shaft that fluctuates with the shaft's angle θ: a gear
-/// mesh's, F(θ) = amplitude · sin(order · θ + phase) at `position`, on top
-/// of the constant loads (the mesh's mean force among them).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct HarmonicLoad {
-    /// Axial position on the shaft from the reference point \[m\].
-    pub position: f64,
-    /// Force amplitude (x, y, z) \[N\].
-    pub amplitude: [f64; 3],
-    /// Cycles per shaft revolution (a gear's tooth count).
-    pub order: f64,
-    /// Phase at θ = 0 \[rad\].
-    pub phase: f64,
-}
-
-/// A rotating unbalance on the shaft.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Unbalance {
-    /// Mass times eccentricity m_u e \[kg·m\].
-    pub amount: f64,
-    /// Axial position on the shaft from the reference point \[m\].
-    pub position: f64,
-}
 
 /// The rigid shaft's inertia.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -103,6 +86,13 @@ struct Mounted {
 }
 
 impl Mounted {
+    /// Its own states set from the shaft's: the inner ring's 10 and a
+    /// driven ring's rotation (angle, speed), from its inner ring's first.
+    fn slaved(&self) -> usize {
+        let l = self.model.layout();
+        l.outer() - l.ring()
+    }
+
     fn ring(&self, u: &[f64]) -> [f64; 5] {
         std::array::from_fn(|r| (0..5).map(|k| self.transform[r][k] * u[k]).sum())
     }
@@ -128,6 +118,8 @@ pub struct ShaftDynamics {
     loads: Loads,
     unbalance: Option<Unbalance>,
     harmonic_loads: Vec<HarmonicLoad>,
+    /// The torque driving the shaft (None: its speed prescribed).
+    drive: Option<TorqueDrive>,
     gravity: f64,
     ball_len: usize,
     first_shaft: usize,
@@ -145,6 +137,7 @@ impl Clone for ShaftDynamics {
             loads: self.loads,
             unbalance: self.unbalance,
             harmonic_loads: self.harmonic_loads.clone(),
+            drive: self.drive.clone(),
             gravity: self.gravity,
             ball_len: self.ball_len,
             first_shaft: self.first_shaft,
@@ -159,7 +152,8 @@ impl ShaftDynamics {
     /// shaft: position, orientation, preload offset), the shaft `body` and
     /// the constant `loads` on it at its reference point. The models'
     /// inner-ring mass, loads and support are replaced (the shaft carries
-    /// them); their speeds should agree (the shaft's).
+    /// them); their speeds should agree (the shaft's), and so should their
+    /// drives: a torque drive turns the shaft (its inertia the rotor's).
     pub fn new(
         bearings: Vec<(BearingModel, &MountedBearing)>,
         body: ShaftBody,
@@ -174,6 +168,7 @@ impl ShaftDynamics {
         };
         let ball_len = first.layout().ball_len();
         let gravity = first.parameters().gravity;
+        let drive = first.parameters().drive.clone();
         for (field, value) in [("mass", body.mass), ("tilt_inertia", body.tilt_inertia)] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(InvalidParameter::new(field, value, "must be positive"));
@@ -207,9 +202,21 @@ impl ShaftDynamics {
                     "every bearing needs the same gravity",
                 ));
             }
+            if model.parameters().drive != drive {
+                return Err(InvalidParameter::new(
+                    "drive",
+                    "differs",
+                    "every bearing turns with the shaft: the same drive for all",
+                ));
+            }
             let p = &mut model.elements.params;
             p.inner_ring_mass = 1.0;
             p.inner_ring_tilt_inertia = 1.0;
+            if p.drive.is_some() {
+                // Its axial moment then comes out as its ring's
+                // acceleration: the shaft sums them.
+                p.drive = Some(TorqueDrive::constant(1.0, 0.0));
+            }
             p.loads = LoadProfile::Constant(Loads::default());
             p.inner_support = super::Support::default();
             let zero = mount.ring_displacement(&[0.0; 5]);
@@ -220,7 +227,7 @@ impl ShaftDynamics {
                     mount.ring_displacement(&e)[r] - zero[r]
                 })
             });
-            let border = l.len() - l.ring() - 10;
+            let border = l.len() - l.outer();
             mounted.push(Mounted {
                 transform,
                 offset: mount.axial_offset,
@@ -239,53 +246,13 @@ impl ShaftDynamics {
             loads,
             unbalance: None,
             harmonic_loads: Vec::new(),
+            dimension: first_border + SHAFT_LEN + 2 * usize::from(drive.is_some()),
+            drive,
             gravity,
             ball_len,
             first_shaft: first_border,
-            dimension: first_border + SHAFT_LEN,
             pool: Mutex::new(Vec::new()),
         })
-    }
-
-    /// With a rotating unbalance (at constant speed).
-    pub fn with_unbalance(mut self, unbalance: Unbalance) -> Result<Self, InvalidParameter> {
-        if !(unbalance.amount.is_finite() && unbalance.amount >= 0.0) {
-            return Err(InvalidParameter::new(
-                "unbalance",
-                unbalance.amount,
-                "must be a finite, non-negative mass times radius",
-            ));
-        }
-        if !unbalance.position.is_finite() {
-            return Err(InvalidParameter::new(
-                "unbalance.position",
-                unbalance.position,
-                "must be finite",
-            ));
-        }
-        self.unbalance = Some(unbalance);
-        Ok(self)
-    }
-
-    /// With loads that fluctuate with the shaft's angle (gear meshes).
-    pub fn with_harmonic_loads(
-        mut self,
-        loads: Vec<HarmonicLoad>,
-    ) -> Result<Self, InvalidParameter> {
-        for l in &loads {
-            let finite = l.position.is_finite()
-                && l.phase.is_finite()
-                && l.amplitude.iter().all(|a| a.is_finite());
-            if !(finite && l.order.is_finite() && l.order > 0.0) {
-                return Err(InvalidParameter::new(
-                    "harmonic load",
-                    l.order,
-                    "needs a finite position, amplitude and phase and a positive order",
-                ));
-            }
-        }
-        self.harmonic_loads = loads;
-        Ok(self)
     }
 
     /// Number of bearings.
@@ -323,10 +290,11 @@ impl ShaftDynamics {
         self.ring_load_from(&dy[r + 5..r + 10])
     }
 
-    /// The shaft's acceleration (x, y, z, θ_y, θ_z) at time `t` under the
-    /// bearings' ring loads `loads` (each in its own frame,
-    /// [`Self::ring_load`]), the applied loads and the unbalance.
-    pub fn shaft_acceleration(&self, t: f64, loads: &[[f64; 5]]) -> [f64; 5] {
+    /// The shaft's acceleration (x, y, z, θ_y, θ_z) at time `t` and
+    /// system state `y` under the bearings' ring loads `loads` (each in its
+    /// own frame, [`Self::ring_load`]), the applied loads and the rotating
+    /// ones.
+    pub fn shaft_acceleration(&self, t: f64, y: &[f64], loads: &[[f64; 5]]) -> [f64; 5] {
         let mut total = [0.0; 5];
         for (b, f) in self.bearings.iter().zip(loads) {
             total
@@ -334,9 +302,9 @@ impl ShaftDynamics {
                 .zip(b.to_shaft(f))
                 .for_each(|(sum, v)| *sum += v);
         }
-        let state = [0.0; SHAFT_LEN];
-        let mut out = [0.0; SHAFT_LEN];
-        self.shaft_rhs(t, &state, &total, &mut out);
+        let mut out = [0.0; SHAFT_LEN + 2];
+        let state = &y[self.first_shaft..];
+        self.shaft_rhs(t, state, &total, 0.0, &mut out[..state.len()]);
         std::array::from_fn(|k| out[5 + k])
     }
 
@@ -345,9 +313,16 @@ impl ShaftDynamics {
     /// outer ring, cage, contacts, pockets, gravity.
     pub fn bearing_energy(&self, i: usize, t: f64, own: &[f64]) -> f64 {
         let model = &self.bearings[i].model;
-        let r = model.layout().ring();
-        // Its inner ring has unit mass and inertia (module doc).
-        let ring_kinetic = 0.5 * own[r + 5..r + 10].iter().map(|v| v * v).sum::<f64>();
+        let l = model.layout();
+        let r = l.ring();
+        // Its inner ring has unit mass and inertia (module doc), and so has
+        // a driven ring about its axis.
+        let ring_kinetic = 0.5 * own[r + 5..r + 10].iter().map(|v| v * v).sum::<f64>()
+            + if l.driven {
+                0.5 * own[l.spin() + 1].powi(2)
+            } else {
+                0.0
+            };
         model.energy(t, own).total() - ring_kinetic - self.gravity * own[r + 2]
     }
 
@@ -373,8 +348,11 @@ impl ShaftDynamics {
             let l = b.model.layout();
             let n = l.balls * self.ball_len;
             y[b.first_ball..b.first_ball + n].copy_from_slice(&own[..n]);
-            let border = l.len() - l.ring() - 10;
-            y[b.first_border..b.first_border + border].copy_from_slice(&own[l.ring() + 10..]);
+            let border = l.len() - l.outer();
+            y[b.first_border..b.first_border + border].copy_from_slice(&own[l.outer()..]);
+            if l.driven {
+                y[self.first_shaft + SHAFT_LEN + 1] = own[l.spin() + 1];
+            }
         }
         y[self.first_shaft..self.first_shaft + 5].copy_from_slice(&eq.displacement);
         Ok(y)
@@ -418,40 +396,18 @@ impl ShaftDynamics {
         f
     }
 
-    /// The generalized force on the shaft at time `t` (x, y, z, θ_y, θ_z)
-    /// of the loads that turn or fluctuate with it: the unbalance and the
-    /// harmonic loads (zero without them).
-    fn rotating_load(&self, t: f64) -> [f64; 5] {
-        if self.unbalance.is_none() && self.harmonic_loads.is_empty() {
-            return [0.0; 5];
-        }
-        let speed = &self.bearings[0].model.parameters().speed;
-        let (omega, angle) = (speed.speed_at(t), speed.angle_at(t));
-        let mut total = [0.0; 5];
-        let mut add = |x: f64, f: [f64; 3]| {
-            total[0] += f[0];
-            total[1] += f[1];
-            total[2] += f[2];
-            total[3] -= x * f[2];
-            total[4] += x * f[1];
-        };
-        if let Some(u) = self.unbalance {
-            let magnitude = u.amount * omega * omega;
-            add(
-                u.position,
-                [0.0, magnitude * angle.cos(), magnitude * angle.sin()],
-            );
-        }
-        for l in &self.harmonic_loads {
-            let s = (l.order * angle + l.phase).sin();
-            add(l.position, l.amplitude.map(|a| a * s));
-        }
-        total
-    }
-
     /// The shaft's derivatives `out` (its states with the rotating loads'
-    /// work) from its `state` and the summed bearing loads on it at `t`.
-    fn shaft_rhs(&self, t: f64, state: &[f64], load: &[f64; 5], out: &mut [f64]) {
+    /// and the drive's work) from its `state`, the summed bearing loads on
+    /// it and, for a driven shaft, the bearings' summed moment about its
+    /// axis `axial_moment`, at `t`.
+    fn shaft_rhs(
+        &self,
+        t: f64,
+        state: &[f64],
+        load: &[f64; 5],
+        axial_moment: f64,
+        out: &mut [f64],
+    ) {
         out[..5].copy_from_slice(&state[5..SHAFT_STATES]);
         let applied = [
             self.loads.force[0],
@@ -460,7 +416,7 @@ impl ShaftDynamics {
             self.loads.moment[0],
             self.loads.moment[1],
         ];
-        let rotating = self.rotating_load(t);
+        let rotating = self.rotating_load(t, state);
         for k in 0..5 {
             let inertia = if k < 3 {
                 self.body.mass
@@ -471,6 +427,12 @@ impl ShaftDynamics {
         }
         out[7] -= self.gravity;
         out[SHAFT_STATES] = (0..5).map(|k| rotating[k] * state[5 + k]).sum();
+        if let Some(drive) = &self.drive {
+            let (speed, torque) = (state[SHAFT_LEN + 1], drive.torque_at(t));
+            out[SHAFT_LEN] = speed;
+            out[SHAFT_LEN + 1] = (torque + axial_moment) / drive.inertia;
+            out[SHAFT_STATES] += torque * speed;
+        }
     }
 
     /// The applied loads' potential and gravity's at shaft `state` plus
@@ -484,7 +446,11 @@ impl ShaftDynamics {
             self.loads.moment[0],
             self.loads.moment[1],
         ];
-        0.5 * self.body.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+        let spin = self
+            .drive
+            .as_ref()
+            .map_or(0.0, |d| 0.5 * d.inertia * state[SHAFT_LEN + 1].powi(2));
+        spin + 0.5 * self.body.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
             + 0.5 * self.body.tilt_inertia * (v[3] * v[3] + v[4] * v[4])
             - (0..5).map(|k| applied[k] * state[k]).sum::<f64>()
             + self.body.mass * self.gravity * state[2]
@@ -513,7 +479,8 @@ impl ShaftDynamics {
             .iter()
             .rposition(|b| b.first_border <= state)
             .unwrap_or(0);
-        Some((i, 10 + state - self.bearings[i].first_border))
+        let b = &self.bearings[i];
+        Some((i, b.slaved() + state - b.first_border))
     }
 
     /// The system state index of bearing `b`'s own state `local`, None for
@@ -522,8 +489,8 @@ impl ShaftDynamics {
         let l = b.model.layout();
         if local < l.ring() {
             Some(b.first_ball + local)
-        } else if local >= l.ring() + 10 {
-            Some(b.first_border + local - l.ring() - 10)
+        } else if local >= l.outer() {
+            Some(b.first_border + local - l.outer())
         } else {
             None
         }
@@ -541,22 +508,19 @@ impl OdeSystem for ShaftDynamics {
     }
 
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        let mut shaft_load = [0.0; 5];
+        let (mut shaft_load, mut axial_moment) = ([0.0; 5], 0.0);
         let mut work = self.take();
         for b in &self.bearings {
             let l = b.model.layout();
-            let (n, r, len) = (l.balls * self.ball_len, l.ring(), l.len());
+            let (n, len) = (l.balls * self.ball_len, l.len());
             self.bearing_state_into(b, y, &mut work.y[..len]);
             b.model.rhs(t, &work.y[..len], &mut work.dy[..len]);
             dy[b.first_ball..b.first_ball + n].copy_from_slice(&work.dy[..n]);
-            dy[b.first_border..b.first_border + len - r - 10]
-                .copy_from_slice(&work.dy[r + 10..len]);
-            let load = b.to_shaft(&self.ring_load_from(&work.dy[r + 5..r + 10]));
-            shaft_load.iter_mut().zip(load).for_each(|(s, f)| *s += f);
+            axial_moment += self.collect_border(b, &work.dy[..len], dy, &mut shaft_load);
         }
         self.give(work);
         let sh = self.first_shaft;
-        self.shaft_rhs(t, &y[sh..], &shaft_load, &mut dy[sh..]);
+        self.shaft_rhs(t, &y[sh..], &shaft_load, axial_moment, &mut dy[sh..]);
     }
 
     fn blocks(&self) -> Option<&dyn BlockSplit> {
@@ -573,12 +537,16 @@ impl OdeSystem for ShaftDynamics {
                     scale[k] = *v;
                 }
             }
-            // The shaft's scales are the inner ring's.
-            let r = b.model.layout().ring();
-            scale[self.first_shaft..self.first_shaft + SHAFT_STATES]
-                .copy_from_slice(&own[r..r + 10]);
+            // The shaft's scales are the inner ring's (with its rotation).
+            let l = b.model.layout();
+            let (r, sh) = (l.ring(), self.first_shaft);
+            scale[sh..sh + SHAFT_STATES].copy_from_slice(&own[r..r + 10]);
             // As a bearing's energy accumulators.
-            scale[self.first_shaft + SHAFT_STATES] = own[b.model.layout().work()];
+            scale[sh + SHAFT_STATES] = own[l.work()];
+            if l.driven {
+                scale[sh + SHAFT_LEN..sh + SHAFT_LEN + 2]
+                    .copy_from_slice(&own[l.spin()..l.outer()]);
+            }
         }
     }
 
@@ -594,11 +562,14 @@ impl OdeSystem for ShaftDynamics {
                 }
             }
         }
+        if self.drive.is_some() {
+            absolute[self.first_shaft + SHAFT_LEN] = true;
+        }
     }
 
     fn state_name(&self, index: usize) -> String {
         if index >= self.first_shaft {
-            const SHAFT: [&str; SHAFT_LEN] = [
+            const SHAFT: [&str; SHAFT_LEN + 2] = [
                 "axial position x",
                 "position y",
                 "position z",
@@ -609,7 +580,9 @@ impl OdeSystem for ShaftDynamics {
                 "velocity ż",
                 "tilt rate θ̇_y",
                 "tilt rate θ̇_z",
-                "work of the unbalance and harmonic loads",
+                "work of the drive, unbalance and harmonic loads",
+                "rotation angle",
+                "speed",
             ];
             return format!("shaft {}", SHAFT[index - self.first_shaft]);
         }
@@ -617,8 +590,8 @@ impl OdeSystem for ShaftDynamics {
             let l = b.model.layout();
             let local = if (b.first_ball..b.first_ball + l.balls * self.ball_len).contains(&index) {
                 Some(index - b.first_ball)
-            } else if (b.first_border..b.first_border + l.len() - l.ring() - 10).contains(&index) {
-                Some(index - b.first_border + l.ring() + 10)
+            } else if (b.first_border..b.first_border + l.len() - l.outer()).contains(&index) {
+                Some(index - b.first_border + l.outer())
             } else {
                 None
             };
@@ -691,8 +664,11 @@ fn gather_border(b: &Mounted, shaft: usize, y: &[f64], out: &mut [f64]) {
     ring[0] += b.offset;
     out[r..r + 5].copy_from_slice(&ring);
     out[r + 5..r + 10].copy_from_slice(&b.ring(&y[shaft + 5..shaft + 10]));
-    let border = l.len() - r - 10;
-    out[r + 10..l.len()].copy_from_slice(&y[b.first_border..b.first_border + border]);
+    if l.driven {
+        out[l.spin()..l.outer()].copy_from_slice(&y[shaft + SHAFT_LEN..shaft + SHAFT_LEN + 2]);
+    }
+    let border = l.len() - l.outer();
+    out[l.outer()..l.len()].copy_from_slice(&y[b.first_border..b.first_border + border]);
 }
 
 /// Bearing `b`'s full own-layout state from the system's `y` (a free
@@ -706,5 +682,27 @@ fn gather(b: &Mounted, ball_len: usize, shaft: usize, y: &[f64], out: &mut [f64]
 impl ShaftDynamics {
     fn bearing_state_into(&self, b: &Mounted, y: &[f64], out: &mut [f64]) {
         gather(b, self.ball_len, self.first_shaft, y, out);
+    }
+
+    /// Bearing `b`'s border derivatives from its own-layout `own` into
+    /// `dy` (the system's derivative, or its tail from the first border
+    /// state), its ring load added to `shaft_load`; returns its moment
+    /// about a driven shaft's axis (0 when prescribed).
+    fn collect_border(
+        &self,
+        b: &Mounted,
+        own: &[f64],
+        dy: &mut [f64],
+        shaft_load: &mut [f64; 5],
+    ) -> f64 {
+        let l = b.model.layout();
+        let border = l.len() - l.outer();
+        let at = b.first_border + dy.len() - self.dimension;
+        dy[at..at + border].copy_from_slice(&own[l.outer()..]);
+        let r = l.ring();
+        let load = b.to_shaft(&self.ring_load_from(&own[r + 5..r + 10]));
+        shaft_load.iter_mut().zip(load).for_each(|(s, f)| *s += f);
+        // Unit inertia, no torque: its ring's acceleration is the moment.
+        if l.driven { own[l.spin() + 1] } else { 0.0 }
     }
 }
