@@ -52,7 +52,7 @@ pub fn add_channels(series: &mut TimeSeries, thermal: bool) {
 pub fn push(row: &mut Vec<f64>, p: &Dissipation, model: &BearingModel) {
     row.extend(components(p).map(|(_, v)| v));
     row.push(p.total());
-    row.push(p.drive_torque);
+    row.push(p.friction_torque);
     if let Some(t) = model.thermal() {
         for node in TEMPERATURE_NODES {
             row.push(t.temperature(node).unwrap_or(f64::NAN) - KELVIN);

@@ -129,9 +129,11 @@ impl SetSimulation {
                 SimulationError::Case(invalid) => SimulationError::Case(name(invalid)),
                 e => e,
             };
-            let parameters = bearing_case
+            let mut parameters = bearing_case
                 .dynamics_parameters()
                 .map_err(|e| named(e.into()))?;
+            // The shaft's drive turns every bearing's inner ring.
+            parameters.drive = case.drive.clone();
             if parameters.speed.speed_at(0.0) != conditions.inner_speed {
                 return refuse("operating.speed", "a speed that changes over the run");
             }

@@ -356,6 +356,7 @@ impl BearingModel {
         if let Some(d) = sink {
             d.cage_drag = -cage_drag * cage_speed;
             d.drive_torque = drive_torque;
+            d.friction_torque = -axial_moment;
         }
         dy[dw] = drive_torque * inner.spin_speed + external_power;
         dy[dw + 1] = dissipation;

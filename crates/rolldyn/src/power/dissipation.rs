@@ -91,8 +91,13 @@ pub struct Dissipation {
     /// Friction of the contact seals on the inner ring.
     pub seals: f64,
     /// Torque the drive supplies to the inner ring about its axis \[N·m\]
-    /// (the bearing's friction torque when steady; not a power).
+    /// (not a power): with a prescribed speed the torque that holds it (the
+    /// friction torque), with a torque drive the applied torque.
     pub drive_torque: f64,
+    /// The bearing's friction torque: the moment of its forces on the inner
+    /// ring (contacts, an inner guide land, seals) against the rotation,
+    /// −M_x \[N·m\].
+    pub friction_torque: f64,
 }
 
 impl Dissipation {
@@ -108,6 +113,7 @@ impl Dissipation {
         self.support_damping += other.support_damping;
         self.seals += other.seals;
         self.drive_torque += other.drive_torque;
+        self.friction_torque += other.friction_torque;
     }
 
     /// Total dissipated power \[W\]: the rate of the energy balance's

@@ -69,6 +69,8 @@ fn c8_components_sum_to_the_dissipated_power_and_drive_torque_gives_drive_power(
             rk.t(),
             p.total()
         );
+        // A prescribed speed is held by the bearing's friction torque.
+        assert_eq!(p.friction_torque, p.drive_torque);
         let drive_power = p.drive_torque * speed;
         assert!(
             (drive_power - dy[w]).abs() <= 1e-9 * dy[w].abs(),

@@ -108,5 +108,9 @@ fn the_power_balance_holds_in_a_spin_up() {
     let l = model.layout();
     let p = model.rhs_with_power(1.5e-4, &y0, &mut dy);
     assert_eq!(p.drive_torque, 2.0);
+    // The friction torque: the moment of the bearing's forces against the
+    // rotation, J ω̇ = T − M_f.
+    let omega_rate = dy[l.spin() + 1];
+    assert!((2.0 - p.friction_torque - 2e-4 * omega_rate).abs() < 1e-12);
     assert_eq!(dy[l.work()], 2.0 * SPEED);
 }
