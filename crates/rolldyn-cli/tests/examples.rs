@@ -1,5 +1,5 @@
 //! Every directory of `examples/` (one per source paper, the CWRU 6205,
-//! the minute-long warm-up and the spindle pair)
+//! the minute-long warm-up, the spindle pair and the run-down)
 //! holds a README, its case file and a matplotlib script; its case is
 //! valid and runs, shortened; a scripted example (the CWRU test matrix)
 //! holds a README, its script and its table script, and runs, shortened.
@@ -17,7 +17,7 @@ fn examples() -> PathBuf {
 }
 
 /// (directory, the shortened command after the case path).
-const EXAMPLES: [(&str, &[&str]); 8] = [
+const EXAMPLES: [(&str, &[&str]); 9] = [
     ("seed000", &["run", "--duration", "2 ms"]),
     ("seed001", &["run", "--duration", "2 ms"]),
     ("seed002", &["run", "--duration", "2 ms"]),
@@ -29,6 +29,8 @@ const EXAMPLES: [(&str, &[&str]); 8] = [
     ("warmup60s", &["run", "--duration", "1 ms"]),
     // A matched pair: its quasi-static solution at the case's speed.
     ("spindle_pair", &["quasistatic"]),
+    // The default case coasting down (a torque-driven ring).
+    ("run_down", &["run", "--duration", "2 ms"]),
 ];
 
 /// Examples that are a shell script over other examples' cases.
