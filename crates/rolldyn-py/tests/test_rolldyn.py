@@ -426,6 +426,20 @@ def test_run_of_a_bearing_set(tmp_path):
     assert len(result["shaft_x_m"]) == 11
 
 
+def test_a_drive_torque_and_its_inertia_are_set_together(tmp_path):
+    case = rolldyn.Case.preset("7008C")
+    with pytest.raises(rolldyn.CaseError, match="operating.rotor_inertia"):
+        case.set("operating.drive_torque", "0 N.m")
+    run_down = case.with_values(
+        {"operating.drive_torque": "0 N.m", "operating.rotor_inertia": "1e-4 kg.m^2"}
+    )
+    result = rolldyn.run(run_down, "2 ms", output=tmp_path / "run_down")
+    speed = result["inner_ring_speed_rpm"]
+    assert speed[0] == 10000.0
+    assert speed[-1] < speed[0]
+    assert result.summary["final_inner_ring_speed_rpm"] == speed[-1]
+
+
 def test_thermal_of_a_bearing_set_equals_the_cli():
     pair = REPO / "examples" / "spindle_pair" / "case.toml"
     got = rolldyn.thermal(rolldyn.Case.load(pair))

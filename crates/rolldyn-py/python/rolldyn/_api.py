@@ -112,10 +112,13 @@ class Case:
         return new
 
     def with_values(self, values: Mapping[str, Any]) -> "Case":
-        """A copy with several values set."""
+        """A copy with several values set, validated together: keys that
+        need each other go in one call, e.g. ``{"operating.drive_torque":
+        "0 N.m", "operating.rotor_inertia": "1e-4 kg.m^2"}``."""
+        overrides = [f"{SWEEP_ALIASES.get(k, k)}={_value_text(v)}" for k, v in values.items()]
+        _rolldyn.check(self._source, self._text, self._overrides + overrides)
         new = self.copy()
-        for key, value in values.items():
-            new.set(key, value)
+        new._overrides.extend(overrides)
         return new
 
     def describe(self) -> dict:
