@@ -44,10 +44,11 @@
 use super::coupling::BallCoupling;
 use super::model::BearingModel;
 use crate::error::InvalidParameter;
-use crate::integrate::{BlockSplit, EnergyBalance, OdeSystem};
+use crate::integrate::BlockSplit;
 
 mod block_split;
 mod checkpoint;
+mod ode;
 mod rotating;
 use crate::operating::{LoadProfile, Loads, TorqueDrive};
 use crate::quasistatic::system::{MountedBearing, SystemEquilibrium};
@@ -499,159 +500,6 @@ impl ShaftDynamics {
     fn memo_parts(&self) -> (usize, usize) {
         let own = self.bearings[0].model.memo_len();
         (own, own + self.ball_len + BallCoupling::LEN)
-    }
-}
-
-impl OdeSystem for ShaftDynamics {
-    fn dimension(&self) -> usize {
-        self.dimension
-    }
-
-    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        let (mut shaft_load, mut axial_moment) = ([0.0; 5], 0.0);
-        let mut work = self.take();
-        for b in &self.bearings {
-            let l = b.model.layout();
-            let (n, len) = (l.balls * self.ball_len, l.len());
-            self.bearing_state_into(b, y, &mut work.y[..len]);
-            b.model.rhs(t, &work.y[..len], &mut work.dy[..len]);
-            dy[b.first_ball..b.first_ball + n].copy_from_slice(&work.dy[..n]);
-            axial_moment += self.collect_border(b, &work.dy[..len], dy, &mut shaft_load);
-        }
-        self.give(work);
-        let sh = self.first_shaft;
-        self.shaft_rhs(t, &y[sh..], &shaft_load, axial_moment, &mut dy[sh..]);
-    }
-
-    fn blocks(&self) -> Option<&dyn BlockSplit> {
-        Some(self)
-    }
-
-    fn error_scale(&self, scale: &mut [f64]) {
-        let mut own = Vec::new();
-        for b in &self.bearings {
-            own.resize(b.model.layout().len(), 0.0);
-            b.model.error_scale(&mut own);
-            for (local, v) in own.iter().enumerate() {
-                if let Some(k) = self.system_index(b, local) {
-                    scale[k] = *v;
-                }
-            }
-            // The shaft's scales are the inner ring's (with its rotation).
-            let l = b.model.layout();
-            let (r, sh) = (l.ring(), self.first_shaft);
-            scale[sh..sh + SHAFT_STATES].copy_from_slice(&own[r..r + 10]);
-            // As a bearing's energy accumulators.
-            scale[sh + SHAFT_STATES] = own[l.work()];
-            if l.driven {
-                scale[sh + SHAFT_LEN..sh + SHAFT_LEN + 2]
-                    .copy_from_slice(&own[l.spin()..l.outer()]);
-            }
-        }
-    }
-
-    fn absolute_error(&self, absolute: &mut [bool]) {
-        let mut own = Vec::new();
-        for b in &self.bearings {
-            own.clear();
-            own.resize(b.model.layout().len(), false);
-            b.model.absolute_error(&mut own);
-            for (local, v) in own.iter().enumerate() {
-                if let Some(k) = self.system_index(b, local) {
-                    absolute[k] = *v;
-                }
-            }
-        }
-        if self.drive.is_some() {
-            absolute[self.first_shaft + SHAFT_LEN] = true;
-        }
-    }
-
-    fn state_name(&self, index: usize) -> String {
-        if index >= self.first_shaft {
-            const SHAFT: [&str; SHAFT_LEN + 2] = [
-                "axial position x",
-                "position y",
-                "position z",
-                "tilt θ_y",
-                "tilt θ_z",
-                "axial velocity ẋ",
-                "velocity ẏ",
-                "velocity ż",
-                "tilt rate θ̇_y",
-                "tilt rate θ̇_z",
-                "work of the drive, unbalance and harmonic loads",
-                "rotation angle",
-                "speed",
-            ];
-            return format!("shaft {}", SHAFT[index - self.first_shaft]);
-        }
-        for (i, b) in self.bearings.iter().enumerate() {
-            let l = b.model.layout();
-            let local = if (b.first_ball..b.first_ball + l.balls * self.ball_len).contains(&index) {
-                Some(index - b.first_ball)
-            } else if (b.first_border..b.first_border + l.len() - l.outer()).contains(&index) {
-                Some(index - b.first_border + l.outer())
-            } else {
-                None
-            };
-            if let Some(local) = local {
-                return format!("bearing {i}: {}", b.model.state_name(local));
-            }
-        }
-        format!("y[{index}]")
-    }
-
-    fn step_limit(&self, t: f64, y: &[f64]) -> f64 {
-        let mut work = self.take();
-        let limit = self
-            .bearings
-            .iter()
-            .map(|b| {
-                let len = b.model.layout().len();
-                self.bearing_state_into(b, y, &mut work.y[..len]);
-                b.model.step_limit(t, &work.y[..len])
-            })
-            .fold(f64::INFINITY, f64::min);
-        self.give(work);
-        limit
-    }
-
-    fn accept_step(&mut self, t: f64, y: &[f64]) -> bool {
-        let mut work = self.take();
-        let mut changed = false;
-        let ball_len = self.ball_len;
-        let shaft = self.first_shaft;
-        for b in &mut self.bearings {
-            let len = b.model.layout().len();
-            gather(b, ball_len, shaft, y, &mut work.y[..len]);
-            changed |= b.model.accept_step(t, &work.y[..len]);
-        }
-        self.give(work);
-        changed
-    }
-
-    fn energy_balance(&self, t: f64, y: &[f64]) -> Option<EnergyBalance> {
-        let mut work = self.take();
-        let s = self.first_shaft;
-        let (mut done, mut dissipated, mut mechanical) = (0.0, 0.0, 0.0);
-        for (i, b) in self.bearings.iter().enumerate() {
-            let len = b.model.layout().len();
-            self.bearing_state_into(b, y, &mut work.y[..len]);
-            let own = &work.y[..len];
-            let (w, d) = b.model.work(own);
-            done += w;
-            dissipated += d;
-            mechanical += self.bearing_energy(i, t, own);
-        }
-        self.give(work);
-        done += y[s + SHAFT_STATES];
-        mechanical += self.shaft_energy(&y[s..]);
-        Some(EnergyBalance {
-            work: done,
-            dissipated,
-            mechanical,
-        })
     }
 }
 
