@@ -222,10 +222,13 @@ pub fn run(
         );
         bar
     });
-    let l = system.bearing(0).layout();
-    let mut own = vec![0.0; l.len()];
+    // Buffers for the largest bearing (a shaft's may differ in balls and
+    // states).
+    let layouts: Vec<_> = (0..count).map(|i| system.bearing(i).layout()).collect();
+    let mut own = vec![0.0; layouts.iter().map(|l| l.len()).max().unwrap_or(0)];
     let mut rows = vec![Vec::with_capacity(channels[0].series.width()); count];
-    let mut contacts = vec![ContactSample::default(); l.balls];
+    let mut contacts =
+        vec![ContactSample::default(); layouts.iter().map(|l| l.balls).max().unwrap_or(0)];
     let mut combined = Vec::with_capacity(series.width());
     let mut loads = vec![[0.0; 5]; count];
     let start = Instant::now();
@@ -266,11 +269,13 @@ pub fn run(
         |s: &ShaftDynamics, t, y| {
             let r = &mut *recording.borrow_mut();
             for (i, (c, row)) in r.channels.iter_mut().zip(&mut rows).enumerate() {
-                s.bearing_state(i, y, &mut own);
-                c.fill(s.bearing(i), t, &own, row, &mut contacts);
+                let (n, balls) = (layouts[i].len(), layouts[i].balls);
+                let own = &mut own[..n];
+                s.bearing_state(i, y, own);
+                c.fill(s.bearing(i), t, own, row, &mut contacts[..balls]);
                 loads[i] = s.ring_load(i, c.derivative());
                 if let Some(k) = patch[3] {
-                    row[k] = s.bearing_energy(i, t, &own);
+                    row[k] = s.bearing_energy(i, t, own);
                 }
             }
             let acceleration = s.shaft_acceleration(t, y, &loads);

@@ -142,6 +142,7 @@ fn dynamic_run_of_a_pair() {
             "energy_balance_relative_error",
             "energy_tolerance",
             "error",
+            "final_inner_ring_speed_rpm",
             "inner_ring_speed_rpm",
             "integrator",
             "kind",
@@ -267,8 +268,8 @@ fn dynamic_run_of_a_pair() {
 
 /// `rolldyn run` of a `[shaft]`: two 6206 under a gear force, each with
 /// its dynamics; the bearings share the 300 N thrust as the quasi-static
-/// solution does (their sum balances it); a floating bearing is refused,
-/// naming its key.
+/// solution does (their sum balances it); with the second floating, the
+/// first takes all of it; friction of a located bearing's ring is refused.
 #[test]
 fn dynamic_run_of_a_shaft() {
     let case = SHAFT.replace("ORIENTATION", "forward");
@@ -304,8 +305,37 @@ fn dynamic_run_of_a_shaft() {
             "{dynamic} vs {quasistatic}"
         );
     }
-    let floating = case.replacen("orientation = \"forward\"", "axial = \"floating\"", 1);
-    assert_run_refused(&floating, "shaft.bearings[1].axial");
+    // The second bearing floating: its outer ring slides in its bore
+    // (here without friction), so the first takes the whole thrust.
+    let floating = case.replacen(
+        "orientation = \"forward\"",
+        "axial = \"floating\"\nhousing_friction = 0",
+        1,
+    );
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "3 ms",
+            "-o",
+            dir.join("floating").to_str().unwrap(),
+        ],
+        Some(&floating),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join("floating").join("summary.json")).unwrap(),
+    )
+    .unwrap();
+    let b = v["bearings"].as_array().unwrap();
+    let (locating, floating) = (f(&b[0], "mean_axial_load_n"), f(&b[1], "mean_axial_load_n"));
+    assert!((locating - 300.0).abs() < 0.01 * 300.0, "{locating} N");
+    assert!(floating.abs() < 1.0, "{floating} N");
+    assert!(v["energy_balance_relative_error"].as_f64().unwrap().abs() < 1e-3);
+    // Only a floating bearing's ring slides.
+    let located = case.replacen("orientation = \"forward\"", "housing_friction = 0.1", 1);
+    assert_run_refused(&located, "shaft.bearings[1].housing_friction");
 }
 
 /// A 1 ms run of `case` is refused (exit 2) with `key` in its message.

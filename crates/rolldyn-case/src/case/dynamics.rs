@@ -27,7 +27,42 @@ pub const DEFAULT_POCKET_MIN_FILM: f64 = 1e-6;
 /// material; Deng et al. 2022 and Zhang et al. 2025 use 0.01–0.1).
 pub const DEFAULT_POCKET_FRICTION: f64 = 0.05;
 
+/// Mass \[kg\] and transverse moment of inertia about a diameter through
+/// its centre \[kg·m²\] of a ring as a uniform annulus of diameters
+/// `inner` and `outer`, width `width` and density `density`.
+fn annulus(inner: f64, outer: f64, width: f64, density: f64) -> (f64, f64) {
+    let (ro, ri) = (outer / 2.0, inner / 2.0);
+    let mass = density * std::f64::consts::PI * (ro * ro - ri * ri) * width;
+    (
+        mass,
+        mass * (3.0 * (ro * ro + ri * ri) + width * width) / 12.0,
+    )
+}
+
 impl Case {
+    /// The outer ring's mass \[kg\]: `outer_ring.mass`, or the ring alone
+    /// as an annulus from its groove bottom to the outside diameter (what
+    /// slides in the housing under a floating bearing).
+    pub fn outer_ring_mass(&self) -> Result<f64, Invalid> {
+        if let Some(outer) = &self.outer_ring {
+            return Ok(outer.mass);
+        }
+        let g = &self.bearing.geometry;
+        match (self.bearing.outside_diameter, self.bearing.width) {
+            (Some(od), Some(width)) => Ok(annulus(
+                g.outer.groove_bottom_diameter,
+                od,
+                width,
+                self.materials.rings.material.density,
+            )
+            .0),
+            _ => Err(Invalid::missing(
+                "outer_ring.mass",
+                "a floating bearing in motion needs its outer ring's mass (or bearing.outside_diameter and bearing.width to estimate the ring)",
+            )),
+        }
+    }
+
     /// The parameters of the dynamic model, with defaults applied. A value
     /// a dynamic run needs but the case lacks is an error naming its key.
     pub fn dynamics_parameters(&self) -> Result<DynamicsParameters, Invalid> {
@@ -61,14 +96,12 @@ impl Case {
         // Inner ring alone, as a steel annulus from bore to raceway, if not given.
         let ring_density = self.materials.rings.material.density;
         let annulus = match (self.bearing.bore, self.bearing.width) {
-            (Some(bore), Some(width)) => {
-                let (ro, ri) = (g.inner.groove_bottom_diameter / 2.0, bore / 2.0);
-                let mass = ring_density * std::f64::consts::PI * (ro * ro - ri * ri) * width;
-                Some((
-                    mass,
-                    mass * (3.0 * (ro * ro + ri * ri) + width * width) / 12.0,
-                ))
-            }
+            (Some(bore), Some(width)) => Some(annulus(
+                bore,
+                g.inner.groove_bottom_diameter,
+                width,
+                ring_density,
+            )),
             _ => None,
         };
         let inner_ring_mass = self.inner_ring_mass.or(annulus.map(|a| a.0)).ok_or_else(|| {
@@ -125,6 +158,7 @@ impl Case {
                 .unwrap_or(LoadProfile::Constant(self.loads)),
             inner_support: self.inner_support,
             outer_ring: self.outer_ring,
+            sliding_outer_ring: None,
             rolling_hysteresis: self.rolling_hysteresis,
             gravity: if self.gravity { STANDARD_GRAVITY } else { 0.0 },
             planar: self.planar,

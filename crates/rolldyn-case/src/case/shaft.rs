@@ -10,6 +10,11 @@ use rolldyn::operating::Loads;
 use rolldyn::quasistatic::system::Orientation;
 use std::borrow::Cow;
 
+/// Friction coefficient of a floating bearing's outer ring in its housing
+/// bore when the case gives none: steel on steel or cast iron, oiled
+/// (0.1–0.2; an assumption, stated in docs/systems.md).
+pub const DEFAULT_HOUSING_FRICTION: f64 = 0.1;
+
 /// Largest distance of a bearing or a load from the reference point \[m\].
 pub const MAX_SHAFT_POSITION: f64 = 10.0;
 
@@ -75,6 +80,9 @@ pub struct ShaftBearing {
     pub orientation: Orientation,
     /// Its outer ring slides in the housing (no thrust).
     pub floating: bool,
+    /// Friction coefficient of a floating bearing's outer ring in its
+    /// bore (a run's sliding ring; 0 for a located bearing).
+    pub housing_friction: f64,
     /// Axial offset of its inner ring towards its loaded side at zero
     /// shaft displacement \[m\] (its preload displacement).
     pub preload_offset: f64,
@@ -241,6 +249,30 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
             ));
         }
         let floating = b.axial == Some(RawAxial::Floating);
+        let housing_friction = match b.housing_friction {
+            None => {
+                if floating {
+                    DEFAULT_HOUSING_FRICTION
+                } else {
+                    0.0
+                }
+            }
+            Some(_) if !floating => {
+                return Err(Invalid::new(
+                    key("housing_friction"),
+                    b.housing_friction.map(|v| v.to_string()),
+                    "only a floating bearing's outer ring slides in its bore (axial = \"floating\")",
+                ));
+            }
+            Some(v) if !(v.is_finite() && (0.0..=1.0).contains(&v)) => {
+                return Err(Invalid::new(
+                    key("housing_friction"),
+                    Some(v.to_string()),
+                    "must lie in [0, 1]",
+                ));
+            }
+            Some(v) => v,
+        };
         let preload_offset = checked(&key("preload_offset"), &b.preload_offset, |v| {
             if floating && v != 0.0 {
                 Err("a floating bearing takes no preload (its outer ring slides)".into())
@@ -262,6 +294,7 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
                 Some(RawOrientation::Reversed) => Orientation::Reversed,
             },
             floating,
+            housing_friction,
             preload_offset,
             fits: b
                 .fits

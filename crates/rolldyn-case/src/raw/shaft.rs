@@ -89,6 +89,9 @@ pub struct RawShaftBearing {
     pub orientation: Option<RawOrientation>,
     /// "located" (default) or "floating".
     pub axial: Option<RawAxial>,
+    /// Friction coefficient of a floating bearing's outer ring in its
+    /// housing bore (dynamic runs; default 0.1).
+    pub housing_friction: Option<f64>,
     /// Axial offset of its inner ring towards its loaded side at zero
     /// shaft displacement (default 0): the preload displacement of a
     /// bearing set against an opposed one (a ground spacer, a locknut).

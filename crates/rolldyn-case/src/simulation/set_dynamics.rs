@@ -6,6 +6,7 @@
 use super::{BearingSet, ShaftModel, SimulationError, SolverSettings};
 use crate::Case;
 use crate::case::{Invalid, Preload};
+use rolldyn::dynamics::SlidingRing;
 use rolldyn::dynamics::shaft::{ShaftBody, ShaftDynamics, Unbalance};
 use rolldyn::quasistatic::system::{MountedBearing, SetKind, SystemEquilibrium};
 
@@ -89,12 +90,6 @@ impl SetSimulation {
                 if shaft.elastic.is_some() {
                     return refuse("shaft.diameter", "an elastic shaft (quasi-static only)");
                 }
-                if let Some(i) = shaft.bearings.iter().position(|b| b.mounted.floating) {
-                    return refuse(
-                        &format!("shaft.bearings[{i}].axial"),
-                        "a floating bearing (its outer ring sliding in the housing)",
-                    );
-                }
                 let equilibrium = shaft.solve().map_err(|e| SimulationError::Start {
                     start: "jones_harris",
                     reason: format!("the shaft's quasi-static equilibrium: {e}"),
@@ -134,6 +129,18 @@ impl SetSimulation {
                 .map_err(|e| named(e.into()))?;
             // The shaft's drive turns every bearing's inner ring.
             parameters.drive = case.drive.clone();
+            if b.floating {
+                // Its outer ring slides in its bore.
+                parameters.sliding_outer_ring = Some(SlidingRing {
+                    mass: bearing_case
+                        .outer_ring_mass()
+                        .map_err(|e| named(e.into()))?,
+                    friction: case
+                        .shaft
+                        .as_ref()
+                        .map_or(0.0, |s| s.bearings[i].housing_friction),
+                });
+            }
             if parameters.speed.speed_at(0.0) != conditions.inner_speed {
                 return refuse("operating.speed", "a speed that changes over the run");
             }

@@ -91,8 +91,11 @@ impl BlockSplit for BearingModel {
         if state < l.outer() {
             return p.planar && matches!(state - l.ring(), 0 | 3 | 4 | 5 | 8 | 9);
         }
-        if state < l.cage() {
+        if state < l.slide() {
             return p.outer_ring.is_none();
+        }
+        if state < l.cage() {
+            return false;
         }
         if state < l.work() {
             return !p.cage.whirl && matches!(state - l.cage(), 0 | 1 | 3 | 4);

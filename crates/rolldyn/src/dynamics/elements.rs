@@ -82,6 +82,16 @@ impl Elements {
                 }
             }
         }
+        if let Some(ring) = &params.sliding_outer_ring {
+            ring.validate()?;
+            if params.film_in_approach {
+                return Err(InvalidParameter::new(
+                    "film_in_approach",
+                    "true",
+                    "is not available with a sliding outer ring yet",
+                ));
+            }
+        }
         if let Some(drive) = &params.drive {
             drive.validate()?;
             if params.film_in_approach {
@@ -125,6 +135,7 @@ impl Elements {
                 ball_spin_angle: params.surface.has_ball_surfaces(),
                 film_work: params.film_in_approach,
                 driven: params.drive.is_some(),
+                sliding: params.sliding_outer_ring.is_some(),
             },
             traction_grid: TractionGrid::new(params.traction_integration),
             geometry: geometry.clone(),

@@ -101,6 +101,9 @@ impl BearingModel {
         e.kinetic += 0.5 * p.cage.mass * (y[c + 3].powi(2) + y[c + 4].powi(2))
             + 0.5 * p.cage.inertia * y[c + 5].powi(2);
         e.potential += p.cage.mass * g * y[c + 1];
+        if let Some(ring) = &p.sliding_outer_ring {
+            e.kinetic += 0.5 * ring.mass * y[l.slide() + 1].powi(2);
+        }
         if let Some(drive) = &p.drive {
             e.kinetic += 0.5 * drive.inertia * y[l.spin() + 1].powi(2);
         }

@@ -254,7 +254,9 @@ impl Elements {
             outer.copy_from_slice(&y[o..o + 4]);
             outer[0] += s * y[o + 2];
             outer[1] += s * y[o + 3];
-            let (inner_ring, outer_ring) = self.ring_motion_of(spin_along(s), &ring, &outer);
+            // (A sliding outer ring is refused with the film in the approach.)
+            let (inner_ring, outer_ring) =
+                self.ring_motion_of(spin_along(s), &ring, &outer, [0.0; 2]);
             let (ball, _) = self.ball_motion_of(j, &block[..len]);
             let mut total = 0.0;
             if let Some(q) = loads[0] {

@@ -14,6 +14,9 @@ pub struct StateLayout {
     /// Whether the inner ring's rotation (angle, speed) is a state: a
     /// torque drive (`operating::TorqueDrive`) instead of a prescribed speed.
     pub driven: bool,
+    /// Whether the outer ring's axial position and velocity are states: it
+    /// slides in its bore (`dynamics::SlidingRing`).
+    pub sliding: bool,
 }
 
 impl StateLayout {
@@ -49,9 +52,14 @@ impl StateLayout {
     pub fn outer(&self) -> usize {
         self.spin() + 2 * usize::from(self.driven)
     }
+    /// First of a sliding outer ring's axial states (x_o, ẋ_o), present
+    /// when [`Self::sliding`].
+    pub fn slide(&self) -> usize {
+        self.outer() + Self::OUTER
+    }
     /// First cage state.
     pub fn cage(&self) -> usize {
-        self.outer() + Self::OUTER
+        self.slide() + 2 * usize::from(self.sliding)
     }
     /// The states that the contacts of ball j touch (read or write): its
     /// own block, both rings (a driven inner ring's rotation too) and the
@@ -115,8 +123,11 @@ impl StateLayout {
             format!("inner ring {}", RING[index - self.ring()])
         } else if index < self.outer() {
             ["inner ring rotation angle", "inner ring speed"][index - self.spin()].into()
-        } else if index < self.cage() {
+        } else if index < self.slide() {
             format!("outer ring {}", OUTER[index - self.outer()])
+        } else if index < self.cage() {
+            ["outer ring axial position x", "outer ring axial velocity"][index - self.slide()]
+                .into()
         } else if index < self.work() {
             format!("cage {}", CAGE[index - self.cage()])
         } else if index == self.work() {
@@ -157,9 +168,11 @@ mod tests {
                 ball_spin_angle: spin,
                 film_work: films,
                 driven,
+                sliding: driven,
             };
             if driven {
                 assert_eq!(names_of(&l)[l.spin() + 1], "inner ring speed");
+                assert_eq!(names_of(&l)[l.slide()], "outer ring axial position x");
             }
             let names = names_of(&l);
             assert_eq!(names[0], "ball 0 axial position x");

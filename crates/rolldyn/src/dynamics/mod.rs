@@ -63,7 +63,7 @@ pub use layout::StateLayout;
 pub use model::BearingModel;
 pub use parameters::DynamicsParameters;
 pub use race_contact::{ContactOutput, ContactSample, HYSTERESIS_RAMP_SPEED};
-pub use supports::{OuterRing, Support};
+pub use supports::{OuterRing, SlidingRing, Support};
 pub use thermal_coupling::ThermalCoupling;
 pub use traction_equilibrium::{
     TractionEquilibrium, TractionSolveOptions, solve_traction_consistent,

@@ -299,6 +299,20 @@ impl BearingModel {
             + load_rate.moment[0] * y[r + 3]
             + load_rate.moment[1] * y[r + 4];
         let o = l.outer();
+        if let Some(ring) = &p.sliding_outer_ring {
+            // The bore takes the balls' radial load on the ring and holds
+            // it axially by friction.
+            let s = l.slide();
+            let speed = y[s + 1];
+            let friction = ring.friction_force(speed, outer_force.y.hypot(outer_force.z));
+            dissipation -= friction * speed;
+            if let Some(d) = sink.as_deref_mut() {
+                d.support_damping -= friction * speed;
+            }
+            let ds = s - l.ring();
+            dy[ds] = speed;
+            dy[ds + 1] = (outer_force.x + friction) / ring.mass;
+        }
         dy[dob..dob + 4].fill(0.0);
         if let Some(ring) = &p.outer_ring {
             let position = Vector3::new(0.0, y[o], y[o + 1]);
@@ -481,6 +495,10 @@ impl OdeSystem for BearingModel {
         scale[c + 2] = micron / self.elements.params.cage.pitch_radius;
         scale[c + 3..c + 5].fill(1e-3);
         scale[c + 5] = 1.0;
+        if l.sliding {
+            scale[l.slide()] = micron;
+            scale[l.slide() + 1] = 1e-3;
+        }
         if l.driven {
             scale[l.spin()] = micron / (0.5 * self.elements.geometry.pitch_diameter);
             scale[l.spin() + 1] = 1.0;

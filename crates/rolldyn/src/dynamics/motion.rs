@@ -70,22 +70,35 @@ impl Elements {
         }
     }
 
+    /// A sliding outer ring's axial position and velocity (zeros when it
+    /// is held).
+    pub(super) fn outer_slide(&self, y: &[f64]) -> [f64; 2] {
+        if self.layout.sliding {
+            let s = self.layout.slide();
+            [y[s], y[s + 1]]
+        } else {
+            [0.0; 2]
+        }
+    }
+
     pub(super) fn ring_motion(&self, t: f64, y: &[f64]) -> (RingMotion, RingMotion) {
         let (r, o) = (self.layout.ring(), self.layout.outer());
         self.ring_motion_of(
             self.spin(t, y),
             &y[r..r + StateLayout::RING],
             &y[o..o + StateLayout::OUTER],
+            self.outer_slide(y),
         )
     }
 
-    /// [`Self::ring_motion`] from the inner ring's rotation, its 10 states
-    /// and the outer ring's 4.
+    /// [`Self::ring_motion`] from the inner ring's rotation, its 10 states,
+    /// the outer ring's 4 and its axial slide (position, velocity).
     pub(super) fn ring_motion_of(
         &self,
         spin: Spin,
         ring: &[f64],
         outer: &[f64],
+        slide: [f64; 2],
     ) -> (RingMotion, RingMotion) {
         let y = ring;
         let r = 0;
@@ -116,14 +129,14 @@ impl Elements {
         };
         let (y, o) = (outer, 0);
         let outer_pose = RingPose {
-            translation: Vector3::new(0.0, y[o], y[o + 1]),
+            translation: Vector3::new(slide[0], y[o], y[o + 1]),
             ..RingPose::default()
         };
         let outer = RingMotion {
             raceway: self.geometry.outer,
             circle: GrooveCircle::of(&self.geometry.outer, &outer_pose),
             centre: outer_pose.translation,
-            velocity: Vector3::new(0.0, y[o + 2], y[o + 3]),
+            velocity: Vector3::new(slide[1], y[o + 2], y[o + 3]),
             omega: Vector3::zeros(),
             omega_frame: Vector3::zeros(),
             spin_angle: 0.0,

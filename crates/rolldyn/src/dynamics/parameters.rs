@@ -3,7 +3,7 @@
 //! [`DynamicsParameters::new`] setting all but the inner ring's inertia and
 //! the cage to documented defaults (docs/dynamics.md).
 
-use super::supports::{OuterRing, Support};
+use super::supports::{OuterRing, SlidingRing, Support};
 use crate::cage::CageParameters;
 use crate::contact::NormalForceLaw;
 use crate::error::InvalidParameter;
@@ -44,6 +44,9 @@ pub struct DynamicsParameters {
     pub inner_support: Support,
     /// Outer ring on a housing spring–damper (None: fixed).
     pub outer_ring: Option<OuterRing>,
+    /// An outer ring sliding axially in its bore against friction (a
+    /// floating bearing's; None: held axially).
+    pub sliding_outer_ring: Option<SlidingRing>,
     /// Elastic-hysteresis coefficient α_h of the rolling resistance
     /// (0: off; ≈ 0.007 for steel, Lei et al. 2023 eq 21).
     pub rolling_hysteresis: f64,
@@ -98,6 +101,7 @@ impl DynamicsParameters {
             loads: LoadProfile::Constant(crate::operating::Loads::default()),
             inner_support: Support::default(),
             outer_ring: None,
+            sliding_outer_ring: None,
             rolling_hysteresis: 0.0,
             gravity: 0.0,
             planar: false,

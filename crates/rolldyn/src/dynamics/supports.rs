@@ -38,6 +38,36 @@ impl Support {
     }
 }
 
+/// Sliding speed below which a sliding outer ring's friction is
+/// proportional to its speed (the regularized Coulomb law's stick speed)
+/// \[m/s\].
+pub const STICK_SPEED: f64 = 1e-3;
+
+/// An outer ring that slides axially in its housing bore (a floating
+/// bearing's), against Coulomb friction μ N with N the radial load it puts
+/// on the bore, regularized below [`STICK_SPEED`]:
+/// F = −μ N ẋ / √(ẋ² + v_s²).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlidingRing {
+    /// Mass of the ring (with what slides with it) \[kg\].
+    pub mass: f64,
+    /// Friction coefficient μ of the ring in its bore.
+    pub friction: f64,
+}
+
+impl SlidingRing {
+    /// The bore's axial friction force on the ring at sliding speed
+    /// `speed` under radial load `radial` \[N\].
+    pub fn friction_force(&self, speed: f64, radial: f64) -> f64 {
+        -self.friction * radial * speed / speed.hypot(STICK_SPEED)
+    }
+
+    pub(super) fn validate(&self) -> Result<(), InvalidParameter> {
+        crate::error::require_positive("sliding_ring_mass", self.mass)?;
+        require_non_negative("housing_friction", self.friction)
+    }
+}
+
 /// The outer ring on a housing spring–damper (Zhang et al. 2025 eqs 14–15): radial
 /// translation (y_o, z_o) only.
 #[derive(Debug, Clone, Copy, PartialEq)]

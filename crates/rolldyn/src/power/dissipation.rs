@@ -86,7 +86,8 @@ pub struct Dissipation {
     pub ball_drag: f64,
     /// Viscous and windage drag on the cage.
     pub cage_drag: f64,
-    /// Dampers of the inner-ring support and the housing.
+    /// Dampers of the inner-ring support and the housing, and the friction
+    /// of a floating bearing's outer ring sliding in its bore.
     pub support_damping: f64,
     /// Friction of the contact seals on the inner ring.
     pub seals: f64,

@@ -42,4 +42,5 @@ mod quasistatic_high_speed;
 mod quasistatic_static;
 mod rolling_resistance;
 mod shaft_dynamics;
+mod sliding_outer_ring;
 mod thermal_preload;

@@ -51,7 +51,7 @@ mod checkpoint;
 mod ode;
 mod rotating;
 use crate::operating::{LoadProfile, Loads, TorqueDrive};
-use crate::quasistatic::system::{MountedBearing, SystemEquilibrium};
+use crate::quasistatic::system::{MountedBearing, Orientation, SystemEquilibrium};
 pub use rotating::{HarmonicLoad, Unbalance};
 use std::sync::Mutex;
 
@@ -189,11 +189,18 @@ impl ShaftDynamics {
                     "every bearing needs the same ball states (all with surfaces or none)",
                 ));
             }
-            if l.film_work || model.parameters().planar || mount.floating {
+            if l.film_work || model.parameters().planar {
                 return Err(InvalidParameter::new(
                     "bearings",
                     0.0,
-                    "a shaft system's bearings run without the film in the approach, in 3-D, located (not floating)",
+                    "a shaft system's bearings run without the film in the approach, in 3-D",
+                ));
+            }
+            if mount.floating != l.sliding {
+                return Err(InvalidParameter::new(
+                    "sliding_outer_ring",
+                    if l.sliding { "given" } else { "none" },
+                    "a floating bearing's model needs its sliding outer ring, a located one none",
                 ));
             }
             if model.parameters().gravity != gravity {
@@ -221,13 +228,22 @@ impl ShaftDynamics {
             p.loads = LoadProfile::Constant(Loads::default());
             p.inner_support = super::Support::default();
             let zero = mount.ring_displacement(&[0.0; 5]);
-            let transform = std::array::from_fn(|r| {
+            let mut transform: [[f64; 5]; 5] = std::array::from_fn(|r| {
                 std::array::from_fn(|k| {
                     let mut e = [0.0; 5];
                     e[k] = 1.0;
                     mount.ring_displacement(&e)[r] - zero[r]
                 })
             });
+            if mount.floating {
+                // The shaft moves a floating bearing's inner ring axially as
+                // any other's; its outer ring slides in its bore (a state of
+                // its model) instead of the quasi-static solve's free ring.
+                transform[0][0] = match mount.orientation {
+                    Orientation::Forward => 1.0,
+                    Orientation::Reversed => -1.0,
+                };
+            }
             let border = l.len() - l.outer();
             mounted.push(Mounted {
                 transform,
@@ -345,8 +361,19 @@ impl ShaftDynamics {
                     "every bearing needs its equilibrium (none may be lifted off)",
                 ));
             };
-            let own = b.model.state_from_equilibrium(state);
+            let mut own = b.model.state_from_equilibrium(state);
             let l = b.model.layout();
+            if l.sliding {
+                // Its outer ring where the quasi-static solve's free inner
+                // ring puts it against the shaft's, the balls with it.
+                let ring_x = b.ring(&eq.displacement)[0] + b.offset;
+                let slide = ring_x - own[l.ring()];
+                own[l.slide()] = slide;
+                own[l.ring()] = ring_x;
+                for j in 0..l.balls {
+                    own[l.ball(j)] += slide;
+                }
+            }
             let n = l.balls * self.ball_len;
             y[b.first_ball..b.first_ball + n].copy_from_slice(&own[..n]);
             let border = l.len() - l.outer();
