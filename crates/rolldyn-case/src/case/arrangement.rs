@@ -16,8 +16,8 @@ pub const MAX_PRELOAD_DISPLACEMENT: f64 = 1e-3;
 pub enum Preload {
     /// No preload (the rings just touch the balls at rest).
     None,
-    /// The axial force each bearing carries at rest without external load
-    /// \[N\].
+    /// The axial force through the set at rest without external load
+    /// \[N\] (each bearing's of a pair; a triple's single bearing's).
     Force(f64),
     /// The axial offset of each inner ring towards its loaded side \[m\].
     Displacement(f64),
@@ -30,7 +30,7 @@ pub struct Arrangement {
     pub kind: SetKind,
     /// Its preload.
     pub preload: Preload,
-    /// Distance between the pitch planes \[m\].
+    /// Distance between neighbouring pitch planes \[m\].
     pub spacing: f64,
     /// A rotating unbalance on the shaft: mass × radius \[kg·m\] and its
     /// position from the middle between the bearings \[m\] (dynamics only).
@@ -44,6 +44,8 @@ fn set_kind(kind: ArrangementKind) -> SetKind {
         ArrangementKind::BackToBack => SetKind::BackToBack,
         ArrangementKind::FaceToFace => SetKind::FaceToFace,
         ArrangementKind::Tandem => SetKind::Tandem,
+        ArrangementKind::TandemBackToBack => SetKind::TandemBackToBack,
+        ArrangementKind::TandemFaceToFace => SetKind::TandemFaceToFace,
     }
 }
 
@@ -54,6 +56,8 @@ pub fn kind_name(kind: SetKind) -> &'static str {
         SetKind::BackToBack => "back_to_back",
         SetKind::FaceToFace => "face_to_face",
         SetKind::Tandem => "tandem",
+        SetKind::TandemBackToBack => "tandem_back_to_back",
+        SetKind::TandemFaceToFace => "tandem_face_to_face",
     }
 }
 
@@ -107,7 +111,7 @@ pub(super) fn arrangement(
             key,
             None,
             format!(
-                "a {} arrangement takes no preload by itself (only back_to_back and face_to_face pairs do); apply the axial load with operating.force_x",
+                "a {} arrangement takes no preload by itself (only opposed sets do: back_to_back, face_to_face, tandem_back_to_back, tandem_face_to_face); apply the axial load with operating.force_x",
                 kind_name(kind)
             ),
         ));

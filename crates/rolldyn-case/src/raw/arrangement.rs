@@ -16,6 +16,12 @@ pub enum ArrangementKind {
     FaceToFace,
     /// A pair sharing one thrust direction (DT); no preload by itself.
     Tandem,
+    /// Three bearings, a tandem pair on the −x side and one opposed on
+    /// the +x side, apexes outward (TBT): the +x thrust shared by two.
+    TandemBackToBack,
+    /// Three bearings, a tandem pair on the +x side and one opposed on
+    /// the −x side, apexes inward (TFT).
+    TandemFaceToFace,
 }
 
 /// A matched set of the case's bearing on one rigid shaft
@@ -26,16 +32,17 @@ pub enum ArrangementKind {
 pub struct RawArrangement {
     /// The arrangement.
     pub kind: ArrangementKind,
-    /// Preload: the axial force each bearing carries at rest without
-    /// external load (a rigid, position preload: it changes with speed).
-    /// Opposed pairs only.
+    /// Preload: the axial force through the set at rest without external
+    /// load, which each bearing of a pair carries (a triple's single
+    /// bearing carries it, each of its tandem pair half); a rigid,
+    /// position preload: it changes with speed. Opposed sets only.
     pub preload: Option<Quantity<Force>>,
     /// Or the preload as the axial offset of each bearing's inner ring
     /// towards its loaded side (e.g. "5 um": the spacer difference shared
-    /// between the two). Opposed pairs only.
+    /// between the two). Opposed sets only.
     pub preload_displacement: Option<Quantity<Length>>,
-    /// Distance between the bearings' pitch planes (default: the bearing
-    /// width, i.e. the rings side by side).
+    /// Distance between neighbouring bearings' pitch planes (default: the
+    /// bearing width, i.e. the rings side by side).
     pub spacing: Option<Quantity<Length>>,
     /// A rotating unbalance on the shaft, mass × radius (e.g. "50 g.mm"):
     /// its force m_u e ω² turns with the shaft in `rolldyn run` (the

@@ -96,9 +96,9 @@ impl BearingSet {
         Ok(self.system.solve(&self.conditions, &self.options)?)
     }
 
-    /// The preload at the operating speed: bearing 0's axial load without
-    /// external load \[N\] (None without a preload: the set is then not
-    /// determined without load).
+    /// The preload at the operating speed: the axial force through the set
+    /// without external load \[N\] (`ShaftSystem::preload_of`; None without
+    /// a preload: the set is then not determined without load).
     pub fn preload_at_speed(&self) -> Result<Option<f64>, SimulationError> {
         if self.offset == 0.0 {
             return Ok(None);
@@ -108,11 +108,7 @@ impl BearingSet {
             ..self.conditions
         };
         let eq = self.system.solve(&unloaded, &self.options)?;
-        Ok(Some(
-            eq.bearings[0]
-                .as_ref()
-                .map_or(0.0, MountedBearing::axial_load),
-        ))
+        Ok(Some(self.system.preload_of(&eq)))
     }
 
     /// The set's coupled thermal steady state under the case's loads
@@ -137,10 +133,7 @@ impl BearingSet {
                     ..self.conditions
                 };
                 let eq = hot.system.solve(&unloaded, &self.options)?;
-                let hot_preload = eq.bearings[0]
-                    .as_ref()
-                    .map_or(0.0, MountedBearing::axial_load);
-                Some([cold_preload, hot_preload])
+                Some([cold_preload, hot.system.preload_of(&eq)])
             }
         };
         Ok(SetThermal {

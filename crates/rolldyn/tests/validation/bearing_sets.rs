@@ -13,7 +13,8 @@
 //! F_a(2s) (2^{3/2} F_p if the contact angle did not change; it does, and
 //! the lift-off ratio of the 7008C at 200 N is printed). Also: the pair's
 //! axial stiffness without external load is twice the bearing's at the
-//! preload; a tandem pair halves the thrust; equilibrium and stiffness
+//! preload; a tandem pair halves the thrust; tandem triples (TBT, TFT)
+//! against the same curve; equilibrium and stiffness
 //! under combined load; back-to-back is stiffer against moments than
 //! face-to-face.
 
@@ -100,6 +101,58 @@ fn back_to_back_preload_and_lift_off_follow_the_thrust_curve() {
             .unwrap()
             .unwrap();
         assert!(rel(df, lift_off) < 1e-9, "face-to-face {df} vs {lift_off}");
+    }
+}
+
+/// A triple with a tandem pair against one bearing (TBT, TFT) and the
+/// common offset s: without external load the shaft moves by x₀ until the
+/// pair's two loads balance the single one's, 2 F_a(s + x₀) = F_a(s − x₀) =
+/// F_p (the preload, the force through the set); at lift-off the single
+/// bearing is back at δ_a = 0, x = s, and the pair carries 2 F_a(2s).
+#[test]
+fn tandem_triples_preload_and_lift_off_follow_the_thrust_curve() {
+    let g = bearing_7008c();
+    let options = SolverOptions::default();
+    for kind in [SetKind::TandemBackToBack, SetKind::TandemFaceToFace] {
+        for preload in [100.0, 500.0] {
+            let set = ShaftSystem::matched(&solver(&g), kind, SPACING);
+            let offset = set
+                .offset_for_preload(preload, 0.0, RacewayControl::Outer, &options)
+                .unwrap();
+            let (single, _) = thrust_curve(&g, angle_for(&g, preload, 1));
+            let (tandem, _) = thrust_curve(&g, angle_for(&g, 0.5 * preload, 1));
+            let textbook_offset = 0.5 * (single + tandem);
+            assert!(
+                rel(offset, textbook_offset) < 1e-6,
+                "{kind:?} {preload} N: offset {offset} vs textbook {textbook_offset}"
+            );
+            let set = set.with_axial_offset(offset);
+            let eq = set.solve(&at_rest(Loads::default()), &options).unwrap();
+            assert!(rel(set.preload_of(&eq), preload) < 1e-8);
+            let loads: Vec<f64> = eq
+                .bearings
+                .iter()
+                .map(|b| b.as_ref().unwrap().reaction[0])
+                .collect();
+            let (pair, one) = match kind {
+                SetKind::TandemBackToBack => ([loads[0], loads[1]], loads[2]),
+                _ => ([loads[1], loads[2]], loads[0]),
+            };
+            assert!(rel(one, preload) < 1e-8, "{kind:?}: {loads:?}");
+            for l in pair {
+                assert!(rel(l, 0.5 * preload) < 1e-8, "{kind:?}: {loads:?}");
+            }
+            let lift_off = set
+                .lift_off_load(0.0, RacewayControl::Outer, &options)
+                .unwrap()
+                .unwrap();
+            let (_, pair_at_2s) = thrust_curve(&g, angle_for(&g, 2.0 * textbook_offset, 0));
+            assert!(
+                rel(lift_off, 2.0 * pair_at_2s) < 1e-5,
+                "{kind:?} {preload} N: lift-off {lift_off} vs textbook {}",
+                2.0 * pair_at_2s
+            );
+        }
     }
 }
 

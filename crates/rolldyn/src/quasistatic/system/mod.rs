@@ -332,20 +332,30 @@ pub enum SetKind {
     FaceToFace,
     /// A pair sharing the +x thrust (DT); takes no preload by itself.
     Tandem,
+    /// Three bearings: a tandem pair for the +x thrust on the −x side and
+    /// one opposed on the +x side, apexes outward (TBT): the +x thrust
+    /// shared by two bearings, the −x by one.
+    TandemBackToBack,
+    /// Three bearings: a tandem pair for the +x thrust on the +x side and
+    /// one opposed on the −x side, apexes inward (TFT).
+    TandemFaceToFace,
 }
 
 impl SetKind {
     /// Whether the set has bearings facing both ways (and so a preload and
     /// a lift-off load).
     pub fn opposed(self) -> bool {
-        matches!(self, Self::BackToBack | Self::FaceToFace)
+        matches!(
+            self,
+            Self::BackToBack | Self::FaceToFace | Self::TandemBackToBack | Self::TandemFaceToFace
+        )
     }
 }
 
 impl ShaftSystem {
-    /// A matched set of `solver`'s bearing, pitch planes `spacing` \[m\]
-    /// apart and symmetric about the shaft reference point, no axial
-    /// offset.
+    /// A matched set of `solver`'s bearing, neighbouring pitch planes
+    /// `spacing` \[m\] apart and symmetric about the shaft reference point
+    /// (a triple's middle bearing on it), no axial offset.
     pub fn matched(solver: &QuasiStaticSolver, kind: SetKind, spacing: f64) -> Self {
         let mount = |position, orientation| MountedBearing {
             solver: solver.clone(),
@@ -361,6 +371,16 @@ impl ShaftSystem {
             SetKind::BackToBack => vec![mount(-half, Forward), mount(half, Reversed)],
             SetKind::FaceToFace => vec![mount(half, Forward), mount(-half, Reversed)],
             SetKind::Tandem => vec![mount(-half, Forward), mount(half, Forward)],
+            SetKind::TandemBackToBack => vec![
+                mount(-spacing, Forward),
+                mount(0.0, Forward),
+                mount(spacing, Reversed),
+            ],
+            SetKind::TandemFaceToFace => vec![
+                mount(-spacing, Reversed),
+                mount(0.0, Forward),
+                mount(spacing, Forward),
+            ],
         };
         Self { bearings }
     }

@@ -9,6 +9,19 @@ use crate::operating::Loads;
 use crate::quasistatic::{Equilibrium, RacewayControl, SolverOptions};
 
 impl ShaftSystem {
+    /// The axial force through the set at `equilibrium` \[N\]: the sum of
+    /// the +x-thrust bearings' axial loads (a pair's: bearing 0's; a
+    /// triple's: its tandem pair's, which its single opposed bearing
+    /// carries back without external load). A matched set's preload.
+    pub fn preload_of(&self, equilibrium: &SystemEquilibrium) -> f64 {
+        self.bearings
+            .iter()
+            .zip(&equilibrium.bearings)
+            .filter(|(b, _)| b.orientation == Orientation::Forward)
+            .filter_map(|(_, eq)| eq.as_ref().map(MountedBearing::axial_load))
+            .sum()
+    }
+
     /// The same axial offset s on every bearing (a matched set's preload
     /// displacement).
     pub fn with_axial_offset(&self, offset: f64) -> Self {
@@ -19,9 +32,9 @@ impl ShaftSystem {
         set
     }
 
-    /// The axial offset s at which, with no external load, bearing 0
-    /// carries the axial load `preload` \[N\] at speed `inner_speed`
-    /// (bisection and secant on s, to 1e-9 of the preload).
+    /// The axial offset s at which, with no external load, the set carries
+    /// the axial force `preload` \[N\] ([`Self::preload_of`]) at speed
+    /// `inner_speed` (bisection and secant on s, to 1e-9 of the preload).
     pub fn offset_for_preload(
         &self,
         preload: f64,
@@ -55,9 +68,7 @@ impl ShaftSystem {
             };
             match solved {
                 Ok(eq) => {
-                    let load = eq.bearings[0]
-                        .as_ref()
-                        .map_or(0.0, MountedBearing::axial_load);
+                    let load = set.preload_of(&eq);
                     near = Some(eq);
                     load - preload
                 }
