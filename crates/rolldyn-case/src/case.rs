@@ -97,6 +97,8 @@ pub struct Case {
     /// A torque driving the inner ring in a dynamic run (None: the speed
     /// is prescribed).
     pub drive: Option<rolldyn::operating::TorqueDrive>,
+    /// A rotating unbalance on the inner ring in a dynamic run.
+    pub unbalance: Option<rolldyn::operating::RingUnbalance>,
     /// Spring–damper between inner ring and ground.
     pub inner_support: Support,
     /// Outer ring on a housing spring–damper, if given.
@@ -437,6 +439,7 @@ impl Case {
             loads: operating.loads,
             load_profile: operating.load_profile,
             drive: operating.drive,
+            unbalance: operating.unbalance,
             inner_support: rings.inner_support,
             outer_ring: rings.outer_ring,
             rolling_hysteresis,

@@ -452,6 +452,11 @@ pub struct RawOperating {
     /// Polar moment of inertia of everything turning with the inner ring
     /// (ring, shaft, rotor), for a drive torque.
     pub rotor_inertia: Option<Quantity<Inertia>>,
+    /// A rotating unbalance on the inner ring, mass × radius (e.g. "20
+    /// g.mm"): its force turns with the ring in a dynamic run.
+    pub unbalance: Option<Quantity<Unbalance>>,
+    /// Its direction on the ring at t = 0, from +y towards +z (default 0).
+    pub unbalance_phase: Option<Quantity<Angle>>,
 }
 
 /// One point of a drive-torque table.

@@ -145,6 +145,42 @@ impl TorqueDrive {
     }
 }
 
+/// A rotating unbalance on the inner ring (with its shaft): the force
+/// U ω² (cos(θ + φ), sin(θ + φ)) in (y, z), θ the ring's angle, turning
+/// with it (Den Hartog's rotating unbalance). An inner-race defect then
+/// meets the load at one place of the ring: no load-zone modulation at the
+/// shaft rate (Randall & Antoni 2011).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RingUnbalance {
+    /// Mass times eccentricity U = m_u e \[kg·m\].
+    pub amount: f64,
+    /// Its direction φ on the ring at θ = 0, from +y towards +z \[rad\].
+    pub phase: f64,
+}
+
+impl RingUnbalance {
+    /// The force (F_y, F_z) at ring speed `speed` and angle `angle` \[N\].
+    pub fn force(&self, speed: f64, angle: f64) -> [f64; 2] {
+        let (s, c) = (angle + self.phase).sin_cos();
+        let magnitude = self.amount * speed * speed;
+        [magnitude * c, magnitude * s]
+    }
+
+    /// Checks the amount (finite, ≥ 0) and the phase (finite).
+    pub fn validate(&self) -> Result<(), InvalidParameter> {
+        crate::error::require_non_negative("unbalance", self.amount)?;
+        if self.phase.is_finite() {
+            Ok(())
+        } else {
+            Err(InvalidParameter::new(
+                "unbalance_phase",
+                self.phase,
+                "must be finite",
+            ))
+        }
+    }
+}
+
 /// Loads on the inner ring in the global frame (x: bearing axis).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Loads {

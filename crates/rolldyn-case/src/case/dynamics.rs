@@ -152,6 +152,7 @@ impl Case {
             traction_integration: self.traction_integration,
             speed,
             drive: self.drive.clone(),
+            unbalance: self.unbalance,
             loads: self
                 .load_profile
                 .clone()

@@ -5,7 +5,7 @@
 use super::{Invalid, check_force, check_speed};
 use crate::raw::RawOperating;
 use crate::units::Quantity;
-use rolldyn::operating::{LoadProfile, Loads, SpeedProfile, TorqueDrive};
+use rolldyn::operating::{LoadProfile, Loads, RingUnbalance, SpeedProfile, TorqueDrive};
 
 /// The checked `[operating]` section.
 pub(super) struct Operating {
@@ -16,6 +16,7 @@ pub(super) struct Operating {
     pub(super) first_ball_azimuth: f64,
     pub(super) prescribed_displacement: [Option<f64>; 5],
     pub(super) drive: Option<TorqueDrive>,
+    pub(super) unbalance: Option<RingUnbalance>,
 }
 
 /// Checks `[operating]`.
@@ -138,7 +139,36 @@ pub(super) fn operating(op: &RawOperating) -> Result<Operating, Invalid> {
         first_ball_azimuth: op.first_ball_azimuth.as_ref().map_or(0.0, |a| a.si),
         prescribed_displacement: prescribed(op)?,
         drive: drive(op)?,
+        unbalance: unbalance(op)?,
     })
+}
+
+/// The rotating unbalance of `[operating]`, if any.
+fn unbalance(op: &RawOperating) -> Result<Option<RingUnbalance>, Invalid> {
+    let Some(amount) = &op.unbalance else {
+        if let Some(phase) = &op.unbalance_phase {
+            return Err(Invalid::new(
+                "operating.unbalance_phase",
+                Some(phase.to_string()),
+                "needs operating.unbalance",
+            ));
+        }
+        return Ok(None);
+    };
+    if !(0.0..=super::arrangement::MAX_UNBALANCE).contains(&amount.si) {
+        return Err(Invalid::new(
+            "operating.unbalance",
+            Some(amount.to_string()),
+            format!(
+                "must lie in [0, {}] kg·m",
+                super::arrangement::MAX_UNBALANCE
+            ),
+        ));
+    }
+    Ok(Some(RingUnbalance {
+        amount: amount.si,
+        phase: op.unbalance_phase.as_ref().map_or(0.0, |a| a.si),
+    }))
 }
 
 /// The torque drive of `[operating]`, if any: a constant torque or a

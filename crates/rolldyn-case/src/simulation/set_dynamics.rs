@@ -58,6 +58,12 @@ impl SetSimulation {
         if case.sensor.is_some() {
             return refuse("sensor", "the sensor chain");
         }
+        if case.unbalance.is_some() {
+            return refuse(
+                "operating.unbalance",
+                "an unbalance on one bearing's ring (a set's shaft takes arrangement.unbalance)",
+            );
+        }
         if case.start != crate::raw::StartChoice::JonesHarris {
             return refuse(
                 "solver.start",

@@ -82,6 +82,9 @@ impl Elements {
                 }
             }
         }
+        if let Some(unbalance) = &params.unbalance {
+            unbalance.validate()?;
+        }
         if let Some(ring) = &params.sliding_outer_ring {
             ring.validate()?;
             if params.film_in_approach {

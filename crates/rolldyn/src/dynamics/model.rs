@@ -280,9 +280,16 @@ impl BearingModel {
         if let Some(d) = sink.as_deref_mut() {
             d.support_damping = p.inner_support.dissipation(&ring_velocity);
         }
+        // A rotating unbalance: not a potential (it turns), its work
+        // accumulated.
+        let [fy, fz] = p.unbalance.map_or([0.0; 2], |u| {
+            let spin = self.elements.spin(t, y);
+            u.force(spin.speed, spin.angle)
+        });
+        external_power += fy * y[r + 6] + fz * y[r + 7];
         dy[dr + 5] = (ring_force.x + loads.force[0]) / mi;
-        dy[dr + 6] = (ring_force.y + loads.force[1]) / mi;
-        dy[dr + 7] = (ring_force.z + loads.force[2]) / mi - g;
+        dy[dr + 6] = (ring_force.y + loads.force[1] + fy) / mi;
+        dy[dr + 7] = (ring_force.z + loads.force[2] + fz) / mi - g;
         dy[dr + 8] = (ring_moment.y + loads.moment[0]) / p.inner_ring_tilt_inertia;
         dy[dr + 9] = (ring_moment.z + loads.moment[1]) / p.inner_ring_tilt_inertia;
         if p.planar {

@@ -9,7 +9,7 @@ use crate::contact::NormalForceLaw;
 use crate::error::InvalidParameter;
 use crate::geometry::RingKind;
 use crate::lubrication::drag::DragParameters;
-use crate::operating::{LoadProfile, SpeedProfile, TorqueDrive};
+use crate::operating::{LoadProfile, RingUnbalance, SpeedProfile, TorqueDrive};
 use crate::seals::SealFriction;
 use crate::surface::SurfaceModel;
 use crate::traction::TractionModel;
@@ -40,6 +40,8 @@ pub struct DynamicsParameters {
     pub drive: Option<TorqueDrive>,
     /// Loads on the inner ring (constant or tabulated in time).
     pub loads: LoadProfile,
+    /// A rotating unbalance on the inner ring (None: none).
+    pub unbalance: Option<RingUnbalance>,
     /// Spring–damper between the inner ring and ground (zero: free).
     pub inner_support: Support,
     /// Outer ring on a housing spring–damper (None: fixed).
@@ -99,6 +101,7 @@ impl DynamicsParameters {
             speed: SpeedProfile::Constant(0.0),
             drive: None,
             loads: LoadProfile::Constant(crate::operating::Loads::default()),
+            unbalance: None,
             inner_support: Support::default(),
             outer_ring: None,
             sliding_outer_ring: None,

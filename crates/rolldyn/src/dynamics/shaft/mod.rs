@@ -226,6 +226,8 @@ impl ShaftDynamics {
                 p.drive = Some(TorqueDrive::constant(1.0, 0.0));
             }
             p.loads = LoadProfile::Constant(Loads::default());
+            // The shaft carries the loads, a rotating unbalance among them.
+            p.unbalance = None;
             p.inner_support = super::Support::default();
             let zero = mount.ring_displacement(&[0.0; 5]);
             let mut transform: [[f64; 5]; 5] = std::array::from_fn(|r| {
