@@ -20,7 +20,10 @@
 //! J the rotor's polar inertia and M_x,i bearing i's moment about the
 //! axis, the shaft's angle and speed then two more states after its work
 //! (each bearing's model turns a unit inertia without torque, so that its
-//! computed ring acceleration is M_x,i). A rotating unbalance U = m_u e at x_u adds
+//! computed ring acceleration is M_x,i). A floating bearing's inner ring
+//! follows the shaft axially as any other's while its outer ring slides in
+//! its bore (`dynamics::SlidingRing`, states of its own model). A rotating
+//! unbalance U = m_u e at x_u adds
 //! U ω² (cos ωt, sin ωt) along (y, z) at x_u, with the moments of that
 //! force about the reference point (θ_y: −x_u F_z, θ_z: x_u F_y); its work
 //! is accumulated in one more shaft state for the energy balance, as is
