@@ -7,29 +7,9 @@
 
 mod common;
 
-use common::{SHAFT, pair, rolldyn, stderr, temp_dir};
-use serde_json::Value;
+use common::{SHAFT, pair, rolldyn, run_summary as run, stderr, temp_dir};
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
-
-/// Runs `case` (None: the built-in default) for `duration` with `sets`
-/// and returns its summary.
-fn run(tag: &str, case: Option<&str>, duration: &str, sets: &[&str]) -> Value {
-    let dir = temp_dir(tag);
-    let mut args = vec!["run"];
-    if case.is_some() {
-        args.push("-");
-    }
-    args.extend(["--duration", duration, "-o", dir.to_str().unwrap()]);
-    for s in sets {
-        args.extend(["--set", s]);
-    }
-    let o = rolldyn(&args, case);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
-    std::fs::remove_dir_all(&dir).ok();
-    serde_json::from_str(&text).unwrap()
-}
 
 /// A run-down (no torque) of the default case from 10 000 rpm on a rotor
 /// of 1e-4 kg·m²: the speed falls by the mean friction torque over the

@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{json, pair, rolldyn, stderr, temp_dir};
+use common::{json, pair, run_summary};
 
 /// `rolldyn quasistatic` of a 7008C TBT set with 300 N of preload at
 /// 10 000 rpm and no external load: three bearings, the single one
@@ -42,21 +42,7 @@ fn a_tandem_back_to_back_triple_shares_its_preload() {
 #[test]
 fn a_tandem_face_to_face_triple_runs() {
     let case = pair("kind = \"tandem_face_to_face\"\npreload = \"300 N\"");
-    let dir = temp_dir("triple-run");
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--duration",
-            "3 ms",
-            "-o",
-            dir.to_str().unwrap(),
-        ],
-        Some(&case),
-    );
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let v = run_summary("triple-run", Some(&case), "3 ms", &[]);
     assert_eq!(v["kind"], "tandem_face_to_face");
     let b = v["bearings"].as_array().unwrap();
     assert_eq!(b.len(), 3);
@@ -65,5 +51,4 @@ fn a_tandem_face_to_face_triple_runs() {
     let thrust = load(1) + load(2) - load(0);
     assert!((thrust - 200.0).abs() < 0.01 * 200.0, "{thrust} N");
     assert!(v["energy_balance_relative_error"].as_f64().unwrap().abs() < 1e-3);
-    std::fs::remove_dir_all(&dir).ok();
 }

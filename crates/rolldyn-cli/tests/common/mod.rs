@@ -75,6 +75,25 @@ pub fn series_bytes(run: &std::path::Path) -> Vec<u8> {
     bytes
 }
 
+/// Runs `case` (None: the built-in default) for `duration` with `sets`
+/// and returns its summary (the run directory removed).
+pub fn run_summary(tag: &str, case: Option<&str>, duration: &str, sets: &[&str]) -> Value {
+    let dir = temp_dir(tag);
+    let mut args = vec!["run"];
+    if case.is_some() {
+        args.push("-");
+    }
+    args.extend(["--duration", duration, "-o", dir.to_str().unwrap()]);
+    for s in sets {
+        args.extend(["--set", s]);
+    }
+    let o = rolldyn(&args, case);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    serde_json::from_str(&text).unwrap()
+}
+
 /// The default case (7008C) as a matched set.
 pub fn pair(arrangement: &str) -> String {
     let o = rolldyn(&["new", "--preset", "7008C"], None);
