@@ -21,9 +21,10 @@
 //! −Σ dF·s. Along a strip X − P = r₀ + t r₁ and n_X is constant, so the
 //! tangential slip is s₀ + t d. Every law's stress is τ = −g s_t with a
 //! ratio g ≥ 0, and with r₀ = ξ e_⊥ − drop n the couple about P is
-//! e_⊥ × Σ ξ dF − n × Σ drop dF + r₁ × Σ t dF: a cell costs its ratio and
-//! a few lane-wise sums, the cells packed [`BATCH`] at a time across strip
-//! ends so that the loops vectorize (docs/dynamics.md).
+//! e_⊥ × Σ ξ dF − n × Σ drop dF + r₁ × Σ t dF. The cells are laid out
+//! [`BATCH`] to a batch with each lane on one strip, so a cell costs its
+//! ratio and four lane-wise sums (Σ dF, Σ t dF, Σ dF·s), and ξ and drop
+//! multiply each lane's sum once (docs/performance.md).
 //!
 //! `centre` evaluates one point at P with the mean pressure Q/(πab) over the
 //! area πab. It is exact for Coulomb friction at uniform slip; it ignores
@@ -125,28 +126,47 @@ pub struct TractionResult {
 /// [`integrate`] evaluates a law's pressure term (the EHL viscosity) once.
 /// These depend on the grid only; [`integrate`] scales them by the
 /// contact's semi-axes and load.
+///
+/// The cells are laid out for the lanes ([`StripGroup`]): each lane stays
+/// on one strip, so what is constant along a strip (its ξ, drop and
+/// slip line) is set once per lane and the strip moments need no per-cell
+/// product.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TractionGrid {
     method: TractionIntegration,
     /// (s, w) per strip.
     strips: Vec<(f64, f64)>,
-    /// Per cell, strip by strip: its position t, unit shape and level.
-    cells: Vec<GridCell>,
+    /// The cells in lane order.
+    groups: Vec<StripGroup>,
     /// The distinct unit shapes.
     levels: Vec<f64>,
     /// Σ shape · w over the cells.
     shape_sum: f64,
 }
 
-/// One cell of a [`TractionGrid`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct GridCell {
-    /// Position along the strip, in units of b.
-    t: f64,
-    /// Unit Hertz shape √(1 − s² − t²).
-    shape: f64,
+/// Consecutive strips `first..first + len` spread over the lanes: lane k
+/// is on strip `first + k % len`, and a batch holds m = ⌊BATCH/len⌋ of
+/// their cells' columns (lane k in column `c₀ + k / len`). Lanes beyond
+/// `len · m`, and columns beyond the strip's cells, are empty (weight 0).
+#[derive(Debug, Clone, PartialEq)]
+struct StripGroup {
+    first: usize,
+    len: usize,
+    batches: Vec<CellBatch>,
+}
+
+/// [`BATCH`] cells of a [`StripGroup`].
+#[derive(Debug, Clone, PartialEq)]
+struct CellBatch {
+    /// Position along the strip, in units of b (0 where empty).
+    t: Cells,
+    /// Unit Hertz shape √(1 − s² − t²) (0 where empty).
+    shape: Cells,
+    /// The strip's half-width w (0 where empty): the cell's area is
+    /// w times the contact's cell size.
+    weight: Cells,
     /// Index of `shape` in the grid's levels.
-    level: usize,
+    level: [u32; BATCH],
 }
 
 /// Most pressure levels [`integrate`] holds on the stack (12 × 6 has 18,
@@ -163,34 +183,85 @@ fn symmetric_midpoints(n: usize) -> impl Iterator<Item = f64> {
     })
 }
 
+/// Strips per [`StripGroup`] for a grid of `across` strips of `along`
+/// cells: the fewest batches, and of those the fewest groups (12 × 6:
+/// one group of 12 strips, 3 full batches).
+fn group_len(across: usize, along: usize) -> usize {
+    let batches = |len: usize| -> usize {
+        (0..across)
+            .step_by(len)
+            .map(|first| along.div_ceil(BATCH / len.min(across - first)))
+            .sum()
+    };
+    (1..=across.min(BATCH))
+        .rev()
+        .min_by_key(|&len| batches(len))
+        .unwrap_or(1)
+}
+
 impl TractionGrid {
     /// Prepares the grid of `method` (nothing for the contact centre).
     pub fn new(method: TractionIntegration) -> Self {
         let mut grid = Self {
             method,
             strips: Vec::new(),
-            cells: Vec::new(),
+            groups: Vec::new(),
             levels: Vec::new(),
             shape_sum: 0.0,
         };
-        if let TractionIntegration::Grid { across, along } = method {
-            let (across, along) = (across.max(1), along.max(1));
-            let mut level_of = std::collections::HashMap::new();
-            for s in symmetric_midpoints(across) {
-                let w = (1.0 - s * s).sqrt();
-                grid.strips.push((s, w));
-                for u in symmetric_midpoints(along) {
-                    let t = w * u;
-                    let shape = (1.0 - s * s - t * t).max(0.0).sqrt();
-                    let next = grid.levels.len();
-                    let level = *level_of.entry(shape.to_bits()).or_insert(next);
-                    if level == next {
-                        grid.levels.push(shape);
-                    }
-                    grid.cells.push(GridCell { t, shape, level });
-                    grid.shape_sum += shape * w;
+        let TractionIntegration::Grid { across, along } = method else {
+            return grid;
+        };
+        let (across, along) = (across.max(1), along.max(1));
+        let mut level_of = std::collections::HashMap::new();
+        // Per cell, strip by strip: (t, shape, level).
+        let mut cells = Vec::with_capacity(across * along);
+        for s in symmetric_midpoints(across) {
+            let w = (1.0 - s * s).sqrt();
+            grid.strips.push((s, w));
+            for u in symmetric_midpoints(along) {
+                let t = w * u;
+                let shape = (1.0 - s * s - t * t).max(0.0).sqrt();
+                let next = grid.levels.len();
+                let level = *level_of.entry(shape.to_bits()).or_insert(next);
+                if level == next {
+                    grid.levels.push(shape);
                 }
+                cells.push((t, shape, level));
+                grid.shape_sum += shape * w;
             }
+        }
+        let group = group_len(across, along);
+        for first in (0..across).step_by(group) {
+            let len = group.min(across - first);
+            let columns = BATCH / len;
+            let batches = (0..along)
+                .step_by(columns)
+                .map(|first_column| {
+                    let mut batch = CellBatch {
+                        t: [0.0; BATCH],
+                        shape: [0.0; BATCH],
+                        weight: [0.0; BATCH],
+                        level: [0; BATCH],
+                    };
+                    for k in 0..len * columns {
+                        let (strip, column) = (first + k % len, first_column + k / len);
+                        if column < along {
+                            let (t, shape, level) = cells[strip * along + column];
+                            batch.t[k] = t;
+                            batch.shape[k] = shape;
+                            batch.weight[k] = grid.strips[strip].1;
+                            batch.level[k] = level as u32;
+                        }
+                    }
+                    batch
+                })
+                .collect();
+            grid.groups.push(StripGroup {
+                first,
+                len,
+                batches,
+            });
         }
         grid
     }
@@ -276,66 +347,61 @@ fn integrate_baseline<L: TractionLaw>(
                     *term = law.pressure_term(p_scale * shape);
                 }
             }
-            let mut pack = Pack::default();
-            let mut sums = Sums::default();
-            for (&(s, w), cells) in grid.strips.iter().zip(grid.cells.chunks(along)) {
-                let xi = a * s;
-                let (sin_t, drop) = if patch.deformed_radius.is_finite() {
-                    let r = patch.deformed_radius;
-                    let st = (xi / r).clamp(-1.0, 1.0);
-                    (st, r - (r * r - xi * xi).max(0.0).sqrt())
-                } else {
-                    (0.0, 0.0)
-                };
-                let cos_t = (1.0 - sin_t * sin_t).sqrt();
-                let local_normal = cos_t * n + sin_t * e_across;
-                let tangential = |v: Vector3<f64>| v - v.dot(&local_normal) * local_normal;
-                // Along the strip X − P = r₀ + t r₁ (r₀ = ξ e_⊥ − drop n,
-                // r₁ = b e_roll), so the tangential slip is linear in t:
-                // s_t = s₀ + t d.
-                let r0 = xi * e_across - drop * n;
-                let s0 = tangential(slip_at_point + relative_spin.cross(&r0));
-                let d = tangential(relative_spin.cross(&(b * e_roll)));
-                // Each cell of the strip has area `cell · w`.
-                let area = cell * w;
-                for c in cells {
-                    let k = pack.len;
-                    pack.pressure[k] = p_scale * c.shape;
-                    pack.term[k] = if shared {
-                        level_terms[c.level]
+            let terms = if shared { Some(&level_terms) } else { None };
+            // Σ dF, Σ ξ dF, Σ drop dF, Σ t dF (dF = −area g s_t).
+            let mut totals = [Vector3::zeros(); 4];
+            let mut power = 0.0;
+            for group in &grid.groups {
+                let mut lanes = StripLanes::default();
+                for i in 0..group.len {
+                    let (s, _) = grid.strips[group.first + i];
+                    let xi = a * s;
+                    let (sin_t, drop) = if patch.deformed_radius.is_finite() {
+                        let r = patch.deformed_radius;
+                        let st = (xi / r).clamp(-1.0, 1.0);
+                        (st, r - (r * r - xi * xi).max(0.0).sqrt())
                     } else {
-                        law.pressure_term(pack.pressure[k])
+                        (0.0, 0.0)
                     };
-                    for i in 0..3 {
-                        pack.slip[i][k] = s0[i] + c.t * d[i];
-                    }
-                    pack.t[k] = c.t;
-                    pack.xi[k] = xi;
-                    pack.drop[k] = drop;
-                    pack.area[k] = area;
-                    pack.len += 1;
-                    if pack.len == BATCH {
-                        sums.add(law, &pack, conditions);
-                        pack.len = 0;
+                    let cos_t = (1.0 - sin_t * sin_t).sqrt();
+                    let local_normal = cos_t * n + sin_t * e_across;
+                    let tangential = |v: Vector3<f64>| v - v.dot(&local_normal) * local_normal;
+                    // Along the strip X − P = r₀ + t r₁ (r₀ = ξ e_⊥ − drop n,
+                    // r₁ = b e_roll), so the tangential slip is linear in t:
+                    // s_t = s₀ + t d.
+                    let r0 = xi * e_across - drop * n;
+                    let s0 = tangential(slip_at_point + relative_spin.cross(&r0));
+                    let d = tangential(relative_spin.cross(&(b * e_roll)));
+                    for k in (i..BATCH).step_by(group.len) {
+                        lanes.xi[k] = xi;
+                        lanes.drop[k] = drop;
+                        for c in 0..3 {
+                            lanes.slip[c][k] = s0[c];
+                            lanes.slope[c][k] = d[c];
+                        }
                     }
                 }
+                let mut sums = Sums::default();
+                for batch in &group.batches {
+                    sums.add(law, batch, &lanes, (p_scale, cell), terms, conditions);
+                }
+                // The lanes' sums in lane order; ξ and drop are the lanes'.
+                for k in 0..BATCH {
+                    let force = Vector3::new(sums.force[0][k], sums.force[1][k], sums.force[2][k]);
+                    totals[0] += force;
+                    totals[1] += lanes.xi[k] * force;
+                    totals[2] += lanes.drop[k] * force;
+                    totals[3] += Vector3::new(sums.along[0][k], sums.along[1][k], sums.along[2][k]);
+                    power += sums.power[k];
+                }
             }
-            if pack.len > 0 {
-                pack.clear_tail();
-                sums.add(law, &pack, conditions);
-            }
-            // dF = −area g s_t per cell; the couple about P is
-            // Σ (r₀ + t r₁) × dF = e_⊥ × Σ ξ dF − n × Σ drop dF + r₁ × Σ t dF.
-            // (A closure over `[Cells; 3]::map` was not inlined and cost
-            // 5 % of a run.)
-            let lane_sum = |l: &Cells| l.iter().fold(0.0, |acc, v| acc + v);
-            let total =
-                |l: &[Cells; 3]| -Vector3::new(lane_sum(&l[0]), lane_sum(&l[1]), lane_sum(&l[2]));
-            out.force = total(&sums.force);
-            out.couple = e_across.cross(&total(&sums.across_moment))
-                - n.cross(&total(&sums.drop_moment))
-                + (b * e_roll).cross(&total(&sums.along_moment));
-            out.dissipation = lane_sum(&sums.power);
+            // The couple about P is Σ (r₀ + t r₁) × dF
+            // = e_⊥ × Σ ξ dF − n × Σ drop dF + r₁ × Σ t dF.
+            let [force, across_moment, drop_moment, along_moment] = totals.map(|v| -v);
+            out.force = force;
+            out.couple = e_across.cross(&across_moment) - n.cross(&drop_moment)
+                + (b * e_roll).cross(&along_moment);
+            out.dissipation = power;
         }
     }
     // Σ (X − q) × dF = Σ (X − P) × dF + (P − q) × Σ dF.
@@ -343,76 +409,77 @@ fn integrate_baseline<L: TractionLaw>(
     out
 }
 
-/// Cells packed for the law, [`BATCH`] at a time across strip ends:
-/// pressure, pressure term, tangential slip, position t along the strip,
-/// and the strip's ξ, drop and cell area.
+/// What a [`StripGroup`]'s lanes take from their strips: ξ, drop, and
+/// the tangential slip s₀ + t d along the strip.
 #[derive(Default)]
-struct Pack {
-    len: usize,
-    pressure: Cells,
-    term: Cells,
-    slip: [Cells; 3],
-    t: Cells,
+struct StripLanes {
     xi: Cells,
     drop: Cells,
-    area: Cells,
+    slip: [Cells; 3],
+    slope: [Cells; 3],
 }
 
-impl Pack {
-    /// Empties the lanes from `len` on: no pressure, no slip, no area, so
-    /// they give g = 0 and add nothing.
-    #[inline(always)]
-    fn clear_tail(&mut self) {
-        let tail = self.len..BATCH;
-        let [x, y, z] = &mut self.slip;
-        for lanes in [
-            &mut self.pressure,
-            &mut self.term,
-            x,
-            y,
-            z,
-            &mut self.t,
-            &mut self.xi,
-            &mut self.drop,
-            &mut self.area,
-        ] {
-            lanes[tail.clone()].fill(0.0);
-        }
-    }
-}
-
-/// Lane-wise sums over the packs (each lane adds its cells in grid order,
-/// the lanes are added at the end: a fixed order, so the same bits on
-/// every build): with w = area · g, Σ w s_t, Σ ξ w s_t, Σ drop w s_t,
+/// Lane-wise sums over a group's batches (each lane adds its cells in
+/// column order; the lanes are added at the end in lane order: a fixed
+/// order, so the same bits on every build): with w = area · g, Σ w s_t,
 /// Σ t w s_t and Σ w |s_t|².
 #[derive(Default)]
 struct Sums {
     force: [Cells; 3],
-    across_moment: [Cells; 3],
-    drop_moment: [Cells; 3],
-    along_moment: [Cells; 3],
+    along: [Cells; 3],
     power: Cells,
 }
 
 impl Sums {
-    /// The law's ratios for `pack`'s cells, added lane by lane.
+    /// The law's ratios for `batch`'s cells, added lane by lane. The cell
+    /// pressure is `p_scale` times its shape and its area `cell` times its
+    /// weight; the pressure terms per level from `terms`, or the law's own.
     #[inline(always)]
-    fn add<L: TractionLaw>(&mut self, law: &L, pack: &Pack, conditions: &ContactConditions) {
-        let [x, y, z] = &pack.slip;
+    fn add<L: TractionLaw>(
+        &mut self,
+        law: &L,
+        batch: &CellBatch,
+        lanes: &StripLanes,
+        (p_scale, cell): (f64, f64),
+        terms: Option<&[f64; MAX_LEVELS]>,
+        conditions: &ContactConditions,
+    ) {
+        let mut pressure = [0.0; BATCH];
+        for (p, shape) in pressure.iter_mut().zip(&batch.shape) {
+            *p = p_scale * shape;
+        }
+        let mut term = [0.0; BATCH];
+        match terms {
+            Some(levels) => {
+                for (value, &level) in term.iter_mut().zip(&batch.level) {
+                    *value = levels[level as usize];
+                }
+            }
+            None => {
+                for (value, &p) in term.iter_mut().zip(&pressure) {
+                    *value = law.pressure_term(p);
+                }
+            }
+        }
+        let mut slip = [[0.0; BATCH]; 3];
+        for (c, lane) in slip.iter_mut().enumerate() {
+            for k in 0..BATCH {
+                lane[k] = lanes.slip[c][k] + batch.t[k] * lanes.slope[c][k];
+            }
+        }
+        let [x, y, z] = &slip;
         let mut speed = [0.0; BATCH];
         for (k, v) in speed.iter_mut().enumerate() {
             *v = (x[k] * x[k] + y[k] * y[k] + z[k] * z[k]).sqrt();
         }
         let mut ratio = [0.0; BATCH];
-        law.stress_ratios(&pack.pressure, &pack.term, &speed, conditions, &mut ratio);
+        law.stress_ratios(&pressure, &term, &speed, conditions, &mut ratio);
         for k in 0..BATCH {
-            let w = pack.area[k] * ratio[k];
-            for i in 0..3 {
-                let f = w * pack.slip[i][k];
-                self.force[i][k] += f;
-                self.across_moment[i][k] += pack.xi[k] * f;
-                self.drop_moment[i][k] += pack.drop[k] * f;
-                self.along_moment[i][k] += pack.t[k] * f;
+            let w = (cell * batch.weight[k]) * ratio[k];
+            for c in 0..3 {
+                let f = w * slip[c][k];
+                self.force[c][k] += f;
+                self.along[c][k] += batch.t[k] * f;
             }
             self.power[k] += w * (speed[k] * speed[k]);
         }
@@ -647,8 +714,15 @@ mod tests {
         for (across, along, levels) in [(12, 6, 18), (7, 5, 12)] {
             let grid = TractionGrid::new(TractionIntegration::Grid { across, along });
             assert_eq!(grid.levels.len(), levels);
-            for c in &grid.cells {
-                assert_eq!(grid.levels[c.level].to_bits(), c.shape.to_bits());
+            for group in &grid.groups {
+                for batch in &group.batches {
+                    for k in 0..BATCH {
+                        let level = grid.levels[batch.level[k] as usize];
+                        if batch.weight[k] > 0.0 {
+                            assert_eq!(level.to_bits(), batch.shape[k].to_bits());
+                        }
+                    }
+                }
             }
         }
     }
