@@ -435,6 +435,7 @@ impl Sums {
     /// pressure is `p_scale` times its shape and its area `cell` times its
     /// weight; the pressure terms per level from `terms`, or the law's own.
     #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // lanes of several arrays at once
     fn add<L: TractionLaw>(
         &mut self,
         law: &L,
