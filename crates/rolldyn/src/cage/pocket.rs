@@ -147,7 +147,7 @@ impl PocketLaw {
         let delta = (offset - half_clearance).max(0.0);
         match *self {
             Self::Linear { stiffness, .. } => 0.5 * stiffness * delta * delta,
-            Self::Hertz { stiffness, .. } => 0.4 * stiffness * delta.powf(2.5),
+            Self::Hertz { stiffness, .. } => 0.4 * stiffness * delta * delta * delta.sqrt(),
             Self::GuptaFilm {
                 wall_force,
                 stiffness,
@@ -156,7 +156,7 @@ impl PocketLaw {
                 let inside = offset.min(half_clearance);
                 0.5 * wall_force * inside * inside / half_clearance
                     + wall_force * delta
-                    + 0.4 * stiffness * delta.powf(2.5)
+                    + 0.4 * stiffness * delta * delta * delta.sqrt()
             }
         }
     }

@@ -66,15 +66,12 @@ impl BearingModel {
                 if self.elements.layout.film_work {
                     e.elastic += self.elements.film_contact_energy(ring, table, &ball);
                 } else if let Some((c, _)) = self.elements.race_geometry(ring, &ball) {
-                    e.elastic += 0.4 * table.stiffness(c.contact_angle) * c.penetration.powf(2.5);
+                    let delta = c.penetration;
+                    e.elastic +=
+                        0.4 * table.stiffness(c.contact_angle) * delta * delta * delta.sqrt();
                 }
             }
-            if let Some(pc) = self.elements.pocket_contact(j, y, &ball) {
-                let cage = &self.elements.params.cage;
-                e.elastic += cage
-                    .pocket_law
-                    .energy(pc.offset, 0.5 * cage.pocket_clearance);
-            }
+            e.elastic += self.elements.pocket_energy(j, y, &ball);
         }
         let r = l.ring();
         let p = &self.elements.params;

@@ -21,6 +21,8 @@ pub(super) struct BallMotion {
     pub(super) omega: Vector3<f64>,
     /// Orbital rate φ̇ of its azimuth frame \[rad/s\].
     pub(super) orbital_rate: f64,
+    /// Orbital angle φ \[rad\] and its cosine and sine.
+    pub(super) azimuth: (f64, f64, f64),
 }
 
 /// Kinematic state of a ring for contact evaluation.
@@ -181,6 +183,7 @@ impl Elements {
                 velocity: v,
                 omega: w,
                 orbital_rate: y[b + 5],
+                azimuth: (y[b + 2], c, s),
             },
             [ex, er, et],
         )

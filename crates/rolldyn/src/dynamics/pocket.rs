@@ -14,8 +14,6 @@ use nalgebra::Vector3;
 
 /// One evaluated ball–pocket contact.
 pub(super) struct PocketContact {
-    /// Ball-centre offset from the pocket centre \[m\].
-    pub(super) offset: f64,
     /// Force on the ball \[N\].
     pub(super) force: Vector3<f64>,
     /// Its normal part (the pocket law's force, elastic and damping, plus
@@ -33,6 +31,37 @@ pub(super) struct PocketContact {
 }
 
 impl Elements {
+    /// Offset of ball j's centre from its pocket's centre (the pocket's
+    /// axis, or its centre point for a spherical pocket), and that offset
+    /// as a vector \[m\]. The pocket's direction is the ball's azimuth
+    /// turned by the small angle Δ between them ([`turn`]).
+    fn pocket_offset(&self, j: usize, y: &[f64], ball: &BallMotion) -> (f64, Vector3<f64>) {
+        let cage = &self.params.cage;
+        let c = self.layout.cage();
+        let centre = Vector3::new(0.0, y[c], y[c + 1]);
+        let (phi, cos_phi, sin_phi) = ball.azimuth;
+        let pitch = std::f64::consts::TAU * j as f64 / self.layout.balls as f64;
+        let (cos_delta, sin_delta) = turn((y[c + 2] - phi) + pitch);
+        let axis = Vector3::new(
+            0.0,
+            cos_delta * cos_phi - sin_delta * sin_phi,
+            cos_delta * sin_phi + sin_delta * cos_phi,
+        );
+        let rel = ball.centre - (centre + cage.pitch_radius * axis);
+        let perp = match cage.pocket_shape {
+            PocketShape::Cylindrical => rel - rel.dot(&axis) * axis,
+            PocketShape::Spherical => rel,
+        };
+        (perp.norm(), perp)
+    }
+
+    /// Elastic energy of ball j's pocket contact \[J\].
+    pub(super) fn pocket_energy(&self, j: usize, y: &[f64], ball: &BallMotion) -> f64 {
+        let cage = &self.params.cage;
+        let (offset, _) = self.pocket_offset(j, y, ball);
+        cage.pocket_law.energy(offset, 0.5 * cage.pocket_clearance)
+    }
+
     /// Pocket contact of ball j, if closed.
     pub(super) fn pocket_contact(
         &self,
@@ -46,15 +75,7 @@ impl Elements {
         let centre = Vector3::new(0.0, y[c], y[c + 1]);
         let velocity = Vector3::new(0.0, y[c + 3], y[c + 4]);
         let spin = y[c + 5] * Vector3::x();
-        let angle = y[c + 2] + std::f64::consts::TAU * j as f64 / self.layout.balls as f64;
-        let axis = Vector3::new(0.0, angle.cos(), angle.sin());
-        let pocket = centre + cage.pitch_radius * axis;
-        let rel = q - pocket;
-        let perp = match cage.pocket_shape {
-            PocketShape::Cylindrical => rel - rel.dot(&axis) * axis,
-            PocketShape::Spherical => rel,
-        };
-        let offset = perp.norm();
+        let (offset, perp) = self.pocket_offset(j, y, ball);
         let half_clearance = 0.5 * cage.pocket_clearance;
         let squeezed = cage.pocket_squeeze.is_some() && offset > 0.0;
         if !squeezed && !cage.pocket_law.acts(offset, half_clearance) {
@@ -78,9 +99,57 @@ impl Elements {
             normal_force: normal,
             moment: arm.cross(&friction),
             point,
-            offset,
             dissipation: (normal - law.elastic) * rate - friction.dot(&slip_t),
             friction_power: -friction.dot(&slip_t),
         })
+    }
+}
+
+/// cos Δ and sin Δ: by their Taylor series (Horner) for |Δ| ≤ 1/4, where
+/// the first terms left out (Δ¹⁴/14!, Δ¹⁵/15!) are below 1e-19, else by
+/// the library. A ball sits within a pocket clearance of its pocket's
+/// angle (Δ of order 10⁻²), so the library's call is saved on every
+/// evaluation.
+fn turn(delta: f64) -> (f64, f64) {
+    /// (−1)ᵏ/(2k)! and (−1)ᵏ/(2k+1)!, k = 6 down to 1.
+    const COS: [f64; 6] = [
+        1.0 / 479_001_600.0,
+        -1.0 / 3_628_800.0,
+        1.0 / 40_320.0,
+        -1.0 / 720.0,
+        1.0 / 24.0,
+        -1.0 / 2.0,
+    ];
+    const SIN: [f64; 6] = [
+        1.0 / 6_227_020_800.0,
+        -1.0 / 39_916_800.0,
+        1.0 / 362_880.0,
+        -1.0 / 5_040.0,
+        1.0 / 120.0,
+        -1.0 / 6.0,
+    ];
+    if delta.abs() > 0.25 {
+        return (delta.cos(), delta.sin());
+    }
+    let d2 = delta * delta;
+    let horner = |coefficients: &[f64; 6]| coefficients.iter().fold(0.0, |acc, c| acc * d2 + c);
+    (1.0 + d2 * horner(&COS), delta + delta * d2 * horner(&SIN))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::turn;
+
+    #[test]
+    fn turn_is_cos_and_sin_to_an_ulp() {
+        for k in -1000..=1000 {
+            let delta = 0.3 * k as f64 / 1000.0;
+            let (cos, sin) = turn(delta);
+            assert!((cos - delta.cos()).abs() <= f64::EPSILON, "cos {delta}");
+            assert!(
+                (sin - delta.sin()).abs() <= f64::EPSILON * delta.abs().max(1e-300),
+                "sin {delta}"
+            );
+        }
     }
 }
