@@ -25,9 +25,7 @@ use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{ContactTable, TorusContact};
 use crate::power::ContactLosses;
 use crate::traction::fastsim::MapCell;
-use crate::traction::{
-    ContactConditions, ContactKinematics, ContactPatch, Creep, TractionModel, TractionResult,
-};
+use crate::traction::{ContactConditions, ContactKinematics, ContactPatch, Creep, TractionModel};
 use nalgebra::Vector3;
 
 /// Rolling speed over which the hysteresis couple ramps up from zero
@@ -164,17 +162,6 @@ impl Elements {
         let hertz = table.at(geometry.contact_angle);
         let stiffness = hertz.stiffness;
         let point = geometry.contact_point;
-        let ball_surface = v + w.cross(&(point - q));
-        let ring_surface = ring.velocity + ring.omega.cross(&(point - ring.centre));
-        let slip = ball_surface - ring_surface;
-        // Rolling direction: the azimuthal direction at P, tangent to the contact.
-        let azimuthal = Vector3::new(0.0, -point.z, point.y);
-        let along = azimuthal - azimuthal.dot(&n) * n;
-        let rolling_direction = if along.norm() > 0.0 {
-            along.normalize()
-        } else {
-            n.cross(&Vector3::x()).normalize()
-        };
         // Computed only where used (film, traction curve, hysteresis, output).
         let hysteresis = self.params.rolling_hysteresis > 0.0;
         let (entrainment, u) =
@@ -201,6 +188,33 @@ impl Elements {
             effective_mass: self.ball_mass,
         };
         let load = self.params.normal_law.force(&state);
+        if let Want::Penetration = want {
+            // The normal force alone: no ellipse, film or traction.
+            return Some(RaceContact {
+                geometry,
+                surface: surface.scaled(load),
+                penetration_rate,
+                load,
+                dissipation: 0.0,
+                film_work: None,
+                losses: ContactLosses::default(),
+                force: -load * n,
+                moment: Vector3::zeros(),
+                couple: Vector3::zeros(),
+                output: ContactOutput::default(),
+            });
+        }
+        let ball_surface = v + w.cross(&(point - q));
+        let ring_surface = ring.velocity + ring.omega.cross(&(point - ring.centre));
+        let slip = ball_surface - ring_surface;
+        // Rolling direction: the azimuthal direction at P, tangent to the contact.
+        let azimuthal = Vector3::new(0.0, -point.z, point.y);
+        let along = azimuthal - azimuthal.dot(&n) * n;
+        let rolling_direction = if along.norm() > 0.0 {
+            along.normalize()
+        } else {
+            n.cross(&Vector3::x()).normalize()
+        };
         let ellipse = hertz.at_load(load);
         // Film (docs/model.md §4): h(Q) of the elastic load with the film in the
         // approach, else the steady Hamrock–Dowson film at the load; both
@@ -268,7 +282,6 @@ impl Elements {
             conditions,
         };
         let traction = match (want, model) {
-            (Want::Penetration, _) => TractionResult::default(),
             (Want::Map(map), TractionModel::Fastsim(f)) => f.evaluate_mapped(&kinematics, map),
             _ => match &self.params.mixed_lubrication {
                 Some(mixed) => model.evaluate_blended(
@@ -336,15 +349,9 @@ impl Elements {
         } else {
             ContactOutput::default()
         };
-        let surface = SurfaceEffect {
-            ball_force: load * surface.ball_force,
-            ball_moment: load * surface.ball_moment,
-            ring_force: load * surface.ring_force,
-            ..surface
-        };
         Some(RaceContact {
             geometry,
-            surface,
+            surface: surface.scaled(load),
             penetration_rate,
             load,
             dissipation,

@@ -51,6 +51,19 @@ pub(super) struct SurfaceEffect {
     pub(super) ring_force: Vector3<f64>,
 }
 
+impl SurfaceEffect {
+    /// The forces and moment at normal load `load` (the per-unit-load
+    /// ones times the load).
+    pub(super) fn scaled(self, load: f64) -> Self {
+        Self {
+            ball_force: load * self.ball_force,
+            ball_moment: load * self.ball_moment,
+            ring_force: load * self.ring_force,
+            ..self
+        }
+    }
+}
+
 impl Elements {
     /// The surfaces' effect on a contact of `geometry` (penetration without
     /// the surface); None when both surfaces are smooth.
