@@ -214,7 +214,7 @@ impl HertzCoefficients {
 
     /// Results at normal load Q ≥ 0.
     pub fn at_load(&self, load: f64) -> HertzResult {
-        let q3 = load.max(0.0).cbrt();
+        let q3 = crate::math::cube_root::cbrt(load.max(0.0));
         let semi_major = self.semi_major_coefficient * q3;
         let semi_minor = self.semi_minor_coefficient * q3;
         HertzResult {

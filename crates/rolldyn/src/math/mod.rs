@@ -1,8 +1,9 @@
 //! Numerical building blocks with no bearing physics in them: complete
 //! elliptic integrals (Carlson's symmetric forms), a bracketed scalar root
-//! finder (Brent), monotone cubic (Fritsch–Carlson / PCHIP) interpolation
-//! and a logarithm that vectorizes.
+//! finder (Brent), monotone cubic (Fritsch–Carlson / PCHIP) interpolation,
+//! a logarithm that vectorizes and a cube root by plain arithmetic.
 
+pub mod cube_root;
 pub mod elliptic;
 pub mod interp;
 pub mod logarithm;

@@ -282,6 +282,9 @@ pub fn integrate<L: TractionLaw>(
     grid: &TractionGrid,
     kinematics: &ContactKinematics,
 ) -> TractionResult {
+    if let TractionIntegration::Centre = grid.method {
+        return at_centre(law, kinematics);
+    }
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") {
         // SAFETY: `integrate_avx2` requires AVX2 only, and the processor
@@ -290,6 +293,28 @@ pub fn integrate<L: TractionLaw>(
         return unsafe { integrate_avx2(law, grid, kinematics) };
     }
     integrate_baseline(law, grid, kinematics)
+}
+
+/// One point at P with the mean pressure Q/(πab): no spin or
+/// differential slip.
+fn at_centre<L: TractionLaw>(law: &L, kinematics: &ContactKinematics) -> TractionResult {
+    let ContactKinematics {
+        patch,
+        ball_centre,
+        slip,
+        ..
+    } = kinematics;
+    let mut out = TractionResult::default();
+    if patch.load <= 0.0 {
+        return out;
+    }
+    let n = patch.normal;
+    let area = std::f64::consts::PI * patch.semi_major * patch.semi_minor;
+    let s_t = slip - slip.dot(&n) * n;
+    out.force = law.shear_stress(patch.load / area, &s_t, &kinematics.conditions) * area;
+    out.dissipation = -out.force.dot(&s_t);
+    out.moment = (patch.point - ball_centre).cross(&out.force);
+    out
 }
 
 /// [`integrate_baseline`] compiled with AVX2.
@@ -326,13 +351,7 @@ fn integrate_baseline<L: TractionLaw>(
     let e_across = n.cross(&e_roll);
     let (a, b) = (patch.semi_major, patch.semi_minor);
     match grid.method {
-        TractionIntegration::Centre => {
-            // One point at P: no spin or differential slip.
-            let area = std::f64::consts::PI * a * b;
-            let s_t = slip_at_point - slip_at_point.dot(&n) * n;
-            out.force = law.shear_stress(patch.load / area, &s_t, conditions) * area;
-            out.dissipation = -out.force.dot(&s_t);
-        }
+        TractionIntegration::Centre => return at_centre(law, kinematics),
         TractionIntegration::Grid { across, along } => {
             let (across, along) = (across.max(1), along.max(1));
             let ds = 2.0 / across as f64;

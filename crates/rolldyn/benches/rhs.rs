@@ -1,0 +1,99 @@
+//! `cargo bench -p rolldyn --bench rhs`: what one evaluation of the dynamic
+//! model costs, whatever number of steps a run takes (the 6304's step
+//! count moves by several per cent with round-off: its ball impacts are
+//! chaotic). Per call, on one thread: the right-hand side, the mechanical
+//! energy (the energy control evaluates it twice per step), the step
+//! acceptance's contact bookkeeping and the finite-difference Jacobian,
+//! for the 6304 of Shan et al. 2023 (planar, dry, traction at the contact
+//! centre, pockets) and the default case's 7008C (EHL traction on the
+//! 12 × 6 grid, whirling outer-guided cage), each 5 ms into a run from its
+//! start. Figures in docs/performance.md.
+
+use rolldyn::contact::HertzModel;
+use rolldyn::dynamics::BearingModel;
+use rolldyn::integrate::jacobian::{JacobianWork, finite_difference};
+use rolldyn::integrate::linear::BlockJacobian;
+use rolldyn::integrate::{Integrator, OdeSystem};
+use rolldyn::material::Material;
+use rolldyn::testing::{self, Method};
+use std::hint::black_box;
+use std::time::Instant;
+
+/// Median over 7 rounds of the time per call of `f` \[µs\].
+fn time_per_call(name: &str, calls: usize, mut f: impl FnMut() -> f64) {
+    let mut rounds: Vec<f64> = (0..7)
+        .map(|_| {
+            let start = Instant::now();
+            let mut sink = 0.0;
+            for _ in 0..calls {
+                sink += f();
+            }
+            black_box(sink);
+            start.elapsed().as_secs_f64() / calls as f64
+        })
+        .collect();
+    rounds.sort_by(f64::total_cmp);
+    println!("{name:<48} {:>9.2} µs/call", rounds[3] * 1e6);
+}
+
+/// `model` advanced 5 ms from `y0` (ROS34PW2, rtol 1e-3).
+fn state_after_5_ms(model: &mut BearingModel, y0: &[f64]) -> Vec<f64> {
+    let mut solver = testing::integrator(Method::Ros34pw2, model, y0, 1e-3, 1e-4);
+    while solver.t() < 5e-3 {
+        solver.step(model, 5e-3).expect("step");
+    }
+    solver.y().to_vec()
+}
+
+fn bench(name: &str, mut model: BearingModel, y0: &[f64], calls: usize) {
+    let y = state_after_5_ms(&mut model, y0);
+    let t = 5e-3;
+    let mut dy = vec![0.0; y.len()];
+    time_per_call(&format!("{name}: right-hand side"), calls, || {
+        model.rhs(t, &y, &mut dy);
+        dy[0]
+    });
+    time_per_call(&format!("{name}: mechanical energy"), calls, || {
+        model.energy(t, &y).total()
+    });
+    time_per_call(&format!("{name}: step acceptance"), calls, || {
+        f64::from(u8::from(model.accept_step(t, &y)))
+    });
+    model.rhs(t, &y, &mut dy);
+    let layout = model.blocks().expect("blocks").block_layout();
+    let mut jacobian = BlockJacobian::zeros(layout);
+    let mut work = JacobianWork::new(&model);
+    time_per_call(&format!("{name}: Jacobian"), calls / 20, || {
+        finite_difference(&model, t, &y, &dy, &mut jacobian, &mut work) as f64
+    });
+}
+
+fn main() {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build_global()
+        .expect("one thread");
+    let steel = testing::steel_shan_2023();
+    let model = BearingModel::new(
+        &testing::bearing_6304(),
+        &steel,
+        &steel,
+        HertzModel::HertzCircular,
+        testing::dynamics_6304(100.0),
+    )
+    .expect("6304");
+    let y0 = model.pure_rolling_state([0.0; 5]);
+    bench("6304", model, &y0, 20_000);
+    let (params, equilibrium) = testing::dynamics_7008c(testing::drag_7008c());
+    let steel = Material::STEEL_52100;
+    let model = BearingModel::new(
+        &testing::bearing_7008c(),
+        &steel,
+        &steel,
+        HertzModel::Exact,
+        params,
+    )
+    .expect("7008C");
+    let y0 = model.state_from_equilibrium(&equilibrium);
+    bench("7008C default", model, &y0, 2_000);
+}
