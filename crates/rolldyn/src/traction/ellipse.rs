@@ -127,7 +127,7 @@ pub struct TractionResult {
 /// These depend on the grid only; [`integrate`] scales them by the
 /// contact's semi-axes and load.
 ///
-/// The cells are laid out for the lanes ([`StripGroup`]): each lane stays
+/// The cells are laid out for the lanes (`StripGroup`): each lane stays
 /// on one strip, so what is constant along a strip (its ξ, drop and
 /// slip line) is set once per lane and the strip moments need no per-cell
 /// product.
