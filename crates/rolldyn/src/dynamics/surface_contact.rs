@@ -97,11 +97,7 @@ impl Elements {
             nominal_angle,
         )
         .rolling_radius;
-        let radial_offset = 0.5 * d * nominal_angle.cos();
-        let track_radius = match ring.raceway.kind {
-            RingKind::Inner => 0.5 * self.geometry.pitch_diameter - radial_offset,
-            RingKind::Outer => 0.5 * self.geometry.pitch_diameter + radial_offset,
-        };
+        let track_radius = self.nominal_track_radius(ring.raceway.kind);
         let mut effect = SurfaceEffect::default();
         if !race.is_smooth() {
             let rel = ball.centre - ring.centre;
@@ -193,17 +189,26 @@ impl Elements {
         })
     }
 
+    /// Radius of a raceway's track at the nominal contact angle \[m\].
+    fn nominal_track_radius(&self, kind: RingKind) -> f64 {
+        let g = &self.geometry;
+        let radial = 0.5 * g.ball_diameter * g.nominal_contact_angle().cos();
+        match kind {
+            RingKind::Inner => 0.5 * g.pitch_diameter - radial,
+            RingKind::Outer => 0.5 * g.pitch_diameter + radial,
+        }
+    }
+
     /// What places the contacts on the spalls' tracks at time `t`.
     fn spall_tracks(&self, t: f64, y: &[f64]) -> SpallTracks {
         let g = &self.geometry;
         let spin = self.spin(t, y);
         let half_d = 0.5 * g.ball_diameter;
-        let radial = half_d * g.nominal_contact_angle().cos();
         SpallTracks {
             inner_angle: spin.angle,
             inner_speed: spin.speed,
-            inner_track: 0.5 * g.pitch_diameter - radial,
-            outer_track: 0.5 * g.pitch_diameter + radial,
+            inner_track: self.nominal_track_radius(RingKind::Inner),
+            outer_track: self.nominal_track_radius(RingKind::Outer),
             half_d,
         }
     }
