@@ -466,7 +466,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             }
             let summary = run::run_case(&record, &case, dir, &options)?;
             let text = format!(
-                "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS, {} Jacobians costing {} RHS, {} factorizations)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e} (accuracy {})\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
+                "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS, {} Jacobians costing {} RHS, {} refreshes of their fast part, {} factorizations)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e} (accuracy {})\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
                 summary.status,
                 summary.simulated_time_s,
                 summary.requested_duration_s,
@@ -477,6 +477,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 summary.rhs_evaluations,
                 summary.jacobian_evaluations,
                 summary.jacobian_rhs_evaluations,
+                summary.fast_part_jacobians,
                 summary.factorizations,
                 summary.mean_cage_speed_rpm,
                 summary.pure_rolling_cage_speed_rpm,

@@ -34,6 +34,9 @@ pub struct Summary {
     pub rhs_evaluations: u64,
     pub jacobian_evaluations: u64,
     pub jacobian_rhs_evaluations: u64,
+    /// Refreshes of the Jacobian's fast part (pockets and cage) between
+    /// full Jacobians.
+    pub fast_part_jacobians: u64,
     pub factorizations: u64,
     /// `auto`: accepted steps of its explicit method (DOPRI5) and
     /// hand-overs between its methods (null for the other integrators).
@@ -175,6 +178,7 @@ pub(crate) fn summarise(
         rhs_evaluations: integration.rhs_evaluations,
         jacobian_evaluations: integration.jacobian_evaluations,
         jacobian_rhs_evaluations: integration.jacobian_rhs_evaluations,
+        fast_part_jacobians: integration.fast_part_jacobians,
         factorizations: integration.factorizations,
         explicit_steps: None,
         integrator_switches: None,

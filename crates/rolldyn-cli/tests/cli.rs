@@ -410,6 +410,7 @@ fn run_writes_parquet_and_summary() {
         "rhs_evaluations",
         "jacobian_evaluations",
         "jacobian_rhs_evaluations",
+        "fast_part_jacobians",
         "factorizations",
         "wall_time_s",
     ] {

@@ -3,15 +3,16 @@
 //! count moves by several per cent with round-off: its ball impacts are
 //! chaotic). Per call, on one thread: the right-hand side, the mechanical
 //! energy (the energy control evaluates it twice per step), the step
-//! acceptance's contact bookkeeping and the finite-difference Jacobian,
-//! for the 6304 of Shan et al. 2023 (planar, dry, traction at the contact
+//! acceptance's contact bookkeeping, the finite-difference Jacobian and,
+//! where the model has one, its fast part's (refreshed at every step while
+//! the cage limits the steps), for the 6304 of Shan et al. 2023 (planar, dry, traction at the contact
 //! centre, pockets) and the default case's 7008C (EHL traction on the
 //! 12 × 6 grid, whirling outer-guided cage), each 5 ms into a run from its
 //! start. Figures in docs/performance.md.
 
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::BearingModel;
-use rolldyn::integrate::jacobian::{JacobianWork, finite_difference};
+use rolldyn::integrate::jacobian::{JacobianWork, fast_part_difference, finite_difference};
 use rolldyn::integrate::linear::BlockJacobian;
 use rolldyn::integrate::{Integrator, OdeSystem};
 use rolldyn::material::Material;
@@ -66,6 +67,13 @@ fn bench(name: &str, mut model: BearingModel, y0: &[f64], calls: usize) {
     time_per_call(&format!("{name}: Jacobian"), calls / 20, || {
         finite_difference(&model, t, &y, &dy, &mut jacobian, &mut work) as f64
     });
+    if fast_part_difference(&model, t, &y, &mut jacobian, &mut work).is_some() {
+        time_per_call(
+            &format!("{name}: Jacobian of the fast part"),
+            calls / 4,
+            || fast_part_difference(&model, t, &y, &mut jacobian, &mut work).unwrap_or(0) as f64,
+        );
+    }
 }
 
 fn main() {

@@ -96,6 +96,17 @@ impl ContactShare {
     }
 }
 
+/// Which of a ball's contacts a block evaluation includes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Part {
+    /// All of them: the right-hand side.
+    Whole,
+    /// All but the raceway contacts: the split's fast part, whose
+    /// Jacobian the implicit method refreshes at every step
+    /// (`BlockSplit::with_fast_part`).
+    Fast,
+}
+
 /// Where a ball's contact shares come from.
 pub(super) enum Shares<'a> {
     /// All evaluated (and, with a memo, stored there).
@@ -130,7 +141,7 @@ impl BearingModel {
             t,
             j,
             y,
-            (inner, outer),
+            Some((inner, outer)),
             dy,
             films_power,
             (sink, sample),
@@ -139,7 +150,9 @@ impl BearingModel {
     }
 
     /// A ball's block of the block split (`BlockSplit::block_rhs` and its
-    /// memo variants): no films' work, no losses, the shares from `shares`.
+    /// memo variants): no films' work, no losses, the shares from `shares`,
+    /// the contacts of `part` (the fast part needs no ring motion).
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn block_rhs_from(
         &self,
         t: f64,
@@ -148,13 +161,17 @@ impl BearingModel {
         dy_block: &mut [f64],
         coupling: &mut [f64],
         shares: Shares<'_>,
+        part: Part,
     ) {
-        let (inner, outer) = self.elements.ring_motion(t, y);
+        let rings = match part {
+            Part::Whole => Some(self.elements.ring_motion(t, y)),
+            Part::Fast => None,
+        };
         self.ball_rhs_with(
             t,
             block,
             y,
-            (&inner, &outer),
+            rings.as_ref().map(|(inner, outer)| (inner, outer)),
             dy_block,
             false,
             (None, None),
@@ -163,14 +180,15 @@ impl BearingModel {
         .write(coupling);
     }
 
-    /// [`Self::ball_rhs`] with the contact shares from `shares`.
+    /// [`Self::ball_rhs`] with the contact shares from `shares`; without
+    /// `rings`, without the raceway contacts (the fast part).
     #[allow(clippy::too_many_arguments)]
     pub(super) fn ball_rhs_with(
         &self,
         t: f64,
         j: usize,
         y: &[f64],
-        (inner, outer): (&RingMotion, &RingMotion),
+        rings: Option<(&RingMotion, &RingMotion)>,
         dy: &mut [f64],
         films_power: bool,
         (mut sink, mut sample): (Option<&mut Dissipation>, Option<&mut ContactSample>),
@@ -194,9 +212,9 @@ impl BearingModel {
             }
             _ => None,
         };
-        let inner_share = match kept(BallContact::Inner) {
-            Some(share) => share,
-            None => self.race_share(
+        let inner_share = match (kept(BallContact::Inner), rings) {
+            (Some(share), _) => share,
+            (None, Some((inner, _))) => self.race_share(
                 j,
                 inner,
                 &ball,
@@ -205,10 +223,11 @@ impl BearingModel {
                 sink.as_deref_mut(),
                 sample.as_deref_mut().map(|s| &mut s.inner),
             ),
+            (None, None) => ContactShare::default(),
         };
-        let outer_share = match kept(BallContact::Outer) {
-            Some(share) => share,
-            None => self.race_share(
+        let outer_share = match (kept(BallContact::Outer), rings) {
+            (Some(share), _) => share,
+            (None, Some((_, outer))) => self.race_share(
                 j,
                 outer,
                 &ball,
@@ -217,6 +236,7 @@ impl BearingModel {
                 sink.as_deref_mut(),
                 sample.map(|s| &mut s.outer),
             ),
+            (None, None) => ContactShare::default(),
         };
         let pocket_share = match kept(BallContact::Pocket) {
             Some(share) => share,
@@ -289,7 +309,7 @@ impl BearingModel {
         }
         // Only the film-work accumulator needs this, and no Jacobian reads
         // it (`inert`): `block_rhs` leaves it out.
-        if films_power {
+        if let (true, Some((inner, _))) = (films_power, rings) {
             self.elements
                 .add_film_work(t, y, j, dy, &film_work, inner, &mut out);
         }

@@ -32,6 +32,8 @@ const MIN_PARALLEL_BALLS: usize = 4;
 /// One coupling slot per ball, reused by every right-hand side.
 #[derive(Debug, Default)]
 pub(super) struct BallPass {
+    /// Whether the raceway contacts integrate traction over a grid.
+    expensive: bool,
     /// Whether the balls are evaluated across threads.
     parallel: bool,
     slots: Mutex<Vec<(BallCoupling, Dissipation, ContactSample)>>,
@@ -42,9 +44,16 @@ impl BallPass {
     /// integrated over a grid) and there are enough balls to share.
     pub(super) fn new(balls: usize, expensive_contacts: bool) -> Self {
         Self {
+            expensive: expensive_contacts,
             parallel: expensive_contacts && balls >= MIN_PARALLEL_BALLS,
             slots: Mutex::new(vec![Default::default(); balls]),
         }
+    }
+
+    /// Whether the raceway contacts integrate traction over a grid (they
+    /// then cost far more than the rest of a ball's equations).
+    pub(super) fn expensive_contacts(&self) -> bool {
+        self.expensive
     }
 
     /// Whether the pass runs across threads: worth it, and the current
@@ -120,6 +129,7 @@ impl Clone for BallPass {
             .unwrap_or_else(PoisonError::into_inner)
             .len();
         Self {
+            expensive: self.expensive,
             parallel: self.parallel,
             slots: Mutex::new(vec![Default::default(); balls]),
         }

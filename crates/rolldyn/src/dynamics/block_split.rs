@@ -3,20 +3,32 @@
 //! energy accumulators in the border. The balls couple only through the
 //! border, so the Jacobian is differenced block by block and a border
 //! column re-evaluates only the contact its state reaches.
+//!
+//! The split's fast part ([`BlockSplit::with_fast_part`]) is the model
+//! without its ball–raceway contacts: the pockets, the cage's guidance and
+//! the bodies' equations. Its Jacobian changes fastest (a whirling cage's
+//! pocket and land contacts open and close within a few steps) and costs
+//! least to difference (no traction over the contact ellipses, no ring
+//! motion), so the Rosenbrock–W method refreshes it at every step while it
+//! pays (`integrate::rosenbrock`, docs/dynamics.md "Integration"). Offered
+//! when the raceway contacts integrate traction over a grid (otherwise
+//! they cost about what the rest does).
 
-use super::ball_equations::{BallContact, ContactShare, Shares};
+use super::ball_equations::{BallContact, ContactShare, Part, Shares};
 use super::coupling::BallCoupling;
 use super::model::BearingModel;
 use crate::integrate::BlockSplit;
 use crate::integrate::linear::BlockLayout;
 
+/// The model's split restricted to `part`'s contacts.
+struct PartOf<'a> {
+    model: &'a BearingModel,
+    part: Part,
+}
+
 impl BlockSplit for BearingModel {
     fn block_layout(&self) -> BlockLayout {
-        BlockLayout {
-            blocks: self.elements.layout.balls,
-            block_size: self.elements.layout.ball_len(),
-            border: self.elements.layout.len() - self.elements.layout.ring(),
-        }
+        self.whole().block_layout()
     }
 
     fn coupling_len(&self) -> usize {
@@ -35,12 +47,119 @@ impl BlockSplit for BearingModel {
         dy_block: &mut [f64],
         coupling: &mut [f64],
     ) {
-        self.block_rhs_from(t, y, block, dy_block, coupling, Shares::Evaluate(None));
+        self.whole().block_rhs(t, y, block, dy_block, coupling);
     }
 
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
-        let (inner, _) = self.elements.ring_motion(t, y);
-        self.border_rhs_with(t, y, &inner, &BallCoupling::read(coupling), dy_border, None);
+        self.whole().border_rhs(t, y, coupling, dy_border);
+    }
+
+    fn memo_len(&self) -> usize {
+        ContactShare::MEMO_LEN
+    }
+
+    fn block_rhs_memo(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+        memo: &mut [f64],
+    ) {
+        self.whole()
+            .block_rhs_memo(t, y, block, dy_block, coupling, memo);
+    }
+
+    fn block_rhs_border_column(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        column: usize,
+        memo: &[f64],
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+    ) {
+        self.whole()
+            .block_rhs_border_column(t, y, block, column, memo, dy_block, coupling);
+    }
+
+    fn inert(&self, state: usize) -> bool {
+        self.whole().inert(state)
+    }
+
+    /// The cage's states.
+    fn fast_state(&self, state: usize) -> bool {
+        let layout = &self.elements.layout;
+        (layout.cage()..layout.work()).contains(&state)
+    }
+
+    fn with_fast_part(&self, with: &mut dyn FnMut(&dyn BlockSplit)) -> bool {
+        if !self.ball_pass.expensive_contacts() {
+            return false;
+        }
+        with(&PartOf {
+            model: self,
+            part: Part::Fast,
+        });
+        true
+    }
+}
+
+impl BearingModel {
+    /// The split with all the contacts.
+    fn whole(&self) -> PartOf<'_> {
+        PartOf {
+            model: self,
+            part: Part::Whole,
+        }
+    }
+}
+
+impl BlockSplit for PartOf<'_> {
+    fn block_layout(&self) -> BlockLayout {
+        let layout = &self.model.elements.layout;
+        BlockLayout {
+            blocks: layout.balls,
+            block_size: layout.ball_len(),
+            border: layout.len() - layout.ring(),
+        }
+    }
+
+    fn coupling_len(&self) -> usize {
+        BallCoupling::LEN
+    }
+
+    /// The fast part's blocks cost too little to share out.
+    fn parallel(&self) -> bool {
+        self.part == Part::Whole && self.model.ball_pass.is_parallel()
+    }
+
+    /// Without the raceway contacts the balls do not read the rings.
+    fn blocks_read(&self, border_state: usize) -> bool {
+        let layout = &self.model.elements.layout;
+        self.part == Part::Whole || layout.ring() + border_state >= layout.cage()
+    }
+
+    fn block_rhs(
+        &self,
+        t: f64,
+        y: &[f64],
+        block: usize,
+        dy_block: &mut [f64],
+        coupling: &mut [f64],
+    ) {
+        let shares = Shares::Evaluate(None);
+        self.model
+            .block_rhs_from(t, y, block, dy_block, coupling, shares, self.part);
+    }
+
+    fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
+        let (inner, _) = self.model.elements.ring_motion(t, y);
+        let coupling = BallCoupling::read(coupling);
+        self.model
+            .border_rhs_with(t, y, &inner, &coupling, dy_border, None);
     }
 
     fn memo_len(&self) -> usize {
@@ -57,7 +176,8 @@ impl BlockSplit for BearingModel {
         memo: &mut [f64],
     ) {
         let shares = Shares::Evaluate(Some(memo));
-        self.block_rhs_from(t, y, block, dy_block, coupling, shares);
+        self.model
+            .block_rhs_from(t, y, block, dy_block, coupling, shares, self.part);
     }
 
     /// Only the contact the border state touches is evaluated again
@@ -74,16 +194,17 @@ impl BlockSplit for BearingModel {
     ) {
         let shares = Shares::Reuse {
             memo,
-            contact: BallContact::touched_by(&self.elements.layout, column),
+            contact: BallContact::touched_by(&self.model.elements.layout, column),
         };
-        self.block_rhs_from(t, y, block, dy_block, coupling, shares);
+        self.model
+            .block_rhs_from(t, y, block, dy_block, coupling, shares, self.part);
     }
 
     /// Frozen states (planar motion, a locked cage whirl, a fixed outer
     /// ring) never change, and nothing reads the energy accumulators.
     fn inert(&self, state: usize) -> bool {
-        let l = self.elements.layout;
-        let p = &self.elements.params;
+        let l = self.model.elements.layout;
+        let p = &self.model.elements.params;
         if state < l.ring() {
             let k = state % l.ball_len();
             return p.planar && matches!(k, 0 | 3 | 7 | 8);

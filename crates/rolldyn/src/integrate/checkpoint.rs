@@ -225,6 +225,7 @@ impl Checkpoint for super::IntegrationStats {
             self.jacobian_evaluations,
             self.jacobian_rhs_evaluations,
             self.factorizations,
+            self.fast_part_jacobians,
         ] {
             out.u64(v);
         }
@@ -238,6 +239,7 @@ impl Checkpoint for super::IntegrationStats {
         self.jacobian_evaluations = input.u64()?;
         self.jacobian_rhs_evaluations = input.u64()?;
         self.factorizations = input.u64()?;
+        self.fast_part_jacobians = input.u64()?;
         Ok(())
     }
 }

@@ -110,6 +110,36 @@ pub trait BlockSplit: Sync {
     fn inert(&self, _state: usize) -> bool {
         false
     }
+
+    /// Whether the blocks read border state `border_state` (counted from
+    /// the border's first state). A column of a state no block reads has
+    /// zero block rows and costs one border evaluation. Default: they all
+    /// do.
+    fn blocks_read(&self, _border_state: usize) -> bool {
+        true
+    }
+
+    /// Whether `state` belongs to the fast part's own dynamics (the
+    /// bearing's cage): while such states limit the steps, a
+    /// Rosenbrock–W method refreshes the fast part's Jacobian
+    /// ([`super::rosenbrock::fast_part`]). Default: none.
+    fn fast_state(&self, _state: usize) -> bool {
+        false
+    }
+
+    /// Hands `with` the split's **fast part**, if it has one worth
+    /// refreshing between full Jacobians, and returns whether it did: a
+    /// part f_F of the right-hand side (same blocks, border and inert
+    /// states) whose Jacobian changes within a few steps while costing
+    /// little to difference, the rest f − f_F changing slowly at most of
+    /// the cost (a bearing: the pockets and the cage's guidance against
+    /// the ball–raceway contacts with their traction over the contact
+    /// ellipses). A Rosenbrock–W method then uses
+    /// J = (J − J_F)(last full Jacobian) + J_F(now) ([`super::rosenbrock`]).
+    /// Default: none.
+    fn with_fast_part(&self, _with: &mut dyn FnMut(&dyn BlockSplit)) -> bool {
+        false
+    }
 }
 
 /// Work space for finite-difference Jacobians.
@@ -127,6 +157,9 @@ pub struct JacobianWork {
     memo_len: usize,
     coupling_sum: Vec<f64>,
     coupling_trial: Vec<f64>,
+    /// ∂f_B/∂C transposed (c rows of m): the border's derivative with
+    /// respect to the coupling sum.
+    border_gradient: Vec<f64>,
     /// Per block: see [`SAVED`], [`DELTA`], [`SCRATCH`].
     block_scratch: Vec<f64>,
     block_stride: usize,
@@ -141,7 +174,7 @@ impl JacobianWork {
             .map(|s| (s.block_layout(), s.coupling_len(), s.memo_len()))
             .unwrap_or((BlockLayout::dense(n), 0, 0));
         let blocks = layout.blocks;
-        let block_stride = SCRATCH + layout.block_size.max(layout.border) + 2 * c;
+        let block_stride = SCRATCH + layout.block_size.max(layout.border) + c + layout.border;
         let mut scale = vec![0.0; n];
         system.error_scale(&mut scale);
         let mut absolute = vec![false; n];
@@ -160,6 +193,7 @@ impl JacobianWork {
             memo_len,
             coupling_sum: vec![0.0; c],
             coupling_trial: vec![0.0; c],
+            border_gradient: vec![0.0; c * layout.border],
             block_scratch: vec![0.0; blocks * block_stride],
             block_stride,
         }
@@ -195,6 +229,23 @@ pub fn finite_difference<S: OdeSystem + ?Sized>(
         Some(split) => by_blocks(split, t, jacobian, work),
         None => dense(system, t, f, jacobian, work),
     }
+}
+
+/// The Jacobian of the system's fast part ([`BlockSplit::with_fast_part`])
+/// at (t, y) into `jacobian`, block-wise; its cost in evaluations of the
+/// fast part, or None when the system has no fast part.
+pub fn fast_part_difference<S: OdeSystem + ?Sized>(
+    system: &S,
+    t: f64,
+    y: &[f64],
+    jacobian: &mut BlockJacobian,
+    work: &mut JacobianWork,
+) -> Option<u64> {
+    let split = system.blocks()?;
+    work.y.copy_from_slice(y);
+    let mut cost = None;
+    split.with_fast_part(&mut |fast| cost = Some(by_blocks(fast, t, jacobian, work)));
+    cost
 }
 
 fn dense<S: OdeSystem + ?Sized>(
@@ -260,6 +311,20 @@ fn by_blocks(
     }
     let (_, f_border) = work.f.split_at_mut(start);
     split.border_rhs(t, &work.y, &work.coupling_sum, f_border);
+    // G = ∂f_B/∂C, one border evaluation per coupling component: the
+    // chain rule then gives each block's lower border, ∂f_B/∂y_j =
+    // G ∂c_j/∂y_j, from its perturbed coupling, instead of a border
+    // evaluation per block and column.
+    for i in 0..c {
+        let base = work.coupling_sum[i];
+        let delta = increment(base, 1.0, true);
+        work.coupling_trial.copy_from_slice(&work.coupling_sum);
+        work.coupling_trial[i] = base + delta;
+        split.border_rhs(t, &work.y, &work.coupling_trial, &mut work.f_perturbed[..m]);
+        for r in 0..m {
+            work.border_gradient[i * m + r] = (work.f_perturbed[r] - work.f[start + r]) / delta;
+        }
+    }
     // Block columns: column k of every block perturbed at once (block j's
     // right-hand side reads only its own states and the border's), each
     // block evaluated on its own.
@@ -276,7 +341,8 @@ fn by_blocks(
             scratch[DELTA] = delta;
             work.y[col] += delta;
         }
-        let (y, f, couplings, sum) = (&work.y, &work.f, &work.couplings, &work.coupling_sum);
+        let (y, f, couplings, gradient) =
+            (&work.y, &work.f, &work.couplings, &work.border_gradient);
         each_block3(
             parallel,
             (&mut jacobian.diag, b * b),
@@ -291,21 +357,25 @@ fn by_blocks(
                 }
                 let delta = scratch[DELTA];
                 let (head, rest) = scratch[SCRATCH..].split_at_mut(b.max(m));
-                let (perturbed, trial) = rest.split_at_mut(c);
+                let (perturbed, border) = rest.split_at_mut(c);
                 split.block_rhs(t, y, j, &mut head[..b], perturbed);
                 for r in 0..b {
                     diag[r * b + k] = (head[r] - f[j * b + r]) / delta;
                 }
+                // f_B's change: G times the coupling's.
+                let border = &mut border[..m];
+                border.fill(0.0);
                 let cj = &couplings[j * c..(j + 1) * c];
-                for (tr, ((s, p), base)) in trial[..c]
-                    .iter_mut()
-                    .zip(sum.iter().zip(perturbed.iter()).zip(cj))
-                {
-                    *tr = s + (p - base);
+                for (i, (p, base)) in perturbed.iter().zip(cj).enumerate() {
+                    let change = p - base;
+                    if change != 0.0 {
+                        for (v, g) in border.iter_mut().zip(&gradient[i * m..(i + 1) * m]) {
+                            *v += g * change;
+                        }
+                    }
                 }
-                split.border_rhs(t, y, &trial[..c], &mut head[..m]);
                 for r in 0..m {
-                    lower[r * b + k] = (head[r] - f[start + r]) / delta;
+                    lower[r * b + k] = border[r] / delta;
                 }
             },
         );
@@ -327,10 +397,21 @@ fn by_blocks(
             (0..m).for_each(|r| jacobian.border[r * m + p] = 0.0);
             continue;
         }
-        cost += 1;
         let delta = work.increment(col);
         let saved = work.y[col];
         work.y[col] += delta;
+        if !split.blocks_read(p) {
+            for j in 0..layout.blocks {
+                (0..b).for_each(|r| jacobian.upper[j * b * m + r * m + p] = 0.0);
+            }
+            split.border_rhs(t, &work.y, &work.coupling_sum, &mut work.f_perturbed[..m]);
+            work.y[col] = saved;
+            for r in 0..m {
+                jacobian.border[r * m + p] = (work.f_perturbed[r] - work.f[start + r]) / delta;
+            }
+            continue;
+        }
+        cost += 1;
         let (y, f, memos) = (&work.y, &work.f, &work.memos);
         each_block2(
             parallel,
@@ -363,7 +444,7 @@ fn by_blocks(
 
 /// Offsets in a block's scratch: the perturbed state's saved value and
 /// increment, then its right-hand side (max(b, m)), perturbed coupling (c)
-/// and trial coupling sum (c).
+/// and the border's change (m).
 const SAVED: usize = 0;
 const DELTA: usize = 1;
 const SCRATCH: usize = 2;

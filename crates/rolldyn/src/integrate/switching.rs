@@ -315,6 +315,7 @@ impl Integrator for Switching {
             jacobian_evaluations: a.jacobian_evaluations + b.jacobian_evaluations,
             jacobian_rhs_evaluations: a.jacobian_rhs_evaluations + b.jacobian_rhs_evaluations,
             factorizations: a.factorizations + b.factorizations,
+            fast_part_jacobians: a.fast_part_jacobians + b.fast_part_jacobians,
         }
     }
 }

@@ -97,6 +97,7 @@ fn stiff_solver_work_on_the_6304() {
             jacobian_evaluations: 156,
             jacobian_rhs_evaluations: 2496,
             factorizations: 2659,
+            fast_part_jacobians: 0,
         },
     );
 }
@@ -121,6 +122,7 @@ fn stiff_solver_work_on_the_7008c() {
             jacobian_evaluations: 7,
             jacobian_rhs_evaluations: 182,
             factorizations: 42,
+            fast_part_jacobians: 0,
         },
     );
 }

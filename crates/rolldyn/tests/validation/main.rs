@@ -34,6 +34,7 @@ mod convergence;
 mod driven_rotation;
 mod efficiency;
 mod elastic_shaft;
+mod fast_part;
 mod jacobian_reuse;
 mod life_reference;
 mod pocket_squeeze;

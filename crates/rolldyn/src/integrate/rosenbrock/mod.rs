@@ -18,6 +18,9 @@
 //! Each new step size needs a new factorization of I/(hγ) − A, which the
 //! bordered block structure makes cheap ([`super::linear`]).
 //!
+//! A system whose block split has a fast part refreshes that part's
+//! Jacobian at every step while it lengthens the steps ([`fast_part`]).
+//!
 //! ROS34PW2: 4 stages, order 3 with an embedded order-2 estimate,
 //! L-stable, stiffly accurate, W-order 3. The first stage reuses f at the
 //! start of the step, which an accepted step evaluates anyway for the
@@ -32,6 +35,9 @@ use super::jacobian::{JacobianWork, finite_difference};
 use super::linear::{BlockJacobian, BlockLayout, BlockLu};
 use super::step_control::{IntegrationError, IntegrationStats, PiControl, StepMethod, take_step};
 use super::{Integrator, OdeSystem, Tolerances};
+use fast_part::FastRefresh;
+
+pub mod fast_part;
 
 /// Largest number of stages of a Rosenbrock tableau.
 const MAX_STAGES: usize = 6;
@@ -177,6 +183,8 @@ pub struct Rosenbrock {
     error: Vec<f64>,
     tolerances: Tolerances,
     jacobian: BlockJacobian,
+    /// The fast part's refresh, for a system that has one.
+    fast: Option<FastRefresh>,
     lu: BlockLu,
     work: JacobianWork,
     /// Accepted steps since the Jacobian was evaluated; None: none yet.
@@ -259,6 +267,7 @@ impl Rosenbrock {
             error: vec![0.0; n],
             tolerances,
             jacobian: BlockJacobian::zeros(layout),
+            fast: FastRefresh::of(system, &BlockJacobian::zeros(layout)),
             lu: match system.blocks() {
                 Some(split) => BlockLu::with_inert(layout, |state| split.inert(state)),
                 None => BlockLu::new(layout),
@@ -338,6 +347,9 @@ impl Rosenbrock {
         self.jacobian_age = None;
         self.factored_step = None;
         self.gathered = false;
+        if let Some(fast) = &mut self.fast {
+            fast.restart();
+        }
         if let (Some(mine), Some(from)) = (&mut self.energy, energy) {
             mine.continue_from(from);
         }
@@ -367,6 +379,9 @@ impl Rosenbrock {
         self.jacobian_age = Some(0);
         self.factored_step = None;
         self.gathered = false;
+        if let Some(fast) = &mut self.fast {
+            fast.split(system, (self.t, &self.y), &self.jacobian, &mut self.work);
+        }
     }
 
     /// Stages and candidate for step h; the scaled error norm (∞ when the
@@ -414,7 +429,7 @@ impl Rosenbrock {
             }
             self.lu.solve(u);
         }
-        let mut sum = 0.0;
+        let (mut sum, mut largest) = (0.0, (0, 0.0));
         for k in 0..n {
             let (mut step, mut err) = (0.0, 0.0);
             for i in 0..co.stages {
@@ -426,7 +441,18 @@ impl Rosenbrock {
             let scale = self
                 .tolerances
                 .scale(k, self.y[k].abs().max(self.y_new[k].abs()));
-            sum += (err / scale).powi(2);
+            let term = (err / scale).powi(2);
+            sum += term;
+            if term > largest.1 {
+                largest = (k, term);
+            }
+        }
+        // The refresh starts from a full Jacobian (its slow rest).
+        if let Some(fast) = &mut self.fast {
+            let led = system.blocks().is_some_and(|s| s.fast_state(largest.0));
+            if fast.attempted(led) {
+                self.jacobian_age = None;
+            }
         }
         let err = (sum / n as f64).sqrt();
         if !err.is_finite() {
@@ -459,6 +485,9 @@ impl Rosenbrock {
         if let Some(age) = &mut self.jacobian_age {
             *age += 1;
         }
+        if let Some(fast) = &mut self.fast {
+            fast.accepted();
+        }
     }
 }
 
@@ -483,6 +512,17 @@ impl StepMethod for Rosenbrock {
     fn prepare<S: OdeSystem>(&mut self, system: &S) {
         if self.jacobian_age.is_none_or(|age| age >= MAX_JACOBIAN_AGE) {
             self.evaluate_jacobian(system);
+        } else if let Some(fast) = &mut self.fast
+            && fast.refresh(
+                system,
+                (self.t, &self.y),
+                &mut self.jacobian,
+                &mut self.work,
+            )
+        {
+            self.stats.fast_part_jacobians += 1;
+            self.factored_step = None;
+            self.gathered = false;
         }
     }
 
@@ -554,6 +594,9 @@ impl Checkpoint for Rosenbrock {
         if let Some(energy) = &self.energy {
             energy.save(out);
         }
+        if let Some(fast) = &self.fast {
+            fast.save(out);
+        }
         self.stats.save(out);
     }
 
@@ -582,6 +625,9 @@ impl Checkpoint for Rosenbrock {
         input.f64s_into("jacobian corner", &mut j.border)?;
         if let Some(energy) = &mut self.energy {
             energy.restore(input)?;
+        }
+        if let Some(fast) = &mut self.fast {
+            fast.restore(input)?;
         }
         self.stats.restore(input)?;
         if let Some(h) = self.factored_step {
