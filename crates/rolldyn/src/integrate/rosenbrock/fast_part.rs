@@ -215,9 +215,11 @@ mod tests {
     /// One window in which `led` of the attempts were led by a fast state;
     /// whether the refresh started at its end.
     fn window(r: &mut FastRefresh, led: u32) -> bool {
-        (0..WINDOW_ATTEMPTS)
-            .map(|k| r.attempted(k < led))
-            .fold(false, |started, s| started || s)
+        let mut started = false;
+        for k in 0..WINDOW_ATTEMPTS {
+            started |= r.attempted(k < led);
+        }
+        started
     }
 
     #[test]
