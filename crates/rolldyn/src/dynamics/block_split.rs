@@ -131,9 +131,8 @@ impl BlockSplit for PartOf<'_> {
         BallCoupling::LEN
     }
 
-    /// The fast part's blocks cost too little to share out.
     fn parallel(&self) -> bool {
-        self.part == Part::Whole && self.model.ball_pass.is_parallel()
+        self.model.ball_pass.is_parallel()
     }
 
     /// Without the raceway contacts the balls do not read the rings.

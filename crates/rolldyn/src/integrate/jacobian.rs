@@ -160,7 +160,12 @@ pub struct JacobianWork {
     /// ∂f_B/∂C transposed (c rows of m): the border's derivative with
     /// respect to the coupling sum.
     border_gradient: Vec<f64>,
-    /// Per block: see [`SAVED`], [`DELTA`], [`SCRATCH`].
+    /// Per block: its perturbed coupling for each border column (m × c).
+    border_couplings: Vec<f64>,
+    /// One copy of y per chunk of blocks (per thread of the pool the work
+    /// was made in).
+    y_copies: Vec<f64>,
+    /// Per block: its right-hand side, a coupling and a border change.
     block_scratch: Vec<f64>,
     block_stride: usize,
 }
@@ -174,7 +179,9 @@ impl JacobianWork {
             .map(|s| (s.block_layout(), s.coupling_len(), s.memo_len()))
             .unwrap_or((BlockLayout::dense(n), 0, 0));
         let blocks = layout.blocks;
-        let block_stride = SCRATCH + layout.block_size.max(layout.border) + c + layout.border;
+        // A block's scratch: its right-hand side (max(b, m)), perturbed
+        // coupling (c) and the border's change (m).
+        let block_stride = layout.block_size.max(layout.border) + c + layout.border;
         let mut scale = vec![0.0; n];
         system.error_scale(&mut scale);
         let mut absolute = vec![false; n];
@@ -194,6 +201,8 @@ impl JacobianWork {
             coupling_sum: vec![0.0; c],
             coupling_trial: vec![0.0; c],
             border_gradient: vec![0.0; c * layout.border],
+            border_couplings: vec![0.0; blocks * layout.border * c],
+            y_copies: vec![0.0; n * rayon::current_num_threads().clamp(1, blocks.max(1))],
             block_scratch: vec![0.0; blocks * block_stride],
             block_stride,
         }
@@ -325,113 +334,93 @@ fn by_blocks(
             work.border_gradient[i * m + r] = (work.f_perturbed[r] - work.f[start + r]) / delta;
         }
     }
-    // Block columns: column k of every block perturbed at once (block j's
-    // right-hand side reads only its own states and the border's), each
-    // block evaluated on its own.
-    for k in 0..b {
-        let mut swept = false;
-        for (j, scratch) in work.block_scratch.chunks_mut(stride).enumerate() {
-            let col = j * b + k;
-            if split.inert(col) {
-                continue;
-            }
-            swept = true;
-            let delta = increment(work.y[col], work.scale[col], work.sized[col]);
-            scratch[SAVED] = work.y[col];
-            scratch[DELTA] = delta;
-            work.y[col] += delta;
+    // Every block's columns and border columns, the blocks shared out in
+    // contiguous chunks, one per thread: block j reads only its own states
+    // and the border's, so a chunk perturbs its blocks' states, and the
+    // border's, in its own copy of y. Each block's numbers are those of a
+    // serial sweep whatever the chunks (one hand-over per Jacobian, not
+    // one per column).
+    let n = layout.dimension();
+    let chunks = if parallel { work.y_copies.len() / n } else { 1 };
+    let per_chunk = layout.blocks.div_ceil(chunks.max(1)).max(1);
+    let cols = Columns {
+        split,
+        t,
+        y: &work.y,
+        f: &work.f,
+        couplings: &work.couplings,
+        memos: &work.memos,
+        memo_len,
+        gradient: &work.border_gradient,
+        scale: &work.scale,
+        sized: &work.sized,
+    };
+    let run = |ci: usize,
+               (diag, lower, upper): (&mut [f64], &mut [f64], &mut [f64]),
+               (scratch, perturbed, y): (&mut [f64], &mut [f64], &mut [f64])| {
+        y.copy_from_slice(cols.y);
+        let first = ci * per_chunk;
+        for (local, j) in (first..(first + per_chunk).min(layout.blocks)).enumerate() {
+            cols.block(
+                j,
+                y,
+                (
+                    &mut diag[local * b * b..][..b * b],
+                    &mut lower[local * m * b..][..m * b],
+                    &mut upper[local * b * m..][..b * m],
+                ),
+                &mut scratch[local * stride..][..stride],
+                &mut perturbed[local * m * c..][..m * c],
+            );
         }
-        let (y, f, couplings, gradient) =
-            (&work.y, &work.f, &work.couplings, &work.border_gradient);
-        each_block3(
-            parallel,
-            (&mut jacobian.diag, b * b),
-            (&mut jacobian.lower, m * b),
-            (&mut work.block_scratch, stride),
-            |j, diag, lower, scratch| {
-                let col = j * b + k;
-                if split.inert(col) {
-                    (0..b).for_each(|r| diag[r * b + k] = 0.0);
-                    (0..m).for_each(|r| lower[r * b + k] = 0.0);
-                    return;
-                }
-                let delta = scratch[DELTA];
-                let (head, rest) = scratch[SCRATCH..].split_at_mut(b.max(m));
-                let (perturbed, border) = rest.split_at_mut(c);
-                split.block_rhs(t, y, j, &mut head[..b], perturbed);
-                for r in 0..b {
-                    diag[r * b + k] = (head[r] - f[j * b + r]) / delta;
-                }
-                // f_B's change: G times the coupling's.
-                let border = &mut border[..m];
-                border.fill(0.0);
-                let cj = &couplings[j * c..(j + 1) * c];
-                for (i, (p, base)) in perturbed.iter().zip(cj).enumerate() {
-                    let change = p - base;
-                    if change != 0.0 {
-                        for (v, g) in border.iter_mut().zip(&gradient[i * m..(i + 1) * m]) {
-                            *v += g * change;
-                        }
-                    }
-                }
-                for r in 0..m {
-                    lower[r * b + k] = border[r] / delta;
-                }
-            },
+    };
+    if chunks > 1 {
+        jacobian
+            .diag
+            .par_chunks_mut(per_chunk * b * b)
+            .zip(jacobian.lower.par_chunks_mut(per_chunk * m * b))
+            .zip(jacobian.upper.par_chunks_mut(per_chunk * b * m))
+            .zip(work.block_scratch.par_chunks_mut(per_chunk * stride))
+            .zip(work.border_couplings.par_chunks_mut(per_chunk * m * c))
+            .zip(work.y_copies.par_chunks_mut(n))
+            .enumerate()
+            .for_each(|(ci, (((((d, l), u), s), p), y))| run(ci, (d, l, u), (s, p, y)));
+    } else {
+        let y = &mut work.y_copies[..n];
+        run(
+            0,
+            (&mut jacobian.diag, &mut jacobian.lower, &mut jacobian.upper),
+            (&mut work.block_scratch, &mut work.border_couplings, y),
         );
-        for (j, scratch) in work.block_scratch.chunks(stride).enumerate() {
-            let col = j * b + k;
-            if !split.inert(col) {
-                work.y[col] = scratch[SAVED];
-            }
-        }
-        cost += u64::from(swept);
     }
-    // Border columns: each a full right-hand side.
+    for k in 0..b {
+        cost += u64::from((0..layout.blocks).any(|j| !split.inert(j * b + k)));
+    }
+    // Border rows of the border columns: the blocks' perturbed couplings
+    // summed in block order.
     for p in 0..m {
         let col = start + p;
         if split.inert(col) {
-            for j in 0..layout.blocks {
-                (0..b).for_each(|r| jacobian.upper[j * b * m + r * m + p] = 0.0);
-            }
             (0..m).for_each(|r| jacobian.border[r * m + p] = 0.0);
             continue;
         }
         let delta = work.increment(col);
         let saved = work.y[col];
         work.y[col] += delta;
-        if !split.blocks_read(p) {
-            for j in 0..layout.blocks {
-                (0..b).for_each(|r| jacobian.upper[j * b * m + r * m + p] = 0.0);
-            }
-            split.border_rhs(t, &work.y, &work.coupling_sum, &mut work.f_perturbed[..m]);
-            work.y[col] = saved;
-            for r in 0..m {
-                jacobian.border[r * m + p] = (work.f_perturbed[r] - work.f[start + r]) / delta;
-            }
-            continue;
-        }
-        cost += 1;
-        let (y, f, memos) = (&work.y, &work.f, &work.memos);
-        each_block2(
-            parallel,
-            (&mut jacobian.upper, b * m),
-            (&mut work.block_scratch, stride),
-            |j, upper, scratch| {
-                let (head, rest) = scratch[SCRATCH..].split_at_mut(b.max(m));
-                let memo = &memos[j * memo_len..(j + 1) * memo_len];
-                split.block_rhs_border_column(t, y, j, p, memo, &mut head[..b], &mut rest[..c]);
-                for r in 0..b {
-                    upper[r * m + p] = (head[r] - f[j * b + r]) / delta;
+        if split.blocks_read(p) {
+            cost += 1;
+            work.coupling_trial.fill(0.0);
+            for perturbed in work.border_couplings.chunks(m * c) {
+                for (s, v) in work
+                    .coupling_trial
+                    .iter_mut()
+                    .zip(&perturbed[p * c..(p + 1) * c])
+                {
+                    *s += v;
                 }
-            },
-        );
-        work.coupling_trial.fill(0.0);
-        for scratch in work.block_scratch.chunks(stride) {
-            let perturbed = &scratch[SCRATCH + b.max(m)..SCRATCH + b.max(m) + c];
-            for (s, v) in work.coupling_trial.iter_mut().zip(perturbed) {
-                *s += v;
             }
+        } else {
+            work.coupling_trial.copy_from_slice(&work.coupling_sum);
         }
         split.border_rhs(t, &work.y, &work.coupling_trial, &mut work.f_perturbed[..m]);
         work.y[col] = saved;
@@ -442,12 +431,93 @@ fn by_blocks(
     cost
 }
 
-/// Offsets in a block's scratch: the perturbed state's saved value and
-/// increment, then its right-hand side (max(b, m)), perturbed coupling (c)
-/// and the border's change (m).
-const SAVED: usize = 0;
-const DELTA: usize = 1;
-const SCRATCH: usize = 2;
+/// What a block's columns read: the split, the unperturbed point and its
+/// values, and the border's derivative with respect to the coupling sum.
+struct Columns<'a> {
+    split: &'a dyn BlockSplit,
+    t: f64,
+    y: &'a [f64],
+    f: &'a [f64],
+    couplings: &'a [f64],
+    memos: &'a [f64],
+    memo_len: usize,
+    gradient: &'a [f64],
+    scale: &'a [f64],
+    sized: &'a [bool],
+}
+
+impl Columns<'_> {
+    /// Block j's columns (its diagonal block and lower border) and its
+    /// rows of the border columns (upper border), with `y` a copy of the
+    /// point that is left as it was; the perturbed couplings of the border
+    /// columns into `perturbed` (m rows of c).
+    fn block(
+        &self,
+        j: usize,
+        y: &mut [f64],
+        (diag, lower, upper): (&mut [f64], &mut [f64], &mut [f64]),
+        scratch: &mut [f64],
+        perturbed: &mut [f64],
+    ) {
+        let split = self.split;
+        let layout = split.block_layout();
+        let (b, m, start) = (layout.block_size, layout.border, layout.border_start());
+        let c = split.coupling_len();
+        let (head, rest) = scratch.split_at_mut(b.max(m));
+        let (coupling, change) = rest.split_at_mut(c);
+        let (f_j, c_j) = (
+            &self.f[j * b..(j + 1) * b],
+            &self.couplings[j * c..(j + 1) * c],
+        );
+        for k in 0..b {
+            let col = j * b + k;
+            if split.inert(col) {
+                (0..b).for_each(|r| diag[r * b + k] = 0.0);
+                (0..m).for_each(|r| lower[r * b + k] = 0.0);
+                continue;
+            }
+            let delta = increment(y[col], self.scale[col], self.sized[col]);
+            let saved = y[col];
+            y[col] += delta;
+            split.block_rhs(self.t, y, j, &mut head[..b], coupling);
+            y[col] = saved;
+            for r in 0..b {
+                diag[r * b + k] = (head[r] - f_j[r]) / delta;
+            }
+            // f_B's change: G times the coupling's.
+            let change = &mut change[..m];
+            change.fill(0.0);
+            for (i, (p, base)) in coupling.iter().zip(c_j).enumerate() {
+                let dc = p - base;
+                if dc != 0.0 {
+                    for (v, g) in change.iter_mut().zip(&self.gradient[i * m..(i + 1) * m]) {
+                        *v += g * dc;
+                    }
+                }
+            }
+            for r in 0..m {
+                lower[r * b + k] = change[r] / delta;
+            }
+        }
+        let memo = &self.memos[j * self.memo_len..(j + 1) * self.memo_len];
+        for p in 0..m {
+            let col = start + p;
+            if split.inert(col) || !split.blocks_read(p) {
+                (0..b).for_each(|r| upper[r * m + p] = 0.0);
+                continue;
+            }
+            let delta = increment(y[col], self.scale[col], self.sized[col]);
+            let saved = y[col];
+            y[col] += delta;
+            let out = &mut perturbed[p * c..(p + 1) * c];
+            split.block_rhs_border_column(self.t, y, j, p, memo, &mut head[..b], out);
+            y[col] = saved;
+            for r in 0..b {
+                upper[r * m + p] = (head[r] - f_j[r]) / delta;
+            }
+        }
+    }
+}
 
 /// `per_block(j, a_j, b_j)` for every block j, where a_j and b_j are the
 /// j-th chunks of the given lengths; across threads when `parallel`. Each
