@@ -466,7 +466,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
             }
             let summary = run::run_case(&record, &case, dir, &options)?;
             let text = format!(
-                "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS, {} Jacobians costing {} RHS, {} refreshes of their fast part, {} factorizations)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e} (accuracy {})\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
+                "{}: simulated {:.4} s of {:.4} s in {:.1} s wall ({}: {} steps, {} rejected, {} RHS, {} Jacobians costing {} RHS, {} fast-part Jacobians, {} factorizations)\nmean cage speed {:.1} rpm (pure rolling {:.1} rpm, sliding rate {:+.4}); energy balance error {:.2e} (accuracy {})\nwrote {}/timeseries.parquet ({} samples) and {}/summary.json\n",
                 summary.status,
                 summary.simulated_time_s,
                 summary.requested_duration_s,

@@ -34,8 +34,7 @@ pub struct Summary {
     pub rhs_evaluations: u64,
     pub jacobian_evaluations: u64,
     pub jacobian_rhs_evaluations: u64,
-    /// Refreshes of the Jacobian's fast part (pockets and cage) between
-    /// full Jacobians.
+    /// Evaluations of the Jacobian's fast part (pockets and cage).
     pub fast_part_jacobians: u64,
     pub factorizations: u64,
     /// `auto`: accepted steps of its explicit method (DOPRI5) and

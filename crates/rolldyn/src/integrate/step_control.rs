@@ -22,8 +22,9 @@ pub struct IntegrationStats {
     pub jacobian_rhs_evaluations: u64,
     /// LU factorizations of the iteration matrix (implicit methods).
     pub factorizations: u64,
-    /// Refreshes of the Jacobian's fast part between full Jacobians
-    /// (implicit methods, systems with a fast part: `rosenbrock::fast_part`).
+    /// Evaluations of the Jacobian's fast part, between full Jacobians and
+    /// with them while it is refreshing (implicit methods, systems with a
+    /// fast part: `rosenbrock::fast_part`).
     pub fast_part_jacobians: u64,
 }
 

@@ -379,8 +379,10 @@ impl Rosenbrock {
         self.jacobian_age = Some(0);
         self.factored_step = None;
         self.gathered = false;
-        if let Some(fast) = &mut self.fast {
-            fast.split(system, (self.t, &self.y), &self.jacobian, &mut self.work);
+        if let Some(fast) = &mut self.fast
+            && fast.split(system, (self.t, &self.y), &self.jacobian, &mut self.work)
+        {
+            self.stats.fast_part_jacobians += 1;
         }
     }
 
