@@ -79,6 +79,11 @@ impl FastRefresh {
         })
     }
 
+    /// Whether J_F is refreshed at every step now.
+    pub(super) fn refreshing(&self) -> bool {
+        self.refreshing
+    }
+
     /// After a full Jacobian `full` at (t, y): while refreshing, J_F there
     /// and the slow rest J − J_F. Returns whether it differenced J_F.
     pub(super) fn split(
