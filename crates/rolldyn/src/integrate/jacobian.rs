@@ -6,10 +6,22 @@
 //! column grouping of Curtis, Powell & Reid, *J. Inst. Math. Appl.* 13,
 //! 1974), and because each block reports its own contribution to the
 //! border derivatives, the border rows Lⱼ = ∂f_B/∂yⱼ are recovered block by
-//! block, not summed. A sweep costs one right-hand side, so the blocks cost
+//! block, not summed: by the chain rule Lⱼ = (∂f_B/∂C)(∂cⱼ/∂yⱼ), with the
+//! border's derivative with respect to the coupling sum C differenced once
+//! per Jacobian. A sweep costs one right-hand side, so the blocks cost
 //! `block_size` right-hand sides, and each border column one more. States
 //! the system marks inert (f does not read them, or they never change)
 //! are skipped. Dense systems fall back to one right-hand side per column.
+//!
+//! Threads: the blocks are shared out in contiguous chunks, one per thread,
+//! each differencing all the columns of its blocks in its own copy of the
+//! state (one hand-over per Jacobian); every block's numbers are a serial
+//! sweep's, and the border columns' couplings are summed in block order,
+//! so the Jacobian is the same whatever the threads.
+//!
+//! A split may also offer a **fast part** ([`BlockSplit::with_fast_part`],
+//! [`fast_part_difference`]), whose Jacobian an implicit method refreshes
+//! more often than the whole one.
 //!
 //! Increments: δᵢ = √ε · max(|yᵢ|, sᵢ), sᵢ the system's error scale
 //! (Hairer & Wanner, *Solving ODEs II*, §IV.8). The states judged
