@@ -289,10 +289,7 @@ pub(crate) fn solver(data: &RunData) -> Option<Section> {
             ("rhs_evaluations", "right-hand-side evaluations"),
             ("jacobian_evaluations", "Jacobians"),
             ("jacobian_rhs_evaluations", "RHS evaluations for Jacobians"),
-            (
-                "fast_part_jacobians",
-                "refreshes of the Jacobian's fast part",
-            ),
+            ("fast_part_jacobians", "Jacobians of the fast part"),
             ("factorizations", "factorizations"),
             ("samples", "samples recorded"),
             ("sample_rate_hz", "sample rate [Hz]"),
