@@ -123,10 +123,15 @@ fn displaced_keys(table_path: &str, key: &str) -> Vec<&'static str> {
     }
 }
 
-/// Sets `value` at `path` (creating tables), removing displaced keys. A
-/// number after an array of tables picks its entry, from 0
-/// (`surface.outer.spall.0.length`).
-fn set_path(table: &mut Table, path: &str, value: Value) -> Result<(), String> {
+/// Sets `value` at `path` (creating tables), removing displaced keys; the
+/// dotted paths of those it removed go to `displaced`. A number after an
+/// array of tables picks its entry, from 0 (`surface.outer.spall.0.length`).
+fn set_path(
+    table: &mut Table,
+    path: &str,
+    value: Value,
+    displaced: &mut Vec<String>,
+) -> Result<(), String> {
     let parts: Vec<&str> = path.split('.').collect();
     let (leaf, parents) = parts.split_last().ok_or("empty key")?;
     let mut current = table;
@@ -162,15 +167,19 @@ fn set_path(table: &mut Table, path: &str, value: Value) -> Result<(), String> {
             .ok_or_else(|| format!("{} is not a table", parts[..=i].join(".")))?;
         i += 1;
     }
-    for k in displaced_keys(&parents.join("."), leaf) {
-        current.remove(k);
+    let table_path = parents.join(".");
+    for k in displaced_keys(&table_path, leaf) {
+        if current.remove(k).is_some() {
+            displaced.push(format!("{table_path}.{k}"));
+        }
     }
     current.insert(leaf.to_string(), value);
     Ok(())
 }
 
-/// Overlays `top` on `base`, table by table, removing displaced keys.
-fn overlay(base: &mut Table, top: &Table, path: &str) {
+/// Overlays `top` on `base`, table by table, removing displaced keys (their
+/// dotted paths to `displaced`).
+fn overlay(base: &mut Table, top: &Table, path: &str, displaced: &mut Vec<String>) {
     for (k, v) in top {
         let child = if path.is_empty() {
             k.clone()
@@ -178,10 +187,12 @@ fn overlay(base: &mut Table, top: &Table, path: &str) {
             format!("{path}.{k}")
         };
         match (base.get_mut(k), v) {
-            (Some(Value::Table(b)), Value::Table(t)) => overlay(b, t, &child),
+            (Some(Value::Table(b)), Value::Table(t)) => overlay(b, t, &child, displaced),
             _ => {
                 for d in displaced_keys(path, k) {
-                    base.remove(d);
+                    if base.remove(d).is_some() {
+                        displaced.push(format!("{path}.{d}"));
+                    }
                 }
                 base.insert(k.clone(), v.clone());
             }
@@ -407,8 +418,11 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
         error
     })?;
 
+    // Keys an override or the case removed from what it builds on (a
+    // radial_load replaced by force_z): their assumptions go with them.
+    let mut displaced = Vec::new();
     for o in overrides {
-        set_path(&mut table, &o.key, o.value.clone())
+        set_path(&mut table, &o.key, o.value.clone(), &mut displaced)
             .map_err(|rule| sources.error(Some(o.key.clone()), Some(o.value.to_string()), rule))?;
         sources
             .overrides
@@ -466,14 +480,15 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
                 .collect();
             merged.insert("assumptions".into(), Value::Table(inherited));
         }
-        overlay(&mut merged, &table, "");
+        overlay(&mut merged, &table, "", &mut displaced);
         sources.preset = Some((name, merged.clone()));
         table = merged;
     }
 
-    // A value given on the command line is no longer an assumption.
+    // A value given on the command line is no longer an assumption, nor
+    // is one it displaced.
     if let Some(Value::Table(assumed)) = table.get_mut("assumptions") {
-        for key in sources.overrides.keys() {
+        for key in sources.overrides.keys().chain(&displaced) {
             assumed.remove(key);
         }
     }
@@ -520,18 +535,48 @@ mod tests {
             "[[surface.outer.spall]]\nlength = \"1 mm\"\n[[surface.outer.spall]]\nlength = \"2 mm\"\n",
         )
         .unwrap();
+        let mut displaced = Vec::new();
         set_path(
             &mut table,
             "surface.outer.spall.1.length",
             Value::from("3 mm"),
+            &mut displaced,
         )
         .unwrap();
         let spalls = table["surface"]["outer"]["spall"].as_array().unwrap();
         assert_eq!(spalls[0]["length"].as_str(), Some("1 mm"));
         assert_eq!(spalls[1]["length"].as_str(), Some("3 mm"));
-        let beyond = set_path(&mut table, "surface.outer.spall.2.length", Value::from(1));
+        let mut set = |path: &str| set_path(&mut table, path, Value::from(1), &mut displaced);
+        let beyond = set("surface.outer.spall.2.length");
         assert!(beyond.unwrap_err().contains("has 2 entries"));
-        let unnamed = set_path(&mut table, "surface.outer.spall.length", Value::from(1));
+        let unnamed = set("surface.outer.spall.length");
         assert!(unnamed.unwrap_err().contains("name an entry"));
+    }
+
+    #[test]
+    fn a_key_displaced_by_an_override_takes_its_assumption_along() {
+        let text = "[operating]\nspeed = \"1000 rpm\"\nradial_load = \"500 N\"\n\
+                    radial_load_angle = \"-90 deg\"\n\n[assumptions]\n\
+                    \"operating.radial_load\" = \"not published\"\n";
+        let mut table: Table = toml::from_str(text).unwrap();
+        let mut displaced = Vec::new();
+        set_path(
+            &mut table,
+            "operating.force_z",
+            Value::from("200 N"),
+            &mut displaced,
+        )
+        .unwrap();
+        assert_eq!(
+            displaced,
+            ["operating.radial_load", "operating.radial_load_angle"]
+        );
+        assert!(!has_path(&table, "operating.radial_load"));
+        // The whole load: the CWRU example states an assumption on its
+        // radial_load; `--radial-load` (force_z) replaces both.
+        let cwru = include_str!("../../../examples/cwru6205/case.toml");
+        let flag = Override::flag("--radial-load", "operating.force_z", "-200 N");
+        let case = load_case("cwru6205", cwru, &[flag]).unwrap();
+        assert_eq!(case.loads.force[2], -200.0);
     }
 }
