@@ -27,8 +27,9 @@ pub const RECORD_FILE: &str = "run.json";
 /// The checkpoint's file name.
 pub const CHECKPOINT_FILE: &str = "checkpoint.bin";
 /// Version of `run.json` and `checkpoint.bin` (2: with the summary's
-/// statistics).
-const FORMAT: u64 = 2;
+/// statistics; 3: with the fast part's Jacobian refresh and the ball
+/// passages).
+const FORMAT: u64 = 3;
 /// First part of a checkpoint.
 const TAG: &str = "rolldyn-run-checkpoint";
 
@@ -93,9 +94,11 @@ impl RunRecord {
         })?;
         if record.format != FORMAT {
             return Err(format!(
-                "--resume {}: run record format {} (this rolldyn reads {FORMAT})",
+                "--resume {}: run record format {} of rolldyn {} (this rolldyn {} reads format {FORMAT}); resume it with the version that started it, or run the case again",
                 dir.display(),
-                record.format
+                record.format,
+                record.rolldyn_version,
+                env!("CARGO_PKG_VERSION"),
             ));
         }
         Ok(record)

@@ -114,6 +114,18 @@ pub(crate) const SENSOR_CHANNELS: [&str; 2] = [
     "sensor_housing_acceleration_m_s2",
 ];
 
+/// Where the summary times the balls' passages: the radial load's
+/// direction in the (y, z) plane, the centre of a stationary load zone
+/// \[rad\]; 6 o'clock (−z, the presets' gravity) without a radial load.
+fn passage_azimuth(loads: &rolldyn::operating::Loads) -> f64 {
+    let [_, y, z] = loads.force;
+    if y == 0.0 && z == 0.0 {
+        -std::f64::consts::FRAC_PI_2
+    } else {
+        z.atan2(y)
+    }
+}
+
 impl Channels {
     /// The channels of `model`'s run (`power_per_ball`: the case's
     /// per-ball power channels) over `duration` at `sample_rate`, recorded
@@ -221,7 +233,12 @@ impl Channels {
         });
         Self {
             slow,
-            stats: RunStatistics::new(&series, duration, sample_rate),
+            stats: RunStatistics::new(
+                &series,
+                duration,
+                sample_rate,
+                passage_azimuth(&params.loads.at(duration)),
+            ),
             projected: Vec::with_capacity(selected.len()),
             selected: (selected.len() < series.width()).then_some(selected),
             recorded,

@@ -70,6 +70,12 @@ pub struct Summary {
     pub mean_attitude_deg: f64,
     pub mean_yaw_deg: f64,
     pub max_abs_yaw_deg: f64,
+    /// Jitter of the balls' passage through the load zone's centre: the
+    /// standard deviation of the intervals between successive balls over
+    /// their mean \[1\] (null with fewer than two intervals in the window).
+    pub ball_pass_jitter: Option<f64>,
+    /// Their mean \[s\].
+    pub ball_pass_interval_s: Option<f64>,
     /// Vibration velocity RMS and cage-whirl metrics.
     #[serde(flatten)]
     pub vibration: VibrationSummary,
@@ -147,6 +153,7 @@ pub(crate) fn summarise(
         RunEnd::Failed { error } => ("failed", Some(error.to_string())),
     };
     let signal = window.signal();
+    let passages = window.passage_jitter();
     let characteristic = rolldyn::signal::CharacteristicFrequencies::new(
         inner_speed / 60.0,
         cage_speed / 60.0,
@@ -221,6 +228,8 @@ pub(crate) fn summarise(
         mean_attitude_deg: window.pooled_mean("attitude_deg"),
         mean_yaw_deg: window.pooled_mean("yaw_deg"),
         max_abs_yaw_deg: window.pooled_max_abs("yaw_deg"),
+        ball_pass_jitter: passages.map(|p| p.jitter),
+        ball_pass_interval_s: passages.map(|p| p.mean_interval),
         vibration: crate::vibration::summarise(&signal, 0, case.outer_ring.is_some()),
         surface_lines: crate::vibration::surface_lines(
             &signal,

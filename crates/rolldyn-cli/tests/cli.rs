@@ -405,6 +405,8 @@ fn run_writes_parquet_and_summary() {
         "mean_attitude_deg",
         "mean_yaw_deg",
         "max_abs_yaw_deg",
+        "ball_pass_jitter",
+        "ball_pass_interval_s",
         "steps",
         "rejected_steps",
         "rhs_evaluations",

@@ -143,6 +143,19 @@ fn resume_refuses_what_it_cannot_continue() {
     let o = rolldyn(&["run", "--resume", d], None);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("checkpoint"), "{}", stderr(&o));
+    // A run of another format (an older rolldyn's) is refused, saying so.
+    let record = std::fs::read_to_string(dir.join("run.json")).unwrap();
+    let mut old: serde_json::Value = serde_json::from_str(&record).unwrap();
+    old["format"] = 2.into();
+    std::fs::write(dir.join("run.json"), old.to_string()).unwrap();
+    let o = rolldyn(&["run", "--resume", d], None);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("format 2"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("version that started it"),
+        "{}",
+        stderr(&o)
+    );
     std::fs::remove_dir_all(&dir).ok();
 }
 

@@ -106,12 +106,14 @@ impl Section {
         self
     }
 
-    /// Adds a table.
+    /// Adds a table if it has rows.
     pub fn table(mut self, header: &[&str], rows: Vec<Vec<String>>) -> Self {
-        self.blocks.push(Block::Table {
-            header: header.iter().map(|h| h.to_string()).collect(),
-            rows,
-        });
+        if !rows.is_empty() {
+            self.blocks.push(Block::Table {
+                header: header.iter().map(|h| h.to_string()).collect(),
+                rows,
+            });
+        }
         self
     }
 }

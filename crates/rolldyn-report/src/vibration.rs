@@ -247,6 +247,19 @@ fn defect(data: &RunData) -> Option<Section> {
                 .collect()
         })
         .unwrap_or_default();
+    let passages = crate::run::rows(
+        data,
+        &[
+            (
+                "ball_pass_interval_s",
+                "mean interval between ball passages [s]",
+            ),
+            (
+                "ball_pass_jitter",
+                "ball-pass jitter: σ/mean of those intervals [1]",
+            ),
+        ],
+    );
     Some(
         Section::new("vibration", "Vibration: the defect's signature")
             .paragraph(format!(
@@ -262,6 +275,7 @@ fn defect(data: &RunData) -> Option<Section> {
                 cell(Some(c.cage)),
             ))
             .table(STATISTICS_HEADER, vec![statistics_row(record)])
+            .table(&["quantity", "value", "summary.json key"], passages)
             .table(&["line", "frequency [Hz]", "envelope amplitude [m/s²]"], line_rows)
             .figure(signal_plot)
             .figure(spectrum_plot)

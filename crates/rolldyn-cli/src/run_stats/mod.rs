@@ -22,7 +22,11 @@
 //! so a resumed run ends with the same numbers as a run never interrupted,
 //! whatever channels it chose to record, without reading its series back.
 
+mod passages;
+
+use passages::PassageWatch;
 use rolldyn::integrate::{CheckpointError, StateReader, StateWriter};
+use rolldyn::signal::passage::{IntervalSums, PassageJitter};
 use rolldyn_io::TimeSeries;
 use std::collections::VecDeque;
 
@@ -68,6 +72,8 @@ struct Block {
     min: Vec<f64>,
     loaded_sum: Vec<f64>,
     loaded_count: Vec<u64>,
+    /// Intervals between successive ball passages ending in the block.
+    passages: IntervalSums,
 }
 
 impl Block {
@@ -80,6 +86,7 @@ impl Block {
             self.first = other.first.clone();
         }
         self.count += other.count;
+        self.passages.merge(&other.passages);
         for i in 0..self.sum.len() {
             self.sum[i] += other.sum[i];
             self.max[i] = self.max[i].max(other.max[i]);
@@ -98,6 +105,7 @@ impl Block {
             min: vec![f64::INFINITY; width],
             loaded_sum: vec![0.0; width],
             loaded_count: vec![0; width],
+            passages: IntervalSums::default(),
         }
     }
 }
@@ -118,12 +126,19 @@ pub struct RunStatistics {
     signal_index: Vec<usize>,
     signal: VecDeque<[f64; SIGNAL_CHANNELS.len()]>,
     signal_capacity: usize,
+    passages: Option<PassageWatch>,
 }
 
 impl RunStatistics {
     /// Statistics of the channels of `template` over a run of `duration`
-    /// recorded at `sample_rate`.
-    pub fn new(template: &TimeSeries, duration: f64, sample_rate: f64) -> Self {
+    /// recorded at `sample_rate`; the balls' passages are timed at azimuth
+    /// `passage_azimuth` \[rad\].
+    pub fn new(
+        template: &TimeSeries,
+        duration: f64,
+        sample_rate: f64,
+        passage_azimuth: f64,
+    ) -> Self {
         let names: Vec<String> = template.names().to_vec();
         let index = |name: &str| names.iter().position(|n| n == name);
         let load_of = names
@@ -163,6 +178,7 @@ impl RunStatistics {
             signal_index,
             signal: VecDeque::new(),
             signal_capacity,
+            passages: PassageWatch::new(template.names(), passage_azimuth),
         }
     }
 
@@ -222,6 +238,20 @@ impl RunStatistics {
         self.last.clear();
         self.last.extend_from_slice(row);
         self.samples += 1;
+        if let Some(watch) = &mut self.passages {
+            let (blocks, length) = (&mut self.blocks, self.block_length);
+            watch.push(row, &mut |end, interval| {
+                let k = (end / length).floor();
+                let k = if k.is_finite() && k > 0.0 {
+                    k as usize
+                } else {
+                    0
+                };
+                if let Some(block) = blocks.get_mut(k) {
+                    block.passages.add(interval);
+                }
+            });
+        }
         let mut signal = [0.0; SIGNAL_CHANNELS.len()];
         for (s, &i) in signal.iter_mut().zip(&self.signal_index) {
             *s = row.get(i).copied().unwrap_or(0.0);
@@ -256,10 +286,17 @@ impl RunStatistics {
             for &n in &block.loaded_count {
                 w.u64(n);
             }
+            let p = &block.passages;
+            w.u64(p.count);
+            w.f64(p.mean);
+            w.f64(p.squared_deviations);
         }
         w.u64(self.signal.len() as u64);
         for row in &self.signal {
             w.f64s(row);
+        }
+        if let Some(watch) = &self.passages {
+            watch.save(w);
         }
     }
 
@@ -310,6 +347,11 @@ impl RunStatistics {
             for n in &mut block.loaded_count {
                 *n = r.u64()?;
             }
+            block.passages = IntervalSums {
+                count: r.u64()?,
+                mean: r.f64()?,
+                squared_deviations: r.f64()?,
+            };
         }
         // A run extended with --until keeps more (half its new duration);
         // one given a shorter duration keeps the newest that fit.
@@ -322,6 +364,9 @@ impl RunStatistics {
                 self.signal.pop_front();
             }
             self.signal.push_back(row);
+        }
+        if let Some(watch) = &mut self.passages {
+            watch.restore(r)?;
         }
         Ok(())
     }
@@ -462,6 +507,12 @@ impl Window<'_> {
             .map(|&i| self.merged.loaded_sum[i])
             .sum::<f64>()
             / count as f64
+    }
+
+    /// The jitter of the balls' passages ending in the window (None
+    /// without ball channels or with fewer than two intervals).
+    pub fn passage_jitter(&self) -> Option<PassageJitter> {
+        self.merged.passages.jitter()
     }
 
     /// The vibration and whirl channels the run has over the window (their

@@ -20,7 +20,7 @@ fn template() -> TimeSeries {
 #[test]
 fn window_statistics_equal_those_of_the_stored_series() {
     let (duration, rate) = (0.064, 1000.0);
-    let mut stats = RunStatistics::new(&template(), duration, rate);
+    let mut stats = RunStatistics::new(&template(), duration, rate, 0.0);
     let mut rows = Vec::new();
     for k in 0..=64 {
         let t = k as f64 / rate;
@@ -60,7 +60,7 @@ fn window_statistics_equal_those_of_the_stored_series() {
 /// An interrupted run's window is the second half of what it simulated.
 #[test]
 fn a_partial_run_averages_over_its_own_second_half() {
-    let mut stats = RunStatistics::new(&template(), 1.0, 100.0);
+    let mut stats = RunStatistics::new(&template(), 1.0, 100.0, 0.0);
     for k in 0..=40 {
         stats.push(&[k as f64 / 100.0, k as f64, 0.0, 0.0, 0.0, 0.0]);
     }
@@ -78,7 +78,7 @@ fn a_partial_run_averages_over_its_own_second_half() {
 /// A checkpoint's statistics restore to the same numbers.
 #[test]
 fn statistics_survive_a_checkpoint() {
-    let mut stats = RunStatistics::new(&template(), 0.064, 1000.0);
+    let mut stats = RunStatistics::new(&template(), 0.064, 1000.0, 0.0);
     for k in 0..40 {
         let t = k as f64 * 1e-3;
         stats.push(&[t, k as f64, (t * 300.0).sin(), 0.1, 0.0, -0.2]);
@@ -86,7 +86,7 @@ fn statistics_survive_a_checkpoint() {
     let mut w = StateWriter::new();
     stats.save(&mut w);
     let bytes = w.into_bytes();
-    let mut back = RunStatistics::new(&template(), 0.064, 1000.0);
+    let mut back = RunStatistics::new(&template(), 0.064, 1000.0, 0.0);
     let mut r = StateReader::new(&bytes);
     back.restore(&mut r).unwrap();
     assert!(r.is_done());
@@ -109,7 +109,7 @@ fn statistics_survive_a_checkpoint() {
     other.channel("time_s", "s");
     let mut r = StateReader::new(&bytes);
     assert!(
-        RunStatistics::new(&other, 1.0, 1.0)
+        RunStatistics::new(&other, 1.0, 1.0, 0.0)
             .restore(&mut r)
             .is_err()
     );
@@ -119,7 +119,7 @@ fn statistics_survive_a_checkpoint() {
 /// blocks, and its window is still the second half of the run.
 #[test]
 fn an_extended_run_merges_blocks_and_keeps_its_window() {
-    let mut stats = RunStatistics::new(&template(), 0.064, 1000.0);
+    let mut stats = RunStatistics::new(&template(), 0.064, 1000.0, 0.0);
     for k in 0..=1000 {
         stats.push(&[k as f64 / 1000.0, k as f64, 0.0, 0.0, 0.0, 0.0]);
     }
@@ -137,6 +137,82 @@ fn an_extended_run_merges_blocks_and_keeps_its_window() {
 /// The kept signal is bounded.
 #[test]
 fn the_signal_buffer_is_bounded() {
-    let stats = RunStatistics::new(&template(), 3600.0, 1e5);
+    let stats = RunStatistics::new(&template(), 3600.0, 1e5, 0.0);
     assert_eq!(stats.signal_capacity, SIGNAL_SAMPLES);
+}
+
+/// The balls' passage jitter over the window is that of the intervals
+/// between successive passages ending in it, and survives a checkpoint.
+#[test]
+fn passage_jitter_counts_the_windows_intervals_and_survives_a_checkpoint() {
+    let mut balls = TimeSeries::default();
+    for name in [
+        "time_s",
+        "ball0_azimuth_rad",
+        "ball1_azimuth_rad",
+        "ball2_azimuth_rad",
+    ] {
+        balls.channel(name, "1");
+    }
+    let (duration, rate, at) = (0.512, 1000.0, -std::f64::consts::FRAC_PI_2);
+    let pitch = std::f64::consts::TAU / 3.0;
+    // Ball 1 is 4 % of the pitch ahead, and all wobble a little.
+    let row = |k: usize| -> Vec<f64> {
+        let t = k as f64 / rate;
+        let mut row = vec![t];
+        for j in 0..3 {
+            let ahead = if j == 1 { 0.04 * pitch } else { 0.0 };
+            let wobble = 0.01 * (37.0 * t + j as f64).sin();
+            let a = j as f64 * pitch + ahead + wobble + 60.0 * t;
+            row.push(a.rem_euclid(std::f64::consts::TAU));
+        }
+        row
+    };
+    let mut stats = RunStatistics::new(&balls, duration, rate, at);
+    let mut resumed = RunStatistics::new(&balls, duration, rate, at);
+    for k in 0..=512 {
+        stats.push(&row(k));
+        if k == 300 {
+            let mut w = StateWriter::new();
+            stats.save(&mut w);
+            let bytes = w.into_bytes();
+            let mut r = StateReader::new(&bytes);
+            resumed.restore(&mut r).unwrap();
+            assert!(r.is_done());
+        }
+        if k > 300 {
+            resumed.push(&row(k));
+        }
+    }
+    let jitter = stats.window().passage_jitter().unwrap();
+    assert_eq!(Some(jitter), resumed.window().passage_jitter());
+    // The same from all passages at once: those ending in the window
+    // (from 0.256 s, a sample on a block boundary).
+    let mut detector = rolldyn::signal::passage::PassageDetector::new(at);
+    let mut passages = Vec::new();
+    for k in 0..=512 {
+        let r = row(k);
+        detector.push(r[0], r[1..].iter().copied(), &mut |p| passages.push(p));
+    }
+    passages.sort_by(f64::total_cmp);
+    let intervals: Vec<f64> = passages
+        .windows(2)
+        .filter(|w| w[1] >= 0.256)
+        .map(|w| w[1] - w[0])
+        .collect();
+    let n = intervals.len() as f64;
+    let mean = intervals.iter().sum::<f64>() / n;
+    let sd = (intervals.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / n).sqrt();
+    assert_eq!(jitter.intervals, intervals.len());
+    assert!((jitter.mean_interval - mean).abs() < 1e-12);
+    assert!((jitter.jitter - sd / mean).abs() < 1e-9);
+    // Ball 1 ahead by 4 % of the pitch: intervals p(1 ± 0.04) and p.
+    assert!(jitter.jitter > 0.02 && jitter.jitter < 0.05, "{jitter:?}");
+    // Without ball channels there is none.
+    assert_eq!(
+        RunStatistics::new(&template(), 0.064, 1000.0, 0.0)
+            .window()
+            .passage_jitter(),
+        None
+    );
 }

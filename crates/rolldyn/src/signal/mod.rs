@@ -2,7 +2,7 @@
 //! Welch power spectral density, envelope spectra, spectrograms, band-limited vibration
 //! velocity RMS, the bearing's characteristic frequencies with harmonics and
 //! sidebands, a peak list that names the nearest line, and cage-whirl
-//! metrics (Deng et al. 2022 eq 41).
+//! metrics (Deng et al. 2022 eq 41) and the jitter of the ball passage.
 //!
 //! Everything works on uniformly sampled records (the recorder's fixed
 //! rate). FFTs are real-to-complex (realfft/rustfft); records are
@@ -13,6 +13,7 @@
 //! per segment, `scaling = "density"`), so results can be checked against it.
 
 pub mod lines;
+pub mod passage;
 pub mod sensor;
 pub mod spectrogram;
 pub mod spectrum;
@@ -20,6 +21,7 @@ pub mod statistics;
 pub mod whirl;
 
 pub use lines::{CharacteristicFrequencies, Line, Peak, find_peaks};
+pub use passage::{PassageJitter, passage_jitter};
 pub use sensor::{HousingMode, SensorChain, SensorSample, SensorSpec};
 pub use spectrogram::{Spectrogram, spectrogram};
 pub use spectrum::{
