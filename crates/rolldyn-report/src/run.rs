@@ -338,15 +338,29 @@ fn cage_speed(data: &RunData) -> Option<Section> {
             Style::Dashed,
         ));
     }
+    let section = Section::new("cage", "Cage speed against pure rolling")
+        .paragraph(format!(
+            "Mean cage speed {} rpm against {} rpm in pure rolling with the solved contact angles: sliding rate {} (positive: the cage lags).",
+            cell(data.number("mean_cage_speed_rpm")),
+            cell(data.number("pure_rolling_cage_speed_rpm")),
+            cell(data.number("cage_sliding_rate"))
+        ))
+        .figure(plot);
+    // A ring that changes speed (a speed profile, a torque drive): its own plot.
+    let varies = data.channel("inner_ring_speed_rpm").is_some_and(|v| {
+        let (low, high) = v
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
+                (l.min(*x), h.max(*x))
+            });
+        high - low > 1e-6 * high.abs().max(low.abs())
+    });
     Some(
-        Section::new("cage", "Cage speed against pure rolling")
-            .paragraph(format!(
-                "Mean cage speed {} rpm against {} rpm in pure rolling with the solved contact angles: sliding rate {} (positive: the cage lags).",
-                cell(data.number("mean_cage_speed_rpm")),
-                cell(data.number("pure_rolling_cage_speed_rpm")),
-                cell(data.number("cage_sliding_rate"))
-            ))
-            .figure(plot),
+        match data.against_time("inner_ring_speed_rpm", "inner ring", 1.0) {
+            Some(inner) if varies => section
+                .figure(Plot::new("Inner-ring speed", "time [ms]", "speed [rpm]").with(inner)),
+            _ => section,
+        },
     )
 }
 

@@ -60,7 +60,8 @@ fn check_page(html: &str) -> (Vec<String>, usize) {
     (sections, plots)
 }
 
-fn synthetic_run(dir: &std::path::Path) {
+/// A synthetic run; its inner ring accelerates by `ramp` rpm/s.
+fn synthetic_run(dir: &std::path::Path, ramp: f64) {
     let mut s = TimeSeries::default();
     let names = [
         ("time_s", "s"),
@@ -85,7 +86,7 @@ fn synthetic_run(dir: &std::path::Path) {
         let phase = 2.0 * std::f64::consts::PI * 800.0 * t;
         s.push(&[
             t,
-            10_000.0,
+            10_000.0 + ramp * t,
             4440.0 + phase.sin(),
             0.4447,
             1e-6 * phase.cos(),
@@ -123,7 +124,7 @@ fn synthetic_run(dir: &std::path::Path) {
 #[test]
 fn run_report_has_every_section_and_plot() {
     let dir = temp_dir("run");
-    synthetic_run(&dir);
+    synthetic_run(&dir, 0.0);
     let report = report_for(&dir, Some("geometry: <described>".into())).unwrap();
     let html = report.to_html();
     let (sections, plots) = check_page(&html);
@@ -143,6 +144,12 @@ fn run_report_has_every_section_and_plot() {
     // The undefined summary value shows as a dash, the nested one by its path.
     assert!(html.contains("<td>outer_ring_velocity_rms_y_mm_s</td><td>—</td>"));
     assert!(html.contains("<td>mean_power_loss_by_component_w.guide_land</td>"));
+    assert!(!html.contains("Inner-ring speed"));
+    // A ring that changes speed gets its own plot.
+    synthetic_run(&dir, 1e5);
+    let html = report_for(&dir, None).unwrap().to_html();
+    assert_eq!(check_page(&html).1, 7);
+    assert!(html.contains("Inner-ring speed"));
 }
 
 #[test]
@@ -294,7 +301,7 @@ fn with_speeds(dir: &std::path::Path, extra: serde_json::Value) -> serde_json::V
 #[test]
 fn a_spalled_run_has_a_vibration_section() {
     let dir = temp_dir("spalled");
-    synthetic_run(&dir);
+    synthetic_run(&dir, 0.0);
     // The acceleration: a 3 kHz resonance rung at BPFO = 100 Hz.
     let mut s = TimeSeries::default();
     s.channel("time_s", "s");
@@ -340,7 +347,7 @@ fn a_spalled_run_has_a_vibration_section() {
 #[test]
 fn a_wavy_run_has_a_vibration_section() {
     let dir = temp_dir("wavy");
-    synthetic_run(&dir);
+    synthetic_run(&dir, 0.0);
     let mut s = TimeSeries::default();
     s.channel("time_s", "s");
     s.channel("inner_ring_acceleration_z_m_s2", "m/s^2");
@@ -384,7 +391,7 @@ fn a_wavy_run_has_a_vibration_section() {
 #[test]
 fn a_speed_ramp_has_a_spectrogram() {
     let dir = temp_dir("ramp");
-    synthetic_run(&dir);
+    synthetic_run(&dir, 0.0);
     // 600 → 1800 rpm in 1 s (or 1800 rpm throughout); the acceleration
     // rings at BPFO (order 3.6).
     let series = |ramp: bool| {
