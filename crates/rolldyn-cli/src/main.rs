@@ -403,6 +403,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 resume: resuming,
                 extends,
                 verify,
+                active_helpers: true,
                 ..Default::default()
             };
             if case.bearing_set().is_some() || case.shaft.is_some() {

@@ -151,6 +151,11 @@ pub struct RunOptions {
     /// times tighter tolerances and a two-fold finer traction grid, and
     /// report the changes in the summary's `accuracy.verify`.
     pub verify: bool,
+    /// Keep the pool's other threads waiting actively while the run
+    /// integrates, when its passes over the balls run in parallel
+    /// ([`rolldyn::threads`]): for a run that has the pool to itself (one
+    /// `rolldyn run`), never for the points of a sweep, which share it.
+    pub active_helpers: bool,
 }
 
 impl RunOptions {
@@ -255,6 +260,9 @@ pub(crate) fn run_once(
     let mut solver = settings
         .build(&model, &y0)
         .map_err(|e| bad(e.to_string()))?;
+    let _helpers = (options.active_helpers && model.runs_in_parallel())
+        .then(rolldyn::threads::ActiveHelpers::start)
+        .flatten();
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
     let record_hash = record.hash();
     let series_dir = dir.join(SERIES_DIR);

@@ -347,10 +347,12 @@ pub fn run(
         .map_err(|e| Failure::BadInput(format!("cannot create {}: {e}", dir.display())))?;
     let stop = options.stop_flag();
     let progress = options.progress.clone();
+    // The points share the pool: no active helpers (rolldyn::threads).
     let options = RunOptions {
         stop: Some(stop.clone()),
         quiet: true,
         progress: None,
+        active_helpers: false,
         ..options.clone()
     };
     // No bar when the caller follows the progress itself (the Python package).

@@ -442,7 +442,11 @@ fn run(
         .load_text(&source, text.as_deref())
         .map_err(to_py)?;
     let record = RunRecord::new(source, text, overrides, force);
-    let (options, stop, fraction) = run_options(force, verify);
+    let (mut options, stop, fraction) = run_options(force, verify);
+    // One run: the pool's other threads wait actively (rolldyn::threads;
+    // one set per process, so concurrent runs from several Python threads
+    // stay safe).
+    options.active_helpers = true;
     let dir = Path::new(directory);
     // A bearing set runs on its shaft (its own summary, docs/cli.md).
     let set = case.bearing_set().is_some() || case.shaft.is_some();

@@ -46,6 +46,7 @@ pub mod surface;
 #[cfg(any(test, feature = "testing"))]
 pub mod testing;
 pub mod thermal;
+pub mod threads;
 pub mod traction;
 
 pub use error::InvalidParameter;

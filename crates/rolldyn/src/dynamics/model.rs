@@ -617,6 +617,12 @@ impl BearingModel {
         self.thermal.as_deref()
     }
 
+    /// Whether its passes over the balls run across the current pool's
+    /// threads (traction over a grid, enough balls, more than one thread).
+    pub fn runs_in_parallel(&self) -> bool {
+        self.ball_pass.is_parallel()
+    }
+
     /// The coupling's update at an accepted step; true when the right-hand
     /// side changed (the viscosity).
     fn thermal_update(&mut self, t: f64, y: &[f64]) -> bool {
