@@ -14,6 +14,10 @@
 //! pairs (the blocks double in length). Memory: at most `MAX_BLOCKS` × 5
 //! numbers per channel, whatever the duration.
 //!
+//! Each block also keeps the intervals between successive ball passages
+//! that end in it (count, mean, squared deviations: `ball_pass_jitter`),
+//! timed sample by sample (`passages`).
+//!
 //! The vibration RMS and the cage-whirl metrics need the signal itself
 //! (a band filter, the orbit's centre): the few channels they use are kept
 //! for the last half of the duration, at most [`SIGNAL_SAMPLES`] samples.
@@ -61,6 +65,16 @@ const SIGNAL_CHANNELS: [&str; 13] = [
     "inner_ring_acceleration_z_m_s2",
     "sensor_acceleration_m_s2",
 ];
+
+/// The block of time `t` for blocks of `length` \[s\].
+fn block_index(t: f64, length: f64) -> usize {
+    let k = (t / length).floor();
+    if k.is_finite() && k > 0.0 {
+        k as usize
+    } else {
+        0
+    }
+}
 
 /// One block's statistics.
 #[derive(Debug, Clone)]
@@ -184,12 +198,7 @@ impl RunStatistics {
 
     /// The block of time `t`.
     fn block_of(&self, t: f64) -> usize {
-        let k = (t / self.block_length).floor();
-        if k.is_finite() && k > 0.0 {
-            k as usize
-        } else {
-            0
-        }
+        block_index(t, self.block_length)
     }
 
     /// Adds one sample (the recorder's row; its first value is the time).
@@ -241,13 +250,7 @@ impl RunStatistics {
         if let Some(watch) = &mut self.passages {
             let (blocks, length) = (&mut self.blocks, self.block_length);
             watch.push(row, &mut |end, interval| {
-                let k = (end / length).floor();
-                let k = if k.is_finite() && k > 0.0 {
-                    k as usize
-                } else {
-                    0
-                };
-                if let Some(block) = blocks.get_mut(k) {
+                if let Some(block) = blocks.get_mut(block_index(end, length)) {
                     block.passages.add(interval);
                 }
             });
