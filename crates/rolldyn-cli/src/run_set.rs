@@ -171,6 +171,10 @@ pub fn run(
     let mut solver = settings
         .build(&system, &y0)
         .map_err(|e| bad(e.to_string()))?;
+    let parallel = (0..count).any(|i| system.bearing(i).runs_in_parallel());
+    let _helpers = (options.active_helpers && parallel)
+        .then(rolldyn::threads::ActiveHelpers::start)
+        .flatten();
     let record_hash = record.hash();
     let metadata = [
         ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
