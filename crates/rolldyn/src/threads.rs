@@ -31,6 +31,9 @@ use std::time::{Duration, Instant};
 /// Whether a set of helpers runs in this process.
 static HELD: AtomicBool = AtomicBool::new(false);
 
+/// Idle rounds of a helper between yields to the operating system.
+const IDLE_ROUNDS_PER_YIELD: u32 = 64;
+
 /// Longest wait for the helpers to start before the run goes on without
 /// those that have not.
 const START_WAIT: Duration = Duration::from_millis(100);
@@ -66,9 +69,19 @@ impl ActiveHelpers {
                     return;
                 }
                 started.fetch_add(1, Ordering::AcqRel);
+                let mut idle = 0u32;
                 while !done.load(Ordering::Acquire) {
-                    if !matches!(rayon::yield_now(), Some(rayon::Yield::Executed)) {
-                        std::hint::spin_loop();
+                    if matches!(rayon::yield_now(), Some(rayon::Yield::Executed)) {
+                        idle = 0;
+                    } else {
+                        idle = idle.wrapping_add(1);
+                        // Now and then the operating system may run
+                        // something else here (more threads than cores).
+                        if idle % IDLE_ROUNDS_PER_YIELD == 0 {
+                            std::thread::yield_now();
+                        } else {
+                            std::hint::spin_loop();
+                        }
                     }
                 }
             });
