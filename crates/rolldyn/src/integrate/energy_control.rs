@@ -36,10 +36,16 @@
 //! takes back. The estimates' sum over a run is then bounded by
 //! ε (|W − W₀| + D), the scale the balance is judged on, whatever the number
 //! of steps (the error kept came within 3.4 ε of it on a drive exchanging
-//! 100 times its net work; unit test). The
-//! scaled error max(‖e‖, |ΔR̂| / allowance) goes to the step-size
-//! controller, so the same PI control rejects and
-//! shrinks steps for either reason.
+//! 100 times its net work; unit test).
+//!
+//! The states' scaled error ‖e‖ of a method of error order q goes as h^q,
+//! and the PI controller's exponents assume it. The energy's ratio
+//! |ΔR̂| / allowance goes as h^(q−1) (an error per unit step, HNW I §II.4),
+//! so it enters the controller as (|ΔR̂| / allowance)^(q/(q−1)): the same
+//! steps pass (the ratio ≤ 1 either way), and a step the energy decides is
+//! resized by the exponent its error follows (unit test in
+//! `rosenbrock`). The larger of the two goes to the step-size controller,
+//! so the same PI control rejects and shrinks steps for either reason.
 
 use super::OdeSystem;
 use super::checkpoint::{CheckpointError, StateReader, StateWriter};
@@ -100,6 +106,9 @@ pub const DEFAULT_ENERGY_TOLERANCE: f64 = 1e-4;
 #[derive(Debug, Clone)]
 pub(crate) struct EnergyControl {
     tolerance: f64,
+    /// q / (q − 1) for a method whose error scales as h^q (see
+    /// [`Self::scaled_error`]).
+    exponent: f64,
     /// Balance at the current accepted point (saved with a checkpoint).
     current: Option<EnergyBalance>,
     /// Drive work at the start of the control \[J\].
@@ -115,12 +124,20 @@ pub(crate) struct EnergyControl {
 }
 
 impl EnergyControl {
-    /// Control with tolerance ε for `system` from (t, y), or None when the
-    /// system keeps no energy balance.
-    pub(crate) fn new(system: &impl OdeSystem, tolerance: f64, t: f64, y: &[f64]) -> Option<Self> {
+    /// Control with tolerance ε for `system` from (t, y) under a method
+    /// whose error scales as h^`order`, or None when the system keeps no
+    /// energy balance.
+    pub(crate) fn new(
+        system: &impl OdeSystem,
+        tolerance: f64,
+        order: f64,
+        t: f64,
+        y: &[f64],
+    ) -> Option<Self> {
         let current = system.energy_balance(t, y)?;
         Some(Self {
             tolerance,
+            exponent: order / (order - 1.0),
             current: Some(current),
             origin_work: current.work,
             gross_work: 0.0,
@@ -131,7 +148,8 @@ impl EnergyControl {
     }
 
     /// Scaled energy error of a step of size h from (t, y) to (t + h, y₁),
-    /// whose embedded solution is y₁ − `error`: ≤ 1 passes.
+    /// whose embedded solution is y₁ − `error`: ≤ 1 passes; raised to
+    /// q/(q − 1) so that it scales as h^q like the states' error.
     pub(crate) fn scaled_error(
         &mut self,
         system: &impl OdeSystem,
@@ -168,7 +186,7 @@ impl EnergyControl {
         let allowed = self.tolerance
             * (turnover.max(h * POWER_FLOOR)
                 + EVENT_SHARE * (end.work.abs() + end.dissipated.abs()));
-        let scaled = estimate / allowed;
+        let scaled = (estimate / allowed).powf(self.exponent);
         if scaled.is_finite() {
             scaled
         } else {
@@ -258,15 +276,17 @@ mod tests {
 
     #[test]
     fn estimate_is_the_residual_change_between_the_solutions() {
-        let mut control = EnergyControl::new(&Oscillator, 1e-3, 0.0, &[1e-3, 0.0]).unwrap();
+        let mut control = EnergyControl::new(&Oscillator, 1e-3, 3.0, 0.0, &[1e-3, 0.0]).unwrap();
         let y = [1e-3, 0.0];
         let y_new = [1e-3, 1e-3];
         // Embedded solution y_new − e = (1e-3, 0): residual change 0.5e-6 J.
         let scaled = control.scaled_error(&Oscillator, 0.0, &y, 1e-6, &y_new, |k| {
             if k == 1 { 1e-3 } else { 0.0 }
         });
+        // Raised to q/(q − 1) = 3/2 for a method of error order 3.
         let allowed = 1e-3 * 1e-6 * POWER_FLOOR;
-        assert!((scaled - 0.5e-6 / allowed).abs() < 1e-9 * scaled);
+        let expected = (0.5e-6 / allowed).powf(1.5);
+        assert!((scaled - expected).abs() < 1e-9 * expected);
         // Equal solutions: no energy error.
         let scaled = control.scaled_error(&Oscillator, 0.0, &y, 1e-6, &y_new, |_| 0.0);
         assert_eq!(scaled, 0.0);
@@ -404,6 +424,6 @@ mod tests {
                 dy[0] = 0.0;
             }
         }
-        assert!(EnergyControl::new(&Plain, 1e-3, 0.0, &[0.0]).is_none());
+        assert!(EnergyControl::new(&Plain, 1e-3, 3.0, 0.0, &[0.0]).is_none());
     }
 }

@@ -190,7 +190,13 @@ impl ExplicitRk {
     /// system that keeps no balance. Call before the first step.
     pub fn with_energy_control(mut self, system: &impl OdeSystem, tolerance: f64) -> Self {
         if matches!(self.control, StepControl::Adaptive { .. }) && !self.tableau.error.is_empty() {
-            self.energy = EnergyControl::new(system, tolerance, self.t, &self.y);
+            self.energy = EnergyControl::new(
+                system,
+                tolerance,
+                f64::from(self.tableau.order),
+                self.t,
+                &self.y,
+            );
         }
         self
     }

@@ -324,7 +324,13 @@ impl Rosenbrock {
     /// ([`super::energy_control`]); no effect for a system that keeps no
     /// balance. Call before the first step.
     pub fn with_energy_control(mut self, system: &impl OdeSystem, tolerance: f64) -> Self {
-        self.energy = EnergyControl::new(system, tolerance, self.t, &self.y);
+        self.energy = EnergyControl::new(
+            system,
+            tolerance,
+            f64::from(self.tableau.order),
+            self.t,
+            &self.y,
+        );
         self
     }
 

@@ -182,3 +182,46 @@ fn stiff_van_der_pol_in_few_steps() {
     assert!(stats.jacobian_evaluations >= 1);
     assert!(stats.factorizations >= stats.jacobian_evaluations);
 }
+
+/// The energy control's scaled error shrinks with the step as the
+/// states' error does, h^q (q = 3 for ROS34PW2): the estimate (the
+/// embedded solution's local error, h³) over an allowance per unit step
+/// (h) goes as h², and raised to q/(q − 1) it gives the PI controller the
+/// exponent it assumes. A pendulum, θ'' = −sin θ, at 1 rad amplitude.
+#[test]
+fn scaled_energy_error_goes_as_the_states_error() {
+    use crate::integrate::energy_control::EnergyBalance;
+    struct Pendulum;
+    impl OdeSystem for Pendulum {
+        fn dimension(&self) -> usize {
+            2
+        }
+        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+            dy[0] = y[1];
+            dy[1] = -y[0].sin();
+        }
+        fn energy_balance(&self, _t: f64, y: &[f64]) -> Option<EnergyBalance> {
+            Some(EnergyBalance {
+                work: 0.0,
+                dissipated: 0.0,
+                mechanical: 0.5 * y[1] * y[1] + 1.0 - y[0].cos(),
+            })
+        }
+    }
+    let y0 = [0.3, 0.9];
+    let scaled = |h: f64| {
+        let mut r = Rosenbrock::new(&ROS34PW2, 0.5, 1.0, Some(h), &Pendulum, 0.0, &y0)
+            .unwrap()
+            .with_energy_control(&Pendulum, 1e-12);
+        r.evaluate_jacobian(&Pendulum);
+        r.attempt(&Pendulum, h)
+    };
+    for h in [0.05, 0.025, 0.0125] {
+        let ratio = scaled(h) / scaled(0.5 * h);
+        let exponent = ratio.log2();
+        assert!(
+            (exponent - 3.0).abs() < 0.3,
+            "h = {h}: err(h)/err(h/2) = 2^{exponent:.3}"
+        );
+    }
+}
