@@ -6,6 +6,9 @@ against `rolldyn run` on the same case.
     cargo build --release
     python3 scripts/exudyn_6304.py                # both, 3 pairs, medians
     python3 scripts/exudyn_6304.py --pairs 5 --duration 0.2
+    python3 scripts/exudyn_6304.py --set solver.energy_tolerance=0
+                                        # rolldyn with the error control
+                                        # Exudyn has: the states' only
 
 The model is the preset's (rolldyn new --preset 6304), built from Exudyn's
 own items so that Exudyn's C++ core does all the work (no Python in the
@@ -182,15 +185,17 @@ def exudyn_run(duration, rtol):
     return wall, cage_rpm
 
 
-def rolldyn_run(exe, duration, out):
-    """`rolldyn new --preset 6304 | rolldyn run -`; returns (wall s, cage rpm, steps)."""
+def rolldyn_run(exe, duration, out, overrides):
+    """`rolldyn new --preset 6304 | rolldyn run - [--set K=V ...]`; returns
+    (wall s, cage rpm, steps, energy balance)."""
     case = subprocess.run([exe, "new", "--preset", "6304"], check=True, capture_output=True, text=True).stdout
+    sets = [arg for kv in overrides for arg in ("--set", kv)]
     start = time.perf_counter()
-    subprocess.run([exe, "run", "-", "--duration", f"{duration} s", "-o", out], input=case, check=True, capture_output=True, text=True)
+    subprocess.run([exe, "run", "-", "--duration", f"{duration} s", "-o", out, *sets], input=case, check=True, capture_output=True, text=True)
     wall = time.perf_counter() - start
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
-    return wall, summary["mean_cage_speed_rpm"], summary["steps"]
+    return wall, summary["mean_cage_speed_rpm"], summary["steps"], summary["energy_balance_relative_error"]
 
 
 def main():
@@ -200,17 +205,19 @@ def main():
     parser.add_argument("--rtol", type=float, default=1e-3, help="Exudyn's relative tolerance (default 1e-3)")
     parser.add_argument("--rolldyn", default=os.path.join(os.path.dirname(__file__), "..", "target", "release", "rolldyn"))
     parser.add_argument("--exudyn-only", action="store_true")
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="override for rolldyn's case (repeatable), e.g. solver.energy_tolerance=0")
     args = parser.parse_args()
     import exudyn
 
-    print(f"Exudyn {exudyn.__version__}, {args.duration} s simulated, 6304 preset, whole runs (rolldyn as a process)")
+    overrides = " ".join(f"--set {kv}" for kv in args.set) or "its defaults"
+    print(f"Exudyn {exudyn.__version__}, {args.duration} s simulated, 6304 preset, whole runs (rolldyn as a process, {overrides})")
     rolldyn_walls, exudyn_walls = [], []
     with tempfile.TemporaryDirectory() as tmp:
         for k in range(args.pairs):
             if not args.exudyn_only:
-                wall, rpm, steps = rolldyn_run(args.rolldyn, args.duration, os.path.join(tmp, f"r{k}"))
+                wall, rpm, steps, balance = rolldyn_run(args.rolldyn, args.duration, os.path.join(tmp, f"r{k}"), args.set)
                 rolldyn_walls.append(wall)
-                print(f"  rolldyn: {wall:7.3f} s  mean cage speed (its window)  {rpm:8.1f} rpm  ({steps} steps)")
+                print(f"  rolldyn: {wall:7.3f} s  mean cage speed (its window)  {rpm:8.1f} rpm  ({steps} steps, energy balance {balance:+.1e})")
             wall, rpm = exudyn_run(args.duration, args.rtol)
             exudyn_walls.append(wall)
             print(f"  Exudyn:  {wall:7.3f} s  mean cage speed (second half) {rpm:8.1f} rpm")
