@@ -93,12 +93,21 @@ impl RunRecord {
             )
         })?;
         if record.format != FORMAT {
+            let this = env!("CARGO_PKG_VERSION");
+            // Builds of one version can differ in format: name the build
+            // then, not the version twice.
+            let (writer, reader) = if record.rolldyn_version == this {
+                (format!("another build of rolldyn {this}"), "this build")
+            } else {
+                (
+                    format!("rolldyn {}", record.rolldyn_version),
+                    "this rolldyn",
+                )
+            };
             return Err(format!(
-                "--resume {}: run record format {} of rolldyn {} (this rolldyn {} reads format {FORMAT}); resume it with the version that started it, or run the case again",
+                "--resume {}: run record format {} written by {writer} ({reader} reads format {FORMAT}); resume it with the build that started it, or run the case again",
                 dir.display(),
                 record.format,
-                record.rolldyn_version,
-                env!("CARGO_PKG_VERSION"),
             ));
         }
         Ok(record)

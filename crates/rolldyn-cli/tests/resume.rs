@@ -151,8 +151,20 @@ fn resume_refuses_what_it_cannot_continue() {
     let o = rolldyn(&["run", "--resume", d], None);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("format 2"), "{}", stderr(&o));
+    // Same version, another build: named as such.
     assert!(
-        stderr(&o).contains("version that started it"),
+        stderr(&o).contains("written by another build of rolldyn")
+            && stderr(&o).contains("build that started it"),
+        "{}",
+        stderr(&o)
+    );
+    // Another version: named.
+    old["rolldyn_version"] = "0.0.9".into();
+    std::fs::write(dir.join("run.json"), old.to_string()).unwrap();
+    let o = rolldyn(&["run", "--resume", d], None);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("written by rolldyn 0.0.9 (this rolldyn reads format"),
         "{}",
         stderr(&o)
     );
