@@ -273,7 +273,7 @@ pub fn verify(
 /// strip grid (left alone beyond the case's limits: FASTSIM's
 /// [`rolldyn::traction::fastsim::MAX_DIVISIONS`], 10 000 grid cells).
 pub(crate) fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<String>, String)> {
-    use rolldyn::traction::{TractionIntegration, TractionModel, fastsim::MAX_DIVISIONS};
+    use rolldyn::traction::{TractionModel, fastsim::MAX_DIVISIONS};
     match (&case.traction, case.traction_integration) {
         // No grid: the table's error is stated with it (docs/validation.md).
         (TractionModel::None | TractionModel::ExactTable(_), _) => None,
@@ -292,14 +292,18 @@ pub(crate) fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<St
                 )
             })
         }
-        (_, TractionIntegration::Grid { across, along }) => {
+        (_, integration) => {
+            let (across, along) = integration.cells()?;
             let (a, b) = (2 * across, 2 * along);
             (a * b <= 10_000).then(|| {
                 (
                     // The method too: a case that relies on the default grid
                     // has no such table to amend.
                     vec![
-                        "model.traction_integration.method=grid".to_string(),
+                        format!(
+                            "model.traction_integration.method={}",
+                            integration.method_name()
+                        ),
                         format!("model.traction_integration.across={a}"),
                         format!("model.traction_integration.along={b}"),
                     ],
@@ -307,7 +311,6 @@ pub(crate) fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<St
                 )
             })
         }
-        (_, TractionIntegration::Centre) => None,
     }
 }
 

@@ -161,7 +161,7 @@ pub(super) fn film_in_approach(
 pub(super) fn integration(
     integration: Option<TractionIntegration>,
 ) -> Result<TractionIntegration, Invalid> {
-    if let Some(TractionIntegration::Grid { across, along }) = integration {
+    if let Some((across, along)) = integration.as_ref().and_then(TractionIntegration::cells) {
         if across.saturating_mul(along) > 10_000 || across == 0 || along == 0 {
             return Err(Invalid::new(
                 "model.traction_integration",

@@ -214,7 +214,7 @@ impl TractionModel {
         match self {
             Self::None | Self::ExactTable(_) => false,
             Self::Fastsim(_) => true,
-            _ => matches!(integration, ellipse::TractionIntegration::Grid { .. }),
+            _ => !matches!(integration, ellipse::TractionIntegration::Centre),
         }
     }
 
