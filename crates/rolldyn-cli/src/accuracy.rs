@@ -273,7 +273,7 @@ pub fn verify(
 /// strip grid (left alone beyond the case's limits: FASTSIM's
 /// [`rolldyn::traction::fastsim::MAX_DIVISIONS`], 10 000 grid cells).
 pub(crate) fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<String>, String)> {
-    use rolldyn::traction::{TractionModel, fastsim::MAX_DIVISIONS};
+    use rolldyn::traction::{TractionIntegration, TractionModel, fastsim::MAX_DIVISIONS};
     match (&case.traction, case.traction_integration) {
         // No grid: the table's error is stated with it (docs/validation.md).
         (TractionModel::None | TractionModel::ExactTable(_), _) => None,
@@ -307,7 +307,13 @@ pub(crate) fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<St
                         format!("model.traction_integration.across={a}"),
                         format!("model.traction_integration.along={b}"),
                     ],
-                    format!("{a} × {b} cells (run: {across} × {along})"),
+                    format!(
+                        "{}{a} × {b} cells (run: {across} × {along})",
+                        match integration {
+                            TractionIntegration::Graded { .. } => "graded ",
+                            _ => "",
+                        }
+                    ),
                 )
             })
         }

@@ -159,10 +159,7 @@ pub fn dynamics_7008c(drag: DragParameters) -> (DynamicsParameters, Equilibrium)
                 pressure_model: Default::default(),
             },
         }),
-        traction_integration: TractionIntegration::Grid {
-            across: 12,
-            along: 6,
-        },
+        traction_integration: TractionIntegration::default(),
         speed: SpeedProfile::Constant(speed),
         loads: LoadProfile::Constant(loads),
         drag,

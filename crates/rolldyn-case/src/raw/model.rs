@@ -36,8 +36,9 @@ pub struct RawModel {
     /// `{ law = "exact_table", friction = 0.1 }` (optional
     /// regularisation_speed).
     pub traction: Option<TractionChoice>,
-    /// Traction integration: `{ method = "grid", across = 12, along = 6 }`
-    /// (default) or `{ method = "centre" }`.
+    /// Traction integration: `{ method = "graded", across = 12, along = 6 }`
+    /// (default), `{ method = "grid", across = 12, along = 6 }` (uniform
+    /// cells) or `{ method = "centre" }`.
     pub traction_integration: Option<rolldyn::traction::TractionIntegration>,
     /// Elastic-hysteresis coefficient α_h of the rolling resistance
     /// (docs/model.md §3; Lei et al. 2023 eq 21: 0.007 for steel). Default 0 (off).

@@ -64,9 +64,11 @@ pub enum TractionIntegration {
 }
 
 impl Default for TractionIntegration {
-    /// 12 × 6 cells (docs/model.md §3's example default).
+    /// The graded grid of 12 × 6 cells: on the default case's contacts
+    /// its dissipated power is within about 1 % of a converged grid's, the
+    /// uniform 12 × 6 grid's 7 % low (docs/dynamics.md).
     fn default() -> Self {
-        Self::Grid {
+        Self::Graded {
             across: 12,
             along: 6,
         }
