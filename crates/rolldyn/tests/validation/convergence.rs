@@ -12,7 +12,7 @@
 //!   20–40 ms. Impacts and stick–slip make trajectories diverge between
 //!   tolerances, so the mean converges only statistically: the three
 //!   values must agree within 0.3 % (found: 0.2 %; C1's criterion is 4.24 %).
-//! * Grid: the 7008C default configuration (EHL traction), mean drive
+//! * Grid: the 7008C default configuration (EHL traction, graded grid), mean drive
 //!   power over 1 ms from the Jones–Harris state on 6 × 3, 12 × 6 and
 //!   24 × 12 cells. The changes must shrink and the default 12 × 6 must lie
 //!   within 2 % of 24 × 12.
@@ -103,7 +103,7 @@ fn smooth_means_converge_with_the_tolerance() {
 fn mean_drive_power_converges_with_the_traction_grid() {
     let power = |across: usize, along: usize| {
         let (mut params, eq) = dynamics_7008c(DragParameters::default());
-        params.traction_integration = TractionIntegration::Grid { across, along };
+        params.traction_integration = TractionIntegration::Graded { across, along };
         let steel = Material::STEEL_52100;
         let mut m =
             BearingModel::new(&bearing_7008c(), &steel, &steel, HertzModel::Exact, params).unwrap();
