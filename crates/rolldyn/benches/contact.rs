@@ -1,7 +1,8 @@
 //! `cargo bench -p rolldyn --bench contact`: cost of the contact building
 //! blocks the time loop calls (7008C, steel): Hertz tables, torus
 //! geometry, and one contact's traction (FASTSIM; Kalker's exact theory
-//! tabulated; the Coulomb and EHL stress laws on the 12 × 6 grid). Plain `Instant` timing
+//! tabulated; the Coulomb and EHL stress laws on the graded 12 × 6 grid, and
+//! EHL on the uniform one). Plain `Instant` timing
 //! of many repetitions (median of 7 runs), no extra dependency. Figures are
 //! recorded in docs/performance.md with the machine.
 
@@ -133,21 +134,29 @@ fn main() {
         full_speed: 1e-3,
     });
     let grid = TractionGrid::new(TractionIntegration::default());
-    time_per_call("Coulomb stress law on the 12 × 6 grid", 200_000, |i| {
-        coulomb
-            .evaluate(
-                &grid,
-                &ContactKinematics {
-                    patch,
-                    ball_centre: Vector3::zeros(),
-                    slip: slip(i),
-                    relative_spin: spin(i),
-                    conditions,
-                },
-            )
-            .force
-            .x
+    let uniform = TractionGrid::new(TractionIntegration::Grid {
+        across: 12,
+        along: 6,
     });
+    time_per_call(
+        "Coulomb stress law on the graded 12 × 6 grid",
+        200_000,
+        |i| {
+            coulomb
+                .evaluate(
+                    &grid,
+                    &ContactKinematics {
+                        patch,
+                        ball_centre: Vector3::zeros(),
+                        slip: slip(i),
+                        relative_spin: spin(i),
+                        conditions,
+                    },
+                )
+                .force
+                .x
+        },
+    );
     // The default case's EHL rheology on the same contact with a 0.2 µm
     // film (Eyring 5 MPa, limiting shear 0.08, η₀ 0.0467 Pa·s, α 2.2e-8 1/Pa).
     let ehl = TractionModel::Ehl(EhlRheology {
@@ -163,18 +172,24 @@ fn main() {
         film: 0.2e-6,
         ..conditions
     };
-    time_per_call("EHL stress law on the 12 × 6 grid", 200_000, |i| {
-        ehl.evaluate(
-            &grid,
-            &ContactKinematics {
-                patch,
-                ball_centre: Vector3::zeros(),
-                slip: slip(i),
-                relative_spin: spin(i),
-                conditions: film,
+    for (name, grid) in [("graded", &grid), ("uniform", &uniform)] {
+        time_per_call(
+            &format!("EHL stress law on the {name} 12 × 6 grid"),
+            200_000,
+            |i| {
+                ehl.evaluate(
+                    grid,
+                    &ContactKinematics {
+                        patch,
+                        ball_centre: Vector3::zeros(),
+                        slip: slip(i),
+                        relative_spin: spin(i),
+                        conditions: film,
+                    },
+                )
+                .force
+                .x
             },
-        )
-        .force
-        .x
-    });
+        );
+    }
 }

@@ -11,8 +11,8 @@ use std::f64::consts::{FRAC_PI_2, PI};
 /// the normalisation. The grid is symmetric in s and in t (mirrored cells are
 /// built from the same |s|, |t|), so each shape occurs up to four times:
 /// the distinct shapes are the grid's pressure **levels**, at which
-/// [`integrate`] evaluates a law's pressure term (the EHL viscosity) once.
-/// These depend on the grid only; [`integrate`] scales them by the
+/// [`super::integrate`] evaluates a law's pressure term (the EHL viscosity) once.
+/// These depend on the grid only; [`super::integrate`] scales them by the
 /// contact's semi-axes and load.
 ///
 /// The cells are laid out for the lanes (`StripGroup`): each lane stays
@@ -58,7 +58,7 @@ pub(super) struct CellBatch {
     pub(super) level: [u32; BATCH],
 }
 
-/// Most pressure levels [`integrate`] holds on the stack (12 × 6 has 18,
+/// Most pressure levels [`super::integrate`] holds on the stack (12 × 6 has 18,
 /// 24 × 12 has 72); finer grids evaluate the pressure term per cell.
 pub(super) const MAX_LEVELS: usize = 96;
 

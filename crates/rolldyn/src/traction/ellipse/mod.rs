@@ -3,8 +3,14 @@
 //!
 //! The ellipse has semi-axes a (across the rolling direction) and b (along
 //! it) and Hertz pressure p = p₀ √(1 − (ξ/a)² − (η/b)²). It is cut into
-//! `across` strips in ξ and `along` cells per strip in η (the cells of a
-//! strip span its chord, so the grid follows the ellipse outline). Cell
+//! `across` equal strips in ξ and `along` cells per strip in η (the cells
+//! of a strip span its chord, so the grid follows the ellipse outline):
+//! equal cells on the uniform grid, or, on the graded grid, cells equal in
+//! the angle θ of η = w b sin θ (w the strip's half-width in units of b),
+//! along which the pressure is cos θ times the strip's, so that the cells
+//! shrink where it falls steeply to the edge (`TractionGrid`; docs/dynamics.md,
+//! "Traction grid"). Each cell is sampled at its middle (the graded one at
+//! its angle's middle) and weighted by its area. Cell
 //! pressures are scaled so that Σ p dA = Q exactly. The points X lie on the
 //! **deformed** contact surface: across the rolling direction a circular
 //! arc of radius R_d = 2 r_g (D/2)/(r_g + D/2) (Harris & Kotzalas,
