@@ -74,10 +74,11 @@ fn symmetric_midpoints(n: usize) -> impl Iterator<Item = f64> {
 
 /// n cells of [−1, 1] equal in the angle θ of u = sin θ, as (node, width
 /// over 2/n): each cell's exact width sin θ₊ − sin θ₋, its node at the
-/// angle's midpoint, mirror-symmetric to the bit. Across a strip of the
-/// ellipse the Hertz pressure is √(1 − u²) = cos θ times the strip's: the
-/// cells shrink towards the strip's ends, where the pressure falls
-/// steeply, and are 1.57 times the uniform width at its middle.
+/// angle's midpoint, mirror-symmetric to the bit. Along a strip of the
+/// ellipse the Hertz pressure is √(1 − u²) = cos θ times the strip's
+/// middle one: the cells shrink towards the strip's ends, where the
+/// pressure falls steeply, and are π/2 times the uniform width at its
+/// middle.
 fn graded_cells(n: usize) -> impl Iterator<Item = (f64, f64)> {
     let angle = move |i: f64| -FRAC_PI_2 + i * PI / n as f64;
     (0..n).map(move |k| {
