@@ -91,6 +91,14 @@ fn main() {
     let (shear, nu) = combined_elastic_constants(&steel, &steel);
     let slip = |i: usize| Vector3::new(1e-3 * (i % 7) as f64, 2e-3, 0.0);
     let spin = |i: usize| Vector3::new(0.0, 3000.0, -20.0 - (i % 5) as f64);
+    // Contact i of the sweep in `conditions`.
+    let at = |i: usize, conditions: ContactConditions| ContactKinematics {
+        patch,
+        ball_centre: Vector3::zeros(),
+        slip: slip(i),
+        relative_spin: spin(i),
+        conditions,
+    };
     let fastsim = Fastsim::new(0.1, shear, nu);
     for (strips, elements) in [(16, 10), (20, 12), (8, 6), (32, 20)] {
         let m = Fastsim {
@@ -101,32 +109,13 @@ fn main() {
         time_per_call(
             &format!("FASTSIM contact, {strips} × {elements}"),
             200_000,
-            |i| {
-                m.evaluate(&ContactKinematics {
-                    patch,
-                    ball_centre: Vector3::zeros(),
-                    slip: slip(i),
-                    relative_spin: spin(i),
-                    conditions,
-                })
-                .force
-                .x
-            },
+            |i| m.evaluate(&at(i, conditions)).force.x,
         );
     }
     // Kalker's exact theory tabulated, on the same contacts.
     let table = ExactTable::new(0.1, shear, nu);
     time_per_call("exact-theory table contact", 2_000_000, |i| {
-        table
-            .evaluate(&ContactKinematics {
-                patch,
-                ball_centre: Vector3::zeros(),
-                slip: slip(i),
-                relative_spin: spin(i),
-                conditions,
-            })
-            .force
-            .x
+        table.evaluate(&at(i, conditions)).force.x
     });
     let coulomb = TractionModel::ModifiedCoulomb(ModifiedCoulomb {
         friction: 0.1,
@@ -141,21 +130,7 @@ fn main() {
     time_per_call(
         "Coulomb stress law on the graded 12 × 6 grid",
         200_000,
-        |i| {
-            coulomb
-                .evaluate(
-                    &grid,
-                    &ContactKinematics {
-                        patch,
-                        ball_centre: Vector3::zeros(),
-                        slip: slip(i),
-                        relative_spin: spin(i),
-                        conditions,
-                    },
-                )
-                .force
-                .x
-        },
+        |i| coulomb.evaluate(&grid, &at(i, conditions)).force.x,
     );
     // The default case's EHL rheology on the same contact with a 0.2 µm
     // film (Eyring 5 MPa, limiting shear 0.08, η₀ 0.0467 Pa·s, α 2.2e-8 1/Pa).
@@ -176,20 +151,7 @@ fn main() {
         time_per_call(
             &format!("EHL stress law on the {name} 12 × 6 grid"),
             200_000,
-            |i| {
-                ehl.evaluate(
-                    grid,
-                    &ContactKinematics {
-                        patch,
-                        ball_centre: Vector3::zeros(),
-                        slip: slip(i),
-                        relative_spin: spin(i),
-                        conditions: film,
-                    },
-                )
-                .force
-                .x
-            },
+            |i| ehl.evaluate(grid, &at(i, film)).force.x,
         );
     }
 }
