@@ -5,7 +5,8 @@
 //! energy (the energy control evaluates it twice per step), the step
 //! acceptance's contact bookkeeping, the finite-difference Jacobian and,
 //! where the model has one, its fast part's (refreshed at every step while
-//! the cage limits the steps), for the 6304 of Shan et al. 2023 (planar, dry, traction at the contact
+//! the cage limits the steps), the factorization of σI − J (also on two
+//! threads) and a solve with it, for the 6304 of Shan et al. 2023 (planar, dry, traction at the contact
 //! centre, pockets) and the default case's 7008C (EHL traction on the
 //! 12 × 6 grid, whirling outer-guided cage), each 5 ms into a run from its
 //! start. Figures in docs/performance.md.
@@ -13,7 +14,7 @@
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::jacobian::{JacobianWork, fast_part_difference, finite_difference};
-use rolldyn::integrate::linear::BlockJacobian;
+use rolldyn::integrate::linear::{BlockJacobian, BlockLu};
 use rolldyn::integrate::{Integrator, OdeSystem};
 use rolldyn::material::Material;
 use rolldyn::testing::{self, Method};
@@ -66,6 +67,59 @@ fn bench(name: &str, mut model: BearingModel, y0: &[f64], calls: usize) {
     let mut work = JacobianWork::new(&model);
     time_per_call(&format!("{name}: Jacobian"), calls / 20, || {
         finite_difference(&model, t, &y, &dy, &mut jacobian, &mut work) as f64
+    });
+    finite_difference(&model, t, &y, &dy, &mut jacobian, &mut work);
+    // σ = 1/(hγ) of a 30 µs ROS34PW2 step.
+    let sigma = 1.0 / (30e-6 * 0.435_866_521_508_459);
+    let split = model.blocks().expect("blocks");
+    let mut lu = BlockLu::with_inert(layout, |state| split.inert(state));
+    lu.factor(&jacobian, sigma).expect("regular");
+    time_per_call(&format!("{name}: factorization"), calls / 4, || {
+        lu.refactor(&jacobian, sigma).map_or(0.0, |()| 1.0)
+    });
+    let mut x = dy.clone();
+    time_per_call(&format!("{name}: solve"), calls, || {
+        x.copy_from_slice(&dy);
+        lu.solve(&mut x);
+        x[0]
+    });
+    // The factorization with its blocks on one and on two threads, timed
+    // alternately from a thread of a two-thread pool with the other
+    // waiting actively, as in a run.
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .expect("two threads");
+    pool.install(|| {
+        let _helpers = rolldyn::threads::ActiveHelpers::start();
+        let median = |v: &[f64]| {
+            let mut v = v.to_vec();
+            v.sort_by(f64::total_cmp);
+            v[v.len() / 2]
+        };
+        let mut rounds = [Vec::new(), Vec::new()];
+        for _ in 0..15 {
+            for (parallel, times) in [false, true].into_iter().zip(&mut rounds) {
+                lu.set_parallel(parallel);
+                let start = Instant::now();
+                for _ in 0..calls / 20 {
+                    black_box(lu.refactor(&jacobian, sigma).is_ok());
+                }
+                times.push(start.elapsed().as_secs_f64() / (calls / 20) as f64);
+            }
+        }
+        let ratios: Vec<f64> = rounds[1]
+            .iter()
+            .zip(&rounds[0])
+            .map(|(p, s)| p / s)
+            .collect();
+        println!(
+            "{:<48} {:>9.2} µs/call serial, {:.2} µs on 2 threads (ratio {:.2})",
+            format!("{name}: factorization in a 2-thread run"),
+            median(&rounds[0]) * 1e6,
+            median(&rounds[1]) * 1e6,
+            median(&ratios)
+        );
     });
     if fast_part_difference(&model, t, &y, &mut jacobian, &mut work).is_some() {
         time_per_call(

@@ -83,11 +83,12 @@ impl Lubricant {
         Ok(())
     }
 
-    /// Viscosity η(p) \[Pa·s\] by the chosen pressure–viscosity law.
+    /// Viscosity η(p) \[Pa·s\] by the chosen pressure–viscosity law
+    /// (Barus's exponential by [`crate::math::exponential::exp`]).
     #[inline]
     pub fn viscosity_at(&self, pressure: f64) -> f64 {
         match self.pressure_model {
-            PressureViscosity::Barus => self.viscosity * (self.pressure_viscosity * pressure).exp(),
+            PressureViscosity::Barus => self.barus_viscosity(pressure),
             PressureViscosity::Roelands => {
                 let ln_ratio = self.viscosity.ln() + 9.67;
                 let z = self.pressure_viscosity / (5.1e-9 * ln_ratio);
@@ -95,6 +96,31 @@ impl Lubricant {
                     * (ln_ratio * ((1.0 + pressure / ROELANDS_PRESSURE).powf(z) - 1.0)).exp()
             }
         }
+    }
+
+    /// [`Self::viscosity_at`] of each of `values` (pressures \[Pa\] on
+    /// entry, viscosities \[Pa·s\] on return): the same arithmetic per
+    /// value, Barus's in a loop the compiler vectorizes.
+    #[inline(always)]
+    pub fn viscosities_at(&self, values: &mut [f64]) {
+        match self.pressure_model {
+            PressureViscosity::Barus => {
+                for value in values {
+                    *value = self.barus_viscosity(*value);
+                }
+            }
+            PressureViscosity::Roelands => {
+                for value in values {
+                    *value = self.viscosity_at(*value);
+                }
+            }
+        }
+    }
+
+    /// η₀ exp(α p).
+    #[inline(always)]
+    fn barus_viscosity(&self, pressure: f64) -> f64 {
+        self.viscosity * crate::math::exponential::exp(self.pressure_viscosity * pressure)
     }
 }
 

@@ -47,6 +47,12 @@ impl TractionLaw for EhlRheology {
         self.lubricant.viscosity_at(pressure)
     }
 
+    /// The viscosities in one loop ([`Lubricant::viscosities_at`]).
+    #[inline(always)]
+    fn pressure_terms(&self, values: &mut [f64]) {
+        self.lubricant.viscosities_at(values);
+    }
+
     /// g = min(τ₀ asinh(η |v| / (h τ₀)), Λ_L p) / |v|, η the cell's term.
     #[inline]
     fn stress_ratio(

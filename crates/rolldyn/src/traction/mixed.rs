@@ -96,6 +96,12 @@ impl<L: TractionLaw> TractionLaw for Blended<'_, L> {
         self.fluid.pressure_term(pressure)
     }
 
+    /// The fluid's terms.
+    #[inline(always)]
+    fn pressure_terms(&self, values: &mut [f64]) {
+        self.fluid.pressure_terms(values);
+    }
+
     /// (1 − φ) g_fluid + φ g_boundary.
     #[inline]
     fn stress_ratio(

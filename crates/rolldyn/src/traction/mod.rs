@@ -86,6 +86,16 @@ pub trait TractionLaw {
         0.0
     }
 
+    /// [`Self::pressure_term`] of each of `values` (pressures on entry,
+    /// terms on return). A law may override it with a loop the compiler
+    /// vectorizes, with the same arithmetic per value. Default: one by one.
+    #[inline(always)]
+    fn pressure_terms(&self, values: &mut [f64]) {
+        for value in values {
+            *value = self.pressure_term(*value);
+        }
+    }
+
     /// The ratio g = |τ|/|v| ≥ 0 \[Pa·s/m\] at Hertz pressure `pressure`
     /// \[Pa\] (with its [`Self::pressure_term`] `term`) and slip speed
     /// `speed` = |v| \[m/s\], under the contact's `conditions`; 0 where the

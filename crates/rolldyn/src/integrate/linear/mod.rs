@@ -23,6 +23,8 @@
 
 use std::fmt;
 
+use rayon::prelude::*;
+
 /// Shape of a bordered block-diagonal matrix: `blocks` diagonal blocks of
 /// `block_size` states first, then `border` states.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -176,6 +178,10 @@ pub struct BlockLu {
     /// A block's and the border's active part of the vector being solved.
     block_work: Vec<f64>,
     border_work: Vec<f64>,
+    /// Per block, its share (−Lⱼ) Wⱼ of the Schur complement, m' × m'.
+    schur_parts: Vec<f64>,
+    /// Whether the factorization runs its blocks across threads.
+    parallel: bool,
 }
 
 impl BlockLu {
@@ -214,11 +220,20 @@ impl BlockLu {
             lower_row_nonzero: vec![true; n * border_active.len()],
             block_work: vec![0.0; ba],
             border_work: vec![0.0; ma],
+            schur_parts: vec![0.0; n * ma * ma],
+            parallel: false,
             block_active,
             border_active,
             block_inert,
             border_inert,
         }
+    }
+
+    /// Runs the factorization's blocks across the threads of the current
+    /// rayon pool (the same factors, bit for bit; the solve stays serial:
+    /// at 5–10 µs it is too short to share).
+    pub fn set_parallel(&mut self, parallel: bool) {
+        self.parallel = parallel;
     }
 
     /// Factors σI − J (constant-size copies for the common active block
@@ -301,7 +316,10 @@ impl BlockLu {
         }
     }
 
-    /// [`Self::refactor`]'s body for `ba` active block states.
+    /// [`Self::refactor`]'s body for `ba` active block states. Each block's
+    /// LU, Wⱼ and share (−Lⱼ) Wⱼ of the Schur complement, across threads
+    /// when [`Self::set_parallel`]; the shares are then subtracted in block
+    /// order, so the factors do not depend on the threads.
     #[inline(always)]
     fn refactor_sized(
         &mut self,
@@ -319,47 +337,78 @@ impl BlockLu {
             }
             self.schur[i * ma + i] += sigma;
         }
-        for j in 0..l.blocks {
-            let (jd, ju) = (
-                &jacobian.diag[j * b * b..(j + 1) * b * b],
-                &jacobian.upper[j * b * m..(j + 1) * b * m],
-            );
-            let d = &mut self.diag[j * ba * ba..(j + 1) * ba * ba];
-            for (i, &r) in self.block_active.iter().enumerate() {
-                for (k, &c) in self.block_active.iter().enumerate() {
-                    d[i * ba + k] = -jd[r * b + c];
+        let (block_active, border_active) = (&self.block_active, &self.border_active);
+        let (coupled_nonzero, lower_row_nonzero) = (&self.coupled_nonzero, &self.lower_row_nonzero);
+        let lower = &self.lower;
+        let factor_block =
+            |j: usize, d: &mut [f64], piv: &mut [usize], w: &mut [f64], part: &mut [f64]| {
+                let (jd, ju) = (
+                    &jacobian.diag[j * b * b..(j + 1) * b * b],
+                    &jacobian.upper[j * b * m..(j + 1) * b * m],
+                );
+                for (i, &r) in block_active.iter().enumerate() {
+                    for (k, &c) in block_active.iter().enumerate() {
+                        d[i * ba + k] = -jd[r * b + c];
+                    }
+                    d[i * ba + i] += sigma;
                 }
-                d[i * ba + i] += sigma;
-            }
-            let piv = &mut self.diag_pivots[j * ba..(j + 1) * ba];
-            lu_factor(d, ba, piv)?;
-            // A block decoupled from the border (Uⱼ = 0) has Wⱼ = 0 and no
-            // share in the Schur complement; the solve skips it.
-            if !self.coupled_nonzero[j] {
-                continue;
-            }
-            let w = &mut self.coupled[j * ba * ma..(j + 1) * ba * ma];
-            for (i, &r) in self.block_active.iter().enumerate() {
-                for (k, &c) in self.border_active.iter().enumerate() {
-                    w[i * ma + k] = -ju[r * m + c];
+                lu_factor(d, ba, piv)?;
+                // A block decoupled from the border (Uⱼ = 0) has Wⱼ = 0 and no
+                // share in the Schur complement; the solve skips it.
+                if !coupled_nonzero[j] {
+                    return Ok(());
                 }
-            }
-            lu_solve_rows(d, ba, piv, w, ma);
-            let lower = &self.lower[j * ma * ba..(j + 1) * ma * ba];
-            // S −= (−Lⱼ) Wⱼ
-            for r in 0..ma {
-                if !self.lower_row_nonzero[j * ma + r] {
-                    continue;
+                for (i, &r) in block_active.iter().enumerate() {
+                    for (k, &c) in border_active.iter().enumerate() {
+                        w[i * ma + k] = -ju[r * m + c];
+                    }
                 }
-                let srow = &mut self.schur[r * ma..(r + 1) * ma];
-                for k in 0..ba {
-                    let coefficient = lower[r * ba + k];
-                    if coefficient != 0.0 {
-                        for (s, wk) in srow.iter_mut().zip(&w[k * ma..(k + 1) * ma]) {
-                            *s -= coefficient * wk;
+                lu_solve_rows(d, ba, piv, w, ma);
+                // Its share (−Lⱼ) Wⱼ of the Schur complement.
+                for r in 0..ma {
+                    let prow = &mut part[r * ma..(r + 1) * ma];
+                    prow.fill(0.0);
+                    if !lower_row_nonzero[j * ma + r] {
+                        continue;
+                    }
+                    let lower = &lower[(j * ma + r) * ba..(j * ma + r + 1) * ba];
+                    for (k, &coefficient) in lower.iter().enumerate() {
+                        if coefficient != 0.0 {
+                            for (p, wk) in prow.iter_mut().zip(&w[k * ma..(k + 1) * ma]) {
+                                *p += coefficient * wk;
+                            }
                         }
                     }
                 }
+                Ok(())
+            };
+        if self.parallel && ba > 0 && ma > 0 && l.blocks > 1 {
+            self.diag
+                .par_chunks_mut(ba * ba)
+                .zip(self.diag_pivots.par_chunks_mut(ba))
+                .zip(self.coupled.par_chunks_mut(ba * ma))
+                .zip(self.schur_parts.par_chunks_mut(ma * ma))
+                .enumerate()
+                .try_for_each(|(j, (((d, piv), w), part))| factor_block(j, d, piv, w, part))?;
+        } else {
+            for j in 0..l.blocks {
+                factor_block(
+                    j,
+                    &mut self.diag[j * ba * ba..(j + 1) * ba * ba],
+                    &mut self.diag_pivots[j * ba..(j + 1) * ba],
+                    &mut self.coupled[j * ba * ma..(j + 1) * ba * ma],
+                    &mut self.schur_parts[j * ma * ma..(j + 1) * ma * ma],
+                )?;
+            }
+        }
+        // S −= Σⱼ (−Lⱼ) Wⱼ, the blocks in order.
+        for j in (0..l.blocks).filter(|&j| coupled_nonzero[j]) {
+            for (s, p) in self
+                .schur
+                .iter_mut()
+                .zip(&self.schur_parts[j * ma * ma..(j + 1) * ma * ma])
+            {
+                *s -= p;
             }
         }
         lu_factor(&mut self.schur, ma, &mut self.schur_pivots)

@@ -199,6 +199,47 @@ fn refactor_equals_factor_bit_for_bit() {
     }
 }
 
+/// The factorization across threads gives the bits of the serial one
+/// (and reports a singular block as it does).
+#[test]
+fn parallel_factorization_equals_serial_bit_for_bit() {
+    let jac = zeroed(&sample(INERT_LAYOUT), |r, c| {
+        inert(c) || (inert(r) && r % 3 == 0) || (r < 9 && c >= 36)
+    });
+    let n = INERT_LAYOUT.dimension();
+    let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
+    let mut serial = BlockLu::with_inert(INERT_LAYOUT, inert);
+    serial.factor(&jac, 3.0).unwrap();
+    let mut expected = rhs.clone();
+    serial.solve(&mut expected);
+    for threads in [1, 2, 3] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let mut parallel = BlockLu::with_inert(INERT_LAYOUT, inert);
+        parallel.set_parallel(true);
+        let x = pool.install(|| {
+            parallel.factor(&jac, 3.0).unwrap();
+            let mut x = rhs.clone();
+            parallel.solve(&mut x);
+            x
+        });
+        assert!(
+            x.iter()
+                .zip(&expected)
+                .all(|(a, b)| a.to_bits() == b.to_bits()),
+            "{threads} threads"
+        );
+        // σ = 0 on a zero block: singular, reported from any thread.
+        let singular = zeroed(&jac, |r, _| r < INERT_LAYOUT.block_size);
+        assert_eq!(
+            pool.install(|| parallel.factor(&singular, 0.0)),
+            Err(Singular)
+        );
+    }
+}
+
 #[test]
 fn singular_matrix_is_reported() {
     let layout = BlockLayout::dense(2);

@@ -278,7 +278,11 @@ impl Rosenbrock {
             jacobian: BlockJacobian::zeros(layout),
             fast: FastRefresh::of(system, &BlockJacobian::zeros(layout)),
             lu: match system.blocks() {
-                Some(split) => BlockLu::with_inert(layout, |state| split.inert(state)),
+                Some(split) => {
+                    let mut lu = BlockLu::with_inert(layout, |state| split.inert(state));
+                    lu.set_parallel(split.parallel());
+                    lu
+                }
                 None => BlockLu::new(layout),
             },
             work: JacobianWork::new(system),

@@ -252,9 +252,11 @@ fn integrate_baseline<L: TractionLaw>(
             let mut level_terms = [0.0; MAX_LEVELS];
             let shared = grid.levels.len() <= MAX_LEVELS;
             if shared {
-                for (term, &shape) in level_terms.iter_mut().zip(&grid.levels) {
-                    *term = law.pressure_term(p_scale * shape);
+                let terms = &mut level_terms[..grid.levels.len()];
+                for (term, &shape) in terms.iter_mut().zip(&grid.levels) {
+                    *term = p_scale * shape;
                 }
+                law.pressure_terms(terms);
             }
             let terms = if shared { Some(&level_terms) } else { None };
             // Σ dF, Σ ξ dF, Σ drop dF, Σ t dF (dF = −area g s_t).
