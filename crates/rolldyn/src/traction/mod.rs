@@ -318,6 +318,11 @@ mod batch_tests {
             for k in 0..BATCH {
                 terms[k] = law.pressure_term(pressures[k]);
             }
+            let mut in_one_loop = pressures;
+            law.pressure_terms(&mut in_one_loop);
+            for k in 0..BATCH {
+                assert_eq!(in_one_loop[k].to_bits(), terms[k].to_bits(), "term {k}");
+            }
             let mut batch = [0.0; BATCH];
             law.stress_ratios(&pressures, &terms, &speeds, conditions, &mut batch);
             for k in 0..BATCH {
@@ -364,5 +369,14 @@ mod batch_tests {
             full_speed: 1e-3,
         };
         assert_batch_is_cell_by_cell(&coulomb, &conditions);
+        let mut roelands = ehl;
+        roelands.lubricant.pressure_model = crate::lubrication::PressureViscosity::Roelands;
+        assert_batch_is_cell_by_cell(&roelands, &conditions);
+        let blended = mixed::Blended {
+            fluid: &ehl,
+            boundary: &coulomb,
+            share: 0.3,
+        };
+        assert_batch_is_cell_by_cell(&blended, &conditions);
     }
 }
