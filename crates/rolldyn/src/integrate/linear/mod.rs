@@ -365,12 +365,9 @@ impl BlockLu {
                 }
                 lu_solve_rows(d, ba, piv, w, ma);
                 // Its share (−Lⱼ) Wⱼ of the Schur complement.
-                for r in 0..ma {
+                for r in (0..ma).filter(|&r| lower_row_nonzero[j * ma + r]) {
                     let prow = &mut part[r * ma..(r + 1) * ma];
                     prow.fill(0.0);
-                    if !lower_row_nonzero[j * ma + r] {
-                        continue;
-                    }
                     let lower = &lower[(j * ma + r) * ba..(j * ma + r + 1) * ba];
                     for (k, &coefficient) in lower.iter().enumerate() {
                         if coefficient != 0.0 {
@@ -401,14 +398,18 @@ impl BlockLu {
                 )?;
             }
         }
-        // S −= Σⱼ (−Lⱼ) Wⱼ, the blocks in order.
+        // S −= Σⱼ (−Lⱼ) Wⱼ, the blocks in order (the rows where Lⱼ has
+        // an entry).
         for j in (0..l.blocks).filter(|&j| coupled_nonzero[j]) {
-            for (s, p) in self
-                .schur
-                .iter_mut()
-                .zip(&self.schur_parts[j * ma * ma..(j + 1) * ma * ma])
-            {
-                *s -= p;
+            let part = &self.schur_parts[j * ma * ma..(j + 1) * ma * ma];
+            for r in (0..ma).filter(|&r| lower_row_nonzero[j * ma + r]) {
+                let rows = (
+                    &mut self.schur[r * ma..(r + 1) * ma],
+                    &part[r * ma..(r + 1) * ma],
+                );
+                for (s, p) in rows.0.iter_mut().zip(rows.1) {
+                    *s -= p;
+                }
             }
         }
         lu_factor(&mut self.schur, ma, &mut self.schur_pivots)
