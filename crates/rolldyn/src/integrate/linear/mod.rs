@@ -403,11 +403,8 @@ impl BlockLu {
         for j in (0..l.blocks).filter(|&j| coupled_nonzero[j]) {
             let part = &self.schur_parts[j * ma * ma..(j + 1) * ma * ma];
             for r in (0..ma).filter(|&r| lower_row_nonzero[j * ma + r]) {
-                let rows = (
-                    &mut self.schur[r * ma..(r + 1) * ma],
-                    &part[r * ma..(r + 1) * ma],
-                );
-                for (s, p) in rows.0.iter_mut().zip(rows.1) {
+                let schur_row = &mut self.schur[r * ma..(r + 1) * ma];
+                for (s, p) in schur_row.iter_mut().zip(&part[r * ma..(r + 1) * ma]) {
                     *s -= p;
                 }
             }
