@@ -19,10 +19,8 @@
 //! 2 ulp of the C library's over the whole range (test; 1.0 measured
 //! against glibc 2.36).
 
-/// ln 2 split so that n · `LN2_HI` is exact for |n| < 2¹¹ (fdlibm's).
-const LN2_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000);
-/// ln 2 − `LN2_HI`.
-const LN2_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76);
+use super::logarithm::{LN2_HI, LN2_LO};
+
 /// 1.5 · 2⁵²: adding it rounds a number of magnitude below 2⁵¹ to the
 /// nearest integer m and leaves m in the low mantissa bits.
 const ROUNDING_SHIFT: f64 = 6_755_399_441_055_744.0;
@@ -70,12 +68,8 @@ pub fn exp(x: f64) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    use super::super::logarithm::tests::ulps;
     use super::*;
-
-    /// Distance in units in the last place (of normal numbers).
-    fn ulps(a: f64, b: f64) -> f64 {
-        (a - b).abs() / (b.abs() * f64::EPSILON).max(f64::MIN_POSITIVE)
-    }
 
     #[test]
     fn exp_is_within_two_ulp_of_the_library() {

@@ -17,10 +17,11 @@
 //! sum) by Estrin's scheme (Estrin 1960).
 //! Accuracy: within 2 ulp of the exact value over [0, 1e300] (test).
 
-/// ln 2 split so that e · `LN2_HI` is exact for |e| < 2¹¹ (fdlibm's).
-const LN2_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000);
+/// ln 2 split so that e · `LN2_HI` is exact for |e| < 2¹¹ (fdlibm's;
+/// also `math::exponential`'s).
+pub(super) const LN2_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000);
 /// ln 2 − `LN2_HI`.
-const LN2_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76);
+pub(super) const LN2_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76);
 /// Bits of √½ (rounded), the lower end of the reduced mantissa's range.
 const SQRT_HALF_BITS: u64 = 0x3fe6_a09e_667f_3bcd;
 /// Bits of 1.0.
@@ -91,11 +92,12 @@ pub fn asinh_non_negative(x: f64) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
-    /// Distance in units in the last place.
-    fn ulps(a: f64, b: f64) -> f64 {
+    /// Distance in units in the last place (of normal numbers; also
+    /// `math::exponential`'s tests).
+    pub(in crate::math) fn ulps(a: f64, b: f64) -> f64 {
         (a - b).abs() / (b.abs() * f64::EPSILON).max(f64::MIN_POSITIVE)
     }
 

@@ -178,12 +178,18 @@ fn zero_couplings_and_rows_are_skipped_exactly() {
     }
 }
 
+/// A Jacobian with inert columns, some inert rows zero on the active
+/// states and a block without border couplings.
+fn partly_zero() -> BlockJacobian {
+    zeroed(&sample(INERT_LAYOUT), |r, c| {
+        inert(c) || (inert(r) && r % 3 == 0) || (r < 9 && c >= 36)
+    })
+}
+
 /// Refactoring for a new σ gives the bits of a fresh factorization.
 #[test]
 fn refactor_equals_factor_bit_for_bit() {
-    let jac = zeroed(&sample(INERT_LAYOUT), |r, c| {
-        inert(c) || (inert(r) && r % 3 == 0) || (r < 9 && c >= 36)
-    });
+    let jac = partly_zero();
     let n = INERT_LAYOUT.dimension();
     let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.3).cos()).collect();
     let mut reused = BlockLu::with_inert(INERT_LAYOUT, inert);
@@ -203,9 +209,7 @@ fn refactor_equals_factor_bit_for_bit() {
 /// (and reports a singular block as it does).
 #[test]
 fn parallel_factorization_equals_serial_bit_for_bit() {
-    let jac = zeroed(&sample(INERT_LAYOUT), |r, c| {
-        inert(c) || (inert(r) && r % 3 == 0) || (r < 9 && c >= 36)
-    });
+    let jac = partly_zero();
     let n = INERT_LAYOUT.dimension();
     let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
     let mut serial = BlockLu::with_inert(INERT_LAYOUT, inert);
