@@ -396,6 +396,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let case = record
                 .overrides
                 .load_text(&record.source, record.case_text.as_deref())?;
+            if let Some(warning) = run::odd_grid_warning(&case) {
+                eprintln!("warning: {warning}");
+            }
             let dir = std::path::Path::new(&output);
             let options = run::RunOptions {
                 force: record.force,

@@ -49,6 +49,28 @@ pub const MAX_SERIES_BYTES: f64 = 32.0 * 1024.0 * 1024.0 * 1024.0;
 /// do not apply, and the stiff contacts make the integration crawl.
 pub const MAX_CONTACT_PRESSURE: f64 = 10e9;
 
+/// A warning for a stress law integrated over a strip grid with an odd
+/// number of cells along the rolling direction: a cell then sits on each
+/// strip's middle, where near pure rolling the slip passes through zero and
+/// the law's slope there (the EHL film's Newtonian stiffness, the
+/// regularised Coulomb's ramp) is given the whole cell's area. The runs
+/// stay right but their steps shrink, up to 60 times measured
+/// (docs/dynamics.md).
+pub fn odd_grid_warning(case: &Case) -> Option<String> {
+    use rolldyn::traction::TractionModel;
+    let stress_law = matches!(
+        case.traction,
+        TractionModel::ModifiedCoulomb(_) | TractionModel::TractionCurve(_) | TractionModel::Ehl(_)
+    );
+    let (_, along) = case.traction_integration.cells()?;
+    (stress_law && along % 2 == 1).then(|| {
+        format!(
+            "model.traction_integration.along = {along} is odd: the strips' middle cells, where the slip passes through zero near pure rolling, make the contacts stiff and the steps short (up to 60 times as many, docs/dynamics.md); give an even number, e.g. {}",
+            along + 1
+        )
+    })
+}
+
 /// The largest contact pressure the case's loads can give, estimated
 /// before any solve: Stribeck's maximum ball load 5 F_r/(Z cos α) plus the
 /// axial share F_a/(Z sin α) (α the nominal angle, at least 10° so that a

@@ -1,6 +1,7 @@
 //! `rolldyn run`'s integration: results that do not depend on the thread
 //! count (with `auto` switching methods too), the energy balance at the default tolerance in the default
-//! case's whirl limit cycle, and the step cap of film pockets.
+//! case's whirl limit cycle, the step cap of film pockets, and the
+//! warning for an odd number of grid cells along the rolling direction.
 
 #![allow(clippy::unwrap_used)]
 
@@ -133,4 +134,27 @@ fn film_pockets_cap_the_default_step() {
     );
     let given = run(&["--set", "solver.max_step=\"50 us\""]);
     assert_eq!(given["max_step_s"], 5e-5);
+}
+
+#[test]
+fn an_odd_cell_count_along_the_rolling_direction_is_warned_of() {
+    let run = |integration: Option<&str>| {
+        let dir = temp_dir("odd-grid");
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_rolldyn"));
+        command.args(["run", "--duration", "1 us", "-o"]).arg(&dir);
+        if let Some(value) = integration {
+            command.args(["--set", &format!("model.traction_integration={value}")]);
+        }
+        let o = command.output().expect("rolldyn runs");
+        std::fs::remove_dir_all(&dir).ok();
+        assert!(o.status.success(), "{}", stderr(&o));
+        stderr(&o)
+    };
+    let odd = run(Some(r#"{ method = "graded", across = 12, along = 5 }"#));
+    assert!(
+        odd.contains("warning: model.traction_integration.along = 5 is odd"),
+        "{odd}"
+    );
+    assert!(!run(None).contains("is odd"));
+    assert!(!run(Some(r#"{ method = "grid", across = 8, along = 4 }"#)).contains("is odd"));
 }
