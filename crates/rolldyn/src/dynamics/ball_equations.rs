@@ -101,8 +101,8 @@ impl ContactShare {
 pub(super) enum Part {
     /// All of them: the right-hand side.
     Whole,
-    /// All but the raceway contacts: the split's fast part, whose
-    /// Jacobian the implicit method refreshes at every step
+    /// The pocket's terms alone: the split's fast part, whose Jacobian
+    /// the implicit method refreshes at every step
     /// (`BlockSplit::with_fast_part`).
     Fast,
 }
@@ -141,7 +141,7 @@ impl BearingModel {
             t,
             j,
             y,
-            Some((inner, outer)),
+            (inner, outer),
             dy,
             films_power,
             (sink, sample),
@@ -163,32 +163,91 @@ impl BearingModel {
         shares: Shares<'_>,
         part: Part,
     ) {
-        let rings = match part {
-            Part::Whole => Some(self.elements.ring_motion(t, y)),
-            Part::Fast => None,
+        let out = match part {
+            Part::Whole => {
+                let (inner, outer) = self.elements.ring_motion(t, y);
+                self.ball_rhs_with(
+                    t,
+                    block,
+                    y,
+                    (&inner, &outer),
+                    dy_block,
+                    false,
+                    (None, None),
+                    shares,
+                )
+            }
+            Part::Fast => self.pocket_terms(block, y, dy_block, shares),
         };
-        self.ball_rhs_with(
-            t,
-            block,
-            y,
-            rings.as_ref().map(|(inner, outer)| (inner, outer)),
-            dy_block,
-            false,
-            (None, None),
-            shares,
-        )
-        .write(coupling);
+        out.write(coupling);
     }
 
-    /// [`Self::ball_rhs`] with the contact shares from `shares`; without
-    /// `rings`, without the raceway contacts (the fast part).
+    /// The fast part of ball j's block: its pocket contact's terms in the
+    /// equations of motion and its coupling to the cage, nothing else (the
+    /// raceway contacts, gravity, drag and the frame's terms belong to the
+    /// slow rest); all zero while the pocket is open.
+    fn pocket_terms(
+        &self,
+        j: usize,
+        y: &[f64],
+        dy: &mut [f64],
+        shares: Shares<'_>,
+    ) -> BallCoupling {
+        let (ball, [ex, er, et]) = self.elements.ball_kinematics(j, y);
+        let slot = BallContact::Pocket as usize * ContactShare::LEN;
+        let share = match shares {
+            Shares::Reuse { memo, contact } if contact != Some(BallContact::Pocket) => {
+                ContactShare::read(&memo[slot..])
+            }
+            Shares::Reuse { .. } => self.pocket_share(j, y, &ball, None),
+            Shares::Evaluate(memo) => {
+                let share = self.pocket_share(j, y, &ball, None);
+                if let Some(memo) = memo {
+                    memo.fill(0.0);
+                    share.write(&mut memo[slot..]);
+                }
+                share
+            }
+        };
+        dy.fill(0.0);
+        let mut out = BallCoupling::default();
+        if !share.closed {
+            return out;
+        }
+        let (m, inertia) = (self.elements.ball_mass, self.elements.ball_inertia);
+        let r = y[self.elements.layout.ball(j) + 1];
+        dy[3] = share.force.dot(&ex) / m;
+        dy[4] = share.force.dot(&er) / m;
+        dy[5] = share.force.dot(&et) / m / r;
+        dy[6] = share.moment.dot(&ex) / inertia;
+        dy[7] = share.moment.dot(&er) / inertia;
+        dy[8] = share.moment.dot(&et) / inertia;
+        if self.elements.params.planar {
+            dy[3] = 0.0;
+            dy[7] = 0.0;
+            dy[8] = 0.0;
+        }
+        out.cage_force = share.body_force;
+        out.cage_torque = share.body_moment.x;
+        out.dissipation = share.dissipation;
+        out
+    }
+
+    /// Whether ball j's pocket contact is open at y (no law's force, no
+    /// squeeze film): the fast part's block is then zero.
+    pub(super) fn pocket_open(&self, j: usize, y: &[f64]) -> bool {
+        let (ball, _) = self.elements.ball_kinematics(j, y);
+        !self.elements.pocket_acts(j, y, &ball)
+    }
+
+    /// [`Self::ball_rhs`] with the contact shares from `shares`.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn ball_rhs_with(
         &self,
         t: f64,
         j: usize,
         y: &[f64],
-        rings: Option<(&RingMotion, &RingMotion)>,
+        (inner, outer): (&RingMotion, &RingMotion),
         dy: &mut [f64],
         films_power: bool,
         (mut sink, mut sample): (Option<&mut Dissipation>, Option<&mut ContactSample>),
@@ -212,9 +271,9 @@ impl BearingModel {
             }
             _ => None,
         };
-        let inner_share = match (kept(BallContact::Inner), rings) {
-            (Some(share), _) => share,
-            (None, Some((inner, _))) => self.race_share(
+        let inner_share = match kept(BallContact::Inner) {
+            Some(share) => share,
+            None => self.race_share(
                 j,
                 inner,
                 &ball,
@@ -223,11 +282,10 @@ impl BearingModel {
                 sink.as_deref_mut(),
                 sample.as_deref_mut().map(|s| &mut s.inner),
             ),
-            (None, None) => ContactShare::default(),
         };
-        let outer_share = match (kept(BallContact::Outer), rings) {
-            (Some(share), _) => share,
-            (None, Some((_, outer))) => self.race_share(
+        let outer_share = match kept(BallContact::Outer) {
+            Some(share) => share,
+            None => self.race_share(
                 j,
                 outer,
                 &ball,
@@ -236,7 +294,6 @@ impl BearingModel {
                 sink.as_deref_mut(),
                 sample.map(|s| &mut s.outer),
             ),
-            (None, None) => ContactShare::default(),
         };
         let pocket_share = match kept(BallContact::Pocket) {
             Some(share) => share,
@@ -309,7 +366,7 @@ impl BearingModel {
         }
         // Only the film-work accumulator needs this, and no Jacobian reads
         // it (`inert`): `block_rhs` leaves it out.
-        if let (true, Some((inner, _))) = (films_power, rings) {
+        if films_power {
             self.elements
                 .add_film_work(t, y, j, dy, &film_work, inner, &mut out);
         }

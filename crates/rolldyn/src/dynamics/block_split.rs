@@ -4,13 +4,16 @@
 //! border, so the Jacobian is differenced block by block and a border
 //! column re-evaluates only the contact its state reaches.
 //!
-//! The split's fast part ([`BlockSplit::with_fast_part`]) is the model
-//! without its ball–raceway contacts: the pockets, the cage's guidance and
-//! the bodies' equations. Its Jacobian changes fastest (a whirling cage's
-//! pocket and land contacts open and close within a few steps) and costs
-//! least to difference (no traction over the contact ellipses, no ring
-//! motion), so the Rosenbrock–W method refreshes it at every step while it
-//! pays (`integrate::rosenbrock`, docs/dynamics.md "Integration"). Offered
+//! The split's fast part ([`BlockSplit::with_fast_part`]) is the pockets'
+//! terms in the balls' equations and the border's equations (the cage
+//! with its guidance, the rings) with the pockets' coupling: the balls'
+//! raceway contacts, gravity, drag and frame terms are the slow rest. Its
+//! Jacobian changes fastest (a whirling cage's pocket and land contacts
+//! open and close within a few steps) and costs least to difference (no
+//! traction over the contact ellipses, no ring motion, and a ball whose
+//! pocket is open adds nothing: [`BlockSplit::block_is_zero`]), so the
+//! Rosenbrock–W method refreshes it at every step while it pays
+//! (`integrate::rosenbrock`, docs/dynamics.md "Integration"). Offered
 //! when the raceway contacts integrate traction over a grid (otherwise
 //! they cost about what the rest does).
 
@@ -133,6 +136,11 @@ impl BlockSplit for PartOf<'_> {
 
     fn parallel(&self) -> bool {
         self.model.ball_pass.is_parallel()
+    }
+
+    /// The fast part of a ball whose pocket is open.
+    fn block_is_zero(&self, _t: f64, y: &[f64], block: usize) -> bool {
+        self.part == Part::Fast && self.model.pocket_open(block, y)
     }
 
     /// Without the raceway contacts the balls do not read the rings.

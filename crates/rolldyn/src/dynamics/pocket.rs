@@ -62,6 +62,15 @@ impl Elements {
         cage.pocket_law.energy(offset, 0.5 * cage.pocket_clearance)
     }
 
+    /// Whether ball j's pocket contact acts: the law's force or the
+    /// squeeze film's.
+    pub(super) fn pocket_acts(&self, j: usize, y: &[f64], ball: &BallMotion) -> bool {
+        let cage = &self.params.cage;
+        let (offset, _) = self.pocket_offset(j, y, ball);
+        let squeezed = cage.pocket_squeeze.is_some() && offset > 0.0;
+        squeezed || cage.pocket_law.acts(offset, 0.5 * cage.pocket_clearance)
+    }
+
     /// Pocket contact of ball j, if closed.
     pub(super) fn pocket_contact(
         &self,

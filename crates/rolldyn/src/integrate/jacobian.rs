@@ -123,6 +123,14 @@ pub trait BlockSplit: Sync {
         false
     }
 
+    /// Whether block j's right-hand side and coupling are zero at and
+    /// about y (a bearing's fast part: a ball whose pocket is open), so
+    /// that its rows and columns of the Jacobian are zero and are not
+    /// differenced. Default: no.
+    fn block_is_zero(&self, _t: f64, _y: &[f64], _block: usize) -> bool {
+        false
+    }
+
     /// Whether the blocks read border state `border_state` (counted from
     /// the border's first state). A column of a state no block reads has
     /// zero block rows and costs one border evaluation. Default: they all
@@ -481,6 +489,16 @@ impl Columns<'_> {
             &self.f[j * b..(j + 1) * b],
             &self.couplings[j * c..(j + 1) * c],
         );
+        if split.block_is_zero(self.t, y, j) {
+            diag.fill(0.0);
+            lower.fill(0.0);
+            upper.fill(0.0);
+            // The border columns see the block's coupling unchanged.
+            for p in perturbed.chunks_mut(c) {
+                p.copy_from_slice(c_j);
+            }
+            return;
+        }
         for k in 0..b {
             let col = j * b + k;
             if split.inert(col) {

@@ -2,6 +2,9 @@
 //! bearing without its ball–raceway contacts, refreshed at every step
 //! while the cage limits the steps.
 //!
+//! * Its balls' blocks are the pockets' terms alone: zero for an open
+//!   pocket, and for a closed one the full Jacobian less the same
+//!   model's with pockets too wide to close.
 //! * Its Jacobian is the model's where the raceway contacts do not reach:
 //!   the cage's columns agree with the full Jacobian's to the round-off of
 //!   its differences (the raceway contacts do not read the cage), and the balls' rows of the rings'
@@ -76,6 +79,61 @@ fn the_fast_part_is_the_model_where_the_raceway_contacts_do_not_reach() {
     assert!(
         worst < 1e-3,
         "cage columns differ by {worst:e} of their largest entry"
+    );
+}
+
+/// The fast part is the pockets' terms alone: at the equilibrium start
+/// (every ball in the middle of its pocket) the balls have no rows or
+/// columns in it, and with every pocket pushing its ball each ball's
+/// block is what the pocket adds to the full Jacobian: the full Jacobian
+/// less that of the same model and point with pockets too wide to close.
+#[test]
+fn the_fast_part_is_the_pockets_terms() {
+    let (model, mut y) = model();
+    let shape = model.block_layout();
+    let balls_len = shape.border_start();
+    let mut work = JacobianWork::new(&model);
+    let mut fast = BlockJacobian::zeros(shape);
+    let t = 1e-3;
+    fast_part_difference(&model, t, &y, &mut fast, &mut work).unwrap();
+    for row in 0..shape.dimension() {
+        for col in 0..shape.dimension() {
+            if row < balls_len || col < balls_len {
+                assert_eq!(fast.get(row, col), 0.0, "open pockets: ({row}, {col})");
+            }
+        }
+    }
+    let layout = model.layout();
+    y[layout.cage() + 2] += 0.1e-3 / 27e-3;
+    y[layout.cage()] += 5e-6;
+    let steel = Material::STEEL_52100;
+    let (mut params, _) = dynamics_7008c(DragParameters::default());
+    params.cage.pocket_clearance *= 100.0;
+    let wide =
+        BearingModel::new(&bearing_7008c(), &steel, &steel, HertzModel::Exact, params).unwrap();
+    let jacobian = |m: &BearingModel| {
+        let mut f = vec![0.0; y.len()];
+        m.rhs(t, &y, &mut f);
+        let mut j = BlockJacobian::zeros(shape);
+        finite_difference(m, t, &y, &f, &mut j, &mut JacobianWork::new(m));
+        j
+    };
+    let (full, without) = (jacobian(&model), jacobian(&wide));
+    fast_part_difference(&model, t, &y, &mut fast, &mut work).unwrap();
+    let (b, mut worst, mut entries) = (shape.block_size, 0.0f64, 0);
+    for col in 0..balls_len {
+        let norm = column_norm(&full, col);
+        for row in (col / b) * b..(col / b + 1) * b {
+            let pocket = full.get(row, col) - without.get(row, col);
+            worst = worst.max((fast.get(row, col) - pocket).abs() / norm);
+            entries += usize::from(fast.get(row, col) != 0.0);
+        }
+    }
+    assert!(entries > 200, "{entries} entries in the balls' blocks");
+    // To the round-off of the differences, as the cage's columns above.
+    assert!(
+        worst < 1e-3,
+        "balls' blocks differ by {worst:e} of their columns"
     );
 }
 
