@@ -13,11 +13,12 @@
 //! the system marks inert (f does not read them, or they never change)
 //! are skipped. Dense systems fall back to one right-hand side per column.
 //!
-//! Threads: the blocks are shared out in contiguous chunks, one per thread,
-//! each differencing all the columns of its blocks in its own copy of the
-//! state (one hand-over per Jacobian); every block's numbers are a serial
-//! sweep's, and the border columns' couplings are summed in block order,
-//! so the Jacobian is the same whatever the threads.
+//! Threads: the blocks are shared out in contiguous chunks, a few per
+//! thread (so that blocks of unequal cost even out), each chunk
+//! differencing all the columns of its blocks in its own copy of the
+//! state; every block's numbers are a serial sweep's, and the border
+//! columns' couplings are summed in block order, so the Jacobian is the
+//! same whatever the threads.
 //!
 //! A split may also offer a **fast part** ([`BlockSplit::with_fast_part`],
 //! [`fast_part_difference`]), whose Jacobian an implicit method refreshes
@@ -162,6 +163,11 @@ pub trait BlockSplit: Sync {
     }
 }
 
+/// Chunks of blocks per thread when the blocks are differenced across
+/// threads: blocks of unequal cost (a fast part whose open pockets are
+/// skipped, [`BlockSplit::block_is_zero`]) even out between the threads.
+const CHUNKS_PER_THREAD: usize = 4;
+
 /// Work space for finite-difference Jacobians.
 #[derive(Debug, Clone)]
 pub struct JacobianWork {
@@ -182,8 +188,8 @@ pub struct JacobianWork {
     border_gradient: Vec<f64>,
     /// Per block: its perturbed coupling for each border column (m × c).
     border_couplings: Vec<f64>,
-    /// One copy of y per chunk of blocks (per thread of the pool the work
-    /// was made in).
+    /// One copy of y per chunk of blocks ([`CHUNKS_PER_THREAD`] per
+    /// thread of the pool the work was made in).
     y_copies: Vec<f64>,
     /// Per block: its right-hand side, a coupling and a border change.
     block_scratch: Vec<f64>,
@@ -222,7 +228,11 @@ impl JacobianWork {
             coupling_trial: vec![0.0; c],
             border_gradient: vec![0.0; c * layout.border],
             border_couplings: vec![0.0; blocks * layout.border * c],
-            y_copies: vec![0.0; n * rayon::current_num_threads().clamp(1, blocks.max(1))],
+            y_copies: vec![
+                0.0;
+                n * (CHUNKS_PER_THREAD * rayon::current_num_threads())
+                    .clamp(1, blocks.max(1))
+            ],
             block_scratch: vec![0.0; blocks * block_stride],
             block_stride,
         }
@@ -355,7 +365,7 @@ fn by_blocks(
         }
     }
     // Every block's columns and border columns, the blocks shared out in
-    // contiguous chunks, one per thread: block j reads only its own states
+    // contiguous chunks, a few per thread: block j reads only its own states
     // and the border's, so a chunk perturbs its blocks' states, and the
     // border's, in its own copy of y. Each block's numbers are those of a
     // serial sweep whatever the chunks (one hand-over per Jacobian, not
