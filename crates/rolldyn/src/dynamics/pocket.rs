@@ -65,8 +65,13 @@ impl Elements {
     /// Whether ball j's pocket contact acts: the law's force or the
     /// squeeze film's.
     pub(super) fn pocket_acts(&self, j: usize, y: &[f64], ball: &BallMotion) -> bool {
+        self.pocket_acts_at(self.pocket_offset(j, y, ball).0)
+    }
+
+    /// Whether a pocket contact acts at the ball's offset `offset` from
+    /// the pocket's centre.
+    fn pocket_acts_at(&self, offset: f64) -> bool {
         let cage = &self.params.cage;
-        let (offset, _) = self.pocket_offset(j, y, ball);
         let squeezed = cage.pocket_squeeze.is_some() && offset > 0.0;
         squeezed || cage.pocket_law.acts(offset, 0.5 * cage.pocket_clearance)
     }
@@ -85,11 +90,10 @@ impl Elements {
         let velocity = Vector3::new(0.0, y[c + 3], y[c + 4]);
         let spin = y[c + 5] * Vector3::x();
         let (offset, perp) = self.pocket_offset(j, y, ball);
-        let half_clearance = 0.5 * cage.pocket_clearance;
-        let squeezed = cage.pocket_squeeze.is_some() && offset > 0.0;
-        if !squeezed && !cage.pocket_law.acts(offset, half_clearance) {
+        if !self.pocket_acts_at(offset) {
             return None;
         }
+        let half_clearance = 0.5 * cage.pocket_clearance;
         let n = perp / offset;
         let point = q + 0.5 * self.geometry.ball_diameter * n;
         let pocket_point_velocity = velocity + spin.cross(&(q - centre));
