@@ -161,20 +161,32 @@ fn a_load_turning_with_the_ring_takes_the_shaft_rate_off_an_inner_race_fault() {
 /// with its cage turning about a fixed centre: the balls settle into a
 /// periodic pattern (measured 0.04 %); with the cage free to whirl in its
 /// cylindrical pockets, which do not hold it radially, they space
-/// themselves around the drifting cage (measured 1.6 %), the pockets'
-/// clearance (1.5 % of the ball spacing) bounding it. docs/validation.md,
-/// "Fault signatures".
+/// themselves around the drifting cage. The whirl is chaotic, so one run's
+/// jitter is one draw: over 30 runs at relative tolerances within 0.4 %
+/// of the case's, median 1.5 %, standard deviation 0.6 %, 0.48–3.0 %, one
+/// in 30 below 0.7 %. The test takes the mean of three draws (standard
+/// deviation ~0.36 %: a mean below 0.7 % is a 2.4σ event on an
+/// unchanged model, a cage that stops drifting falls to ~0.1 %).
+/// docs/validation.md, "Fault signatures".
 #[test]
 fn the_ball_passage_jitters_as_measured_only_around_a_drifting_cage() {
     let dir = temp_dir("passage-jitter");
     let mut jitter = Vec::new();
-    for (name, whirl) in [("fixed", "false"), ("whirling", "true")] {
+    // The case's relative tolerance 1e-3, and 0.1 % off it either way.
+    let runs = [
+        ("fixed", "false", "1e-3"),
+        ("whirling", "true", "1e-3"),
+        ("whirling-a", "true", "1.001e-3"),
+        ("whirling-b", "true", "0.999e-3"),
+    ];
+    for (name, whirl, tolerance) in runs {
         let out = dir.join(name);
         let (case_path, out_path) = (
             case().to_string_lossy().into_owned(),
             out.to_string_lossy().into_owned(),
         );
         let set = format!("cage.whirl={whirl}");
+        let tolerance = format!("solver.relative_tolerance={tolerance}");
         let o = rolldyn(
             &[
                 "run",
@@ -183,6 +195,8 @@ fn the_ball_passage_jitters_as_measured_only_around_a_drifting_cage() {
                 out_path.as_str(),
                 "--set",
                 &set,
+                "--set",
+                &tolerance,
             ],
             None,
         );
@@ -190,15 +204,23 @@ fn the_ball_passage_jitters_as_measured_only_around_a_drifting_cage() {
         let summary: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap())
                 .unwrap();
-        // The passages at 1/BPFO (107.5 Hz at 1797 rpm).
+        // The passages at 1/BPFO (107.5 Hz at 1797 rpm); a drifting cage
+        // slips behind it (12 runs: 0.3–1.1 % longer intervals, the cage
+        // at 711–715 rpm), as measured bearings do by 1–2 %.
         let interval = summary["ball_pass_interval_s"].as_f64().unwrap();
+        let slip = if whirl == "true" { 0.02 } else { 0.01 };
         assert!(
-            (interval * 107.5 - 1.0).abs() < 0.01,
+            (interval * 107.5 - 1.0).abs() < slip,
             "{name}: {interval} s"
         );
         jitter.push(summary["ball_pass_jitter"].as_f64().unwrap());
     }
     assert!(jitter[0] < 0.002, "fixed cage: jitter {}", jitter[0]);
-    assert!(jitter[1] > 0.007, "whirling cage: jitter {}", jitter[1]);
+    let whirling = jitter[1..].iter().sum::<f64>() / 3.0;
+    assert!(
+        whirling > 0.007,
+        "whirling cage: jitter {:?}, mean {whirling}",
+        &jitter[1..]
+    );
     std::fs::remove_dir_all(&dir).ok();
 }
