@@ -3,7 +3,9 @@
 //! count moves by several per cent with round-off: its ball impacts are
 //! chaotic). Per call, on one thread: the right-hand side, the mechanical
 //! energy (the energy control evaluates it twice per step), the step
-//! acceptance's contact bookkeeping, the finite-difference Jacobian and,
+//! acceptance's contact bookkeeping, the three at a step's end apart and
+//! from one shared pass (`OdeSystem::rhs_with_balance`), the
+//! finite-difference Jacobian and,
 //! where the model has one, its fast part's (refreshed at every step while
 //! the cage limits the steps), the factorization of σI − J (also on two
 //! threads) and a solve with it, for the 6304 of Shan et al. 2023 (planar, dry, traction at the contact
@@ -60,6 +62,19 @@ fn bench(name: &str, mut model: BearingModel, y0: &[f64], calls: usize) {
     });
     time_per_call(&format!("{name}: step acceptance"), calls, || {
         f64::from(u8::from(model.accept_step(t, &y)))
+    });
+    // What an accepted step evaluates at its end: the right-hand side, the
+    // energy and the acceptance apart, and from the shared pass.
+    time_per_call(&format!("{name}: end point apart"), calls, || {
+        model.rhs(t, &y, &mut dy);
+        let energy = model.energy(t, &y).total();
+        model.accept_step(t, &y);
+        energy
+    });
+    time_per_call(&format!("{name}: end point shared"), calls, || {
+        let balance = model.rhs_with_balance(t, &y, &mut dy);
+        model.accept_step(t, &y);
+        balance.map_or(0.0, |b| b.mechanical)
     });
     model.rhs(t, &y, &mut dy);
     let layout = model.blocks().expect("blocks").block_layout();

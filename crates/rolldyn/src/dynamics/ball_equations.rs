@@ -18,12 +18,14 @@
 //! the 7218B with FASTSIM this saves a third of the Jacobian's traction
 //! evaluations (docs/performance.md).
 
+use super::ball_pass::Extras;
 use super::coupling::BallCoupling;
+use super::end_point::{EndRecord, RacewayRecord};
 use super::film::FilmWork;
 use super::layout::StateLayout;
 use super::model::BearingModel;
 use super::motion::{BallMotion, RingMotion};
-use super::race_contact::{ContactOutput, ContactSample, Want};
+use super::race_contact::{ContactOutput, Want};
 use crate::power::Dissipation;
 use nalgebra::Vector3;
 
@@ -120,33 +122,20 @@ pub(super) enum Shares<'a> {
 }
 
 impl BearingModel {
-    /// Ball j's state derivatives into `dy` and its coupling to the border.
-    /// `films_power`: also the films' work (dynamics::film); `sink`: the
-    /// contacts' losses by mechanism; `sample`: the raceway contacts'
-    /// output quantities.
-    #[allow(clippy::too_many_arguments)]
+    /// Ball j's state derivatives into `dy` and its coupling to the border,
+    /// with the films' work (dynamics::film); `outputs`: the contacts'
+    /// losses by mechanism, the raceway contacts' output quantities and
+    /// the ball's end-point record (`dynamics::end_point`), where given.
     pub(super) fn ball_rhs(
         &self,
         t: f64,
         j: usize,
         y: &[f64],
-        inner: &RingMotion,
-        outer: &RingMotion,
+        rings: (&RingMotion, &RingMotion),
         dy: &mut [f64],
-        films_power: bool,
-        sink: Option<&mut Dissipation>,
-        sample: Option<&mut ContactSample>,
+        outputs: (Option<&mut Dissipation>, Extras<'_>),
     ) -> BallCoupling {
-        self.ball_rhs_with(
-            t,
-            j,
-            y,
-            (inner, outer),
-            dy,
-            films_power,
-            (sink, sample),
-            Shares::Evaluate(None),
-        )
+        self.ball_rhs_with(t, j, y, rings, dy, true, outputs, Shares::Evaluate(None))
     }
 
     /// A ball's block of the block split (`BlockSplit::block_rhs` and its
@@ -173,7 +162,7 @@ impl BearingModel {
                     (&inner, &outer),
                     dy_block,
                     false,
-                    (None, None),
+                    (None, (None, None)),
                     shares,
                 )
             }
@@ -240,7 +229,8 @@ impl BearingModel {
         !self.elements.pocket_acts(j, y, &ball)
     }
 
-    /// [`Self::ball_rhs`] with the contact shares from `shares`.
+    /// [`Self::ball_rhs`] with the contact shares from `shares` (an end-point
+    /// record only with all evaluated).
     #[allow(clippy::too_many_arguments)]
     pub(super) fn ball_rhs_with(
         &self,
@@ -250,7 +240,7 @@ impl BearingModel {
         (inner, outer): (&RingMotion, &RingMotion),
         dy: &mut [f64],
         films_power: bool,
-        (mut sink, mut sample): (Option<&mut Dissipation>, Option<&mut ContactSample>),
+        (mut sink, (mut sample, end)): (Option<&mut Dissipation>, Extras<'_>),
         shares: Shares<'_>,
     ) -> BallCoupling {
         let l = self.elements.layout;
@@ -271,6 +261,7 @@ impl BearingModel {
             }
             _ => None,
         };
+        let mut records = [None; 2];
         let inner_share = match kept(BallContact::Inner) {
             Some(share) => share,
             None => self.race_share(
@@ -278,7 +269,7 @@ impl BearingModel {
                 inner,
                 &ball,
                 0,
-                &mut film_work,
+                (&mut film_work, &mut records),
                 sink.as_deref_mut(),
                 sample.as_deref_mut().map(|s| &mut s.inner),
             ),
@@ -290,7 +281,7 @@ impl BearingModel {
                 outer,
                 &ball,
                 1,
-                &mut film_work,
+                (&mut film_work, &mut records),
                 sink.as_deref_mut(),
                 sample.map(|s| &mut s.outer),
             ),
@@ -300,6 +291,17 @@ impl BearingModel {
             None => self.pocket_share(j, y, &ball, sink.as_deref_mut()),
         };
         let shares = [inner_share, outer_share, pocket_share];
+        if let Some(end) = end {
+            let known = |k: usize| Some(records[k].map(|r| (r.penetration, r.contact_angle)));
+            let raceways = [
+                self.raceway_energy(inner, &self.elements.inner_table, &ball, known(0)),
+                self.raceway_energy(outer, &self.elements.outer_table, &ball, known(1)),
+            ];
+            *end = EndRecord {
+                energy: self.ball_energy(j, y, &ball, raceways),
+                raceways: records,
+            };
+        }
         if let Some(memo) = memo {
             for (share, slot) in shares.iter().zip(memo.chunks_mut(ContactShare::LEN)) {
                 share.write(slot);
@@ -375,7 +377,8 @@ impl BearingModel {
 
     /// Ball j's share of its contact with `ring` (0: inner, whose moment
     /// about the ring centre the share carries; 1: outer); its film work
-    /// goes to `film_work`, its losses to `sink`, its output quantities to
+    /// goes to `film_work[k]`, its record for the step's acceptance to
+    /// `records[k]`, its losses to `sink`, its output quantities to
     /// `output` (left as they are when the contact is open).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
@@ -385,7 +388,7 @@ impl BearingModel {
         ring: &RingMotion,
         ball: &BallMotion,
         k: usize,
-        film_work: &mut [Option<FilmWork>; 2],
+        (film_work, records): (&mut [Option<FilmWork>; 2], &mut [Option<RacewayRecord>; 2]),
         sink: Option<&mut Dissipation>,
         output: Option<&mut ContactOutput>,
     ) -> ContactShare {
@@ -410,6 +413,7 @@ impl BearingModel {
             *o = cn.output;
         }
         film_work[k] = cn.film_work;
+        records[k] = Some(RacewayRecord::of(cn));
         if let Some(d) = sink {
             if k == 0 { &mut d.inner } else { &mut d.outer }.add(&cn.losses);
         }

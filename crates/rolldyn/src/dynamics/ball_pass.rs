@@ -9,10 +9,12 @@
 //! sums them: the right-hand side is bit-identical whatever the number of
 //! threads, and whether the pass runs in parallel at all (tests below).
 //!
-//! The dissipated power by component and the contacts' output quantities
-//! (once per output sample) go the same way: each ball's share in its
-//! slot, the power summed in ball order into the caller's sink, which is
-//! what the serial pass accumulates, the contacts copied to the caller's.
+//! The dissipated power by component, the contacts' output quantities
+//! (once per output sample) and the end-point records (energy shares and
+//! raceway records, `dynamics::end_point`) go the same way: each ball's
+//! share in its slot, the power summed in ball order into the caller's
+//! sink, which is what the serial pass accumulates, the contacts and
+//! records copied to the caller's.
 //!
 //! Parallel only where it pays: a pass whose contacts integrate traction
 //! over a grid (EHL, traction curve or stress law on the strip grid, or
@@ -21,10 +23,15 @@
 //! ball) stays serial. The slots are allocated once, with the model.
 
 use super::coupling::BallCoupling;
+use super::end_point::EndRecord;
 use super::race_contact::ContactSample;
 use crate::power::Dissipation;
 use rayon::prelude::*;
 use std::sync::{Mutex, PoisonError};
+
+/// What a ball's evaluation may also write besides its derivatives and
+/// losses: its raceway contacts' outputs and its end-point record.
+pub(super) type Extras<'a> = (Option<&'a mut ContactSample>, Option<&'a mut EndRecord>);
 
 /// Fewest balls for which the pass runs in parallel.
 const MIN_PARALLEL_BALLS: usize = 4;
@@ -36,7 +43,16 @@ pub(super) struct BallPass {
     expensive: bool,
     /// Whether the balls are evaluated across threads.
     parallel: bool,
-    slots: Mutex<Vec<(BallCoupling, Dissipation, ContactSample)>>,
+    slots: Mutex<Vec<Slot>>,
+}
+
+/// One ball's coupling, losses, contact outputs and end-point record.
+#[derive(Debug, Clone, Default)]
+struct Slot {
+    coupling: BallCoupling,
+    power: Dissipation,
+    sample: ContactSample,
+    end: EndRecord,
 }
 
 impl BallPass {
@@ -62,26 +78,21 @@ impl BallPass {
         self.parallel && rayon::current_num_threads() > 1
     }
 
-    /// Runs `ball(j, dy_j, sink, sample)` for every ball (its derivatives
-    /// go into `dy_balls`' j-th chunk of `ball_len`, its dissipation into
-    /// `sink` and its contacts into `samples[j]` when given) and returns
-    /// the sum of the couplings, added in ball order.
+    /// Runs `ball(j, dy_j, sink, (sample, end))` for every ball (its
+    /// derivatives go into `dy_balls`' j-th chunk of `ball_len`, its
+    /// dissipation into `sink`, its contacts into `samples[j]` and its
+    /// end-point record into `ends[j]` when given) and returns the sum of
+    /// the couplings, added in ball order.
     pub(super) fn sum<F>(
         &self,
         dy_balls: &mut [f64],
         ball_len: usize,
         mut sink: Option<&mut Dissipation>,
-        mut samples: Option<&mut [ContactSample]>,
+        (mut samples, mut ends): (Option<&mut [ContactSample]>, Option<&mut [EndRecord]>),
         ball: F,
     ) -> BallCoupling
     where
-        F: Fn(
-                usize,
-                &mut [f64],
-                Option<&mut Dissipation>,
-                Option<&mut ContactSample>,
-            ) -> BallCoupling
-            + Sync,
+        F: Fn(usize, &mut [f64], Option<&mut Dissipation>, Extras<'_>) -> BallCoupling + Sync,
     {
         let mut total = BallCoupling::default();
         if !self.is_parallel() {
@@ -90,11 +101,12 @@ impl BallPass {
                     s[j] = ContactSample::default();
                     &mut s[j]
                 });
-                total.add(&ball(j, dy, sink.as_deref_mut(), sample));
+                let end = ends.as_deref_mut().map(|e| &mut e[j]);
+                total.add(&ball(j, dy, sink.as_deref_mut(), (sample, end)));
             }
             return total;
         }
-        let (split, sampled) = (sink.is_some(), samples.is_some());
+        let (split, sampled, ended) = (sink.is_some(), samples.is_some(), ends.is_some());
         // A poisoned lock only means another pass panicked mid-way; every
         // slot is overwritten before it is read.
         let mut slots = self.slots.lock().unwrap_or_else(PoisonError::into_inner);
@@ -102,18 +114,25 @@ impl BallPass {
             .par_iter_mut()
             .zip(dy_balls.par_chunks_mut(ball_len))
             .enumerate()
-            .for_each(|(j, ((coupling, power, sample), dy))| {
-                *power = Dissipation::default();
-                *sample = ContactSample::default();
-                *coupling = ball(j, dy, split.then_some(power), sampled.then_some(sample));
+            .for_each(|(j, (slot, dy))| {
+                slot.power = Dissipation::default();
+                slot.sample = ContactSample::default();
+                let extras = (
+                    sampled.then_some(&mut slot.sample),
+                    ended.then_some(&mut slot.end),
+                );
+                slot.coupling = ball(j, dy, split.then_some(&mut slot.power), extras);
             });
-        for (j, (coupling, power, sample)) in slots.iter().enumerate() {
-            total.add(coupling);
+        for (j, slot) in slots.iter().enumerate() {
+            total.add(&slot.coupling);
             if let Some(sink) = sink.as_deref_mut() {
-                sink.add(power);
+                sink.add(&slot.power);
             }
             if let Some(samples) = samples.as_deref_mut() {
-                samples[j] = *sample;
+                samples[j] = slot.sample;
+            }
+            if let Some(ends) = ends.as_deref_mut() {
+                ends[j] = slot.end;
             }
         }
         total
@@ -147,13 +166,17 @@ mod tests {
         j: usize,
         dy: &mut [f64],
         sink: Option<&mut Dissipation>,
-        sample: Option<&mut ContactSample>,
+        (sample, end): Extras<'_>,
     ) -> BallCoupling {
         let x = (j as f64 * 0.7).sin() * 10f64.powi((j % 17) as i32 - 8);
         dy.fill(x);
         if let Some(s) = sample {
             s.inner.load = x;
             s.outer.angle = -x;
+        }
+        if let Some(e) = end {
+            e.energy.kinetic = x;
+            e.energy.elastic[2] = -x;
         }
         if let Some(d) = sink {
             d.inner.spin += x;
@@ -174,15 +197,24 @@ mod tests {
         }
     }
 
-    fn run(
-        pass: &BallPass,
-        balls: usize,
-    ) -> (BallCoupling, Vec<f64>, Dissipation, Vec<ContactSample>) {
+    /// Everything a pass writes: the couplings' sum, the derivatives, the
+    /// losses, the samples and the end-point records.
+    type Written = (
+        BallCoupling,
+        Vec<f64>,
+        Dissipation,
+        Vec<ContactSample>,
+        Vec<EndRecord>,
+    );
+
+    fn run(pass: &BallPass, balls: usize) -> Written {
         let mut dy = vec![0.0; balls * 9];
         let mut power = Dissipation::default();
         let mut samples = vec![ContactSample::default(); balls];
-        let total = pass.sum(&mut dy, 9, Some(&mut power), Some(&mut samples), ball);
-        (total, dy, power, samples)
+        let mut ends = vec![EndRecord::default(); balls];
+        let extras = (Some(&mut samples[..]), Some(&mut ends[..]));
+        let total = pass.sum(&mut dy, 9, Some(&mut power), extras, ball);
+        (total, dy, power, samples, ends)
     }
 
     fn bits(c: &BallCoupling) -> Vec<u64> {
@@ -194,12 +226,17 @@ mod tests {
     #[test]
     fn parallel_pass_is_bit_identical_to_the_serial_one_on_any_pool() {
         let balls = 40;
-        let (serial, dy_serial, power_serial, samples_serial) =
+        let (serial, dy_serial, power_serial, samples_serial, ends_serial) =
             run(&BallPass::new(balls, false), balls);
         assert!(
             samples_serial
                 .iter()
                 .all(|s| s.inner.load == -s.outer.angle)
+        );
+        assert!(
+            ends_serial
+                .iter()
+                .all(|e| e.energy.kinetic == -e.energy.elastic[2])
         );
         let parallel = BallPass::new(balls, true);
         for threads in [1, 2, 3, 8] {
@@ -207,10 +244,11 @@ mod tests {
                 .num_threads(threads)
                 .build()
                 .unwrap();
-            let (total, dy, power, samples) = pool.install(|| run(&parallel, balls));
+            let (total, dy, power, samples, ends) = pool.install(|| run(&parallel, balls));
             assert_eq!(bits(&total), bits(&serial), "{threads} threads");
             assert_eq!(dy, dy_serial, "{threads} threads");
             assert_eq!(samples, samples_serial, "{threads} threads");
+            assert_eq!(ends, ends_serial, "{threads} threads");
             assert_eq!(
                 format!("{power:?}"),
                 format!("{power_serial:?}"),

@@ -10,6 +10,8 @@
 //! (2/5) K_c δ^{5/2}; the K_c tables vary by ~1e-3 per degree.
 
 use super::model::BearingModel;
+use super::motion::{BallMotion, RingMotion};
+use crate::contact::ContactTable;
 use nalgebra::Vector3;
 
 /// Energy of a state \[J\].
@@ -29,6 +31,27 @@ impl Energy {
     pub fn total(&self) -> f64 {
         self.kinetic + self.elastic + self.potential
     }
+
+    /// Adds a ball's share, term by term in a fixed order (the same sum
+    /// however the share was evaluated).
+    pub(super) fn add_ball(&mut self, ball: &BallEnergy) {
+        self.kinetic += ball.kinetic;
+        self.potential += ball.potential;
+        for elastic in ball.elastic {
+            self.elastic += elastic;
+        }
+    }
+}
+
+/// One ball's share of the mechanical energy \[J\].
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(super) struct BallEnergy {
+    /// ½ m v² + ½ I ω².
+    pub(super) kinetic: f64,
+    /// m g z.
+    pub(super) potential: f64,
+    /// Its inner raceway, outer raceway and pocket contacts.
+    pub(super) elastic: [f64; 3],
 }
 
 impl BearingModel {
@@ -49,30 +72,68 @@ impl BearingModel {
     /// Mechanical energy of state `y` at time `t` (docs/model.md §10); its change
     /// equals the drive work minus the dissipated energy.
     pub fn energy(&self, t: f64, y: &[f64]) -> Energy {
-        let l = self.elements.layout;
         let (inner, outer) = self.elements.ring_motion(t, y);
-        let g = self.elements.params.gravity;
         let mut e = Energy::default();
-        for j in 0..l.balls {
+        for j in 0..self.elements.layout.balls {
             let (ball, _) = self.elements.ball_kinematics(j, y);
-            let (q, v, w) = (ball.centre, ball.velocity, ball.omega);
-            e.kinetic += 0.5 * self.elements.ball_mass * v.norm_squared()
-                + 0.5 * self.elements.ball_inertia * w.norm_squared();
-            e.potential += self.elements.ball_mass * g * q.z;
-            for (ring, table) in [
-                (&inner, &self.elements.inner_table),
-                (&outer, &self.elements.outer_table),
-            ] {
-                if self.elements.layout.film_work {
-                    e.elastic += self.elements.film_contact_energy(ring, table, &ball);
-                } else if let Some((c, _)) = self.elements.race_geometry(ring, &ball) {
-                    let delta = c.penetration;
-                    e.elastic +=
-                        0.4 * table.stiffness(c.contact_angle) * delta * delta * delta.sqrt();
-                }
-            }
-            e.elastic += self.elements.pocket_energy(j, y, &ball);
+            let raceways = [
+                self.raceway_energy(&inner, &self.elements.inner_table, &ball, None),
+                self.raceway_energy(&outer, &self.elements.outer_table, &ball, None),
+            ];
+            e.add_ball(&self.ball_energy(j, y, &ball, raceways));
         }
+        self.border_energy(t, y, &mut e);
+        e
+    }
+
+    /// Ball j's share of the mechanical energy, its raceway contacts'
+    /// elastic energies given.
+    pub(super) fn ball_energy(
+        &self,
+        j: usize,
+        y: &[f64],
+        ball: &BallMotion,
+        raceways: [f64; 2],
+    ) -> BallEnergy {
+        let (q, v, w) = (ball.centre, ball.velocity, ball.omega);
+        let el = &self.elements;
+        BallEnergy {
+            kinetic: 0.5 * el.ball_mass * v.norm_squared()
+                + 0.5 * el.ball_inertia * w.norm_squared(),
+            potential: el.ball_mass * el.params.gravity * q.z,
+            elastic: [raceways[0], raceways[1], el.pocket_energy(j, y, ball)],
+        }
+    }
+
+    /// Elastic energy of a ball's contact with `ring` \[J\]: with the film
+    /// in the approach its film's (`dynamics::film`), else (2/5) K_c(α)
+    /// δ^{5/2} of its penetration δ and contact angle α, `known` where the
+    /// caller has them (`Some(None)`: open), else from the geometry.
+    pub(super) fn raceway_energy(
+        &self,
+        ring: &RingMotion,
+        table: &ContactTable,
+        ball: &BallMotion,
+        known: Option<Option<(f64, f64)>>,
+    ) -> f64 {
+        if self.elements.layout.film_work {
+            return self.elements.film_contact_energy(ring, table, ball);
+        }
+        let geometry = known.unwrap_or_else(|| {
+            self.elements
+                .race_geometry(ring, ball)
+                .map(|(c, _)| (c.penetration, c.contact_angle))
+        });
+        geometry.map_or(0.0, |(delta, angle)| {
+            0.4 * table.stiffness(angle) * delta * delta * delta.sqrt()
+        })
+    }
+
+    /// Adds the rings', cage's, drive's and supports' energies and the
+    /// applied loads' potential to `e`, which holds the balls'.
+    pub(super) fn border_energy(&self, t: f64, y: &[f64], e: &mut Energy) {
+        let l = self.elements.layout;
+        let g = self.elements.params.gravity;
         let r = l.ring();
         let p = &self.elements.params;
         e.kinetic +=
@@ -111,6 +172,5 @@ impl BearingModel {
             let stop = (offset - guide.max_eccentricity * guide.radial_clearance).max(0.0);
             e.elastic += 0.5 * guide.stop_stiffness * stop * stop;
         }
-        e
     }
 }

@@ -36,6 +36,7 @@ mod block_split;
 pub mod checkpoint;
 mod coupling;
 pub mod elements;
+mod end_point;
 pub mod energy;
 pub mod film;
 pub mod layout;

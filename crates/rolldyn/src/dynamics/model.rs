@@ -40,6 +40,7 @@
 use super::ball_pass::BallPass;
 use super::coupling::BallCoupling;
 use super::elements::Elements;
+use super::end_point::{EndPoint, EndRecord};
 use super::layout::StateLayout;
 use super::motion::RingMotion;
 use super::parameters::DynamicsParameters;
@@ -80,6 +81,9 @@ pub struct BearingModel {
     pub(super) growth: Vec<crate::surface::GrowingSpall>,
     /// The balls' contact evaluations, serial or across threads.
     pub(super) ball_pass: BallPass,
+    /// The last step's candidate end, evaluated with its energy and
+    /// raceway records (`dynamics::end_point`).
+    pub(super) end_point: EndPoint,
 }
 
 impl BearingModel {
@@ -97,14 +101,17 @@ impl BearingModel {
                 .traction
                 .integrates_over_a_grid(&params.traction_integration),
         );
+        let elements = Elements::new(geometry, ball, rings, hertz, params)?;
+        let end_point = EndPoint::new(geometry.ball_count, elements.layout.len());
         let mut model = Self {
-            elements: Elements::new(geometry, ball, rings, hertz, params)?,
+            elements,
             episodes: vec![[ContactEpisode::default(); 2]; geometry.ball_count],
             peak_loads: PeakLoads::default(),
             thermal: None,
             sensor: None,
             growth: Vec::new(),
             ball_pass,
+            end_point,
         };
         model.growth = model.elements.params.surface.growing_spalls();
         Ok(model)
@@ -393,14 +400,17 @@ impl BearingModel {
 
 impl BearingModel {
     /// The equations of motion; with `sink`, also the dissipated power by
-    /// component and the drive torque.
-    fn rhs_with(
+    /// component and the drive torque; with `samples`, the raceway
+    /// contacts' outputs; with `ends`, each ball's end-point record
+    /// (`dynamics::end_point`).
+    pub(super) fn rhs_with(
         &self,
         t: f64,
         y: &[f64],
         dy: &mut [f64],
         mut sink: Option<&mut Dissipation>,
         samples: Option<&mut [ContactSample]>,
+        ends: Option<&mut [EndRecord]>,
     ) {
         let l = self.elements.layout;
         let (inner, outer) = self.elements.ring_motion(t, y);
@@ -409,9 +419,9 @@ impl BearingModel {
             dy_balls,
             l.ball_len(),
             sink.as_deref_mut(),
-            samples,
-            |j, dy_ball, sink, sample| {
-                self.ball_rhs(t, j, y, &inner, &outer, dy_ball, true, sink, sample)
+            (samples, ends),
+            |j, dy_ball, sink, extras| {
+                self.ball_rhs(t, j, y, (&inner, &outer), dy_ball, (sink, extras))
             },
         );
         self.border_rhs_with(t, y, &inner, &balls, border, sink);
@@ -423,7 +433,7 @@ impl BearingModel {
     /// dissipated-energy accumulator, `dy[layout().work() + 1]`.
     pub fn rhs_with_power(&self, t: f64, y: &[f64], dy: &mut [f64]) -> Dissipation {
         let mut power = Dissipation::default();
-        self.rhs_with(t, y, dy, Some(&mut power), None);
+        self.rhs_with(t, y, dy, Some(&mut power), None, None);
         power
     }
 
@@ -445,7 +455,14 @@ impl BearingModel {
             return power;
         }
         let mut power = Dissipation::default();
-        self.rhs_with(t, y, dy, Some(&mut power), Some(&mut samples[..balls]));
+        self.rhs_with(
+            t,
+            y,
+            dy,
+            Some(&mut power),
+            Some(&mut samples[..balls]),
+            None,
+        );
         power
     }
 }
@@ -460,7 +477,7 @@ impl OdeSystem for BearingModel {
     }
 
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        self.rhs_with(t, y, dy, None, None);
+        self.rhs_with(t, y, dy, None, None, None);
     }
 
     fn blocks(&self) -> Option<&dyn BlockSplit> {
@@ -550,32 +567,45 @@ impl OdeSystem for BearingModel {
         self.elements.spall_step_limit(t, y)
     }
 
+    /// The candidate end's right-hand side and balance from one pass over
+    /// the balls, its raceway records kept for `accept_step`
+    /// (`dynamics::end_point`).
+    fn rhs_with_balance(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Option<EnergyBalance> {
+        Some(self.rhs_with_end_records(t, y, dy))
+    }
+
+    /// Records each raceway contact's episode and peak load and advances
+    /// the sensor chain, the growing spalls and the thermal network; the
+    /// contacts come from the `rhs_with_balance` evaluation at (t, y) if
+    /// that was the last, else are evaluated here (normal forces only).
     fn accept_step(&mut self, t: f64, y: &[f64]) -> bool {
-        let (inner, outer) = self.elements.ring_motion(t, y);
         let floor = self.elements.params.impact_speed_floor;
         let mut changed = false;
         let mut outer_raceway = Vector3::zeros();
+        let source = match self.end_point.take_at(t, y) {
+            Some(balls) => Records::Kept(balls),
+            None => {
+                let (inner, outer) = self.elements.ring_motion(t, y);
+                Records::Evaluate(inner, outer)
+            }
+        };
         for j in 0..self.elements.layout.balls {
-            let (ball, _) = self.elements.ball_kinematics(j, y);
-            for (k, (ring, table)) in [
-                (&inner, &self.elements.inner_table),
-                (&outer, &self.elements.outer_table),
-            ]
-            .into_iter()
-            .enumerate()
-            {
-                let before = self.episodes[j][k];
-                // Only the penetration matters here: no traction.
-                let contact =
+            let raceways = match &source {
+                Records::Kept(balls) => balls[j].raceways,
+                Records::Evaluate(inner, outer) => {
                     self.elements
-                        .race_contact(ring, table, &before, &ball, Want::Penetration);
+                        .raceway_records(j, y, (inner, outer), &self.episodes[j])
+                }
+            };
+            for (k, record) in raceways.into_iter().enumerate() {
+                let before = self.episodes[j][k];
                 let mut episode = before;
-                match contact {
-                    Some(cn) => {
-                        episode.accept(cn.geometry.penetration, cn.penetration_rate, floor);
-                        self.peak_loads.raise(k, cn.load);
+                match record {
+                    Some(r) => {
+                        episode.accept(r.penetration, r.penetration_rate, floor);
+                        self.peak_loads.raise(k, r.load);
                         if k == 1 {
-                            outer_raceway += cn.surface.ring_force - cn.force;
+                            outer_raceway += r.ring_force;
                         }
                     }
                     None => episode.accept(-1.0, 0.0, floor),
@@ -599,6 +629,16 @@ impl OdeSystem for BearingModel {
                     .is_some())
             || thermal
     }
+}
+
+/// Where an acceptance takes its raceway records from (one on the stack
+/// per acceptance: its size does not matter).
+#[allow(clippy::large_enum_variant)]
+enum Records<'a> {
+    /// The `rhs_with_balance` evaluation at the accepted point.
+    Kept(&'a [EndRecord]),
+    /// Evaluated anew with these ring motions (inner, outer).
+    Evaluate(RingMotion, RingMotion),
 }
 
 /// The thermal network advanced alongside a run (`thermal_coupling`).

@@ -162,8 +162,9 @@ pub(crate) trait StepMethod {
     /// Prepares an attempt (an implicit method refreshes its Jacobian).
     fn prepare<S: OdeSystem>(&mut self, _system: &S) {}
     /// Attempts step h from the current point; the scaled error norm (≤ 1
-    /// accepts; ∞ when not finite).
-    fn attempt<S: OdeSystem>(&mut self, system: &S, h: f64) -> f64;
+    /// accepts; ∞ when not finite). The system is `&mut` for
+    /// [`OdeSystem::rhs_with_balance`] at the candidate end.
+    fn attempt<S: OdeSystem>(&mut self, system: &mut S, h: f64) -> f64;
     /// Moves to the attempted step's end and calls the system's
     /// `accept_step`.
     fn finish<S: OdeSystem>(&mut self, system: &mut S, h: f64);

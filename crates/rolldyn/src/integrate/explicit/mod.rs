@@ -240,9 +240,15 @@ impl ExplicitRk {
 
     /// Computes the stages and the candidate y_new for step h; returns the
     /// scaled error norm (0 for methods without an estimate).
-    fn try_step(&mut self, system: &impl OdeSystem, h: f64, rtol: Option<f64>) -> f64 {
+    fn try_step(&mut self, system: &mut impl OdeSystem, h: f64, rtol: Option<f64>) -> f64 {
         let tab = self.tableau;
         let n = self.y.len();
+        let last = tab.c.len() - 1;
+        // An FSAL method's last stage is the candidate y₁ (its row of a is
+        // b, so the same sums give the same bits): the energy control's
+        // balance there comes with that stage's right-hand side.
+        let fused = tab.fsal && rtol.is_some() && self.energy.is_some();
+        let mut end = None;
         self.k[0].copy_from_slice(&self.f);
         for s in 1..tab.c.len() {
             let row = tab.a[s];
@@ -253,7 +259,12 @@ impl ExplicitRk {
                 }
                 self.stage[i] = self.y[i] + h * acc;
             }
-            system.rhs(self.t + tab.c[s] * h, &self.stage, &mut self.k[s]);
+            let t_stage = self.t + tab.c[s] * h;
+            if fused && s == last {
+                end = system.rhs_with_balance(t_stage, &self.stage, &mut self.k[s]);
+            } else {
+                system.rhs(t_stage, &self.stage, &mut self.k[s]);
+            }
             self.stats.rhs_evaluations += 1;
         }
         for i in 0..n {
@@ -288,10 +299,14 @@ impl ExplicitRk {
         match &mut self.energy {
             // Only a step the states pass needs the energy's verdict.
             Some(energy) if err <= 1.0 => {
+                if !fused {
+                    end = system.energy_balance(self.t + h, &self.y_new);
+                }
                 let (k, weights) = (&self.k, tab.error);
                 let error =
                     |i: usize| h * weights.iter().zip(k).map(|(w, k)| w * k[i]).sum::<f64>();
-                err.max(energy.scaled_error(system, self.t, &self.y, h, &self.y_new, error))
+                let candidate = (&self.y_new[..], end);
+                err.max(energy.scaled_error(system, self.t, &self.y, h, candidate, error))
             }
             _ => err,
         }
@@ -379,7 +394,7 @@ impl StepMethod for ExplicitRk {
         (&mut self.h, &mut self.control_state)
     }
 
-    fn attempt<S: OdeSystem>(&mut self, system: &S, h: f64) -> f64 {
+    fn attempt<S: OdeSystem>(&mut self, system: &mut S, h: f64) -> f64 {
         let rtol = match self.control {
             StepControl::Adaptive {
                 relative_tolerance, ..

@@ -26,7 +26,11 @@
 //! L-stable, stiffly accurate, W-order 3. The first stage reuses f at the
 //! start of the step, which an accepted step evaluates anyway for the
 //! dense output (cubic Hermite, order 3), so a step costs 4 right-hand
-//! sides and one factorization.
+//! sides and one factorization. Under the energy control that f(y₁) comes
+//! with the balance at y₁ ([`OdeSystem::rhs_with_balance`], one pass over
+//! the contacts) in every attempt the states' error passes, and is kept
+//! if the step is accepted; an attempt the energy then rejects has spent
+//! it.
 
 use super::checkpoint::{
     Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
@@ -189,6 +193,11 @@ pub struct Rosenbrock {
     stages: Vec<Vec<f64>>,
     stage_y: Vec<f64>,
     y_new: Vec<f64>,
+    /// f at y_new, when the last attempt evaluated it with the energy
+    /// balance there ([`OdeSystem::rhs_with_balance`]; `end_evaluated`):
+    /// the next step's first stage if the step is accepted.
+    f_new: Vec<f64>,
+    end_evaluated: bool,
     error: Vec<f64>,
     tolerances: Tolerances,
     jacobian: BlockJacobian,
@@ -273,6 +282,8 @@ impl Rosenbrock {
             stages: vec![vec![0.0; n]; coefficients.stages],
             stage_y: vec![0.0; n],
             y_new: vec![0.0; n],
+            f_new: vec![0.0; n],
+            end_evaluated: false,
             error: vec![0.0; n],
             tolerances,
             jacobian: BlockJacobian::zeros(layout),
@@ -407,9 +418,10 @@ impl Rosenbrock {
 
     /// Stages and candidate for step h; the scaled error norm (∞ when the
     /// matrix is singular or the stages are not finite).
-    fn try_step(&mut self, system: &impl OdeSystem, h: f64) -> f64 {
+    fn try_step(&mut self, system: &mut impl OdeSystem, h: f64) -> f64 {
         let co = self.coefficients;
         let n = self.y.len();
+        self.end_evaluated = false;
         if self.factored_step != Some(h) {
             self.stats.factorizations += 1;
             let sigma = 1.0 / (h * co.gamma);
@@ -480,10 +492,16 @@ impl Rosenbrock {
             return f64::INFINITY;
         }
         match &mut self.energy {
-            // Only a step the states pass needs the energy's verdict.
+            // Only a step the states pass needs the energy's verdict; the
+            // balance at y₁ comes with f(y₁), which an accepted step needs
+            // next.
             Some(energy) if err <= 1.0 => {
+                let end = system.rhs_with_balance(self.t + h, &self.y_new, &mut self.f_new);
+                self.stats.rhs_evaluations += 1;
+                self.end_evaluated = true;
                 let e = &self.error;
-                err.max(energy.scaled_error(system, self.t, &self.y, h, &self.y_new, |k| e[k]))
+                let candidate = (&self.y_new[..], end);
+                err.max(energy.scaled_error(system, self.t, &self.y, h, candidate, |k| e[k]))
             }
             _ => err,
         }
@@ -496,9 +514,13 @@ impl Rosenbrock {
         self.f_prev.copy_from_slice(&self.f);
         self.t += h;
         self.y.copy_from_slice(&self.y_new);
-        system.accept_step(self.t, &self.y);
-        system.rhs(self.t, &self.y, &mut self.f);
-        self.stats.rhs_evaluations += 1;
+        let changed = system.accept_step(self.t, &self.y);
+        if self.end_evaluated && !changed {
+            std::mem::swap(&mut self.f, &mut self.f_new);
+        } else {
+            system.rhs(self.t, &self.y, &mut self.f);
+            self.stats.rhs_evaluations += 1;
+        }
         self.stats.steps += 1;
         if let Some(energy) = &mut self.energy {
             energy.accepted();
@@ -553,7 +575,7 @@ impl StepMethod for Rosenbrock {
         }
     }
 
-    fn attempt<S: OdeSystem>(&mut self, system: &S, h: f64) -> f64 {
+    fn attempt<S: OdeSystem>(&mut self, system: &mut S, h: f64) -> f64 {
         self.try_step(system, h)
     }
 

@@ -96,7 +96,7 @@ fn oscillation_damped_per_period_as_the_stability_function_says() {
         r.jacobian_age = Some(0);
         let periods = 10;
         for _ in 0..steps * periods {
-            r.attempt(&Oscillator, h);
+            r.attempt(&mut Oscillator, h);
             r.finish_step(&mut Oscillator, h);
         }
         let amplitude = r.y()[0].hypot(r.y()[1]);
@@ -146,7 +146,7 @@ fn third_order_with_exact_and_with_wrong_jacobian() {
                 while r.t() < 1.0 - 1e-12 {
                     // Keep the chosen Jacobian and step: attempt directly.
                     let h = h.min(1.0 - r.t());
-                    r.attempt(&Rotating, h);
+                    r.attempt(&mut Rotating, h);
                     r.finish_step(&mut Rotating, h);
                 }
                 (r.y()[0] - reference[0]).hypot(r.y()[1] - reference[1])
@@ -216,7 +216,7 @@ fn scaled_energy_error_goes_as_the_states_error() {
             // so that the allowance goes as h.
             .with_energy_control(&Pendulum, 1e-3);
         r.evaluate_jacobian(&Pendulum);
-        r.attempt(&Pendulum, h)
+        r.attempt(&mut Pendulum, h)
     };
     for h in [0.05, 0.025, 0.0125] {
         let ratio = scaled(h) / scaled(0.5 * h);
