@@ -13,15 +13,14 @@
 //! raceway contacts' penetration, rate and load; `accept_step` at the same
 //! (t, y) reads them instead of evaluating the contacts again. Every
 //! quantity is the same expression on the same operands as the separate
-//! evaluations, so the results are the same bits.
+//! evaluations, so the results are the same bits. This file holds the
+//! records; the pass is `BearingModel::rhs_with_end_records`
+//! (`dynamics::energy`), the acceptance `BearingModel::accept_step`.
 
 use super::elements::Elements;
-use super::energy::{BallEnergy, Energy};
-use super::model::BearingModel;
 use super::motion::RingMotion;
 use super::race_contact::{RaceContact, Want};
 use crate::contact::normal_law::ContactEpisode;
-use crate::integrate::EnergyBalance;
 use nalgebra::Vector3;
 
 /// What the acceptance needs of one raceway contact.
@@ -51,6 +50,17 @@ impl RacewayRecord {
             ring_force: contact.surface.ring_force + contact.load * contact.geometry.normal,
         }
     }
+}
+
+/// One ball's share of the mechanical energy \[J\] (`dynamics::energy`).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(super) struct BallEnergy {
+    /// ½ m v² + ½ I ω².
+    pub(super) kinetic: f64,
+    /// m g z.
+    pub(super) potential: f64,
+    /// Its inner raceway, outer raceway and pocket contacts.
+    pub(super) elastic: [f64; 3],
 }
 
 /// One ball's part of an end-point evaluation.
@@ -84,42 +94,26 @@ impl EndPoint {
         }
     }
 
+    /// The balls' slots for an evaluation at (t, y), which they then hold.
+    pub(super) fn fill(&mut self, t: f64, y: &[f64]) -> &mut [EndRecord] {
+        self.t = t;
+        self.y.clear();
+        self.y.extend_from_slice(y);
+        self.valid = true;
+        &mut self.balls
+    }
+
     /// The balls' records of an evaluation at exactly (t, y), once: the
     /// evaluation is forgotten either way.
     pub(super) fn take_at(&mut self, t: f64, y: &[f64]) -> Option<&[EndRecord]> {
         let hit = std::mem::replace(&mut self.valid, false) && self.t == t && self.y == y;
         hit.then_some(&self.balls[..])
     }
-}
 
-impl BearingModel {
-    /// [`crate::integrate::OdeSystem::rhs_with_balance`]: one pass over the
-    /// balls gives f, their energy shares and their raceway records, kept
-    /// for `accept_step` at (t, y).
-    pub(super) fn rhs_with_end_records(
-        &mut self,
-        t: f64,
-        y: &[f64],
-        dy: &mut [f64],
-    ) -> EnergyBalance {
-        let mut end = std::mem::take(&mut self.end_point);
-        self.rhs_with(t, y, dy, None, None, Some(&mut end.balls));
-        let mut energy = Energy::default();
-        for ball in &end.balls {
-            energy.add_ball(&ball.energy);
-        }
-        self.border_energy(t, y, &mut energy);
-        end.t = t;
-        end.y.clear();
-        end.y.extend_from_slice(y);
-        end.valid = true;
-        self.end_point = end;
-        let (work, dissipated) = self.work(y);
-        EnergyBalance {
-            work: work + self.film_work(y),
-            dissipated,
-            mechanical: energy.total(),
-        }
+    /// The records held, if not yet read.
+    #[cfg(test)]
+    pub(super) fn held(&self) -> Option<&[EndRecord]> {
+        self.valid.then_some(&self.balls[..])
     }
 }
 
@@ -143,124 +137,5 @@ impl Elements {
             record(inner, &self.inner_table, &episodes[0]),
             record(outer, &self.outer_table, &episodes[1]),
         ]
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::contact::HertzModel;
-    use crate::integrate::{Integrator, OdeSystem};
-    use crate::material::Material;
-    use crate::testing::{self, Method};
-
-    /// `model` integrated for `duration` from `y0` (ROS34PW2 at 1e-3):
-    /// balls in and out of contact with their pockets and raceways.
-    fn advanced(model: &mut BearingModel, y0: &[f64], duration: f64) -> Vec<f64> {
-        let mut solver = testing::integrator(Method::Ros34pw2, model, y0, 1e-3, 1e-4);
-        while solver.t() < duration {
-            solver.step(model, duration).expect("step");
-        }
-        solver.y().to_vec()
-    }
-
-    fn bits(values: &[f64]) -> Vec<u64> {
-        values.iter().map(|v| v.to_bits()).collect()
-    }
-
-    /// The shared pass against the separate evaluations at (t, y), and
-    /// the acceptance from its records against one that evaluates the
-    /// contacts itself: the same bits, the same episodes and peak loads.
-    fn shared_pass_matches(model: &BearingModel, t: f64, y: &[f64]) {
-        let (mut shared, mut apart) = (model.clone(), model.clone());
-        let mut dy_shared = vec![0.0; y.len()];
-        let mut dy_apart = vec![0.0; y.len()];
-        let balance = shared.rhs_with_balance(t, y, &mut dy_shared);
-        apart.rhs(t, y, &mut dy_apart);
-        assert_eq!(bits(&dy_shared), bits(&dy_apart), "right-hand side");
-        assert_eq!(balance, apart.energy_balance(t, y), "energy balance");
-        let (inner, outer) = apart.elements.ring_motion(t, y);
-        for (j, record) in shared.end_point.balls.iter().enumerate() {
-            let evaluated =
-                apart
-                    .elements
-                    .raceway_records(j, y, (&inner, &outer), &apart.episodes[j]);
-            assert_eq!(record.raceways, evaluated, "ball {j}'s raceway records");
-        }
-        assert!(shared.end_point.valid);
-        assert_eq!(shared.accept_step(t, y), apart.accept_step(t, y));
-        assert!(!shared.end_point.valid, "the records are read once");
-        assert_eq!(shared.episodes, apart.episodes);
-        assert_eq!(shared.peak_loads.peek(), apart.peak_loads.peek());
-    }
-
-    #[test]
-    fn shared_pass_gives_the_separate_evaluations_bits() {
-        // The 6304: serial pass, traction at the contact centre, pockets.
-        let steel = testing::steel_shan_2023();
-        let mut model = BearingModel::new(
-            &testing::bearing_6304(),
-            &steel,
-            &steel,
-            HertzModel::HertzCircular,
-            testing::dynamics_6304(100.0),
-        )
-        .expect("6304");
-        let y0 = model.pure_rolling_state([0.0; 5]);
-        let y = advanced(&mut model, &y0, 2e-3);
-        shared_pass_matches(&model, 2e-3, &y);
-        // The default case's 7008C: EHL traction on the grid, the balls
-        // across two threads.
-        let (params, equilibrium) = testing::dynamics_7008c(testing::drag_7008c());
-        let steel = Material::STEEL_52100;
-        let mut model = BearingModel::new(
-            &testing::bearing_7008c(),
-            &steel,
-            &steel,
-            HertzModel::Exact,
-            params,
-        )
-        .expect("7008C");
-        let y0 = model.state_from_equilibrium(&equilibrium);
-        let y = advanced(&mut model, &y0, 2e-4);
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(2)
-            .build()
-            .expect("two threads");
-        pool.install(|| shared_pass_matches(&model, 2e-4, &y));
-    }
-
-    #[test]
-    fn records_of_another_point_are_not_used() {
-        let steel = testing::steel_shan_2023();
-        let mut model = BearingModel::new(
-            &testing::bearing_6304(),
-            &steel,
-            &steel,
-            HertzModel::HertzCircular,
-            testing::dynamics_6304(100.0),
-        )
-        .expect("6304");
-        let y0 = model.pure_rolling_state([0.0; 5]);
-        let y = advanced(&mut model, &y0, 1e-3);
-        model.take_peak_loads();
-        // Every ball moved outwards by 1 µm: the outer raceway's peak load
-        // is another.
-        let mut moved = y.clone();
-        for j in 0..model.layout().balls {
-            moved[model.layout().ball(j) + 1] += 1e-6;
-        }
-        let (mut shared, mut apart, mut unmoved) = (model.clone(), model.clone(), model.clone());
-        let mut dy = vec![0.0; y.len()];
-        shared.rhs_with_balance(1e-3, &y, &mut dy);
-        shared.accept_step(1e-3, &moved);
-        apart.accept_step(1e-3, &moved);
-        unmoved.accept_step(1e-3, &y);
-        assert_eq!(shared.peak_loads.peek(), apart.peak_loads.peek());
-        assert_ne!(shared.peak_loads.peek(), unmoved.peak_loads.peek());
-        // Another time, the same state: evaluated anew as well.
-        shared.rhs_with_balance(1e-3, &y, &mut dy);
-        assert!(shared.end_point.take_at(2e-3, &y).is_none());
-        assert!(shared.end_point.take_at(1e-3, &y).is_none(), "forgotten");
     }
 }

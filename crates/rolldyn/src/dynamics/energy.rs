@@ -4,14 +4,18 @@
 //! and tilt, cage, a torque-driven rotor's ½ J ω²), elastic energy (Σ (2/5) K_c δ^{5/2} + ½ k δ_p²; with the
 //! film in the approach each contact stores (2/5) K_c δ_el^{5/2} − Q h +
 //! ∫₀^Q h dq, `dynamics::film`) and the potential of constant applied loads
-//! and gravity. With no dissipation and
+//! and gravity; [`BearingModel::rhs_with_end_records`] gives the same sum
+//! from the right-hand side's own pass over the balls at a step's end
+//! (`dynamics::end_point`). With no dissipation and
 //! a fixed contact angle (planar mode) their sum is conserved (VALIDATION
 //! B1). Where α varies, K_c(α) δ^{3/2} is not the exact gradient of
 //! (2/5) K_c δ^{5/2}; the K_c tables vary by ~1e-3 per degree.
 
+use super::end_point::BallEnergy;
 use super::model::BearingModel;
 use super::motion::{BallMotion, RingMotion};
 use crate::contact::ContactTable;
+use crate::integrate::EnergyBalance;
 use nalgebra::Vector3;
 
 /// Energy of a state \[J\].
@@ -41,17 +45,6 @@ impl Energy {
             self.elastic += elastic;
         }
     }
-}
-
-/// One ball's share of the mechanical energy \[J\].
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub(super) struct BallEnergy {
-    /// ½ m v² + ½ I ω².
-    pub(super) kinetic: f64,
-    /// m g z.
-    pub(super) potential: f64,
-    /// Its inner raceway, outer raceway and pocket contacts.
-    pub(super) elastic: [f64; 3],
 }
 
 impl BearingModel {
@@ -172,5 +165,155 @@ impl BearingModel {
             let stop = (offset - guide.max_eccentricity * guide.radial_clearance).max(0.0);
             e.elastic += 0.5 * guide.stop_stiffness * stop * stop;
         }
+    }
+}
+
+impl BearingModel {
+    /// [`crate::integrate::OdeSystem::rhs_with_balance`]: one pass over the
+    /// balls gives f, their energy shares and their raceway records, kept
+    /// for `accept_step` at (t, y) (`dynamics::end_point`).
+    pub(super) fn rhs_with_end_records(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        dy: &mut [f64],
+    ) -> EnergyBalance {
+        let mut end = std::mem::take(&mut self.end_point);
+        let balls = end.fill(t, y);
+        self.rhs_with(t, y, dy, None, None, Some(&mut *balls));
+        let mut energy = Energy::default();
+        for ball in balls.iter() {
+            energy.add_ball(&ball.energy);
+        }
+        self.border_energy(t, y, &mut energy);
+        self.end_point = end;
+        let (work, dissipated) = self.work(y);
+        EnergyBalance {
+            work: work + self.film_work(y),
+            dissipated,
+            mechanical: energy.total(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::HertzModel;
+    use crate::integrate::{Integrator, OdeSystem};
+    use crate::material::Material;
+    use crate::testing::{self, Method};
+
+    /// `model` integrated for `duration` from `y0` (ROS34PW2 at 1e-3):
+    /// balls in and out of contact with their pockets and raceways.
+    fn advanced(model: &mut BearingModel, y0: &[f64], duration: f64) -> Vec<f64> {
+        let mut solver = testing::integrator(Method::Ros34pw2, model, y0, 1e-3, 1e-4);
+        while solver.t() < duration {
+            solver.step(model, duration).expect("step");
+        }
+        solver.y().to_vec()
+    }
+
+    fn bits(values: &[f64]) -> Vec<u64> {
+        values.iter().map(|v| v.to_bits()).collect()
+    }
+
+    /// The shared pass against the separate evaluations at (t, y), and
+    /// the acceptance from its records against one that evaluates the
+    /// contacts itself: the same bits, the same episodes and peak loads.
+    fn shared_pass_matches(model: &BearingModel, t: f64, y: &[f64]) {
+        let (mut shared, mut apart) = (model.clone(), model.clone());
+        let mut dy_shared = vec![0.0; y.len()];
+        let mut dy_apart = vec![0.0; y.len()];
+        let balance = shared.rhs_with_balance(t, y, &mut dy_shared);
+        apart.rhs(t, y, &mut dy_apart);
+        assert_eq!(bits(&dy_shared), bits(&dy_apart), "right-hand side");
+        assert_eq!(balance, apart.energy_balance(t, y), "energy balance");
+        let (inner, outer) = apart.elements.ring_motion(t, y);
+        for (j, record) in shared.end_point.held().expect("held").iter().enumerate() {
+            let evaluated =
+                apart
+                    .elements
+                    .raceway_records(j, y, (&inner, &outer), &apart.episodes[j]);
+            assert_eq!(record.raceways, evaluated, "ball {j}'s raceway records");
+        }
+        assert!(shared.end_point.held().is_some());
+        assert_eq!(shared.accept_step(t, y), apart.accept_step(t, y));
+        assert!(
+            shared.end_point.held().is_none(),
+            "the records are read once"
+        );
+        assert_eq!(shared.episodes, apart.episodes);
+        assert_eq!(shared.peak_loads.peek(), apart.peak_loads.peek());
+    }
+
+    #[test]
+    fn shared_pass_gives_the_separate_evaluations_bits() {
+        // The 6304: serial pass, traction at the contact centre, pockets.
+        let steel = testing::steel_shan_2023();
+        let mut model = BearingModel::new(
+            &testing::bearing_6304(),
+            &steel,
+            &steel,
+            HertzModel::HertzCircular,
+            testing::dynamics_6304(100.0),
+        )
+        .expect("6304");
+        let y0 = model.pure_rolling_state([0.0; 5]);
+        let y = advanced(&mut model, &y0, 2e-3);
+        shared_pass_matches(&model, 2e-3, &y);
+        // The default case's 7008C: EHL traction on the grid, the balls
+        // across two threads.
+        let (params, equilibrium) = testing::dynamics_7008c(testing::drag_7008c());
+        let steel = Material::STEEL_52100;
+        let mut model = BearingModel::new(
+            &testing::bearing_7008c(),
+            &steel,
+            &steel,
+            HertzModel::Exact,
+            params,
+        )
+        .expect("7008C");
+        let y0 = model.state_from_equilibrium(&equilibrium);
+        let y = advanced(&mut model, &y0, 2e-4);
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(2)
+            .build()
+            .expect("two threads");
+        pool.install(|| shared_pass_matches(&model, 2e-4, &y));
+    }
+
+    #[test]
+    fn records_of_another_point_are_not_used() {
+        let steel = testing::steel_shan_2023();
+        let mut model = BearingModel::new(
+            &testing::bearing_6304(),
+            &steel,
+            &steel,
+            HertzModel::HertzCircular,
+            testing::dynamics_6304(100.0),
+        )
+        .expect("6304");
+        let y0 = model.pure_rolling_state([0.0; 5]);
+        let y = advanced(&mut model, &y0, 1e-3);
+        model.take_peak_loads();
+        // Every ball moved outwards by 1 µm: the outer raceway's peak load
+        // is another.
+        let mut moved = y.clone();
+        for j in 0..model.layout().balls {
+            moved[model.layout().ball(j) + 1] += 1e-6;
+        }
+        let (mut shared, mut apart, mut unmoved) = (model.clone(), model.clone(), model.clone());
+        let mut dy = vec![0.0; y.len()];
+        shared.rhs_with_balance(1e-3, &y, &mut dy);
+        shared.accept_step(1e-3, &moved);
+        apart.accept_step(1e-3, &moved);
+        unmoved.accept_step(1e-3, &y);
+        assert_eq!(shared.peak_loads.peek(), apart.peak_loads.peek());
+        assert_ne!(shared.peak_loads.peek(), unmoved.peak_loads.peek());
+        // Another time, the same state: evaluated anew as well.
+        shared.rhs_with_balance(1e-3, &y, &mut dy);
+        assert!(shared.end_point.take_at(2e-3, &y).is_none());
+        assert!(shared.end_point.take_at(1e-3, &y).is_none(), "forgotten");
     }
 }

@@ -23,7 +23,8 @@
 //! | `pocket` | ball–pocket contact |
 //! | `supports` | ring spring–dampers |
 //! | `surface_contact` | waviness and spalls in the contacts, spall step limit |
-//! | `energy` | mechanical energy, work and dissipation |
+//! | `energy` | mechanical energy, work and dissipation; the balance at a step's end from the right-hand side's pass |
+//! | `end_point` | what that pass keeps per ball for the step's acceptance (energy shares, raceway records) |
 //! | `outputs` | per-contact output samples, pure-rolling reference |
 //! | `thermal_coupling` | the thermal network advanced alongside a run, oil viscosity fed back |
 //! | `traction_equilibrium` | the traction-consistent steady state the runs start from (no raceway control) |
