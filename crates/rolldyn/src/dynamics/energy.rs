@@ -4,7 +4,7 @@
 //! and tilt, cage, a torque-driven rotor's ½ J ω²), elastic energy (Σ (2/5) K_c δ^{5/2} + ½ k δ_p²; with the
 //! film in the approach each contact stores (2/5) K_c δ_el^{5/2} − Q h +
 //! ∫₀^Q h dq, `dynamics::film`) and the potential of constant applied loads
-//! and gravity; [`BearingModel::rhs_with_end_records`] gives the same sum
+//! and gravity; `BearingModel::rhs_with_end_records` gives the same sum
 //! from the right-hand side's own pass over the balls at a step's end
 //! (`dynamics::end_point`). With no dissipation and
 //! a fixed contact angle (planar mode) their sum is conserved (VALIDATION
