@@ -13,6 +13,7 @@ use crate::error::InvalidParameter;
 use crate::geometry::{BearingGeometry, Raceway, RingKind};
 use crate::math::interp::UniformPchip;
 use std::f64::consts::FRAC_PI_2;
+use std::sync::{Arc, Mutex, PoisonError};
 
 /// Everything that fixes the Hertz constants of one raceway as a function
 /// of the contact angle.
@@ -90,6 +91,14 @@ impl RacewayContactModel {
 /// chosen by the A4 accuracy test (1e-6 relative with a wide margin).
 pub const DEFAULT_TABLE_INTERVALS: usize = 1800;
 
+/// How many tables the process keeps for [`ContactTable::with_intervals`]
+/// (~0.2 MB each at the default size): the two raceways of a few
+/// bearings.
+const RECENT_TABLES: usize = 8;
+
+/// The tables built last, oldest first.
+static RECENT: Mutex<Vec<Arc<ContactTable>>> = Mutex::new(Vec::new());
+
 /// Hertz constants of one raceway tabulated over α ∈ [0, π/2].
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContactTable {
@@ -129,12 +138,34 @@ impl ContactTable {
         Self::with_intervals(model, DEFAULT_TABLE_INTERVALS)
     }
 
-    /// Builds the table with `intervals` uniform intervals (≥ 2).
+    /// Builds the table with `intervals` uniform intervals (≥ 2), or copies
+    /// it from the tables this process built last (`RECENT_TABLES`): a
+    /// table depends on its model and interval count alone, and a run
+    /// builds each raceway's for its quasi-static start and again for its
+    /// dynamic model, a sweep or a notebook loop for every run.
     pub fn with_intervals(
         model: RacewayContactModel,
         intervals: usize,
     ) -> Result<Self, InvalidParameter> {
         let intervals = intervals.max(2);
+        let mut recent = RECENT.lock().unwrap_or_else(PoisonError::into_inner);
+        let same = |t: &Arc<ContactTable>| t.model == model && t.nodes.len() == intervals + 1;
+        if let Some(table) = recent.iter().find(|t| same(t)) {
+            return Ok(ContactTable::clone(table));
+        }
+        drop(recent);
+        let table = Self::build(model, intervals)?;
+        recent = RECENT.lock().unwrap_or_else(PoisonError::into_inner);
+        if recent.len() == RECENT_TABLES {
+            recent.remove(0);
+        }
+        recent.push(Arc::new(table.clone()));
+        Ok(table)
+    }
+
+    /// Builds the table with `intervals` uniform intervals (≥ 2): the exact
+    /// Hertz constants at each node, and their monotone cubics.
+    fn build(model: RacewayContactModel, intervals: usize) -> Result<Self, InvalidParameter> {
         let h = FRAC_PI_2 / intervals as f64;
         let samples = (0..=intervals)
             .map(|i| model.coefficients(i as f64 * h))
@@ -229,6 +260,21 @@ mod tests {
     fn model(ring: RingKind, law: HertzModel) -> RacewayContactModel {
         let ep = effective_modulus(&Material::STEEL_52100, &Material::STEEL_52100);
         RacewayContactModel::new(&test_bearing(22), ring, ep, law)
+    }
+
+    #[test]
+    fn a_kept_table_is_the_one_a_build_gives() {
+        for (intervals, modulus) in [(240, 1.0), (240, 1.01), (120, 1.0)] {
+            let mut m = model(RingKind::Outer, HertzModel::Exact);
+            m.effective_modulus *= modulus;
+            let first = ContactTable::with_intervals(m, intervals).unwrap();
+            let kept = ContactTable::with_intervals(m, intervals).unwrap();
+            let built = ContactTable::build(m, intervals).unwrap();
+            assert_eq!(first, built);
+            assert_eq!(kept, built);
+            assert_eq!(kept.nodes.len(), intervals + 1);
+            assert_eq!(kept.model().effective_modulus, m.effective_modulus);
+        }
     }
 
     #[test]
