@@ -4,7 +4,7 @@
 //! chaotic). Per call, on one thread: the right-hand side, the mechanical
 //! energy (the energy control evaluates it twice per step), the step
 //! acceptance's contact bookkeeping, the three at a step's end apart and
-//! from one shared pass (`OdeSystem::rhs_with_balance`), the
+//! from one shared pass (`OdeSystem::rhs_at_end`), the
 //! finite-difference Jacobian and,
 //! where the model has one, its fast part's (refreshed at every step while
 //! the cage limits the steps), the factorization of σI − J (also on two
@@ -72,7 +72,7 @@ fn bench(name: &str, mut model: BearingModel, y0: &[f64], calls: usize) {
         energy
     });
     time_per_call(&format!("{name}: end point shared"), calls, || {
-        let balance = model.rhs_with_balance(t, &y, &mut dy);
+        let balance = model.rhs_at_end(t, &y, &mut dy, true);
         model.accept_step(t, &y);
         balance.map_or(0.0, |b| b.mechanical)
     });

@@ -8,7 +8,7 @@
 //! outer raceway's force on the sensor (`BearingModel::accept_step`). All
 //! three start from the same contact geometry, which on a dry bearing is
 //! most of a right-hand side's cost (docs/performance.md). The pass of
-//! [`crate::integrate::OdeSystem::rhs_with_balance`] evaluates the
+//! [`crate::integrate::OdeSystem::rhs_at_end`] evaluates the
 //! contacts once and keeps, per ball, its share of the energy and its
 //! raceway contacts' penetration, rate and load; `accept_step` at the same
 //! (t, y) reads them instead of evaluating the contacts again. Every

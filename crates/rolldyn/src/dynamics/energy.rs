@@ -169,30 +169,35 @@ impl BearingModel {
 }
 
 impl BearingModel {
-    /// [`crate::integrate::OdeSystem::rhs_with_balance`]: one pass over the
-    /// balls gives f, their energy shares and their raceway records, kept
-    /// for `accept_step` at (t, y) (`dynamics::end_point`).
+    /// [`crate::integrate::OdeSystem::rhs_at_end`]: one pass over the balls
+    /// gives f, their energy shares and their raceway records, kept for
+    /// `accept_step` at (t, y) (`dynamics::end_point`); with `balance`, the
+    /// energy balance from the shares.
     pub(super) fn rhs_with_end_records(
         &mut self,
         t: f64,
         y: &[f64],
         dy: &mut [f64],
-    ) -> EnergyBalance {
+        balance: bool,
+    ) -> Option<EnergyBalance> {
         let mut end = std::mem::take(&mut self.end_point);
         let balls = end.fill(t, y);
         self.rhs_with(t, y, dy, None, None, Some(&mut *balls));
-        let mut energy = Energy::default();
-        for ball in balls.iter() {
-            energy.add_ball(&ball.energy);
-        }
-        self.border_energy(t, y, &mut energy);
+        let balance = balance.then(|| {
+            let mut energy = Energy::default();
+            for ball in balls.iter() {
+                energy.add_ball(&ball.energy);
+            }
+            self.border_energy(t, y, &mut energy);
+            let (work, dissipated) = self.work(y);
+            EnergyBalance {
+                work: work + self.film_work(y),
+                dissipated,
+                mechanical: energy.total(),
+            }
+        });
         self.end_point = end;
-        let (work, dissipated) = self.work(y);
-        EnergyBalance {
-            work: work + self.film_work(y),
-            dissipated,
-            mechanical: energy.total(),
-        }
+        balance
     }
 }
 
@@ -225,7 +230,7 @@ mod tests {
         let (mut shared, mut apart) = (model.clone(), model.clone());
         let mut dy_shared = vec![0.0; y.len()];
         let mut dy_apart = vec![0.0; y.len()];
-        let balance = shared.rhs_with_balance(t, y, &mut dy_shared);
+        let balance = shared.rhs_at_end(t, y, &mut dy_shared, true);
         apart.rhs(t, y, &mut dy_apart);
         assert_eq!(bits(&dy_shared), bits(&dy_apart), "right-hand side");
         assert_eq!(balance, apart.energy_balance(t, y), "energy balance");
@@ -305,14 +310,14 @@ mod tests {
         }
         let (mut shared, mut apart, mut unmoved) = (model.clone(), model.clone(), model.clone());
         let mut dy = vec![0.0; y.len()];
-        shared.rhs_with_balance(1e-3, &y, &mut dy);
+        shared.rhs_at_end(1e-3, &y, &mut dy, false);
         shared.accept_step(1e-3, &moved);
         apart.accept_step(1e-3, &moved);
         unmoved.accept_step(1e-3, &y);
         assert_eq!(shared.peak_loads.peek(), apart.peak_loads.peek());
         assert_ne!(shared.peak_loads.peek(), unmoved.peak_loads.peek());
         // Another time, the same state: evaluated anew as well.
-        shared.rhs_with_balance(1e-3, &y, &mut dy);
+        shared.rhs_at_end(1e-3, &y, &mut dy, false);
         assert!(shared.end_point.take_at(2e-3, &y).is_none());
         assert!(shared.end_point.take_at(1e-3, &y).is_none(), "forgotten");
     }

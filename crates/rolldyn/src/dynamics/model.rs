@@ -570,13 +570,19 @@ impl OdeSystem for BearingModel {
     /// The candidate end's right-hand side and balance from one pass over
     /// the balls, its raceway records kept for `accept_step`
     /// (`dynamics::end_point`).
-    fn rhs_with_balance(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Option<EnergyBalance> {
-        Some(self.rhs_with_end_records(t, y, dy))
+    fn rhs_at_end(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        dy: &mut [f64],
+        balance: bool,
+    ) -> Option<EnergyBalance> {
+        self.rhs_with_end_records(t, y, dy, balance)
     }
 
     /// Records each raceway contact's episode and peak load and advances
     /// the sensor chain, the growing spalls and the thermal network; the
-    /// contacts come from the `rhs_with_balance` evaluation at (t, y) if
+    /// contacts come from the `rhs_at_end` evaluation at (t, y) if
     /// that was the last, else are evaluated here (normal forces only).
     fn accept_step(&mut self, t: f64, y: &[f64]) -> bool {
         let floor = self.elements.params.impact_speed_floor;
@@ -635,7 +641,7 @@ impl OdeSystem for BearingModel {
 /// per acceptance: its size does not matter).
 #[allow(clippy::large_enum_variant)]
 enum Records<'a> {
-    /// The `rhs_with_balance` evaluation at the accepted point.
+    /// The `rhs_at_end` evaluation at the accepted point.
     Kept(&'a [EndRecord]),
     /// Evaluated anew with these ring motions (inner, outer).
     Evaluate(RingMotion, RingMotion),

@@ -155,7 +155,7 @@ impl EnergyControl {
 
     /// Scaled energy error of a step of size h from (t, y) to (t + h, y₁),
     /// whose balance is `end` (the integrator has it from the system's
-    /// [`OdeSystem::rhs_with_balance`]) and whose embedded solution is
+    /// [`OdeSystem::rhs_at_end`]) and whose embedded solution is
     /// y₁ − `error`: ≤ 1 passes; raised to q/(q − 1) so that it scales as
     /// h^q like the states' error.
     pub(crate) fn scaled_error(

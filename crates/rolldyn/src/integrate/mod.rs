@@ -97,15 +97,26 @@ pub trait OdeSystem {
         None
     }
 
-    /// [`Self::rhs`] and [`Self::energy_balance`] at a step's candidate end
-    /// (t, y), the point `accept_step` receives if the step is accepted:
-    /// a system may share the work of the two (the contacts' geometry) and
-    /// keep what its `accept_step` needs at this point. The right-hand side
-    /// is the one before acceptance; an `accept_step` that returns true has
-    /// it evaluated again. Must not allocate. Default: the two apart.
-    fn rhs_with_balance(&mut self, t: f64, y: &[f64], dydt: &mut [f64]) -> Option<EnergyBalance> {
+    /// [`Self::rhs`] at a step's candidate end (t, y), the point
+    /// `accept_step` receives if the step is accepted, and with `balance`
+    /// [`Self::energy_balance`] there (else None): a system may share the
+    /// work of the two (the contacts' geometry) and keep what its
+    /// `accept_step` needs at this point. The right-hand side is the one
+    /// before acceptance; an `accept_step` that returns true has it
+    /// evaluated again. Must not allocate. Default: the two apart.
+    fn rhs_at_end(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        dydt: &mut [f64],
+        balance: bool,
+    ) -> Option<EnergyBalance> {
         self.rhs(t, y, dydt);
-        self.energy_balance(t, y)
+        if balance {
+            self.energy_balance(t, y)
+        } else {
+            None
+        }
     }
 
     /// The block structure of the right-hand side, if it has one: implicit

@@ -163,7 +163,7 @@ pub(crate) trait StepMethod {
     fn prepare<S: OdeSystem>(&mut self, _system: &S) {}
     /// Attempts step h from the current point; the scaled error norm (≤ 1
     /// accepts; ∞ when not finite). The system is `&mut` for
-    /// [`OdeSystem::rhs_with_balance`] at the candidate end.
+    /// [`OdeSystem::rhs_at_end`] at the candidate end.
     fn attempt<S: OdeSystem>(&mut self, system: &mut S, h: f64) -> f64;
     /// Moves to the attempted step's end and calls the system's
     /// `accept_step`.

@@ -245,9 +245,9 @@ impl ExplicitRk {
         let n = self.y.len();
         let last = tab.c.len() - 1;
         // An FSAL method's last stage is the candidate y₁ (its row of a is
-        // b, so the same sums give the same bits): the energy control's
-        // balance there comes with that stage's right-hand side.
-        let fused = tab.fsal && rtol.is_some() && self.energy.is_some();
+        // b, so the same sums give the same bits): it serves the step's
+        // acceptance, and the energy control's balance there comes with it.
+        let balance = rtol.is_some() && self.energy.is_some();
         let mut end = None;
         self.k[0].copy_from_slice(&self.f);
         for s in 1..tab.c.len() {
@@ -260,8 +260,8 @@ impl ExplicitRk {
                 self.stage[i] = self.y[i] + h * acc;
             }
             let t_stage = self.t + tab.c[s] * h;
-            if fused && s == last {
-                end = system.rhs_with_balance(t_stage, &self.stage, &mut self.k[s]);
+            if tab.fsal && s == last {
+                end = system.rhs_at_end(t_stage, &self.stage, &mut self.k[s], balance);
             } else {
                 system.rhs(t_stage, &self.stage, &mut self.k[s]);
             }
@@ -299,7 +299,7 @@ impl ExplicitRk {
         match &mut self.energy {
             // Only a step the states pass needs the energy's verdict.
             Some(energy) if err <= 1.0 => {
-                if !fused {
+                if !tab.fsal {
                     end = system.energy_balance(self.t + h, &self.y_new);
                 }
                 let (k, weights) = (&self.k, tab.error);

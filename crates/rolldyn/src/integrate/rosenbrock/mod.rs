@@ -26,11 +26,11 @@
 //! L-stable, stiffly accurate, W-order 3. The first stage reuses f at the
 //! start of the step, which an accepted step evaluates anyway for the
 //! dense output (cubic Hermite, order 3), so a step costs 4 right-hand
-//! sides and one factorization. Under the energy control that f(y₁) comes
-//! with the balance at y₁ ([`OdeSystem::rhs_with_balance`], one pass over
-//! the contacts) in every attempt the states' error passes, and is kept
-//! if the step is accepted; an attempt the energy then rejects has spent
-//! it.
+//! sides and one factorization. That f(y₁) is evaluated in every attempt
+//! the states' error passes, with the balance at y₁ under the energy
+//! control ([`OdeSystem::rhs_at_end`], one pass over the contacts that
+//! also serves the step's acceptance), and kept if the step is accepted;
+//! an attempt the energy then rejects has spent it.
 
 use super::checkpoint::{
     Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
@@ -194,7 +194,7 @@ pub struct Rosenbrock {
     stage_y: Vec<f64>,
     y_new: Vec<f64>,
     /// f at y_new, when the last attempt evaluated it with the energy
-    /// balance there ([`OdeSystem::rhs_with_balance`]; `end_evaluated`):
+    /// balance there ([`OdeSystem::rhs_at_end`]; `end_evaluated`):
     /// the next step's first stage if the step is accepted.
     f_new: Vec<f64>,
     end_evaluated: bool,
@@ -491,19 +491,22 @@ impl Rosenbrock {
         if !err.is_finite() {
             return f64::INFINITY;
         }
+        if err > 1.0 {
+            return err;
+        }
+        // The states pass: f(y₁), which an accepted step needs next, and
+        // the balance there for the energy's verdict, from one evaluation.
+        let balance = self.energy.is_some();
+        let end = system.rhs_at_end(self.t + h, &self.y_new, &mut self.f_new, balance);
+        self.stats.rhs_evaluations += 1;
+        self.end_evaluated = true;
         match &mut self.energy {
-            // Only a step the states pass needs the energy's verdict; the
-            // balance at y₁ comes with f(y₁), which an accepted step needs
-            // next.
-            Some(energy) if err <= 1.0 => {
-                let end = system.rhs_with_balance(self.t + h, &self.y_new, &mut self.f_new);
-                self.stats.rhs_evaluations += 1;
-                self.end_evaluated = true;
+            Some(energy) => {
                 let e = &self.error;
                 let candidate = (&self.y_new[..], end);
                 err.max(energy.scaled_error(system, self.t, &self.y, h, candidate, |k| e[k]))
             }
-            _ => err,
+            None => err,
         }
     }
 
