@@ -219,6 +219,23 @@ mod tests {
         solver.y().to_vec()
     }
 
+    /// The 6304 preset's model (Shan et al. 2023) and its state `duration`
+    /// after a pure-rolling start.
+    fn the_6304_after(duration: f64) -> (BearingModel, Vec<f64>) {
+        let steel = testing::steel_shan_2023();
+        let mut model = BearingModel::new(
+            &testing::bearing_6304(),
+            &steel,
+            &steel,
+            HertzModel::HertzCircular,
+            testing::dynamics_6304(100.0),
+        )
+        .expect("6304");
+        let y0 = model.pure_rolling_state([0.0; 5]);
+        let y = advanced(&mut model, &y0, duration);
+        (model, y)
+    }
+
     fn bits(values: &[f64]) -> Vec<u64> {
         values.iter().map(|v| v.to_bits()).collect()
     }
@@ -255,17 +272,7 @@ mod tests {
     #[test]
     fn shared_pass_gives_the_separate_evaluations_bits() {
         // The 6304: serial pass, traction at the contact centre, pockets.
-        let steel = testing::steel_shan_2023();
-        let mut model = BearingModel::new(
-            &testing::bearing_6304(),
-            &steel,
-            &steel,
-            HertzModel::HertzCircular,
-            testing::dynamics_6304(100.0),
-        )
-        .expect("6304");
-        let y0 = model.pure_rolling_state([0.0; 5]);
-        let y = advanced(&mut model, &y0, 2e-3);
+        let (model, y) = the_6304_after(2e-3);
         shared_pass_matches(&model, 2e-3, &y);
         // The default case's 7008C: EHL traction on the grid, the balls
         // across two threads.
@@ -290,17 +297,7 @@ mod tests {
 
     #[test]
     fn records_of_another_point_are_not_used() {
-        let steel = testing::steel_shan_2023();
-        let mut model = BearingModel::new(
-            &testing::bearing_6304(),
-            &steel,
-            &steel,
-            HertzModel::HertzCircular,
-            testing::dynamics_6304(100.0),
-        )
-        .expect("6304");
-        let y0 = model.pure_rolling_state([0.0; 5]);
-        let y = advanced(&mut model, &y0, 1e-3);
+        let (model, y) = the_6304_after(1e-3);
         model.take_peak_loads();
         // Every ball moved outwards by 1 µm: the outer raceway's peak load
         // is another.
