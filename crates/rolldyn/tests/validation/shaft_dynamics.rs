@@ -256,6 +256,59 @@ fn preloaded_pair_in_motion_keeps_its_quasi_static_preload() {
     assert!(balance.abs() < 1e-3 * end.dissipated, "{balance}");
 }
 
+/// A step's end evaluated once (`OdeSystem::rhs_at_end`): on the
+/// preloaded pair after 1 ms in motion, one pass per bearing gives the
+/// bits of the right-hand side and of the energy balance evaluated apart,
+/// and an acceptance at that point that reads the pass's raceway records
+/// records the same peak loads as one that evaluates the contacts, and
+/// the same right-hand side after it.
+#[test]
+fn a_shared_end_pass_gives_the_separate_evaluations_bits() {
+    let (set, conditions, model) = preloaded_pair();
+    let eq = set.solve(&conditions, &SolverOptions::default()).unwrap();
+    let mut system = ShaftDynamics::new(
+        set.bearings.iter().map(|m| (model.clone(), m)).collect(),
+        ShaftBody {
+            mass: 1.0,
+            tilt_inertia: 2e-3,
+        },
+        Loads::default(),
+    )
+    .unwrap();
+    let y0 = system.initial_state(&eq).unwrap();
+    let mut rk = Rosenbrock::new(&ROS34PW2, 1e-4, 1e-4, None, &system, 0.0, &y0).unwrap();
+    while rk.t() < 1e-3 {
+        rk.step(&mut system, 1e-3).unwrap();
+    }
+    let (t, y) = (rk.t(), rk.y().to_vec());
+    for i in 0..2 {
+        system.bearing(i).take_peak_loads();
+    }
+    let (mut shared, mut apart) = (system.clone(), system);
+    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    let (mut dy_shared, mut dy_apart) = (vec![0.0; y.len()], vec![0.0; y.len()]);
+    for balance in [false, true] {
+        let end = shared.rhs_at_end(t, &y, &mut dy_shared, balance);
+        apart.rhs(t, &y, &mut dy_apart);
+        assert_eq!(bits(&dy_shared), bits(&dy_apart), "right-hand side");
+        let expected = balance.then(|| apart.energy_balance(t, &y).unwrap());
+        assert_eq!(
+            end.map(|e| bits(&[e.work, e.dissipated, e.mechanical])),
+            expected.map(|e| bits(&[e.work, e.dissipated, e.mechanical])),
+            "energy balance"
+        );
+    }
+    assert_eq!(shared.accept_step(t, &y), apart.accept_step(t, &y));
+    for i in 0..2 {
+        let peaks = shared.bearing(i).take_peak_loads();
+        assert!(peaks[0] > 0.0 && peaks[1] > 0.0, "{peaks:?}");
+        assert_eq!(peaks, apart.bearing(i).take_peak_loads(), "bearing {i}");
+    }
+    shared.rhs(t, &y, &mut dy_shared);
+    apart.rhs(t, &y, &mut dy_apart);
+    assert_eq!(bits(&dy_shared), bits(&dy_apart), "after the acceptance");
+}
+
 /// A rotating unbalance on the preloaded pair: the shaft's response at the
 /// rotation frequency against the rigid rotor on the set's radial
 /// stiffness, U ω² / (k − m ω²) (Den Hartog, *Mechanical Vibrations*,

@@ -334,8 +334,15 @@ impl ShaftDynamics {
     /// shaft's) at time `t`, from its own-layout state `own` \[J\]: balls,
     /// outer ring, cage, contacts, pockets, gravity.
     pub fn bearing_energy(&self, i: usize, t: f64, own: &[f64]) -> f64 {
-        let model = &self.bearings[i].model;
-        let l = model.layout();
+        let total = self.bearings[i].model.energy(t, own).total();
+        self.without_shaft_parts(i, own, total)
+    }
+
+    /// Bearing `i`'s mechanical energy `total` (its model's, at its
+    /// own-layout state `own`) less its inner ring's kinetic energy and
+    /// gravity's potential, which the shaft carries \[J\].
+    fn without_shaft_parts(&self, i: usize, own: &[f64], total: f64) -> f64 {
+        let l = self.bearings[i].model.layout();
         let r = l.ring();
         // Its inner ring has unit mass and inertia (module doc), and so has
         // a driven ring about its axis.
@@ -345,7 +352,7 @@ impl ShaftDynamics {
             } else {
                 0.0
             };
-        model.energy(t, own).total() - ring_kinetic - self.gravity * own[r + 2]
+        total - ring_kinetic - self.gravity * own[r + 2]
     }
 
     /// The shaft's mechanical energy at system state `y` (kinetic, applied

@@ -27,6 +27,48 @@ impl OdeSystem for ShaftDynamics {
         self.shaft_rhs(t, &y[sh..], &shaft_load, axial_moment, &mut dy[sh..]);
     }
 
+    /// Each bearing's `rhs_at_end` (one pass over its balls, its raceway
+    /// records kept for its `accept_step` at the same point), assembled as
+    /// [`Self::rhs`] and [`Self::energy_balance`] assemble theirs: the
+    /// same operations in the same order, so the same bits.
+    fn rhs_at_end(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        dy: &mut [f64],
+        balance: bool,
+    ) -> Option<EnergyBalance> {
+        let (mut shaft_load, mut axial_moment) = ([0.0; 5], 0.0);
+        let (mut done, mut dissipated, mut mechanical) = (0.0, 0.0, 0.0);
+        let mut work = self.take();
+        let (ball_len, sh) = (self.ball_len, self.first_shaft);
+        for i in 0..self.bearings.len() {
+            let b = &mut self.bearings[i];
+            let l = b.model.layout();
+            let (n, len) = (l.balls * ball_len, l.len());
+            gather(b, ball_len, sh, y, &mut work.y[..len]);
+            let end = b
+                .model
+                .rhs_at_end(t, &work.y[..len], &mut work.dy[..len], balance);
+            let b = &self.bearings[i];
+            dy[b.first_ball..b.first_ball + n].copy_from_slice(&work.dy[..n]);
+            axial_moment += self.collect_border(b, &work.dy[..len], dy, &mut shaft_load);
+            if let Some(end) = end {
+                // A shaft's bearings have no film work (checked at set-up).
+                done += end.work;
+                dissipated += end.dissipated;
+                mechanical += self.without_shaft_parts(i, &work.y[..len], end.mechanical);
+            }
+        }
+        self.give(work);
+        self.shaft_rhs(t, &y[sh..], &shaft_load, axial_moment, &mut dy[sh..]);
+        balance.then(|| EnergyBalance {
+            work: done + y[sh + SHAFT_STATES],
+            dissipated,
+            mechanical: mechanical + self.shaft_energy(&y[sh..]),
+        })
+    }
+
     fn blocks(&self) -> Option<&dyn BlockSplit> {
         Some(self)
     }
