@@ -20,7 +20,7 @@
 
 use super::ball_pass::Extras;
 use super::coupling::BallCoupling;
-use super::end_point::{EndRecord, RacewayRecord};
+use super::end_point::RacewayRecord;
 use super::film::FilmWork;
 use super::layout::StateLayout;
 use super::model::BearingModel;
@@ -292,15 +292,16 @@ impl BearingModel {
         };
         let shares = [inner_share, outer_share, pocket_share];
         if let Some(end) = end {
-            let known = |k: usize| Some(records[k].map(|r| (r.penetration, r.contact_angle)));
-            let raceways = [
-                self.raceway_energy(inner, &self.elements.inner_table, &ball, known(0)),
-                self.raceway_energy(outer, &self.elements.outer_table, &ball, known(1)),
-            ];
-            *end = EndRecord {
-                energy: self.ball_energy(j, y, &ball, raceways),
-                raceways: records,
-            };
+            // The energy share only where the slot asks for it.
+            end.energy = end.energy.map(|_| {
+                let known = |k: usize| Some(records[k].map(|r| (r.penetration, r.contact_angle)));
+                let raceways = [
+                    self.raceway_energy(inner, &self.elements.inner_table, &ball, known(0)),
+                    self.raceway_energy(outer, &self.elements.outer_table, &ball, known(1)),
+                ];
+                self.ball_energy(j, y, &ball, raceways)
+            });
+            end.raceways = records;
         }
         if let Some(memo) = memo {
             for (share, slot) in shares.iter().zip(memo.chunks_mut(ContactShare::LEN)) {

@@ -66,8 +66,9 @@ pub(super) struct BallEnergy {
 /// One ball's part of an end-point evaluation.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub(super) struct EndRecord {
-    /// Its share of the mechanical energy.
-    pub(super) energy: BallEnergy,
+    /// Its share of the mechanical energy: computed by the pass where
+    /// [`EndPoint::fill`] asked for it (Some), else left out (None).
+    pub(super) energy: Option<BallEnergy>,
     /// Its inner and outer raceway contacts (None: open).
     pub(super) raceways: [Option<RacewayRecord>; 2],
 }
@@ -94,12 +95,17 @@ impl EndPoint {
         }
     }
 
-    /// The balls' slots for an evaluation at (t, y), which they then hold.
-    pub(super) fn fill(&mut self, t: f64, y: &[f64]) -> &mut [EndRecord] {
+    /// The balls' slots for an evaluation at (t, y), which they then hold;
+    /// with `energy` the pass computes each ball's energy share.
+    pub(super) fn fill(&mut self, t: f64, y: &[f64], energy: bool) -> &mut [EndRecord] {
         self.t = t;
         self.y.clear();
         self.y.extend_from_slice(y);
         self.valid = true;
+        let share = energy.then(BallEnergy::default);
+        for ball in &mut self.balls {
+            ball.energy = share;
+        }
         &mut self.balls
     }
 

@@ -181,12 +181,12 @@ impl BearingModel {
         balance: bool,
     ) -> Option<EnergyBalance> {
         let mut end = std::mem::take(&mut self.end_point);
-        let balls = end.fill(t, y);
+        let balls = end.fill(t, y, balance);
         self.rhs_with(t, y, dy, None, None, Some(&mut *balls));
         let balance = balance.then(|| {
             let mut energy = Energy::default();
-            for ball in balls.iter() {
-                energy.add_ball(&ball.energy);
+            for share in balls.iter().filter_map(|ball| ball.energy.as_ref()) {
+                energy.add_ball(share);
             }
             self.border_energy(t, y, &mut energy);
             let (work, dissipated) = self.work(y);
