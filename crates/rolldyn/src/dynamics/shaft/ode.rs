@@ -1,7 +1,8 @@
 //! Bearings on a shaft as one system of ordinary differential equations
-//! for the integrators: the right-hand side, the error scales, the states'
-//! names, the step limits and the energy balance (module doc of
-//! `dynamics::shaft`).
+//! for the integrators: the right-hand side (with the energy balance and
+//! each bearing's acceptance records at a step's end), the error scales,
+//! the states' names, the step limits and the energy balance (module doc
+//! of `dynamics::shaft`).
 
 use super::{SHAFT_LEN, SHAFT_STATES, ShaftDynamics, gather};
 use crate::integrate::{BlockSplit, EnergyBalance, OdeSystem};
