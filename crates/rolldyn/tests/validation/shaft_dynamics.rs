@@ -170,6 +170,20 @@ fn preloaded_pair() -> (ShaftSystem, SystemConditions, BearingModel) {
     (set.with_axial_offset(offset), conditions, model)
 }
 
+/// The pair's bearings on a 1 kg shaft (tilt inertia 2e-3 kg·m²)
+/// without external load.
+fn pair_on_its_shaft(set: &ShaftSystem, model: &BearingModel) -> ShaftDynamics {
+    ShaftDynamics::new(
+        set.bearings.iter().map(|m| (model.clone(), m)).collect(),
+        ShaftBody {
+            mass: 1.0,
+            tilt_inertia: 2e-3,
+        },
+        Loads::default(),
+    )
+    .unwrap()
+}
+
 #[test]
 fn preloaded_pair_in_motion_keeps_its_quasi_static_preload() {
     let (set, conditions, model) = preloaded_pair();
@@ -198,16 +212,7 @@ fn preloaded_pair_in_motion_keeps_its_quasi_static_preload() {
         .unwrap();
     let bracket = [push(&eq), push(&inner_control)];
     let preload = eq.bearings[0].as_ref().unwrap().reaction[0];
-    let system = ShaftDynamics::new(
-        set.bearings.iter().map(|m| (model.clone(), m)).collect(),
-        ShaftBody {
-            mass: 1.0,
-            tilt_inertia: 2e-3,
-        },
-        Loads::default(),
-    )
-    .unwrap();
-    let mut system = system;
+    let mut system = pair_on_its_shaft(&set, &model);
     let y0 = system.initial_state(&eq).unwrap();
     let mut rk = Rosenbrock::new(&ROS34PW2, 1e-4, 1e-4, None, &system, 0.0, &y0).unwrap();
     let (t_start, t_end, dt) = (2e-3, 5e-3, 1e-5);
@@ -266,15 +271,7 @@ fn preloaded_pair_in_motion_keeps_its_quasi_static_preload() {
 fn a_shared_end_pass_gives_the_separate_evaluations_bits() {
     let (set, conditions, model) = preloaded_pair();
     let eq = set.solve(&conditions, &SolverOptions::default()).unwrap();
-    let mut system = ShaftDynamics::new(
-        set.bearings.iter().map(|m| (model.clone(), m)).collect(),
-        ShaftBody {
-            mass: 1.0,
-            tilt_inertia: 2e-3,
-        },
-        Loads::default(),
-    )
-    .unwrap();
+    let mut system = pair_on_its_shaft(&set, &model);
     let y0 = system.initial_state(&eq).unwrap();
     let mut rk = Rosenbrock::new(&ROS34PW2, 1e-4, 1e-4, None, &system, 0.0, &y0).unwrap();
     while rk.t() < 1e-3 {
