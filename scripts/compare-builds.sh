@@ -12,7 +12,9 @@
 #   scripts/compare-builds.sh eac2172 3 -- - --duration "1 s" < <(rolldyn new)
 #   scripts/compare-builds.sh HEAD~5 -- examples/spindle_pair/case.toml
 #
-# A case read from standard input is read once and given to every run.
+# Run from anywhere in the repository (paths in RUN_ARGUMENTS are taken
+# from where it is run). A case read from standard input is read once
+# and given to every run.
 # REF's build is kept in target/compare/ (one binary per commit); each
 # run writes to a temporary directory, removed at the end. Prints each
 # run's wall time and step count, the medians and their ratio, and
@@ -20,7 +22,7 @@
 set -euo pipefail
 
 usage() {
-    sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 2
 }
 
@@ -40,26 +42,24 @@ shift
 }
 
 root=$(git rev-parse --show-toplevel)
-cd "$root"
 sha=$(git rev-parse --verify --quiet --short=12 "$ref^{commit}") || {
     echo "REF '$ref' is not a commit of this repository" >&2
     exit 2
 }
 work=$(mktemp -d)
-trap 'rm -rf "$work"; git worktree remove --force "$work/tree" 2>/dev/null || true; git worktree prune' EXIT
+trap 'git -C "$root" worktree remove --force "$work/tree" 2>/dev/null || true; rm -rf "$work"; git -C "$root" worktree prune' EXIT
 
-old="target/compare/rolldyn-$sha"
+old="$root/target/compare/rolldyn-$sha"
 if [[ ! -x $old ]]; then
     echo "building $sha (once; kept in $old)" >&2
-    git worktree add --detach --quiet "$work/tree" "$sha"
+    git -C "$root" worktree add --detach --quiet "$work/tree" "$sha"
     CARGO_TARGET_DIR="$root/target/compare/build" \
         cargo build --quiet --release --manifest-path "$work/tree/Cargo.toml" -p rolldyn-cli
-    mkdir -p target/compare
-    cp target/compare/build/release/rolldyn "$old"
+    cp "$root/target/compare/build/release/rolldyn" "$old"
 fi
 echo "building the work tree" >&2
-cargo build --quiet --release -p rolldyn-cli
-new="target/release/rolldyn"
+cargo build --quiet --release --manifest-path "$root/Cargo.toml" -p rolldyn-cli
+new="$root/target/release/rolldyn"
 
 # Standard input, if the case comes from it, is read once.
 args=("$@")
