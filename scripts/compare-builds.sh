@@ -18,11 +18,12 @@
 # REF's build is kept in target/compare/ (one binary per commit); each
 # run writes to a temporary directory, removed at the end. Prints each
 # run's wall time and step count, the medians and their ratio, and
-# whether the two builds' summaries agree apart from the timings.
+# whether the two builds' summaries agree apart from the timings and
+# the right-hand-side counts.
 set -euo pipefail
 
 usage() {
-    sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 2
 }
 
@@ -100,7 +101,7 @@ med = {b: statistics.median(json.loads(d.joinpath("summary.json").read_text())["
        for b in ("ref", "new")}
 print(f"median wall: {sha} {med['ref']:.3f} s, work tree {med['new']:.3f} s, "
       f"ratio new/ref {med['new'] / med['ref']:.3f}")
-timing = {"wall_time_s", "source", "rhs_evaluations", "jacobian_rhs_evaluations"}
+timing = {"wall_time_s", "rhs_evaluations", "jacobian_rhs_evaluations"}
 def summary(build):
     data = json.loads((work / f"{build}-1" / "summary.json").read_text())
     def strip(v):
