@@ -92,6 +92,46 @@ impl BlockSplit for BearingModel {
         self.whole().inert(state)
     }
 
+    /// The positions and their velocities (docs/model.md §1): a ball's
+    /// x, r, φ; the inner ring's translations and tilts, its rotation
+    /// angle under a torque drive; the outer ring's position in a
+    /// compliant housing, its axial position when it slides; the cage's
+    /// centre and angle. Not where a frozen state's rate is held at zero
+    /// (planar motion, a cage without whirl, no housing).
+    fn rate_of(&self, state: usize) -> Option<usize> {
+        let l = self.elements.layout;
+        let p = &self.elements.params;
+        if state < l.ring() {
+            let k = state % l.ball_len();
+            return match k {
+                0 if p.planar => None,
+                0..=2 => Some(state + 3),
+                _ => None,
+            };
+        }
+        if state < l.spin() {
+            return match state - l.ring() {
+                0 | 3 | 4 if p.planar => None,
+                k @ 0..=4 => Some(l.ring() + k + 5),
+                _ => None,
+            };
+        }
+        if state < l.outer() {
+            return (state == l.spin()).then_some(state + 1);
+        }
+        if state < l.slide() {
+            return (p.outer_ring.is_some() && state < l.outer() + 2).then_some(state + 2);
+        }
+        if state < l.cage() {
+            return (state == l.slide()).then_some(state + 1);
+        }
+        match state.checked_sub(l.cage())? {
+            2 => Some(state + 3),
+            0 | 1 if p.cage.whirl => Some(state + 3),
+            _ => None,
+        }
+    }
+
     /// The cage's states.
     fn fast_state(&self, state: usize) -> bool {
         let layout = &self.elements.layout;

@@ -124,6 +124,14 @@ pub trait BlockSplit: Sync {
         false
     }
 
+    /// The state whose value is the rate of `state`, where f_state(t, y) =
+    /// y_v exactly for every (t, y) (a position and its velocity): its row
+    /// of the Jacobian is the unit row of v, and the factorization
+    /// eliminates it ([`super::linear::BlockLu`]). Default: none.
+    fn rate_of(&self, _state: usize) -> Option<usize> {
+        None
+    }
+
     /// Whether block j's right-hand side and coupling are zero at and
     /// about y (a bearing's fast part: a ball whose pocket is open), so
     /// that its rows and columns of the Jacobian are zero and are not

@@ -38,6 +38,7 @@ mod fast_part;
 mod jacobian_reuse;
 mod life_reference;
 mod pocket_squeeze;
+mod position_elimination;
 mod quasistatic_fixed_tilt;
 mod quasistatic_high_speed;
 mod quasistatic_static;

@@ -167,8 +167,8 @@ fn zero_couplings_and_rows_are_skipped_exactly() {
     for sigma in [0.01, 1.0, 100.0] {
         check_reduced(&mut reduced, &sparse, sigma);
         assert!(!reduced.coupled_nonzero[1] && reduced.coupled_nonzero[2]);
-        let ma = reduced.border_active.len();
-        let rows = |j: usize| reduced.lower_row_nonzero[j * ma..(j + 1) * ma].to_vec();
+        let mk = reduced.border_kept.len();
+        let rows = |j: usize| reduced.lower_row_nonzero[j * mk..(j + 1) * mk].to_vec();
         assert!(rows(1).iter().all(|nz| !nz));
         assert_eq!(rows(2).iter().filter(|nz| **nz).count(), 1);
         assert!(reduced.inert_row_is_zero.iter().any(|z| *z));
@@ -178,12 +178,73 @@ fn zero_couplings_and_rows_are_skipped_exactly() {
     }
 }
 
+/// The positions of the test layout and their velocities, as a bearing's
+/// (ball r, φ; the ring's and the cage's), on the active states.
+fn rate(state: usize) -> Option<usize> {
+    let (b, s) = (INERT_LAYOUT.block_size, INERT_LAYOUT.border_start());
+    if state < s {
+        return matches!(state % b, 0..=2).then_some(state + 3);
+    }
+    match state - s {
+        0..=4 => Some(state + 5),
+        14..=16 => Some(state + 3),
+        _ => None,
+    }
+}
+
+/// `jac` with the rows of the positions that [`rate`] declares: the unit
+/// row of the velocity, or zero where the velocity is `frozen` (as a
+/// planar model's axial position, held by a zero rate).
+fn positioned(jac: &BlockJacobian, frozen: impl Fn(usize) -> bool) -> BlockJacobian {
+    let n = jac.layout().dimension();
+    let mut out = zeroed(jac, |r, _| rate(r).is_some());
+    let (b, m, s) = (
+        INERT_LAYOUT.block_size,
+        INERT_LAYOUT.border,
+        INERT_LAYOUT.border_start(),
+    );
+    for (q, v) in (0..n).filter_map(|q| Some((q, rate(q)?))) {
+        if frozen(v) {
+            continue;
+        }
+        if q < s {
+            out.diag[(q / b) * b * b + (q % b) * b + v % b] = 1.0;
+        } else {
+            out.border[(q - s) * m + (v - s)] = 1.0;
+        }
+    }
+    out
+}
+
+/// Positions with their velocities' unit rows, on top of inert states:
+/// the positions whose velocity is active are eliminated (ball r, φ; the
+/// border's five), the others are inert anyway; the solve recovers them.
+#[test]
+fn positions_are_eliminated_and_recovered() {
+    let jac = positioned(&zeroed(&sample(INERT_LAYOUT), |_, c| inert(c)), inert);
+    let mut reduced = BlockLu::with_structure(INERT_LAYOUT, inert, rate);
+    assert_eq!(reduced.kept_states(), (3, 5));
+    for sigma in [0.01, 1.0, 100.0, 1e6] {
+        check_reduced(&mut reduced, &jac, sigma);
+    }
+    // Without inert states: every position goes.
+    let jac = positioned(&sample(INERT_LAYOUT), |_| false);
+    let mut reduced = BlockLu::with_structure(INERT_LAYOUT, |_| false, rate);
+    assert_eq!(reduced.kept_states(), (6, 14));
+    for sigma in [0.01, 1.0, 100.0] {
+        check_reduced(&mut reduced, &jac, sigma);
+    }
+}
+
 /// A Jacobian with inert columns, some inert rows zero on the active
-/// states and a block without border couplings.
+/// states, a block without border couplings, and the positions' unit rows.
 fn partly_zero() -> BlockJacobian {
-    zeroed(&sample(INERT_LAYOUT), |r, c| {
-        inert(c) || (inert(r) && r % 3 == 0) || (r < 9 && c >= 36)
-    })
+    positioned(
+        &zeroed(&sample(INERT_LAYOUT), |r, c| {
+            inert(c) || (inert(r) && r % 3 == 0) || (r < 9 && c >= 36)
+        }),
+        inert,
+    )
 }
 
 /// Refactoring for a new σ gives the bits of a fresh factorization.
@@ -192,11 +253,11 @@ fn refactor_equals_factor_bit_for_bit() {
     let jac = partly_zero();
     let n = INERT_LAYOUT.dimension();
     let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.3).cos()).collect();
-    let mut reused = BlockLu::with_inert(INERT_LAYOUT, inert);
+    let mut reused = BlockLu::with_structure(INERT_LAYOUT, inert, rate);
     reused.factor(&jac, 5.0).unwrap();
     for sigma in [0.01, 1.0, 100.0] {
         reused.refactor(&jac, sigma).unwrap();
-        let mut fresh = BlockLu::with_inert(INERT_LAYOUT, inert);
+        let mut fresh = BlockLu::with_structure(INERT_LAYOUT, inert, rate);
         fresh.factor(&jac, sigma).unwrap();
         let (mut x, mut y) = (rhs.clone(), rhs.clone());
         reused.solve(&mut x);
@@ -212,7 +273,7 @@ fn parallel_factorization_equals_serial_bit_for_bit() {
     let jac = partly_zero();
     let n = INERT_LAYOUT.dimension();
     let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
-    let mut serial = BlockLu::with_inert(INERT_LAYOUT, inert);
+    let mut serial = BlockLu::with_structure(INERT_LAYOUT, inert, rate);
     serial.factor(&jac, 3.0).unwrap();
     let mut expected = rhs.clone();
     serial.solve(&mut expected);
@@ -221,7 +282,7 @@ fn parallel_factorization_equals_serial_bit_for_bit() {
             .num_threads(threads)
             .build()
             .unwrap();
-        let mut parallel = BlockLu::with_inert(INERT_LAYOUT, inert);
+        let mut parallel = BlockLu::with_structure(INERT_LAYOUT, inert, rate);
         parallel.set_parallel(true);
         let x = pool.install(|| {
             parallel.factor(&jac, 3.0).unwrap();
@@ -236,7 +297,9 @@ fn parallel_factorization_equals_serial_bit_for_bit() {
             "{threads} threads"
         );
         // σ = 0 on a zero block: singular, reported from any thread.
-        let singular = zeroed(&jac, |r, _| r < INERT_LAYOUT.block_size);
+        let singular = zeroed(&jac, |r, _| {
+            r < INERT_LAYOUT.block_size && rate(r).is_none()
+        });
         assert_eq!(
             pool.install(|| parallel.factor(&singular, 0.0)),
             Err(Singular)

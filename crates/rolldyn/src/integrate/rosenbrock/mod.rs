@@ -290,7 +290,11 @@ impl Rosenbrock {
             fast: FastRefresh::of(system, &BlockJacobian::zeros(layout)),
             lu: match system.blocks() {
                 Some(split) => {
-                    let mut lu = BlockLu::with_inert(layout, |state| split.inert(state));
+                    let mut lu = BlockLu::with_structure(
+                        layout,
+                        |state| split.inert(state),
+                        |state| split.rate_of(state),
+                    );
                     lu.set_parallel(split.parallel());
                     lu
                 }
