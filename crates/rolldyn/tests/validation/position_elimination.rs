@@ -4,24 +4,27 @@
 //! and the stage equations reduce to the velocities (Hairer & Wanner II,
 //! §IV.8: RADAU5's and RODAS's option for y′ᵢ = y_{i+M2}).
 //!
-//! * In every configuration that changes which states move (free rings
-//!   and whirling cage; planar motion; a housing; a sliding outer ring; a
-//!   torque drive), each position the model declares has exactly that
-//!   row in its finite-difference Jacobian, and no other state of the
-//!   same kind (a position whose rate is its velocity) is left out.
+//! * In the configurations that change which states move (the 7008C's
+//!   free rings and whirling cage; with a housing, a sliding outer ring
+//!   and a torque drive; the planar 6304; the 7008C pair on its shaft),
+//!   each position the model declares has exactly that row in its
+//!   finite-difference Jacobian, and no undeclared state has a unit row.
 //! * On those Jacobians the reduced factorization solves σI − J to
 //!   round-off, and agrees with the factorization that keeps every state.
 
 use super::common::{
     bearing_6304, bearing_7008c, drag_7008c, dynamics_6304, dynamics_7008c, steel_shan_2023,
 };
+use super::shaft_dynamics::{pair_on_its_shaft, preloaded_pair};
 use rolldyn::contact::HertzModel;
+use rolldyn::dynamics::shaft::ShaftDynamics;
 use rolldyn::dynamics::{BearingModel, OuterRing, SlidingRing, Support};
+use rolldyn::integrate::OdeSystem;
 use rolldyn::integrate::jacobian::{JacobianWork, finite_difference};
 use rolldyn::integrate::linear::{BlockJacobian, BlockLu};
-use rolldyn::integrate::{BlockSplit, OdeSystem};
 use rolldyn::material::Material;
 use rolldyn::operating::TorqueDrive;
+use rolldyn::quasistatic::SolverOptions;
 
 /// The configurations, named, each with a state a little off its start
 /// (the cage turned and moved, the ring moved) so that pockets, housing
@@ -74,83 +77,109 @@ fn configurations() -> Vec<(&'static str, BearingModel, Vec<f64>)> {
     out
 }
 
-fn jacobian(model: &BearingModel, y: &[f64]) -> BlockJacobian {
+/// The bearing pair on its shaft (two bearings' balls and borders, the
+/// shaft's states), a little off its operating point.
+fn shaft() -> (ShaftDynamics, Vec<f64>) {
+    let (set, conditions, model) = preloaded_pair();
+    let eq = set.solve(&conditions, &SolverOptions::default()).unwrap();
+    let system = pair_on_its_shaft(&set, &model);
+    let mut y = system.initial_state(&eq).unwrap();
+    // The shaft moved by 1 µm along y.
+    y[system.shaft() + 1] += 1e-6;
+    (system, y)
+}
+
+fn jacobian<S: OdeSystem>(system: &S, y: &[f64]) -> BlockJacobian {
     let t = 1e-4;
     let mut f = vec![0.0; y.len()];
-    model.rhs(t, y, &mut f);
-    let mut jac = BlockJacobian::zeros(model.block_layout());
-    finite_difference(model, t, y, &f, &mut jac, &mut JacobianWork::new(model));
+    system.rhs(t, y, &mut f);
+    let mut jac = BlockJacobian::zeros(system.blocks().unwrap().block_layout());
+    finite_difference(system, t, y, &f, &mut jac, &mut JacobianWork::new(system));
     jac
+}
+
+/// Every declared position has its velocity's unit row; no other state
+/// has a unit row.
+fn positions_declared<S: OdeSystem>(name: &str, system: &S, y: &[f64]) {
+    let split = system.blocks().unwrap();
+    let jac = jacobian(system, y);
+    let n = y.len();
+    let mut declared = 0;
+    for q in 0..n {
+        let unit_row_of = |v: usize| (0..n).all(|c| jac.get(q, c) == f64::from(u8::from(c == v)));
+        match split.rate_of(q) {
+            Some(v) => {
+                declared += 1;
+                assert!(
+                    unit_row_of(v),
+                    "{name}: state {q} declared the position of {v}"
+                );
+            }
+            None => assert!(
+                !(0..n).any(|v| v != q && unit_row_of(v)),
+                "{name}: state {q} is a position not declared"
+            ),
+        }
+    }
+    assert!(declared > 0, "{name}");
+}
+
+/// The reduced factorization against the one that keeps every position.
+fn solves_the_full_system<S: OdeSystem>(name: &str, system: &S, y: &[f64]) {
+    let split = system.blocks().unwrap();
+    let jac = jacobian(system, y);
+    let layout = jac.layout();
+    let n = layout.dimension();
+    let mut reduced = BlockLu::with_structure(layout, |s| split.inert(s), |s| split.rate_of(s));
+    let mut kept = BlockLu::with_inert(layout, |s| split.inert(s));
+    assert!(
+        reduced.kept_states().0 < kept.kept_states().0,
+        "{name}: positions eliminated"
+    );
+    let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
+    for sigma in [1e3, 1e5, 1e7] {
+        reduced.factor(&jac, sigma).unwrap();
+        kept.factor(&jac, sigma).unwrap();
+        let (mut x, mut x_kept) = (rhs.clone(), rhs.clone());
+        reduced.solve(&mut x);
+        kept.solve(&mut x_kept);
+        let mut jx = vec![0.0; n];
+        jac.multiply(&x, &mut jx);
+        let norm = x_kept.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for i in 0..n {
+            // Residual relative to the row's scale |σ x_i| + Σ|J_ic x_c| + |r_i|.
+            let scale = (sigma * x[i]).abs()
+                + (0..n).map(|c| (jac.get(i, c) * x[c]).abs()).sum::<f64>()
+                + rhs[i].abs();
+            let residual = (sigma * x[i] - jx[i] - rhs[i]).abs();
+            assert!(
+                residual <= 1e-12 * scale,
+                "{name}, σ {sigma}, state {i}: residual {residual:e} of {scale:e}"
+            );
+            assert!(
+                (x[i] - x_kept[i]).abs() <= 1e-9 * norm,
+                "{name}, σ {sigma}, state {i}: {} against {}",
+                x[i],
+                x_kept[i]
+            );
+        }
+    }
 }
 
 #[test]
 fn declared_positions_have_their_velocitys_unit_row() {
     for (name, model, y) in configurations() {
-        let jac = jacobian(&model, &y);
-        let n = y.len();
-        let mut declared = 0;
-        for q in 0..n {
-            let unit_row_of =
-                |v: usize| (0..n).all(|c| jac.get(q, c) == f64::from(u8::from(c == v)));
-            match model.rate_of(q) {
-                Some(v) => {
-                    declared += 1;
-                    assert!(
-                        unit_row_of(v),
-                        "{name}: state {q} declared the position of {v}"
-                    );
-                }
-                // Every moving position is declared: a row that is some
-                // state's unit row (a frozen state's row is zero).
-                None => assert!(
-                    !(0..n).any(|v| v != q && unit_row_of(v)),
-                    "{name}: state {q} is a position not declared"
-                ),
-            }
-        }
-        assert!(declared > 0, "{name}");
+        positions_declared(name, &model, &y);
     }
+    let (system, y) = shaft();
+    positions_declared("7008C pair on its shaft", &system, &y);
 }
 
 #[test]
 fn the_reduced_factorization_solves_the_full_system() {
     for (name, model, y) in configurations() {
-        let jac = jacobian(&model, &y);
-        let layout = jac.layout();
-        let n = layout.dimension();
-        let mut reduced = BlockLu::with_structure(layout, |s| model.inert(s), |s| model.rate_of(s));
-        let mut kept = BlockLu::with_inert(layout, |s| model.inert(s));
-        assert!(
-            reduced.kept_states().0 < kept.kept_states().0,
-            "{name}: positions eliminated"
-        );
-        let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
-        for sigma in [1e3, 1e5, 1e7] {
-            reduced.factor(&jac, sigma).unwrap();
-            kept.factor(&jac, sigma).unwrap();
-            let (mut x, mut x_kept) = (rhs.clone(), rhs.clone());
-            reduced.solve(&mut x);
-            kept.solve(&mut x_kept);
-            let mut jx = vec![0.0; n];
-            jac.multiply(&x, &mut jx);
-            // Residual relative to the row's scale |σ x_i| + Σ|J_ic x_c| + |r_i|.
-            for i in 0..n {
-                let scale = (sigma * x[i]).abs()
-                    + (0..n).map(|c| (jac.get(i, c) * x[c]).abs()).sum::<f64>()
-                    + rhs[i].abs();
-                let residual = (sigma * x[i] - jx[i] - rhs[i]).abs();
-                assert!(
-                    residual <= 1e-12 * scale,
-                    "{name}, σ {sigma}, state {i}: residual {residual:e} of {scale:e}"
-                );
-                let norm = x_kept.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-                assert!(
-                    (x[i] - x_kept[i]).abs() <= 1e-9 * norm,
-                    "{name}, σ {sigma}, state {i}: {} against {}",
-                    x[i],
-                    x_kept[i]
-                );
-            }
-        }
+        solves_the_full_system(name, &model, &y);
     }
+    let (system, y) = shaft();
+    solves_the_full_system("7008C pair on its shaft", &system, &y);
 }

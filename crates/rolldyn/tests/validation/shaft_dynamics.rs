@@ -152,7 +152,7 @@ fn one_bearing_is_the_bearing(drive: Option<TorqueDrive>) {
 /// The 7008C back-to-back pair with a 200 N position preload (offset set
 /// at rest), its operating point without external load at the default
 /// case's speed (outer raceway control), and the default case's model.
-fn preloaded_pair() -> (ShaftSystem, SystemConditions, BearingModel) {
+pub(super) fn preloaded_pair() -> (ShaftSystem, SystemConditions, BearingModel) {
     let (params, _) = dynamics_7008c(DragParameters::default());
     let options = SolverOptions::default();
     let set = ShaftSystem::matched(&solver(), SetKind::BackToBack, 15e-3);
@@ -172,7 +172,7 @@ fn preloaded_pair() -> (ShaftSystem, SystemConditions, BearingModel) {
 
 /// The pair's bearings on a 1 kg shaft (tilt inertia 2e-3 kg·m²)
 /// without external load.
-fn pair_on_its_shaft(set: &ShaftSystem, model: &BearingModel) -> ShaftDynamics {
+pub(super) fn pair_on_its_shaft(set: &ShaftSystem, model: &BearingModel) -> ShaftDynamics {
     ShaftDynamics::new(
         set.bearings.iter().map(|m| (model.clone(), m)).collect(),
         ShaftBody {

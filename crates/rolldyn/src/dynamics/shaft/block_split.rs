@@ -5,7 +5,7 @@
 //! from the unperturbed point's memo); a shaft column moves every inner
 //! ring and re-evaluates every ball.
 
-use super::{Mounted, ShaftDynamics};
+use super::{Mounted, SHAFT_LEN, ShaftDynamics};
 use crate::dynamics::coupling::BallCoupling;
 use crate::integrate::BlockSplit;
 use crate::integrate::linear::BlockLayout;
@@ -151,6 +151,31 @@ impl BlockSplit for ShaftDynamics {
             }
             None => self.block_rhs(t, y, block, dy_block, coupling),
         }
+    }
+
+    /// The shaft's translations and tilts, its rotation angle under a
+    /// torque drive, and each bearing's own positions
+    /// ([`BlockSplit::rate_of`] of its model).
+    fn rate_of(&self, state: usize) -> Option<usize> {
+        if state >= self.first_shaft {
+            return match state - self.first_shaft {
+                0..5 => Some(state + 5),
+                SHAFT_LEN if self.drive.is_some() => Some(state + 1),
+                _ => None,
+            };
+        }
+        for b in &self.bearings {
+            let l = b.model.layout();
+            let n = l.balls * self.ball_len;
+            if (b.first_ball..b.first_ball + n).contains(&state) {
+                return Some(b.model.rate_of(state - b.first_ball)? + b.first_ball);
+            }
+            if (b.first_border..b.first_border + l.len() - l.outer()).contains(&state) {
+                let v = b.model.rate_of(state - b.first_border + l.outer())?;
+                return Some(v - l.outer() + b.first_border);
+            }
+        }
+        None
     }
 
     fn inert(&self, state: usize) -> bool {
