@@ -87,17 +87,27 @@ fn bench(name: &str, mut model: BearingModel, y0: &[f64], calls: usize) {
     // σ = 1/(hγ) of a 30 µs ROS34PW2 step.
     let sigma = 1.0 / (30e-6 * 0.435_866_521_508_459);
     let split = model.blocks().expect("blocks");
-    let mut lu = BlockLu::with_inert(layout, |state| split.inert(state));
+    // The engine's factorization (positions eliminated) and, as the
+    // reference in the same run, the one that keeps them.
+    let mut kept = BlockLu::with_inert(layout, |state| split.inert(state));
+    kept.factor(&jacobian, sigma).expect("regular");
+    let mut lu = BlockLu::with_structure(
+        layout,
+        |state| split.inert(state),
+        |state| split.rate_of(state),
+    );
     lu.factor(&jacobian, sigma).expect("regular");
-    time_per_call(&format!("{name}: factorization"), calls / 4, || {
-        lu.refactor(&jacobian, sigma).map_or(0.0, |()| 1.0)
-    });
     let mut x = dy.clone();
-    time_per_call(&format!("{name}: solve"), calls, || {
-        x.copy_from_slice(&dy);
-        lu.solve(&mut x);
-        x[0]
-    });
+    for (label, lu) in [("", &mut lu), (", positions kept", &mut kept)] {
+        time_per_call(&format!("{name}: factorization{label}"), calls / 4, || {
+            lu.refactor(&jacobian, sigma).map_or(0.0, |()| 1.0)
+        });
+        time_per_call(&format!("{name}: solve{label}"), calls, || {
+            x.copy_from_slice(&dy);
+            lu.solve(&mut x);
+            x[0]
+        });
+    }
     // The factorization with its blocks on one and on two threads, timed
     // alternately from a thread of a two-thread pool with the other
     // waiting actively, as in a run.

@@ -1,8 +1,8 @@
 //! The factorization's elimination of positions (`integrate::linear`,
 //! `BlockSplit::rate_of`): a state q whose rate is another state v
 //! (f_q = y_v) has the unit row e_v in the Jacobian, so σ x_q − x_v = r_q
-//! and the stage equations reduce to the velocities (Hairer & Wanner II,
-//! §IV.8: RADAU5's and RODAS's option for y′ᵢ = y_{i+M2}).
+//! and the stage equations reduce to the velocities (the option M1, M2 of
+//! Hairer & Wanner's RADAU5 and RODAS codes, Hairer & Wanner II).
 //!
 //! * In the configurations that change which states move (the 7008C's
 //!   free rings and whirling cage; with a housing, a sliding outer ring

@@ -143,10 +143,10 @@ impl BlockJacobian {
 /// so σ x_q − x_v = r_q gives x_q = (r_q + x_v)/σ, and the other rows
 /// read Σ_q J_iq x_q = Σ_q J_iq (r_q + x_v)/σ: the column J_iq/σ joins v's
 /// column and J_iq r_q/σ the right-hand side. The factorization then works
-/// on the velocities alone (Hairer & Wanner II, §IV.8: the RADAU5 and RODAS
-/// codes' option for y′ᵢ = y_{i+M2}, i ≤ M1): a free ball keeps 6 of its 9
-/// states, the bearing's border 10 of 20, about a third of the
-/// arithmetic. The pairs must hold exactly, for every state (checked in
+/// on the velocities alone (the option M1, M2 for y′ᵢ = y_{i+M2}, i ≤ M1,
+/// of Hairer & Wanner's RADAU5 and RODAS codes, Hairer & Wanner II): a
+/// free ball keeps 6 of its 9 states, the 7008C's border 8 of 16, and a
+/// factorization costs about half. The pairs must hold exactly, for every state (checked in
 /// debug builds).
 #[derive(Debug, Clone)]
 pub struct BlockLu {
