@@ -146,8 +146,9 @@ impl BlockJacobian {
 /// on the velocities alone (the option M1, M2 for y′ᵢ = y_{i+M2}, i ≤ M1,
 /// of Hairer & Wanner's RADAU5 and RODAS codes, Hairer & Wanner II): a
 /// free ball keeps 6 of its 9 states, the 7008C's border 8 of 16, and a
-/// factorization costs about half. The pairs must hold exactly, for every state (checked in
-/// debug builds).
+/// factorization costs about half. The pairs must hold exactly, for every
+/// state (checked in debug builds). The positions are recovered before
+/// the inert states, whose rows may read them.
 #[derive(Debug, Clone)]
 pub struct BlockLu {
     layout: BlockLayout,
