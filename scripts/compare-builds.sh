@@ -3,7 +3,7 @@
 # another commit's, alternating, in one session: the ratio is what a
 # noisy machine still measures (docs/performance.md).
 #
-#   scripts/compare-builds.sh REF [PAIRS] -- RUN_ARGUMENTS...
+#   scripts/compare-builds.sh [--instructions] REF [PAIRS] -- RUN_ARGUMENTS...
 #
 # REF is any commit name git understands; PAIRS (default 3) how many
 # runs of each build, alternating. RUN_ARGUMENTS are those of `rolldyn
@@ -20,13 +20,26 @@
 # run's wall time and step count, the medians and their ratio, and
 # whether the two builds' summaries agree apart from the timings and
 # the right-hand-side counts.
+# With --instructions, each build runs once on one thread under
+# valgrind's callgrind (needs valgrind) and the instructions it executed
+# are compared instead: a count the machine's speed does not move (up to
+# the few syncs a run makes by the clock), for changes of a few percent.
 set -euo pipefail
 
 usage() {
-    sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 2
 }
 
+instructions=false
+if [[ ${1:-} == --instructions ]]; then
+    instructions=true
+    shift
+    command -v valgrind > /dev/null || {
+        echo "--instructions needs valgrind (callgrind), which is not installed" >&2
+        exit 2
+    }
+fi
 [[ $# -ge 2 ]] || usage
 ref=$1
 shift
@@ -73,21 +86,36 @@ done
 
 run() { # build label pair
     local out="$work/$2-$3"
-    "$1" run "${args[@]}" -o "$out" > "$out.log" 2>&1 || true
+    if $instructions; then
+        RAYON_NUM_THREADS=1 valgrind --tool=callgrind --callgrind-out-file="$out.callgrind" \
+            "$1" run "${args[@]}" -o "$out" > "$out.log" 2>&1 || true
+    else
+        "$1" run "${args[@]}" -o "$out" > "$out.log" 2>&1 || true
+    fi
     grep -q '^completed:' "$out.log" || {
         echo "$2 run $3 did not complete:" >&2
         cat "$out.log" >&2
         exit 1
     }
     python3 - "$out" "$2" "$3" <<'EOF'
-import json, sys
-s = json.load(open(sys.argv[1] + "/summary.json"))
-wall, steps = s["wall_time_s"], s["steps"]
-print(f"{sys.argv[2]:4} {int(sys.argv[3]):2}  {wall:8.3f} s  {steps:8} steps")
+import json, os, sys
+out = sys.argv[1]
+steps = json.load(open(out + "/summary.json"))["steps"]
+if os.path.exists(out + ".callgrind"):
+    total = next(int(l.split()[1]) for l in open(out + ".callgrind") if l.startswith("summary:"))
+    print(f"{sys.argv[2]:4} {int(sys.argv[3]):2}  {total:16,} instructions  {steps:8} steps")
+else:
+    wall = json.load(open(out + "/summary.json"))["wall_time_s"]
+    print(f"{sys.argv[2]:4} {int(sys.argv[3]):2}  {wall:8.3f} s  {steps:8} steps")
 EOF
 }
 
-echo "     run      wall        steps"
+if $instructions; then
+    pairs=1 # one run each: the count does not scatter
+    echo "     run      instructions                steps"
+else
+    echo "     run      wall        steps"
+fi
 for p in $(seq 1 "$pairs"); do
     run "$old" ref "$p"
     run "$new" new "$p"
@@ -96,11 +124,18 @@ done
 python3 - "$work" "$sha" <<'EOF'
 import json, pathlib, statistics, sys
 work, sha = pathlib.Path(sys.argv[1]), sys.argv[2]
-med = {b: statistics.median(json.loads(d.joinpath("summary.json").read_text())["wall_time_s"]
-                           for d in work.glob(f"{b}-*") if d.is_dir())
-       for b in ("ref", "new")}
-print(f"median wall: {sha} {med['ref']:.3f} s, work tree {med['new']:.3f} s, "
-      f"ratio new/ref {med['new'] / med['ref']:.3f}")
+counts = {b: work / f"{b}-1.callgrind" for b in ("ref", "new")}
+if counts["ref"].exists():
+    n = {b: next(int(l.split()[1]) for l in p.open() if l.startswith("summary:"))
+         for b, p in counts.items()}
+    print(f"instructions: {sha} {n['ref']:,}, work tree {n['new']:,}, "
+          f"ratio new/ref {n['new'] / n['ref']:.4f}")
+else:
+    med = {b: statistics.median(json.loads(d.joinpath("summary.json").read_text())["wall_time_s"]
+                               for d in work.glob(f"{b}-*") if d.is_dir())
+           for b in ("ref", "new")}
+    print(f"median wall: {sha} {med['ref']:.3f} s, work tree {med['new']:.3f} s, "
+          f"ratio new/ref {med['new'] / med['ref']:.3f}")
 timing = {"wall_time_s", "rhs_evaluations", "jacobian_rhs_evaluations"}
 def summary(build):
     data = json.loads((work / f"{build}-1" / "summary.json").read_text())
