@@ -23,11 +23,12 @@
 # With --instructions, each build runs once on one thread under
 # valgrind's callgrind (needs valgrind) and the instructions it executed
 # are compared instead: a count the machine's speed does not move (up to
-# the few syncs a run makes by the clock), for changes of a few percent.
+# the few syncs a run makes by the clock), for changes of a few percent;
+# PAIRS is then ignored.
 set -euo pipefail
 
 usage() {
-    sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 2
 }
 
@@ -100,13 +101,13 @@ run() { # build label pair
     python3 - "$out" "$2" "$3" <<'EOF'
 import json, os, sys
 out = sys.argv[1]
-steps = json.load(open(out + "/summary.json"))["steps"]
+s = json.load(open(out + "/summary.json"))
 if os.path.exists(out + ".callgrind"):
     total = next(int(l.split()[1]) for l in open(out + ".callgrind") if l.startswith("summary:"))
-    print(f"{sys.argv[2]:4} {int(sys.argv[3]):2}  {total:16,} instructions  {steps:8} steps")
+    measure = f"{total:16,} instructions"
 else:
-    wall = json.load(open(out + "/summary.json"))["wall_time_s"]
-    print(f"{sys.argv[2]:4} {int(sys.argv[3]):2}  {wall:8.3f} s  {steps:8} steps")
+    measure = f"{s['wall_time_s']:8.3f} s"
+print(f"{sys.argv[2]:4} {int(sys.argv[3]):2}  {measure}  {s['steps']:8} steps")
 EOF
 }
 
