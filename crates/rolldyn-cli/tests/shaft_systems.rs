@@ -502,8 +502,11 @@ fn a_set_run_resumes_bit_identically() {
         vec![
             "run".to_string(),
             path.to_str().unwrap().to_string(),
+            // Long enough that the second checkpoint (the first one's
+            // cost times 50 later: ~3.5 s in a debug build) comes well
+            // before the end.
             "--duration".into(),
-            "80 ms".into(),
+            "160 ms".into(),
             "--set".into(),
             "output.sample_rate=\"5 kHz\"".into(),
             "--checkpoint-interval".into(),
@@ -547,14 +550,14 @@ fn a_set_run_resumes_bit_identically() {
             "--resume",
             whole.to_str().unwrap(),
             "--until",
-            "84 ms",
+            "164 ms",
         ],
         None,
     );
     assert!(o.status.success(), "{}", stderr(&o));
     let extended = read(&whole);
     assert_eq!(extended["status"], "completed");
-    assert_eq!(extended["samples"], 421);
+    assert_eq!(extended["samples"], 821);
     std::fs::remove_dir_all(&dir).ok();
 }
 

@@ -141,4 +141,11 @@ pub fn kill_after_two_checkpoints(child: &mut std::process::Child, dir: &std::pa
     }
     child.kill().unwrap();
     child.wait().unwrap();
+    // The second stamp may be the end's own write (a completed run keeps
+    // its checkpoint), seen after the run finished.
+    let summary = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    assert!(
+        summary.contains("\"status\": \"partial\""),
+        "the run ended before it could be killed; lengthen it"
+    );
 }

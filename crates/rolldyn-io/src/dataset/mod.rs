@@ -8,8 +8,14 @@
 //! the parts of a run do not depend on when it was checkpointed or
 //! interrupted. The rows of the last, growing part are kept in memory and
 //! written (atomically, as a provisional part under its final name) at
-//! every [`SeriesWriter::sync`]; memory is bounded by one part whatever the
-//! run's length, and a checkpoint writes only what is new.
+//! every [`SeriesWriter::sync`]; a checkpoint writes only what is new.
+//!
+//! A full part is encoded and written on a thread of its own while the
+//! run goes on (its compression and its flush to disk would otherwise hold
+//! up the integration: docs/performance.md); the next full part,
+//! [`SeriesWriter::sync`] and dropping the writer wait for it. So memory
+//! is bounded by two parts whatever the run's length, a sync still means
+//! on disk, and the bytes are those of a write on the caller's thread.
 //!
 //! After a kill at any moment every part on disk is whole (each is written
 //! to a temporary file and renamed), and the rows up to the last
@@ -28,6 +34,7 @@ use parquet::file::properties::WriterProperties;
 use parquet::file::writer::SerializedFileWriter;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
+use std::thread::JoinHandle;
 
 /// Largest part in memory \[bytes of f64 samples\].
 const PART_BYTES: usize = 4 * 1024 * 1024;
@@ -139,11 +146,16 @@ pub struct SeriesWriter {
     part_rows: usize,
     /// Complete parts written.
     complete: usize,
-    metadata: Vec<(String, String)>,
+    metadata: Arc<Vec<(String, String)>>,
     /// Whether the provisional part on disk is behind `pending`.
     dirty: bool,
     /// Samples stored as 32-bit floats.
     float32: bool,
+    /// The full part being encoded and written, if any: its rows come back
+    /// (to hold the next part's) with the write's result.
+    in_flight: Option<JoinHandle<(TimeSeries, Result<(), OutputError>)>>,
+    /// A series with the channels and room for a part, no rows.
+    spare: Option<TimeSeries>,
 }
 
 impl SeriesWriter {
@@ -168,8 +180,13 @@ impl SeriesWriter {
         std::fs::create_dir_all(dir).map_err(io)?;
         // An empty first part: the dataset reads (its channels, no rows)
         // from the start, even if the run is killed before any sync.
-        let mut writer = Self::new(dir, template, metadata, float32);
-        writer.write_pending(false)?;
+        let writer = Self::new(dir, template, metadata, float32);
+        write_part(
+            &writer.pending,
+            &writer.metadata,
+            &dir.join(part_name(0)),
+            float32,
+        )?;
         Ok(writer)
     }
 
@@ -180,12 +197,16 @@ impl SeriesWriter {
             part_rows,
             pending: empty_like(template, part_rows),
             complete: 0,
-            metadata: metadata
-                .iter()
-                .map(|(k, v)| (k.to_string(), v.clone()))
-                .collect(),
+            metadata: Arc::new(
+                metadata
+                    .iter()
+                    .map(|(k, v)| (k.to_string(), v.clone()))
+                    .collect(),
+            ),
             dirty: false,
             float32,
+            in_flight: None,
+            spare: None,
         }
     }
 
@@ -264,39 +285,92 @@ impl SeriesWriter {
         self.part_rows
     }
 
-    /// Appends one row (one value per channel, in channel order); writes a
-    /// part when one is full.
+    /// Appends one row (one value per channel, in channel order); a full
+    /// part goes to the background to be written, after the one before it
+    /// is on disk (whose write error, if any, is returned here).
     pub fn push(&mut self, row: &[f64]) -> Result<(), OutputError> {
         self.pending.push(row);
         self.dirty = true;
         if self.pending.len() >= self.part_rows {
-            self.write_pending(true)?;
+            self.hand_over_full_part()?;
         }
         Ok(())
     }
 
-    /// Makes every row pushed so far readable on disk: the pending rows as
-    /// a provisional part (rewritten as it grows; at most one part).
+    /// Makes every row pushed so far readable on disk: waits for the full
+    /// part in the background, then writes the pending rows as a
+    /// provisional part (rewritten as it grows; at most one part).
     pub fn sync(&mut self) -> Result<(), OutputError> {
+        self.wait_in_flight()?;
         if self.dirty {
-            self.write_pending(false)?;
+            let path = self.dir.join(part_name(self.complete));
+            write_part(&self.pending, &self.metadata, &path, self.float32)?;
+            self.dirty = false;
         }
         Ok(())
     }
 
-    /// Writes the pending rows as part `complete`; a full part moves on
-    /// (its rows are cleared, their room kept for the next part).
-    fn write_pending(&mut self, full: bool) -> Result<(), OutputError> {
+    /// Writes the pending rows (a full part) as part `complete` on a
+    /// thread of its own; the writer goes on with the spare rows.
+    fn hand_over_full_part(&mut self) -> Result<(), OutputError> {
+        self.wait_in_flight()?;
+        let spare = match self.spare.take() {
+            Some(spare) => spare,
+            None => empty_like(&self.pending, self.part_rows),
+        };
+        let rows = std::mem::replace(&mut self.pending, spare);
         let path = self.dir.join(part_name(self.complete));
-        let bytes = encode(&self.pending, &self.metadata, &path, self.float32)?;
-        write_atomic(&path, &bytes)?;
-        if full {
-            self.pending.truncate(0);
-            self.complete += 1;
-        }
+        let (metadata, float32) = (self.metadata.clone(), self.float32);
+        self.in_flight = Some(std::thread::spawn(move || {
+            let written = write_part(&rows, &metadata, &path, float32);
+            (rows, written)
+        }));
+        self.complete += 1;
         self.dirty = false;
         Ok(())
     }
+
+    /// Waits for the part in the background, if any, and keeps its rows'
+    /// room as the spare.
+    fn wait_in_flight(&mut self) -> Result<(), OutputError> {
+        let Some(writing) = self.in_flight.take() else {
+            return Ok(());
+        };
+        match writing.join() {
+            Ok((mut rows, written)) => {
+                rows.truncate(0);
+                self.spare = Some(rows);
+                written
+            }
+            Err(_) => Err(OutputError::Encode {
+                path: self
+                    .dir
+                    .join(part_name(self.complete - 1))
+                    .display()
+                    .to_string(),
+                message: "the thread writing this part stopped unexpectedly".into(),
+            }),
+        }
+    }
+}
+
+impl Drop for SeriesWriter {
+    /// The part in the background reaches the disk before the writer is
+    /// gone (its error, if any, was not asked for: [`SeriesWriter::sync`]
+    /// reports it).
+    fn drop(&mut self) {
+        let _ = self.wait_in_flight();
+    }
+}
+
+/// Encodes `rows` and writes them atomically as the part at `path`.
+fn write_part(
+    rows: &TimeSeries,
+    metadata: &[(String, String)],
+    path: &Path,
+    float32: bool,
+) -> Result<(), OutputError> {
+    write_atomic(path, &encode(rows, metadata, path, float32)?)
 }
 
 /// A series with the channels of `template` and no rows, with room for

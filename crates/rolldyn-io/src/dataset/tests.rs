@@ -134,3 +134,23 @@ fn resume_keeps_the_checkpointed_rows_and_gives_the_same_parts() {
     std::fs::remove_dir_all(&straight).ok();
     std::fs::remove_dir_all(&killed).ok();
 }
+
+#[test]
+fn a_full_part_failing_in_the_background_is_reported_by_the_next_sync() {
+    let dir = temp("lost");
+    let n = part_rows(2);
+    let whole = series(0..n + 1);
+    let mut w = SeriesWriter::create(&dir, &whole, &[], false).unwrap();
+    // The directory goes away under the run: the full part cannot be
+    // written, and the error names it.
+    std::fs::remove_dir_all(&dir).unwrap();
+    for i in 0..n + 1 {
+        w.push(&[
+            whole.column("time_s").unwrap()[i],
+            whole.column("x_m").unwrap()[i],
+        ])
+        .unwrap();
+    }
+    let e = w.sync().unwrap_err().to_string();
+    assert!(e.contains("part-000000.parquet"), "{e}");
+}
