@@ -151,9 +151,9 @@ pub struct SeriesWriter {
     dirty: bool,
     /// Samples stored as 32-bit floats.
     float32: bool,
-    /// The full part being encoded and written, if any: its rows come back
-    /// (to hold the next part's) with the write's result.
-    in_flight: Option<JoinHandle<(TimeSeries, Result<(), OutputError>)>>,
+    /// The full part being encoded and written, if any: its rows (whose
+    /// room holds the next part's once written) and the writing thread.
+    in_flight: Option<(Arc<TimeSeries>, JoinHandle<Result<(), OutputError>>)>,
     /// A series with the channels and room for a part, no rows.
     spare: Option<TimeSeries>,
 }
@@ -311,46 +311,60 @@ impl SeriesWriter {
     }
 
     /// Writes the pending rows (a full part) as part `complete` on a
-    /// thread of its own; the writer goes on with the spare rows.
+    /// thread of its own (on this one if the system gives no thread); the
+    /// writer goes on with the spare rows.
     fn hand_over_full_part(&mut self) -> Result<(), OutputError> {
         self.wait_in_flight()?;
         let spare = match self.spare.take() {
             Some(spare) => spare,
             None => empty_like(&self.pending, self.part_rows),
         };
-        let rows = std::mem::replace(&mut self.pending, spare);
+        let rows = Arc::new(std::mem::replace(&mut self.pending, spare));
         let path = self.dir.join(part_name(self.complete));
-        let (metadata, float32) = (self.metadata.clone(), self.float32);
-        self.in_flight = Some(std::thread::spawn(move || {
-            let written = write_part(&rows, &metadata, &path, float32);
-            (rows, written)
-        }));
         self.complete += 1;
         self.dirty = false;
+        let (shared, metadata, float32) = (rows.clone(), self.metadata.clone(), self.float32);
+        let target = path.clone();
+        let spawned = std::thread::Builder::new()
+            .name("rolldyn-parquet".into())
+            .spawn(move || write_part(&shared, &metadata, &target, float32));
+        match spawned {
+            Ok(writing) => self.in_flight = Some((rows, writing)),
+            Err(_) => {
+                write_part(&rows, &self.metadata, &path, self.float32)?;
+                self.keep_spare(rows);
+            }
+        }
         Ok(())
     }
 
     /// Waits for the part in the background, if any, and keeps its rows'
     /// room as the spare.
     fn wait_in_flight(&mut self) -> Result<(), OutputError> {
-        let Some(writing) = self.in_flight.take() else {
+        let Some((rows, writing)) = self.in_flight.take() else {
             return Ok(());
         };
-        match writing.join() {
-            Ok((mut rows, written)) => {
-                rows.truncate(0);
-                self.spare = Some(rows);
-                written
-            }
-            Err(_) => Err(OutputError::Encode {
+        // The thread has dropped its share of the rows when it returns.
+        let written = writing.join();
+        self.keep_spare(rows);
+        written.unwrap_or_else(|_| {
+            Err(OutputError::Encode {
                 path: self
                     .dir
                     .join(part_name(self.complete - 1))
                     .display()
                     .to_string(),
                 message: "the thread writing this part stopped unexpectedly".into(),
-            }),
-        }
+            })
+        })
+    }
+
+    /// Keeps the room of a written part's rows for the next part.
+    fn keep_spare(&mut self, rows: Arc<TimeSeries>) {
+        self.spare = Arc::try_unwrap(rows).ok().map(|mut rows| {
+            rows.truncate(0);
+            rows
+        });
     }
 }
 

@@ -36,6 +36,9 @@ fn parts_hold_fixed_row_ranges_and_read_back_as_one_series() {
     }
     w.sync().unwrap();
     assert_eq!(w.rows(), total as u64);
+    // The written parts' room is kept for the next (memory: two parts).
+    assert!(w.in_flight.is_none());
+    assert!(w.spare.as_ref().is_some_and(|s| s.is_empty()));
     let parts = part_files(&dir).unwrap();
     assert_eq!(parts.len(), 3);
     assert_eq!(read_parquet(&parts[0]).unwrap().len(), n);
