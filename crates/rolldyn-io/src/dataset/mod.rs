@@ -137,6 +137,9 @@ pub(crate) fn encode(
     Ok(bytes)
 }
 
+/// A thread writing a part, and what it returns.
+type Writing = JoinHandle<Result<(), OutputError>>;
+
 /// Writes a time series part by part into a dataset directory.
 #[derive(Debug)]
 pub struct SeriesWriter {
@@ -153,7 +156,7 @@ pub struct SeriesWriter {
     float32: bool,
     /// The full part being encoded and written, if any: its rows (whose
     /// room holds the next part's once written) and the writing thread.
-    in_flight: Option<(Arc<TimeSeries>, JoinHandle<Result<(), OutputError>>)>,
+    in_flight: Option<(Arc<TimeSeries>, Writing)>,
     /// A series with the channels and room for a part, no rows.
     spare: Option<TimeSeries>,
 }
