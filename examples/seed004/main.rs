@@ -175,6 +175,16 @@ fn main() -> Result<(), String> {
                 * w,
             qs.outer.differential_sliding,
         ),
+        (
+            "inner rolling res.",
+            mean.inner.rolling_resistance * w,
+            qs.inner.rolling_resistance,
+        ),
+        (
+            "outer rolling res.",
+            mean.outer.rolling_resistance * w,
+            qs.outer.rolling_resistance,
+        ),
         ("cage land", mean.guide_land * w, qs.cage_land),
         (
             "ball-pocket",
@@ -208,5 +218,6 @@ fn scaled(c: &rolldyn::power::ContactLosses, h: f64) -> rolldyn::power::ContactL
         differential_sliding: h * c.differential_sliding,
         hysteresis: h * c.hysteresis,
         damping: h * c.damping,
+        rolling_resistance: h * c.rolling_resistance,
     }
 }

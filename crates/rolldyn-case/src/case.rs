@@ -22,6 +22,7 @@ mod dynamics;
 mod fits;
 mod life;
 mod lubricant;
+mod lubrication;
 mod material;
 mod operating;
 mod output;
@@ -43,6 +44,7 @@ pub use dynamics::{
 pub use fits::FitEffect;
 pub use life::{Life, MAX_VISCOSITY_RATIO};
 pub use lubricant::Lubricant;
+pub use lubrication::{Lubrication, Method};
 use lubricant::lubricant;
 use material::material;
 pub use output::{ChannelGroup, OutputSelection};
@@ -139,6 +141,8 @@ pub struct Case {
     pub drag: DragParameters,
     /// Friction of contact seals (None: an open bearing).
     pub seals: Option<rolldyn::dynamics::SealFriction>,
+    /// How the bearing is lubricated (`[lubrication]`).
+    pub lubrication: Lubrication,
     /// The accelerometer on the housing and its acquisition (None: no
     /// sensor), acquiring at the output's sample rate.
     pub sensor: Option<rolldyn::signal::sensor::SensorSpec>,
@@ -416,6 +420,11 @@ impl Case {
         .unwrap_or(0.0);
         let drag = dynamics::drag(&raw.drag)?;
         let seals = dynamics::seals(raw.seals.as_ref())?;
+        let lubrication = lubrication::lubrication(
+            raw.lubrication.as_ref(),
+            &bearing.geometry,
+            lubricant.as_ref(),
+        )?;
         let sensor = sensor::sensor(
             raw.sensor.as_ref(),
             solver.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE),
@@ -460,6 +469,7 @@ impl Case {
             start: solver.start,
             drag,
             seals,
+            lubrication,
             sensor,
             surface,
             duration: solver.duration,

@@ -60,6 +60,10 @@ pub struct RawCase {
     pub materials: RawMaterials,
     /// Lubricant properties (used by EHL traction, films and thermal models).
     pub lubricant: Option<RawLubricant>,
+    /// How the bearing is lubricated: method, oil level, the contacts'
+    /// EHL rolling resistance (absent: no method, rolling resistance on
+    /// with a lubricant).
+    pub lubrication: Option<RawLubrication>,
     /// Speeds and loads.
     #[serde(default)]
     pub operating: RawOperating,
@@ -218,6 +222,35 @@ pub struct RawDrag {
     pub cage_viscous: Option<Quantity<RotationalDamping>>,
     /// Cage windage drag c₂ (torque per squared angular speed).
     pub cage_windage: Option<Quantity<WindageCoefficient>>,
+}
+
+/// How the bearing is lubricated (docs/lubrication.md, "Lubrication method
+/// and churning", "Rolling resistance").
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RawLubrication {
+    /// "none" (default: no churning), "oil_bath", "oil_jet", "air_oil",
+    /// "grease".
+    pub method: Option<crate::case::Method>,
+    /// An oil bath's level above the lowest point of the outer ring's
+    /// raceway (SKF's H).
+    pub oil_level: Option<Quantity<Length>>,
+    /// EHL rolling resistance of the lubricated contacts:
+    /// "biboulet_houpert" (default with a `[lubricant]`) or "none".
+    pub rolling_resistance: Option<RollingResistanceChoice>,
+    /// Aihara's inlet-heating reduction of the rolling resistance (default
+    /// true).
+    pub inlet_heating: Option<bool>,
+}
+
+/// The EHL rolling-resistance law.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RollingResistanceChoice {
+    /// Biboulet & Houpert 2010 eq 32 with inlet heating and starvation.
+    BibouletHoupert,
+    /// None.
+    None,
 }
 
 /// Contact seals rubbing on the inner ring (docs/dynamics.md, "Seals").

@@ -19,7 +19,7 @@ const PREFIX: &str = "power_";
 /// The components in channel order: `inner_<mechanism>`,
 /// `outer_<mechanism>`, then the other force elements.
 fn components(p: &Dissipation) -> impl Iterator<Item = (String, f64)> {
-    let contact = |ring: &'static str, losses: [(&'static str, f64); 6]| {
+    let contact = |ring: &'static str, losses: [(&'static str, f64); 7]| {
         losses
             .into_iter()
             .map(move |(name, value)| (format!("{ring}_{name}"), value))
@@ -93,21 +93,40 @@ impl From<&ThermalCoupling> for ThermalRunSummary {
 /// Power keys of `summary.json`, means over the averaging window.
 #[derive(Serialize)]
 pub struct PowerSummary {
-    /// Σ of the component means \[W\].
+    /// Dissipated energy over the window / its length \[W\] (the same as
+    /// `mean_dissipated_power_w`: the power the bearing turned into heat,
+    /// impacts included).
     pub mean_power_loss_w: f64,
     /// Dissipated energy over the window / its length (the energy
     /// balance's accumulator, exact between samples) \[W\].
     pub mean_dissipated_power_w: f64,
-    /// Friction torque on the inner ring \[N·m\].
+    /// Σ of the component means \[W\]: the samples' split, which misses
+    /// what happens between samples (impacts).
+    pub mean_sampled_power_loss_w: f64,
+    /// Friction torque on the inner ring from the work the drive did
+    /// over the window per radian turned \[N·m\] (module doc).
     pub mean_friction_torque_n_m: f64,
+    /// Mean of the sampled `friction_torque_n_m` channel \[N·m\].
+    pub mean_sampled_friction_torque_n_m: f64,
     /// Mean of each component's channel \[W\].
     pub mean_power_loss_by_component_w: BTreeMap<String, f64>,
 }
 
-/// The keys over the averaging window.
+/// The keys over the averaging window. `rotor_inertia` is the polar
+/// inertia J of a torque-driven inner ring (None: its speed is
+/// prescribed).
+///
+/// The mean friction torque is the work that turned the inner ring over
+/// the window per radian, M̄ = (ΔW_drive − Δ(½ J ω²)) / ∫ω dt, with
+/// ∫ω dt = ω̄ Δt from the sampled speed (exact at a prescribed constant
+/// speed): the accumulated drive work is exact between samples, so the
+/// impacts' impulses count, which a mean of the sampled moment misses.
+/// The drive work also holds the work of time-varying loads and a cage
+/// unbalance, whose mean over whole periods vanishes.
 pub fn summarise(
     window: &crate::run_stats::Window,
     stats: &crate::run_stats::RunStatistics,
+    rotor_inertia: Option<f64>,
 ) -> PowerSummary {
     let by_component: BTreeMap<String, f64> = components(&Dissipation::default())
         .map(|(name, _)| {
@@ -116,15 +135,38 @@ pub fn summarise(
         })
         .collect();
     let [t0, t1] = window.span();
-    let mean_dissipated_power_w = if t1 > t0 {
-        (stats.last("dissipated_energy_j") - window.first("dissipated_energy_j")) / (t1 - t0)
+    let span = t1 - t0;
+    let rate = |name: &str| {
+        if span > 0.0 {
+            (stats.last(name) - window.first(name)) / span
+        } else {
+            0.0
+        }
+    };
+    let mean_dissipated_power_w = rate("dissipated_energy_j");
+    let rpm = std::f64::consts::TAU / 60.0;
+    let mean_speed = window.mean("inner_ring_speed_rpm") * rpm;
+    let rotor_power = match rotor_inertia {
+        Some(j) if span > 0.0 => {
+            let (w0, w1) = (
+                window.first("inner_ring_speed_rpm") * rpm,
+                stats.last("inner_ring_speed_rpm") * rpm,
+            );
+            0.5 * j * (w1 * w1 - w0 * w0) / span
+        }
+        _ => 0.0,
+    };
+    let mean_friction_torque_n_m = if mean_speed != 0.0 {
+        (rate("drive_work_j") - rotor_power) / mean_speed.abs()
     } else {
         0.0
     };
     PowerSummary {
-        mean_power_loss_w: by_component.values().sum(),
+        mean_power_loss_w: mean_dissipated_power_w,
         mean_dissipated_power_w,
-        mean_friction_torque_n_m: window.mean("friction_torque_n_m"),
+        mean_sampled_power_loss_w: by_component.values().sum(),
+        mean_friction_torque_n_m,
+        mean_sampled_friction_torque_n_m: window.mean("friction_torque_n_m"),
         mean_power_loss_by_component_w: by_component,
     }
 }

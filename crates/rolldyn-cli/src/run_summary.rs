@@ -238,7 +238,11 @@ pub(crate) fn summarise(
             &case.surface,
         ),
         sensor: crate::vibration::sensor_summary(&signal, model.sensor()),
-        power: crate::power_channels::summarise(&window, stats),
+        power: crate::power_channels::summarise(
+            &window,
+            stats,
+            model.parameters().drive.as_ref().map(|d| d.inertia),
+        ),
         thermal_coupling: model
             .thermal()
             .map(crate::power_channels::ThermalRunSummary::from),

@@ -7,6 +7,8 @@ use super::{Case, Invalid, checked, positive};
 use crate::raw::{RawPower, RawThermal};
 use crate::units::{Dimension, Quantity};
 use rolldyn::power::LocalMethodInputs;
+use rolldyn::power::harris::LubricatedContacts;
+use rolldyn::quasistatic::films::FilmInputs;
 use rolldyn::thermal::ThermalInputs;
 use rolldyn::thermal::bearing::Solid;
 use rolldyn::thermal::coupled::Expansion;
@@ -268,6 +270,19 @@ impl Case {
             guide: self.guide_land_of(false)?,
             drag: self.drag,
             seals: self.seals,
+            rolling_resistance: self.rolling_resistance().map(|model| LubricatedContacts {
+                model,
+                films: FilmInputs {
+                    lubricant: model.lubricant,
+                    supply: self.lubricant.as_ref().map_or(Default::default(), |l| l.supply),
+                    roughness: [0.0; 2],
+                    effective_modulus: rolldyn::material::effective_modulus(
+                        &self.materials.ball.material,
+                        &self.materials.rings.material,
+                    ),
+                },
+            }),
+            churning: self.churning()?,
         })
     }
 

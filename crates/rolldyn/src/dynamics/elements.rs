@@ -55,6 +55,12 @@ impl Elements {
         if let Some(seals) = &params.seals {
             seals.validate()?;
         }
+        if let Some(rolling) = &params.rolling_resistance {
+            rolling.validate()?;
+        }
+        if let Some(churning) = &params.churning {
+            churning.validate()?;
+        }
         if let Some(outer) = &params.outer_ring {
             require_positive("outer_ring_mass", outer.mass)?;
             outer.housing.validate("outer_ring_housing")?;
@@ -146,9 +152,9 @@ impl Elements {
         })
     }
 
-    /// η₀ of the EHL traction, and of the guide land and the pocket
-    /// squeeze film (the oil node's), if `viscosities` (contact inlet,
-    /// oil) \[Pa·s\].
+    /// η₀ of the EHL traction and the rolling resistance, and of the guide
+    /// land, the pocket squeeze film and the churning (the oil node's), if
+    /// `viscosities` (contact inlet, oil) \[Pa·s\].
     pub(super) fn apply_viscosities(&mut self, viscosities: Option<(f64, f64)>) {
         let Some((contact, land)) = viscosities else {
             return;
@@ -161,6 +167,12 @@ impl Elements {
         }
         if let Some(squeeze) = &mut self.params.cage.pocket_squeeze {
             squeeze.viscosity = land;
+        }
+        if let Some(rolling) = &mut self.params.rolling_resistance {
+            rolling.lubricant.viscosity = contact;
+        }
+        if let Some(churning) = &mut self.params.churning {
+            churning.viscosity = land;
         }
     }
 }

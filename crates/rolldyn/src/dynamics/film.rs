@@ -103,7 +103,7 @@ impl Elements {
         e - e.dot(normal) * normal
     }
 
-    fn curvature(&self, ring: &RingMotion, contact_angle: f64) -> Curvature {
+    pub(super) fn curvature(&self, ring: &RingMotion, contact_angle: f64) -> Curvature {
         Curvature::of_raceway(
             &ring.raceway,
             self.geometry.ball_diameter,

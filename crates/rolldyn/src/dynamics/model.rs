@@ -359,7 +359,8 @@ impl BearingModel {
         dissipation -= cage_drag * cage_speed;
         dy[dc + 5] = (cage_torque + cage_drag) / p.cage.inertia;
         // The moment about the ring's (tilted) axis of the bearing's forces
-        // on the inner ring (contacts, an inner guide land) and its seals'.
+        // on the inner ring (contacts, an inner guide land) and its seals' and
+        // churning's.
         let mut axial_moment = ring_moment.dot(&inner.axis);
         if let Some(seals) = &p.seals {
             let seal_power = seals.power(inner.spin_speed);
@@ -367,6 +368,14 @@ impl BearingModel {
             axial_moment += seals.moment(inner.spin_speed);
             if let Some(d) = sink.as_deref_mut() {
                 d.seals = seal_power;
+            }
+        }
+        if let Some(churning) = &p.churning {
+            let churning_power = churning.power(inner.spin_speed);
+            dissipation += churning_power;
+            axial_moment += churning.moment(inner.spin_speed);
+            if let Some(d) = sink.as_deref_mut() {
+                d.churning = churning_power;
             }
         }
         // Drive power: a prescribed spin supplies −M_x ω (the torque that

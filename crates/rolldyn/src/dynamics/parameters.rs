@@ -75,6 +75,12 @@ pub struct DynamicsParameters {
     pub mixed_lubrication: Option<crate::traction::mixed::MixedLubrication>,
     /// Friction of contact seals on the inner ring (None: an open bearing).
     pub seals: Option<SealFriction>,
+    /// EHL rolling resistance of the lubricated ball–raceway contacts
+    /// (None: dry contacts; `lubrication::rolling_resistance`).
+    pub rolling_resistance: Option<crate::lubrication::rolling_resistance::RollingResistance>,
+    /// Churning of an oil bath or jet on the inner ring (None: neither;
+    /// `lubrication::churning`).
+    pub churning: Option<crate::lubrication::churning::Churning>,
 }
 
 impl DynamicsParameters {
@@ -85,7 +91,8 @@ impl DynamicsParameters {
     /// (integrated on the default 12 × 6 grid when one is set), at rest
     /// (speed prescribed) without loads, a free inner ring and a fixed outer ring, no
     /// hysteresis, gravity or drag, 3-D, smooth surfaces, flooded films
-    /// not in the normal approach, no mixed lubrication, no seals. Change the rest
+    /// not in the normal approach, no mixed lubrication, no seals, no rolling
+    /// resistance or churning. Change the rest
     /// with struct update syntax, so that a new parameter needs only its
     /// default here:
     /// `DynamicsParameters { traction, ..DynamicsParameters::new(0.5, 1e-4, cage) }`.
@@ -114,6 +121,8 @@ impl DynamicsParameters {
             film_in_approach: false,
             mixed_lubrication: None,
             seals: None,
+            rolling_resistance: None,
+            churning: None,
         }
     }
 }

@@ -16,6 +16,14 @@
 //! axis e_a = n × û on the ball, the reaction couple on the ring; its power
 //! M_h |ω_roll| is dissipated. A ramp over 1 mm/s of rolling speed makes it
 //! continuous at rest.
+//!
+//! EHL rolling resistance of a lubricated contact
+//! (`lubrication::rolling_resistance`; Biboulet & Houpert 2010): the
+//! rolling force F_R of the inlet's Poiseuille flow at the contact's
+//! entrainment speed, load and ellipse, reduced by inlet heating and the
+//! film's starvation, acting on the ball as a force F_R (2R_x/(D/2) − 1) û
+//! at P and a couple −2 F_R R_x e_a about it, the ring taking the
+//! opposite; 2 F_R u in pure rolling is dissipated.
 
 use super::elements::Elements;
 use super::film::FilmWork;
@@ -23,6 +31,8 @@ use super::motion::{BallMotion, RingMotion};
 use super::surface_contact::SurfaceEffect;
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
 use crate::contact::{ContactTable, TorusContact};
+use crate::lubrication::rolling_resistance::{RollingContact, RollingResistance};
+use crate::lubrication::{FilmConditions, Supply, contact_film};
 use crate::power::ContactLosses;
 use crate::traction::fastsim::MapCell;
 use crate::traction::{ContactConditions, ContactKinematics, ContactPatch, Creep, TractionModel};
@@ -164,8 +174,13 @@ impl Elements {
         let point = geometry.contact_point;
         // Computed only where used (film, traction curve, hysteresis, output).
         let hysteresis = self.params.rolling_hysteresis > 0.0;
-        let (entrainment, u) =
-            if with_output || hysteresis || films || self.params.traction.needs_entrainment() {
+        let rolling = self.params.rolling_resistance.as_ref();
+        let (entrainment, u) = if with_output
+            || hysteresis
+            || films
+            || rolling.is_some()
+            || self.params.traction.needs_entrainment()
+        {
                 let e = Self::entrainment(ring, ball, &point, &n);
                 (e, e.norm())
             } else {
@@ -325,6 +340,53 @@ impl Elements {
             dissipation -= m_h.dot(&relative_spin);
             losses.hysteresis = -m_h.dot(&relative_spin);
         }
+        let mut force = -load * n + traction.force;
+        if let Some(rolling) = rolling.filter(|_| u > 0.0) {
+            let rolling_radius = self.curvature(ring, geometry.contact_angle).rolling_radius;
+            let contact = RollingContact {
+                entrainment_speed: u,
+                load,
+                rolling_radius,
+                semi_major: ellipse.semi_major,
+                semi_minor: ellipse.semi_minor,
+                effective_modulus: self.effective_modulus,
+            };
+            let supply = &self.params.film_supply[super::film::contact_index(ring)];
+            let starvation = match (supply, &steady) {
+                (Supply::Flooded, _) => 1.0,
+                (_, Some(film)) => film.starvation_factor,
+                (_, None) => {
+                    contact_film(
+                        &rolling.lubricant,
+                        supply,
+                        0.0,
+                        &FilmConditions {
+                            entrainment_speed: u,
+                            load,
+                            rolling_radius,
+                            effective_modulus: self.effective_modulus,
+                            ellipticity: hertz.ellipticity,
+                            semi_minor: ellipse.semi_minor,
+                            ring_speed: ring.shaft_speed,
+                        },
+                    )
+                    .starvation_factor
+                }
+            };
+            let (f_r, c_r) = RollingResistance::ball_load(
+                rolling.force(&contact, starvation),
+                rb,
+                rolling_radius,
+                &(entrainment / u),
+                &rolling_axis,
+            );
+            force += f_r;
+            moment += (point - q).cross(&f_r) + c_r;
+            couple += c_r;
+            let power = -(f_r.dot(&slip) + c_r.dot(&relative_spin));
+            dissipation += power;
+            losses.rolling_resistance = power;
+        }
         let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
         dissipation += (load - elastic) * penetration_rate;
         losses.damping = (load - elastic) * penetration_rate;
@@ -357,7 +419,7 @@ impl Elements {
             dissipation,
             film_work,
             losses,
-            force: -load * n + traction.force,
+            force,
             moment,
             couple,
             output,

@@ -218,7 +218,13 @@ impl ThermalCoupling {
             inner_contacts: scale * p.inner.total(),
             outer_contacts: scale * p.outer.total(),
             balls: scale * (p.pocket_friction + p.pocket_damping),
-            oil: scale * (p.guide_land + p.ball_drag + p.cage_drag + p.support_damping + p.seals),
+            oil: scale
+                * (p.guide_land
+                    + p.ball_drag
+                    + p.cage_drag
+                    + p.support_damping
+                    + p.seals
+                    + p.churning),
             cage_speed,
             ..HeatSources::default()
         };

@@ -16,6 +16,8 @@
 //! one Hamrock & Dowson use.
 //!
 //! [`drag`]: drag of the air–oil mixture on the balls and the cage.
+//! [`rolling_resistance`]: the EHL (Poiseuille) rolling resistance of a
+//! contact. [`churning`]: the churning loss of an oil bath or jet.
 //! [`approach`]: the film in the normal approach, a state relaxing to
 //! its steady value. [`starvation`]: starved films from the inlet distance or the oil supply
 //! (Zhang et al. 2020 eqs 26–30). [`film`]: a contact's whole film state (flooded
@@ -26,9 +28,11 @@ use crate::error::InvalidParameter;
 use serde::{Deserialize, Serialize};
 
 pub mod approach;
+pub mod churning;
 pub mod drag;
 pub mod film;
 pub mod mixed;
+pub mod rolling_resistance;
 pub mod starvation;
 pub use film::{ContactFilm, FilmConditions, contact_film};
 pub use starvation::{Supply, critical_inlet_ratio, starvation_factor};

@@ -14,8 +14,10 @@
 //! call differential sliding. The last is taken as the remainder
 //! `traction − the first three`, so the parts sum to the traction's
 //! dissipation to rounding for every traction model (FASTSIM, which works
-//! on a flat patch, has none). Hysteresis is M_h |ω_roll| (Lei et al. 2023 eq 21)
-//! and damping the normal law's (Q − K δ^{3/2}) δ̇.
+//! on a flat patch, has none). Hysteresis is M_h |ω_roll| (Lei et al. 2023 eq 21),
+//! damping the normal law's (Q − K δ^{3/2}) δ̇, and the EHL rolling
+//! resistance the power of its force and couple (2 F_R u in pure rolling;
+//! `lubrication::rolling_resistance`).
 
 /// Dissipated power of one ball–raceway contact by mechanism \[W\].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -32,6 +34,8 @@ pub struct ContactLosses {
     pub hysteresis: f64,
     /// Normal damping of the contact law.
     pub damping: f64,
+    /// EHL (Poiseuille) rolling resistance.
+    pub rolling_resistance: f64,
 }
 
 impl ContactLosses {
@@ -43,6 +47,7 @@ impl ContactLosses {
             + self.differential_sliding
             + self.hysteresis
             + self.damping
+            + self.rolling_resistance
     }
 
     /// Adds `other`, mechanism by mechanism.
@@ -53,10 +58,11 @@ impl ContactLosses {
         self.differential_sliding += other.differential_sliding;
         self.hysteresis += other.hysteresis;
         self.damping += other.damping;
+        self.rolling_resistance += other.rolling_resistance;
     }
 
     /// The mechanisms with their channel names.
-    pub fn named(&self) -> [(&'static str, f64); 6] {
+    pub fn named(&self) -> [(&'static str, f64); 7] {
         [
             ("rolling_sliding", self.rolling_sliding),
             ("transverse_sliding", self.transverse_sliding),
@@ -64,6 +70,7 @@ impl ContactLosses {
             ("differential_sliding", self.differential_sliding),
             ("hysteresis", self.hysteresis),
             ("damping", self.damping),
+            ("rolling_resistance", self.rolling_resistance),
         ]
     }
 }
@@ -91,6 +98,8 @@ pub struct Dissipation {
     pub support_damping: f64,
     /// Friction of the contact seals on the inner ring.
     pub seals: f64,
+    /// Churning of an oil bath or jet.
+    pub churning: f64,
     /// Torque the drive supplies to the inner ring about its axis \[N·m\]
     /// (not a power): with a prescribed speed the torque that holds it (the
     /// friction torque), with a torque drive the applied torque.
@@ -113,6 +122,7 @@ impl Dissipation {
         self.cage_drag += other.cage_drag;
         self.support_damping += other.support_damping;
         self.seals += other.seals;
+        self.churning += other.churning;
         self.drive_torque += other.drive_torque;
         self.friction_torque += other.friction_torque;
     }
@@ -124,7 +134,7 @@ impl Dissipation {
     }
 
     /// The components outside the raceway contacts with their channel names.
-    pub fn others(&self) -> [(&'static str, f64); 7] {
+    pub fn others(&self) -> [(&'static str, f64); 8] {
         [
             ("pocket_friction", self.pocket_friction),
             ("pocket_damping", self.pocket_damping),
@@ -133,6 +143,7 @@ impl Dissipation {
             ("cage_drag", self.cage_drag),
             ("support_damping", self.support_damping),
             ("seals", self.seals),
+            ("churning", self.churning),
         ]
     }
 }

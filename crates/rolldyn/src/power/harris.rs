@@ -45,6 +45,12 @@
 //! relative to the cage. Lei et al. 2023 eq 36 (an empirical land formula in
 //! mixed units) and eq 38 (an inlet viscous loss, garbled) are not used.
 //!
+//! Lubricated contacts add the EHL rolling resistance 2 F_R u of
+//! [`crate::lubrication::rolling_resistance`] (Biboulet & Houpert 2010,
+//! with Aihara's inlet-heating factor and the film's starvation), and an
+//! oil bath or jet the churning M_drag ω_i of
+//! [`crate::lubrication::churning`] (SKF 2013).
+//!
 //! The methods' sum counts every mechanism under full sliding, each alone:
 //! an upper estimate. The dynamic model ([`super::dissipation`]) integrates
 //! one traction law over each ellipse with all slips together; docs/power.md
@@ -52,7 +58,12 @@
 
 use crate::cage::GuideLand;
 use crate::geometry::{BearingGeometry, RingKind};
+use crate::contact::Curvature;
+use crate::lubrication::churning::Churning;
 use crate::lubrication::drag::DragParameters;
+use crate::lubrication::rolling_resistance::{RollingContact, RollingResistance};
+use crate::lubrication::{FilmConditions, contact_film};
+use crate::quasistatic::films::FilmInputs;
 use crate::math::elliptic;
 use crate::quasistatic::Equilibrium;
 use crate::quasistatic::contact_motion::contact_motions;
@@ -90,6 +101,52 @@ pub struct LocalMethodInputs {
     pub drag: DragParameters,
     /// Contact seals, if the bearing has them.
     pub seals: Option<SealFriction>,
+    /// EHL rolling resistance of the lubricated contacts (None: dry).
+    pub rolling_resistance: Option<LubricatedContacts>,
+    /// Churning of an oil bath or jet (None: neither).
+    pub churning: Option<Churning>,
+}
+
+/// The lubricated contacts' rolling resistance and what their films need
+/// (the starvation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LubricatedContacts {
+    /// The rolling-resistance law.
+    pub model: RollingResistance,
+    /// The films' lubricant, supply and effective modulus.
+    pub films: FilmInputs,
+}
+
+impl LubricatedContacts {
+    /// Sets the viscosity η₀ at the contact inlets \[Pa·s\] and, if given,
+    /// the temperature–viscosity coefficient β_T \[1/K\].
+    pub fn set_viscosity(&mut self, viscosity: f64, temperature_viscosity: Option<f64>) {
+        self.model.lubricant.viscosity = viscosity;
+        self.films.lubricant.viscosity = viscosity;
+        if let (Some(h), Some(beta)) = (&mut self.model.heating, temperature_viscosity) {
+            h.temperature_viscosity = beta;
+        }
+    }
+
+    /// Rolling force F_R of a contact \[N\] (`ring_speed` throws an
+    /// oil-flow supply's film, `supply` the ring's index).
+    pub fn force(&self, c: &RollingContact, supply: usize, ring_speed: f64) -> f64 {
+        let film = contact_film(
+            &self.films.lubricant,
+            &self.films.supply[supply],
+            0.0,
+            &FilmConditions {
+                entrainment_speed: c.entrainment_speed,
+                load: c.load,
+                rolling_radius: c.rolling_radius,
+                effective_modulus: c.effective_modulus,
+                ellipticity: c.semi_major / c.semi_minor,
+                semi_minor: c.semi_minor,
+                ring_speed,
+            },
+        );
+        self.model.force(c, film.starvation_factor)
+    }
 }
 
 /// Losses of the contacts with one raceway, summed over the balls \[W\].
@@ -101,12 +158,14 @@ pub struct RaceLosses {
     pub differential_sliding: f64,
     /// Spin H_S.
     pub spin: f64,
+    /// EHL rolling resistance 2 F_R u.
+    pub rolling_resistance: f64,
 }
 
 impl RaceLosses {
     /// Sum \[W\].
     pub fn total(&self) -> f64 {
-        self.hysteresis + self.differential_sliding + self.spin
+        self.hysteresis + self.differential_sliding + self.spin + self.rolling_resistance
     }
 }
 
@@ -127,6 +186,8 @@ pub struct LocalPowerLoss {
     pub cage_drag: f64,
     /// Friction of the contact seals.
     pub seals: f64,
+    /// Churning of an oil bath or jet.
+    pub churning: f64,
     /// Inner-ring speed ω_i \[rad/s\].
     pub inner_speed: f64,
 }
@@ -141,6 +202,7 @@ impl LocalPowerLoss {
             + self.ball_drag
             + self.cage_drag
             + self.seals
+            + self.churning
     }
 
     /// Friction torque H/ω_i \[N·m\] (0 at rest).
@@ -175,10 +237,29 @@ pub fn local_power_loss(
             let deformed_radius = 2.0 * rg * rb / (rg + rb);
             let e = elliptic::complete(1.0 - (b / a).powi(2)).e;
             let roll = m.rolling_rate().abs();
+            let rolling_resistance = inputs.rolling_resistance.as_ref().map_or(0.0, |r| {
+                let u = m.entrainment_speed();
+                let curvature = Curvature::of_raceway(
+                    m.raceway,
+                    geometry.ball_diameter,
+                    geometry.pitch_diameter,
+                    m.solution.contact_angle,
+                );
+                let contact = RollingContact {
+                    entrainment_speed: u,
+                    load: q,
+                    rolling_radius: curvature.rolling_radius,
+                    semi_major: a,
+                    semi_minor: b,
+                    effective_modulus: r.films.effective_modulus,
+                };
+                2.0 * r.force(&contact, k, eq.inner_speed) * u
+            });
             let losses = RaceLosses {
                 hysteresis: 0.1875 * inputs.hysteresis * b * q * roll,
                 differential_sliding: 0.75 * i_h * f_s * q * a * a * roll / deformed_radius,
                 spin: 0.375 * f_s * q * a * e * m.spin().abs(),
+                rolling_resistance,
             };
             let ring = if k == 0 {
                 &mut out.inner
@@ -188,6 +269,7 @@ pub fn local_power_loss(
             ring.hysteresis += losses.hysteresis;
             ring.differential_sliding += losses.differential_sliding;
             ring.spin += losses.spin;
+            ring.rolling_resistance += losses.rolling_resistance;
         }
     }
     let cage_speed = eq.cage_speed();
@@ -227,6 +309,7 @@ pub fn local_power_loss(
         }
     }
     out.seals = inputs.seals.map_or(0.0, |s| s.power(eq.inner_speed));
+    out.churning = inputs.churning.map_or(0.0, |c| c.power(eq.inner_speed));
     out
 }
 

@@ -98,7 +98,7 @@ pub fn heat_sources(
         inner_contacts: power.inner.total(),
         outer_contacts: power.outer.total(),
         balls: power.ball_pocket,
-        oil: power.cage_land + power.ball_drag + power.cage_drag + power.seals,
+        oil: power.cage_land + power.ball_drag + power.cage_drag + power.seals + power.churning,
         cage_speed: eq.cage_speed(),
         ..Default::default()
     };
@@ -239,6 +239,16 @@ pub fn heat_pass(
     };
     if let Some(guide) = &mut power_inputs.guide {
         guide.viscosity = oil_viscosity;
+    }
+    if let Some(churning) = &mut power_inputs.churning {
+        churning.viscosity = oil_viscosity;
+    }
+    // The contacts' inlets at the mean of the ball's and the rings'
+    // temperatures (as in a coupled dynamic run), with the law's slope there.
+    if let (Some(w), Some(rolling)) = (&problem.viscosity, &mut power_inputs.rolling_resistance) {
+        let t = |n| node_temperature(temperatures, n);
+        let inlet = 0.5 * (t("ball") + 0.5 * (t("inner_ring") + t("outer_ring")));
+        rolling.set_viscosity(w.dynamic(inlet), Some(w.temperature_coefficient(inlet)));
     }
     thermal_inputs.oil_kinematic_viscosity = oil_viscosity / thermal_inputs.oil_density;
     let power = local_power_loss(geometry, eq, &power_inputs);

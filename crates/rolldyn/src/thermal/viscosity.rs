@@ -65,6 +65,14 @@ impl Walther {
     pub fn dynamic(&self, t: f64) -> f64 {
         self.density * self.kinematic(t)
     }
+
+    /// Temperature–viscosity coefficient β_T = −d ln η/dT at `t` \[1/K\]:
+    /// with Y = log₁₀(ν + 0.7) (ν in mm²/s), β_T = B Y (ν + 0.7) ln 10 / (T ν).
+    pub fn temperature_coefficient(&self, t: f64) -> f64 {
+        let nu = self.kinematic(t) * 1e6;
+        let y = (nu + 0.7).log10();
+        self.b * y * (nu + 0.7) * std::f64::consts::LN_10 / (t * nu)
+    }
 }
 
 #[cfg(test)]
@@ -85,5 +93,9 @@ mod tests {
         assert!(mid < (32e-6f64 * 5.4e-6).sqrt() && mid > 5.4e-6, "{mid}");
         assert!(Walther::through((313.15, 1e-3), (373.15, 2e-3), rho).is_err());
         assert!(Walther::through((313.15, 1e-3), (313.15, 2e-3), rho).is_err());
+        // β_T against the logarithmic derivative.
+        let dt = 1e-3;
+        let slope = -(w.dynamic(343.15 + dt) / w.dynamic(343.15 - dt)).ln() / (2.0 * dt);
+        assert!((w.temperature_coefficient(343.15) / slope - 1.0).abs() < 1e-6);
     }
 }

@@ -4,7 +4,9 @@
 //! in which every dissipative element acts.
 //!
 //! 7008C default configuration (EHL traction on the 12 × 6 grid) with
-//! hysteresis (α_h = 0.007), ball and cage drag, an outer-ring guide land,
+//! hysteresis (α_h = 0.007), the EHL rolling resistance with inlet
+//! heating, the churning of an oil bath at the lowest ball's centre, ball
+//! and cage drag, an outer-ring guide land,
 //! the outer ring on a damped housing, a damped inner-ring support and
 //! F_z = 100 N added to F_x = 200 N; 1 ms from the Jones–Harris state with
 //! balls started 2 % slow (the pockets push them). Tolerance: 1e-9 of the
@@ -16,6 +18,8 @@ use super::common::{
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, OuterRing, Support};
 use rolldyn::integrate::{Integrator, OdeSystem};
+use rolldyn::lubrication::churning::{ANGULAR_CONTACT_TYPE_CONSTANT, Bath, Churning};
+use rolldyn::lubrication::rolling_resistance::{InletHeating, RollingResistance};
 use rolldyn::material::Material;
 use rolldyn::operating::{LoadProfile, Loads};
 
@@ -24,6 +28,23 @@ fn c8_components_sum_to_the_dissipated_power_and_drive_torque_gives_drive_power(
     let drag = drag_7008c();
     let (mut params, eq) = dynamics_7008c(drag);
     params.rolling_hysteresis = 0.007;
+    let lubricant = *params.traction.lubricant().unwrap();
+    params.rolling_resistance = Some(RollingResistance {
+        lubricant,
+        heating: Some(InletHeating {
+            temperature_viscosity: 0.04,
+            conductivity: 0.13,
+        }),
+    });
+    params.churning = Some(Churning {
+        bore: 40e-3,
+        outside_diameter: 68e-3,
+        ball_diameter: 7.938e-3,
+        type_constant: ANGULAR_CONTACT_TYPE_CONSTANT,
+        bath: Bath::Level(7e-3),
+        viscosity: lubricant.viscosity,
+        density: 860.0,
+    });
     params.cage.guide = Some(guide_land_7008c());
     params.outer_ring = Some(OuterRing {
         mass: 0.2,
@@ -58,7 +79,7 @@ fn c8_components_sum_to_the_dissipated_power_and_drive_torque_gives_drive_power(
     let mut rk = integrator(Method::Dopri5, &model, &y0, 1e-6, 1e-5);
     let mut dy = vec![0.0; model.dimension()];
     let w = l.work();
-    let (mut checked, mut seen) = (0, [0.0f64; 12]);
+    let (mut checked, mut seen) = (0, [0.0f64; 15]);
     while rk.t() < 1e-3 {
         rk.step(&mut model, 1e-3).unwrap();
         let p = model.rhs_with_power(rk.t(), rk.y(), &mut dy);
@@ -91,6 +112,9 @@ fn c8_components_sum_to_the_dissipated_power_and_drive_torque_gives_drive_power(
             p.ball_drag,
             p.cage_drag,
             p.support_damping,
+            p.inner.rolling_resistance,
+            p.outer.rolling_resistance,
+            p.churning,
         ]
         .into_iter()
         .enumerate()

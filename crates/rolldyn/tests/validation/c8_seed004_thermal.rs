@@ -49,6 +49,8 @@ fn inputs() -> LocalMethodInputs {
         guide: None,
         drag: DragParameters::default(),
         seals: None,
+        rolling_resistance: None,
+        churning: None,
     }
 }
 

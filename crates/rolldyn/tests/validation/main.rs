@@ -33,6 +33,7 @@ mod common;
 mod convergence;
 mod driven_rotation;
 mod efficiency;
+mod ehl_rolling_resistance;
 mod elastic_shaft;
 mod fast_part;
 mod jacobian_reuse;
