@@ -69,6 +69,7 @@ fn every_schema_key_is_documented() {
         "sensor",
         "materials",
         "lubricant",
+        "lubrication",
         "operating",
         "model",
         "solver",

@@ -110,6 +110,9 @@ pub struct PowerSummary {
     pub mean_sampled_friction_torque_n_m: f64,
     /// Mean of each component's channel \[W\].
     pub mean_power_loss_by_component_w: BTreeMap<String, f64>,
+    /// Set when a lubricated case states no lubrication method (no
+    /// churning counted).
+    pub lubrication_note: Option<String>,
 }
 
 /// The keys over the averaging window. `rotor_inertia` is the polar
@@ -127,6 +130,7 @@ pub fn summarise(
     window: &crate::run_stats::Window,
     stats: &crate::run_stats::RunStatistics,
     rotor_inertia: Option<f64>,
+    lubrication_note: Option<String>,
 ) -> PowerSummary {
     let by_component: BTreeMap<String, f64> = components(&Dissipation::default())
         .map(|(name, _)| {
@@ -168,5 +172,6 @@ pub fn summarise(
         mean_friction_torque_n_m,
         mean_sampled_friction_torque_n_m: window.mean("friction_torque_n_m"),
         mean_power_loss_by_component_w: by_component,
+        lubrication_note,
     }
 }

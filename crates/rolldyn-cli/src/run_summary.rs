@@ -242,6 +242,7 @@ pub(crate) fn summarise(
             &window,
             stats,
             model.parameters().drive.as_ref().map(|d| d.inertia),
+            case.lubrication_note(),
         ),
         thermal_coupling: model
             .thermal()

@@ -68,8 +68,8 @@ fn thermal_preload_of_a_pair() {
     );
     assert!(cold > 200.0 && hot > cold, "{cold} {hot}");
     // Without external load the pair is symmetric: equal temperatures
-    // and loads, the heat the sum of both, and the inner ring above the
-    // outer (the clearance closes).
+    // and loads, the heat the sum of both, the balls (heated at both
+    // contacts) above both rings, and the clearance closes.
     let (a, b) = (&bearings[0], &bearings[1]);
     for k in [
         "operating_axial_load_n",
@@ -81,7 +81,7 @@ fn thermal_preload_of_a_pair() {
     assert!((f(a, "operating_axial_load_n") - hot).abs() < 1e-6 * hot);
     assert!((f(&v, "heat_generated_w") - 2.0 * f(a, "heat_generated_w")).abs() < 1e-9);
     let t = &a["temperatures_c"];
-    assert!(f(t, "inner_ring") > f(t, "outer_ring"));
+    assert!(f(t, "ball") > f(t, "inner_ring") && f(t, "ball") > f(t, "outer_ring"));
     assert!(f(a, "operating_clearance_m") < f(a, "reference_clearance_m"));
     assert!(f(a, "operating_axial_offset_m") > f(a, "reference_axial_offset_m"));
     let o = rolldyn(&["thermal", "-", "--transient", "10 min"], Some(&case));
