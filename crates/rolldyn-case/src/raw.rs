@@ -236,7 +236,8 @@ pub struct RawLubrication {
     /// raceway (SKF's H).
     pub oil_level: Option<Quantity<Length>>,
     /// EHL rolling resistance of the lubricated contacts:
-    /// "biboulet_houpert" (default with a `[lubricant]`) or "none".
+    /// "houpert" (default with a `[lubricant]`), "biboulet_houpert" or
+    /// "none".
     pub rolling_resistance: Option<RollingResistanceChoice>,
     /// Aihara's inlet-heating reduction of the rolling resistance (default
     /// true).
@@ -247,7 +248,10 @@ pub struct RawLubrication {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum RollingResistanceChoice {
-    /// Biboulet & Houpert 2010 eq 32 with inlet heating and starvation.
+    /// Houpert's fits (Biboulet & Houpert 2010, Part 2 eqs 28–29) with
+    /// inlet heating and starvation.
+    Houpert,
+    /// Biboulet & Houpert 2010 eq 32 (fully flooded), the same reductions.
     BibouletHoupert,
     /// None.
     None,

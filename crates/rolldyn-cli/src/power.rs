@@ -4,6 +4,7 @@
 
 use crate::{CaseArgs, Failure, emit, json};
 use clap::Args;
+use rolldyn::lubrication::rolling_resistance::RollingForceLaw;
 use rolldyn::power::{LocalPowerLoss, RaceLosses};
 use rolldyn::quasistatic::Equilibrium;
 use rolldyn_case::Case;
@@ -90,10 +91,14 @@ pub struct TorqueSplit {
 pub struct Models {
     /// `lubrication.method`: none, oil_bath, oil_jet, air_oil, grease.
     pub lubrication_method: &'static str,
-    /// "biboulet_houpert_2010" (with inlet heating and starvation) or "none".
+    /// "houpert", "biboulet_houpert_2010" or "none".
     pub rolling_resistance: &'static str,
     /// "aihara_1987" or "none".
     pub inlet_heating: &'static str,
+    /// The rolling resistance's starvation: "film_supply" (the films'
+    /// supply, flooded unless stated) or "skf_2013_replenishment" (SKF's
+    /// kinematic replenishment of the method).
+    pub starvation: &'static str,
     /// "skf_2013_oil_bath", "skf_2013_oil_jet" or "none".
     pub churning: &'static str,
     /// Notes on what is not counted.
@@ -103,7 +108,7 @@ pub struct Models {
 impl Models {
     fn of(case: &Case) -> Self {
         use rolldyn_case::case::Method;
-        let rolling = case.rolling_resistance();
+        let rolling = case.rolling_resistance().ok().flatten();
         let method = case.lubrication.method;
         Self {
             lubrication_method: match method {
@@ -113,10 +118,14 @@ impl Models {
                 Method::AirOil => "air_oil",
                 Method::Grease => "grease",
             },
-            rolling_resistance: if rolling.is_some() {
-                "biboulet_houpert_2010"
-            } else {
-                "none"
+            rolling_resistance: match rolling.map(|r| r.law) {
+                Some(RollingForceLaw::BibouletHoupert) => "biboulet_houpert_2010",
+                Some(RollingForceLaw::Houpert) => "houpert",
+                None => "none",
+            },
+            starvation: match rolling.and_then(|r| r.replenishment) {
+                Some(_) => "skf_2013_replenishment",
+                None => "film_supply",
             },
             inlet_heating: if rolling.is_some_and(|r| r.heating.is_some()) {
                 "aihara_1987"
@@ -235,8 +244,8 @@ impl PowerReport {
         let m = &self.models;
         let _ = writeln!(
             out,
-            "  lubrication: method {}; rolling resistance {} (inlet heating {}); churning {}",
-            m.lubrication_method, m.rolling_resistance, m.inlet_heating, m.churning
+            "  lubrication: method {}; rolling resistance {} (inlet heating {}, starvation {}); churning {}",
+            m.lubrication_method, m.rolling_resistance, m.inlet_heating, m.starvation, m.churning
         );
         for note in &m.notes {
             let _ = writeln!(out, "  note: {note}");

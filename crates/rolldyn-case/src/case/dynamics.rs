@@ -165,7 +165,7 @@ impl Case {
             planar: self.planar,
             drag: self.drag,
             seals: self.seals,
-            rolling_resistance: self.rolling_resistance(),
+            rolling_resistance: self.rolling_resistance()?,
             churning: self.churning()?,
             surface: self.surface.clone(),
             film_supply: self

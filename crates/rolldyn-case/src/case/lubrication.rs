@@ -8,7 +8,8 @@ use rolldyn::lubrication::churning::{
     ANGULAR_CONTACT_TYPE_CONSTANT, Bath, Churning, DEEP_GROOVE_TYPE_CONSTANT,
 };
 use rolldyn::lubrication::rolling_resistance::{
-    DEFAULT_TEMPERATURE_VISCOSITY, InletHeating, RollingResistance,
+    DEFAULT_TEMPERATURE_VISCOSITY, InletHeating, REPLENISHMENT_GREASE, REPLENISHMENT_OIL,
+    Replenishment, RollingForceLaw, RollingResistance,
 };
 use rolldyn::{BearingGeometry, Clearance};
 use serde::{Deserialize, Serialize};
@@ -40,6 +41,8 @@ pub struct Lubrication {
     pub oil_level: Option<f64>,
     /// Whether the lubricated contacts have the EHL rolling resistance.
     pub rolling_resistance: bool,
+    /// Its rolling-force fit.
+    pub rolling_force_law: RollingForceLaw,
     /// Whether the rolling resistance has Aihara's inlet-heating factor.
     pub inlet_heating: bool,
 }
@@ -50,6 +53,7 @@ impl Default for Lubrication {
             method: Method::None,
             oil_level: None,
             rolling_resistance: true,
+            rolling_force_law: RollingForceLaw::Houpert,
             inlet_heating: true,
         }
     }
@@ -108,23 +112,28 @@ pub(super) fn lubrication(
             "a greased bearing has no oil supply flow: remove lubricant.oil_flow or choose oil_jet or air_oil",
         ));
     }
-    let rolling_resistance = match raw.rolling_resistance {
-        None => true,
-        Some(RollingResistanceChoice::BibouletHoupert) => {
+    let (rolling_resistance, rolling_force_law) = match raw.rolling_resistance {
+        None => (true, RollingForceLaw::Houpert),
+        Some(RollingResistanceChoice::None) => (false, RollingForceLaw::Houpert),
+        Some(choice) => {
             if lubricant.is_none() {
                 return Err(Invalid::missing(
                     "lubricant.viscosity",
                     "the EHL rolling resistance needs the oil's properties: add a [lubricant] section",
                 ));
             }
-            true
+            let law = match choice {
+                RollingResistanceChoice::BibouletHoupert => RollingForceLaw::BibouletHoupert,
+                _ => RollingForceLaw::Houpert,
+            };
+            (true, law)
         }
-        Some(RollingResistanceChoice::None) => false,
     };
     Ok(Lubrication {
         method,
         oil_level,
         rolling_resistance,
+        rolling_force_law,
         inlet_heating: raw.inlet_heating.unwrap_or(true),
     })
 }
@@ -135,11 +144,15 @@ impl super::Case {
     /// "none"`): the lubricant at its reference temperature; inlet
     /// heating with the Walther law's slope there (else
     /// [`DEFAULT_TEMPERATURE_VISCOSITY`]) and the oil's conductivity (else
-    /// [`super::DEFAULT_OIL`]'s).
-    pub fn rolling_resistance(&self) -> Option<RollingResistance> {
-        let l = self.lubricant.as_ref()?;
+    /// [`super::DEFAULT_OIL`]'s); with a lubrication method, SKF's kinematic
+    /// replenishment of a flooded supply (needs the bore and outside
+    /// diameter).
+    pub fn rolling_resistance(&self) -> Result<Option<RollingResistance>, Invalid> {
+        let Some(l) = self.lubricant.as_ref() else {
+            return Ok(None);
+        };
         if !self.lubrication.rolling_resistance {
-            return None;
+            return Ok(None);
         }
         let heating = self.lubrication.inlet_heating.then(|| InletHeating {
             temperature_viscosity: match (&l.viscosity_law, l.temperature) {
@@ -148,44 +161,75 @@ impl super::Case {
             },
             conductivity: self.oil_properties().2,
         });
-        Some(RollingResistance {
+        let constant = match self.lubrication.method {
+            Method::None => None,
+            Method::OilBath | Method::OilJet => Some(REPLENISHMENT_OIL),
+            Method::AirOil | Method::Grease => Some(REPLENISHMENT_GREASE),
+        };
+        let replenishment = match constant {
+            None => None,
+            Some(constant) => {
+                let (bore, outside_diameter) = self.bore_and_outside_diameter(
+                    "the kinematic replenishment of a lubrication method (SKF's φ_rs) needs the bearing's bore and outside diameter",
+                )?;
+                Some(Replenishment {
+                    constant,
+                    bore,
+                    outside_diameter,
+                    type_constant: self.type_constant(),
+                    density: self.oil_properties().0,
+                })
+            }
+        };
+        Ok(Some(RollingResistance {
+            law: self.lubrication.rolling_force_law,
             lubricant: rolldyn::lubrication::Lubricant {
                 viscosity: l.viscosity,
                 pressure_viscosity: l.pressure_viscosity,
                 pressure_model: l.pressure_viscosity_model,
             },
             heating,
-        })
+            replenishment,
+        }))
+    }
+
+    /// K_z by the bearing's parametrization: 4.4 (single-row
+    /// angular-contact) when given by its free contact angle, else 3.1
+    /// (deep-groove).
+    fn type_constant(&self) -> f64 {
+        match self.bearing.geometry.clearance {
+            Clearance::FreeContactAngle(_) => ANGULAR_CONTACT_TYPE_CONSTANT,
+            _ => DEEP_GROOVE_TYPE_CONSTANT,
+        }
+    }
+
+    /// `bearing.bore` and `bearing.outside_diameter` \[m\], or an error
+    /// saying `why` they are needed.
+    fn bore_and_outside_diameter(&self, why: &str) -> Result<(f64, f64), Invalid> {
+        let need = |v: Option<f64>, key: &str| v.ok_or_else(|| Invalid::missing(key, why));
+        Ok((
+            need(self.bearing.bore, "bearing.bore")?,
+            need(self.bearing.outside_diameter, "bearing.outside_diameter")?,
+        ))
     }
 
     /// The churning of an oil bath or jet (None for the other methods).
-    /// K_z by the bearing's parametrization: 4.4 (single-row
-    /// angular-contact) when given by its free contact angle, else 3.1
-    /// (deep-groove). Needs the bore and outside diameter.
+    /// Needs the bore and outside diameter.
     pub fn churning(&self) -> Result<Option<Churning>, Invalid> {
         let bath = match (self.lubrication.method, self.lubrication.oil_level) {
             (super::lubrication::Method::OilBath, Some(h)) => Bath::Level(h),
             (super::lubrication::Method::OilJet, _) => Bath::Jet,
             _ => return Ok(None),
         };
-        let need = |v: Option<f64>, key: &str| {
-            v.ok_or_else(|| {
-                Invalid::missing(
-                    key,
-                    "the churning of an oil bath or jet (SKF's drag model) needs the bearing's bore and outside diameter",
-                )
-            })
-        };
-        let g = &self.bearing.geometry;
+        let (bore, outside_diameter) = self.bore_and_outside_diameter(
+            "the churning of an oil bath or jet (SKF's drag model) needs the bearing's bore and outside diameter",
+        )?;
         let (density, _, _) = self.oil_properties();
         Ok(Some(Churning {
-            bore: need(self.bearing.bore, "bearing.bore")?,
-            outside_diameter: need(self.bearing.outside_diameter, "bearing.outside_diameter")?,
-            ball_diameter: g.ball_diameter,
-            type_constant: match g.clearance {
-                Clearance::FreeContactAngle(_) => ANGULAR_CONTACT_TYPE_CONSTANT,
-                _ => DEEP_GROOVE_TYPE_CONSTANT,
-            },
+            bore,
+            outside_diameter,
+            ball_diameter: self.bearing.geometry.ball_diameter,
+            type_constant: self.type_constant(),
             bath,
             viscosity: self.lubricant.as_ref().map_or(0.0, |l| l.viscosity),
             density,

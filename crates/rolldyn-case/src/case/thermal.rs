@@ -270,7 +270,7 @@ impl Case {
             guide: self.guide_land_of(false)?,
             drag: self.drag,
             seals: self.seals,
-            rolling_resistance: self.rolling_resistance().map(|model| LubricatedContacts {
+            rolling_resistance: self.rolling_resistance()?.map(|model| LubricatedContacts {
                 model,
                 films: FilmInputs {
                     lubricant: model.lubricant,

@@ -18,7 +18,7 @@
 //! continuous at rest.
 //!
 //! EHL rolling resistance of a lubricated contact
-//! (`lubrication::rolling_resistance`; Biboulet & Houpert 2010): the
+//! (`lubrication::rolling_resistance`; Houpert, Biboulet & Houpert 2010): the
 //! rolling force F_R of the inlet's Poiseuille flow at the contact's
 //! entrainment speed, load and ellipse, reduced by inlet heating and the
 //! film's starvation, acting on the ball as a force F_R (2R_x/(D/2) − 1) û
@@ -342,18 +342,20 @@ impl Elements {
         }
         let mut force = -load * n + traction.force;
         if let Some(rolling) = rolling.filter(|_| u > 0.0) {
-            let rolling_radius = self.curvature(ring, geometry.contact_angle).rolling_radius;
+            let curvature = self.curvature(ring, geometry.contact_angle);
+            let rolling_radius = curvature.rolling_radius;
             let contact = RollingContact {
                 entrainment_speed: u,
                 load,
                 rolling_radius,
+                transverse_radius: curvature.transverse_radius,
                 semi_major: ellipse.semi_major,
                 semi_minor: ellipse.semi_minor,
                 effective_modulus: self.effective_modulus,
             };
             let supply = &self.params.film_supply[super::film::contact_index(ring)];
             let starvation = match (supply, &steady) {
-                (Supply::Flooded, _) => 1.0,
+                (Supply::Flooded, _) => rolling.replenishment_factor(ring.shaft_speed),
                 (_, Some(film)) => film.starvation_factor,
                 (_, None) => {
                     contact_film(

@@ -46,8 +46,9 @@
 //! mixed units) and eq 38 (an inlet viscous loss, garbled) are not used.
 //!
 //! Lubricated contacts add the EHL rolling resistance 2 F_R u of
-//! [`crate::lubrication::rolling_resistance`] (Biboulet & Houpert 2010,
-//! with Aihara's inlet-heating factor and the film's starvation), and an
+//! [`crate::lubrication::rolling_resistance`] (Houpert's fits or Biboulet &
+//! Houpert 2010, with Aihara's inlet-heating factor and the film's or the
+//! method's starvation), and an
 //! oil bath or jet the churning M_drag ω_i of
 //! [`crate::lubrication::churning`] (SKF 2013).
 //!
@@ -145,7 +146,11 @@ impl LubricatedContacts {
                 ring_speed,
             },
         );
-        self.model.force(c, film.starvation_factor)
+        let starvation = match self.films.supply[supply] {
+            crate::lubrication::Supply::Flooded => self.model.replenishment_factor(ring_speed),
+            _ => film.starvation_factor,
+        };
+        self.model.force(c, starvation)
     }
 }
 
@@ -249,6 +254,7 @@ pub fn local_power_loss(
                     entrainment_speed: u,
                     load: q,
                     rolling_radius: curvature.rolling_radius,
+                    transverse_radius: curvature.transverse_radius,
                     semi_major: a,
                     semi_minor: b,
                     effective_modulus: r.films.effective_modulus,

@@ -19,7 +19,7 @@ use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, OuterRing, Support};
 use rolldyn::integrate::{Integrator, OdeSystem};
 use rolldyn::lubrication::churning::{ANGULAR_CONTACT_TYPE_CONSTANT, Bath, Churning};
-use rolldyn::lubrication::rolling_resistance::{InletHeating, RollingResistance};
+use rolldyn::lubrication::rolling_resistance::{InletHeating, RollingForceLaw, RollingResistance};
 use rolldyn::material::Material;
 use rolldyn::operating::{LoadProfile, Loads};
 
@@ -30,11 +30,13 @@ fn c8_components_sum_to_the_dissipated_power_and_drive_torque_gives_drive_power(
     params.rolling_hysteresis = 0.007;
     let lubricant = *params.traction.lubricant().unwrap();
     params.rolling_resistance = Some(RollingResistance {
+        law: RollingForceLaw::BibouletHoupert,
         lubricant,
         heating: Some(InletHeating {
             temperature_viscosity: 0.04,
             conductivity: 0.13,
         }),
+        replenishment: None,
     });
     params.churning = Some(Churning {
         bore: 40e-3,

@@ -12,7 +12,7 @@ use super::common::{bearing_7008c, dynamics_7008c};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::OdeSystem;
-use rolldyn::lubrication::rolling_resistance::{InletHeating, RollingResistance};
+use rolldyn::lubrication::rolling_resistance::{InletHeating, RollingForceLaw, RollingResistance};
 use rolldyn::lubrication::Supply;
 use rolldyn::material::{Material, effective_modulus};
 use rolldyn::power::harris::LubricatedContacts;
@@ -26,11 +26,13 @@ fn dynamic_and_local_method_rolling_resistance_agree() {
     let (params, eq) = dynamics_7008c(DragParameters::default());
     let lubricant = *params.traction.lubricant().unwrap();
     let law = RollingResistance {
+        law: RollingForceLaw::BibouletHoupert,
         lubricant,
         heating: Some(InletHeating {
             temperature_viscosity: 0.04,
             conductivity: 0.13,
         }),
+        replenishment: None,
     };
     let dissipation = |with: bool| {
         let mut p = params.clone();
