@@ -44,8 +44,8 @@ pub use dynamics::{
 pub use fits::FitEffect;
 pub use life::{Life, MAX_VISCOSITY_RATIO};
 pub use lubricant::Lubricant;
-pub use lubrication::{Lubrication, Method};
 use lubricant::lubricant;
+pub use lubrication::{Lubrication, Method};
 use material::material;
 pub use output::{ChannelGroup, OutputSelection};
 pub use shaft::{MAX_SHAFT_POSITION, Shaft, ShaftBearing};

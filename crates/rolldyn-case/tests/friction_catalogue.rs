@@ -87,8 +87,7 @@ fn skf(s: &Series, d: f64, big_d: f64, n: f64, nu: f64, fr: f64, fa: f64) -> f64
         )
     };
     let phi_ish = 1.0 / (1.0 + 1.84e-9 * (n * dm).powf(1.28) * nu.powf(0.64));
-    let phi_rs =
-        (-3e-8 * nu * n * (d + big_d) * (s.kz / (2.0 * (big_d - d))).sqrt()).exp();
+    let phi_rs = (-3e-8 * nu * n * (d + big_d) * (s.kz / (2.0 * (big_d - d))).sqrt()).exp();
     let phi_bl = (-2.6e-8 * (n * nu).powf(1.4) * dm).exp();
     let mu_sl = phi_bl * 0.15 + (1.0 - phi_bl) * 0.05;
     phi_ish * phi_rs * g_rr * (nu * n).powf(0.6) + g_sl * mu_sl

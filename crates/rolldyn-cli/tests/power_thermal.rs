@@ -199,7 +199,10 @@ fn power_command_reports_components() {
     let spin = f(&["inner", "spin_w"]) + f(&["outer", "spin_w"]);
     let rolling = f(&["inner", "rolling_resistance_w"]) + f(&["outer", "rolling_resistance_w"]);
     assert!(rolling > 0.0);
-    assert!(spin > 0.5 * (f(&["power_loss_w"]) - rolling), "spin {spin} W");
+    assert!(
+        spin > 0.5 * (f(&["power_loss_w"]) - rolling),
+        "spin {spin} W"
+    );
     // The torque split sums to the friction torque.
     let split: f64 = v["friction_torque_split_n_m"]
         .as_object()

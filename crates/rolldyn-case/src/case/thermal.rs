@@ -274,7 +274,10 @@ impl Case {
                 model,
                 films: FilmInputs {
                     lubricant: model.lubricant,
-                    supply: self.lubricant.as_ref().map_or(Default::default(), |l| l.supply),
+                    supply: self
+                        .lubricant
+                        .as_ref()
+                        .map_or(Default::default(), |l| l.supply),
                     roughness: [0.0; 2],
                     effective_modulus: rolldyn::material::effective_modulus(
                         &self.materials.ball.material,

@@ -181,11 +181,11 @@ impl Elements {
             || rolling.is_some()
             || self.params.traction.needs_entrainment()
         {
-                let e = Self::entrainment(ring, ball, &point, &n);
-                (e, e.norm())
-            } else {
-                (Vector3::zeros(), 0.0)
-            };
+            let e = Self::entrainment(ring, ball, &point, &n);
+            (e, e.norm())
+        } else {
+            (Vector3::zeros(), 0.0)
+        };
         // Film in the approach (dynamics::film): the contact is closed while
         // δ + h > 0 and its elastic approach is δ_el = δ + h(Q).
         let approach = if films {

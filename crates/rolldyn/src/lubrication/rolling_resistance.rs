@@ -365,8 +365,16 @@ mod tests {
             let m = model(0.02);
             (m.isothermal_force(&c2) / m.isothermal_force(&c)).ln() / 1.01f64.ln()
         };
-        assert!((slope(1e-3, 1e3) - 2.0 / 3.0).abs() < 0.02, "{}", slope(1e-3, 1e3));
-        assert!((slope(5000.0, 0.05) - 0.75).abs() < 0.02, "{}", slope(5000.0, 0.05));
+        assert!(
+            (slope(1e-3, 1e3) - 2.0 / 3.0).abs() < 0.02,
+            "{}",
+            slope(1e-3, 1e3)
+        );
+        assert!(
+            (slope(5000.0, 0.05) - 0.75).abs() < 0.02,
+            "{}",
+            slope(5000.0, 0.05)
+        );
         let (c, _) = contact(5.0, 500.0);
         let m = model(0.02);
         assert_eq!(m.power(&c, 1.0), 2.0 * m.force(&c, 1.0) * 5.0);
@@ -467,6 +475,9 @@ mod tests {
         let (t1, t2) = (313.15f64, 373.15f64);
         let b = (walther(32.0) - walther(5.4)) / (t2.log10() - t1.log10());
         let slope = b * (32.7f64).log10() * 32.7 * std::f64::consts::LN_10 / (t1 * 32.0);
-        assert!((slope / DEFAULT_TEMPERATURE_VISCOSITY - 1.0).abs() < 0.005, "{slope}");
+        assert!(
+            (slope / DEFAULT_TEMPERATURE_VISCOSITY - 1.0).abs() < 0.005,
+            "{slope}"
+        );
     }
 }

@@ -58,16 +58,16 @@
 //! compares the two.
 
 use crate::cage::GuideLand;
-use crate::geometry::{BearingGeometry, RingKind};
 use crate::contact::Curvature;
+use crate::geometry::{BearingGeometry, RingKind};
 use crate::lubrication::churning::Churning;
 use crate::lubrication::drag::DragParameters;
 use crate::lubrication::rolling_resistance::{RollingContact, RollingResistance};
 use crate::lubrication::{FilmConditions, contact_film};
-use crate::quasistatic::films::FilmInputs;
 use crate::math::elliptic;
 use crate::quasistatic::Equilibrium;
 use crate::quasistatic::contact_motion::contact_motions;
+use crate::quasistatic::films::FilmInputs;
 use crate::seals::SealFriction;
 
 /// Heathcote's rolling-line position c (ξ = ±c a): the root of

@@ -12,8 +12,8 @@ use super::common::{bearing_7008c, dynamics_7008c};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::OdeSystem;
-use rolldyn::lubrication::rolling_resistance::{InletHeating, RollingForceLaw, RollingResistance};
 use rolldyn::lubrication::Supply;
+use rolldyn::lubrication::rolling_resistance::{InletHeating, RollingForceLaw, RollingResistance};
 use rolldyn::material::{Material, effective_modulus};
 use rolldyn::power::harris::LubricatedContacts;
 use rolldyn::power::{LocalMethodInputs, local_power_loss};
@@ -79,9 +79,18 @@ fn dynamic_and_local_method_rolling_resistance_agree() {
         local.outer.rolling_resistance
     );
     for (d, q) in [
-        (dynamic.inner.rolling_resistance, local.inner.rolling_resistance),
-        (dynamic.outer.rolling_resistance, local.outer.rolling_resistance),
+        (
+            dynamic.inner.rolling_resistance,
+            local.inner.rolling_resistance,
+        ),
+        (
+            dynamic.outer.rolling_resistance,
+            local.outer.rolling_resistance,
+        ),
     ] {
-        assert!(q > 0.0 && (d / q - 1.0).abs() < 0.01, "dynamic {d} W, local {q} W");
+        assert!(
+            q > 0.0 && (d / q - 1.0).abs() < 0.01,
+            "dynamic {d} W, local {q} W"
+        );
     }
 }
