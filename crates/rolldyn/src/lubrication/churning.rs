@@ -89,7 +89,7 @@ impl Churning {
     pub fn validate(&self) -> Result<(), InvalidParameter> {
         require_positive("bore", self.bore)?;
         require_positive("ball_diameter", self.ball_diameter)?;
-        if !(self.outside_diameter > self.bore) {
+        if self.outside_diameter.is_nan() || self.outside_diameter <= self.bore {
             return Err(InvalidParameter::new(
                 "outside_diameter",
                 self.outside_diameter,
