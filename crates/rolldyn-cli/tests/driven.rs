@@ -41,7 +41,7 @@ fn a_run_down_loses_what_the_friction_torque_takes() {
 }
 
 /// A matched pair and a `[shaft]` turn under their drive: a pair of
-/// 7008C runs down (by 1.4 % in 5 ms on 2e-4 kg·m², the EHL rolling
+/// 7008C runs down (by 1 % in 5 ms on 2e-4 kg·m², the EHL rolling
 /// resistance of its 47 mPa·s oil at 10 000 rpm the largest share), the two 6206 speed up under 0.5 N·m on 5e-3 kg·m² (100 rad/s²
 /// less their friction), every bearing's series at the shaft's speed.
 #[test]
@@ -53,7 +53,7 @@ fn sets_and_shafts_turn_under_their_drive() {
     let case = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
     let v = run("driven-pair", Some(&case), "0.005 s", &drive);
     let end = v["final_inner_ring_speed_rpm"].as_f64().unwrap();
-    assert!(end < 9900.0 && end > 9800.0, "{end} rpm");
+    assert!(end < 9950.0 && end > 9850.0, "{end} rpm");
     assert!(v["energy_balance_relative_error"].as_f64().unwrap() < 1e-4);
     let shaft = SHAFT.replace("ORIENTATION", "forward").replace(
         "speed = \"3000 rpm\"",

@@ -60,12 +60,7 @@ fn run_reports_power_by_component() {
     // the mean of the sampled moment agrees to its sampling (5 %).
     let omega = f("inner_ring_speed_rpm") * std::f64::consts::TAU / 60.0;
     let torque_power = f("mean_friction_torque_n_m") * omega;
-    let [t0, t1] = [0, 1].map(|i| s["averaging_window_s"][i].as_f64().unwrap());
-    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
-    let work = series.column("drive_work_j").unwrap();
-    let time = series.column("time_s").unwrap();
-    let first = time.iter().position(|&t| t >= t0).unwrap();
-    let drive_power = (work[work.len() - 1] - work[first]) / (t1 - t0);
+    let drive_power = window_drive_power(&dir, &s);
     assert!(
         ((torque_power - drive_power) / drive_power).abs() < 1e-9,
         "{torque_power} W vs {drive_power} W"
@@ -75,6 +70,7 @@ fn run_reports_power_by_component() {
         ((sampled - torque_power) / torque_power).abs() < 0.05,
         "{sampled} W vs {torque_power} W"
     );
+    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
     for k in [
         "power_inner_spin_w",
         "power_guide_land_w",
@@ -211,7 +207,7 @@ fn power_command_reports_components() {
         .map(|x| x.as_f64().unwrap())
         .sum();
     assert!((split / f(&["friction_torque_n_m"]) - 1.0).abs() < 1e-12);
-    assert_eq!(v["models"]["rolling_resistance"], "biboulet_houpert_2010");
+    assert_eq!(v["models"]["rolling_resistance"], "houpert");
     let omega = f(&["speed_rpm"]) * std::f64::consts::TAU / 60.0;
     assert!((f(&["friction_torque_n_m"]) * omega / f(&["power_loss_w"]) - 1.0).abs() < 1e-12);
     let text = rolldyn(&["power", "-"], Some(&case));
@@ -445,4 +441,113 @@ fn run_with_thermal_coupling() {
     assert!(stderr(&o).contains("thermal.run_start"), "{}", stderr(&o));
     std::fs::remove_dir_all(&dir).ok();
     std::fs::remove_dir_all(&plain).ok();
+}
+
+/// The mean friction torque a run reports is the one that did the work:
+/// on every preset, the torque times the ring speed is the drive power
+/// over the averaging window (the drive work's channel, exact between
+/// samples; 1e-9), including the impacts' impulses that the sampled
+/// moment misses.
+#[test]
+fn every_preset_reports_the_torque_that_did_the_work() {
+    for name in rolldyn_case::presets::PRESETS.iter().map(|p| p.name) {
+        let dir = temp_dir(&format!("torque-{name}"));
+        let d = dir.to_string_lossy().into_owned();
+        let o = rolldyn(
+            &["run", "-", "--duration", "2 ms", "-o", &d],
+            Some(&preset(name)),
+        );
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let s: Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
+                .unwrap();
+        let f = |k: &str| s[k].as_f64().unwrap_or_else(|| panic!("{name}: {k}"));
+        let drive_power = window_drive_power(&dir, &s);
+        let omega = f("inner_ring_speed_rpm") * std::f64::consts::TAU / 60.0;
+        let torque_power = f("mean_friction_torque_n_m") * omega;
+        assert!(
+            (torque_power - drive_power).abs() <= 1e-9 * drive_power.abs().max(1e-12),
+            "{name}: {torque_power} W vs {drive_power} W"
+        );
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}
+
+/// `[lubrication]`'s refusals name the key, its value and the rule, and
+/// no run starts: an oil level above the bearing, a level without a bath,
+/// a bath without a level, grease with an oil supply flow, a method
+/// without a lubricant, a negative flow, a viscosity that rises with
+/// temperature.
+#[test]
+fn lubrication_refusals_name_the_key() {
+    let lubricated = preset("7008C");
+    for (sets, key, rule) in [
+        (
+            vec![
+                "lubrication.method=\"oil_bath\"",
+                "lubrication.oil_level=\"80 mm\"",
+            ],
+            "lubrication.oil_level",
+            "above the bearing",
+        ),
+        (
+            vec!["lubrication.oil_level=\"5 mm\""],
+            "lubrication.oil_level",
+            "only an oil bath",
+        ),
+        (
+            vec!["lubrication.method=\"oil_bath\""],
+            "lubrication.oil_level",
+            "needs its level",
+        ),
+        (
+            vec![
+                "lubrication.method=\"grease\"",
+                "lubricant.oil_flow=\"1 L/min\"",
+            ],
+            "lubricant.oil_flow",
+            "no oil supply flow",
+        ),
+        (
+            vec!["lubricant.oil_flow=\"-1 L/min\""],
+            "lubricant.oil_flow",
+            "",
+        ),
+        (
+            vec![
+                "lubricant.temperature=\"40 degC\"",
+                "lubricant.second_viscosity=\"1 Pa.s\"",
+                "lubricant.second_temperature=\"100 degC\"",
+            ],
+            "lubricant.second_viscosity",
+            "fall as temperature rises",
+        ),
+    ] {
+        let mut args = vec!["run", "-", "--duration", "1 ms", "-o", "/nonexistent/x"];
+        for s in &sets {
+            args.extend(["--set", s]);
+        }
+        let o = rolldyn(&args, Some(&lubricated));
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{sets:?}: {err}");
+        assert!(err.contains(key) && err.contains(rule), "{sets:?}: {err}");
+    }
+    // A method needs the oil: the 6304 preset has no [lubricant].
+    let o = rolldyn(
+        &["check", "-", "--set", "lubrication.method=\"oil_jet\""],
+        Some(&preset("6304")),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("[lubricant]"), "{}", stderr(&o));
+}
+
+/// The drive power over a run's averaging window from its `drive_work_j`
+/// channel \[W\].
+fn window_drive_power(dir: &std::path::Path, summary: &Value) -> f64 {
+    let [t0, t1] = [0, 1].map(|i| summary["averaging_window_s"][i].as_f64().unwrap());
+    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
+    let work = series.column("drive_work_j").unwrap();
+    let time = series.column("time_s").unwrap();
+    let first = time.iter().position(|&t| t >= t0).unwrap();
+    (work[work.len() - 1] - work[first]) / (t1 - t0)
 }

@@ -14,12 +14,12 @@
 
 use super::common::{
     Method, bearing_7008c, drag_7008c, dynamics_7008c, guide_land_7008c, integrator,
+    rolling_resistance_7008c,
 };
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, OuterRing, Support};
 use rolldyn::integrate::{Integrator, OdeSystem};
 use rolldyn::lubrication::churning::{ANGULAR_CONTACT_TYPE_CONSTANT, Bath, Churning};
-use rolldyn::lubrication::rolling_resistance::{InletHeating, RollingForceLaw, RollingResistance};
 use rolldyn::material::Material;
 use rolldyn::operating::{LoadProfile, Loads};
 
@@ -29,15 +29,7 @@ fn c8_components_sum_to_the_dissipated_power_and_drive_torque_gives_drive_power(
     let (mut params, eq) = dynamics_7008c(drag);
     params.rolling_hysteresis = 0.007;
     let lubricant = *params.traction.lubricant().unwrap();
-    params.rolling_resistance = Some(RollingResistance {
-        law: RollingForceLaw::BibouletHoupert,
-        lubricant,
-        heating: Some(InletHeating {
-            temperature_viscosity: 0.04,
-            conductivity: 0.13,
-        }),
-        replenishment: None,
-    });
+    params.rolling_resistance = Some(rolling_resistance_7008c(lubricant));
     params.churning = Some(Churning {
         bore: 40e-3,
         outside_diameter: 68e-3,

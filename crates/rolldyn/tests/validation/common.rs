@@ -37,3 +37,23 @@ pub fn thrust_curve(g: &BearingGeometry, alpha: f64) -> (f64, f64) {
         * (a0.cos() / alpha.cos() - 1.0).powf(1.5);
     (bd * a0.cos() * (alpha.tan() - a0.tan()), force)
 }
+
+/// The EHL rolling resistance of the 7008C cases: Biboulet & Houpert's
+/// fully flooded fit with `lubricant`, inlet heating with β_T = 0.04 1/K
+/// and k_f = 0.13 W/(m·K) (mineral-oil values, assumed).
+pub fn rolling_resistance_7008c(
+    lubricant: rolldyn::lubrication::Lubricant,
+) -> rolldyn::lubrication::rolling_resistance::RollingResistance {
+    use rolldyn::lubrication::rolling_resistance::{
+        InletHeating, RollingForceLaw, RollingResistance,
+    };
+    RollingResistance {
+        law: RollingForceLaw::BibouletHoupert,
+        lubricant,
+        heating: Some(InletHeating {
+            temperature_viscosity: 0.04,
+            conductivity: 0.13,
+        }),
+        replenishment: None,
+    }
+}

@@ -8,12 +8,11 @@
 //! rather than u/R_x); and the power is the model's dissipation with the
 //! law minus that without it, to rounding.
 
-use super::common::{bearing_7008c, dynamics_7008c};
+use super::common::{bearing_7008c, dynamics_7008c, rolling_resistance_7008c};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::OdeSystem;
 use rolldyn::lubrication::Supply;
-use rolldyn::lubrication::rolling_resistance::{InletHeating, RollingForceLaw, RollingResistance};
 use rolldyn::material::{Material, effective_modulus};
 use rolldyn::power::harris::LubricatedContacts;
 use rolldyn::power::{LocalMethodInputs, local_power_loss};
@@ -25,15 +24,7 @@ fn dynamic_and_local_method_rolling_resistance_agree() {
     let steel = Material::STEEL_52100;
     let (params, eq) = dynamics_7008c(DragParameters::default());
     let lubricant = *params.traction.lubricant().unwrap();
-    let law = RollingResistance {
-        law: RollingForceLaw::BibouletHoupert,
-        lubricant,
-        heating: Some(InletHeating {
-            temperature_viscosity: 0.04,
-            conductivity: 0.13,
-        }),
-        replenishment: None,
-    };
+    let law = rolling_resistance_7008c(lubricant);
     let dissipation = |with: bool| {
         let mut p = params.clone();
         p.rolling_resistance = with.then_some(law);
