@@ -189,26 +189,24 @@ impl RollingResistance {
         let speed = 2.0 * self.lubricant.viscosity * u / (ep * rx);
         let load = c.load / (ep * rx * rx);
         let beta = 2.0 * a * b * b * ep / (3.0 * c.load * rx);
-        let moes = beta.powf(0.25) * kappa * load / speed.powf(0.75);
+        // The powers as exponentials of the groups' logarithms (evaluated
+        // at every loaded contact of every right-hand side).
+        let (ln_u, ln_w, ln_beta, ln_kappa) = (speed.ln(), load.ln(), beta.ln(), kappa.ln());
+        let moes = (0.25 * ln_beta + ln_kappa + ln_w - 0.75 * ln_u).exp();
+        let blend = |rigid: f64, ehl: f64| (rigid - ehl) / (1.0 + moes / 6.6) + ehl;
         let scale = ep * rx * rx;
         if self.law == RollingForceLaw::Houpert {
-            let material = self.lubricant.pressure_viscosity * ep;
+            let ln_g = (self.lubricant.pressure_viscosity * ep).ln();
             let rigid = 0.835
-                * (rx / c.transverse_radius).powf(-0.358)
-                * speed.powf(0.636)
-                * load.powf(0.364);
+                * (-0.358 * (rx / c.transverse_radius).ln() + 0.636 * ln_u + 0.364 * ln_w).exp();
             let ehl = 1.544
-                * beta.cbrt()
-                * kappa.powf(-0.577)
-                * speed.powf(0.656)
-                * load.powf(0.466)
-                * material.powf(0.022);
-            return ((rigid - ehl) / (1.0 + moes / 6.6) + ehl) * scale;
+                * (ln_beta / 3.0 - 0.577 * ln_kappa + 0.656 * ln_u + 0.466 * ln_w + 0.022 * ln_g)
+                    .exp();
+            return blend(rigid, ehl) * scale;
         }
-        let ehl = 1.8 * beta.powf(-0.25);
-        let rigid = 0.77 * beta.powf(-1.0 / 3.0) * kappa.powf(0.12) * speed.powf(-1.0 / 12.0);
-        let moment = (2.0 * a / rx) * ((rigid - ehl) / (1.0 + moes / 6.6) + ehl) * speed.powf(0.75);
-        moment * scale
+        let ehl = 1.8 * (0.75 * ln_u - 0.25 * ln_beta).exp();
+        let rigid = 0.77 * (-ln_beta / 3.0 + 0.12 * ln_kappa + (2.0 / 3.0) * ln_u).exp();
+        (2.0 * a / rx) * blend(rigid, ehl) * scale
     }
 
     /// Inlet shear heating's reduction φ_T at entrainment speed u \[m/s\]
