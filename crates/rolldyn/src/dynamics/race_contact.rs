@@ -342,45 +342,16 @@ impl Elements {
         }
         let mut force = -load * n + traction.force;
         if let Some(rolling) = rolling.filter(|_| u > 0.0) {
-            let curvature = self.curvature(ring, geometry.contact_angle);
-            let rolling_radius = curvature.rolling_radius;
-            let contact = RollingContact {
-                entrainment_speed: u,
+            let (f_r, c_r) = self.rolling_resistance(
+                rolling,
+                ring,
+                &hertz,
+                &geometry,
+                &ellipse,
                 load,
-                rolling_radius,
-                transverse_radius: curvature.transverse_radius,
-                semi_major: ellipse.semi_major,
-                semi_minor: ellipse.semi_minor,
-                effective_modulus: self.effective_modulus,
-            };
-            let supply = &self.params.film_supply[super::film::contact_index(ring)];
-            let starvation = match (supply, &steady) {
-                (Supply::Flooded, _) => rolling.replenishment_factor(ring.shaft_speed),
-                (_, Some(film)) => film.starvation_factor,
-                (_, None) => {
-                    contact_film(
-                        &rolling.lubricant,
-                        supply,
-                        0.0,
-                        &FilmConditions {
-                            entrainment_speed: u,
-                            load,
-                            rolling_radius,
-                            effective_modulus: self.effective_modulus,
-                            ellipticity: hertz.ellipticity,
-                            semi_minor: ellipse.semi_minor,
-                            ring_speed: ring.shaft_speed,
-                        },
-                    )
-                    .starvation_factor
-                }
-            };
-            let (f_r, c_r) = RollingResistance::ball_load(
-                rolling.force(&contact, starvation),
-                rb,
-                rolling_radius,
-                &(entrainment / u),
+                &entrainment,
                 &rolling_axis,
+                steady.as_ref(),
             );
             force += f_r;
             moment += (point - q).cross(&f_r) + c_r;
@@ -426,5 +397,66 @@ impl Elements {
             couple,
             output,
         })
+    }
+
+    /// The EHL rolling resistance's force at the contact point and couple
+    /// about it on the ball (module doc) at entrainment velocity
+    /// `entrainment` (|u| > 0) and rolling axis e_a; starved by the film's
+    /// supply (`steady`, the steady film, when computed), or with a flooded
+    /// supply by the method's kinematic replenishment.
+    #[allow(clippy::too_many_arguments)]
+    fn rolling_resistance(
+        &self,
+        rolling: &RollingResistance,
+        ring: &RingMotion,
+        hertz: &crate::contact::HertzCoefficients,
+        geometry: &TorusContact,
+        ellipse: &crate::contact::HertzResult,
+        load: f64,
+        entrainment: &Vector3<f64>,
+        rolling_axis: &Vector3<f64>,
+        steady: Option<&crate::lubrication::ContactFilm>,
+    ) -> (Vector3<f64>, Vector3<f64>) {
+        let u = entrainment.norm();
+        let curvature = self.curvature(ring, geometry.contact_angle);
+        let rolling_radius = curvature.rolling_radius;
+        let contact = RollingContact {
+            entrainment_speed: u,
+            load,
+            rolling_radius,
+            transverse_radius: curvature.transverse_radius,
+            semi_major: ellipse.semi_major,
+            semi_minor: ellipse.semi_minor,
+            effective_modulus: self.effective_modulus,
+        };
+        let supply = &self.params.film_supply[super::film::contact_index(ring)];
+        let starvation = match (supply, steady) {
+            (Supply::Flooded, _) => rolling.replenishment_factor(ring.shaft_speed),
+            (_, Some(film)) => film.starvation_factor,
+            (_, None) => {
+                contact_film(
+                    &rolling.lubricant,
+                    supply,
+                    0.0,
+                    &FilmConditions {
+                        entrainment_speed: u,
+                        load,
+                        rolling_radius,
+                        effective_modulus: self.effective_modulus,
+                        ellipticity: hertz.ellipticity,
+                        semi_minor: ellipse.semi_minor,
+                        ring_speed: ring.shaft_speed,
+                    },
+                )
+                .starvation_factor
+            }
+        };
+        RollingResistance::ball_load(
+            rolling.force(&contact, starvation),
+            0.5 * self.geometry.ball_diameter,
+            rolling_radius,
+            &(entrainment / u),
+            rolling_axis,
+        )
     }
 }
