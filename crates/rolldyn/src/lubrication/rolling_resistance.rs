@@ -30,11 +30,13 @@
 //! F_EHL = 1.544 β^⅓ κ^−0.577 U^0.656 W^0.466 G^0.022 E' R_x²,   G = α_p E'
 //! F_R   = (F_IVR − F_EHL)/(1 + M/6.6) + F_EHL
 //! ```
-//! Biboulet & Houpert find these about 0.6–0.7× their fully flooded forces
-//! at usual conditions: they correspond to a moderately starved inlet
+//! Biboulet & Houpert put these at about 0.6–0.7× their fully flooded
+//! forces at usual conditions (joined, 0.80–1.37× on a 6206-like contact
+//! here, unit test): they correspond to a moderately starved inlet
 //! (meniscus at about 3b in EHL), which is how ball bearings run; Bălan et
-//! al. 2015 measured the rolling torque of 7.938 mm balls on a lubricated
-//! race closest to them. Their load exponent is close to that of SKF's
+//! al. 2015 found the rolling torque they measured with 7.938 mm balls and
+//! a few drops of oil closest to them (with smaller balls, which leave the
+//! oil more room, closer to the fully flooded eq 32). Their load exponent is close to that of SKF's
 //! rolling moment (0.54 on the bearing load); eq 32's is about ⅓ (through
 //! 2a). [`RollingForceLaw`] chooses; docs/validation.md compares both with
 //! SKF's model.
