@@ -75,7 +75,7 @@ pub(super) fn lubrication(
         (Method::OilBath, None) => {
             return Err(Invalid::missing(
                 "lubrication.oil_level",
-                "an oil bath needs its level above the lowest point of the outer ring's raceway, e.g. \"5 mm\" (SKF: about the lowest ball's centre)",
+                "an oil bath needs its level above the lowest point of the outer ring's raceway, e.g. \"5 mm\" (SKF: about the lowest ball's centre); give it with the method (two --set overrides together, or Case.with_values in Python)",
             ));
         }
         (Method::OilBath, Some(h)) if h > height => {
@@ -93,7 +93,7 @@ pub(super) fn lubrication(
             return Err(Invalid::new(
                 "lubrication.oil_level",
                 raw.oil_level.as_ref().map(|q| q.to_string()),
-                "only an oil bath has a level: set lubrication.method = \"oil_bath\" or remove the level",
+                "only an oil bath has a level: set lubrication.method = \"oil_bath\" with it, or remove the level",
             ));
         }
     }
