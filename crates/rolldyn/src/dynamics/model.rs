@@ -362,21 +362,17 @@ impl BearingModel {
         // on the inner ring (contacts, an inner guide land) and its seals' and
         // churning's.
         let mut axial_moment = ring_moment.dot(&inner.axis);
-        if let Some(seals) = &p.seals {
-            let seal_power = seals.power(inner.spin_speed);
-            dissipation += seal_power;
-            axial_moment += seals.moment(inner.spin_speed);
-            if let Some(d) = sink.as_deref_mut() {
-                d.seals = seal_power;
-            }
+        // The seals' and the churning's moments and powers on the ring.
+        let w = inner.spin_speed;
+        let seals = p.seals.as_ref().map(|s| (s.moment(w), s.power(w)));
+        let churning = p.churning.as_ref().map(|c| (c.moment(w), c.power(w)));
+        for (moment, power) in [seals, churning].into_iter().flatten() {
+            dissipation += power;
+            axial_moment += moment;
         }
-        if let Some(churning) = &p.churning {
-            let churning_power = churning.power(inner.spin_speed);
-            dissipation += churning_power;
-            axial_moment += churning.moment(inner.spin_speed);
-            if let Some(d) = sink.as_deref_mut() {
-                d.churning = churning_power;
-            }
+        if let Some(d) = sink.as_deref_mut() {
+            d.seals = seals.map_or(0.0, |(_, power)| power);
+            d.churning = churning.map_or(0.0, |(_, power)| power);
         }
         // Drive power: a prescribed spin supplies −M_x ω (the torque that
         // holds the speed); a torque drive T ω, the rotor's speed then
