@@ -365,7 +365,10 @@ impl Case {
     /// Validates a raw case (already merged with its preset and overrides).
     pub fn from_raw(raw: &RawCase) -> Result<Self, Invalid> {
         let operating = operating::operating(&raw.operating)?;
-        let normal_law = raw.model.normal_law.map_or(NormalForceLaw::Hertz, |c| c.0);
+        let normal_law = raw
+            .model
+            .normal_law
+            .map_or(NormalForceLaw::MATERIAL, |c| c.0);
         normal_law.validate().map_err(|e| {
             Invalid::new(
                 format!("model.normal_law.{}", e.field),

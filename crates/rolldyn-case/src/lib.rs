@@ -38,6 +38,7 @@ pub mod case;
 pub mod catalogue;
 pub mod error;
 mod load;
+pub mod mounting;
 pub mod presets;
 pub mod raw;
 pub mod simulation;

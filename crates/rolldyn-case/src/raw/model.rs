@@ -12,10 +12,11 @@ use std::fmt;
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RawModel {
-    /// Normal force law: "hertz" (default), or a table
-    /// `{ law = "lankarani_nikravesh", restitution = 0.9 }`; laws:
-    /// hertz, lankarani_nikravesh, hunt_crossley, flores (restitution),
-    /// viscous (damping in N·s/m, or damping_ratio).
+    /// Normal force law: "material" (default: Hunt & Crossley's damping
+    /// with the material's factor d = 0.08 s/m), "hertz" (undamped), or a
+    /// table `{ law = "lankarani_nikravesh", restitution = 0.9 }`; laws:
+    /// material (dissipation in s/m), lankarani_nikravesh, hunt_crossley,
+    /// flores (restitution), viscous (damping in N·s/m, or damping_ratio).
     pub normal_law: Option<NormalLawChoice>,
     /// Hertz contact-stiffness model: "exact" (default), "hamrock_brewe",
     /// "hertz_circular" (Shan et al. 2023 eq 12, planar papers only).
@@ -197,6 +198,7 @@ impl<'de> Deserialize<'de> for NormalLawChoice {
             fn visit_str<E: de::Error>(self, v: &str) -> Result<NormalLawChoice, E> {
                 match v {
                     "hertz" => Ok(NormalLawChoice(NormalForceLaw::Hertz)),
+                    "material" => Ok(NormalLawChoice(NormalForceLaw::MATERIAL)),
                     other if NormalForceLaw::NAMES.contains(&other) => Err(E::custom(format!(
                         "the law \"{other}\" needs parameters: write a table, e.g. {{ law = \"{other}\", {} }}",
                         if other == "viscous" {
@@ -228,7 +230,7 @@ impl JsonSchema for NormalLawChoice {
         json_schema!({
             "description": "A normal force law (docs/model.md §2.3).",
             "anyOf": [
-                { "type": "string", "enum": ["hertz"] },
+                { "type": "string", "enum": ["hertz", "material"] },
                 g.subschema_for::<NormalForceLaw>(),
             ]
         })

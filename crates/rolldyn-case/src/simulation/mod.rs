@@ -110,7 +110,7 @@ impl Simulation {
     pub fn with_start(case: &Case, start: StartChoice) -> Result<Self, SimulationError> {
         single_bearing(case, "a dynamic run")?;
         let mut model = model(case, case.dynamics_parameters()?)?;
-        let initial_state = match start {
+        let mut initial_state = match start {
             StartChoice::PureRolling => model.pure_rolling_state([0.0; 5]),
             StartChoice::JonesHarris => {
                 jones_harris_state(case, &model, 0.0).map_err(|e| SimulationError::Start {
@@ -125,6 +125,7 @@ impl Simulation {
                 })?
             }
         };
+        model.seat_in_housing(&mut initial_state);
         if let Some(interval) = case.thermal.run_coupling {
             couple_thermal(case, &mut model, interval, &initial_state)?;
         }

@@ -176,6 +176,57 @@ impl BearingModel {
         y
     }
 
+    /// Seats a start state `y` in its housing: with the outer ring on a
+    /// housing spring, the whole bearing is moved by the spring's static
+    /// deflection under the loads at t = 0 and every body's weight
+    /// (outer ring, balls, cage, inner ring), so that a run does not start
+    /// by dropping into its housing. The bearing's own deflection (the
+    /// start's inner-ring displacement relative to the outer ring) is kept.
+    /// No change with a fixed outer ring or without radial stiffness.
+    pub fn seat_in_housing(&self, y: &mut [f64]) {
+        let p = &self.elements.params;
+        let Some(ring) = p.outer_ring.as_ref() else {
+            return;
+        };
+        let l = self.elements.layout;
+        let loads = p.loads.at(0.0);
+        let weight = p.gravity
+            * (ring.mass
+                + p.inner_ring_mass
+                + p.cage.mass
+                + self.elements.ball_mass * l.balls as f64);
+        let force = [loads.force[1], loads.force[2] - weight];
+        let shift: [f64; 2] = std::array::from_fn(|k| {
+            let k_h = ring.housing.stiffness[k + 1];
+            if k_h > 0.0 { force[k] / k_h } else { 0.0 }
+        });
+        if shift == [0.0, 0.0] {
+            return;
+        }
+        let o = l.outer();
+        y[o] += shift[0];
+        y[o + 1] += shift[1];
+        let r = l.ring();
+        y[r + 1] += shift[0];
+        y[r + 2] += shift[1];
+        for j in 0..l.balls {
+            let b = l.ball(j);
+            let (radius, azimuth) = (y[b + 1], y[b + 2]);
+            let yy = radius * azimuth.cos() + shift[0];
+            let zz = radius * azimuth.sin() + shift[1];
+            y[b + 1] = yy.hypot(zz);
+            // Keep the azimuth's turn count: move it by the small change.
+            let moved = zz.atan2(yy);
+            let change = (moved - azimuth).rem_euclid(std::f64::consts::TAU);
+            y[b + 2] = azimuth
+                + if change > std::f64::consts::PI {
+                    change - std::f64::consts::TAU
+                } else {
+                    change
+                };
+        }
+    }
+
     /// A driven ring starts at the profile's speed, at angle 0.
     fn start_rotation(&self, y: &mut [f64]) {
         let l = self.elements.layout;
