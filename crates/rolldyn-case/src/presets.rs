@@ -73,3 +73,52 @@ pub fn names() -> String {
         .collect::<Vec<_>>()
         .join(", ")
 }
+
+#[cfg(test)]
+mod tests {
+    use super::PRESETS;
+    use crate::load_case;
+    use crate::mounting::Mounting;
+
+    /// Every preset is mounted by the rule of `crate::mounting` (its values
+    /// as written, to their three digits), with gravity on.
+    #[test]
+    fn presets_are_mounted_by_the_rule() {
+        for preset in PRESETS {
+            let case = load_case(preset.name, preset.text, &[]).expect(preset.name);
+            let b = &case.bearing;
+            let rule = Mounting::by_rule(
+                b.bore.expect("bore"),
+                b.outside_diameter.expect("outside diameter"),
+                b.width.expect("width"),
+                b.geometry.pitch_diameter,
+                b.geometry.ball_diameter,
+            );
+            let outer = case.outer_ring.expect("a preset sits in a housing");
+            let close = |written: f64, rule: f64, what: &str| {
+                assert!(
+                    (written / rule - 1.0).abs() < 5e-3,
+                    "{}: {what} {written} against the rule's {rule}",
+                    preset.name
+                );
+            };
+            close(
+                case.inner_ring_mass.expect("inner ring mass"),
+                rule.inner_ring_mass(),
+                "inner_ring.mass",
+            );
+            close(outer.mass, rule.outer_ring_mass(), "outer_ring.mass");
+            close(
+                outer.housing.stiffness[1],
+                rule.housing_stiffness,
+                "outer_ring.housing_stiffness",
+            );
+            close(
+                outer.housing.damping[2],
+                rule.housing_damping,
+                "outer_ring.housing_damping",
+            );
+            assert!(case.gravity, "{}: gravity", preset.name);
+        }
+    }
+}
