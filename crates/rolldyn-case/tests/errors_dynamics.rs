@@ -40,6 +40,30 @@ fn dynamic_model_rules() {
     assert!(e.to_string().contains("fixed step"), "{e}");
     let e = err(&format!("{BASE}\n[cage]\npocket_stiffness = \"-1 N/m\"\n"));
     check(&e, "cage.pocket_stiffness", 15, &["must be positive"]);
+    // Contact damping and mounting.
+    let e = err(&format!(
+        "{BASE}\n[model]\nnormal_law = {{ law = \"material\", dissipation = -0.1 }}\n"
+    ));
+    check(
+        &e,
+        "model.normal_law.dissipation",
+        15,
+        &["-0.1", "[0, 10] s/m"],
+    );
+    let e = err(&format!(
+        "{BASE}\n[model]\nnormal_law = {{ law = \"hunt_crossley\", restitution = 1.2 }}\n"
+    ));
+    check(&e, "model.normal_law.restitution", 15, &["1.2", "(0, 1]"]);
+    let e = err(&format!(
+        "{BASE}\n[outer_ring]\nmass = \"-1 kg\"\nhousing_stiffness = \"1e7 N/m\"\n"
+    ));
+    check(&e, "outer_ring.mass", 15, &["-1 kg"]);
+    let e = err(&format!(
+        "{BASE}\n[outer_ring]\nmass = \"5 kg\"\nhousing_stiffness = \"-1e7 N/m\"\n"
+    ));
+    check(&e, "outer_ring.housing_stiffness", 16, &["-1e7 N/m"]);
+    let e = err(&format!("{BASE}\n[inner_ring]\nmass = \"-2 kg\"\n"));
+    check(&e, "inner_ring.mass", 15, &["-2 kg"]);
 }
 
 #[test]

@@ -117,16 +117,7 @@ impl CatalogueBearing {
             t.push_str(&format!("{line:<37}{est}\n"));
         }
         t.push_str("whirl = false                        # cage rotation only\n\n");
-        let mounting = crate::mounting::Mounting::by_rule(
-            self.bore,
-            self.outside_diameter,
-            self.width,
-            self.pitch_diameter,
-            self.ball_diameter,
-        );
-        let (mounting_sections, mounting_assumptions) = mounting.case_text();
-        t.push_str(&mounting_sections);
-        t.push_str("\n[materials]\nball = \"steel_52100\"\nrings = \"steel_52100\"\n\n");
+        t.push_str("[materials]\nball = \"steel_52100\"\nrings = \"steel_52100\"\n\n");
         let assumed = "# assumed: see [assumptions]";
         t.push_str("[lubricant]\nname = \"ISO VG 68 mineral oil\"\n");
         for line in [
@@ -152,7 +143,6 @@ impl CatalogueBearing {
         ));
         t.push_str(
             "\n[model]\n\
-             gravity = true                       # the rotor and housing weigh on the bearing: see [assumptions] (mounting)\n\
              traction = { law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }  # assumed: see [assumptions]\n\
              traction_integration = { method = \"graded\", across = 16, along = 8 }   # see [assumptions]\n\n\
              [solver]\n\
@@ -160,7 +150,6 @@ impl CatalogueBearing {
              start = \"jones_harris\"\n\n",
         );
         t.push_str("[assumptions]\n");
-        t.push_str(&mounting_assumptions);
         let rule = |key: &str, text: String| format!("\"{key}\" = \"{text}\"\n");
         t.push_str(&rule(
             "bearing.ball_diameter",
