@@ -15,12 +15,12 @@
 //!   (measured ball-fault records often show the cage's, Smith & Randall
 //!   2015).
 //!
-//! Spalls sit at the load zone's centre (the direction of the radial load,
-//! 0° without one), D_w/15 long and D_w/28 deep (the CWRU 0.021 in pit's
-//! proportions on a 6205). Each run lasts 3/f_c, at least 0.05 s, the
+//! Spalls sit at the load zone's centre (the direction of the radial load;
+//! 12 o'clock, where the channels look, without one), D_w/15 long and
+//! D_w/28 deep (the CWRU 0.021 in pit's proportions on a 6205). Each run lasts 3/f_c, at least 0.05 s, the
 //! window (its second half) resolving lines f_c/1.5 apart. The tests in CI
-//! check eight of the ten bearings (the other two miss at defaults:
-//! docs/validation.md); `fault_matrix_table` (ignored: a benchmark) runs
+//! check six of the ten bearings (two miss at defaults, docs/validation.md;
+//! two more deep-groove presets are left to the benchmark for CI's time); `fault_matrix_table` (ignored: a benchmark) runs
 //! all ten at 0.4 s or 3/f_c, whichever is longer, and prints the table of
 //! docs/validation.md.
 
@@ -161,10 +161,13 @@ fn run(case: &str, fault: Fault, duration: f64, dir: &Path) -> Signature {
         check["force_y_n"].as_f64().unwrap(),
         check["force_z_n"].as_f64().unwrap(),
     );
+    // The load zone's centre; under a purely axial load every azimuth is
+    // loaded alike, and the spall goes to 12 o'clock (+z), where the
+    // inner ring's channel and the default sensor look.
     let position = if fy.hypot(fz) > 0.0 {
         fz.atan2(fy).to_degrees()
     } else {
-        0.0
+        90.0
     };
     let ball_diameter = check["geometry"]["ball_diameter_m"].as_f64().unwrap();
     let out = dir.join(fault.name());
@@ -287,7 +290,9 @@ fn bearing_matrix(source: &str, name: &str, min_duration: f64) -> (Vec<String>, 
 /// One test per bearing, so that the test harness runs them side by side.
 /// Not here: the 7008C and ceramic_45x75 presets, which miss their
 /// outer-race signatures at defaults (docs/validation.md, "Fault signatures
-/// at defaults"); the benchmark below keeps them in its table.
+/// at defaults"), and, to keep CI's time, the 6203 and 6206 (deep-groove
+/// presets like the 6205 and 6304, which pass at the CI's durations); the
+/// benchmark below keeps all ten in its table.
 macro_rules! signatures {
     ($($test:ident: $source:literal $name:literal;)*) => {$(
         #[test]
@@ -305,9 +310,7 @@ macro_rules! signatures {
 }
 
 signatures! {
-    signatures_6203: "preset" "6203";
     signatures_6205: "preset" "6205";
-    signatures_6206: "preset" "6206";
     signatures_6304: "preset" "6304";
     signatures_7218b: "preset" "7218B";
     signatures_acbb_30x62: "preset" "acbb_30x62";
@@ -317,13 +320,18 @@ signatures! {
 
 /// The benchmark: the matrix at 0.4 s (or 3/f_c when longer), printed as
 /// docs/validation.md's table:
-/// `cargo test --release -p rolldyn-cli --test fault_matrix -- --ignored --nocapture`.
+/// `cargo test --release -p rolldyn-cli --test fault_matrix -- --ignored --nocapture`;
+/// `ROLLDYN_FAULT_MATRIX_MIN_DURATION=0.05` prints it at the CI's durations.
 #[test]
 #[ignore]
 fn fault_matrix_table() {
     let (mut failures, mut rows) = (Vec::new(), Vec::new());
     for (source, name) in BEARINGS {
-        let (f, r) = bearing_matrix(source, name, 0.4);
+        let min = std::env::var("ROLLDYN_FAULT_MATRIX_MIN_DURATION")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(0.4);
+        let (f, r) = bearing_matrix(source, name, min);
         failures.extend(f);
         rows.extend(r);
     }
