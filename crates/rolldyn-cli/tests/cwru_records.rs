@@ -11,7 +11,7 @@
 
 mod common;
 
-use common::{rolldyn, stderr, temp_dir};
+use common::{envelope_json, rolldyn, stderr, temp_dir};
 use std::collections::HashMap;
 use std::path::PathBuf;
 
@@ -86,24 +86,11 @@ fn the_outer_race_pit_against_cwru_record_130() {
             "{what}: simulated/measured {r:.3} outside [{low}, {high}]"
         );
     }
-    let o = rolldyn(
-        &[
-            "spectrum",
-            dir.to_str().unwrap(),
-            "--channel",
-            "sensor_acceleration_m_s2",
-            "--kind",
-            "envelope",
-            "--band",
-            "1200:4800",
-            "--peaks",
-            "4",
-            "--json",
-        ],
-        None,
+    let v = envelope_json(
+        &dir,
+        "sensor_acceleration_m_s2",
+        &["--band", "1200:4800", "--peaks", "4"],
     );
-    assert!(o.status.success(), "{}", stderr(&o));
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let simulated: Vec<&str> = v["peaks"]
         .as_array()
         .unwrap()

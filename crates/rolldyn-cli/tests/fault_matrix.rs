@@ -28,7 +28,7 @@
 
 mod common;
 
-use common::{rolldyn, stderr, stdout, temp_dir};
+use common::{envelope_json, line_frequency, rolldyn, stderr, stdout, temp_dir};
 use std::path::Path;
 
 /// The bearings: presets by name, catalogue bearings by designation.
@@ -190,26 +190,9 @@ fn run(case: &str, fault: Fault, duration: f64, dir: &Path) -> Signature {
     );
     assert!(o.status.success(), "{case} {fault:?}: {}", stderr(&o));
     let envelope = |channel: &str| {
-        let v = json(&[
-            "spectrum",
-            &out_path,
-            "--channel",
-            channel,
-            "--kind",
-            "envelope",
-            "--peaks",
-            "6",
-            "--json",
-        ]);
+        let v = envelope_json(Path::new(&out_path), channel, &["--peaks", "6"]);
         let peaks = v["peaks"].as_array().unwrap();
-        let line = |name: &str| {
-            v["lines"]
-                .as_array()
-                .unwrap()
-                .iter()
-                .find(|l| l["name"] == name)
-                .map_or(0.0, |l| l["frequency_hz"].as_f64().unwrap())
-        };
+        let line = |name: &str| line_frequency(&v, name).unwrap_or(0.0);
         let e = Envelope {
             peaks: peaks
                 .iter()

@@ -20,7 +20,7 @@
 
 mod common;
 
-use common::{rolldyn, stderr, temp_dir};
+use common::{envelope_json, line_frequency, rolldyn, stderr, temp_dir};
 use std::path::{Path, PathBuf};
 
 fn case() -> PathBuf {
@@ -42,32 +42,8 @@ struct InnerRaceLines {
 }
 
 fn envelope(run: &Path) -> InnerRaceLines {
-    let o = rolldyn(
-        &[
-            "spectrum",
-            run.to_str().unwrap(),
-            "--channel",
-            "sensor_acceleration_m_s2",
-            "--kind",
-            "envelope",
-            "--band",
-            "1200:4800",
-            "--json",
-        ],
-        None,
-    );
-    assert!(o.status.success(), "{}", stderr(&o));
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    let line = |name: &str| {
-        v["lines"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .find(|l| l["name"] == name)
-            .unwrap()["frequency_hz"]
-            .as_f64()
-            .unwrap()
-    };
+    let v = envelope_json(run, "sensor_acceleration_m_s2", &["--band", "1200:4800"]);
+    let line = |name: &str| line_frequency(&v, name).unwrap();
     let resolution = v["resolution_hz"].as_f64().unwrap();
     let csv = std::fs::read_to_string(v["csv"].as_str().unwrap()).unwrap();
     let at = |f: f64| {

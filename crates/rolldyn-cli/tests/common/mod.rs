@@ -149,3 +149,31 @@ pub fn kill_after_two_checkpoints(child: &mut std::process::Child, dir: &std::pa
         "the run ended before it could be killed; lengthen it"
     );
 }
+
+/// `rolldyn spectrum RUN --channel CHANNEL --kind envelope --json` with
+/// `extra` options (a band, a number of peaks), as JSON.
+pub fn envelope_json(run: &std::path::Path, channel: &str, extra: &[&str]) -> Value {
+    let mut args = vec![
+        "spectrum",
+        run.to_str().unwrap(),
+        "--channel",
+        channel,
+        "--kind",
+        "envelope",
+        "--json",
+    ];
+    args.extend_from_slice(extra);
+    let o = rolldyn(&args, None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+/// The frequency \[Hz\] of the characteristic line `name` of a spectrum's
+/// JSON (None if it has no such line).
+pub fn line_frequency(spectrum: &Value, name: &str) -> Option<f64> {
+    spectrum["lines"]
+        .as_array()?
+        .iter()
+        .find(|l| l["name"] == name)?["frequency_hz"]
+        .as_f64()
+}
