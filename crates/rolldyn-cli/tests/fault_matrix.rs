@@ -302,12 +302,20 @@ signatures! {
 /// The benchmark: the matrix at 0.4 s (or 3/f_c when longer), printed as
 /// docs/validation.md's table:
 /// `cargo test --release -p rolldyn-cli --test fault_matrix -- --ignored --nocapture`;
-/// `ROLLDYN_FAULT_MATRIX_MIN_DURATION=0.05` prints it at the CI's durations.
+/// `ROLLDYN_FAULT_MATRIX_MIN_DURATION=0.05` prints it at the CI's durations,
+/// `ROLLDYN_FAULT_MATRIX_BEARINGS=6205,7218B` for some bearings only.
 #[test]
 #[ignore]
 fn fault_matrix_table() {
     let (mut failures, mut rows) = (Vec::new(), Vec::new());
+    let only = std::env::var("ROLLDYN_FAULT_MATRIX_BEARINGS").ok();
     for (source, name) in BEARINGS {
+        if only
+            .as_deref()
+            .is_some_and(|list| !list.split(',').any(|b| b == name))
+        {
+            continue;
+        }
         let min = std::env::var("ROLLDYN_FAULT_MATRIX_MIN_DURATION")
             .ok()
             .and_then(|v| v.parse().ok())
