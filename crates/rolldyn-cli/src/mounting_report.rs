@@ -1,0 +1,131 @@
+//! The mounting as `rolldyn check` reports it (docs/dynamics.md,
+//! "Mounting"): masses, the outer ring's mode on its housing, the bearing's
+//! radial stiffness and the radial chain's frequencies.
+
+use rolldyn_case::Case;
+use serde::Serialize;
+use std::fmt::Write;
+
+/// The mounting of one bearing as `check` reports it (docs/dynamics.md,
+/// "Mounting").
+#[derive(Serialize)]
+pub struct MountingReport {
+    /// Inner ring with what turns with it \[kg\].
+    pub inner_ring_mass_kg: f64,
+    /// Outer ring with the housing's moving mass \[kg\] (null: fixed).
+    pub outer_ring_mass_kg: Option<f64>,
+    pub housing_stiffness_n_per_m: Option<f64>,
+    pub housing_damping_n_s_per_m: Option<f64>,
+    /// The outer ring on its housing alone: frequency \[Hz\], damping ratio.
+    pub housing_mode_hz: Option<f64>,
+    pub housing_damping_ratio: Option<f64>,
+    /// The bearing's radial stiffness along the radial load (z without
+    /// one) at the quasi-static solution \[N/m\] (null if it has none).
+    pub bearing_radial_stiffness_n_per_m: Option<f64>,
+    /// The inner ring on the bearing with a rigid housing \[Hz\].
+    pub rotor_on_bearing_hz: Option<f64>,
+    /// The radial chain rotor–bearing–housing \[Hz\], lower first.
+    pub chain_hz: Option<[f64; 2]>,
+    /// Gravity on.
+    pub gravity: bool,
+}
+
+impl MountingReport {
+    pub(crate) fn new(case: &Case) -> Option<Self> {
+        if case.bearing_set().is_some() || case.shaft.is_some() {
+            return None;
+        }
+        let p = case.dynamics_parameters().ok()?;
+        let outer = p.outer_ring.as_ref();
+        let housing = outer.map(|o| {
+            rolldyn_case::mounting::oscillator(o.mass, o.housing.stiffness[2], o.housing.damping[2])
+        });
+        // Radial stiffness along the radial load, from the quasi-static
+        // solution's 5×5 stiffness over (x, y, z, θ_y, θ_z).
+        let bearing = rolldyn_case::simulation::QuasiStatic::from_case(case)
+            .ok()
+            .and_then(|q| q.solve().ok())
+            .map(|sol| {
+                let (fy, fz) = (case.loads.force[1], case.loads.force[2]);
+                let norm = fy.hypot(fz);
+                let (cy, cz) = if norm > 0.0 {
+                    (fy / norm, fz / norm)
+                } else {
+                    (0.0, 1.0)
+                };
+                let k = &sol.stiffness;
+                cy * cy * k[1][1] + cy * cz * (k[1][2] + k[2][1]) + cz * cz * k[2][2]
+            })
+            .filter(|k| k.is_finite() && *k > 0.0);
+        let m = p.inner_ring_mass;
+        Some(Self {
+            inner_ring_mass_kg: m,
+            outer_ring_mass_kg: outer.map(|o| o.mass),
+            housing_stiffness_n_per_m: outer.map(|o| o.housing.stiffness[2]),
+            housing_damping_n_s_per_m: outer.map(|o| o.housing.damping[2]),
+            housing_mode_hz: housing.map(|h| h.0),
+            housing_damping_ratio: housing.map(|h| h.1),
+            bearing_radial_stiffness_n_per_m: bearing,
+            rotor_on_bearing_hz: bearing.map(|k| rolldyn_case::mounting::oscillator(m, k, 0.0).0),
+            chain_hz: bearing.zip(outer).map(|(k, o)| {
+                rolldyn_case::mounting::chain_frequencies(m, k, o.mass, o.housing.stiffness[2])
+            }),
+            gravity: case.gravity,
+        })
+    }
+
+    pub(crate) fn to_text(&self, out: &mut String) {
+        let _ = writeln!(
+            out,
+            "\nMounting (docs/dynamics.md, \"Mounting\"; gravity {})",
+            if self.gravity { "on" } else { "off" }
+        );
+        let _ = writeln!(
+            out,
+            "  inner ring with what turns with it  {:.3} kg",
+            self.inner_ring_mass_kg
+        );
+        match (
+            self.outer_ring_mass_kg,
+            self.housing_stiffness_n_per_m,
+            self.housing_damping_n_s_per_m,
+        ) {
+            (Some(m), Some(k), Some(c)) => {
+                let _ = writeln!(
+                    out,
+                    "  outer ring in its housing           {m:.3} kg on {k:.3e} N/m, {c:.3e} N·s/m"
+                );
+            }
+            _ => {
+                let _ = writeln!(
+                    out,
+                    "  outer ring                          fixed (no [outer_ring] housing)"
+                );
+            }
+        }
+        if let Some(k) = self.bearing_radial_stiffness_n_per_m {
+            let _ = writeln!(
+                out,
+                "  bearing radial stiffness            {k:.3e} N/m (quasi-static, along the radial load)"
+            );
+        }
+        if let (Some(f), Some(z)) = (self.housing_mode_hz, self.housing_damping_ratio) {
+            let _ = writeln!(
+                out,
+                "  housing mode                        {f:.1} Hz, damping ratio {z:.3}"
+            );
+        }
+        if let Some(f) = self.rotor_on_bearing_hz {
+            let _ = writeln!(
+                out,
+                "  inner ring on the bearing           {f:.1} Hz (rigid housing)"
+            );
+        }
+        if let Some([lo, hi]) = self.chain_hz {
+            let _ = writeln!(
+                out,
+                "  radial chain rotor–bearing–housing  {lo:.1} Hz, {hi:.1} Hz"
+            );
+        }
+    }
+}
