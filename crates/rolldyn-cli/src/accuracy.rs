@@ -1,16 +1,12 @@
 //! How accurate a run is: the `accuracy` object of `summary.json`, the
-//! warning on stderr and the report's banner, and `run --verify` (the same
-//! case again at ten times tighter tolerances with the traction's grid
-//! refined two-fold each way, and how much the summary's main quantities
-//! moved). docs/dynamics.md, "Accuracy at default
+//! warning on stderr and the report's banner, and what `run --verify`
+//! changes (ten times tighter tolerances, the traction's grid refined
+//! two-fold each way) and reports (the changes of the summary's main
+//! quantities, compared by `run_summary::verify`; the verifying run is
+//! `run`'s). docs/dynamics.md, "Accuracy at default
 //! settings", explains the measures and their limits.
 
-use crate::Failure;
-use crate::checkpoint::RunRecord;
-use crate::run::{RunOptions, Summary};
-use rolldyn_io::write_atomic;
 use serde::Serialize;
-use std::path::Path;
 
 /// Largest energy-balance error, relative to the drive work, that a run
 /// reports as `ok`.
@@ -163,116 +159,11 @@ pub fn assess(
     }
 }
 
-/// The quantities `--verify` compares, their limits and the magnitude
-/// below which a value is not compared.
-fn compared(summary: &Summary) -> Vec<(&'static str, f64, f64, f64)> {
-    let v = &summary.vibration;
-    let (means, vibration) = (VERIFY_LIMIT_MEANS, VERIFY_LIMIT_VIBRATION);
-    let zero = 1e-12;
-    let noise_mm_s = VIBRATION_NOISE_FACTOR * summary.relative_tolerance.unwrap_or(0.0);
-    let mut out = vec![
-        (
-            "mean_cage_speed_rpm",
-            summary.mean_cage_speed_rpm,
-            means,
-            zero,
-        ),
-        ("mean_load_inner_n", summary.mean_load_inner_n, means, zero),
-        ("max_load_inner_n", summary.max_load_inner_n, means, zero),
-        ("mean_load_outer_n", summary.mean_load_outer_n, means, zero),
-        ("max_load_outer_n", summary.max_load_outer_n, means, zero),
-        // The exact mean (the dissipated energy's increase over the
-        // window), not the mean of the sampled components: impacts make
-        // those depend on where the samples fall.
-        (
-            "mean_dissipated_power_w",
-            summary.power.mean_dissipated_power_w,
-            means,
-            zero,
-        ),
-    ];
-    for (key, value) in v.rms_values() {
-        out.push((key, value, vibration, noise_mm_s.max(zero)));
-    }
-    // Envelope lines of a run with a spall; a line below a tenth of the
-    // strongest is the spectrum's floor, not a signature.
-    if let Some(envelope) = &summary.surface_lines.envelope_lines {
-        let strongest = envelope
-            .lines
-            .iter()
-            .map(|l| l.amplitude_m_s2)
-            .fold(0.0, f64::max);
-        for (line, &(_, key)) in envelope.lines.iter().zip(&crate::vibration::ENVELOPE_LINES) {
-            out.push((
-                key,
-                line.amplitude_m_s2,
-                vibration,
-                (0.1 * strongest).max(zero),
-            ));
-        }
-    }
-    // The housing sensor's record (its noise is the same draw in both runs).
-    if let Some(sensor) = &summary.sensor {
-        out.push(("sensor.rms_m_s2", sensor.rms_m_s2, vibration, zero));
-    }
-    // A whirl below the position tolerance (rtol × 1 µm) is noise too.
-    let noise_m = 1e-6 * VIBRATION_NOISE_FACTOR * summary.relative_tolerance.unwrap_or(0.0);
-    out.push((
-        "cage_whirl_radius_mean_m",
-        v.cage_whirl_radius_mean_m,
-        vibration,
-        noise_m.max(zero),
-    ));
-    out
-}
-
-/// Compares a run with its verifying run. Quantities below their noise
-/// magnitude in both runs are left out: a planar run's axial vibration, an
-/// unloaded ring, the integration noise of a bearing without vibration.
-pub fn verify(
-    run: &Summary,
-    reference: &Summary,
-    directory: String,
-    energy_tolerance: Option<f64>,
-    traction_grid: Option<String>,
-) -> Verification {
-    let mut changes = Vec::new();
-    let mut worst: f64 = 0.0;
-    for ((key, value, limit, noise), (_, reference_value, _, _)) in
-        compared(run).into_iter().zip(compared(reference))
-    {
-        let quiet = value.abs() < noise && reference_value.abs() < noise;
-        if !value.is_finite() || !reference_value.is_finite() || quiet || reference_value == 0.0 {
-            continue;
-        }
-        let relative_change = (value - reference_value).abs() / reference_value.abs();
-        worst = worst.max(relative_change / limit);
-        changes.push(Change {
-            key: key.into(),
-            value,
-            reference: reference_value,
-            relative_change,
-            limit,
-        });
-    }
-    Verification {
-        relative_tolerance: reference.relative_tolerance,
-        energy_tolerance,
-        traction_grid,
-        directory,
-        wall_time_s: reference.wall_time_s,
-        energy_balance_relative_error: reference.energy_balance_relative_error,
-        changes,
-        worst_ratio_to_limit: worst,
-        status: if worst <= 1.0 { "ok" } else { "warning" },
-    }
-}
-
 /// The overrides that refine a case's traction grid two-fold each way,
 /// and its description: FASTSIM's strips and elements, or a stress law's
 /// strip grid (left alone beyond the case's limits: FASTSIM's
 /// [`rolldyn::traction::fastsim::MAX_DIVISIONS`], 10 000 grid cells).
-pub(crate) fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<String>, String)> {
+pub fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<String>, String)> {
     use rolldyn::traction::{TractionIntegration, TractionModel, fastsim::MAX_DIVISIONS};
     match (&case.traction, case.traction_integration) {
         // No grid: the table's error is stated with it (docs/validation.md).
@@ -318,86 +209,6 @@ pub(crate) fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<St
             })
         }
     }
-}
-
-/// `--verify`: the run's case again, into `DIR/verify/`, at ten times
-/// tighter tolerances (the relative and energy tolerances, or rk4's step)
-/// and with the traction's grid refined two-fold each way; the comparison
-/// goes into `summary.accuracy.verify` and `summary.json` is written
-/// again.
-pub(crate) fn verify_run(
-    record: &RunRecord,
-    dir: &Path,
-    options: &RunOptions,
-    summary: &mut Summary,
-) -> Result<(), Failure> {
-    let mut tight = record.clone();
-    let sets = &mut tight.overrides.set;
-    match summary.relative_tolerance {
-        Some(rtol) => {
-            sets.push(format!(
-                "solver.relative_tolerance={:e}",
-                (rtol / VERIFY_TIGHTENING).max(1e-12)
-            ));
-            if let Some(eps) = summary.energy_tolerance {
-                sets.push(format!(
-                    "solver.energy_tolerance={:e}",
-                    (eps / VERIFY_TIGHTENING).max(1e-9)
-                ));
-            }
-        }
-        None => sets.push(format!(
-            "solver.time_step={:e} s",
-            (summary.max_step_s / VERIFY_TIGHTENING).max(1e-10)
-        )),
-    }
-    let mut case = tight
-        .overrides
-        .load_text(&tight.source, tight.case_text.as_deref())?;
-    let traction_grid = match refined_traction_grid(&case) {
-        Some((grid_sets, description)) => {
-            tight.overrides.set.extend(grid_sets);
-            case = tight
-                .overrides
-                .load_text(&tight.source, tight.case_text.as_deref())?;
-            Some(description)
-        }
-        None => None,
-    };
-    let verify_dir = dir.join("verify");
-    let quiet = RunOptions {
-        resume: false,
-        quiet: true,
-        progress: None,
-        verify: false,
-        ..options.clone()
-    };
-    let reference = crate::run::run_once(&tight, &case, &verify_dir, &quiet)?.summary;
-    if reference.status == "interrupted" {
-        return Err(Failure::Interrupted(format!(
-            "--verify interrupted; {} holds the completed run, {} what the verifying run computed",
-            dir.display(),
-            verify_dir.display()
-        )));
-    }
-    if reference.status != "completed" {
-        return Err(Failure::Model(format!(
-            "--verify: the run at ten times tighter tolerances and a finer traction grid in {} ended {}: {}",
-            verify_dir.display(),
-            reference.status,
-            reference.error.unwrap_or_default()
-        )));
-    }
-    summary.accuracy.verify = Some(verify(
-        summary,
-        &reference,
-        verify_dir.display().to_string(),
-        reference.energy_tolerance,
-        traction_grid,
-    ));
-    let json = crate::finite::to_json(&*summary).map_err(|e| Failure::Internal(e.to_string()))?;
-    write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes())
-        .map_err(|e| Failure::BadInput(e.to_string()))
 }
 
 /// The warning for stderr, if the run's accuracy needs one.

@@ -16,16 +16,15 @@
 //! holds at least the checkpoint's rows, and a resume keeps exactly those
 //! and replays them into the summary's statistics.
 
+use crate::Failure;
+use crate::run_options::RunOptions;
 use crate::run_stats::RunStatistics;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::{Checkpoint, Solver, StateReader, StateWriter};
+use rolldyn_io::RunDir;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
-/// File names in a run directory.
-pub const RECORD_FILE: &str = "run.json";
-/// The checkpoint's file name.
-pub const CHECKPOINT_FILE: &str = "checkpoint.bin";
 /// Version of `run.json` and `checkpoint.bin` (2: with the summary's
 /// statistics; 3: with the fast part's Jacobian refresh and the ball
 /// passages).
@@ -77,7 +76,7 @@ impl RunRecord {
 
     /// Reads `DIR/run.json`.
     pub fn read(dir: &Path) -> Result<Self, String> {
-        let path = dir.join(RECORD_FILE);
+        let path = RunDir::new(dir).record();
         let text = std::fs::read_to_string(&path).map_err(|e| {
             format!(
                 "--resume {}: cannot read {}: {e} (only a directory written by `rolldyn run` can be resumed)",
@@ -196,7 +195,7 @@ pub fn restore_parts(
     stats: &mut [&mut RunStatistics],
     extra: &mut [f64],
 ) -> Result<Position, String> {
-    let path = dir.join(CHECKPOINT_FILE);
+    let path = RunDir::new(dir).checkpoint();
     let bytes = std::fs::read(&path).map_err(|e| {
         format!(
             "--resume {}: cannot read {}: {e} (a completed run has none)",
@@ -220,7 +219,7 @@ pub fn restore_parts(
             "--resume {}: {} does not belong to {} (changed since the checkpoint)",
             dir.display(),
             path.display(),
-            RECORD_FILE
+            RunDir::RECORD
         ));
     }
     let position = Position {
@@ -244,4 +243,35 @@ pub fn restore_parts(
         ));
     }
     Ok(position)
+}
+
+/// Whether a run restored at time `reached` may go on to `duration`: a
+/// resumed run must not be complete, an extended one (`--until`) must
+/// go beyond; an extension's checkpoints belong to the extended record
+/// from now on, so `DIR/run.json` is written again.
+pub fn continue_to(
+    record: &RunRecord,
+    options: &RunOptions,
+    dir: &Path,
+    reached: f64,
+    duration: f64,
+) -> Result<(), Failure> {
+    let bad = Failure::BadInput;
+    match options.extends {
+        Some(_) if reached >= duration => Err(bad(format!(
+            "--until {duration} s: the run in {} is already at t = {reached} s; extend it beyond that",
+            dir.display()
+        ))),
+        Some(_) => {
+            let text = record.to_json().map_err(Failure::Internal)?;
+            RunDir::new(dir)
+                .write(RunDir::RECORD, text.as_bytes())
+                .map_err(|e| bad(e.to_string()))
+        }
+        None if reached >= duration => Err(bad(format!(
+            "--resume {}: the run is complete (t = {reached} s); `--until T` extends it",
+            dir.display()
+        ))),
+        None => Ok(()),
+    }
 }

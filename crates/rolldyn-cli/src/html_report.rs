@@ -5,7 +5,8 @@
 
 use crate::Failure;
 use crate::checkpoint::RunRecord;
-use rolldyn_report::{REPORT_FILE, report_for};
+use rolldyn_io::RunDir;
+use rolldyn_report::report_for;
 use std::path::{Path, PathBuf};
 
 /// The case of a run directory as `rolldyn check` describes it (None when
@@ -25,7 +26,7 @@ fn case_description(dir: &Path) -> Option<String> {
 pub fn write(dir: &Path) -> Result<PathBuf, Failure> {
     let report =
         report_for(dir, case_description(dir)).map_err(|e| Failure::BadInput(e.to_string()))?;
-    let path = dir.join(REPORT_FILE);
+    let path = RunDir::new(dir).report();
     rolldyn_io::write_atomic(&path, report.to_html().as_bytes())
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     Ok(path)

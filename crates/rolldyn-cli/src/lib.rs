@@ -4,7 +4,6 @@
 //! (`main.rs`) only parses arguments and maps [`Failure`] to exit codes.
 
 pub mod accuracy;
-pub mod arrangement;
 pub mod catalogue;
 pub mod channel_groups;
 pub mod checkpoint;
@@ -14,19 +13,21 @@ pub mod html_report;
 pub mod mounting_report;
 pub mod power;
 pub mod power_channels;
+pub mod power_report;
 pub mod quasistatic;
 pub mod quasistatic_films;
-pub mod quasistatic_sweep;
 pub mod recorder;
 pub mod report;
 pub mod run;
+pub mod run_options;
 pub mod run_set;
 pub mod run_stats;
 pub mod run_summary;
 pub mod run_sweep;
 pub mod spectrum;
+pub mod sweep_grid;
 pub mod thermal;
-pub mod thermal_set;
+pub mod thermal_nodes;
 pub mod traction;
 pub mod traction_equilibrium;
 pub mod vibration;
@@ -107,6 +108,11 @@ pub fn quasistatic_failure(e: rolldyn::quasistatic::QuasiStaticError) -> Failure
         }
         other => Failure::BadInput(other.to_string()),
     }
+}
+
+/// A case's invalid value (key and rule) as bad input.
+pub fn invalid(e: rolldyn_case::case::Invalid) -> Failure {
+    Failure::BadInput(format!("{}: {}", e.key, e.rule))
 }
 
 /// A case-to-simulation failure: a failed quasi-static solve (of the

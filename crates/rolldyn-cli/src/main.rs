@@ -11,9 +11,10 @@ use rolldyn_case::presets;
 use rolldyn_case::units::{Quantity, Time};
 use rolldyn_cli::{
     CaseArgs, CaseOverrides, DEFAULT_RUN_DIR, Failure, bad_arg, catalogue, checkpoint, contact,
-    emit, html_report, json, parse_angle, power, quasistatic, report, run, run_sweep, spectrum,
-    thermal, traction,
+    emit, html_report, json, parse_angle, power, quasistatic, report, run, run_options, run_sweep,
+    spectrum, thermal, traction,
 };
+use rolldyn_io::RunDir;
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -271,8 +272,8 @@ fn run(cli: Cli) -> Result<(), Failure> {
                     rolldyn_io::write_atomic(&dir.join(name), text.as_bytes())
                         .map_err(|e| Failure::BadInput(e.to_string()))
                 };
-                write("sweep.csv", &rows.csv())?;
-                write("sweep.json", &json_text)?;
+                write(RunDir::SWEEP_CSV, &rows.csv())?;
+                write(RunDir::SWEEP_JSON, &json_text)?;
                 if as_json {
                     emit(&(json_text + "\n"))
                 } else {
@@ -305,7 +306,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 ));
             }
             let checkpoint_interval = match &checkpoint_interval {
-                None => run::DEFAULT_CHECKPOINT_INTERVAL,
+                None => run_options::DEFAULT_CHECKPOINT_INTERVAL,
                 Some(t) => {
                     let v = Quantity::<Time>::parse(t)
                         .map_err(|e| bad_arg("--checkpoint-interval", t, e))?
@@ -333,7 +334,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                         "not with --sweep: resume one point with --resume DIR/point-NNNN",
                     ));
                 }
-                let options = run::RunOptions {
+                let options = run_options::RunOptions {
                     force,
                     checkpoint_interval,
                     ..Default::default()
@@ -400,7 +401,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
                 eprintln!("warning: {warning}");
             }
             let dir = std::path::Path::new(&output);
-            let options = run::RunOptions {
+            let options = run_options::RunOptions {
                 force: record.force,
                 checkpoint_interval,
                 resume: resuming,

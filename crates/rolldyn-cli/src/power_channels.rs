@@ -83,8 +83,8 @@ impl From<&ThermalCoupling> for ThermalRunSummary {
         Self {
             updates: t.updates(),
             update_interval_s: t.interval(),
-            initial_temperatures_c: crate::thermal::temperatures(t.initial_temperatures()),
-            final_temperatures_c: crate::thermal::temperatures(t.temperatures()),
+            initial_temperatures_c: crate::thermal_nodes::temperatures(t.initial_temperatures()),
+            final_temperatures_c: crate::thermal_nodes::temperatures(t.temperatures()),
             largest_rate_k_per_s: t.largest_rate(),
         }
     }

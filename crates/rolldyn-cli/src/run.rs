@@ -8,46 +8,27 @@
 //! shows on a terminal. Keys are documented in docs/cli.md.
 
 use crate::Failure;
-use crate::checkpoint::{self, CHECKPOINT_FILE, Position, RECORD_FILE, RunRecord};
+use crate::accuracy::{VERIFY_TIGHTENING, refined_traction_grid};
+use crate::checkpoint::{self, Position, RunRecord, continue_to};
 use crate::recorder::Channels;
 use crate::run_summary::summarise;
+use crate::run_summary::verify;
 pub use crate::run_summary::{CreepMeans, Summary};
 use indicatif::{ProgressBar, ProgressStyle};
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::{Integrator, RunEnd, Sampling, Solver, run_from};
 use rolldyn_case::Case;
 use rolldyn_case::simulation::{Simulation, SolverSettings};
-use rolldyn_io::{SeriesWriter, write_atomic};
+use rolldyn_io::{RunDir, SeriesWriter};
 use std::cell::RefCell;
 use std::io::IsTerminal;
 use std::path::Path;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::atomic::Ordering;
 use std::time::Instant;
 
-pub use rolldyn_case::case::DEFAULT_SAMPLE_RATE;
-/// The time series' directory (a Parquet dataset) in a run directory.
-pub const SERIES_DIR: &str = "timeseries.parquet";
-/// The dataset of the channels recorded at `output.slow_rate`.
-pub const SLOW_SERIES_DIR: &str = "timeseries_slow.parquet";
-
-/// Runs the case and writes the results into `dir`. Returns the summary;
-/// `Err` is bad input (no files written).
-/// Most steps a run may need at least (duration / largest step) before
-/// it is refused without `--force`.
-pub const MAX_STEPS: f64 = 1e9;
-/// Most disk space the recorded samples may take (uncompressed; Parquet's
-/// compression usually halves it) before a run is refused without
-/// `--force` \[bytes\]. The series is written as the run goes, so this
-/// guards the disk against a mistyped sample rate, not the memory.
-pub const MAX_SERIES_BYTES: f64 = 32.0 * 1024.0 * 1024.0 * 1024.0;
-
-/// Largest Hertz pressure a run accepts without `--force` \[Pa\]: 2.4 times
-/// ISO 76's static limit for ball bearings (4.2 GPa, permanent deformation
-/// of 10⁻⁴ D), i.e. 13.5 times the load at that limit. Beyond it no bearing
-/// steel or ceramic carries the load elastically, the Hertz and EHL models
-/// do not apply, and the stiff contacts make the integration crawl.
-pub const MAX_CONTACT_PRESSURE: f64 = 10e9;
+use crate::run_options::{
+    CHECKPOINT_COST_FACTOR, DEFAULT_SAMPLE_RATE, MAX_CONTACT_PRESSURE, RunOptions, check_limits,
+};
 
 /// A warning for a stress law integrated over a strip grid with an odd
 /// number of cells along the rolling direction: a cell then sits on each
@@ -113,90 +94,6 @@ fn pressure_estimate(case: &Case) -> Option<(f64, f64)> {
     Some((q, pressure))
 }
 
-/// Refuses a run that cannot finish or whose time series cannot fit:
-/// at least `duration / step` steps, `duration × rate` rows of `channels`.
-pub(crate) fn check_limits(
-    duration: f64,
-    step: f64,
-    step_key: &str,
-    rate: f64,
-    channels: usize,
-) -> Result<(), String> {
-    let steps = duration / step;
-    if steps > MAX_STEPS {
-        return Err(format!(
-            "{step_key}: the run needs at least {steps:.2e} steps (solver.duration / {step_key}), above the limit of {MAX_STEPS:.0e}; shorten the run, raise the step, or pass --force"
-        ));
-    }
-    let bytes = (duration * rate + 1.0) * channels as f64 * 8.0;
-    if bytes > MAX_SERIES_BYTES {
-        return Err(format!(
-            "output.sample_rate: the time series would take {:.1} GiB on disk before compression ({:.2e} rows × {channels} channels), above the limit of {:.0} GiB; lower the sample rate, shorten the run, or pass --force",
-            bytes / 1024f64.powi(3),
-            duration * rate + 1.0,
-            MAX_SERIES_BYTES / 1024f64.powi(3)
-        ));
-    }
-    Ok(())
-}
-
-/// Wall time between checkpoints when `--checkpoint-interval` is not
-/// given \[s\].
-pub const DEFAULT_CHECKPOINT_INTERVAL: f64 = 30.0;
-/// A checkpoint waits at least this many times as long as the last one
-/// took, so that checkpoints cost at most ~2 % of a run.
-const CHECKPOINT_COST_FACTOR: f64 = 50.0;
-
-/// How `run_case` runs.
-#[derive(Debug, Clone, Default)]
-pub struct RunOptions {
-    /// Skip the step and memory limits.
-    pub force: bool,
-    /// Wall time between checkpoints \[s\].
-    pub checkpoint_interval: f64,
-    /// Continue from `DIR/checkpoint.bin` instead of starting.
-    pub resume: bool,
-    /// With `resume`: the run is extended (`--until`); the checkpoint
-    /// belongs to the record of this hash (the record before the new
-    /// duration), and the extended record replaces `DIR/run.json`.
-    pub extends: Option<u64>,
-    /// The flag that stops the run (a sweep shares one among its points);
-    /// None: a Ctrl-C handler of its own.
-    pub stop: Option<Arc<AtomicBool>>,
-    /// No progress bar (a sweep draws one for all its points).
-    pub quiet: bool,
-    /// Where the run reports its progress: the fraction of the duration
-    /// simulated, as `f64::to_bits` (the Python package reads it from
-    /// another thread for its progress callback).
-    pub progress: Option<Arc<AtomicU64>>,
-    /// After a completed run, run the case again into `DIR/verify/` at ten
-    /// times tighter tolerances and a two-fold finer traction grid, and
-    /// report the changes in the summary's `accuracy.verify`.
-    pub verify: bool,
-    /// Keep the pool's other threads waiting actively while the run
-    /// integrates, when its passes over the balls run in parallel
-    /// ([`rolldyn::threads`]): for a run that has the pool to itself (one
-    /// `rolldyn run`), never for the points of a sweep, which share it.
-    pub active_helpers: bool,
-}
-
-impl RunOptions {
-    /// The flag that stops the run: the given one, or a new one raised by
-    /// Ctrl-C.
-    pub fn stop_flag(&self) -> Arc<AtomicBool> {
-        match &self.stop {
-            Some(stop) => stop.clone(),
-            None => {
-                let stop = Arc::new(AtomicBool::new(false));
-                let handler = stop.clone();
-                // A second handler cannot be installed in the same process; ignore.
-                let _ = ctrlc::set_handler(move || handler.store(true, Ordering::Relaxed));
-                stop
-            }
-        }
-    }
-}
-
 /// A run's summary (its time series is in the run directory).
 pub struct RunOutput {
     pub summary: Summary,
@@ -229,7 +126,7 @@ pub fn run_case_series(
     };
     let mut output = run_once(record, case, dir, &options)?;
     if options.verify && output.summary.status == "completed" {
-        crate::accuracy::verify_run(record, dir, &options, &mut output.summary)?;
+        verify_run(record, dir, &options, &mut output.summary)?;
     }
     Ok(output)
 }
@@ -287,7 +184,7 @@ pub(crate) fn run_once(
         .flatten();
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
     let record_hash = record.hash();
-    let series_dir = dir.join(SERIES_DIR);
+    let series_dir = RunDir::new(dir).series();
     let metadata = [
         ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
         ("case", source.to_string()),
@@ -317,7 +214,7 @@ pub(crate) fn run_once(
         if let Some(slow) = &mut channels.slow {
             slow.writer = Some(
                 SeriesWriter::resume(
-                    &dir.join(SLOW_SERIES_DIR),
+                    &RunDir::new(dir).slow_series(),
                     &slow.recorded,
                     &metadata,
                     slow.rows_for(position.rows),
@@ -333,7 +230,9 @@ pub(crate) fn run_once(
         // A new run in an old directory: its checkpoint is no longer valid.
         remove_checkpoint(dir)?;
         let text = record.to_json().map_err(Failure::Internal)?;
-        write_atomic(&dir.join(RECORD_FILE), text.as_bytes()).map_err(|e| bad(e.to_string()))?;
+        RunDir::new(dir)
+            .write(RunDir::RECORD, text.as_bytes())
+            .map_err(|e| bad(e.to_string()))?;
         channels.writer = Some(
             SeriesWriter::create(
                 &series_dir,
@@ -343,7 +242,7 @@ pub(crate) fn run_once(
             )
             .map_err(|e| bad(e.to_string()))?,
         );
-        let slow_dir = dir.join(SLOW_SERIES_DIR);
+        let slow_dir = RunDir::new(dir).slow_series();
         match &mut channels.slow {
             Some(slow) => {
                 slow.writer = Some(
@@ -486,45 +385,15 @@ pub(crate) fn run_once(
     Ok(RunOutput { summary })
 }
 
-/// Whether a run restored at time `reached` may go on to `duration`: a
-/// resumed run must not be complete, an extended one (`--until`) must
-/// go beyond; an extension's checkpoints belong to the extended record
-/// from now on, so `DIR/run.json` is written again.
-pub(crate) fn continue_to(
-    record: &RunRecord,
-    options: &RunOptions,
-    dir: &Path,
-    reached: f64,
-    duration: f64,
-) -> Result<(), Failure> {
-    let bad = Failure::BadInput;
-    match options.extends {
-        Some(_) if reached >= duration => Err(bad(format!(
-            "--until {duration} s: the run in {} is already at t = {reached} s; extend it beyond that",
-            dir.display()
-        ))),
-        Some(_) => {
-            let text = record.to_json().map_err(Failure::Internal)?;
-            write_atomic(&dir.join(RECORD_FILE), text.as_bytes()).map_err(|e| bad(e.to_string()))
-        }
-        None if reached >= duration => Err(bad(format!(
-            "--resume {}: the run is complete (t = {reached} s); `--until T` extends it",
-            dir.display()
-        ))),
-        None => Ok(()),
-    }
-}
-
 /// Removes `DIR/checkpoint.bin` if there is one.
 fn remove_checkpoint(dir: &Path) -> Result<(), Failure> {
-    let path = dir.join(CHECKPOINT_FILE);
-    match std::fs::remove_file(&path) {
-        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(Failure::BadInput(format!(
+    let run_dir = RunDir::new(dir);
+    run_dir.remove(RunDir::CHECKPOINT).map_err(|e| {
+        Failure::BadInput(format!(
             "cannot remove {}: {e}",
-            path.display()
-        ))),
-        _ => Ok(()),
-    }
+            run_dir.checkpoint().display()
+        ))
+    })
 }
 
 /// What the run's files are written from.
@@ -587,13 +456,96 @@ impl Output<'_> {
         if let Some(position) = position {
             let bytes =
                 checkpoint::encode(self.record_hash, position, solver, model, &channels.stats);
-            write_atomic(&self.dir.join(CHECKPOINT_FILE), &bytes)
+            RunDir::new(self.dir)
+                .write(RunDir::CHECKPOINT, &bytes)
                 .map_err(|e| bad(e.to_string()))?;
         }
         let json =
             crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
-        write_atomic(&self.dir.join("summary.json"), (json + "\n").as_bytes())
+        RunDir::new(self.dir)
+            .write_summary(&json)
             .map_err(|e| bad(e.to_string()))?;
         Ok(summary)
     }
+}
+
+/// `--verify`: the run's case again, into `DIR/verify/`, at ten times
+/// tighter tolerances (the relative and energy tolerances, or rk4's step)
+/// and with the traction's grid refined two-fold each way; the comparison
+/// goes into `summary.accuracy.verify` and `summary.json` is written
+/// again.
+fn verify_run(
+    record: &RunRecord,
+    dir: &Path,
+    options: &RunOptions,
+    summary: &mut Summary,
+) -> Result<(), Failure> {
+    let mut tight = record.clone();
+    let sets = &mut tight.overrides.set;
+    match summary.relative_tolerance {
+        Some(rtol) => {
+            sets.push(format!(
+                "solver.relative_tolerance={:e}",
+                (rtol / VERIFY_TIGHTENING).max(1e-12)
+            ));
+            if let Some(eps) = summary.energy_tolerance {
+                sets.push(format!(
+                    "solver.energy_tolerance={:e}",
+                    (eps / VERIFY_TIGHTENING).max(1e-9)
+                ));
+            }
+        }
+        None => sets.push(format!(
+            "solver.time_step={:e} s",
+            (summary.max_step_s / VERIFY_TIGHTENING).max(1e-10)
+        )),
+    }
+    let mut case = tight
+        .overrides
+        .load_text(&tight.source, tight.case_text.as_deref())?;
+    let traction_grid = match refined_traction_grid(&case) {
+        Some((grid_sets, description)) => {
+            tight.overrides.set.extend(grid_sets);
+            case = tight
+                .overrides
+                .load_text(&tight.source, tight.case_text.as_deref())?;
+            Some(description)
+        }
+        None => None,
+    };
+    let verify_dir = dir.join("verify");
+    let quiet = RunOptions {
+        resume: false,
+        quiet: true,
+        progress: None,
+        verify: false,
+        ..options.clone()
+    };
+    let reference = run_once(&tight, &case, &verify_dir, &quiet)?.summary;
+    if reference.status == "interrupted" {
+        return Err(Failure::Interrupted(format!(
+            "--verify interrupted; {} holds the completed run, {} what the verifying run computed",
+            dir.display(),
+            verify_dir.display()
+        )));
+    }
+    if reference.status != "completed" {
+        return Err(Failure::Model(format!(
+            "--verify: the run at ten times tighter tolerances and a finer traction grid in {} ended {}: {}",
+            verify_dir.display(),
+            reference.status,
+            reference.error.unwrap_or_default()
+        )));
+    }
+    summary.accuracy.verify = Some(verify(
+        summary,
+        &reference,
+        verify_dir.display().to_string(),
+        reference.energy_tolerance,
+        traction_grid,
+    ));
+    let json = crate::finite::to_json(&*summary).map_err(|e| Failure::Internal(e.to_string()))?;
+    RunDir::new(dir)
+        .write_summary(&json)
+        .map_err(|e| Failure::BadInput(e.to_string()))
 }

@@ -10,15 +10,12 @@
 
 use crate::Failure;
 use crate::accuracy::{Change, VERIFY_LIMIT_MEANS, VERIFY_TIGHTENING, Verification};
-use crate::checkpoint::{self, Position, RECORD_FILE, RunRecord};
+use crate::checkpoint::{self, Position, RunRecord};
 use crate::recorder::Channels;
-use crate::run::{DEFAULT_SAMPLE_RATE, RunOptions, SERIES_DIR};
+use crate::run_options::{CHECKPOINT_COST_FACTOR, DEFAULT_SAMPLE_RATE, RunOptions, check_limits};
 use crate::run_stats::RunStatistics;
 use std::cell::RefCell;
 
-/// A checkpoint waits at least this many times as long as the last one
-/// took (as a single bearing's run).
-const CHECKPOINT_COST_FACTOR: f64 = 50.0;
 use indicatif::{ProgressBar, ProgressStyle};
 use rolldyn::dynamics::ContactSample;
 use rolldyn::dynamics::shaft::ShaftDynamics;
@@ -27,7 +24,7 @@ use rolldyn::quasistatic::system::Orientation;
 use rolldyn_case::Case;
 use rolldyn_case::case::kind_name;
 use rolldyn_case::simulation::SetSimulation;
-use rolldyn_io::{SeriesWriter, TimeSeries, write_atomic};
+use rolldyn_io::{RunDir, SeriesWriter, TimeSeries};
 use serde::Serialize;
 use std::io::IsTerminal;
 use std::path::Path;
@@ -149,7 +146,7 @@ pub fn run(
         series.channel(name, unit);
     }
     if !options.force {
-        crate::run::check_limits(
+        check_limits(
             duration,
             settings.max_step,
             settings.step_key(),
@@ -181,7 +178,7 @@ pub fn run(
         ("case", record.source.clone()),
         ("title", case.title.clone().unwrap_or_default()),
     ];
-    let series_dir = dir.join(SERIES_DIR);
+    let series_dir = RunDir::new(dir).series();
     let mut axial_sums = vec![0.0; count];
     let (next_sample, wall_before, writer) = if options.resume {
         let mut stats: Vec<&mut RunStatistics> =
@@ -195,7 +192,7 @@ pub fn run(
             &mut axial_sums,
         )
         .map_err(bad)?;
-        crate::run::continue_to(record, options, dir, solver.t(), duration)?;
+        checkpoint::continue_to(record, options, dir, solver.t(), duration)?;
         let writer = SeriesWriter::resume(
             &series_dir,
             &series,
@@ -208,9 +205,11 @@ pub fn run(
     } else {
         std::fs::create_dir_all(dir)
             .map_err(|e| bad(format!("cannot create {}: {e}", dir.display())))?;
-        let _ = std::fs::remove_file(dir.join(checkpoint::CHECKPOINT_FILE));
+        let _ = std::fs::remove_file(RunDir::new(dir).checkpoint());
         let text = record.to_json().map_err(Failure::Internal)?;
-        write_atomic(&dir.join(RECORD_FILE), text.as_bytes()).map_err(|e| bad(e.to_string()))?;
+        RunDir::new(dir)
+            .write(RunDir::RECORD, text.as_bytes())
+            .map_err(|e| bad(e.to_string()))?;
         let writer = SeriesWriter::create(&series_dir, &series, &metadata, case.output.float32)
             .map_err(|e| bad(e.to_string()))?;
         (0, 0.0, writer)
@@ -431,13 +430,15 @@ impl Context<'_> {
                 &stats,
                 &recording.axial_sums,
             );
-            write_atomic(&self.dir.join(checkpoint::CHECKPOINT_FILE), &bytes)
+            RunDir::new(self.dir)
+                .write(RunDir::CHECKPOINT, &bytes)
                 .map_err(|e| bad(e.to_string()))?;
         }
         let summary = self.summarise(system, solver, recording, end, wall);
         let json =
             crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
-        write_atomic(&self.dir.join("summary.json"), (json + "\n").as_bytes())
+        RunDir::new(self.dir)
+            .write_summary(&json)
             .map_err(|e| bad(e.to_string()))?;
         Ok(summary)
     }
@@ -639,7 +640,8 @@ pub fn run_and_verify(
         status: if worst <= 1.0 { "ok" } else { "warning" },
     });
     let json = crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
-    write_atomic(&dir.join("summary.json"), (json + "\n").as_bytes())
+    RunDir::new(dir)
+        .write_summary(&json)
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     Ok(summary)
 }

@@ -4,8 +4,11 @@
 //! counters, built from the statistics `run_stats` accumulates while
 //! running.
 
+use crate::accuracy::{
+    Change, VERIFY_LIMIT_MEANS, VERIFY_LIMIT_VIBRATION, VIBRATION_NOISE_FACTOR, Verification,
+};
 use crate::power_channels::PowerSummary;
-use crate::run::DEFAULT_SAMPLE_RATE;
+use crate::run_options::DEFAULT_SAMPLE_RATE;
 use crate::run_stats::RunStatistics;
 use crate::vibration::VibrationSummary;
 use rolldyn::dynamics::BearingModel;
@@ -261,5 +264,110 @@ pub(crate) fn summarise(
             settings.relative_tolerance,
             settings.energy_tolerance,
         ),
+    }
+}
+
+/// The quantities `--verify` compares, their limits and the magnitude
+/// below which a value is not compared.
+fn compared(summary: &Summary) -> Vec<(&'static str, f64, f64, f64)> {
+    let v = &summary.vibration;
+    let (means, vibration) = (VERIFY_LIMIT_MEANS, VERIFY_LIMIT_VIBRATION);
+    let zero = 1e-12;
+    let noise_mm_s = VIBRATION_NOISE_FACTOR * summary.relative_tolerance.unwrap_or(0.0);
+    let mut out = vec![
+        (
+            "mean_cage_speed_rpm",
+            summary.mean_cage_speed_rpm,
+            means,
+            zero,
+        ),
+        ("mean_load_inner_n", summary.mean_load_inner_n, means, zero),
+        ("max_load_inner_n", summary.max_load_inner_n, means, zero),
+        ("mean_load_outer_n", summary.mean_load_outer_n, means, zero),
+        ("max_load_outer_n", summary.max_load_outer_n, means, zero),
+        // The exact mean (the dissipated energy's increase over the
+        // window), not the mean of the sampled components: impacts make
+        // those depend on where the samples fall.
+        (
+            "mean_dissipated_power_w",
+            summary.power.mean_dissipated_power_w,
+            means,
+            zero,
+        ),
+    ];
+    for (key, value) in v.rms_values() {
+        out.push((key, value, vibration, noise_mm_s.max(zero)));
+    }
+    // Envelope lines of a run with a spall; a line below a tenth of the
+    // strongest is the spectrum's floor, not a signature.
+    if let Some(envelope) = &summary.surface_lines.envelope_lines {
+        let strongest = envelope
+            .lines
+            .iter()
+            .map(|l| l.amplitude_m_s2)
+            .fold(0.0, f64::max);
+        for (line, &(_, key)) in envelope.lines.iter().zip(&crate::vibration::ENVELOPE_LINES) {
+            out.push((
+                key,
+                line.amplitude_m_s2,
+                vibration,
+                (0.1 * strongest).max(zero),
+            ));
+        }
+    }
+    // The housing sensor's record (its noise is the same draw in both runs).
+    if let Some(sensor) = &summary.sensor {
+        out.push(("sensor.rms_m_s2", sensor.rms_m_s2, vibration, zero));
+    }
+    // A whirl below the position tolerance (rtol × 1 µm) is noise too.
+    let noise_m = 1e-6 * VIBRATION_NOISE_FACTOR * summary.relative_tolerance.unwrap_or(0.0);
+    out.push((
+        "cage_whirl_radius_mean_m",
+        v.cage_whirl_radius_mean_m,
+        vibration,
+        noise_m.max(zero),
+    ));
+    out
+}
+
+/// Compares a run with its verifying run. Quantities below their noise
+/// magnitude in both runs are left out: a planar run's axial vibration, an
+/// unloaded ring, the integration noise of a bearing without vibration.
+pub fn verify(
+    run: &Summary,
+    reference: &Summary,
+    directory: String,
+    energy_tolerance: Option<f64>,
+    traction_grid: Option<String>,
+) -> Verification {
+    let mut changes = Vec::new();
+    let mut worst: f64 = 0.0;
+    for ((key, value, limit, noise), (_, reference_value, _, _)) in
+        compared(run).into_iter().zip(compared(reference))
+    {
+        let quiet = value.abs() < noise && reference_value.abs() < noise;
+        if !value.is_finite() || !reference_value.is_finite() || quiet || reference_value == 0.0 {
+            continue;
+        }
+        let relative_change = (value - reference_value).abs() / reference_value.abs();
+        worst = worst.max(relative_change / limit);
+        changes.push(Change {
+            key: key.into(),
+            value,
+            reference: reference_value,
+            relative_change,
+            limit,
+        });
+    }
+    Verification {
+        relative_tolerance: reference.relative_tolerance,
+        energy_tolerance,
+        traction_grid,
+        directory,
+        wall_time_s: reference.wall_time_s,
+        energy_balance_relative_error: reference.energy_balance_relative_error,
+        changes,
+        worst_ratio_to_limit: worst,
+        status: if worst <= 1.0 { "ok" } else { "warning" },
     }
 }

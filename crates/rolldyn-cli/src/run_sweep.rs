@@ -17,13 +17,16 @@
 //! single run does) and starts no more; their rows say so.
 
 use crate::checkpoint::RunRecord;
-use crate::quasistatic::{Swept, conditions, parse_sweep};
-use crate::run::{RunOptions, run_case};
+use crate::run::run_case;
+use crate::run_options::RunOptions;
+use crate::sweep_grid::{Swept, parse_sweep};
 use crate::{CaseArgs, CaseOverrides, Failure, bad_arg, emit, html_report};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use rolldyn::math::random::SplitMix64;
 use rolldyn_case::Case;
+use rolldyn_case::simulation::conditions;
+use rolldyn_io::RunDir;
 use serde_json::{Map, Value};
 use std::fmt::Write;
 use std::io::IsTerminal;
@@ -312,7 +315,7 @@ pub fn command(
     if report {
         for row in &rows {
             let point = dir.join(row["point"].as_str().unwrap_or_default());
-            if point.join(rolldyn_report::run::SUMMARY_FILE).is_file() {
+            if RunDir::new(&point).has_summary() {
                 html_report::write(&point)?;
             }
         }
@@ -538,7 +541,7 @@ pub fn write_tables_labelled(
         csv.push_str(&cells.join(","));
         csv.push('\n');
     }
-    for (name, text) in [("sweep.json", json), ("sweep.csv", csv)] {
+    for (name, text) in [(RunDir::SWEEP_JSON, json), (RunDir::SWEEP_CSV, csv)] {
         rolldyn_io::write_atomic(&dir.join(name), text.as_bytes())
             .map_err(|e| Failure::BadInput(e.to_string()))?;
     }

@@ -14,6 +14,7 @@ use rolldyn::signal::{
     CharacteristicFrequencies, Spectrum, Window, amplitude_spectrum, band_rms, band_velocity_rms,
     envelope_spectrum, find_peaks, spectrogram, welch_psd,
 };
+use rolldyn_io::RunDir;
 use serde::Serialize;
 use std::fmt::Write;
 use std::path::Path;
@@ -128,9 +129,9 @@ struct RunSummary {
 pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
     if args.list {
         let dir = Path::new(&args.dir);
-        let mut series = rolldyn_io::read_schema(&dir.join(crate::run::SERIES_DIR))
+        let mut series = rolldyn_io::read_schema(&RunDir::new(dir).series())
             .map_err(|e| Failure::BadInput(e.to_string()))?;
-        let slow = dir.join(crate::run::SLOW_SERIES_DIR);
+        let slow = RunDir::new(dir).slow_series();
         if slow.is_dir() {
             let more =
                 rolldyn_io::read_schema(&slow).map_err(|e| Failure::BadInput(e.to_string()))?;
@@ -173,7 +174,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     let dir = Path::new(&args.dir);
     // Only the time and the channel analysed: a long record is not
     // loaded whole.
-    let mut path = dir.join(crate::run::SERIES_DIR);
+    let mut path = RunDir::new(dir).series();
     let mut channels =
         rolldyn_io::read_schema(&path).map_err(|e| Failure::BadInput(e.to_string()))?;
     let channel = match &args.channel {
@@ -183,7 +184,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         }
         None => crate::vibration::ENVELOPE_CHANNEL.to_string(),
     };
-    let slow = dir.join(crate::run::SLOW_SERIES_DIR);
+    let slow = RunDir::new(dir).slow_series();
     if channels.unit(&channel).is_none() && slow.is_dir() {
         // A channel recorded at output.slow_rate.
         path = slow;
@@ -203,7 +204,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     }
     let series = rolldyn_io::read_columns(&path, Some(&["time_s", channel.as_str()]))
         .map_err(|e| Failure::BadInput(e.to_string()))?;
-    let summary_path = dir.join("summary.json");
+    let summary_path = RunDir::new(dir).summary();
     let summary: RunSummary = std::fs::read_to_string(&summary_path)
         .map_err(|e| e.to_string())
         .and_then(|t| serde_json::from_str(&t).map_err(|e| e.to_string()))

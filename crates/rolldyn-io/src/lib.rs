@@ -10,17 +10,21 @@
 //! * [`read_parquet`], [`read_columns`], [`for_each_batch`],
 //!   [`for_each_row`]: a file or dataset back, whole, by columns or
 //!   streamed (the post-processing commands, e.g. `rolldyn spectrum`).
+//! * [`RunDir`]: a run directory's files by name (`run_dir`'s module doc
+//!   has the layout).
 //! * [`write_atomic`]: any bytes, written to a temporary file in the same
 //!   directory and renamed, so a reader never sees a half-written result.
 
 use arrow_array::{ArrayRef, Float64Array, RecordBatch};
 use arrow_schema::{DataType, Field, Schema};
 mod dataset;
+mod run_dir;
 
 pub use dataset::{
     SeriesWriter, float_columns, for_each_batch, for_each_row, part_files, part_rows, read_columns,
     read_parquet, read_schema, row_count,
 };
+pub use run_dir::RunDir;
 use std::collections::HashMap;
 use std::path::Path;
 use std::sync::Arc;

@@ -26,7 +26,8 @@ use rolldyn_cli::contact::{ContactArgs, evaluate};
 use rolldyn_cli::power::{self, PowerArgs};
 use rolldyn_cli::quasistatic::{self, ControlChoice};
 use rolldyn_cli::report::{CheckReport, FrequencyReport};
-use rolldyn_cli::run::{RunOptions, run_case_series};
+use rolldyn_cli::run::run_case_series;
+use rolldyn_cli::run_options::RunOptions;
 use rolldyn_cli::spectrum::{self, SpectrumArgs};
 use rolldyn_cli::thermal::{self, ThermalArgs};
 use rolldyn_cli::traction::{self, TractionArgs};
@@ -356,7 +357,7 @@ fn run_options(force: bool, verify: bool) -> (RunOptions, Arc<AtomicBool>, Arc<A
     let fraction = Arc::new(AtomicU64::new(0f64.to_bits()));
     let options = RunOptions {
         force,
-        checkpoint_interval: rolldyn_cli::run::DEFAULT_CHECKPOINT_INTERVAL,
+        checkpoint_interval: rolldyn_cli::run_options::DEFAULT_CHECKPOINT_INTERVAL,
         stop: Some(stop.clone()),
         quiet: true,
         progress: Some(fraction.clone()),
@@ -466,9 +467,9 @@ fn run(
 #[pyfunction]
 fn open_run(directory: &str) -> PyResult<String> {
     let dir = Path::new(directory);
-    let summary = std::fs::read_to_string(dir.join(rolldyn_report::run::SUMMARY_FILE))
+    let summary = std::fs::read_to_string(rolldyn_io::RunDir::new(dir).summary())
         .map_err(|e| CaseError::new_err(format!("{directory}: no summary.json: {e}")))?;
-    rolldyn_io::read_schema(&dir.join(rolldyn_cli::run::SERIES_DIR))
+    rolldyn_io::read_schema(&rolldyn_io::RunDir::new(dir).series())
         .map_err(|e| CaseError::new_err(e.to_string()))?;
     Ok(summary)
 }
@@ -589,6 +590,9 @@ fn _rolldyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CaseError", m.py().get_type::<CaseError>())?;
     m.add("ModelError", m.py().get_type::<ModelError>())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    // The run directory's names, from the one place that defines them.
+    m.add("SERIES_DIR", rolldyn_io::RunDir::SERIES)?;
+    m.add("SLOW_SERIES_DIR", rolldyn_io::RunDir::SLOW_SERIES)?;
     m.add_function(wrap_pyfunction!(preset_names, m)?)?;
     m.add_function(wrap_pyfunction!(preset_text, m)?)?;
     m.add_function(wrap_pyfunction!(catalogue_text, m)?)?;

@@ -19,13 +19,12 @@ pub mod set;
 pub mod svg;
 pub mod sweep;
 pub mod vibration;
+pub mod vibration_data;
 
+use rolldyn_io::RunDir;
 use std::fmt::Write;
 use std::path::Path;
 use svg::{Plot, escape};
-
-/// File name of the report in its directory.
-pub const REPORT_FILE: &str = "report.html";
 
 /// Why a report could not be made.
 #[derive(Debug, thiserror::Error)]
@@ -234,10 +233,10 @@ fn block_html(out: &mut String, block: &Block) {
 /// `timeseries.parquet`) or a sweep (`sweep.json`). `case_description`
 /// is the case as the CLI describes it (`rolldyn check`), when known.
 pub fn report_for(dir: &Path, case_description: Option<String>) -> Result<Report, ReportError> {
-    if dir.join(sweep::SWEEP_FILE).is_file() {
+    if RunDir::new(dir).has_sweep() {
         sweep::report(dir)
-    } else if dir.join(run::SUMMARY_FILE).is_file() {
-        if set::is_set_summary(&read_json(&dir.join(run::SUMMARY_FILE))?) {
+    } else if RunDir::new(dir).has_summary() {
+        if set::is_set_summary(&read_json(&RunDir::new(dir).summary())?) {
             set::report(dir, case_description)
         } else {
             run::report(dir, case_description)

@@ -9,13 +9,11 @@
 //! values. Each is one function of [`SECTIONS`]; a section whose channels
 //! the run did not record is left out.
 
-use crate::run_data::BALANCE_ERROR;
-pub use crate::run_data::{
-    PLOT_ROWS, RECORD_FILE, RunData, SLOW_TIMESERIES_FILE, SUMMARY_FILE, TIMESERIES_FILE,
-    read_for_plots,
-};
+use crate::run_data::{BALANCE_ERROR, rows};
+pub use crate::run_data::{PLOT_ROWS, RunData, read_for_plots};
 use crate::svg::{Plot, Series, Style};
 use crate::{Block, Report, ReportError, Section, cell, read_json};
+use rolldyn_io::RunDir;
 use serde_json::Value;
 use std::path::Path;
 
@@ -40,8 +38,8 @@ pub const SECTIONS: [SectionBuilder; 11] = [
 
 /// Reads a run directory and builds its report.
 pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, ReportError> {
-    let summary = read_json(&dir.join(SUMMARY_FILE))?;
-    let series_path = dir.join(TIMESERIES_FILE);
+    let summary = read_json(&RunDir::new(dir).summary())?;
+    let series_path = RunDir::new(dir).series();
     let window = averaging_window(&summary);
     let read = |path: &Path| {
         read_for_plots(path, window).map_err(|e| ReportError::Read {
@@ -50,7 +48,7 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
         })
     };
     let (series, mut window_means, orbit) = read(&series_path)?;
-    let slow_path = dir.join(SLOW_TIMESERIES_FILE);
+    let slow_path = RunDir::new(dir).slow_series();
     let slow = if slow_path.is_dir() {
         let (slow, means, _) = read(&slow_path)?;
         for (name, mean) in means {
@@ -61,12 +59,12 @@ pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, Re
         None
     };
     let (vibration, run_up) =
-        crate::vibration::read_records(&series_path, &summary, &series, window).map_err(|e| {
-            ReportError::Read {
+        crate::vibration_data::read_records(&series_path, &summary, &series, window).map_err(
+            |e| ReportError::Read {
                 path: series_path.display().to_string(),
                 message: e.to_string(),
-            }
-        })?;
+            },
+        )?;
     let record = read_record(dir)?;
     Ok(build(&RunData {
         summary,
@@ -94,9 +92,10 @@ pub(crate) fn averaging_window(summary: &Value) -> [f64; 2] {
 
 /// `DIR/run.json`, when present.
 pub(crate) fn read_record(dir: &Path) -> Result<Option<Value>, ReportError> {
-    dir.join(RECORD_FILE)
+    RunDir::new(dir)
+        .record()
         .is_file()
-        .then(|| read_json(&dir.join(RECORD_FILE)))
+        .then(|| read_json(&RunDir::new(dir).record()))
         .transpose()
 }
 
@@ -179,13 +178,6 @@ fn sentence(text: &str) -> String {
         .next()
         .map(|c| c.to_uppercase().chain(chars).collect())
         .unwrap_or_default()
-}
-
-pub(crate) fn rows(data: &RunData, keys: &[(&str, &str)]) -> Vec<Vec<String>> {
-    keys.iter()
-        .filter(|(key, _)| data.summary.get(*key).is_some())
-        .map(|(key, label)| vec![label.to_string(), cell(data.number(key)), key.to_string()])
-        .collect()
 }
 
 fn summary(data: &RunData) -> Option<Section> {

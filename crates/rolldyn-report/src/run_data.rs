@@ -2,20 +2,12 @@
 //! series thinned for plotting with each channel's window mean, the cage
 //! orbit, and `run.json` ([`RunData`]).
 
+use crate::cell;
 use crate::svg::Series;
 use rolldyn_io::{TimeSeries, float_columns, for_each_batch, read_schema, row_count};
 use serde_json::Value;
 use std::collections::{HashMap, VecDeque};
 use std::path::Path;
-
-/// File names of a run directory.
-pub const SUMMARY_FILE: &str = "summary.json";
-/// The time series' file name.
-pub const TIMESERIES_FILE: &str = "timeseries.parquet";
-/// The channels recorded at `output.slow_rate`, when there are any.
-pub const SLOW_TIMESERIES_FILE: &str = "timeseries_slow.parquet";
-/// How the run was asked for (case text, overrides).
-pub const RECORD_FILE: &str = "run.json";
 
 /// What the sections read.
 pub struct RunData {
@@ -38,10 +30,10 @@ pub struct RunData {
     pub case_description: Option<String>,
     /// Time and the inner ring's vertical acceleration over the averaging
     /// window, unreduced, for a run with a spall ([`crate::vibration`]).
-    pub vibration: Option<crate::vibration::Record>,
+    pub vibration: Option<crate::vibration_data::Record>,
     /// The same over the whole run (its last
-    /// [`crate::vibration::MAX_SAMPLES`]) when the shaft speed changes.
-    pub run_up: Option<crate::vibration::Record>,
+    /// [`crate::vibration_data::MAX_SAMPLES`]) when the shaft speed changes.
+    pub run_up: Option<crate::vibration_data::Record>,
 }
 
 impl RunData {
@@ -260,4 +252,12 @@ pub fn read_with_orbit(
         .collect();
     let orbit = (!orbit.is_empty()).then(|| orbit.into_iter().unzip());
     Ok((series, means, orbit))
+}
+
+/// Table rows (label, value, key) of the summary's `keys` that it has.
+pub(crate) fn rows(data: &RunData, keys: &[(&str, &str)]) -> Vec<Vec<String>> {
+    keys.iter()
+        .filter(|(key, _)| data.summary.get(*key).is_some())
+        .map(|(key, label)| vec![label.to_string(), cell(data.number(key)), key.to_string()])
+        .collect()
 }

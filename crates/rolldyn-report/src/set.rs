@@ -9,9 +9,10 @@
 //! one bearing the case, solver statistics, energy balance and all summary
 //! values ([`crate::run`]).
 
-use crate::run::{RunData, SUMMARY_FILE, TIMESERIES_FILE};
+use crate::run::RunData;
 use crate::svg::{Plot, Series};
 use crate::{Report, ReportError, Section, cell, read_json};
+use rolldyn_io::RunDir;
 use serde_json::Value;
 use std::path::Path;
 
@@ -22,8 +23,8 @@ pub fn is_set_summary(summary: &Value) -> bool {
 
 /// Reads a set's run directory and builds its report.
 pub fn report(dir: &Path, case_description: Option<String>) -> Result<Report, ReportError> {
-    let summary = read_json(&dir.join(SUMMARY_FILE))?;
-    let series_path = dir.join(TIMESERIES_FILE);
+    let summary = read_json(&RunDir::new(dir).summary())?;
+    let series_path = RunDir::new(dir).series();
     let window = crate::run::averaging_window(&summary);
     let (series, window_means, orbit) =
         crate::run_data::read_with_orbit(&series_path, window, ["shaft_y_m", "shaft_z_m"])
@@ -104,7 +105,7 @@ fn summary(data: &RunData) -> Option<Section> {
     }
     Some(s.table(
         &["quantity", "value", "summary.json key"],
-        crate::run::rows(
+        crate::run_data::rows(
             data,
             &[
                 ("simulated_time_s", "simulated time [s]"),

@@ -11,11 +11,9 @@
 
 use crate::svg::{Plot, Series};
 use crate::{Report, ReportError, Section, cell, read_json};
+use rolldyn_io::RunDir;
 use serde_json::{Map, Value};
 use std::path::Path;
-
-/// The sweep's file name.
-pub const SWEEP_FILE: &str = "sweep.json";
 
 /// Input columns a sweep can vary, with their axis labels.
 const INPUTS: [(&str, &str); 3] = [
@@ -26,7 +24,7 @@ const INPUTS: [(&str, &str); 3] = [
 
 /// Reads a sweep directory and builds its report.
 pub fn report(dir: &Path) -> Result<Report, ReportError> {
-    let path = dir.join(SWEEP_FILE);
+    let path = RunDir::new(dir).file(RunDir::SWEEP_JSON);
     let rows = match read_json(&path)? {
         Value::Array(rows) => rows
             .into_iter()

@@ -4,9 +4,10 @@
 
 #![allow(clippy::unwrap_used)]
 
+use rolldyn_io::RunDir;
 use rolldyn_io::{TimeSeries, write_parquet};
 use rolldyn_report::svg::{Plot, Series};
-use rolldyn_report::{REPORT_FILE, Report, Section, report_for};
+use rolldyn_report::{Report, Section, report_for};
 use std::path::PathBuf;
 
 fn temp_dir(tag: &str) -> PathBuf {
@@ -197,7 +198,7 @@ fn not_a_result_directory_is_named() {
         e.contains(&dir.display().to_string()) && e.contains("summary.json"),
         "{e}"
     );
-    assert_eq!(REPORT_FILE, "report.html");
+    assert_eq!(RunDir::REPORT, "report.html");
 }
 
 #[test]

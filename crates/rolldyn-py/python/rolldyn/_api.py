@@ -271,8 +271,9 @@ def quasistatic_sweep(case: Optional[Case], grid: Mapping[str, Union[str, Iterab
     return SweepResult(rows, None)
 
 
-SERIES_DIR = "timeseries.parquet"
-SLOW_SERIES_DIR = "timeseries_slow.parquet"
+# The run directory's dataset names (defined once, in rolldyn-io's RunDir).
+SERIES_DIR: str = _rolldyn.SERIES_DIR
+SLOW_SERIES_DIR: str = _rolldyn.SLOW_SERIES_DIR
 
 
 def _dataset(directory: str, name: str = SERIES_DIR):

@@ -8,6 +8,8 @@ the built-in default case or the file named by ``source``) and its
 from typing import Any, Callable, Optional
 
 __version__: str
+SERIES_DIR: str
+SLOW_SERIES_DIR: str
 
 class CaseError(ValueError):
     """Bad input: names the file, line, key, value and rule."""

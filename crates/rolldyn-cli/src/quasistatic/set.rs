@@ -4,8 +4,8 @@
 //! life, and the system life; sweeps over speed and the shaft loads. Keys
 //! in docs/cli.md.
 
-use crate::quasistatic::QuasiStaticReport;
-use crate::quasistatic_sweep::{Swept, grid};
+use super::single::QuasiStaticReport;
+use crate::sweep_grid::{Swept, grid};
 use crate::{Failure, simulation_failure};
 use rayon::prelude::*;
 use rolldyn::operating::Loads;
@@ -177,7 +177,7 @@ impl ArrangementReport {
     /// bearings and the series lives; no set, spacing or preload (a
     /// `[shaft]` system: kind "shaft").
     fn of_system(eq: &SystemEquilibrium, bearings: Vec<SetBearingRow>) -> Self {
-        let lives = |pick: fn(&crate::quasistatic::RatingLife) -> Option<f64>| {
+        let lives = |pick: fn(&super::single::RatingLife) -> Option<f64>| {
             let each: Vec<Option<f64>> = bearings
                 .iter()
                 .map(|b| match &b.quasistatic {
@@ -350,7 +350,7 @@ impl SetReport {
                 b.quasistatic
                     .as_ref()
                     .map_or((0.0, 0.0, f64::NAN, f64::NAN), |q| {
-                        let max = |g: fn(&crate::quasistatic::BallRow) -> f64| {
+                        let max = |g: fn(&super::single::BallRow) -> f64| {
                             q.balls.iter().map(g).fold(0.0, f64::max)
                         };
                         (

@@ -5,19 +5,19 @@
 //! warm-up from the reference temperature at the converged heat sources.
 //! Text or JSON (keys in docs/cli.md).
 
-use crate::power::PowerReport;
+pub mod set;
+
+use crate::power_report::PowerReport;
+use crate::thermal_nodes::temperatures;
 use crate::{CaseArgs, Failure, bad_arg, emit, json};
 use clap::Args;
 use rolldyn::thermal::BearingThermal;
-use rolldyn::thermal::bearing::NODES;
 use rolldyn::thermal::coupled::{CoupledSolution, heat_sources};
 use rolldyn_case::Case;
 use rolldyn_case::units::{Quantity, Time};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-
-const KELVIN: f64 = 273.15;
 
 /// Arguments of `rolldyn thermal`.
 #[derive(Args, Debug)]
@@ -62,15 +62,6 @@ pub struct ThermalReport {
     pub transient: Option<Vec<TransientRow>>,
 }
 
-/// Node temperatures in °C by node name.
-pub fn temperatures(t: &[f64; 10]) -> BTreeMap<&'static str, f64> {
-    NODES.iter().zip(t).map(|(n, v)| (*n, v - KELVIN)).collect()
-}
-
-fn bad(e: rolldyn_case::case::Invalid) -> Failure {
-    Failure::BadInput(format!("{}: {}", e.key, e.rule))
-}
-
 /// The coupled steady state of a case.
 pub fn solve(case: &Case) -> Result<CoupledSolution, Failure> {
     rolldyn_case::simulation::thermal_steady_state(case).map_err(crate::simulation_failure)
@@ -91,7 +82,7 @@ pub enum ThermalOutput {
     /// One bearing.
     Bearing(Box<ThermalReport>),
     /// A set (`[arrangement]`).
-    Set(crate::thermal_set::SetThermalReport),
+    Set(set::SetThermalReport),
 }
 
 impl ThermalOutput {
@@ -116,7 +107,7 @@ pub fn report(args: &ThermalArgs) -> Result<ThermalOutput, Failure> {
             ));
         }
     }
-    if let Some(report) = crate::thermal_set::report(&case)? {
+    if let Some(report) = set::report(&case)? {
         return Ok(ThermalOutput::Set(report));
     }
     Ok(ThermalOutput::Bearing(Box::new(bearing_report(
@@ -150,7 +141,7 @@ fn bearing_report(args: &ThermalArgs, case: &Case) -> Result<ThermalReport, Fail
         ));
     }
     let s = solve(case)?;
-    let inputs = case.thermal_inputs().map_err(bad)?;
+    let inputs = case.thermal_inputs().map_err(crate::invalid)?;
     let transient = match duration {
         None => None,
         Some(d) => {

@@ -5,8 +5,8 @@
 //! docs/cli.md).
 
 use crate::Failure;
-use crate::power::PowerReport;
-use crate::thermal::temperatures;
+use crate::power_report::PowerReport;
+use crate::thermal_nodes::temperatures;
 use rolldyn::quasistatic::system::{MountedBearing, Orientation};
 use rolldyn_case::Case;
 use rolldyn_case::case::{Preload, kind_name};

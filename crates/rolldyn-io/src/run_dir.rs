@@ -1,0 +1,152 @@
+//! The run directory: what `rolldyn run` writes, and what `report`,
+//! `spectrum`, `--resume` and the Python package read back.
+//!
+//! ```text
+//! DIR/run.json                  the run's record: case text, overrides, options (written first)
+//! DIR/timeseries.parquet/       the time series, a dataset of part files (crate doc)
+//! DIR/timeseries_slow.parquet/  slow channels (thermal network, spall lengths), when present
+//! DIR/checkpoint.bin            state and statistics at the last checkpoint (until the run ends)
+//! DIR/summary.json              the summary, rewritten at every checkpoint and at the end
+//! DIR/report.html               the HTML report (`--report`, `rolldyn report`)
+//! DIR/sweep.json, sweep.csv     a sweep's table (a sweep's directory instead of the above)
+//! ```
+//!
+//! The names are defined here once; every writer and reader of a run
+//! directory goes through [`RunDir`]. Files other than the dataset are
+//! written whole and atomically ([`write_atomic`]).
+
+use crate::{InputError, OutputError, write_atomic};
+use std::path::{Path, PathBuf};
+
+/// A run directory (it need not exist yet).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RunDir {
+    path: PathBuf,
+}
+
+impl RunDir {
+    /// The run's record (case text, overrides, options).
+    pub const RECORD: &'static str = "run.json";
+    /// The checkpoint (state and statistics).
+    pub const CHECKPOINT: &'static str = "checkpoint.bin";
+    /// The summary.
+    pub const SUMMARY: &'static str = "summary.json";
+    /// The time series (a Parquet dataset: a directory of part files).
+    pub const SERIES: &'static str = "timeseries.parquet";
+    /// The slow channels' time series (a dataset like [`Self::SERIES`]).
+    pub const SLOW_SERIES: &'static str = "timeseries_slow.parquet";
+    /// The HTML report.
+    pub const REPORT: &'static str = "report.html";
+    /// A sweep's table as JSON.
+    pub const SWEEP_JSON: &'static str = "sweep.json";
+    /// A sweep's table as CSV.
+    pub const SWEEP_CSV: &'static str = "sweep.csv";
+
+    /// The run directory at `path`.
+    pub fn new(path: impl Into<PathBuf>) -> Self {
+        Self { path: path.into() }
+    }
+
+    /// The directory itself.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// The path of one of the directory's files (one of the constants).
+    pub fn file(&self, name: &str) -> PathBuf {
+        self.path.join(name)
+    }
+
+    /// `run.json`.
+    pub fn record(&self) -> PathBuf {
+        self.file(Self::RECORD)
+    }
+
+    /// `checkpoint.bin`.
+    pub fn checkpoint(&self) -> PathBuf {
+        self.file(Self::CHECKPOINT)
+    }
+
+    /// `summary.json`.
+    pub fn summary(&self) -> PathBuf {
+        self.file(Self::SUMMARY)
+    }
+
+    /// The time series dataset.
+    pub fn series(&self) -> PathBuf {
+        self.file(Self::SERIES)
+    }
+
+    /// The slow channels' dataset.
+    pub fn slow_series(&self) -> PathBuf {
+        self.file(Self::SLOW_SERIES)
+    }
+
+    /// `report.html`.
+    pub fn report(&self) -> PathBuf {
+        self.file(Self::REPORT)
+    }
+
+    /// Whether the directory holds a summary (a run wrote it).
+    pub fn has_summary(&self) -> bool {
+        self.summary().is_file()
+    }
+
+    /// Whether the directory holds a sweep's table.
+    pub fn has_sweep(&self) -> bool {
+        self.file(Self::SWEEP_JSON).is_file()
+    }
+
+    /// Writes the summary atomically (the JSON text and a final newline).
+    pub fn write_summary(&self, json: &str) -> Result<(), OutputError> {
+        write_atomic(&self.summary(), (json.to_owned() + "\n").as_bytes())
+    }
+
+    /// Writes one of the directory's files atomically.
+    pub fn write(&self, name: &str, bytes: &[u8]) -> Result<(), OutputError> {
+        write_atomic(&self.file(name), bytes)
+    }
+
+    /// Reads one of the directory's text files whole.
+    pub fn read_text(&self, name: &str) -> Result<String, InputError> {
+        let path = self.file(name);
+        std::fs::read_to_string(&path).map_err(|source| InputError::Io {
+            path: path.display().to_string(),
+            source,
+        })
+    }
+
+    /// Removes one of the directory's files if it is there.
+    pub fn remove(&self, name: &str) -> std::io::Result<()> {
+        match std::fs::remove_file(self.file(name)) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(e),
+            _ => Ok(()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_and_atomic_summary() {
+        let dir = std::env::temp_dir().join(format!("rolldyn-run-dir-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let run = RunDir::new(&dir);
+        assert_eq!(run.series(), dir.join("timeseries.parquet"));
+        assert_eq!(run.record(), dir.join("run.json"));
+        assert!(!run.has_summary());
+        run.write_summary("{}").unwrap();
+        assert!(run.has_summary());
+        assert_eq!(run.read_text(RunDir::SUMMARY).unwrap(), "{}\n");
+        run.remove(RunDir::SUMMARY).unwrap();
+        run.remove(RunDir::SUMMARY).unwrap();
+        assert!(!run.has_summary());
+        assert!(matches!(
+            run.read_text(RunDir::SUMMARY),
+            Err(InputError::Io { .. })
+        ));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
