@@ -224,6 +224,23 @@ pub struct RawDrag {
     pub cage_windage: Option<Quantity<WindageCoefficient>>,
 }
 
+/// The lubrication method.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Method {
+    /// Not stated: no churning (what a case without `[lubrication]` gets).
+    #[default]
+    None,
+    /// An oil bath (give `lubrication.oil_level`).
+    OilBath,
+    /// An oil jet.
+    OilJet,
+    /// Air–oil (oil–air) or oil mist.
+    AirOil,
+    /// Grease, after its run-in.
+    Grease,
+}
+
 /// How the bearing is lubricated (docs/lubrication.md, "Lubrication method
 /// and churning", "Rolling resistance").
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
@@ -231,7 +248,7 @@ pub struct RawDrag {
 pub struct RawLubrication {
     /// "none" (default: no churning), "oil_bath", "oil_jet", "air_oil",
     /// "grease".
-    pub method: Option<crate::case::Method>,
+    pub method: Option<Method>,
     /// An oil bath's level above the lowest point of the outer ring's
     /// raceway (SKF's H).
     pub oil_level: Option<Quantity<Length>>,

@@ -12,24 +12,8 @@ use rolldyn::lubrication::rolling_resistance::{
     Replenishment, RollingForceLaw, RollingResistance,
 };
 use rolldyn::{BearingGeometry, Clearance};
-use serde::{Deserialize, Serialize};
 
-/// The lubrication method.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize, schemars::JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum Method {
-    /// Not stated: no churning (what a case without `[lubrication]` gets).
-    #[default]
-    None,
-    /// An oil bath (give `lubrication.oil_level`).
-    OilBath,
-    /// An oil jet.
-    OilJet,
-    /// Air–oil (oil–air) or oil mist.
-    AirOil,
-    /// Grease, after its run-in.
-    Grease,
-}
+pub use crate::raw::Method;
 
 /// `[lubrication]` in SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
