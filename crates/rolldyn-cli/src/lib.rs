@@ -11,6 +11,7 @@ pub mod contact;
 pub mod finite;
 pub mod html_report;
 pub mod mounting_report;
+pub mod pipeline;
 pub mod power;
 pub mod power_channels;
 pub mod power_report;

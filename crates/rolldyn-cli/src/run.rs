@@ -10,25 +10,19 @@
 use crate::Failure;
 use crate::accuracy::{VERIFY_TIGHTENING, refined_traction_grid};
 use crate::checkpoint::{self, Position, RunRecord, continue_to};
+use crate::pipeline::{Recorder, Start, drive, fresh_dir};
 use crate::recorder::Channels;
 use crate::run_summary::summarise;
 use crate::run_summary::verify;
 pub use crate::run_summary::{CreepMeans, Summary};
-use indicatif::{ProgressBar, ProgressStyle};
 use rolldyn::dynamics::{BearingModel, ContactSample};
-use rolldyn::integrate::{Integrator, RunEnd, Sampling, Solver, run_from};
+use rolldyn::integrate::{Integrator, RunEnd, Solver};
 use rolldyn_case::Case;
 use rolldyn_case::simulation::{Simulation, SolverSettings};
 use rolldyn_io::{RunDir, SeriesWriter};
-use std::cell::RefCell;
-use std::io::IsTerminal;
 use std::path::Path;
-use std::sync::atomic::Ordering;
-use std::time::Instant;
 
-use crate::run_options::{
-    CHECKPOINT_COST_FACTOR, DEFAULT_SAMPLE_RATE, MAX_CONTACT_PRESSURE, RunOptions, check_limits,
-};
+use crate::run_options::{DEFAULT_SAMPLE_RATE, MAX_CONTACT_PRESSURE, RunOptions, check_limits};
 
 /// A warning for a stress law integrated over a strip grid with an odd
 /// number of cells along the rolling direction: a cell then sits on each
@@ -190,7 +184,7 @@ pub(crate) fn run_once(
         ("case", source.to_string()),
         ("title", case.title.clone().unwrap_or_default()),
     ];
-    let (next_sample, wall_before) = if options.resume {
+    let start = if options.resume {
         let position = checkpoint::restore(
             dir,
             options.extends.unwrap_or(record_hash),
@@ -223,16 +217,9 @@ pub(crate) fn run_once(
                 .map_err(|e| bad(format!("--resume: {e}")))?,
             );
         }
-        (position.next_sample, position.wall_time)
+        Start::from(position)
     } else {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| bad(format!("cannot create {}: {e}", dir.display())))?;
-        // A new run in an old directory: its checkpoint is no longer valid.
-        remove_checkpoint(dir)?;
-        let text = record.to_json().map_err(Failure::Internal)?;
-        RunDir::new(dir)
-            .write(RunDir::RECORD, text.as_bytes())
-            .map_err(|e| bad(e.to_string()))?;
+        fresh_dir(dir, record)?;
         channels.writer = Some(
             SeriesWriter::create(
                 &series_dir,
@@ -255,148 +242,32 @@ pub(crate) fn run_once(
                 .map_err(|e| bad(format!("cannot remove {}: {e}", slow_dir.display())))?,
             None => {}
         }
-        (0, 0.0)
+        Start::default()
     };
-    let sampling = Sampling {
-        t0: 0.0,
-        rate: sample_rate,
-        next: next_sample,
-    };
-
-    let stop = options.stop_flag();
-    let bar = if !options.quiet && std::io::stderr().is_terminal() {
-        let bar = ProgressBar::new(1000);
-        bar.set_style(
-            ProgressStyle::with_template(
-                "{spinner} [{elapsed_precise}] {wide_bar} {msg} ETA {eta}",
-            )
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-        );
-        Some(bar)
-    } else {
-        None
-    };
-
-    let mut row = Vec::with_capacity(channels.series.width());
-    let write_stop = stop.clone();
-    let mut loads = vec![ContactSample::default(); g.ball_count];
-    let start = Instant::now();
-    let output = Output {
+    let recorder = Output {
         source,
         case,
         dir,
         duration,
         settings,
         record_hash,
+        row: Vec::with_capacity(channels.series.width()),
+        loads: vec![ContactSample::default(); g.ball_count],
+        channels,
     };
-    let channels = RefCell::new(channels);
-    let mut last_draw = 0.0;
-    // A fresh run delivers sample 0 before its first step.
-    let mut next_sample = next_sample + u64::from(!options.resume);
-    let mut last_checkpoint = Instant::now();
-    let mut checkpoint_cost = 0.0;
-    let mut checkpoint_error = None;
-    let report = run_from(
+    let summary = drive(
         &mut model,
         &mut solver,
         duration,
-        sampling,
-        &stop,
-        |m, t, y| {
-            let mut channels = channels.borrow_mut();
-            channels.record(m, t, y, &mut row, &mut loads);
-            // A part that cannot be written stops the run (reported below).
-            if channels.write_error.is_some() {
-                write_stop.store(true, Ordering::Relaxed);
-            }
-        },
-        |m, s, next| {
-            next_sample = next;
-            let t = s.t();
-            if t - last_draw >= duration / 1000.0 {
-                last_draw = t;
-                if let Some(bar) = &bar {
-                    bar.set_position((1000.0 * t / duration) as u64);
-                    bar.set_message(format!("t = {:.4} s", t));
-                }
-                if let Some(progress) = &options.progress {
-                    progress.store((t / duration).to_bits(), Ordering::Relaxed);
-                }
-            }
-            let since = last_checkpoint.elapsed().as_secs_f64();
-            if checkpoint_error.is_none()
-                && since
-                    >= options
-                        .checkpoint_interval
-                        .max(CHECKPOINT_COST_FACTOR * checkpoint_cost)
-            {
-                let begun = Instant::now();
-                let wall = wall_before + start.elapsed().as_secs_f64();
-                let mut channels = channels.borrow_mut();
-                let position = Position {
-                    next_sample: next,
-                    rows: channels.rows(),
-                    wall_time: wall,
-                };
-                checkpoint_error = output
-                    .write(m, s, &mut channels, None, Some(position), wall)
-                    .err();
-                checkpoint_cost = begun.elapsed().as_secs_f64();
-                last_checkpoint = Instant::now();
-            }
-        },
-    );
-    if let Some(bar) = &bar {
-        bar.finish_and_clear();
-    }
-    if let Some(e) = checkpoint_error {
-        return Err(e);
-    }
-    let wall = wall_before + start.elapsed().as_secs_f64();
-    let mut channels = channels.into_inner();
-    if let Some(e) = channels.write_error.take() {
-        return Err(bad(format!(
-            "{e}; the run stopped at t = {:.6} s (the checkpoint before it, if any, resumes it)",
-            solver.t()
-        )));
-    }
-    // An interrupted or completed run keeps a checkpoint at its last step
-    // (to continue, or to extend with `--until`); a failed one keeps its
-    // last periodic checkpoint.
-    let position = (!matches!(report.end, RunEnd::Failed { .. })).then_some(Position {
-        next_sample,
-        rows: channels.rows(),
-        wall_time: wall,
-    });
-    let summary = output.write(
-        &model,
-        &solver,
-        &mut channels,
-        Some(&report.end),
-        position,
-        wall,
+        sample_rate,
+        start,
+        options,
+        recorder,
     )?;
-    if let Some(progress) = &options.progress {
-        progress.store(
-            (summary.simulated_time_s / duration).to_bits(),
-            Ordering::Relaxed,
-        );
-    }
     Ok(RunOutput { summary })
 }
 
-/// Removes `DIR/checkpoint.bin` if there is one.
-fn remove_checkpoint(dir: &Path) -> Result<(), Failure> {
-    let run_dir = RunDir::new(dir);
-    run_dir.remove(RunDir::CHECKPOINT).map_err(|e| {
-        Failure::BadInput(format!(
-            "cannot remove {}: {e}",
-            run_dir.checkpoint().display()
-        ))
-    })
-}
-
-/// What the run's files are written from.
+/// What the run's files are written from, and the channels it records.
 struct Output<'a> {
     source: &'a str,
     case: &'a Case,
@@ -404,22 +275,38 @@ struct Output<'a> {
     duration: f64,
     settings: SolverSettings,
     record_hash: u64,
+    channels: Channels,
+    row: Vec<f64>,
+    loads: Vec<ContactSample>,
 }
 
-impl Output<'_> {
-    /// Writes the time series' rows not yet on disk, the checkpoint (when
-    /// `position` is given) and `summary.json`, each atomically, in that
-    /// order. `end` is None for a checkpoint during the run: the summary
-    /// then says `partial`.
+impl Recorder<BearingModel> for Output<'_> {
+    type Summary = Summary;
+
+    fn sample(&mut self, model: &BearingModel, t: f64, y: &[f64]) -> bool {
+        self.channels
+            .record(model, t, y, &mut self.row, &mut self.loads);
+        self.channels.write_error.is_none()
+    }
+
+    fn take_write_error(&mut self) -> Option<String> {
+        self.channels.write_error.take().map(|e| e.to_string())
+    }
+
+    fn rows(&self) -> u64 {
+        self.channels.rows()
+    }
+
+    /// The summary says `partial` for a checkpoint during the run.
     fn write(
-        &self,
+        &mut self,
         model: &BearingModel,
         solver: &Solver,
-        channels: &mut Channels,
         end: Option<&RunEnd>,
         position: Option<Position>,
         wall: f64,
     ) -> Result<Summary, Failure> {
+        let channels = &mut self.channels;
         // A checkpoint's summary is built like a final one; its status and
         // error are then replaced below.
         let in_progress = RunEnd::Completed;

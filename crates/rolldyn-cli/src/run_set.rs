@@ -11,25 +11,21 @@
 use crate::Failure;
 use crate::accuracy::{Change, VERIFY_LIMIT_MEANS, VERIFY_TIGHTENING, Verification};
 use crate::checkpoint::{self, Position, RunRecord};
+use crate::pipeline::{Recorder, Start, drive, fresh_dir};
 use crate::recorder::Channels;
-use crate::run_options::{CHECKPOINT_COST_FACTOR, DEFAULT_SAMPLE_RATE, RunOptions, check_limits};
+use crate::run_options::{DEFAULT_SAMPLE_RATE, RunOptions, check_limits};
 use crate::run_stats::RunStatistics;
-use std::cell::RefCell;
 
-use indicatif::{ProgressBar, ProgressStyle};
 use rolldyn::dynamics::ContactSample;
 use rolldyn::dynamics::shaft::ShaftDynamics;
-use rolldyn::integrate::{Integrator, RunEnd, Sampling, Solver, run_from};
+use rolldyn::integrate::{Integrator, RunEnd, Solver};
 use rolldyn::quasistatic::system::Orientation;
 use rolldyn_case::Case;
 use rolldyn_case::case::kind_name;
 use rolldyn_case::simulation::SetSimulation;
 use rolldyn_io::{RunDir, SeriesWriter, TimeSeries};
 use serde::Serialize;
-use std::io::IsTerminal;
 use std::path::Path;
-use std::sync::atomic::Ordering;
-use std::time::Instant;
 
 /// The shaft's channels after the bearings' (name, unit).
 const SHAFT_CHANNELS: [(&str, &str); 8] = [
@@ -180,7 +176,7 @@ pub fn run(
     ];
     let series_dir = RunDir::new(dir).series();
     let mut axial_sums = vec![0.0; count];
-    let (next_sample, wall_before, writer) = if options.resume {
+    let (start, writer) = if options.resume {
         let mut stats: Vec<&mut RunStatistics> =
             channels.iter_mut().map(|c| &mut c.stats).collect();
         let position = checkpoint::restore_parts(
@@ -201,195 +197,146 @@ pub fn run(
             case.output.float32,
         )
         .map_err(|e| bad(format!("--resume: {e}")))?;
-        (position.next_sample, position.wall_time, writer)
+        (Start::from(position), writer)
     } else {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| bad(format!("cannot create {}: {e}", dir.display())))?;
-        let _ = std::fs::remove_file(RunDir::new(dir).checkpoint());
-        let text = record.to_json().map_err(Failure::Internal)?;
-        RunDir::new(dir)
-            .write(RunDir::RECORD, text.as_bytes())
-            .map_err(|e| bad(e.to_string()))?;
+        fresh_dir(dir, record)?;
         let writer = SeriesWriter::create(&series_dir, &series, &metadata, case.output.float32)
             .map_err(|e| bad(e.to_string()))?;
-        (0, 0.0, writer)
+        (Start::default(), writer)
     };
-    let stop = options.stop_flag();
-    let bar = (!options.quiet && std::io::stderr().is_terminal()).then(|| {
-        let bar = ProgressBar::new(1000);
-        bar.set_style(
-            ProgressStyle::with_template(
-                "{spinner} [{elapsed_precise}] {wide_bar} {msg} ETA {eta}",
-            )
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-        );
-        bar
-    });
     // Buffers for the largest bearing (a shaft's may differ in balls and
     // states).
     let layouts: Vec<_> = (0..count).map(|i| system.bearing(i).layout()).collect();
-    let mut own = vec![0.0; layouts.iter().map(|l| l.len()).max().unwrap_or(0)];
-    let mut rows = vec![Vec::with_capacity(channels[0].series.width()); count];
-    let mut contacts =
-        vec![ContactSample::default(); layouts.iter().map(|l| l.balls).max().unwrap_or(0)];
-    let mut combined = Vec::with_capacity(series.width());
-    let mut loads = vec![[0.0; 5]; count];
-    let start = Instant::now();
-    let mut last_draw = 0.0;
-    let context = Context {
-        kind,
-        mounting_preload,
-        mounted: &mounted,
-        cold: &cold,
-        settings: &settings,
-        duration,
-        balance0: rolldyn::integrate::OdeSystem::energy_balance(&system, 0.0, &y0)
-            .unwrap_or_default(),
-        dir,
-        record_hash,
-    };
-    let recording = RefCell::new(Recording {
+    let recording = Recording {
+        own: vec![0.0; layouts.iter().map(|l| l.len()).max().unwrap_or(0)],
+        rows: vec![Vec::with_capacity(channels[0].series.width()); count],
+        contacts: vec![
+            ContactSample::default();
+            layouts.iter().map(|l| l.balls).max().unwrap_or(0)
+        ],
+        combined: Vec::with_capacity(series.width()),
+        loads: vec![[0.0; 5]; count],
+        layouts,
+        patch,
         channels,
         axial_sums,
         writer,
         write_error: None,
-    });
-    // A fresh run delivers sample 0 before its first step.
-    let mut next_sample = next_sample + u64::from(!options.resume);
-    let mut last_checkpoint = Instant::now();
-    let mut checkpoint_cost = 0.0;
-    let mut checkpoint_error = None;
-    let report = run_from(
+        context: Context {
+            kind,
+            mounting_preload,
+            mounted: &mounted,
+            cold: &cold,
+            settings: &settings,
+            duration,
+            balance0: rolldyn::integrate::OdeSystem::energy_balance(&system, 0.0, &y0)
+                .unwrap_or_default(),
+            dir,
+            record_hash,
+        },
+    };
+    drive(
         &mut system,
         &mut solver,
         duration,
-        Sampling {
-            t0: 0.0,
-            rate: sample_rate,
-            next: next_sample.saturating_sub(u64::from(!options.resume)),
-        },
-        &stop,
-        |s: &ShaftDynamics, t, y| {
-            let r = &mut *recording.borrow_mut();
-            for (i, (c, row)) in r.channels.iter_mut().zip(&mut rows).enumerate() {
-                let (n, balls) = (layouts[i].len(), layouts[i].balls);
-                let own = &mut own[..n];
-                s.bearing_state(i, y, own);
-                c.fill(s.bearing(i), t, own, row, &mut contacts[..balls]);
-                loads[i] = s.ring_load(i, c.derivative());
-                if let Some(k) = patch[3] {
-                    row[k] = s.bearing_energy(i, t, own);
-                }
-            }
-            let acceleration = s.shaft_acceleration(t, y, &loads);
-            combined.clear();
-            combined.push(t);
-            for (i, (c, row)) in r.channels.iter_mut().zip(&mut rows).enumerate() {
-                let ring = s.at_bearing(i, &acceleration);
-                for (k, a) in patch[..3].iter().zip(ring) {
-                    if let Some(k) = k {
-                        row[*k] = a;
-                    }
-                }
-                c.sink(row);
-                combined.extend_from_slice(&c.project(row)[1..]);
-                // The bearing's balls push its ring back from its loaded
-                // side: the axial load it carries is −F_x.
-                combined.push(-loads[i][0]);
-                r.axial_sums[i] += -loads[i][0];
-            }
-            let sh = s.shaft();
-            combined.extend_from_slice(&y[sh..sh + 5]);
-            let b = rolldyn::integrate::OdeSystem::energy_balance(s, t, y).unwrap_or_default();
-            combined.extend_from_slice(&[b.work, b.dissipated, b.mechanical]);
-            if r.write_error.is_none() {
-                r.write_error = r.writer.push(&combined).err();
-                if r.write_error.is_some() {
-                    stop.store(true, Ordering::Relaxed);
-                }
-            }
-        },
-        |s, solver, next| {
-            next_sample = next;
-            let t = solver.t();
-            if t - last_draw >= duration / 1000.0 {
-                last_draw = t;
-                if let Some(bar) = &bar {
-                    bar.set_position((1000.0 * t / duration) as u64);
-                    bar.set_message(format!("t = {t:.4} s"));
-                }
-                if let Some(progress) = &options.progress {
-                    progress.store((t / duration).to_bits(), Ordering::Relaxed);
-                }
-            }
-            let since = last_checkpoint.elapsed().as_secs_f64();
-            if checkpoint_error.is_none()
-                && since
-                    >= options
-                        .checkpoint_interval
-                        .max(CHECKPOINT_COST_FACTOR * checkpoint_cost)
-            {
-                let begun = Instant::now();
-                let wall = wall_before + start.elapsed().as_secs_f64();
-                let position = Position {
-                    next_sample: next,
-                    rows: recording.borrow().channels[0].rows(),
-                    wall_time: wall,
-                };
-                checkpoint_error = context
-                    .write(
-                        s,
-                        solver,
-                        &mut recording.borrow_mut(),
-                        None,
-                        Some(position),
-                        wall,
-                    )
-                    .err();
-                checkpoint_cost = begun.elapsed().as_secs_f64();
-                last_checkpoint = Instant::now();
-            }
-        },
-    );
-    if let Some(bar) = &bar {
-        bar.finish_and_clear();
-    }
-    if let Some(e) = checkpoint_error {
-        return Err(e);
-    }
-    let mut recording = recording.into_inner();
-    if let Some(e) = recording.write_error.take() {
-        return Err(bad(format!(
-            "{e}; the run stopped at t = {:.6} s (the checkpoint before it, if any, resumes it)",
-            solver.t()
-        )));
-    }
-    let wall = wall_before + start.elapsed().as_secs_f64();
-    // An interrupted or completed run keeps a checkpoint at its last step
-    // (to continue, or to extend with `--until`); a failed one keeps its
-    // last periodic checkpoint.
-    let position = (!matches!(report.end, RunEnd::Failed { .. })).then(|| Position {
-        next_sample,
-        rows: recording.channels[0].rows(),
-        wall_time: wall,
-    });
-    context.write(
-        &system,
-        &solver,
-        &mut recording,
-        Some(&report.end),
-        position,
-        wall,
+        sample_rate,
+        start,
+        options,
+        recording,
     )
 }
 
 /// What a set's run records besides the integrator: each bearing's
-/// channels (with their statistics), the axial loads' sums, the series.
-struct Recording {
+/// channels (with their statistics), the axial loads' sums, the series;
+/// the buffers of a sample; what the summary is written from.
+struct Recording<'a> {
     channels: Vec<Channels>,
     axial_sums: Vec<f64>,
     writer: SeriesWriter,
     write_error: Option<rolldyn_io::OutputError>,
+    layouts: Vec<rolldyn::dynamics::StateLayout>,
+    /// Channels of a bearing's row the shaft's motion replaces: the inner
+    /// ring's accelerations and the mechanical energy.
+    patch: [Option<usize>; 4],
+    own: Vec<f64>,
+    rows: Vec<Vec<f64>>,
+    contacts: Vec<ContactSample>,
+    combined: Vec<f64>,
+    loads: Vec<[f64; 5]>,
+    context: Context<'a>,
+}
+
+impl Recorder<ShaftDynamics> for Recording<'_> {
+    type Summary = SetSummary;
+
+    fn sample(&mut self, s: &ShaftDynamics, t: f64, y: &[f64]) -> bool {
+        let patch = self.patch;
+        for (i, (c, row)) in self.channels.iter_mut().zip(&mut self.rows).enumerate() {
+            let (n, balls) = (self.layouts[i].len(), self.layouts[i].balls);
+            let own = &mut self.own[..n];
+            s.bearing_state(i, y, own);
+            c.fill(s.bearing(i), t, own, row, &mut self.contacts[..balls]);
+            self.loads[i] = s.ring_load(i, c.derivative());
+            if let Some(k) = patch[3] {
+                row[k] = s.bearing_energy(i, t, own);
+            }
+        }
+        let acceleration = s.shaft_acceleration(t, y, &self.loads);
+        let combined = &mut self.combined;
+        combined.clear();
+        combined.push(t);
+        for (i, (c, row)) in self.channels.iter_mut().zip(&mut self.rows).enumerate() {
+            let ring = s.at_bearing(i, &acceleration);
+            for (k, a) in patch[..3].iter().zip(ring) {
+                if let Some(k) = k {
+                    row[*k] = a;
+                }
+            }
+            c.sink(row);
+            combined.extend_from_slice(&c.project(row)[1..]);
+            // The bearing's balls push its ring back from its loaded
+            // side: the axial load it carries is −F_x.
+            combined.push(-self.loads[i][0]);
+            self.axial_sums[i] += -self.loads[i][0];
+        }
+        let sh = s.shaft();
+        combined.extend_from_slice(&y[sh..sh + 5]);
+        let b = rolldyn::integrate::OdeSystem::energy_balance(s, t, y).unwrap_or_default();
+        combined.extend_from_slice(&[b.work, b.dissipated, b.mechanical]);
+        if self.write_error.is_none() {
+            self.write_error = self.writer.push(combined).err();
+        }
+        self.write_error.is_none()
+    }
+
+    fn take_write_error(&mut self) -> Option<String> {
+        self.write_error.take().map(|e| e.to_string())
+    }
+
+    fn rows(&self) -> u64 {
+        self.channels[0].rows()
+    }
+
+    fn write(
+        &mut self,
+        system: &ShaftDynamics,
+        solver: &Solver,
+        end: Option<&RunEnd>,
+        position: Option<Position>,
+        wall: f64,
+    ) -> Result<SetSummary, Failure> {
+        let Recording {
+            context,
+            writer,
+            channels,
+            axial_sums,
+            ..
+        } = self;
+        writer
+            .sync()
+            .map_err(|e| Failure::BadInput(e.to_string()))?;
+        context.write(system, solver, channels, axial_sums, end, position, wall)
+    }
 }
 
 /// What a set's summary and checkpoint are written from.
@@ -406,35 +353,36 @@ struct Context<'a> {
 }
 
 impl Context<'_> {
-    /// Writes the series' rows not yet on disk, the checkpoint (when
-    /// `position` is given) and `summary.json`, each atomically, in that
-    /// order; `end` None: a checkpoint during the run (status `partial`).
+    /// Writes the checkpoint (when `position` is given) and
+    /// `summary.json`, each atomically, in that order (after the series'
+    /// rows); `end` None: a checkpoint during the run (status `partial`).
+    #[allow(clippy::too_many_arguments)]
     fn write(
         &self,
         system: &ShaftDynamics,
         solver: &Solver,
-        recording: &mut Recording,
+        channels: &[Channels],
+        axial_sums: &[f64],
         end: Option<&RunEnd>,
         position: Option<Position>,
         wall: f64,
     ) -> Result<SetSummary, Failure> {
         let bad = |e: String| Failure::BadInput(e);
-        recording.writer.sync().map_err(|e| bad(e.to_string()))?;
         if let Some(position) = position {
-            let stats: Vec<&RunStatistics> = recording.channels.iter().map(|c| &c.stats).collect();
+            let stats: Vec<&RunStatistics> = channels.iter().map(|c| &c.stats).collect();
             let bytes = checkpoint::encode_parts(
                 self.record_hash,
                 position,
                 solver,
                 system,
                 &stats,
-                &recording.axial_sums,
+                axial_sums,
             );
             RunDir::new(self.dir)
                 .write(RunDir::CHECKPOINT, &bytes)
                 .map_err(|e| bad(e.to_string()))?;
         }
-        let summary = self.summarise(system, solver, recording, end, wall);
+        let summary = self.summarise(system, solver, channels, axial_sums, end, wall);
         let json =
             crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
         RunDir::new(self.dir)
@@ -447,7 +395,8 @@ impl Context<'_> {
         &self,
         system: &ShaftDynamics,
         solver: &Solver,
-        recording: &Recording,
+        channels: &[Channels],
+        axial_sums: &[f64],
         end: Option<&RunEnd>,
         wall: f64,
     ) -> SetSummary {
@@ -456,7 +405,6 @@ impl Context<'_> {
         let change = balance.mechanical - self.balance0.mechanical;
         // Bearing 0's kinematics for the characteristic lines of
         // `rolldyn spectrum` (as a single bearing's summary gives them).
-        let channels = &recording.channels;
         let first = channels[0].stats.window();
         let g = system.bearing(0).geometry();
         let stats = solver.stats();
@@ -523,7 +471,7 @@ impl Context<'_> {
                         quasistatic_axial_load_n: self.cold.bearings[i]
                             .as_ref()
                             .map_or(0.0, |e| e.reaction[0]),
-                        mean_axial_load_n: recording.axial_sums[i] / samples.max(1) as f64,
+                        mean_axial_load_n: axial_sums[i] / samples.max(1) as f64,
                         mean_cage_speed_rpm: w.mean("cage_speed_rpm"),
                         mean_inner_load_n: w.loaded_mean("load_inner_n"),
                         largest_inner_load_n: w.largest_load("inner"),

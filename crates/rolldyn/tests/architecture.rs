@@ -76,7 +76,10 @@ const CRATES: [Crate; 6] = [
     Crate {
         dir: "rolldyn-case",
         layers: &[
-            ("units, errors, preset texts", &["units", "error", "presets"]),
+            (
+                "units, errors, preset texts",
+                &["units", "error", "presets"],
+            ),
             ("the case file's syntax", &["raw"]),
             ("the validated case", &["case", "catalogue", "mounting"]),
             ("loading", &["load"]),
@@ -175,7 +178,10 @@ fn module_of(root: &Path, file: &Path) -> Module {
         .iter()
         .map(|p| p.to_string_lossy().into_owned())
         .collect();
-    if matches!(parts.last().map(String::as_str), Some("mod" | "lib" | "main")) {
+    if matches!(
+        parts.last().map(String::as_str),
+        Some("mod" | "lib" | "main")
+    ) {
         parts.pop();
     }
     parts
@@ -491,7 +497,11 @@ fn layer_faults(spec: &Crate, modules: &BTreeSet<Module>, edges: &Edges) -> Vec<
         .collect();
     let layer_of = |m: &str| spec.layers.iter().position(|(_, ms)| ms.contains(&m));
     for top in &tops {
-        let count = spec.layers.iter().filter(|(_, ms)| ms.contains(top)).count();
+        let count = spec
+            .layers
+            .iter()
+            .filter(|(_, ms)| ms.contains(top))
+            .count();
         if count != 1 {
             faults.push(format!("{}: module `{top}` is in {count} layers", spec.dir));
         }
@@ -596,7 +606,10 @@ fn the_reader_finds_planted_faults() {
     ]
     .into_iter()
     .collect();
-    assert_eq!(all_circles(&planted), vec![vec!["a".to_owned(), "b".to_owned()]]);
+    assert_eq!(
+        all_circles(&planted),
+        vec![vec!["a".to_owned(), "b".to_owned()]]
+    );
     let spec = Crate {
         dir: "planted",
         layers: &[("low", &["low", "gone"]), ("commands", &["one", "two"])],
