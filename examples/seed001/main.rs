@@ -276,9 +276,12 @@ fn simulate(label: &str, axial: f64, surface: &str, duration: f64) -> Result<Out
     let y0 = simulation::jones_harris_state(&case, &model, 0.0).map_err(|e| e.to_string())?;
     // The preset's tolerance (1e-2); steps ≤ 20 µs resolve the kHz lines.
     let rtol = case.relative_tolerance.unwrap_or(1e-3);
-    let mut solver = Rosenbrock::new(&ROS34PW2, rtol, 2e-5, None, &model, 0.0, &y0)
-        .map_err(|e| e.to_string())?
-        .with_energy_control(&model, DEFAULT_ENERGY_TOLERANCE);
+    let mut solver = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(rtol)
+        .max_step(2e-5)
+        .energy_tolerance(Some(DEFAULT_ENERGY_TOLERANCE))
+        .build(&model, &y0)
+        .map_err(|e| e.to_string())?;
     let l = model.layout();
     let (r, c) = (l.ring(), l.cage());
     let mut dy = vec![0.0; y0.len()];

@@ -105,9 +105,12 @@ fn simulate(
         Err(e) => (jones_harris, format!("Jones–Harris ({e})")),
     };
     eprintln!("μ = {mu}: start from the {start}");
-    let mut solver = Rosenbrock::new(&ROS34PW2, 1e-3, 1e-4, None, &model, 0.0, &y0)
-        .map_err(|e| e.to_string())?
-        .with_energy_control(&model, DEFAULT_ENERGY_TOLERANCE);
+    let mut solver = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(1e-3)
+        .max_step(1e-4)
+        .energy_tolerance(Some(DEFAULT_ENERGY_TOLERANCE))
+        .build(&model, &y0)
+        .map_err(|e| e.to_string())?;
     let balls = g.ball_count;
     let mut samples = vec![ContactSample::default(); balls];
     let mut rows = Vec::new();

@@ -192,9 +192,12 @@ fn simulate(preset: &str, job: &Job) -> Result<Vibration, String> {
     .map_err(|e| e.to_string())?;
     let y0 = model.state_from_equilibrium(&eq);
     let rtol = case.relative_tolerance.unwrap_or(1e-3);
-    let mut integrator = Rosenbrock::new(&ROS34PW2, rtol, MAX_STEP, None, &model, 0.0, &y0)
-        .map_err(|e| e.to_string())?
-        .with_energy_control(&model, DEFAULT_ENERGY_TOLERANCE);
+    let mut integrator = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(rtol)
+        .max_step(MAX_STEP)
+        .energy_tolerance(Some(DEFAULT_ENERGY_TOLERANCE))
+        .build(&model, &y0)
+        .map_err(|e| e.to_string())?;
     let (r, c) = (model.layout().ring(), model.layout().cage());
     let mut velocity: [Vec<f64>; 3] = Default::default();
     let mut cage_speed = Vec::new();

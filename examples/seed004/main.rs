@@ -113,9 +113,12 @@ fn main() -> Result<(), String> {
         .and_then(|q| Ok(q.solve()?))
         .map_err(|e| e.to_string())?;
     let y0 = model.state_from_equilibrium(&eq);
-    let mut rk = Rosenbrock::new(&ROS34PW2, 1e-3, 1e-4, None, &model, 0.0, &y0)
-        .map_err(|e| e.to_string())?
-        .with_energy_control(&model, DEFAULT_ENERGY_TOLERANCE);
+    let mut rk = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(1e-3)
+        .max_step(1e-4)
+        .energy_tolerance(Some(DEFAULT_ENERGY_TOLERANCE))
+        .build(&model, &y0)
+        .map_err(|e| e.to_string())?;
     let (t_end, window) = (0.04, 0.02);
     let mut dy = vec![0.0; model.dimension()];
     let mut mean = rolldyn::power::Dissipation::default();

@@ -541,11 +541,9 @@ pub fn write_tables_labelled(
         csv.push_str(&cells.join(","));
         csv.push('\n');
     }
-    for (name, text) in [(RunDir::SWEEP_JSON, json), (RunDir::SWEEP_CSV, csv)] {
-        rolldyn_io::write_atomic(&dir.join(name), text.as_bytes())
-            .map_err(|e| Failure::BadInput(e.to_string()))?;
-    }
-    Ok(())
+    RunDir::new(dir)
+        .write_sweep(&json, &csv)
+        .map_err(|e| Failure::BadInput(e.to_string()))
 }
 
 #[cfg(test)]

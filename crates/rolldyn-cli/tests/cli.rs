@@ -541,6 +541,50 @@ fn run_interrupted_keeps_valid_files() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A set's run stopped by Ctrl-C exits as a single bearing's does (130),
+/// its summary saying `interrupted`.
+#[test]
+fn set_run_interrupted_exits_130() {
+    let dir = temp_dir("set-int");
+    let d = dir.to_string_lossy().into_owned();
+    let case = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/spindle_pair/case.toml"
+    );
+    let child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .args(["run", case, "--duration", "10 s", "-o", &d])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Once the run has begun writing its series, its handler is set.
+    let begun = std::time::Instant::now();
+    while !dir.join("timeseries.parquet").exists() {
+        assert!(
+            begun.elapsed().as_secs() < 120,
+            "the set's run did not start"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    let status = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(130),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["status"], "interrupted");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// A FASTSIM run records the creepage and stick channels and their means.
 #[test]
 fn fastsim_run_records_creepages() {

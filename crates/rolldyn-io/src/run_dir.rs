@@ -102,6 +102,13 @@ impl RunDir {
         write_atomic(&self.summary(), (json.to_owned() + "\n").as_bytes())
     }
 
+    /// Writes a sweep's table, `sweep.json` and `sweep.csv`, each
+    /// atomically.
+    pub fn write_sweep(&self, json: &str, csv: &str) -> Result<(), OutputError> {
+        self.write(Self::SWEEP_JSON, json.as_bytes())?;
+        self.write(Self::SWEEP_CSV, csv.as_bytes())
+    }
+
     /// Writes one of the directory's files atomically.
     pub fn write(&self, name: &str, bytes: &[u8]) -> Result<(), OutputError> {
         write_atomic(&self.file(name), bytes)

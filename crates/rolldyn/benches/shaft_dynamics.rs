@@ -18,7 +18,11 @@ use std::time::Instant;
 
 /// Wall time and steps of `duration` simulated seconds of `system` from `y0`.
 fn timed<S: OdeSystem>(system: &mut S, y0: &[f64], duration: f64) -> (f64, u64) {
-    let mut rk = Rosenbrock::new(&ROS34PW2, 1e-3, 1e-4, None, system, 0.0, y0).expect("start");
+    let mut rk = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(1e-3)
+        .max_step(1e-4)
+        .build(system, y0)
+        .expect("start");
     let start = Instant::now();
     while rk.t() < duration {
         rk.step(system, duration).expect("step");

@@ -220,30 +220,21 @@ pub fn integrator(
     use crate::integrate::{ExplicitRk, ROS34PW2, Rosenbrock, Solver, StepControl};
     match method {
         Method::Dopri5 => Solver::Explicit(Box::new(
-            ExplicitRk::new(
-                &crate::integrate::tableau::DOPRI5,
-                StepControl::Adaptive {
+            ExplicitRk::builder(&crate::integrate::tableau::DOPRI5)
+                .control(StepControl::Adaptive {
                     relative_tolerance,
                     max_step,
                     initial_step: None,
-                },
-                model,
-                0.0,
-                y0,
-            )
-            .unwrap(),
+                })
+                .build(model, y0)
+                .unwrap(),
         )),
         Method::Ros34pw2 => Solver::Rosenbrock(Box::new(
-            Rosenbrock::new(
-                &ROS34PW2,
-                relative_tolerance,
-                max_step,
-                None,
-                model,
-                0.0,
-                y0,
-            )
-            .unwrap(),
+            Rosenbrock::builder(&ROS34PW2)
+                .relative_tolerance(relative_tolerance)
+                .max_step(max_step)
+                .build(model, y0)
+                .unwrap(),
         )),
     }
 }

@@ -144,15 +144,13 @@ impl SolverSettings {
             .relative_tolerance
             .unwrap_or(DEFAULT_RELATIVE_TOLERANCE);
         Ok(match self.choice {
-            IntegratorChoice::Rk4 => Solver::Explicit(Box::new(ExplicitRk::new(
-                &RK4,
-                StepControl::Fixed {
-                    step: self.max_step,
-                },
-                model,
-                0.0,
-                y0,
-            )?)),
+            IntegratorChoice::Rk4 => Solver::Explicit(Box::new(
+                ExplicitRk::builder(&RK4)
+                    .control(StepControl::Fixed {
+                        step: self.max_step,
+                    })
+                    .build(model, y0)?,
+            )),
             IntegratorChoice::Ros34pw2 => {
                 Solver::Rosenbrock(Box::new(self.stiff(model, y0, rtol, self.max_step)?))
             }
@@ -179,11 +177,11 @@ impl SolverSettings {
         rtol: f64,
         max_step: f64,
     ) -> Result<Rosenbrock, IntegrationError> {
-        let r = Rosenbrock::new(&ROS34PW2, rtol, max_step, None, model, 0.0, y0)?;
-        Ok(match self.energy_tolerance {
-            Some(eps) => r.with_energy_control(model, eps),
-            None => r,
-        })
+        Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(rtol)
+            .max_step(max_step)
+            .energy_tolerance(self.energy_tolerance)
+            .build(model, y0)
     }
 
     /// DOPRI5 with the energy control, if on.
@@ -194,15 +192,10 @@ impl SolverSettings {
         rtol: f64,
         max_step: f64,
     ) -> Result<ExplicitRk, IntegrationError> {
-        let control = StepControl::Adaptive {
-            relative_tolerance: rtol,
-            max_step,
-            initial_step: None,
-        };
-        let r = ExplicitRk::new(&DOPRI5, control, model, 0.0, y0)?;
-        Ok(match self.energy_tolerance {
-            Some(eps) => r.with_energy_control(model, eps),
-            None => r,
-        })
+        ExplicitRk::builder(&DOPRI5)
+            .relative_tolerance(rtol)
+            .max_step(max_step)
+            .energy_tolerance(self.energy_tolerance)
+            .build(model, y0)
     }
 }

@@ -182,6 +182,20 @@ impl SweepRows {
         }
     }
 
+    /// Writes `DIR/sweep.csv` and `DIR/sweep.json` (created); returns the
+    /// JSON text.
+    pub fn write(&self, dir: &std::path::Path) -> Result<String, crate::Failure> {
+        std::fs::create_dir_all(dir).map_err(|e| {
+            crate::Failure::BadInput(format!("cannot create {}: {e}", dir.display()))
+        })?;
+        let json =
+            crate::finite::to_json(self).map_err(|e| crate::Failure::Internal(e.to_string()))?;
+        rolldyn_io::RunDir::new(dir)
+            .write_sweep(&json, &self.csv())
+            .map_err(|e| crate::Failure::BadInput(e.to_string()))?;
+        Ok(json)
+    }
+
     /// The summary line (without the files written).
     pub fn summary(&self) -> String {
         match self {

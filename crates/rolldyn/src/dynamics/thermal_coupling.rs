@@ -383,7 +383,10 @@ mod tests {
             max_step: 1e-5,
             initial_step: None,
         };
-        let mut rk = ExplicitRk::new(&DOPRI5, control, &model, 0.0, &y0).unwrap();
+        let mut rk = ExplicitRk::builder(&DOPRI5)
+            .control(control)
+            .build(&model, &y0)
+            .unwrap();
         let mut at_update = (0, 0.0);
         while rk.t() < 4.5e-4 {
             rk.step(&mut model, 4.5e-4).unwrap();
@@ -421,7 +424,10 @@ mod tests {
             initial_step: None,
         };
         let (mut model, y0, _) = coupled_model();
-        let mut rk = ExplicitRk::new(&DOPRI5, control, &model, 0.0, &y0).unwrap();
+        let mut rk = ExplicitRk::builder(&DOPRI5)
+            .control(control)
+            .build(&model, &y0)
+            .unwrap();
         while rk.t() < 2.5e-4 {
             rk.step(&mut model, 5e-4).unwrap();
         }
@@ -434,7 +440,10 @@ mod tests {
             rk.step(&mut model, 5e-4).unwrap();
         }
         let (mut again, _, _) = coupled_model();
-        let mut rk2 = ExplicitRk::new(&DOPRI5, control, &again, 0.0, &y0).unwrap();
+        let mut rk2 = ExplicitRk::builder(&DOPRI5)
+            .control(control)
+            .build(&again, &y0)
+            .unwrap();
         let mut r = StateReader::new(&bytes);
         rk2.restore(&mut r).unwrap();
         again.restore(&mut r).unwrap();

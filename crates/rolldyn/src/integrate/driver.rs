@@ -162,7 +162,10 @@ mod tests {
             max_step: 0.37,
             initial_step: None,
         };
-        let mut rk = ExplicitRk::new(&DOPRI5, control, &sys, 0.0, &[1.0]).unwrap();
+        let mut rk = ExplicitRk::builder(&DOPRI5)
+            .control(control)
+            .build(&sys, &[1.0])
+            .unwrap();
         let mut got = Vec::new();
         let stop = AtomicBool::new(false);
         let report = run(
@@ -186,8 +189,10 @@ mod tests {
     fn stop_flag_ends_cleanly() {
         let mut sys = Decay;
         let control = StepControl::Fixed { step: 0.01 };
-        let mut rk =
-            ExplicitRk::new(&crate::integrate::tableau::RK4, control, &sys, 0.0, &[1.0]).unwrap();
+        let mut rk = ExplicitRk::builder(&crate::integrate::tableau::RK4)
+            .control(control)
+            .build(&sys, &[1.0])
+            .unwrap();
         let stop = AtomicBool::new(false);
         let mut n = 0;
         let report = run(

@@ -354,10 +354,12 @@ mod tests {
     fn driven_balance(energy_tolerance: Option<f64>) -> (f64, u64) {
         use crate::integrate::{Integrator, ROS34PW2, Rosenbrock};
         let y0 = [0.0; 4];
-        let mut r = Rosenbrock::new(&ROS34PW2, 1e-2, 1e-3, None, &Driven, 0.0, &y0).unwrap();
-        if let Some(eps) = energy_tolerance {
-            r = r.with_energy_control(&Driven, eps);
-        }
+        let mut r = Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(1e-2)
+            .max_step(1e-3)
+            .energy_tolerance(energy_tolerance)
+            .build(&Driven, &y0)
+            .unwrap();
         // Turnover: Σ |ΔW| + ΔD over the accepted steps.
         let (mut turnover, mut last) = (0.0, Driven.energy_balance(0.0, &y0).unwrap());
         while r.t() < 0.02 {
@@ -393,9 +395,12 @@ mod tests {
         use crate::integrate::{Integrator, ROS34PW2, Rosenbrock};
         let y0 = [0.0; 4];
         for eps in [1e-3, 1e-4] {
-            let mut r = Rosenbrock::new(&ROS34PW2, 1e-2, 1e-3, None, &Driven, 0.0, &y0)
-                .unwrap()
-                .with_energy_control(&Driven, eps);
+            let mut r = Rosenbrock::builder(&ROS34PW2)
+                .relative_tolerance(1e-2)
+                .max_step(1e-3)
+                .energy_tolerance(Some(eps))
+                .build(&Driven, &y0)
+                .unwrap();
             let (mut gross, mut last) = (0.0, Driven.energy_balance(0.0, &y0).unwrap());
             while r.t() < 0.02 {
                 r.step(&mut Driven, 0.02).unwrap();

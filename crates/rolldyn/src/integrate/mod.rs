@@ -14,6 +14,9 @@
 //!   by the system's block structure) and factored by blocks ([`linear`]).
 //! * [`Switching`]: ROS34PW2 and DOPRI5 in one run, each where it is
 //!   cheaper by measured cost (the stiffness switch of LSODA).
+//! * [`Builder`]: one shape for setting up every integrator
+//!   (`Rosenbrock::builder(&ROS34PW2).relative_tolerance(1e-3).max_step(h).build(&model, &y0)`;
+//!   `ExplicitRk::builder(&DOPRI5)` likewise, or `.fixed_step(h)`).
 //! * [`Integrator`]: what the driver needs from an integrator; [`Solver`]
 //!   is the choice among them.
 //! * [`IntegrationStats`]: steps, rejected steps, RHS evaluations,
@@ -24,6 +27,7 @@
 //! * [`Checkpoint`]: the complete state of an integrator or system as
 //!   bytes, so that an interrupted run continues bit-identically.
 
+pub mod builder;
 pub mod checkpoint;
 pub mod driver;
 pub mod energy_control;
@@ -35,6 +39,7 @@ pub mod step_control;
 pub mod switching;
 pub mod tableau;
 
+pub use builder::Builder;
 pub use checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
 pub use driver::{RunEnd, RunReport, Sampling, run, run_from};
 pub use energy_control::{DEFAULT_ENERGY_TOLERANCE, EnergyBalance};

@@ -414,7 +414,11 @@ mod tests {
     const END: f64 = 0.1;
 
     fn stiff() -> Rosenbrock {
-        Rosenbrock::new(&ROS34PW2, RTOL, 1e-3, None, &Struck, 0.0, &[0.0; 3]).unwrap()
+        Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(RTOL)
+            .max_step(1e-3)
+            .build(&Struck, &[0.0; 3])
+            .unwrap()
     }
 
     fn explicit(rtol: f64) -> ExplicitRk {
@@ -423,7 +427,10 @@ mod tests {
             max_step: 1e-3,
             initial_step: None,
         };
-        ExplicitRk::new(&DOPRI5, control, &Struck, 0.0, &[0.0; 3]).unwrap()
+        ExplicitRk::builder(&DOPRI5)
+            .control(control)
+            .build(&Struck, &[0.0; 3])
+            .unwrap()
     }
 
     fn run_to(integrator: &mut impl Integrator, end: f64) {
@@ -481,13 +488,20 @@ mod tests {
 
     #[test]
     fn an_explicit_method_out_of_its_depth_hands_back_for_good() {
-        let stiff = Rosenbrock::new(&ROS34PW2, RTOL, 1e-3, None, &Rigid, 0.0, &[0.0; 4]).unwrap();
+        let stiff = Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(RTOL)
+            .max_step(1e-3)
+            .build(&Rigid, &[0.0; 4])
+            .unwrap();
         let control = StepControl::Adaptive {
             relative_tolerance: RTOL,
             max_step: 1e-3,
             initial_step: None,
         };
-        let explicit = ExplicitRk::new(&DOPRI5, control, &Rigid, 0.0, &[0.0; 4]).unwrap();
+        let explicit = ExplicitRk::builder(&DOPRI5)
+            .control(control)
+            .build(&Rigid, &[0.0; 4])
+            .unwrap();
         let mut auto = Switching::new(stiff, explicit);
         while auto.t() < END {
             auto.step(&mut Rigid, END).unwrap();

@@ -77,17 +77,13 @@ fn energy_error(
     let mut m = model(configure);
     let y0 = m.pure_rolling_state([0.0; 5]);
     let e0 = m.energy(0.0, &y0);
-    let mut rk = ExplicitRk::new(
-        if matches!(control, StepControl::Fixed { .. }) {
-            &RK4
-        } else {
-            &DOPRI5
-        },
-        control,
-        &m,
-        0.0,
-        &y0,
-    )
+    let mut rk = ExplicitRk::builder(if matches!(control, StepControl::Fixed { .. }) {
+        &RK4
+    } else {
+        &DOPRI5
+    })
+    .control(control)
+    .build(&m, &y0)
     .unwrap();
     let mut worst = 0.0f64;
     while rk.t() < t_end {
@@ -121,7 +117,11 @@ fn b1_stiff_energy_drift_follows_the_tolerance() {
         let mut m = model(|_| {});
         let y0 = m.pure_rolling_state([0.0; 5]);
         let e0 = m.energy(0.0, &y0);
-        let mut r = Rosenbrock::new(&ROS34PW2, rtol, 1e-5, None, &m, 0.0, &y0).unwrap();
+        let mut r = Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(rtol)
+            .max_step(1e-5)
+            .build(&m, &y0)
+            .unwrap();
         let mut worst = 0.0f64;
         while r.t() < 2e-3 {
             r.step(&mut m, 2e-3).unwrap();

@@ -65,7 +65,11 @@ fn model(configure: impl Fn(&mut DynamicsParameters)) -> (BearingModel, Vec<f64>
 
 fn solver(model: &BearingModel, y0: &[f64], rtol: f64, max_step: f64) -> Solver {
     Solver::Rosenbrock(Box::new(
-        Rosenbrock::new(&ROS34PW2, rtol, max_step, None, model, 0.0, y0).unwrap(),
+        Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(rtol)
+            .max_step(max_step)
+            .build(model, y0)
+            .unwrap(),
     ))
 }
 
@@ -539,7 +543,11 @@ fn deepest_dip<S: OdeSystem>(
     y0: &[f64],
 ) -> (f64, f64) {
     let mut rk = Solver::Rosenbrock(Box::new(
-        Rosenbrock::new(&ROS34PW2, 1e-2, 1e-4, None, system, 0.0, y0).unwrap(),
+        Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(1e-2)
+            .max_step(1e-4)
+            .build(system, y0)
+            .unwrap(),
     ));
     let mut samples = vec![ContactSample::default(); 22];
     let mut smallest = f64::INFINITY;

@@ -48,7 +48,10 @@ fn mean_cage_speed_converges_with_the_tolerance() {
         let mut m =
             BearingModel::new(&g, &steel, &steel, HertzModel::HertzCircular, params).unwrap();
         let y0 = m.pure_rolling_state([0.0; 5]);
-        let mut rk = ExplicitRk::new(&DOPRI5, adaptive(rtol), &m, 0.0, &y0).unwrap();
+        let mut rk = ExplicitRk::builder(&DOPRI5)
+            .control(adaptive(rtol))
+            .build(&m, &y0)
+            .unwrap();
         let c = m.layout().cage() + 2;
         let mut angle = [0.0; 2];
         rk.step(&mut m, 0.02).unwrap();
@@ -81,7 +84,10 @@ fn smooth_means_converge_with_the_tolerance() {
         let mut m =
             BearingModel::new(&bearing_7008c(), &steel, &steel, HertzModel::Exact, params).unwrap();
         let y0 = m.state_from_equilibrium(&eq);
-        let mut rk = ExplicitRk::new(&DOPRI5, adaptive(rtol), &m, 0.0, &y0).unwrap();
+        let mut rk = ExplicitRk::builder(&DOPRI5)
+            .control(adaptive(rtol))
+            .build(&m, &y0)
+            .unwrap();
         let t_end = 1e-3;
         while rk.t() < t_end {
             rk.step(&mut m, t_end).unwrap();
@@ -113,7 +119,10 @@ fn mean_drive_power_converges_with_the_traction_grid() {
         let mut m =
             BearingModel::new(&bearing_7008c(), &steel, &steel, HertzModel::Exact, params).unwrap();
         let y0 = m.state_from_equilibrium(&eq);
-        let mut rk = ExplicitRk::new(&DOPRI5, adaptive(1e-6), &m, 0.0, &y0).unwrap();
+        let mut rk = ExplicitRk::builder(&DOPRI5)
+            .control(adaptive(1e-6))
+            .build(&m, &y0)
+            .unwrap();
         let t_end = 1e-3;
         while rk.t() < t_end {
             rk.step(&mut m, t_end).unwrap();

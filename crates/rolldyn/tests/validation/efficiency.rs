@@ -21,7 +21,11 @@ use rolldyn::material::Material;
 const SLACK: f64 = 1.15;
 
 fn run(mut model: BearingModel, y0: &[f64], rtol: f64, t_end: f64) -> IntegrationStats {
-    let mut r = Rosenbrock::new(&ROS34PW2, rtol, 1e-4, None, &model, 0.0, y0).unwrap();
+    let mut r = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(rtol)
+        .max_step(1e-4)
+        .build(&model, y0)
+        .unwrap();
     while r.t() < t_end {
         r.step(&mut model, t_end).unwrap();
     }

@@ -151,9 +151,12 @@ fn a_run_with_the_refresh_resumes_bit_identically() {
     let layout = m.layout();
     y0[layout.cage() + 2] += 0.1e-3 / 27e-3;
     y0[layout.cage()] += 20e-6;
-    let mut s = Rosenbrock::new(&ROS34PW2, 1e-2, 1e-4, None, &m, 0.0, &y0)
-        .unwrap()
-        .with_energy_control(&m, 1e-4);
+    let mut s = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(1e-2)
+        .max_step(1e-4)
+        .energy_tolerance(Some(1e-4))
+        .build(&m, &y0)
+        .unwrap();
     let mut bytes = None;
     while s.t() < t_end {
         s.step(&mut m, t_end).unwrap();
@@ -170,9 +173,12 @@ fn a_run_with_the_refresh_resumes_bit_identically() {
         "the refresh ran before the checkpoint: {at_checkpoint:?}"
     );
     let (mut m2, _) = model();
-    let mut s2 = Rosenbrock::new(&ROS34PW2, 1e-2, 1e-4, None, &m2, 0.0, &y0)
-        .unwrap()
-        .with_energy_control(&m2, 1e-4);
+    let mut s2 = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(1e-2)
+        .max_step(1e-4)
+        .energy_tolerance(Some(1e-4))
+        .build(&m2, &y0)
+        .unwrap();
     let mut r = StateReader::new(&bytes);
     s2.restore(&mut r).unwrap();
     m2.restore(&mut r).unwrap();

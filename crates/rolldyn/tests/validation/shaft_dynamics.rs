@@ -214,7 +214,11 @@ fn preloaded_pair_in_motion_keeps_its_quasi_static_preload() {
     let preload = eq.bearings[0].as_ref().unwrap().reaction[0];
     let mut system = pair_on_its_shaft(&set, &model);
     let y0 = system.initial_state(&eq).unwrap();
-    let mut rk = Rosenbrock::new(&ROS34PW2, 1e-4, 1e-4, None, &system, 0.0, &y0).unwrap();
+    let mut rk = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(1e-4)
+        .max_step(1e-4)
+        .build(&system, &y0)
+        .unwrap();
     let (t_start, t_end, dt) = (2e-3, 5e-3, 1e-5);
     let l = model.layout();
     let mut own = vec![0.0; l.len()];
@@ -273,7 +277,11 @@ fn a_shared_end_pass_gives_the_separate_evaluations_bits() {
     let eq = set.solve(&conditions, &SolverOptions::default()).unwrap();
     let mut system = pair_on_its_shaft(&set, &model);
     let y0 = system.initial_state(&eq).unwrap();
-    let mut rk = Rosenbrock::new(&ROS34PW2, 1e-4, 1e-4, None, &system, 0.0, &y0).unwrap();
+    let mut rk = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(1e-4)
+        .max_step(1e-4)
+        .build(&system, &y0)
+        .unwrap();
     while rk.t() < 1e-3 {
         rk.step(&mut system, 1e-3).unwrap();
     }
@@ -340,7 +348,11 @@ fn unbalance_response_of_a_pair_is_the_rigid_rotor_on_the_set_stiffness() {
     })
     .unwrap();
     let y0 = system.initial_state(&eq).unwrap();
-    let mut rk = Rosenbrock::new(&ROS34PW2, 1e-4, 2e-5, None, &system, 0.0, &y0).unwrap();
+    let mut rk = Rosenbrock::builder(&ROS34PW2)
+        .relative_tolerance(1e-4)
+        .max_step(2e-5)
+        .build(&system, &y0)
+        .unwrap();
     // Ten turns after two for the start's transient; the shaft's y against
     // cos ωt and sin ωt over whole turns.
     let turn = std::f64::consts::TAU / speed;

@@ -56,8 +56,14 @@ pub struct ExplicitRk {
 }
 
 impl ExplicitRk {
+    /// The builder of an integrator with this tableau ([`super::Builder`]:
+    /// defaults, changed by name).
+    pub fn builder(tableau: &'static Tableau) -> super::Builder<Tableau> {
+        super::Builder::new(tableau)
+    }
+
     /// Sets up an integration of `system` from (t0, y0).
-    pub fn new(
+    pub(crate) fn start(
         tableau: &'static Tableau,
         control: StepControl,
         system: &impl OdeSystem,
@@ -188,7 +194,7 @@ impl ExplicitRk {
     /// `tolerance` per unit of energy turned over in a step
     /// ([`super::energy_control`]); adaptive steps only, no effect for a
     /// system that keeps no balance. Call before the first step.
-    pub fn with_energy_control(mut self, system: &impl OdeSystem, tolerance: f64) -> Self {
+    pub(crate) fn with_energy_control(mut self, system: &impl OdeSystem, tolerance: f64) -> Self {
         if matches!(self.control, StepControl::Adaptive { .. }) && !self.tableau.error.is_empty() {
             self.energy = EnergyControl::new(
                 system,

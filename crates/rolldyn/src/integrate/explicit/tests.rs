@@ -27,17 +27,15 @@ fn failure_names_the_state_component() {
         max_step: 0.1,
         initial_step: None,
     };
-    let mut explicit = ExplicitRk::new(&DOPRI5, adaptive, &NamedBlowUp, 0.0, &[1.0, 1.0]).unwrap();
-    let mut stiff = crate::integrate::Rosenbrock::new(
-        &crate::integrate::ROS34PW2,
-        1e-6,
-        0.1,
-        None,
-        &NamedBlowUp,
-        0.0,
-        &[1.0, 1.0],
-    )
-    .unwrap();
+    let mut explicit = ExplicitRk::builder(&DOPRI5)
+        .control(adaptive)
+        .build(&NamedBlowUp, &[1.0, 1.0])
+        .unwrap();
+    let mut stiff = crate::integrate::Rosenbrock::builder(&crate::integrate::ROS34PW2)
+        .relative_tolerance(1e-6)
+        .max_step(0.1)
+        .build(&NamedBlowUp, &[1.0, 1.0])
+        .unwrap();
     let mut failures = Vec::new();
     for _ in 0..100_000 {
         if let Err(e) = explicit.step(&mut NamedBlowUp, 2.0) {
@@ -92,7 +90,10 @@ fn run(
     t_end: f64,
 ) -> (f64, IntegrationStats, u64) {
     let mut sys = Oscillator { accepted: 0 };
-    let mut rk = ExplicitRk::new(tab, control, &sys, 0.0, &[1.0, 0.0]).unwrap();
+    let mut rk = ExplicitRk::builder(tab)
+        .control(control)
+        .build(&sys, &[1.0, 0.0])
+        .unwrap();
     while rk.t() < t_end {
         rk.step(&mut sys, t_end).unwrap();
     }
@@ -135,14 +136,10 @@ fn dopri5_meets_its_tolerance_and_scales() {
 fn dense_output_is_fourth_order() {
     let err = |rtol: f64| {
         let mut sys = Oscillator { accepted: 0 };
-        let mut rk = ExplicitRk::new(
-            &DOPRI5,
-            StepControl::Fixed { step: rtol },
-            &sys,
-            0.0,
-            &[1.0, 0.0],
-        )
-        .unwrap();
+        let mut rk = ExplicitRk::builder(&DOPRI5)
+            .control(StepControl::Fixed { step: rtol })
+            .build(&sys, &[1.0, 0.0])
+            .unwrap();
         let mut worst = 0.0f64;
         let mut out = [0.0; 2];
         while rk.t() < 5.0 {
@@ -161,14 +158,10 @@ fn dense_output_is_fourth_order() {
     assert!(ratio > 20.0, "ratio {ratio}");
     // RK4 Hermite output, O(h⁴) locally.
     let mut sys = Oscillator { accepted: 0 };
-    let mut rk = ExplicitRk::new(
-        &RK4,
-        StepControl::Fixed { step: 0.01 },
-        &sys,
-        0.0,
-        &[1.0, 0.0],
-    )
-    .unwrap();
+    let mut rk = ExplicitRk::builder(&RK4)
+        .control(StepControl::Fixed { step: 0.01 })
+        .build(&sys, &[1.0, 0.0])
+        .unwrap();
     rk.step(&mut sys, 1.0).unwrap();
     let mut out = [0.0; 2];
     rk.interpolate(0.005, &mut out);
@@ -194,7 +187,10 @@ fn reports_failure_instead_of_nan() {
         max_step: 0.1,
         initial_step: None,
     };
-    let mut rk = ExplicitRk::new(&DOPRI5, control, &sys, 0.0, &[1.0]).unwrap();
+    let mut rk = ExplicitRk::builder(&DOPRI5)
+        .control(control)
+        .build(&sys, &[1.0])
+        .unwrap();
     let mut result = Ok(());
     while rk.t() < 2.0 && result.is_ok() {
         result = rk.step(&mut sys, 2.0);
@@ -210,7 +206,10 @@ fn reports_failure_instead_of_nan() {
         result
     );
     assert!(
-        ExplicitRk::new(&RK4, control, &sys, 0.0, &[1.0]).is_err(),
+        ExplicitRk::builder(&RK4)
+            .control(control)
+            .build(&sys, &[1.0])
+            .is_err(),
         "RK4 has no error estimate"
     );
 }

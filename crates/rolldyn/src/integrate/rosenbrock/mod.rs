@@ -223,8 +223,14 @@ pub struct Rosenbrock {
 }
 
 impl Rosenbrock {
+    /// The builder of an integrator with this tableau ([`super::Builder`]:
+    /// defaults, changed by name).
+    pub fn builder(tableau: &'static RosenbrockTableau) -> super::Builder<RosenbrockTableau> {
+        super::Builder::new(tableau)
+    }
+
     /// Sets up an integration of `system` from (t0, y0) with error control.
-    pub fn new(
+    pub(crate) fn start(
         tableau: &'static RosenbrockTableau,
         relative_tolerance: f64,
         max_step: f64,
@@ -342,7 +348,7 @@ impl Rosenbrock {
     /// `tolerance` per unit of energy turned over in a step
     /// ([`super::energy_control`]); no effect for a system that keeps no
     /// balance. Call before the first step.
-    pub fn with_energy_control(mut self, system: &impl OdeSystem, tolerance: f64) -> Self {
+    pub(crate) fn with_energy_control(mut self, system: &impl OdeSystem, tolerance: f64) -> Self {
         self.energy = EnergyControl::new(
             system,
             tolerance,

@@ -90,8 +90,12 @@ fn oscillation_damped_per_period_as_the_stability_function_says() {
             (per_period - expected).abs() < 1e-4,
             "{steps}: {per_period}"
         );
-        let mut r =
-            Rosenbrock::new(&ROS34PW2, 0.5, h, Some(h), &Oscillator, 0.0, &[1.0, 0.0]).unwrap();
+        let mut r = Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(0.5)
+            .max_step(h)
+            .initial_step(Some(h))
+            .build(&Oscillator, &[1.0, 0.0])
+            .unwrap();
         r.evaluate_jacobian(&Oscillator);
         r.jacobian_age = Some(0);
         let periods = 10;
@@ -124,8 +128,11 @@ fn third_order_with_exact_and_with_wrong_jacobian() {
         }
     }
     let reference = {
-        let mut r =
-            Rosenbrock::new(&ROS34PW2, 1e-12, 1e-3, None, &Rotating, 0.0, &[1.0, 0.0]).unwrap();
+        let mut r = Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(1e-12)
+            .max_step(1e-3)
+            .build(&Rotating, &[1.0, 0.0])
+            .unwrap();
         while r.t() < 1.0 {
             r.step(&mut Rotating, 1.0).unwrap();
         }
@@ -135,9 +142,12 @@ fn third_order_with_exact_and_with_wrong_jacobian() {
         let errors: Vec<f64> = [0.1, 0.05]
             .iter()
             .map(|&h| {
-                let mut r =
-                    Rosenbrock::new(&ROS34PW2, 0.5, h, Some(h), &Rotating, 0.0, &[1.0, 0.0])
-                        .unwrap();
+                let mut r = Rosenbrock::builder(&ROS34PW2)
+                    .relative_tolerance(0.5)
+                    .max_step(h)
+                    .initial_step(Some(h))
+                    .build(&Rotating, &[1.0, 0.0])
+                    .unwrap();
                 r.evaluate_jacobian(&Rotating);
                 if zero_jacobian {
                     r.jacobian = BlockJacobian::zeros(BlockLayout::dense(2));
@@ -169,7 +179,11 @@ fn stiff_van_der_pol_in_few_steps() {
     let sys = VanDerPol { mu: 1000.0 };
     let run = |rtol: f64| {
         let mut s = VanDerPol { mu: 1000.0 };
-        let mut r = Rosenbrock::new(&ROS34PW2, rtol, 1.0, None, &sys, 0.0, &[2.0, 0.0]).unwrap();
+        let mut r = Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(rtol)
+            .max_step(1.0)
+            .build(&sys, &[2.0, 0.0])
+            .unwrap();
         while r.t() < 2.0 {
             r.step(&mut s, 2.0).unwrap();
         }
@@ -210,11 +224,15 @@ fn scaled_energy_error_goes_as_the_states_error() {
     }
     let y0 = [0.3, 0.9];
     let scaled = |h: f64| {
-        let mut r = Rosenbrock::new(&ROS34PW2, 0.5, 1.0, Some(h), &Pendulum, 0.0, &y0)
-            .unwrap()
+        let mut r = Rosenbrock::builder(&ROS34PW2)
+            .relative_tolerance(0.5)
+            .max_step(1.0)
+            .initial_step(Some(h))
+            .energy_tolerance(Some(1e-3))
             // ε h P₀ ≥ 6e-12 J: far above the energies' rounding (2e-16 J),
             // so that the allowance goes as h.
-            .with_energy_control(&Pendulum, 1e-3);
+            .build(&Pendulum, &y0)
+            .unwrap();
         r.evaluate_jacobian(&Pendulum);
         r.attempt(&mut Pendulum, h)
     };
