@@ -116,13 +116,25 @@ fn every_plot_script_is_valid_python() {
 }
 
 /// Every preset is a complete case: `rolldyn new --preset P` runs as it
-/// is (cage, ring mass or width, traction given or assumed in the preset).
+/// is (cage, ring mass or width, traction given or assumed in the preset),
+/// and states its simulated time (a first look; the wall times of the
+/// runs as written are in docs/performance.md, "The presets and
+/// examples"). Here each runs 1 ms, for the test's time.
 #[test]
 fn every_preset_runs() {
     for preset in rolldyn_case::presets::PRESETS {
         let o = rolldyn(&["new", "--preset", preset.name], None);
         assert!(o.status.success(), "{}: {}", preset.name, stderr(&o));
         let case = String::from_utf8(o.stdout).unwrap();
+        let written = rolldyn_case::load_case(preset.name, &case, &[]).unwrap();
+        let duration = written
+            .duration
+            .unwrap_or_else(|| panic!("{}: the preset states no solver.duration", preset.name));
+        assert!(
+            (0.01..=2.0).contains(&duration),
+            "{}: a first look of {duration} s",
+            preset.name
+        );
         let out = temp_dir(&format!("preset-{}", preset.name));
         let o = rolldyn(
             &[
