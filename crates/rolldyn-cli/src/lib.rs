@@ -219,6 +219,13 @@ impl CaseArgs {
     }
 }
 
+/// A time option's value ("0.1 s", "20 ms") in seconds, parsed as case
+/// files parse times (a bare number is refused with the same message):
+/// clap's `value_parser` for time options that are numbers in the library.
+pub fn time_value(text: &str) -> Result<f64, String> {
+    Quantity::<rolldyn_case::units::Time>::parse(text).map(|q| q.si)
+}
+
 pub fn parse_angle(flag: &str, text: Option<&String>) -> Result<Option<f64>, Failure> {
     text.map(|t| {
         let a = Quantity::<Angle>::parse(t)
@@ -233,11 +240,16 @@ pub fn parse_angle(flag: &str, text: Option<&String>) -> Result<Option<f64>, Fai
     .transpose()
 }
 
+/// Writes `text` to standard output; a closed pipe ends quietly.
 pub fn emit(text: &str) -> Result<(), Failure> {
     let mut out = std::io::stdout().lock();
-    out.write_all(text.as_bytes())
-        .and_then(|_| out.flush())
-        .map_err(|e| Failure::BadInput(format!("cannot write to standard output: {e}")))
+    match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
+        // A reader that closed the pipe (`| head`) has what it wanted.
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        result => {
+            result.map_err(|e| Failure::BadInput(format!("cannot write to standard output: {e}")))
+        }
+    }
 }
 
 pub fn json<T: serde::Serialize>(value: &T) -> Result<(), Failure> {

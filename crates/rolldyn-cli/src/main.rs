@@ -145,8 +145,14 @@ struct QuasistaticArgs {
     json: bool,
 }
 
-/// Arguments of `rolldyn run`.
+/// Arguments of `rolldyn run`. The quasi-static ring constraints of
+/// the shared case flags (`--fix-tilt`, `--misalignment`) are refused by a
+/// dynamic run, so its help does not offer them.
 #[derive(Args)]
+#[command(
+    mut_arg("fix_tilt", |a| a.hide(true)),
+    mut_arg("misalignment", |a| a.hide(true))
+)]
 struct RunArgs {
     #[command(flatten)]
     case: CaseArgs,

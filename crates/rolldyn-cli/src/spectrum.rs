@@ -47,9 +47,9 @@ pub struct SpectrumArgs {
     /// sample rate).
     #[arg(long, value_name = "LOW:HIGH", allow_hyphen_values = true)]
     pub band: Option<String>,
-    /// Analyse samples from this time in s (default: the summary's
-    /// averaging window, the second half of the run).
-    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
+    /// Analyse samples from this time, e.g. "0.1 s" (default: the
+    /// summary's averaging window, the second half of the run).
+    #[arg(long, value_name = "TIME", allow_hyphen_values = true, value_parser = crate::time_value)]
     pub from: Option<f64>,
     /// Harmonics of each characteristic frequency to mark.
     #[arg(long, default_value_t = 5, allow_hyphen_values = true)]
@@ -242,7 +242,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
             Some(_) => bad_arg("--from", &from_time.to_string(), rule),
             // The user gave no --from: the window is the summary's.
             None => Failure::BadInput(format!(
-                "{}: the run's averaging window (from t = {from_time} s, its second half) holds {} samples of {}; a spectrum needs at least 16: run longer or at a higher output.sample_rate, or pass --from 0 for the whole record",
+                "{}: the run's averaging window (from t = {from_time} s, its second half) holds {} samples of {}; a spectrum needs at least 16: run longer or at a higher output.sample_rate, or pass --from \"0 s\" for the whole record",
                 dir.display(),
                 record.len(),
                 channel

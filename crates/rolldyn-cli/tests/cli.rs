@@ -585,6 +585,44 @@ fn set_run_interrupted_exits_130() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A reader that closes the pipe early (`rolldyn catalogue --json | head`)
+/// ends the command quietly: no message, exit 0. The output (150 kB) is
+/// larger than a pipe holds, so the write meets the closed pipe.
+#[test]
+fn a_closed_pipe_ends_quietly() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .args(["catalogue", "--json"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// `run --help` offers no quasi-static ring constraint (a dynamic run
+/// refuses them); `quasistatic --help` does.
+#[test]
+fn run_help_offers_only_what_run_accepts() {
+    let help = |command: &str| {
+        let o = rolldyn(&[command, "--help"], None);
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let run = help("run");
+    assert!(
+        !run.contains("--fix-tilt") && !run.contains("--misalignment"),
+        "{run}"
+    );
+    let quasistatic = help("quasistatic");
+    assert!(quasistatic.contains("--fix-tilt") && quasistatic.contains("--misalignment"));
+}
+
 /// A FASTSIM run records the creepage and stick channels and their means.
 #[test]
 fn fastsim_run_records_creepages() {

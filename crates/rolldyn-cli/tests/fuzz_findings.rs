@@ -135,7 +135,7 @@ fn findings_of_independent_fuzzing_stay_fixed() {
         &["spectrum", &short],
         None,
         2,
-        &["averaging window", "--from 0"],
+        &["averaging window", "--from \"0 s\""],
     );
     let o = common::rolldyn(&["spectrum", &short, "--list", "--json"], None);
     let list: Value = serde_json::from_str(&common::stdout(&o)).unwrap();

@@ -214,7 +214,7 @@ fn dynamic_run_of_a_pair() {
             "--channel",
             "shaft_z_m",
             "--from",
-            "0",
+            "0 s",
         ],
         None,
     );

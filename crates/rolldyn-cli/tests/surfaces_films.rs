@@ -162,7 +162,7 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
             "--channel",
             "inner_ring_acceleration_x_m_s2",
             "--from",
-            "0.002",
+            "2 ms",
             "--json",
         ],
         None,
@@ -219,7 +219,7 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
             "--segment",
             "16",
             "--from",
-            "0",
+            "0 s",
             "--json",
         ],
         None,
@@ -239,7 +239,9 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
         (vec!["--channel", "nope"], "--channel nope"),
         (vec!["--kind", "cepstrum"], "--kind cepstrum"),
         (vec!["--kind", "envelope", "--band", "9000:100"], "--band"),
-        (vec!["--from", "1"], "--from"),
+        (vec!["--from", "1 s"], "--from"),
+        // A bare number: the case files' message.
+        (vec!["--from", "0.1"], "missing unit"),
     ] {
         let mut all = vec!["spectrum", d.as_str()];
         all.extend(args);
