@@ -13,8 +13,13 @@ if [ -z "$browser" ]; then
   apt-get install -y chromium >/dev/null
   browser=$(command -v chromium)
 fi
-# Tall enough for the whole page; --virtual-time-budget lets layout finish.
+# Tall enough for the whole page, from what it holds (a plot ~420 px, a
+# table row ~30 px, a line of preformatted text ~16 px, headings and
+# paragraphs), generously: blank below the page does no harm, a page cut
+# short does. --virtual-time-budget lets layout finish.
+count() { grep -o "$1" "$html" | wc -l; }
+height=$(( 420 * $(count '<svg') + 30 * $(count '<tr>') + 16 * $(wc -l < "$html") + 80 * $(count '<h2') + 2000 ))
 "$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars \
-  --window-size="${width},9000" --virtual-time-budget=2000 \
+  --window-size="${width},${height}" --virtual-time-budget=2000 \
   --screenshot="$dir/report.png" "file://$html" 2>/dev/null
-echo "wrote $dir/report.png"
+echo "wrote $dir/report.png (${width} × ${height} px)"

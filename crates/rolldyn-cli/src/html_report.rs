@@ -31,3 +31,15 @@ pub fn write(dir: &Path) -> Result<PathBuf, Failure> {
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     Ok(path)
 }
+
+/// After a run into `dir`: writes `DIR/report.html` when `asked`, and
+/// rewrites one already there (an earlier run's, or the run's before
+/// `--resume … --until`), which would otherwise describe another run.
+/// Returns the path written, if any.
+pub fn refresh(dir: &Path, asked: bool) -> Result<Option<PathBuf>, Failure> {
+    if asked || RunDir::new(dir).report().is_file() {
+        write(dir).map(Some)
+    } else {
+        Ok(None)
+    }
+}

@@ -552,8 +552,7 @@ fn print_set_run(
             summary.energy_balance_relative_error
         );
     }
-    if with_report {
-        let path = html_report::write(dir)?;
+    if let Some(path) = html_report::refresh(dir, with_report)? {
         emit(&format!("wrote {}\n", path.display()))?;
     }
     match summary.status {
@@ -610,8 +609,7 @@ fn print_run(summary: run::Summary, output: &str, with_report: bool) -> Result<(
     if let Some(text) = rolldyn_cli::accuracy::warning(&summary.accuracy) {
         eprint!("{text}");
     }
-    if with_report {
-        let path = html_report::write(dir)?;
+    if let Some(path) = html_report::refresh(dir, with_report)? {
         emit(&format!("wrote {}\n", path.display()))?;
     }
     match summary.status {

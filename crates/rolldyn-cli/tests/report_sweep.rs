@@ -61,6 +61,34 @@ fn run_report_shows_every_section() {
     );
 }
 
+/// A run whose cage centre is held (`cage.whirl = false`) has no orbit
+/// section; long cells may wrap.
+#[test]
+fn report_leaves_out_what_a_run_has_not() {
+    let dir = temp_dir("run-report-no-whirl");
+    let d = dir.to_str().unwrap();
+    let o = rolldyn(
+        &[
+            "run",
+            "--duration",
+            "2 ms",
+            "--set",
+            "cage.whirl=false",
+            "--report",
+            "-o",
+            d,
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    let (ids, _) = sections(&html);
+    assert!(!ids.contains(&"orbit".to_string()), "{ids:?}");
+    assert!(ids.contains(&"values".to_string()));
+    assert!(html.contains("overflow-wrap:anywhere"));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn report_of_a_directory_without_results_is_refused() {
     let dir = temp_dir("no-results");

@@ -108,6 +108,27 @@ fn killed_run_is_readable_and_resumes_bit_identically() {
     }
 }
 
+/// A run extended with `--until` rewrites the report an earlier run left
+/// in its directory, which would describe the shorter run.
+#[test]
+fn an_extended_run_rewrites_its_report() {
+    let dir = temp_dir("resume-report");
+    let d = dir.to_str().unwrap();
+    let o = rolldyn(&["run", "-o", d, "--duration", "0.2 ms", "--report"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let before = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    let o = rolldyn(&["run", "--resume", d, "--until", "0.4 ms"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("report.html"));
+    let after = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    assert_ne!(before, after);
+    assert!(
+        after.contains("--set solver.duration=0.0004 s"),
+        "the extended record"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn resume_refuses_what_it_cannot_continue() {
     let dir = temp_dir("resume-refuse");

@@ -133,7 +133,7 @@ pub struct Report {
 const STYLE: &str = "body{font-family:system-ui,-apple-system,'Segoe UI',sans-serif;margin:0 auto;max-width:1000px;padding:1em 2em;color:#222}\
 h1{font-size:1.5em;margin-bottom:0.2em}h2{border-bottom:1px solid #ccc;padding-bottom:0.2em;margin-top:1.6em}\
 p.subtitle{color:#555;margin-top:0}nav ul{columns:3;list-style:none;padding:0}\
-table{border-collapse:collapse;margin:0.6em 0;font-size:0.92em}th,td{border:1px solid #ccc;padding:0.2em 0.6em;text-align:right}\
+table{border-collapse:collapse;margin:0.6em 0;font-size:0.92em}th,td{border:1px solid #ccc;padding:0.2em 0.6em;text-align:right;overflow-wrap:anywhere}\
 th{background:#f2f2f2}td:first-child,th:first-child{text-align:left}\
 pre{background:#f7f7f7;padding:0.6em;overflow-x:auto;font-size:0.85em}\
 svg.plot{display:block;max-width:100%;height:auto;margin:0.8em 0;font-size:11px;font-family:system-ui,sans-serif}\

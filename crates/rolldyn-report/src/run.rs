@@ -429,8 +429,12 @@ fn slip(data: &RunData) -> Option<Section> {
     )
 }
 
+/// Left out when the cage centre never moves (`cage.whirl = false`).
 fn cage_orbit(data: &RunData) -> Option<Section> {
     let (y, z) = data.orbit.as_ref()?;
+    if y.iter().chain(z).all(|v| *v == 0.0) {
+        return None;
+    }
     let y: Vec<f64> = y.iter().map(|v| 1e6 * v).collect();
     let z: Vec<f64> = z.iter().map(|v| 1e6 * v).collect();
     let mut plot = Plot::new("Cage centre orbit", "y [µm]", "z [µm]").with(Series::line(
@@ -562,6 +566,13 @@ fn flatten(key: &str, value: &Value, out: &mut Vec<Vec<String>>) {
         Value::Null => out.push(vec![key.into(), "—".into()]),
         Value::String(s) => out.push(vec![key.into(), s.clone()]),
         Value::Bool(b) => out.push(vec![key.into(), b.to_string()]),
+        // A list of objects (the envelope's lines): a row per field of
+        // each, numbered, so that no cell holds a whole list.
+        Value::Array(items) if items.iter().any(Value::is_object) => {
+            for (i, item) in items.iter().enumerate() {
+                flatten(&format!("{key}.{i}"), item, out);
+            }
+        }
         Value::Array(items) => out.push(vec![
             key.into(),
             items
@@ -570,5 +581,35 @@ fn flatten(key: &str, value: &Value, out: &mut Vec<Vec<String>>) {
                 .collect::<Vec<_>>()
                 .join(", "),
         ]),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A list of objects becomes a row per field, numbered; a list of
+    /// numbers stays one row.
+    #[test]
+    fn lists_of_objects_are_flattened() {
+        let value = serde_json::json!({
+            "lines": [{"name": "BPFO", "frequency_hz": 107.4}, {"name": "2xBPFO", "frequency_hz": 214.8}],
+            "window_s": [0.1, 0.2]
+        });
+        let mut rows = Vec::new();
+        flatten("envelope_lines", &value, &mut rows);
+        let keys: Vec<&str> = rows.iter().map(|r| r[0].as_str()).collect();
+        assert_eq!(
+            keys,
+            [
+                "envelope_lines.lines.0.frequency_hz",
+                "envelope_lines.lines.0.name",
+                "envelope_lines.lines.1.frequency_hz",
+                "envelope_lines.lines.1.name",
+                "envelope_lines.window_s",
+            ]
+        );
+        assert_eq!(rows[1][1], "BPFO");
+        assert!(rows.iter().all(|r| !r[1].contains('{')));
     }
 }
