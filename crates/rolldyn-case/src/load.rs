@@ -137,6 +137,15 @@ fn set_path(
     let mut current = table;
     let mut i = 0;
     while i < parents.len() {
+        // An index into an array the case does not have: the array cannot
+        // be made an entry at a time.
+        let next = parents.get(i + 1).unwrap_or(leaf);
+        if !current.contains_key(parents[i]) && next.parse::<usize>().is_ok() {
+            let array = parts[..=i].join(".");
+            return Err(format!(
+                "the case has no {array}: an index ({next}) names an entry of an array of tables the case has; give the array whole, e.g. --set '{array}=[{{ ... }}]'"
+            ));
+        }
         let entry = current
             .entry(parents[i].to_string())
             .or_insert_with(|| Value::Table(Table::new()));
@@ -251,6 +260,13 @@ impl Sources<'_> {
         })
     }
 
+    /// The override that sets a key inside table `key`, if any.
+    fn override_within(&self, key: &str) -> Option<(&String, &(String, String))> {
+        self.overrides
+            .iter()
+            .find(|(o, _)| o.starts_with(&format!("{key}.")))
+    }
+
     /// An error about `key`, located at its source; a missing `value` is
     /// filled in from the source text.
     fn error(&self, key: Option<String>, value: Option<String>, rule: String) -> CaseError {
@@ -268,6 +284,10 @@ impl Sources<'_> {
                         .find(k)
                         .map_or(Origin::Unknown, |s| position(self.text, s.start));
                     (at, self.spans.value_text(k, self.text).map(str::to_string))
+                } else if let Some((_, (text, _))) = self.override_within(k) {
+                    // A table only an override made (an unknown section, a
+                    // section missing what the override does not give).
+                    (Origin::Override(text.clone()), None)
                 } else if let Some((name, _)) = self.preset.as_ref().filter(|(_, t)| has_path(t, k))
                 {
                     (Origin::Preset(name.clone()), None)
@@ -422,8 +442,11 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
     // radial_load replaced by force_z): their assumptions go with them.
     let mut displaced = Vec::new();
     for o in overrides {
-        set_path(&mut table, &o.key, o.value.clone(), &mut displaced)
-            .map_err(|rule| sources.error(Some(o.key.clone()), Some(o.value.to_string()), rule))?;
+        set_path(&mut table, &o.key, o.value.clone(), &mut displaced).map_err(|rule| {
+            let mut error = sources.error(Some(o.key.clone()), Some(o.value.to_string()), rule);
+            error.origin = Box::new(Origin::Override(o.text.clone()));
+            error
+        })?;
         sources
             .overrides
             .insert(o.key.clone(), (o.text.clone(), o.value.to_string()));

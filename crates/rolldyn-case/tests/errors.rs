@@ -345,6 +345,34 @@ fn overrides_are_validated_like_the_file() {
     assert_eq!(ok.bearing.geometry.nominal_contact_angle(), 0.0);
 }
 
+/// An override that makes a table the case does not have, or indexes an
+/// array it does not have, is blamed, not the file.
+#[test]
+fn overrides_are_named_in_their_errors() {
+    let blamed = |set: &str| {
+        let e = load_case("case.toml", BASE, &[Override::parse_set(set).unwrap()]).unwrap_err();
+        assert_eq!(
+            *e.origin,
+            Origin::Override(format!("command-line override `--set {set}`")),
+            "{e}"
+        );
+        e.to_string()
+    };
+    assert!(blamed("bogus.key=1").contains("unknown field `bogus`"));
+    assert!(blamed("arrangement.preload=200 N").contains("missing field `kind`"));
+    for (set, array) in [
+        ("shaft.loads.0.mesh_order=23", "shaft.loads"),
+        ("sensor.modes.0.frequency=3 kHz", "sensor.modes"),
+        ("surface.outer.spall.0.length=1 mm", "surface.outer.spall"),
+    ] {
+        let e = blamed(set);
+        assert!(
+            e.contains(&format!("the case has no {array}")) && e.contains("give the array whole"),
+            "{e}"
+        );
+    }
+}
+
 #[test]
 fn presets_merge_and_report_assumptions() {
     let case = load_case("case.toml", "[bearing]\npreset = \"7218b\"\n", &[]).unwrap();

@@ -11,9 +11,10 @@ use crate::vibration::VELOCITY_BAND;
 use crate::{Failure, bad_arg, emit, json};
 use clap::Args;
 use rolldyn::signal::{
-    CharacteristicFrequencies, Spectrum, Window, amplitude_spectrum, band_rms, band_velocity_rms,
-    envelope_spectrum, find_peaks, spectrogram, welch_psd,
+    CharacteristicFrequencies, Fault, Spectrum, Window, amplitude_spectrum, band_rms,
+    band_velocity_rms, envelope_spectrum, find_peaks, spectrogram, welch_psd,
 };
+use rolldyn::surface::SpallSite;
 use rolldyn_io::RunDir;
 use serde::Serialize;
 use std::fmt::Write;
@@ -77,6 +78,8 @@ struct PeakEntry {
     value: f64,
     line: Option<String>,
     line_frequency_hz: Option<f64>,
+    /// The other lines within the naming tolerance (1.5 bins).
+    other_lines: Vec<String>,
 }
 
 #[derive(Serialize)]
@@ -322,9 +325,20 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         summary.ball_diameter_m / summary.pitch_diameter_m,
         alpha,
     );
-    let lines = characteristic.lines(args.harmonics);
+    // Lines up to the spectrum's end: the marked ones (`--harmonics`), and
+    // every family's harmonics for naming the peaks.
+    let band_end = spectrum.frequency.last().copied().unwrap_or(0.0);
+    let lines = characteristic.lines_up_to(band_end, args.harmonics);
+    let naming = characteristic.lines_up_to(band_end, MAX_NAMING_HARMONICS);
     let resolution = spectrum.resolution();
-    let peaks = find_peaks(&spectrum, resolution, args.peaks, &lines, 1.5 * resolution);
+    let peaks = find_peaks(
+        &spectrum,
+        resolution,
+        args.peaks,
+        &naming,
+        1.5 * resolution,
+        &faults(dir),
+    );
     let velocity_band = (VELOCITY_BAND.0, VELOCITY_BAND.1.min(0.5 * sample_rate));
     let velocity_rms = match unit.as_str() {
         "m/s^2" => band_velocity_rms(record, sample_rate, velocity_band).ok(),
@@ -386,6 +400,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
                 value: p.value,
                 line: p.line,
                 line_frequency_hz: p.line_frequency,
+                other_lines: p.other_lines,
             })
             .collect(),
         lines: lines
@@ -401,6 +416,36 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     rolldyn_io::write_atomic(&dir.join(format!("{stem}.json")), (text + "\n").as_bytes())
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     Ok(report)
+}
+
+/// Most harmonics of the lowest line (the cage's) the peaks are named
+/// by: 20 000 reach 100 kHz at a 5 Hz cage.
+const MAX_NAMING_HARMONICS: usize = 20_000;
+
+/// The families of the faults of the run's case (its spalls), whose lines
+/// name the peaks they could share with another line; none when the
+/// directory's record cannot be read.
+fn faults(dir: &Path) -> Vec<Fault> {
+    let Ok(record) = crate::checkpoint::RunRecord::read(dir) else {
+        return Vec::new();
+    };
+    let Ok(case) = record
+        .overrides
+        .load_text(&record.source, record.case_text.as_deref())
+    else {
+        return Vec::new();
+    };
+    let mut faults: Vec<Fault> = case
+        .surface
+        .spalls()
+        .map(|(site, _)| match site {
+            SpallSite::Outer => Fault::OuterRace,
+            SpallSite::Inner => Fault::InnerRace,
+            SpallSite::Ball(_) => Fault::Ball,
+        })
+        .collect();
+    faults.dedup();
+    faults
 }
 
 fn parse_band(text: &str) -> Result<(f64, f64), Failure> {
@@ -453,10 +498,13 @@ impl Report {
         }
         let _ = writeln!(t, "{:>12} {:>14}  nearest line", "f [Hz]", self.value_unit);
         for p in &self.peaks {
-            let line = match (&p.line, p.line_frequency_hz) {
+            let mut line = match (&p.line, p.line_frequency_hz) {
                 (Some(name), Some(f)) => format!("{name} ({f:.1} Hz)"),
                 _ => "—".to_string(),
             };
+            if !p.other_lines.is_empty() {
+                line += &format!(", or {}", p.other_lines.join(", "));
+            }
             let _ = writeln!(t, "{:>12.2} {:>14.4e}  {line}", p.frequency_hz, p.value);
         }
         let _ = writeln!(t, "wrote {}", self.csv);

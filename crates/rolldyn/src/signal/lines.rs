@@ -119,6 +119,60 @@ impl CharacteristicFrequencies {
     }
 }
 
+impl Line {
+    /// The harmonic number k of a line named `k×…` (1 for a fundamental).
+    pub fn order(&self) -> usize {
+        self.name
+            .split_once('×')
+            .and_then(|(k, _)| k.parse().ok())
+            .unwrap_or(1)
+    }
+}
+
+impl CharacteristicFrequencies {
+    /// The lines of [`Self::lines`] up to `max_frequency` \[Hz\], each
+    /// family's harmonics as far as they reach (at most `limit` of the
+    /// lowest line's): the lines a spectrum up to `max_frequency` can show.
+    pub fn lines_up_to(&self, max_frequency: f64, limit: usize) -> Vec<Line> {
+        let lowest = [self.shaft, self.cage, self.bpfo, self.bpfi, self.ball_spin]
+            .into_iter()
+            .filter(|f| *f > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        if !(lowest.is_finite() && max_frequency > 0.0) {
+            return Vec::new();
+        }
+        let harmonics = ((max_frequency / lowest).ceil() as usize).clamp(1, limit.max(1));
+        let mut lines = self.lines(harmonics);
+        lines.retain(|l| l.frequency <= max_frequency);
+        lines
+    }
+}
+
+/// The line family of a fault: what its envelope spectrum shows
+/// (Randall & Antoni 2011): an outer-race fault BPFO and its harmonics
+/// (with ±f_c sidebands), an inner-race fault BPFI (with ±f_i sidebands),
+/// a ball fault 2×BSF (with ±f_c sidebands).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Fault {
+    /// A fault on the outer raceway.
+    OuterRace,
+    /// A fault on the inner raceway.
+    InnerRace,
+    /// A fault on a ball.
+    Ball,
+}
+
+impl Fault {
+    /// Whether `line` belongs to the fault's family.
+    pub fn shows(self, line: &Line) -> bool {
+        match self {
+            Self::OuterRace => line.name.contains("BPFO"),
+            Self::InnerRace => line.name.contains("BPFI"),
+            Self::Ball => line.name.contains("BSF"),
+        }
+    }
+}
+
 /// A spectral peak with the nearest characteristic line.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Peak {
@@ -130,19 +184,28 @@ pub struct Peak {
     pub line: Option<String>,
     /// That line's frequency \[Hz\].
     pub line_frequency: Option<f64>,
+    /// The other lines within `tolerance`, nearest first: the spectrum
+    /// cannot tell them from the named one.
+    pub other_lines: Vec<String>,
 }
 
 /// The `count` largest local maxima of `spectrum` above `min_frequency`
-/// (strictly greater than both neighbours), largest first, each named by the
-/// nearest line within `tolerance` \[Hz\] (none beyond it); harmonics
-/// before sidebands, so that a spectrum too coarse to separate a sideband
-/// names the peak by its carrier.
+/// (strictly greater than both neighbours), largest first, each named by a
+/// line within `tolerance` \[Hz\] (none beyond it): of the lines there,
+/// one of the `faults`' families first (the case's faults: a spectrum too
+/// coarse to tell 6×BPFO from 4×BPFI names a peak of an outer-race fault
+/// by BPFO), then harmonics before sidebands (a spectrum too coarse to
+/// separate a sideband names the peak by its carrier), then the lower
+/// harmonic (BPFO before 10×f_i: the simpler account of a peak the
+/// spectrum cannot resolve), then the nearest. The others within
+/// `tolerance` are the peak's `other_lines`.
 pub fn find_peaks(
     spectrum: &Spectrum,
     min_frequency: f64,
     count: usize,
     lines: &[Line],
     tolerance: f64,
+    faults: &[Fault],
 ) -> Vec<Peak> {
     let v = &spectrum.value;
     let mut peaks: Vec<(usize, f64)> = (1..v.len().saturating_sub(1))
@@ -155,21 +218,30 @@ pub fn find_peaks(
         .into_iter()
         .map(|(k, value)| {
             let frequency = spectrum.frequency[k];
-            let nearest = lines
+            let distance = |l: &Line| (l.frequency - frequency).abs();
+            let mut near: Vec<&Line> = lines.iter().filter(|l| distance(l) <= tolerance).collect();
+            near.sort_by(|a, b| distance(a).total_cmp(&distance(b)));
+            let off_fault = |l: &Line| !faults.iter().any(|f| f.shows(l));
+            let named = near
                 .iter()
-                .filter(|l| (l.frequency - frequency).abs() <= tolerance)
                 .min_by(|a, b| {
-                    a.sideband.cmp(&b.sideband).then(
-                        (a.frequency - frequency)
-                            .abs()
-                            .total_cmp(&(b.frequency - frequency).abs()),
-                    )
-                });
+                    off_fault(a)
+                        .cmp(&off_fault(b))
+                        .then(a.sideband.cmp(&b.sideband))
+                        .then(a.order().cmp(&b.order()))
+                        .then(distance(a).total_cmp(&distance(b)))
+                })
+                .copied();
             Peak {
                 frequency,
                 value,
-                line: nearest.map(|l| l.name.clone()),
-                line_frequency: nearest.map(|l| l.frequency),
+                line: named.map(|l| l.name.clone()),
+                line_frequency: named.map(|l| l.frequency),
+                other_lines: near
+                    .iter()
+                    .filter(|l| named.is_some_and(|n| n.name != l.name))
+                    .map(|l| l.name.clone())
+                    .collect(),
             }
         })
         .collect()
@@ -237,11 +309,55 @@ mod tests {
                 sideband: false,
             },
         ];
-        let peaks = find_peaks(&spectrum, 1.0, 5, &lines, 1.0);
+        let peaks = find_peaks(&spectrum, 1.0, 5, &lines, 1.0, &[]);
         assert_eq!(peaks.len(), 2);
-        // The harmonic wins over the nearer sideband.
+        // The harmonic wins over the nearer sideband, which is shown.
         assert_eq!(peaks[0].line.as_deref(), Some("A"));
+        assert_eq!(peaks[0].other_lines, ["A+f"]);
         assert_eq!(peaks[1].frequency, 53.0);
         assert_eq!(peaks[1].line, None);
+    }
+
+    /// The case: a peak at 645 Hz of an outer-race fault between
+    /// 6×BPFO (645.0 Hz) and 4×BPFI (648.2 Hz), in 4 Hz bins: named by
+    /// the fault's family, the other line shown; without a fault, by the
+    /// nearest.
+    #[test]
+    fn a_fault_names_its_peaks_and_the_band_bounds_the_lines() {
+        let spectrum = Spectrum {
+            frequency: (0..400).map(|k| 4.0 * k as f64).collect(),
+            value: (0..400).map(|k| if k == 162 { 5.0 } else { 0.1 }).collect(),
+        };
+        let line = |name: &str, frequency: f64| Line {
+            name: name.into(),
+            frequency,
+            sideband: false,
+        };
+        let lines = [line("6×BPFO", 645.0), line("4×BPFI", 648.2)];
+        let peak = |faults: &[Fault]| find_peaks(&spectrum, 4.0, 1, &lines, 6.0, faults).remove(0);
+        assert_eq!(peak(&[]).line.as_deref(), Some("4×BPFI"));
+        let outer = peak(&[Fault::OuterRace]);
+        assert_eq!(outer.line.as_deref(), Some("6×BPFO"));
+        assert_eq!(outer.other_lines, ["4×BPFI"]);
+        assert_eq!(peak(&[Fault::InnerRace]).line.as_deref(), Some("4×BPFI"));
+        // The lower harmonic names a peak the bins cannot resolve.
+        let lines = [line("10×f_i", 648.5), line("BPFO", 646.0)];
+        let unresolved = find_peaks(&spectrum, 4.0, 1, &lines, 6.0, &[]).remove(0);
+        assert_eq!(unresolved.line.as_deref(), Some("BPFO"));
+        assert_eq!(unresolved.other_lines, ["10×f_i"]);
+        // Lines up to a band: every family as far as it reaches, no
+        // further, whatever the limit asked.
+        let f = CharacteristicFrequencies::new(30.0, 12.0, 9, 0.2, 0.0);
+        let up_to = f.lines_up_to(1000.0, 1_000_000);
+        assert!(up_to.iter().all(|l| l.frequency <= 1000.0));
+        assert!(
+            up_to.iter().any(|l| l.name == "83×f_c"),
+            "f_c's 83rd harmonic (996 Hz)"
+        );
+        assert!(
+            up_to
+                .iter()
+                .any(|l| l.name.ends_with("×BPFO") && l.frequency > 900.0)
+        );
     }
 }

@@ -20,7 +20,7 @@ pub mod spectrum;
 pub mod statistics;
 pub mod whirl;
 
-pub use lines::{CharacteristicFrequencies, Line, Peak, find_peaks};
+pub use lines::{CharacteristicFrequencies, Fault, Line, Peak, find_peaks};
 pub use passage::{PassageJitter, passage_jitter};
 pub use sensor::{HousingMode, SensorChain, SensorSample, SensorSpec};
 pub use spectrogram::{Spectrogram, spectrogram};
