@@ -99,6 +99,33 @@ fn quantity<D: Dimension>(flag: &str, text: &str) -> Result<f64, Failure> {
         .map_err(|e| bad_arg(flag, text, e))
 }
 
+/// Largest rolling speed \[m/s\] (a 100 mm ball at 1.9·10⁴ rad/s).
+const MAX_ROLLING_SPEED: f64 = 1000.0;
+/// Largest longitudinal or lateral creepage: slip ten times the rolling
+/// speed, far into full sliding for any friction law.
+const MAX_CREEPAGE: f64 = 10.0;
+/// Largest spin creepage \[1/m\]: a spin of 10⁵ rad/s per m/s of rolling.
+const MAX_SPIN_CREEPAGE: f64 = 1e5;
+
+/// Refuses creepages (given, or the slip's over the rolling speed) beyond
+/// [`MAX_CREEPAGE`] and [`MAX_SPIN_CREEPAGE`]: no contact rolls so, and
+/// the forces and power would overflow.
+fn check_creepages(motion: &Motion, rolling_speed: f64) -> Result<(), Failure> {
+    let (flag, [xi, eta, phi]) = match *motion {
+        Motion::Creepages(c) => ("--creepages", c),
+        Motion::Slip([vx, vy], spin) => (
+            "--slip",
+            [vx / rolling_speed, vy / rolling_speed, spin / rolling_speed],
+        ),
+    };
+    if xi.abs().max(eta.abs()) > MAX_CREEPAGE || phi.abs() > MAX_SPIN_CREEPAGE {
+        return Err(Failure::BadInput(format!(
+            "argument {flag}: creepages ξ {xi:.3e}, η {eta:.3e}, φ {phi:.3e} 1/m: |ξ| and |η| must be at most {MAX_CREEPAGE} and |φ| at most {MAX_SPIN_CREEPAGE:.0e} 1/m (slip ten times the rolling speed is full sliding for any friction law)"
+        )));
+    }
+    Ok(())
+}
+
 /// The sliding motion: `--creepages` or `--slip` (with `--spin`).
 fn motion(args: &TractionArgs) -> Result<Motion, Failure> {
     if args.spin.is_some() && args.slip.is_none() {
@@ -230,9 +257,21 @@ pub fn report(args: &TractionArgs) -> Result<TractionReport, Failure> {
             ));
         }
     };
+    let rolling_speed = quantity::<Velocity>("--rolling-speed", &args.rolling_speed)?;
+    if !(rolling_speed > 0.0 && rolling_speed <= MAX_ROLLING_SPEED) {
+        return Err(bad_arg(
+            "--rolling-speed",
+            &args.rolling_speed,
+            format!(
+                "must lie in (0, {MAX_ROLLING_SPEED}] m/s: the creepages are the slip over the rolling speed (a contact that does not roll is outside steady rolling theory)"
+            ),
+        ));
+    }
+    let motion = motion(args)?;
+    check_creepages(&motion, rolling_speed)?;
     let inputs = Inputs {
-        rolling_speed: quantity::<Velocity>("--rolling-speed", &args.rolling_speed)?,
-        motion: motion(args)?,
+        rolling_speed,
+        motion,
         exact,
         table: args.method == "table",
     };

@@ -153,10 +153,12 @@ pub struct SensorSummary {
     pub rms_m_s2: f64,
     /// Largest |a − mean| \[m/s²\].
     pub peak_m_s2: f64,
-    /// Peak / RMS.
-    pub crest_factor: f64,
-    /// m₄ / m₂² (3 for Gaussian noise; impacts raise it).
-    pub kurtosis: f64,
+    /// Peak / RMS; None (null) for a constant record (no noise, no
+    /// vibration), whose ratios are 0/0.
+    pub crest_factor: Option<f64>,
+    /// m₄ / m₂² (3 for Gaussian noise; impacts raise it); None as the
+    /// crest factor.
+    pub kurtosis: Option<f64>,
     /// Samples of the whole run beyond the ADC's range (clipped).
     pub clipped_samples: u64,
 }
@@ -173,8 +175,8 @@ pub fn sensor_summary(
     Some(SensorSummary {
         rms_m_s2: rms,
         peak_m_s2: peak,
-        crest_factor,
-        kurtosis,
+        crest_factor: (rms > 0.0).then_some(crest_factor),
+        kurtosis: (rms > 0.0).then_some(kurtosis),
         clipped_samples: sensor.clipped(),
     })
 }

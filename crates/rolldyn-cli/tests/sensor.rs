@@ -48,6 +48,39 @@ fn run(tag: &str, sensor: bool, extra: &[&str]) -> (std::path::PathBuf, serde_js
     (dir, serde_json::from_str(&text).unwrap())
 }
 
+/// A record without noise and without vibration (0.2 ms from rest): its
+/// crest factor and kurtosis are 0/0, reported null on purpose, with no
+/// warning of a non-finite number.
+#[test]
+fn a_constant_sensor_record_has_no_crest_factor() {
+    let dir = temp_dir("sensor-constant");
+    let o = rolldyn(
+        &[
+            "run",
+            "-o",
+            dir.to_str().unwrap(),
+            "--duration",
+            "0.2 ms",
+            "--set",
+            "sensor={}",
+            "--set",
+            "sensor.noise=0 m/s^2",
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("non-finite"), "{}", stderr(&o));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let s = &summary["sensor"];
+    assert_eq!(s["rms_m_s2"].as_f64(), Some(0.0), "{s}");
+    assert!(
+        s["crest_factor"].is_null() && s["kurtosis"].is_null(),
+        "{s}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn a_sensor_records_the_housing_and_the_summary_analyses_it() {
     let (dir, summary) = run("sensor-on", true, &[]);

@@ -205,6 +205,43 @@ fn traction_bad_input_exits_2() {
             ],
             "model.traction.strips",
         ),
+        // No rolling, or sliding beyond any contact's: refused, not NaN.
+        (
+            vec![
+                "traction",
+                "--load",
+                "1 kN",
+                "--rolling-speed",
+                "0 m/s",
+                "--creepages",
+                "1e-3,0,0",
+            ],
+            "--rolling-speed 0 m/s: must lie in (0",
+        ),
+        (
+            vec![
+                "traction",
+                "--load",
+                "1 kN",
+                "--rolling-speed",
+                "1 m/s",
+                "--creepages",
+                "1e300,0,0",
+            ],
+            "|ξ| and |η| must be at most 10",
+        ),
+        (
+            vec![
+                "traction",
+                "--load",
+                "1 kN",
+                "--rolling-speed",
+                "1 mm/s",
+                "--slip",
+                "5 m/s,0 m/s",
+            ],
+            "argument --slip: creepages ξ 5.000e3",
+        ),
     ] {
         let o = rolldyn(&args, None);
         assert_eq!(o.status.code(), Some(2), "{args:?}");
