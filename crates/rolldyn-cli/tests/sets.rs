@@ -718,3 +718,41 @@ fn a_floating_bearing_carries_no_thrust() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("shaft.bearings"), "{}", stderr(&o));
 }
+
+/// A pair whose second bearing lifts off prints a dash for its contact
+/// angles, never NaN.
+#[test]
+fn an_unloaded_bearing_of_a_set_prints_no_nan() {
+    let o = rolldyn(
+        &["quasistatic", "--set", "arrangement.kind=back_to_back"],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.contains("(unloaded beyond lift-off)"), "{text}");
+    assert!(!text.contains("NaN"), "{text}");
+}
+
+/// A triple of C4 bearings whose 0.1 µm offset the clearance takes up:
+/// `thermal` says there is no preload left, with no NaN or signed zero.
+#[test]
+fn a_preload_the_clearance_takes_up_prints_no_nan() {
+    let o = rolldyn(&["new", "--bearing", "6309", "--clearance", "C4"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let case = String::from_utf8(o.stdout).unwrap();
+    let o = rolldyn(
+        &[
+            "thermal",
+            "-",
+            "--set",
+            "arrangement.kind=tandem_face_to_face",
+            "--set",
+            "arrangement.preload_displacement=0.1 um",
+        ],
+        Some(&case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.contains("no preload left"), "{text}");
+    assert!(!text.contains("NaN") && !text.contains("-0.0 N"), "{text}");
+}

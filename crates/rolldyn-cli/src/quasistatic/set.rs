@@ -346,27 +346,25 @@ impl SetReport {
             "  bearing  position mm  faces  axial N     radial N    max Q_i N   max Q_o N   α_i °    α_o °"
         );
         for (i, b) in a.bearings.iter().enumerate() {
+            // An unloaded bearing has no contact angle: a dash.
+            let angle = |a: Option<f64>| a.map_or("—".to_string(), |a| format!("{a:.2}"));
             let (qi, qo, ai, ao) =
                 b.quasistatic
                     .as_ref()
-                    .map_or((0.0, 0.0, f64::NAN, f64::NAN), |q| {
+                    .map_or((0.0, 0.0, angle(None), angle(None)), |q| {
                         let max = |g: fn(&super::single::BallRow) -> f64| {
                             q.balls.iter().map(g).fold(0.0, f64::max)
                         };
                         (
                             max(|r| r.load_inner_n),
                             max(|r| r.load_outer_n),
-                            q.balls
-                                .first()
-                                .map_or(f64::NAN, |r| r.contact_angle_inner_deg),
-                            q.balls
-                                .first()
-                                .map_or(f64::NAN, |r| r.contact_angle_outer_deg),
+                            angle(q.balls.first().map(|r| r.contact_angle_inner_deg)),
+                            angle(q.balls.first().map(|r| r.contact_angle_outer_deg)),
                         )
                     });
             let _ = writeln!(
                 out,
-                "  {i:<7}  {:>11.2}  {:<5}  {:>10.2}  {:>10.2}  {:>10.2}  {:>10.2}  {:>7.2}  {:>7.2}{}",
+                "  {i:<7}  {:>11.2}  {:<5}  {:>10.2}  {:>10.2}  {:>10.2}  {:>10.2}  {:>7}  {:>7}{}",
                 b.position_m * 1e3,
                 if b.orientation == "forward" {
                     "+x"

@@ -170,10 +170,17 @@ impl SetThermalReport {
             let mounting = self
                 .mounting_preload_n
                 .map_or(String::new(), |m| format!("mounted {m:.1} N; "));
+            // (x + 0.0 prints a zero without its sign.)
+            let (cold, hot) = (cold + 0.0, hot + 0.0);
+            let change = if cold > 0.0 {
+                format!(" ({:+.1} %)", 100.0 * (hot / cold - 1.0))
+            } else {
+                " (no preload left at the reference temperature: the clearance takes up the offset)"
+                    .to_string()
+            };
             let _ = writeln!(
                 out,
-                "  preload at speed: {mounting}{cold:.1} N at the reference temperature, {hot:.1} N at the operating temperatures ({:+.1} %)",
-                100.0 * (hot / cold - 1.0)
+                "  preload at speed: {mounting}{cold:.1} N at the reference temperature, {hot:.1} N at the operating temperatures{change}"
             );
         }
         let _ = writeln!(
