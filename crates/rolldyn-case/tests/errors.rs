@@ -373,6 +373,21 @@ fn overrides_are_named_in_their_errors() {
     }
 }
 
+/// A spall growing faster than the balls leave it (1000 m/s) is refused
+/// with the key, the value and the bound.
+#[test]
+fn a_spall_cannot_outgrow_the_ball_passes() {
+    let set = r#"surface.outer.spall=[{ position = "0 deg", length = "1 mm", depth = "0.1 mm", growth_rate = "1000 m/s" }]"#;
+    let e = load_case("case.toml", BASE, &[Override::parse_set(set).unwrap()]).unwrap_err();
+    let text = e.to_string();
+    assert!(
+        text.contains("growth_rate") && text.contains("[0, 0.01] m/s"),
+        "{text}"
+    );
+    let ok = set.replace("1000 m/s", "2 mm/s");
+    load_case("case.toml", BASE, &[Override::parse_set(&ok).unwrap()]).unwrap();
+}
+
 #[test]
 fn presets_merge_and_report_assumptions() {
     let case = load_case("case.toml", "[bearing]\npreset = \"7218b\"\n", &[]).unwrap();

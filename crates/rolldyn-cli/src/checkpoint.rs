@@ -245,6 +245,32 @@ pub fn restore_parts(
     Ok(position)
 }
 
+/// Refuses, before any model is built, to resume a run whose summary
+/// says it completed (its time is reached; `--until` extends it): the
+/// refusal [`continue_to`] gives after the restore, without the cost of
+/// building the model (a set's quasi-static start). Runs that did not
+/// complete, and extensions, go on to the restore.
+pub fn refuse_completed(dir: &Path, options: &RunOptions, duration: f64) -> Result<(), Failure> {
+    if !options.resume || options.extends.is_some() {
+        return Ok(());
+    }
+    let summary: Option<serde_json::Value> = RunDir::new(dir)
+        .read_text(RunDir::SUMMARY)
+        .ok()
+        .and_then(|t| serde_json::from_str(&t).ok());
+    let reached = summary
+        .as_ref()
+        .filter(|s| s["status"] == "completed")
+        .and_then(|s| s["simulated_time_s"].as_f64());
+    match reached {
+        Some(reached) if reached >= duration => Err(Failure::BadInput(format!(
+            "--resume {}: the run is complete (t = {reached} s); `--until T` extends it",
+            dir.display()
+        ))),
+        _ => Ok(()),
+    }
+}
+
 /// Whether a run restored at time `reached` may go on to `duration`: a
 /// resumed run must not be complete, an extended one (`--until`) must
 /// go beyond; an extension's checkpoints belong to the extended record

@@ -552,22 +552,8 @@ fn print_set_run(
             summary.energy_balance_relative_error
         );
     }
-    if let Some(path) = html_report::refresh(dir, with_report)? {
-        emit(&format!("wrote {}\n", path.display()))?;
-    }
-    match summary.status {
-        "failed" => Err(Failure::Model(format!(
-            "{}; the files hold the run up to t = {:.6} s",
-            summary.error.unwrap_or_default(),
-            summary.simulated_time_s
-        ))),
-        // As a single bearing's: Ctrl-C exits 130.
-        "interrupted" => Err(Failure::Interrupted(format!(
-            "interrupted at t = {:.6} s; {output}/ holds what was computed; `rolldyn run --resume {output}` continues the run",
-            summary.simulated_time_s
-        ))),
-        _ => Ok(()),
-    }
+    let end = (summary.status, summary.error, summary.simulated_time_s);
+    finish_run(dir, output, with_report, end, "")
 }
 
 /// Prints a bearing's run (and writes its report when asked).
@@ -609,18 +595,36 @@ fn print_run(summary: run::Summary, output: &str, with_report: bool) -> Result<(
     if let Some(text) = rolldyn_cli::accuracy::warning(&summary.accuracy) {
         eprint!("{text}");
     }
+    let end = (summary.status, summary.error, summary.simulated_time_s);
+    finish_run(
+        dir,
+        output,
+        with_report,
+        end,
+        ". Try a smaller solver.max_step or solver.relative_tolerance, or another solver.integrator",
+    )
+}
+
+/// The end of every run: its report (asked, or one already there), and
+/// the exit its `(status, error, simulated time)` gives: a failed run 3
+/// (with `hint`), an interrupted one 130 (Ctrl-C).
+fn finish_run(
+    dir: &std::path::Path,
+    output: &str,
+    with_report: bool,
+    (status, error, reached): (&str, Option<String>, f64),
+    hint: &str,
+) -> Result<(), Failure> {
     if let Some(path) = html_report::refresh(dir, with_report)? {
         emit(&format!("wrote {}\n", path.display()))?;
     }
-    match summary.status {
+    match status {
         "failed" => Err(Failure::Model(format!(
-            "{}; the files hold the run up to t = {:.6} s. Try a smaller solver.max_step or solver.relative_tolerance, or another solver.integrator",
-            summary.error.unwrap_or_default(),
-            summary.simulated_time_s
+            "{}; the files hold the run up to t = {reached:.6} s{hint}",
+            error.unwrap_or_default(),
         ))),
         "interrupted" => Err(Failure::Interrupted(format!(
-            "interrupted at t = {:.6} s; {output}/ holds what was computed; `rolldyn run --resume {output}` continues the run",
-            summary.simulated_time_s
+            "interrupted at t = {reached:.6} s; {output}/ holds what was computed; `rolldyn run --resume {output}` continues the run",
         ))),
         _ => Ok(()),
     }

@@ -141,6 +141,7 @@ pub(crate) fn run_once(
     let duration = case.duration.ok_or_else(|| bad(
         "solver.duration: missing: give the simulated time (or --duration, e.g. --duration \"0.05 s\")".into(),
     ))?;
+    checkpoint::refuse_completed(dir, options, duration)?;
     let g = &case.bearing.geometry;
     let Simulation {
         mut model,

@@ -105,6 +105,7 @@ pub fn run(
     let duration = case.duration.ok_or_else(|| {
         bad("solver.duration: missing: give the simulated time (or --duration, e.g. --duration \"0.05 s\")".into())
     })?;
+    checkpoint::refuse_completed(dir, options, duration)?;
     let SetSimulation {
         kind,
         mounting_preload,

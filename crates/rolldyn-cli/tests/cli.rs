@@ -504,17 +504,30 @@ fn run_reports_missing_dynamic_data() {
     );
 }
 
-#[test]
-fn run_interrupted_keeps_valid_files() {
-    let dir = temp_dir("run-int");
+/// Runs `rolldyn run ARGS -o DIR` for 10 s of simulated time, sends
+/// SIGINT once the run writes its series (its Ctrl-C handler is then set)
+/// and `settle` later, and checks the exit code 130 and the summary's
+/// `interrupted`; returns the summary.
+fn interrupted_run(tag: &str, args: &[&str], settle: u64) -> (std::path::PathBuf, Value) {
+    let dir = temp_dir(tag);
     let d = dir.to_string_lossy().into_owned();
     let child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
-        .args(["run", "--duration", "10 s", "-o", &d])
+        .arg("run")
+        .args(args)
+        .args(["--duration", "10 s", "-o", &d])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let begun = std::time::Instant::now();
+    while !dir.join("timeseries.parquet").exists() {
+        assert!(
+            begun.elapsed().as_secs() < 120,
+            "{tag}: the run did not start"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    std::thread::sleep(std::time::Duration::from_millis(settle));
     let status = Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status()
@@ -525,12 +538,18 @@ fn run_interrupted_keeps_valid_files() {
     assert_eq!(
         out.status.code(),
         Some(130),
-        "{}",
+        "{tag}: {}",
         String::from_utf8_lossy(&out.stderr)
     );
     let summary: Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
-    assert_eq!(summary["status"], "interrupted");
+    assert_eq!(summary["status"], "interrupted", "{tag}");
+    (dir, summary)
+}
+
+#[test]
+fn run_interrupted_keeps_valid_files() {
+    let (dir, summary) = interrupted_run("run-int", &[], 1000);
     let t = summary["simulated_time_s"].as_f64().unwrap();
     assert!(t > 0.0 && t < 10.0);
     assert!(
@@ -545,43 +564,11 @@ fn run_interrupted_keeps_valid_files() {
 /// its summary saying `interrupted`.
 #[test]
 fn set_run_interrupted_exits_130() {
-    let dir = temp_dir("set-int");
-    let d = dir.to_string_lossy().into_owned();
     let case = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/../../examples/spindle_pair/case.toml"
     );
-    let child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
-        .args(["run", case, "--duration", "10 s", "-o", &d])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    // Once the run has begun writing its series, its handler is set.
-    let begun = std::time::Instant::now();
-    while !dir.join("timeseries.parquet").exists() {
-        assert!(
-            begun.elapsed().as_secs() < 120,
-            "the set's run did not start"
-        );
-        std::thread::sleep(std::time::Duration::from_millis(20));
-    }
-    std::thread::sleep(std::time::Duration::from_millis(500));
-    let status = Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(status.success());
-    let out = child.wait_with_output().unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(130),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
-    assert_eq!(summary["status"], "interrupted");
+    let (dir, _) = interrupted_run("set-int", &[case], 500);
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -621,6 +608,32 @@ fn run_help_offers_only_what_run_accepts() {
     );
     let quasistatic = help("quasistatic");
     assert!(quasistatic.contains("--fix-tilt") && quasistatic.contains("--misalignment"));
+}
+
+/// `spectrum --harmonics` beyond the band marks the lines up to the
+/// spectrum's end, not a million harmonics of each.
+#[test]
+fn spectrum_lines_stop_at_the_band() {
+    let dir = temp_dir("spectrum-band");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(&["run", "--duration", "2 ms", "-o", &d], None);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = rolldyn(&["spectrum", &d, "--harmonics", "1000000", "--json"], None);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let nyquist = 0.5 * v["sample_rate_hz"].as_f64().unwrap();
+    let lines = v["lines"].as_array().unwrap();
+    assert!(
+        !lines.is_empty() && lines.len() < 20_000,
+        "{} lines",
+        lines.len()
+    );
+    assert!(
+        lines
+            .iter()
+            .all(|l| l["frequency_hz"].as_f64().unwrap() <= nyquist + 1e-9)
+    );
+    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// A FASTSIM run records the creepage and stick channels and their means.

@@ -756,3 +756,24 @@ fn a_preload_the_clearance_takes_up_prints_no_nan() {
     assert!(text.contains("no preload left"), "{text}");
     assert!(!text.contains("NaN") && !text.contains("-0.0 N"), "{text}");
 }
+
+/// `--resume` of a set's completed run is refused at once (before the
+/// set's quasi-static start is built), naming `--until`.
+#[test]
+fn resuming_a_completed_set_is_refused_at_once() {
+    let dir = temp_dir("set-resume-complete");
+    let d = dir.to_str().unwrap();
+    let case = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/spindle_pair/case.toml"
+    );
+    let o = rolldyn(&["run", case, "--duration", "0.2 ms", "-o", d], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let begun = std::time::Instant::now();
+    let o = rolldyn(&["run", "--resume", d], None);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--until"), "{}", stderr(&o));
+    // Not the seconds of a set's start (generous for a loaded machine).
+    assert!(begun.elapsed().as_secs_f64() < 5.0);
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -126,6 +126,7 @@ const CRATES: [Crate; 6] = [
                 "the run pipeline",
                 &[
                     "run_options",
+                    "pipeline",
                     "run_stats",
                     "power_channels",
                     "recorder",

@@ -50,6 +50,13 @@ pub enum Edge {
     },
 }
 
+/// Largest spall growth rate \[m/s\] (10 mm/s). The pit grows between
+/// ball passes, while no ball is on it (docs/dynamics.md, "Spall
+/// growth"); at a ball pass every millisecond, a faster pit would lengthen
+/// by more than 10 µm a pass, a tenth of a small pit, and the steps taken
+/// while no ball is on it could not keep up with the rate asked.
+pub const MAX_GROWTH_RATE: f64 = 0.01;
+
 /// A spall.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Spall {
@@ -111,11 +118,11 @@ impl Spall {
         if let Edge::Ramped { length } = self.edge {
             positive("ramp", length)?;
         }
-        if !(self.growth_rate >= 0.0 && self.growth_rate.is_finite()) {
+        if !(0.0..=MAX_GROWTH_RATE).contains(&self.growth_rate) {
             return Err(InvalidParameter::new(
                 "growth_rate",
                 self.growth_rate,
-                "must be finite and not negative",
+                "must lie in [0, 0.01] m/s (10 mm/s: a pit that grows faster outruns the balls, which must leave it for it to grow; run-to-failure trends are compressed in time, not made faster than the passes)",
             ));
         }
         if self.growth_rate > 0.0 && matches!(self.size, SpallSize::Angle(_)) {
