@@ -595,14 +595,19 @@ fn print_run(summary: run::Summary, output: &str, with_report: bool) -> Result<(
     if let Some(text) = rolldyn_cli::accuracy::warning(&summary.accuracy) {
         eprint!("{text}");
     }
+    // An integration failure has a hint; a state beyond the models'
+    // range says what to change itself.
+    let hint = if summary
+        .error
+        .as_deref()
+        .is_some_and(|e| e.contains("left the models' range"))
+    {
+        ""
+    } else {
+        ". Try a smaller solver.max_step or solver.relative_tolerance, or another solver.integrator"
+    };
     let end = (summary.status, summary.error, summary.simulated_time_s);
-    finish_run(
-        dir,
-        output,
-        with_report,
-        end,
-        ". Try a smaller solver.max_step or solver.relative_tolerance, or another solver.integrator",
-    )
+    finish_run(dir, output, with_report, end, hint)
 }
 
 /// The end of every run: its report (asked, or one already there), and

@@ -17,7 +17,9 @@ use crate::Failure;
 use crate::checkpoint::{Position, RunRecord};
 use crate::run_options::{CHECKPOINT_COST_FACTOR, RunOptions};
 use indicatif::{ProgressBar, ProgressStyle};
-use rolldyn::integrate::{Integrator, OdeSystem, RunEnd, Sampling, Solver, run_from};
+use rolldyn::integrate::{
+    IntegrationError, Integrator, OdeSystem, RunEnd, Sampling, Solver, run_from,
+};
 use rolldyn_io::RunDir;
 use std::cell::RefCell;
 use std::io::IsTerminal;
@@ -36,6 +38,11 @@ pub trait Recorder<S> {
     fn sample(&mut self, system: &S, t: f64, y: &[f64]) -> bool;
     /// The error that stopped the recording, if one did.
     fn take_write_error(&mut self) -> Option<String>;
+    /// A limit the recorded state has passed (the run then stops and
+    /// ends `failed` with this reason); None while within.
+    fn limit(&self) -> Option<String> {
+        None
+    }
     /// Rows of the time series recorded so far.
     fn rows(&self) -> u64;
     /// Writes the time series' rows not yet on disk, the checkpoint (when
@@ -139,7 +146,8 @@ pub fn drive<S: OdeSystem, R: Recorder<S>>(
         sampling,
         &stop,
         |s, t, y| {
-            if !recorder.borrow_mut().sample(s, t, y) {
+            let mut recorder = recorder.borrow_mut();
+            if !recorder.sample(s, t, y) || recorder.limit().is_some() {
                 stop.store(true, Ordering::Relaxed);
             }
         },
@@ -191,15 +199,25 @@ pub fn drive<S: OdeSystem, R: Recorder<S>>(
             solver.t()
         )));
     }
+    // A state beyond the models' range ends the run as failed.
+    let end = match recorder.limit() {
+        Some(reason) => RunEnd::Failed {
+            error: IntegrationError::Limit {
+                t: solver.t(),
+                reason,
+            },
+        },
+        None => report.end,
+    };
     // An interrupted or completed run keeps a checkpoint at its last step
     // (to continue, or to extend with `--until`); a failed one keeps its
     // last periodic checkpoint.
-    let position = (!matches!(report.end, RunEnd::Failed { .. })).then(|| Position {
+    let position = (!matches!(end, RunEnd::Failed { .. })).then(|| Position {
         next_sample,
         rows: recorder.rows(),
         wall_time: wall,
     });
-    let summary = recorder.write(system, solver, Some(&report.end), position, wall)?;
+    let summary = recorder.write(system, solver, Some(&end), position, wall)?;
     if let Some(progress) = &options.progress {
         progress.store(
             (solver.t().min(duration) / duration).to_bits(),

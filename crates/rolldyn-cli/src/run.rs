@@ -254,6 +254,12 @@ pub(crate) fn run_once(
         record_hash,
         row: Vec::with_capacity(channels.series.width()),
         loads: vec![ContactSample::default(); g.ball_count],
+        speed_column: channels
+            .series
+            .names()
+            .iter()
+            .position(|n| n == "inner_ring_speed_rpm"),
+        limit: None,
         channels,
     };
     let summary = drive(
@@ -268,6 +274,10 @@ pub(crate) fn run_once(
     Ok(RunOutput { summary })
 }
 
+/// The largest shaft speed a run may reach \[rpm\]: the case's input limit
+/// (`rolldyn_case::case::MAX_SPEED`).
+const MAX_SPEED_RPM: f64 = rolldyn_case::case::MAX_SPEED * 60.0 / std::f64::consts::TAU;
+
 /// What the run's files are written from, and the channels it records.
 struct Output<'a> {
     source: &'a str,
@@ -279,6 +289,10 @@ struct Output<'a> {
     channels: Channels,
     row: Vec<f64>,
     loads: Vec<ContactSample>,
+    /// Column of the inner ring's speed in a row.
+    speed_column: Option<usize>,
+    /// The limit the state passed, if it did.
+    limit: Option<String>,
 }
 
 impl Recorder<BearingModel> for Output<'_> {
@@ -287,7 +301,19 @@ impl Recorder<BearingModel> for Output<'_> {
     fn sample(&mut self, model: &BearingModel, t: f64, y: &[f64]) -> bool {
         self.channels
             .record(model, t, y, &mut self.row, &mut self.loads);
+        // A driven ring's speed is the state's: the ±10⁶ rpm the case
+        // accepts holds during the run too.
+        let speed = self.speed_column.map_or(0.0, |k| self.row[k]);
+        if self.limit.is_none() && (speed.abs() > MAX_SPEED_RPM || speed.is_nan()) {
+            self.limit = Some(format!(
+                "the inner ring turns at {speed:.4e} rpm, beyond the ±{MAX_SPEED_RPM:.0e} rpm a case may give (a drive torque too large for the rotor's inertia, or a run-away)"
+            ));
+        }
         self.channels.write_error.is_none()
+    }
+
+    fn limit(&self) -> Option<String> {
+        self.limit.clone()
     }
 
     fn take_write_error(&mut self) -> Option<String> {

@@ -636,6 +636,34 @@ fn spectrum_lines_stop_at_the_band() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// The ceramic bearing at 15 000 rpm under a held tilt and a film in the
+/// approach (examples/seed003's command) has negative conventional
+/// stiffnesses: the text says what they mean.
+#[test]
+fn negative_conventional_stiffness_is_explained() {
+    let case = PRESETS
+        .iter()
+        .find(|p| p.name == "ceramic_45x75")
+        .unwrap()
+        .text;
+    let o = rolldyn(
+        &[
+            "quasistatic",
+            "-",
+            "--fix-tilt",
+            "--set",
+            "model.film_in_approach=true",
+            "--set",
+            "lubricant.inlet_distance_ratio=1.5",
+        ],
+        Some(case),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert!(text.contains("axial -"), "{text}");
+    assert!(text.contains("K is not positive definite"), "{text}");
+}
+
 /// A FASTSIM run records the creepage and stick channels and their means.
 #[test]
 fn fastsim_run_records_creepages() {

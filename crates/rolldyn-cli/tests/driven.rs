@@ -130,3 +130,32 @@ fn a_drive_needs_its_inertia_and_a_starting_speed() {
         );
     }
 }
+
+/// A drive torque far too large for its rotor runs the ring away: the run
+/// stops once the speed passes the ±10⁶ rpm a case may give, ends
+/// `failed` with the reason (exit 3), and keeps what it computed.
+#[test]
+fn a_run_away_drive_stops_at_the_speed_limit() {
+    let dir = temp_dir("run-away");
+    let o = rolldyn(
+        &[
+            "run",
+            "--set",
+            "operating.drive_torque=1e5 N.m",
+            "--set",
+            "operating.rotor_inertia=1e-6 kg.m^2",
+            "--duration",
+            "1 ms",
+            "-o",
+            dir.to_str().unwrap(),
+        ],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
+    assert!(stderr(&o).contains("beyond the ±1e6 rpm"), "{}", stderr(&o));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["status"], "failed");
+    assert!(summary["simulated_time_s"].as_f64().unwrap() < 1e-3);
+    std::fs::remove_dir_all(&dir).ok();
+}

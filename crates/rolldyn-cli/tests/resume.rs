@@ -154,6 +154,12 @@ fn resume_refuses_what_it_cannot_continue() {
     let o = rolldyn(&["run", "--resume", d, "--speed", "1000 rpm"], None);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--resume"), "{}", stderr(&o));
+    // The checkpoint's own checks, on a run whose summary says it did not
+    // complete (a completed one is refused before them, above).
+    let summary = std::fs::read_to_string(dir.join("summary.json"))
+        .unwrap()
+        .replace("\"completed\"", "\"partial\"");
+    std::fs::write(dir.join("summary.json"), summary).unwrap();
     // No checkpoint at all (removed): refused, naming it.
     std::fs::remove_file(dir.join("checkpoint.bin")).unwrap();
     let o = rolldyn(&["run", "--resume", d], None);

@@ -354,6 +354,24 @@ fn exact_method_on_a_case_and_its_errors() {
             [EXPLICIT.as_slice(), &["--method", "exakt"]].concat(),
             "--method",
         ),
+        // Bounded work: at most 128 cells each way, an ellipse no thinner
+        // than 1:100 for the exact theory.
+        (
+            [
+                EXPLICIT.as_slice(),
+                &["--method", "exact", "--cells", "129"],
+            ]
+            .concat(),
+            "between 4 and 128",
+        ),
+        (
+            [
+                &EXPLICIT[2..],
+                &["--semi-axes", "1 nm,1 m", "--method", "exact"],
+            ]
+            .concat(),
+            "ratio must be at most 100",
+        ),
         (
             [EXPLICIT.as_slice(), &["--cells", "20"]].concat(),
             "--method exact",

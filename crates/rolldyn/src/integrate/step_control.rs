@@ -56,6 +56,15 @@ pub enum IntegrationError {
     /// Bad settings.
     #[error("invalid integrator setting: {0}")]
     Setting(String),
+    /// The state left the range the models hold for (the run's observer
+    /// stopped it).
+    #[error("the run left the models' range at t = {t:.6e} s: {reason}")]
+    Limit {
+        /// Time reached \[s\].
+        t: f64,
+        /// What passed which limit.
+        reason: String,
+    },
 }
 
 /// Weight β of the previous error in the PI step-size controller
