@@ -179,12 +179,6 @@ pub(crate) fn run_once(
         .flatten();
     let sample_rate = case.sample_rate.unwrap_or(DEFAULT_SAMPLE_RATE);
     let record_hash = record.hash();
-    let series_dir = RunDir::new(dir).series();
-    let metadata = [
-        ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
-        ("case", source.to_string()),
-        ("title", case.title.clone().unwrap_or_default()),
-    ];
     let start = if options.resume {
         let position = checkpoint::restore(
             dir,
@@ -196,53 +190,11 @@ pub(crate) fn run_once(
         .map_err(bad)?;
         continue_to(record, options, dir, solver.t(), duration)?;
         // The summary's statistics came with the checkpoint.
-        channels.writer = Some(
-            SeriesWriter::resume(
-                &series_dir,
-                &channels.recorded,
-                &metadata,
-                position.rows,
-                case.output.float32,
-            )
-            .map_err(|e| bad(format!("--resume: {e}")))?,
-        );
-        if let Some(slow) = &mut channels.slow {
-            slow.writer = Some(
-                SeriesWriter::resume(
-                    &RunDir::new(dir).slow_series(),
-                    &slow.recorded,
-                    &metadata,
-                    slow.rows_for(position.rows),
-                    case.output.float32,
-                )
-                .map_err(|e| bad(format!("--resume: {e}")))?,
-            );
-        }
+        open_series(&mut channels, dir, record, case, Some(position.rows))?;
         Start::from(position)
     } else {
         fresh_dir(dir, record)?;
-        channels.writer = Some(
-            SeriesWriter::create(
-                &series_dir,
-                &channels.recorded,
-                &metadata,
-                case.output.float32,
-            )
-            .map_err(|e| bad(e.to_string()))?,
-        );
-        let slow_dir = RunDir::new(dir).slow_series();
-        match &mut channels.slow {
-            Some(slow) => {
-                slow.writer = Some(
-                    SeriesWriter::create(&slow_dir, &slow.recorded, &metadata, case.output.float32)
-                        .map_err(|e| bad(e.to_string()))?,
-                );
-            }
-            // An older run's slow channels do not belong to this one.
-            None if slow_dir.exists() => std::fs::remove_dir_all(&slow_dir)
-                .map_err(|e| bad(format!("cannot remove {}: {e}", slow_dir.display())))?,
-            None => {}
-        }
+        open_series(&mut channels, dir, record, case, None)?;
         Start::default()
     };
     let recorder = Output {
@@ -272,6 +224,45 @@ pub(crate) fn run_once(
         recorder,
     )?;
     Ok(RunOutput { summary })
+}
+
+/// Opens the run's datasets: created (an older run's slow channels
+/// removed), or continued after `rows` rows of a resumed run.
+fn open_series(
+    channels: &mut Channels,
+    dir: &Path,
+    record: &RunRecord,
+    case: &Case,
+    rows: Option<u64>,
+) -> Result<(), Failure> {
+    let bad = Failure::BadInput;
+    let run_dir = RunDir::new(dir);
+    let metadata = [
+        ("rolldyn_version", env!("CARGO_PKG_VERSION").to_string()),
+        ("case", record.source.clone()),
+        ("title", case.title.clone().unwrap_or_default()),
+    ];
+    let float32 = case.output.float32;
+    let open = |path: &Path, series: &rolldyn_io::TimeSeries, rows: Option<u64>| match rows {
+        Some(rows) => SeriesWriter::resume(path, series, &metadata, rows, float32)
+            .map_err(|e| bad(format!("--resume: {e}"))),
+        None => {
+            SeriesWriter::create(path, series, &metadata, float32).map_err(|e| bad(e.to_string()))
+        }
+    };
+    channels.writer = Some(open(&run_dir.series(), &channels.recorded, rows)?);
+    let slow_dir = run_dir.slow_series();
+    match &mut channels.slow {
+        Some(slow) => {
+            let slow_rows = rows.map(|r| slow.rows_for(r));
+            slow.writer = Some(open(&slow_dir, &slow.recorded, slow_rows)?);
+        }
+        // An older run's slow channels do not belong to this one.
+        None if rows.is_none() && slow_dir.exists() => std::fs::remove_dir_all(&slow_dir)
+            .map_err(|e| bad(format!("cannot remove {}: {e}", slow_dir.display())))?,
+        None => {}
+    }
+    Ok(())
 }
 
 /// The largest shaft speed a run may reach \[rpm\]: the case's input limit

@@ -94,6 +94,23 @@ fn index_of(series: &TimeSeries, name: &str) -> Option<usize> {
     series.names().iter().position(|n| n == name)
 }
 
+/// The combined series of a set's run: time, each bearing's recorded
+/// channels but time, its axial load, then the shaft's.
+fn combined_series(channels: &[Channels]) -> TimeSeries {
+    let mut series = TimeSeries::default();
+    series.channel("time_s", "s");
+    for (i, c) in channels.iter().enumerate() {
+        for (name, unit) in c.recorded.names().iter().zip(c.recorded.units()).skip(1) {
+            series.channel(format!("bearing{i}_{name}"), unit.clone());
+        }
+        series.channel(format!("bearing{i}_axial_load_n"), "N");
+    }
+    for (name, unit) in SHAFT_CHANNELS {
+        series.channel(name, unit);
+    }
+    series
+}
+
 /// Runs the set of `case` into `dir`.
 pub fn run(
     record: &RunRecord,
@@ -129,19 +146,7 @@ pub fn run(
             )
         })
         .collect();
-    // The combined series: time, each bearing's recorded channels but
-    // time, its axial load, then the shaft's.
-    let mut series = TimeSeries::default();
-    series.channel("time_s", "s");
-    for (i, c) in channels.iter().enumerate() {
-        for (name, unit) in c.recorded.names().iter().zip(c.recorded.units()).skip(1) {
-            series.channel(format!("bearing{i}_{name}"), unit.clone());
-        }
-        series.channel(format!("bearing{i}_axial_load_n"), "N");
-    }
-    for (name, unit) in SHAFT_CHANNELS {
-        series.channel(name, unit);
-    }
+    let series = combined_series(&channels);
     if !options.force {
         check_limits(
             duration,
@@ -152,16 +157,15 @@ pub fn run(
         )
         .map_err(bad)?;
     }
-    let patch = {
-        let s = &channels[0].series;
-        [
-            "inner_ring_acceleration_x_m_s2",
-            "inner_ring_acceleration_y_m_s2",
-            "inner_ring_acceleration_z_m_s2",
-            "mechanical_energy_j",
-        ]
-        .map(|name| index_of(s, name))
-    };
+    // Channels of a bearing's row the shaft's motion replaces: the inner
+    // ring's accelerations and the mechanical energy.
+    let patch = [
+        "inner_ring_acceleration_x_m_s2",
+        "inner_ring_acceleration_y_m_s2",
+        "inner_ring_acceleration_z_m_s2",
+        "mechanical_energy_j",
+    ]
+    .map(|name| index_of(&channels[0].series, name));
     let mut solver = settings
         .build(&system, &y0)
         .map_err(|e| bad(e.to_string()))?;
