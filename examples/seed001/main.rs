@@ -262,11 +262,12 @@ fn simulate(label: &str, axial: f64, surface: &str, duration: f64) -> Result<Out
     let text = preset
         .text
         .replacen("\n[assumptions]", &format!("\n{surface}\n[assumptions]"), 1);
-    let overrides = [Override::flag(
-        "--axial-load",
-        "operating.force_x",
-        &format!("{axial} N"),
-    )];
+    // The paper's undamped Hertz contacts (case.toml), not the preset's
+    // default material damping.
+    let overrides = [
+        Override::flag("--axial-load", "operating.force_x", &format!("{axial} N")),
+        Override::parse_set("model.normal_law=hertz").map_err(|e| e.to_string())?,
+    ];
     let case = load_case("7008C preset", &text, &overrides).map_err(|e| e.to_string())?;
     let params = case
         .dynamics_parameters()
