@@ -515,6 +515,7 @@ def test_native_stub_matches_the_module():
     stub = (Path(rolldyn.__file__).parent / "_rolldyn.pyi").read_text()
     declared = set(re.findall(r"^def (\w+)\(", stub, re.M))
     declared |= set(re.findall(r"^class (\w+)\(", stub, re.M))
+    declared |= set(re.findall(r"^([A-Z]\w*): ", stub, re.M))
     exported = {n for n in dir(_rolldyn) if not n.startswith("__")}
     assert declared == exported
     assert (Path(rolldyn.__file__).parent / "py.typed").exists()
