@@ -389,6 +389,34 @@ impl QuasiStaticReport {
         self
     }
 
+    /// The note under the stiffnesses when a conventional one is negative
+    /// (K not positive definite).
+    fn negative_stiffness_note(&self, out: &mut String) {
+        let negative = [
+            &self.conventional_stiffness,
+            &self.conventional_stiffness_without_film,
+        ]
+        .into_iter()
+        .flatten()
+        .any(|c| {
+            [
+                c.axial_n_per_m,
+                c.radial_y_n_per_m,
+                c.radial_z_n_per_m,
+                c.tilt_y_n_m_per_rad,
+                c.tilt_z_n_m_per_rad,
+            ]
+            .iter()
+            .any(|k| *k < 0.0)
+        });
+        if negative {
+            let _ = writeln!(
+                out,
+                "  note: a negative 1/C_ii means K is not positive definite: with the other loads held, the equilibrium is not stable in that direction (a small load change there moves the ring to another equilibrium); the diagonal of K is each direction's stiffness with the other displacements held"
+            );
+        }
+    }
+
     pub fn to_text(&self) -> String {
         let mut out = String::new();
         let kind = if self.speed_rpm == 0.0 {
@@ -491,29 +519,7 @@ impl QuasiStaticReport {
         if let Some(c) = &self.conventional_stiffness_without_film {
             conventional(&mut out, ", without the film", c);
         }
-        let negative = [
-            &self.conventional_stiffness,
-            &self.conventional_stiffness_without_film,
-        ]
-        .into_iter()
-        .flatten()
-        .any(|c| {
-            [
-                c.axial_n_per_m,
-                c.radial_y_n_per_m,
-                c.radial_z_n_per_m,
-                c.tilt_y_n_m_per_rad,
-                c.tilt_z_n_m_per_rad,
-            ]
-            .iter()
-            .any(|k| *k < 0.0)
-        });
-        if negative {
-            let _ = writeln!(
-                out,
-                "  note: a negative 1/C_ii means K is not positive definite: with the other loads held, the equilibrium is not stable in that direction (a small load change there moves the ring to another equilibrium); the diagonal of K is each direction's stiffness with the other displacements held"
-            );
-        }
+        self.negative_stiffness_note(&mut out);
         let _ = writeln!(
             out,
             "\n  {:>7} {:>10} {:>10} {:>8} {:>8} {:>9} {:>9} {:>7} {:>8} {:>8} {:>8} {:>8}",
