@@ -65,7 +65,7 @@ def simulate(rolldyn, fault, diameter, work):
     sensor = json.loads((out / "summary.json").read_text())["sensor"]
     spectrum = json.loads(subprocess.run(
         [*rolldyn, "spectrum", str(out), "--channel", "sensor_acceleration_m_s2",
-         "--kind", "envelope", "--band", "1200:4800", "--peaks", "5", "--json"],
+         "--kind", "envelope", "--band", "1200:4800 Hz", "--peaks", "5", "--json"],
         check=True, capture_output=True, text=True).stdout)
     lines = ";".join(f"{p['frequency_hz']:.1f}:{p['value']:.3f}:{p['line']}"
                      for p in spectrum["peaks"])

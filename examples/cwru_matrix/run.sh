@@ -26,6 +26,6 @@ $R run $CASE --duration "$D" --set "$NONE" --set "surface.balls.spall=[{ ball = 
   --sweep "surface.balls.spall.0.length=$SIZES" --sweep "$SPEEDS" -o "$OUT/ball"
 for point in "$OUT"/*/point-*; do
   $R spectrum "$point" --channel sensor_acceleration_m_s2 --kind envelope \
-    --band 1200:4800 --json > /dev/null
+    --band "1200:4800 Hz" --json > /dev/null
 done
 python3 examples/cwru_matrix/features.py "$OUT"

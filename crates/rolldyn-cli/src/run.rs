@@ -22,7 +22,9 @@ use rolldyn_case::simulation::{Simulation, SolverSettings};
 use rolldyn_io::{RunDir, SeriesWriter};
 use std::path::Path;
 
-use crate::run_options::{DEFAULT_SAMPLE_RATE, MAX_CONTACT_PRESSURE, RunOptions, check_limits};
+use crate::run_options::{
+    DEFAULT_SAMPLE_RATE, MAX_CONTACT_PRESSURE, RunOptions, check_limits, speed_limit,
+};
 
 /// A warning for a stress law integrated over a strip grid with an odd
 /// number of cells along the rolling direction: a cell then sits on each
@@ -265,10 +267,6 @@ fn open_series(
     Ok(())
 }
 
-/// The largest shaft speed a run may reach \[rpm\]: the case's input limit
-/// (`rolldyn_case::case::MAX_SPEED`).
-const MAX_SPEED_RPM: f64 = rolldyn_case::case::MAX_SPEED * 60.0 / std::f64::consts::TAU;
-
 /// What the run's files are written from, and the channels it records.
 struct Output<'a> {
     source: &'a str,
@@ -292,13 +290,8 @@ impl Recorder<BearingModel> for Output<'_> {
     fn sample(&mut self, model: &BearingModel, t: f64, y: &[f64]) -> bool {
         self.channels
             .record(model, t, y, &mut self.row, &mut self.loads);
-        // A driven ring's speed is the state's: the ±10⁶ rpm the case
-        // accepts holds during the run too.
-        let speed = self.speed_column.map_or(0.0, |k| self.row[k]);
-        if self.limit.is_none() && (speed.abs() > MAX_SPEED_RPM || speed.is_nan()) {
-            self.limit = Some(format!(
-                "the inner ring turns at {speed:.4e} rpm, beyond the ±{MAX_SPEED_RPM:.0e} rpm a case may give (a drive torque too large for the rotor's inertia, or a run-away)"
-            ));
+        if self.limit.is_none() {
+            self.limit = speed_limit(self.speed_column.map_or(0.0, |k| self.row[k]));
         }
         self.channels.write_error.is_none()
     }

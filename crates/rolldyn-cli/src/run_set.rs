@@ -13,7 +13,7 @@ use crate::accuracy::{Change, VERIFY_LIMIT_MEANS, VERIFY_TIGHTENING, Verificatio
 use crate::checkpoint::{self, Position, RunRecord};
 use crate::pipeline::{Recorder, Start, drive, fresh_dir};
 use crate::recorder::Channels;
-use crate::run_options::{DEFAULT_SAMPLE_RATE, RunOptions, check_limits};
+use crate::run_options::{DEFAULT_SAMPLE_RATE, RunOptions, check_limits, speed_limit};
 use crate::run_stats::RunStatistics;
 
 use rolldyn::dynamics::ContactSample;
@@ -221,6 +221,12 @@ pub fn run(
         ],
         combined: Vec::with_capacity(series.width()),
         loads: vec![[0.0; 5]; count],
+        speed_column: channels[0]
+            .series
+            .names()
+            .iter()
+            .position(|n| n == "inner_ring_speed_rpm"),
+        limit: None,
         layouts,
         patch,
         channels,
@@ -268,6 +274,10 @@ struct Recording<'a> {
     contacts: Vec<ContactSample>,
     combined: Vec<f64>,
     loads: Vec<[f64; 5]>,
+    /// Column of the inner ring's speed in a bearing's row.
+    speed_column: Option<usize>,
+    /// The limit the state passed, if it did.
+    limit: Option<String>,
     context: Context<'a>,
 }
 
@@ -311,7 +321,14 @@ impl Recorder<ShaftDynamics> for Recording<'_> {
         if self.write_error.is_none() {
             self.write_error = self.writer.push(combined).err();
         }
+        if self.limit.is_none() {
+            self.limit = speed_limit(self.speed_column.map_or(0.0, |k| self.rows[0][k]));
+        }
         self.write_error.is_none()
+    }
+
+    fn limit(&self) -> Option<String> {
+        self.limit.clone()
     }
 
     fn take_write_error(&mut self) -> Option<String> {

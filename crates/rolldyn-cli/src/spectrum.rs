@@ -44,8 +44,9 @@ pub struct SpectrumArgs {
     /// Overlap fraction of the segments (psd, spectrogram).
     #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
     pub overlap: f64,
-    /// Envelope band "LOW:HIGH" in Hz (envelope; default: 0.1 to 0.4 of the
-    /// sample rate).
+    /// Envelope band "LOW:HIGH", frequencies with their unit, e.g.
+    /// "2 kHz:8 kHz" or "2000:8000 Hz" (envelope; default: 0.1 to 0.4 of
+    /// the sample rate).
     #[arg(long, value_name = "LOW:HIGH", allow_hyphen_values = true)]
     pub band: Option<String>,
     /// Analyse samples from this time, e.g. "0.1 s" (default: the
@@ -449,16 +450,29 @@ fn faults(dir: &Path) -> Vec<Fault> {
 }
 
 fn parse_band(text: &str) -> Result<(f64, f64), Failure> {
-    let parsed = text
-        .split_once(':')
-        .and_then(|(a, b)| Some((a.trim().parse::<f64>().ok()?, b.trim().parse::<f64>().ok()?)));
-    match parsed {
-        Some((lo, hi)) if lo.is_finite() && hi.is_finite() && 0.0 <= lo && lo < hi => Ok((lo, hi)),
-        _ => Err(bad_arg(
-            "--band",
-            text,
-            "expected LOW:HIGH in Hz with 0 ≤ LOW < HIGH, e.g. 2000:8000",
-        )),
+    use rolldyn_case::units::{Frequency, parse_quantity};
+    let rule = "expected LOW:HIGH, two frequencies with 0 ≤ LOW < HIGH, e.g. \"2 kHz:8 kHz\" or \"2000:8000 Hz\" (LOW without a unit takes HIGH's)";
+    let Some((low, high)) = text.split_once(':') else {
+        return Err(bad_arg("--band", text, rule));
+    };
+    let (low, high) = (low.trim(), high.trim());
+    let hi = parse_quantity::<Frequency>(high).map_err(|e| bad_arg("--band", text, e))?;
+    // LOW's unit may be left to HIGH's: "2000:8000 Hz".
+    let unit = high.trim_start_matches(|c: char| c.is_ascii_digit() || ".eE+-_".contains(c));
+    let lo = parse_quantity::<Frequency>(low)
+        .or_else(|e| {
+            let bare = low.parse::<f64>().is_ok();
+            if bare {
+                parse_quantity::<Frequency>(&format!("{low} {unit}"))
+            } else {
+                Err(e)
+            }
+        })
+        .map_err(|e| bad_arg("--band", text, e))?;
+    if (0.0..hi).contains(&lo) {
+        Ok((lo, hi))
+    } else {
+        Err(bad_arg("--band", text, rule))
     }
 }
 

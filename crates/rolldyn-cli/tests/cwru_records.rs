@@ -89,7 +89,7 @@ fn the_outer_race_pit_against_cwru_record_130() {
     let v = envelope_json(
         &dir,
         "sensor_acceleration_m_s2",
-        &["--band", "1200:4800", "--peaks", "4"],
+        &["--band", "1200:4800 Hz", "--peaks", "4"],
     );
     let simulated: Vec<&str> = v["peaks"]
         .as_array()

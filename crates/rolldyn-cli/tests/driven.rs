@@ -159,3 +159,32 @@ fn a_run_away_drive_stops_at_the_speed_limit() {
     assert!(summary["simulated_time_s"].as_f64().unwrap() < 1e-3);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The same limit holds for a set's shaft: a back-to-back pair of the
+/// default case driven away stops with the same reason and exit 3.
+#[test]
+fn a_run_away_set_stops_at_the_speed_limit() {
+    let dir = temp_dir("run-away-set");
+    let case = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--set",
+            "operating.drive_torque=1e5 N.m",
+            "--set",
+            "operating.rotor_inertia=1e-6 kg.m^2",
+            "--duration",
+            "1 ms",
+            "-o",
+            dir.to_str().unwrap(),
+        ],
+        Some(&case),
+    );
+    assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
+    assert!(stderr(&o).contains("beyond the ±1e6 rpm"), "{}", stderr(&o));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["status"], "failed");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -42,7 +42,7 @@ struct InnerRaceLines {
 }
 
 fn envelope(run: &Path) -> InnerRaceLines {
-    let v = envelope_json(run, "sensor_acceleration_m_s2", &["--band", "1200:4800"]);
+    let v = envelope_json(run, "sensor_acceleration_m_s2", &["--band", "1200:4800 Hz"]);
     let line = |name: &str| line_frequency(&v, name).unwrap();
     let resolution = v["resolution_hz"].as_f64().unwrap();
     let csv = std::fs::read_to_string(v["csv"].as_str().unwrap()).unwrap();

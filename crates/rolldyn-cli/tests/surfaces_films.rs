@@ -238,7 +238,10 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
     for (args, fragment) in [
         (vec!["--channel", "nope"], "--channel nope"),
         (vec!["--kind", "cepstrum"], "--kind cepstrum"),
-        (vec!["--kind", "envelope", "--band", "9000:100"], "--band"),
+        (
+            vec!["--kind", "envelope", "--band", "9000:100 Hz"],
+            "--band",
+        ),
         (vec!["--from", "1 s"], "--from"),
         // A bare number: the case files' message.
         (vec!["--from", "0.1"], "missing unit"),

@@ -355,11 +355,17 @@ impl SetReport {
                         let max = |g: fn(&super::single::BallRow) -> f64| {
                             q.balls.iter().map(g).fold(0.0, f64::max)
                         };
+                        // The contact angles of the most loaded ball (an
+                        // unloaded ball's are those of open contacts).
+                        let top = q
+                            .balls
+                            .iter()
+                            .max_by(|a, b| a.load_inner_n.total_cmp(&b.load_inner_n));
                         (
                             max(|r| r.load_inner_n),
                             max(|r| r.load_outer_n),
-                            angle(q.balls.first().map(|r| r.contact_angle_inner_deg)),
-                            angle(q.balls.first().map(|r| r.contact_angle_outer_deg)),
+                            angle(top.map(|r| r.contact_angle_inner_deg)),
+                            angle(top.map(|r| r.contact_angle_outer_deg)),
                         )
                     });
             let _ = writeln!(

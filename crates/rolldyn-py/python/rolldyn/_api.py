@@ -239,7 +239,7 @@ def spectrum(directory: Union[str, os.PathLike], channel: str, *, kind: Optional
              peaks: Optional[int] = None) -> "SpectrumResult":
     """``rolldyn spectrum DIR --json``: amplitude, Welch PSD, envelope
     spectrum or spectrogram of a run's channel (``kind="envelope"``,
-    ``band="2000:8000"``, ``start`` the CLI's ``--from`` in s, ...), with
+    ``band="2 kHz:8 kHz"``, ``start`` the CLI's ``--from`` in s, ...), with
     the bearing's lines and the nearest line of each peak; writes
     ``spectrum_<channel>_<kind>.csv`` and ``.json`` into the run
     directory."""

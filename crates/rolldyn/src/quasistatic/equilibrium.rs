@@ -108,6 +108,16 @@ pub const SPEED_EXTENSION: f64 = 1e-9;
 /// solution.
 const STAGNATION_ACCEPT: f64 = 1e-8;
 
+/// Relative residual to which a ball free of the inner ring (open inner
+/// contact: it loads the ring nowhere, so its state changes neither the
+/// ring's equilibrium nor the stiffness) is solved once the ring and the
+/// loaded balls are converged. Near rest such a ball is held only by the
+/// centrifugal force (~1e-7 N at 1 rpm on a 6206) and its position and
+/// speeds are nearly undetermined: Newton converges on it only linearly.
+/// 1e-6 of the load scale (forces) and of the reference speeds
+/// (kinematics).
+const FREE_BALL_TOLERANCE: f64 = 1e-6;
+
 /// Which raceway controls the ball spin (Jones–Harris).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -229,7 +239,9 @@ pub struct Equilibrium {
     pub reaction: [f64; 5],
     /// Newton iterations used (all passes and continuation steps).
     pub iterations: usize,
-    /// Largest relative residual at the solution.
+    /// Largest relative residual at the solution, of the ring and the
+    /// balls that load it (a ball free of the inner ring is solved to
+    /// 1e-6).
     pub residual: f64,
 }
 
@@ -308,6 +320,9 @@ struct Assembly {
     c: Vec<Matrix5>,
     d: Matrix5,
     largest_load: f64,
+    /// Per ball: free of the inner ring (it puts no load on the ring and
+    /// the ring's load does not depend on it: C_j = 0).
+    free: Vec<bool>,
 }
 
 /// Fixed per-solve data of the assembly.

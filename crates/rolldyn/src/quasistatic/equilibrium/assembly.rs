@@ -58,6 +58,7 @@ impl QuasiStaticSolver {
             c: Vec::with_capacity(z),
             d: Matrix5::zeros(),
             largest_load: 0.0,
+            free: Vec::with_capacity(z),
         };
         for (j, y) in state.balls.iter().enumerate() {
             let t = self.ball_terms(j, y, &ring, controls[j], setup);
@@ -65,6 +66,8 @@ impl QuasiStaticSolver {
             asm.speed_derivative.push(t.speed_derivative);
             asm.a.push(t.a);
             asm.b.push(t.b);
+            asm.free
+                .push(t.c == Matrix5::zeros() && t.ring == Vector5::zeros());
             asm.c.push(t.c);
             asm.d += t.d;
             asm.ring += t.ring;

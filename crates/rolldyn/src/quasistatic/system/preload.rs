@@ -5,8 +5,17 @@
 use super::{
     MountedBearing, Orientation, ShaftSystem, SystemConditions, SystemEquilibrium, SystemError,
 };
+use crate::geometry::RingKind;
 use crate::operating::Loads;
 use crate::quasistatic::{Equilibrium, RacewayControl, SolverOptions};
+
+/// Each ball's contact approach at the least preload force a set takes
+/// \[m\]: 5 nm. Closer to the contacts' onset the round-off of the
+/// ball's coordinates (ε d_m ≈ 1e-17 m against an approach of 1e-9 m)
+/// is more than the quasi-static solve's 1e-8 of the load, its solves
+/// fail, and the preload search cannot close (a 7008C pair found no
+/// equilibrium below 3.7 mN, ~1.3 nm).
+pub const LEAST_APPROACH: f64 = 5e-9;
 
 impl ShaftSystem {
     /// The axial force through the set at `equilibrium` \[N\]: the sum of
@@ -34,7 +43,8 @@ impl ShaftSystem {
 
     /// The axial offset s at which, with no external load, the set carries
     /// the axial force `preload` \[N\] ([`Self::preload_of`]) at speed
-    /// `inner_speed` (bisection and secant on s, to 1e-9 of the preload).
+    /// `inner_speed` (regula falsi on the load's 2/3 power, to 1e-9 of the preload or
+    /// 1 nN).
     pub fn offset_for_preload(
         &self,
         preload: f64,
@@ -45,6 +55,15 @@ impl ShaftSystem {
         if preload.is_nan() || preload <= 0.0 {
             return Err(SystemError::Preload {
                 reason: format!("{preload} N: a preload force must be positive"),
+            });
+        }
+        let least = self.least_preload();
+        if preload < least {
+            return Err(SystemError::Preload {
+                reason: format!(
+                    "{preload} N is below the least preload the solver resolves for this set, {least:.3} N: each ball's contact approach would be under {} nm, where the round-off of the ball's coordinates is more than 1e-8 of its load; give at least {least:.3} N or no preload",
+                    LEAST_APPROACH * 1e9
+                ),
             });
         }
         let unloaded = SystemConditions {
@@ -70,19 +89,26 @@ impl ShaftSystem {
                 Ok(eq) => {
                     let load = set.preload_of(&eq);
                     near = Some(eq);
-                    load - preload
+                    load
                 }
                 Err(e) => {
                     failure = Some(e);
-                    -preload
+                    0.0
                 }
             }
         };
+        // The search is on L^{2/3} − P^{2/3}: with Hertz contacts the
+        // load grows as (s − s₀)^{3/2} beyond the onset s₀, so its 2/3
+        // power is nearly linear in s and regula falsi converges in a few
+        // steps where it crawls on L itself (1 mN: 30 solves).
+        let linear = |load: f64| load.signum() * load.abs().powf(2.0 / 3.0);
+        let target = linear(preload);
         // Bracket: without offset the inner rings carry nothing; doubling
         // from a micrometre.
-        let (mut lo, mut f_lo) = (0.0, -preload);
+        let (mut lo, mut f_lo) = (0.0, -target);
         let mut hi = 1e-6;
-        let mut f_hi = carried(hi);
+        let mut load = carried(hi);
+        let mut f_hi = linear(load) - target;
         while f_hi < 0.0 {
             if hi > 1e-3 {
                 return Err(failure.unwrap_or_else(|| SystemError::Preload {
@@ -91,23 +117,58 @@ impl ShaftSystem {
             }
             (lo, f_lo) = (hi, f_hi);
             hi *= 2.0;
-            f_hi = carried(hi);
+            load = carried(hi);
+            f_hi = linear(load) - target;
         }
+        // To 1e-9 of the preload, but not below the shaft solve's own
+        // accuracy (1e-10 of a load scale of at least 1 N): a millinewton
+        // preload otherwise chases round-off.
+        let close = |load: f64| (load - preload).abs() <= 1e-9 * preload.max(1.0);
+        if close(load) {
+            return Ok(hi);
+        }
+        // Regula falsi (Illinois: the end kept twice has its value halved),
+        // kept inside the bracket's middle 98 %.
+        let mut kept = 0i8;
         for _ in 0..100 {
-            // Regula falsi, kept inside the bracket's middle 90 %.
-            let w = (f_lo / (f_lo - f_hi)).clamp(0.05, 0.95);
+            let w = (f_lo / (f_lo - f_hi)).clamp(0.01, 0.99);
             let mid = lo + w * (hi - lo);
-            let f = carried(mid);
-            if f.abs() <= 1e-9 * preload || hi - lo <= 1e-15 {
+            let load = carried(mid);
+            let f = linear(load) - target;
+            if close(load) || hi - lo <= 1e-15 {
                 return Ok(mid);
             }
             if f < 0.0 {
                 (lo, f_lo) = (mid, f);
+                if kept == 1 {
+                    f_hi *= 0.5;
+                }
+                kept = 1;
             } else {
                 (hi, f_hi) = (mid, f);
+                if kept == -1 {
+                    f_lo *= 0.5;
+                }
+                kept = -1;
             }
         }
         Ok(0.5 * (lo + hi))
+    }
+
+    /// The axial load \[N\] of bearing 0 (the one whose load is the
+    /// preload) when each of its balls is compressed by [`LEAST_APPROACH`]
+    /// in series at its free contact angle α₀: Z sin α₀ K δ^{3/2} with
+    /// K = (K_i^{-2/3} + K_o^{-2/3})^{-3/2} (Hertz; Harris & Kotzalas,
+    /// *Essential Concepts*, §7.2). Zero without a free contact angle.
+    pub fn least_preload(&self) -> f64 {
+        let Some(bearing) = self.bearings.first() else {
+            return 0.0;
+        };
+        let geometry = bearing.solver.geometry();
+        let angle = geometry.free_contact_angle();
+        let stiffness = |ring| bearing.solver.table(ring).stiffness(angle).powf(-2.0 / 3.0);
+        let series = (stiffness(RingKind::Inner) + stiffness(RingKind::Outer)).powf(-1.5);
+        geometry.ball_count as f64 * angle.sin() * series * LEAST_APPROACH.powf(1.5)
     }
 
     /// The external axial load \[N\] (along +x) at which every bearing
