@@ -589,6 +589,16 @@ fn print_run(summary: run::Summary, output: &str, with_report: bool) -> Result<(
             sensor.clipped_samples
         );
     }
+    for (k, g) in summary.spall_growth.iter().flatten().enumerate() {
+        if g.stalled {
+            eprintln!(
+                "warning: growing spall {k} reached {:.3} mm of the {:.3} mm its growth_rate asks: a spall grows only while no ball is on it, and once longer than the balls' spacing along its raceway ({:.2} mm on the pitch circle) a ball always is (docs/dynamics.md, \"Spall growth\")",
+                g.length_m * 1e3,
+                g.asked_length_m * 1e3,
+                std::f64::consts::PI * summary.pitch_diameter_m / summary.ball_count as f64 * 1e3
+            );
+        }
+    }
     if let Some(v) = &summary.accuracy.verify {
         emit(&v.line())?;
     }

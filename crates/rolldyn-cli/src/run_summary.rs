@@ -85,6 +85,9 @@ pub struct Summary {
     /// The spectra's lines of a run with a spall, waviness or a sensor.
     #[serde(flatten)]
     pub surface_lines: crate::vibration::SurfaceLines,
+    /// Each growing spall's length against the length its growth rate
+    /// asks at the run's end (null without growing spalls).
+    pub spall_growth: Option<Vec<SpallGrowth>>,
     /// The sensor's record over the window (null without `[sensor]`).
     pub sensor: Option<crate::vibration::SensorSummary>,
     /// Friction power by component and friction torque.
@@ -100,6 +103,38 @@ pub struct Summary {
     pub energy_balance_relative_error: f64,
     /// How accurate the run is (docs/cli.md).
     pub accuracy: crate::accuracy::Accuracy,
+}
+
+/// A growing spall at the run's end (`summary.json`).
+#[derive(Serialize)]
+pub struct SpallGrowth {
+    /// Its length \[m\].
+    pub length_m: f64,
+    /// The length L₀ + g t its growth rate asks \[m\].
+    pub asked_length_m: f64,
+    /// It lags the asked length by more than two ball passes' growth
+    /// (2 g / BPFO) plus the 1 % growth step: it can grow only while no
+    /// ball is on it, and once about as long as the balls' spacing a ball
+    /// always is.
+    pub stalled: bool,
+}
+
+/// The growing spalls of `model` at time `t`, with BPFO `bpfo` \[Hz\]
+/// (None without growing spalls).
+fn spall_growth(model: &BearingModel, t: f64, bpfo: f64) -> Option<Vec<SpallGrowth>> {
+    let rows: Vec<SpallGrowth> = model
+        .spall_growth_at(t)
+        .map(|(length, asked, rate)| {
+            let allowance = 2.0 * rate / bpfo.abs().max(f64::MIN_POSITIVE)
+                + rolldyn::dynamics::spall_growth::MIN_INCREMENT * asked;
+            SpallGrowth {
+                length_m: length,
+                asked_length_m: asked,
+                stalled: asked - length > allowance,
+            }
+        })
+        .collect();
+    (!rows.is_empty()).then_some(rows)
 }
 
 /// Means of the FASTSIM channels over loaded contacts in the averaging
@@ -240,6 +275,7 @@ pub(crate) fn summarise(
             balls,
             &case.surface,
         ),
+        spall_growth: spall_growth(model, t_end, characteristic.bpfo),
         sensor: crate::vibration::sensor_summary(&signal, model.sensor()),
         power: crate::power_channels::summarise(
             &window,

@@ -169,5 +169,45 @@ fn a_spall_grows_between_ball_passes_and_a_resumed_run_keeps_its_length() {
     let summary: Value = serde_json::from_str(&text).unwrap();
     let balance = summary["energy_balance_relative_error"].as_f64().unwrap();
     assert!(balance.abs() < 1e-3, "{balance}");
+    let growth = &summary["spall_growth"][0];
+    assert_eq!(growth["stalled"], false, "{growth}");
+    assert!((growth["asked_length_m"].as_f64().unwrap() - (l0 + rate * 0.06)).abs() < 1e-12);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A pit longer than the balls' spacing on the outer race (16.4 mm on
+/// the 6205) always has a ball on it in the load zone: it cannot grow,
+/// and the run says so (a warning and `stalled` in the summary).
+#[test]
+fn a_spall_that_cannot_grow_says_so() {
+    let dir = temp_dir("diagnostics-stall");
+    let o = rolldyn(
+        &[
+            "run",
+            CASE,
+            "-o",
+            dir.to_str().unwrap(),
+            "--duration",
+            "0.05 s",
+            "--set",
+            "surface.outer.spall.0.length=\"17 mm\"",
+            "--set",
+            "surface.outer.spall.0.depth=\"2 um\"",
+            "--set",
+            "surface.outer.spall.0.growth_rate=\"10 mm/s\"",
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("growing spall 0 reached"),
+        "{}",
+        stderr(&o)
+    );
+    let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    let summary: Value = serde_json::from_str(&text).unwrap();
+    let growth = &summary["spall_growth"][0];
+    assert_eq!(growth["stalled"], true, "{growth}");
+    assert!(growth["length_m"].as_f64().unwrap() < 17.1e-3, "{growth}");
     std::fs::remove_dir_all(&dir).ok();
 }

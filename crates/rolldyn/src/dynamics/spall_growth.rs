@@ -30,6 +30,15 @@ impl BearingModel {
         )
     }
 
+    /// The growing spalls' (current length, length L₀ + g t asked at time
+    /// `t`, growth rate g) \[m, m, m/s\], in the order of
+    /// [`Self::growing_spall_lengths`].
+    pub fn spall_growth_at(&self, t: f64) -> impl Iterator<Item = (f64, f64, f64)> + '_ {
+        self.growing_spall_lengths()
+            .zip(&self.growth)
+            .map(move |(length, g)| (length, g.initial_length + g.rate * t, g.rate))
+    }
+
     /// Sets the growing spalls' lengths (a checkpoint's).
     pub(super) fn set_growing_spall_lengths(&mut self, lengths: &[f64]) {
         let surface = &mut self.elements.params.surface;
