@@ -1,10 +1,14 @@
-//! the fuzzing harness: the presets' case files and the CLI flags,
-//! mutated as a careless or hostile user would, fed to every command. For
-//! each case: no panic, exit code 0, 2 or 3 (130 never: nothing
-//! interrupts), an exit 2 with a located `error:` message, no hang beyond
-//! [`TIMEOUT`], no non-finite number in JSON or CSV output (the JSON
-//! writers name one on standard error: `finite.rs`), and no partial file
-//! at a final path (temporary files gone, results readable).
+//! the fuzzing harness: the presets' case files, a matched set, a shaft
+//! and a case with a sensor and a spall (with sections added: a set, a
+//! sensor, a growing spall) and the CLI flags (with `--set` on nested
+//! arrays, drive torques, growth rates), mutated as a careless or hostile
+//! user would, fed to every command (`traction --method exact` and
+//! `table` among them). For each case: no panic, exit code 0, 2 or 3 (130
+//! never: nothing interrupts), an exit 2 with a located `error:` message,
+//! no hang beyond [`TIMEOUT`], no non-finite number in JSON, CSV or text
+//! output (the JSON writers name one on standard error: `finite.rs`; the
+//! text is searched for `NaN` and `inf`), and no partial file at a final
+//! path (temporary files gone, results readable).
 //!
 //! The generator is a seeded SplitMix64, so a run is reproducible from its
 //! seed and case number (printed with every failure). CI runs a fixed
@@ -23,8 +27,8 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// Cases of the CI run (about 15 s on 2 cores, debug build).
-const CI_CASES: u64 = 3000;
+/// Cases of the CI run (about 150 s on 2 cores, debug build).
+const CI_CASES: u64 = 2500;
 /// Longest a command may take before it counts as a hang; a `run` is then
 /// interrupted instead (SIGINT) and counts as slow, not hung, if it stops
 /// within [`GRACE`] with a summary that shows progress: a stiff
@@ -92,6 +96,37 @@ const REGRESSIONS: &[(&str, &[&str], i32)] = &[
     ),
 ];
 
+/// Case files beside the presets: a matched set, a shaft on two
+/// bearings, a case with a housing sensor and a spall.
+const EXAMPLES: &[&str] = &[
+    include_str!("../../../examples/spindle_pair/case.toml"),
+    include_str!("../../../examples/cwru6205/case.toml"),
+    r#"
+[operating]
+speed = "3000 rpm"
+[shaft]
+[[shaft.bearings]]
+preset = "6206"
+position = "-60 mm"
+[[shaft.bearings]]
+preset = "6206"
+position = "60 mm"
+orientation = "reversed"
+[[shaft.loads]]
+position = "20 mm"
+force_z = "-4 kN"
+force_x = "300 N"
+"#,
+];
+
+/// Sections added to a preset's text (one of them, a third of the time).
+const SECTIONS: &[&str] = &[
+    "\n[arrangement]\nkind = \"back_to_back\"\npreload = \"100 N\"\n",
+    "\n[arrangement]\nkind = \"tandem_face_to_face\"\npreload_displacement = \"2 um\"\n",
+    "\n[sensor]\n",
+    "\n[[surface.outer.spall]]\nposition = \"90 deg\"\nlength = \"0.5 mm\"\ndepth = \"0.1 mm\"\ngrowth_rate = \"5 mm/s\"\n",
+];
+
 struct Rng(u64);
 
 impl Rng {
@@ -157,6 +192,11 @@ const STRINGS: &[&str] = &[
     "\"float32\"",
     "\"float16\"",
     "\"ambient\"",
+    "\"2 mm/s\"",
+    "\"1e5 N.m\"",
+    "\"1e-6 kg.m^2\"",
+    "\"1 kHz\"",
+    "\"back_to_back\"",
 ];
 /// Factors applied to the number of a quantity ("6.35 mm" → "…e300 mm").
 const FACTORS: &[f64] = &[0.0, -1.0, 1e-300, 1e300, 1e6, 1e-6, 1e3, 1e-3, 2.0, 0.5];
@@ -175,7 +215,34 @@ const HOSTILE: &[&str] = &["nan N", "abc", "", "1e300 rpm", "inf deg", "5 kN"];
 
 /// A command line for a case read from standard input; `dir` for outputs.
 fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
-    let base: &[&str] = match rng.below(10) {
+    let base: &[&str] = match rng.below(12) {
+        10 => &[
+            "traction",
+            "-",
+            "--load",
+            "500 N",
+            "--rolling-speed",
+            "10 m/s",
+            "--creepages",
+            "1e-3,0,5",
+            "--method",
+            "exact",
+            "--cells",
+            "16",
+        ],
+        11 => &[
+            "traction",
+            "-",
+            "--load",
+            "500 N",
+            "--rolling-speed",
+            "10 m/s",
+            "--creepages",
+            "2e-3,1e-3,20",
+            "--method",
+            "table",
+            "--json",
+        ],
         0 => &["check", "-", "--json"],
         1 => &["frequencies", "-", "--json"],
         2 => &["contact", "-", "--load", "500 N", "--json"],
@@ -224,6 +291,10 @@ fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
         ],
     };
     let mut args: Vec<String> = base.iter().map(|s| s.to_string()).collect();
+    // Half the time the text output (searched for NaN and inf).
+    if rng.below(2) == 0 {
+        args.retain(|a| a != "--json");
+    }
     let flags = [
         "--speed",
         "--axial-load",
@@ -253,6 +324,15 @@ fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
                 "output.slow_channels",
                 "output.slow_rate",
                 "thermal.run_start",
+                "operating.drive_torque",
+                "operating.rotor_inertia",
+                "surface.outer.spall.0.length",
+                "surface.outer.spall.0.growth_rate",
+                "sensor.modes.0.frequency",
+                "shaft.loads.0.force_z",
+                "shaft.bearings.1.position",
+                "arrangement.preload",
+                "arrangement.kind",
             ]);
             let value = if rng.below(2) == 0 {
                 *rng.pick(NUMBERS)
@@ -300,8 +380,18 @@ fn scaled(value: &str, factor: f64) -> Option<String> {
 /// A preset's text with 0–3 mutations (mostly a quantity scaled, which
 /// keeps the file well-formed so that the solvers see absurd values).
 fn mutated_case(rng: &mut Rng, known: &[(String, String)]) -> String {
-    let preset = rng.pick(PRESETS);
-    let mut lines: Vec<String> = preset.text.lines().map(str::to_string).collect();
+    let text = match rng.below(PRESETS.len() + EXAMPLES.len()) {
+        i if i < PRESETS.len() => {
+            let mut text = PRESETS[i].text.to_string();
+            if rng.below(3) == 0 {
+                let section: &str = *rng.pick::<&str>(SECTIONS);
+                text.push_str(section);
+            }
+            text
+        }
+        i => EXAMPLES[i - PRESETS.len()].to_string(),
+    };
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
     for _ in 0..rng.below(4) {
         let values: Vec<usize> = (0..lines.len())
             .filter(|&i| {
@@ -403,6 +493,18 @@ fn check_case(args: &[String], case: &str, dir: &Path, fresh: bool) -> Result<i3
     if code == Some(0) && args.iter().any(|a| a == "--json") {
         serde_json::from_str::<Value>(&stdout)
             .map_err(|e| format!("invalid JSON ({e}): {stdout:.200}"))?;
+    } else if let Some(word) = stdout
+        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '.'))
+        .find(|w| {
+            matches!(
+                w.to_ascii_lowercase().as_str(),
+                "nan" | "inf" | "-inf" | "infinity"
+            )
+        })
+    {
+        return Err(format!(
+            "non-finite number in the text output ({word}): {stdout:.400}"
+        ));
     }
     if dir.exists() {
         for entry in std::fs::read_dir(dir).map_err(|e| e.to_string())? {
