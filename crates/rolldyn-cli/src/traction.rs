@@ -28,8 +28,14 @@ use rolldyn_case::units::{AngularSpeed, Dimension, Force, Length, Pressure, Quan
 use serde::Serialize;
 use std::fmt::Write;
 
-/// Arguments of `rolldyn traction`.
+/// Arguments of `rolldyn traction`. The ring constraints of the shared
+/// case flags (`--fix-tilt`, `--misalignment`) do not enter one contact's
+/// traction and are refused, so its help does not offer them.
 #[derive(Args, Debug)]
+#[command(
+    mut_arg("fix_tilt", |a| a.hide(true)),
+    mut_arg("misalignment", |a| a.hide(true))
+)]
 pub struct TractionArgs {
     #[command(flatten)]
     pub case: CaseArgs,

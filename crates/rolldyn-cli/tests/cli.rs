@@ -593,21 +593,66 @@ fn a_closed_pipe_ends_quietly() {
     );
 }
 
-/// `run --help` offers no quasi-static ring constraint (a dynamic run
-/// refuses them); `quasistatic --help` does.
+/// Every command's help offers only what the command accepts: each
+/// shared case flag its `--help` lists (`--speed`, `--axial-load`,
+/// `--radial-load`, `--misalignment`, `--fix-tilt`, `--set`), given a
+/// valid value, is not refused (the command may still fail otherwise, but
+/// never naming the flag); the flags a command hides it refuses.
 #[test]
-fn run_help_offers_only_what_run_accepts() {
-    let help = |command: &str| {
+fn every_help_offers_only_what_its_command_accepts() {
+    let dir = temp_dir("help-walk");
+    let d = dir.to_str().unwrap().to_string();
+    let commands: [(&str, Vec<&str>); 8] = [
+        ("check", vec![]),
+        ("frequencies", vec![]),
+        ("contact", vec!["--load", "500 N"]),
+        ("quasistatic", vec![]),
+        ("power", vec![]),
+        ("thermal", vec![]),
+        (
+            "traction",
+            vec![
+                "--load",
+                "500 N",
+                "--rolling-speed",
+                "1 m/s",
+                "--creepages",
+                "1e-3,0,0",
+            ],
+        ),
+        ("run", vec!["--duration", "0.2 ms", "-o", &d]),
+    ];
+    let flags: [(&str, Option<&str>, &str); 6] = [
+        ("--speed", Some("2000 rpm"), "operating.speed"),
+        ("--axial-load", Some("150 N"), "operating.axial_load"),
+        ("--radial-load", Some("50 N"), "operating.radial_load"),
+        ("--misalignment", Some("0.01 deg"), "operating.tilt_y"),
+        ("--fix-tilt", None, "operating.fixed_tilt"),
+        (
+            "--set",
+            Some("life.contamination_factor=0.5"),
+            "life.contamination_factor",
+        ),
+    ];
+    for (command, base) in &commands {
         let o = rolldyn(&[command, "--help"], None);
-        String::from_utf8(o.stdout).unwrap()
-    };
-    let run = help("run");
-    assert!(
-        !run.contains("--fix-tilt") && !run.contains("--misalignment"),
-        "{run}"
-    );
-    let quasistatic = help("quasistatic");
-    assert!(quasistatic.contains("--fix-tilt") && quasistatic.contains("--misalignment"));
+        let help = String::from_utf8(o.stdout).unwrap();
+        for (flag, value, key) in flags {
+            let mut args = vec![*command];
+            args.extend(base.iter().copied());
+            args.push(flag);
+            args.extend(value);
+            let o = rolldyn(&args, None);
+            let e = stderr(&o);
+            let refused = !o.status.success() && (e.contains(flag) || e.contains(key));
+            let offered = help.contains(&format!("{flag} ")) || help.contains(&format!("{flag}\n"));
+            assert_eq!(
+                offered, !refused,
+                "{command} {flag}: offered {offered}, {e}"
+            );
+            std::fs::remove_dir_all(&dir).ok();
+        }
+    }
 }
 
 /// `spectrum --harmonics` beyond the band marks the lines up to the
