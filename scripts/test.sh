@@ -3,21 +3,24 @@
 # the Rust workspace, then the Python package installed from the
 # repository with pip, as a user installs it, and its tests (pytest).
 # Needs the Rust toolchain, gcc and Python ≥ 3.9 with pip; everything else
-# (maturin, numpy, pyarrow, pytest, Dask distributed, pandas) is installed
-# into a virtual environment under target/.
+# (maturin, numpy, pyarrow, pytest, Dask distributed, pandas, matplotlib)
+# is installed into a virtual environment under target/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-
-cargo test --workspace
 
 venv=target/python-venv
 if [ ! -x "$venv/bin/python" ]; then
   python3 -m venv "$venv"
 fi
-"$venv/bin/python" -m pip install --quiet --disable-pip-version-check "maturin>=1.16,<2"
+# matplotlib first: the examples' plot scripts draw their figures
+# headless in `cargo test` (crates/rolldyn-cli/tests/example_tables.rs).
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check "maturin>=1.16,<2" "matplotlib>=3.5"
+
+ROLLDYN_PYTHON="$PWD/$venv/bin/python" cargo test --workspace
+
 # The dev profile (dependencies and the engine at -O2, Cargo.toml) reuses
 # what `cargo test` built; a user's `pip install` builds the release
 # profile.
 PATH="$PWD/$venv/bin:$PATH" MATURIN_PEP517_ARGS="--profile dev" "$venv/bin/python" -m pip install --quiet \
-  --disable-pip-version-check --no-build-isolation "./crates/rolldyn-py[test]"
+  --disable-pip-version-check --no-build-isolation "./crates/rolldyn-py[test,plot]"
 ROLLDYN_CLI="$PWD/target/debug/rolldyn" "$venv/bin/python" -m pytest -q crates/rolldyn-py/tests

@@ -154,6 +154,9 @@ fn simulate(preset: &str, job: &Job) -> Result<Vibration, String> {
             "model.normal_law={{ law = \"viscous\", damping_ratio = {} }}",
             job.damping_ratio
         ))?,
+        // Zhang et al. 2020's model has no EHL rolling resistance (the
+        // preset's lubricated default since 2026-11-28).
+        set("lubrication.rolling_resistance=\"none\"".into())?,
     ];
     if let Some(l) = job.ratio {
         overrides.push(set("model.film_in_approach=true".into())?);

@@ -42,20 +42,22 @@ axf.set_xlabel("inlet distance ratio L")
 axf.set_ylabel("radial natural frequency f_z [Hz]")
 axf.set_title("film in the approach (dashed: dry)")
 axf.legend(fontsize=8)
-vibration = list(csv.DictReader(open(out / "vibration.csv")))
-table = [r for r in vibration if float(r["damping_ratio"]) == 0.05]
-for k, fz in enumerate(sorted({r["radial_load_n"] for r in table}, key=float)):
-    group = [r for r in table if r["radial_load_n"] == fz]
-    starved = [r for r in group if r["inlet_distance_ratio"] not in ("dry", "inf")]
-    axv.plot([float(r["inlet_distance_ratio"]) for r in starved], [1e3 * float(r["velocity_rms_z_m_s"]) for r in starved], "o-", color=f"C{k}", label=f"F_z = {fz} N")
-    for r in group:
-        if r["inlet_distance_ratio"] in ("dry", "inf"):
-            ls = "--" if r["inlet_distance_ratio"] == "dry" else ":"
-            axv.axhline(1e3 * float(r["velocity_rms_z_m_s"]), color=f"C{k}", ls=ls, lw=0.8)
-axv.set_xlabel("inlet distance ratio L")
-axv.set_ylabel("inner-ring v_z RMS [mm/s]")
-axv.set_title("dynamic runs, contact damping ratio 0.05 (assumed)")
-axv.legend(fontsize=8)
+# Without the dynamic runs (`seed003 OUT static`) the third panel stays empty.
+if (out / "vibration.csv").exists():
+    vibration = list(csv.DictReader(open(out / "vibration.csv")))
+    table = [r for r in vibration if float(r["damping_ratio"]) == 0.05]
+    for k, fz in enumerate(sorted({r["radial_load_n"] for r in table}, key=float)):
+        group = [r for r in table if r["radial_load_n"] == fz]
+        starved = [r for r in group if r["inlet_distance_ratio"] not in ("dry", "inf")]
+        axv.plot([float(r["inlet_distance_ratio"]) for r in starved], [1e3 * float(r["velocity_rms_z_m_s"]) for r in starved], "o-", color=f"C{k}", label=f"F_z = {fz} N")
+        for r in group:
+            if r["inlet_distance_ratio"] in ("dry", "inf"):
+                ls = "--" if r["inlet_distance_ratio"] == "dry" else ":"
+                axv.axhline(1e3 * float(r["velocity_rms_z_m_s"]), color=f"C{k}", ls=ls, lw=0.8)
+    axv.set_xlabel("inlet distance ratio L")
+    axv.set_ylabel("inner-ring v_z RMS [mm/s]")
+    axv.set_title("dynamic runs, contact damping ratio 0.05 (assumed)")
+    axv.legend(fontsize=8)
 fig.tight_layout()
 fig.savefig(out / "seed003.png", dpi=150)
 print(f"wrote {out / 'seed003.png'}")
