@@ -12,9 +12,10 @@ venv=target/python-venv
 if [ ! -x "$venv/bin/python" ]; then
   python3 -m venv "$venv"
 fi
-# matplotlib first: the examples' plot scripts draw their figures
+# matplotlib and pyarrow first: the examples' plot scripts draw their figures
 # headless in `cargo test` (crates/rolldyn-cli/tests/example_tables.rs).
-"$venv/bin/python" -m pip install --quiet --disable-pip-version-check "maturin>=1.16,<2" "matplotlib>=3.5"
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check "maturin>=1.16,<2" \
+  "matplotlib>=3.5" "pyarrow>=15"
 
 ROLLDYN_PYTHON="$PWD/$venv/bin/python" cargo test --workspace
 

@@ -208,3 +208,135 @@ fn the_comparison_fails_on_a_drift() {
     assert!(!same_token("NaN", "0.43"));
     assert!(same_token("μ", "μ"));
 }
+
+/// The other examples' figures: each README's commands, shortened, then
+/// its plot script, headless (with a Python that has matplotlib and
+/// pyarrow, as for the tables above).
+#[test]
+fn every_other_example_figure_draws_from_its_commands() {
+    let Some(python) = python() else {
+        return;
+    };
+    let case = |name: &str| {
+        examples_dir()
+            .join(name)
+            .join("case.toml")
+            .to_string_lossy()
+            .into_owned()
+    };
+    // (example, the commands with {out} for its output directory, the
+    // figure plot.py writes there).
+    let examples: [(&str, Vec<Vec<String>>, &str); 5] = [
+        (
+            "cwru6205",
+            vec![
+                vec![
+                    "run".into(),
+                    case("cwru6205"),
+                    "-o".into(),
+                    "{out}".into(),
+                    "--duration".into(),
+                    "0.05 s".into(),
+                ],
+                vec![
+                    "spectrum".into(),
+                    "{out}".into(),
+                    "--kind".into(),
+                    "envelope".into(),
+                ],
+            ],
+            "envelope_bpfo.png",
+        ),
+        (
+            "run_down",
+            vec![
+                vec![
+                    "run".into(),
+                    case("run_down"),
+                    "-o".into(),
+                    "{out}/run_down".into(),
+                    "--duration".into(),
+                    "5 ms".into(),
+                ],
+                vec![
+                    "run".into(),
+                    "--speed".into(),
+                    "9500 rpm".into(),
+                    "--duration".into(),
+                    "2 ms".into(),
+                    "-o".into(),
+                    "{out}/steady_9500".into(),
+                ],
+            ],
+            "run_down.png",
+        ),
+        (
+            "seed000",
+            vec![vec![
+                "run".into(),
+                case("seed000"),
+                "--sweep".into(),
+                "radial=-25N,-50N".into(),
+                "--duration".into(),
+                "5 ms".into(),
+                "-o".into(),
+                "{out}".into(),
+            ]],
+            "fig6_cage_speed.png",
+        ),
+        (
+            "spindle_pair",
+            vec![vec![
+                "quasistatic".into(),
+                case("spindle_pair"),
+                "--sweep".into(),
+                "speed=0rpm..20000rpm/3".into(),
+                "-o".into(),
+                "{out}".into(),
+            ]],
+            "spindle_pair.png",
+        ),
+        (
+            "warmup60s",
+            vec![vec![
+                "run".into(),
+                case("warmup60s"),
+                "-o".into(),
+                "{out}".into(),
+                "--duration".into(),
+                "2 ms".into(),
+            ]],
+            "warmup.png",
+        ),
+    ];
+    for (name, commands, figure) in examples {
+        let out = temp_dir(&format!("example-figure-{name}"));
+        let o = out.to_string_lossy().into_owned();
+        for command in commands {
+            let args: Vec<String> = command.iter().map(|a| a.replace("{out}", &o)).collect();
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            let r = common::rolldyn(&args, None);
+            assert!(
+                r.status.success(),
+                "{name}: {args:?}: {}",
+                common::stderr(&r)
+            );
+        }
+        let r = Command::new(&python)
+            .arg(examples_dir().join(name).join("plot.py"))
+            .arg(&out)
+            .env("MPLBACKEND", "Agg")
+            .output()
+            .unwrap();
+        assert!(
+            r.status.success(),
+            "{name}/plot.py: {}",
+            String::from_utf8_lossy(&r.stderr)
+        );
+        assert!(
+            out.join(figure).is_file(),
+            "{name}/plot.py wrote no {figure}"
+        );
+        std::fs::remove_dir_all(&out).ok();
+    }
+}
