@@ -353,3 +353,62 @@ fn dynamic_sweep_input_errors() {
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(!dir.exists());
 }
+
+/// The report fits a 1200 px page: rendered in headless Chromium (when
+/// the machine has one; else skipped with a note), the page is no wider
+/// than the window (long values wrap: the CWRU run's envelope lines, the
+/// case's assumptions). The page holds no script; the test adds one that
+/// writes the page's scroll width into its title.
+#[test]
+fn the_report_fits_the_page_in_a_browser() {
+    let Some(browser) = ["chromium", "chromium-browser", "google-chrome"]
+        .into_iter()
+        .find(|b| {
+            std::process::Command::new(b)
+                .arg("--version")
+                .output()
+                .is_ok_and(|o| o.status.success())
+        })
+    else {
+        eprintln!("no Chromium: the report is not rendered");
+        return;
+    };
+    let dir = temp_dir("report-width");
+    let case = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/cwru6205/case.toml"
+    );
+    let d = dir.to_str().unwrap();
+    let o = rolldyn(
+        &["run", case, "--duration", "0.05 s", "-o", d, "--report"],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    let probe = html.replace(
+        "</body>",
+        "<script>document.title = String(document.documentElement.scrollWidth)</script></body>",
+    );
+    let page = dir.join("width.html");
+    std::fs::write(&page, probe).unwrap();
+    let o = std::process::Command::new(browser)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--window-size=1200,900",
+            "--virtual-time-budget=2000",
+            "--dump-dom",
+        ])
+        .arg(format!("file://{}", page.display()))
+        .output()
+        .unwrap();
+    let dom = String::from_utf8_lossy(&o.stdout);
+    let width: f64 = dom
+        .split_once("<title>")
+        .and_then(|(_, t)| t.split_once("</title>"))
+        .and_then(|(w, _)| w.trim().parse().ok())
+        .unwrap_or_else(|| panic!("no width in the page: {:.300}", dom));
+    assert!(width <= 1200.0, "the report is {width} px wide");
+    std::fs::remove_dir_all(&dir).ok();
+}
