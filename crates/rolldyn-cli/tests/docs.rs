@@ -146,3 +146,97 @@ fn the_path_reader_reads_paths() {
         vec!["examples/x/run"]
     );
 }
+
+/// The command blocks a document marks runnable (a fence opened with
+/// "```sh runnable"): (document, commands, continuation lines joined,
+/// comments and blank lines left out).
+fn runnable_blocks() -> Vec<(PathBuf, Vec<String>)> {
+    let mut out = Vec::new();
+    for doc in documents() {
+        let text = std::fs::read_to_string(&doc).unwrap();
+        let mut lines = text.lines();
+        while let Some(line) = lines.next() {
+            if line.trim() != "```sh runnable" {
+                continue;
+            }
+            let mut commands = Vec::new();
+            let mut current = String::new();
+            for l in lines.by_ref() {
+                if l.trim_start().starts_with("```") {
+                    break;
+                }
+                let l = l.trim();
+                if l.starts_with('#') || l.is_empty() {
+                    continue;
+                }
+                match l.strip_suffix('\\') {
+                    Some(head) => current.push_str(head),
+                    None => {
+                        current.push_str(l);
+                        commands.push(std::mem::take(&mut current));
+                    }
+                }
+            }
+            out.push((doc.clone(), commands));
+        }
+    }
+    out
+}
+
+/// Copies `from` into `to`, leaving out run outputs (`out`, `sweep`).
+fn copy_tree(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let entry = entry.unwrap();
+        let name = entry.file_name();
+        let path = entry.path();
+        if path.is_dir() {
+            if name != "out" && name != "sweep" {
+                copy_tree(&path, &to.join(&name));
+            }
+        } else {
+            std::fs::copy(&path, to.join(&name)).unwrap();
+        }
+    }
+}
+
+/// Every block a document marks runnable runs as written, each in a
+/// fresh directory holding a copy of `examples/`, with `rolldyn` (and
+/// `cargo run --release --`) the built command-line program: exit 0.
+#[test]
+fn every_runnable_block_runs() {
+    let blocks = runnable_blocks();
+    assert!(
+        blocks.iter().any(|(doc, _)| doc.ends_with("README.md")),
+        "the README's block is marked runnable"
+    );
+    let binary = PathBuf::from(env!("CARGO_BIN_EXE_rolldyn"));
+    let bin_dir = binary.parent().unwrap().to_path_buf();
+    let path = format!(
+        "{}:{}",
+        bin_dir.display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    for (k, (doc, commands)) in blocks.iter().enumerate() {
+        let dir =
+            std::env::temp_dir().join(format!("rolldyn-doc-block-{}-{k}", std::process::id()));
+        std::fs::remove_dir_all(&dir).ok();
+        copy_tree(&root().join("examples"), &dir.join("examples"));
+        for command in commands {
+            let command = command.replace("cargo run --release --", "rolldyn");
+            let o = std::process::Command::new("bash")
+                .args(["-euo", "pipefail", "-c", &command])
+                .current_dir(&dir)
+                .env("PATH", &path)
+                .output()
+                .unwrap();
+            assert!(
+                o.status.success(),
+                "{}: `{command}` failed: {}",
+                doc.display(),
+                String::from_utf8_lossy(&o.stderr)
+            );
+        }
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}
