@@ -236,8 +236,13 @@ pub fn parse_quantity<D: Dimension>(text: &str) -> Result<f64, String> {
         .map(|(i, _)| i)
         .unwrap_or(t.len());
     let (number, unit) = (t[..split].replace('_', ""), t[split..].trim());
+    let article = if D::NAME.starts_with(['a', 'e', 'i', 'o', 'u']) {
+        "an"
+    } else {
+        "a"
+    };
     let expected = format!(
-        "a {} such as \"{}\" (units: {})",
+        "{article} {} such as \"{}\" (units: {})",
         D::NAME,
         D::EXAMPLE,
         unit_list(D::UNITS)

@@ -488,6 +488,9 @@ fn run_record(args: RunArgs) -> Result<(checkpoint::RunRecord, String, Option<u6
         }
         None => {
             if let Some(d) = duration {
+                // A time with its unit, refused as every quantity option
+                // refuses a bare number.
+                Quantity::<Time>::parse(&d).map_err(|e| bad_arg("--duration", &d, e))?;
                 case.overrides.set.push(format!("solver.duration={d}"));
             }
             case.overrides.overrides()?;

@@ -175,6 +175,8 @@ pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
 /// The spectrum `rolldyn spectrum --json` prints; writes its CSV and JSON
 /// files into the run directory.
 pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
+    // The options' values first: refused before the record is read.
+    let band = args.band.as_deref().map(parse_band).transpose()?;
     let dir = Path::new(&args.dir);
     // Only the time and the channel analysed: a long record is not
     // loaded whole.
@@ -282,10 +284,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
                 )
             }
             "envelope" => {
-                let band = match &args.band {
-                    None => (0.1 * sample_rate, 0.4 * sample_rate),
-                    Some(text) => parse_band(text)?,
-                };
+                let band = band.unwrap_or((0.1 * sample_rate, 0.4 * sample_rate));
                 (
                     envelope_spectrum(record, sample_rate, band, window).map_err(spectrum_error)?,
                     unit.clone(),
