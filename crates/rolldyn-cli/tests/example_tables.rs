@@ -104,11 +104,21 @@ fn python() -> Option<String> {
     }
 }
 
+/// An example's table check: (example, arguments before and after the
+/// output directory, expected table, the output a prefix of it, the
+/// figure plot.py writes).
+type TableCase = (
+    &'static str,
+    &'static [&'static str],
+    &'static [&'static str],
+    &'static str,
+    bool,
+    &'static str,
+);
+
 #[test]
 fn example_tables_match_and_their_figures_draw() {
-    // (example, arguments before/after the output directory, expected
-    // table, the output a prefix of it, the figure plot.py writes).
-    let cases: [(&str, &[&str], &[&str], &str, bool, &str); 4] = [
+    let cases: [TableCase; 4] = [
         (
             "seed004",
             &[],

@@ -384,7 +384,7 @@ fn mutated_case(rng: &mut Rng, known: &[(String, String)]) -> String {
         i if i < PRESETS.len() => {
             let mut text = PRESETS[i].text.to_string();
             if rng.below(3) == 0 {
-                let section: &str = *rng.pick::<&str>(SECTIONS);
+                let section: &str = rng.pick::<&str>(SECTIONS);
                 text.push_str(section);
             }
             text
