@@ -156,7 +156,7 @@ impl ShaftSystem {
     }
 
     /// The axial load \[N\] of bearing 0 (the one whose load is the
-    /// preload) when each of its balls is compressed by [`LEAST_APPROACH`]
+    /// preload) when each of its balls is compressed by 5 nm (`LEAST_APPROACH`)
     /// in series at its free contact angle α₀: Z sin α₀ K δ^{3/2} with
     /// K = (K_i^{-2/3} + K_o^{-2/3})^{-3/2} (Hertz; Harris & Kotzalas,
     /// *Essential Concepts*, §7.2). Zero without a free contact angle.
