@@ -291,7 +291,7 @@ impl Recorder<BearingModel> for Output<'_> {
         self.channels
             .record(model, t, y, &mut self.row, &mut self.loads);
         if self.limit.is_none() {
-            self.limit = speed_limit(self.speed_column.map_or(0.0, |k| self.row[k]));
+            self.limit = speed_limit(self.speed_column.map_or(0.0, |k| self.row[k]), t);
         }
         self.channels.write_error.is_none()
     }

@@ -28,12 +28,13 @@ pub const MAX_CONTACT_PRESSURE: f64 = 10e9;
 /// (`rolldyn_case::case::MAX_SPEED`).
 pub const MAX_SPEED_RPM: f64 = rolldyn_case::case::MAX_SPEED * 60.0 / std::f64::consts::TAU;
 
-/// The limit a driven ring's recorded speed `speed_rpm` has passed, if
-/// it has: the ±10⁶ rpm a case accepts holds during the run too.
-pub fn speed_limit(speed_rpm: f64) -> Option<String> {
+/// The limit a driven ring's speed `speed_rpm`, recorded at time `t`
+/// \[s\], has passed, if it has: the ±10⁶ rpm a case accepts holds
+/// during the run too.
+pub fn speed_limit(speed_rpm: f64, t: f64) -> Option<String> {
     (speed_rpm.abs() > MAX_SPEED_RPM || speed_rpm.is_nan()).then(|| {
         format!(
-            "the inner ring turns at {speed_rpm:.4e} rpm, beyond the ±{MAX_SPEED_RPM:.0e} rpm a case may give (a drive torque too large for the rotor's inertia, or a run-away)"
+            "at t = {t:.6e} s the inner ring turns at {speed_rpm:.4e} rpm, beyond the ±{MAX_SPEED_RPM:.0e} rpm a case may give (a drive torque too large for the rotor's inertia, or a run-away)"
         )
     })
 }

@@ -152,7 +152,11 @@ fn a_run_away_drive_stops_at_the_speed_limit() {
         None,
     );
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
-    assert!(stderr(&o).contains("beyond the ±1e6 rpm"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("beyond the ±1e6 rpm") && stderr(&o).contains("at t = "),
+        "{}",
+        stderr(&o)
+    );
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     assert_eq!(summary["status"], "failed");
@@ -182,7 +186,11 @@ fn a_run_away_set_stops_at_the_speed_limit() {
         Some(&case),
     );
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
-    assert!(stderr(&o).contains("beyond the ±1e6 rpm"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("beyond the ±1e6 rpm") && stderr(&o).contains("at t = "),
+        "{}",
+        stderr(&o)
+    );
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     assert_eq!(summary["status"], "failed");
