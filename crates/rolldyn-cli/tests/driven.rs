@@ -133,13 +133,20 @@ fn a_drive_needs_its_inertia_and_a_starting_speed() {
 
 /// A drive torque far too large for its rotor runs the ring away: the run
 /// stops once the speed passes the ±10⁶ rpm a case may give, ends
-/// `failed` with the reason (exit 3), and keeps what it computed.
+/// `failed` with the reason and the time (exit 3), and keeps what it
+/// computed; for one bearing (the default case) as for a set's shaft (a
+/// back-to-back pair of it).
 #[test]
 fn a_run_away_drive_stops_at_the_speed_limit() {
-    let dir = temp_dir("run-away");
-    let o = rolldyn(
-        &[
-            "run",
+    let pair = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
+    for (tag, case) in [("run-away", None), ("run-away-set", Some(pair.as_str()))] {
+        let dir = temp_dir(tag);
+        let d = dir.to_str().unwrap();
+        let mut args = vec!["run"];
+        if case.is_some() {
+            args.push("-");
+        }
+        args.extend([
             "--set",
             "operating.drive_torque=1e5 N.m",
             "--set",
@@ -147,52 +154,23 @@ fn a_run_away_drive_stops_at_the_speed_limit() {
             "--duration",
             "1 ms",
             "-o",
-            dir.to_str().unwrap(),
-        ],
-        None,
-    );
-    assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains("beyond the ±1e6 rpm") && stderr(&o).contains("at t = "),
-        "{}",
-        stderr(&o)
-    );
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
-    assert_eq!(summary["status"], "failed");
-    assert!(summary["simulated_time_s"].as_f64().unwrap() < 1e-3);
-    std::fs::remove_dir_all(&dir).ok();
-}
-
-/// The same limit holds for a set's shaft: a back-to-back pair of the
-/// default case driven away stops with the same reason and exit 3.
-#[test]
-fn a_run_away_set_stops_at_the_speed_limit() {
-    let dir = temp_dir("run-away-set");
-    let case = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--set",
-            "operating.drive_torque=1e5 N.m",
-            "--set",
-            "operating.rotor_inertia=1e-6 kg.m^2",
-            "--duration",
-            "1 ms",
-            "-o",
-            dir.to_str().unwrap(),
-        ],
-        Some(&case),
-    );
-    assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains("beyond the ±1e6 rpm") && stderr(&o).contains("at t = "),
-        "{}",
-        stderr(&o)
-    );
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
-    assert_eq!(summary["status"], "failed");
-    std::fs::remove_dir_all(&dir).ok();
+            d,
+        ]);
+        let o = rolldyn(&args, case);
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(3), "{tag}: {e}");
+        assert!(
+            e.contains("beyond the ±1e6 rpm") && e.contains("at t = "),
+            "{tag}: {e}"
+        );
+        let summary: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
+                .unwrap();
+        assert_eq!(summary["status"], "failed", "{tag}");
+        assert!(
+            summary["simulated_time_s"].as_f64().unwrap() < 1e-3,
+            "{tag}"
+        );
+        std::fs::remove_dir_all(&dir).ok();
+    }
 }

@@ -96,27 +96,12 @@ const REGRESSIONS: &[(&str, &[&str], i32)] = &[
     ),
 ];
 
-/// Case files beside the presets: a matched set, a shaft on two
-/// bearings, a case with a housing sensor and a spall.
+/// Case files beside the presets: a matched set, a case with a housing
+/// sensor and a spall (and the tests' shaft on two bearings,
+/// `common::SHAFT`).
 const EXAMPLES: &[&str] = &[
     include_str!("../../../examples/spindle_pair/case.toml"),
     include_str!("../../../examples/cwru6205/case.toml"),
-    r#"
-[operating]
-speed = "3000 rpm"
-[shaft]
-[[shaft.bearings]]
-preset = "6206"
-position = "-60 mm"
-[[shaft.bearings]]
-preset = "6206"
-position = "60 mm"
-orientation = "reversed"
-[[shaft.loads]]
-position = "20 mm"
-force_z = "-4 kN"
-force_x = "300 N"
-"#,
 ];
 
 /// Sections added to a preset's text (one of them, a third of the time).
@@ -380,7 +365,7 @@ fn scaled(value: &str, factor: f64) -> Option<String> {
 /// A preset's text with 0–3 mutations (mostly a quantity scaled, which
 /// keeps the file well-formed so that the solvers see absurd values).
 fn mutated_case(rng: &mut Rng, known: &[(String, String)]) -> String {
-    let text = match rng.below(PRESETS.len() + EXAMPLES.len()) {
+    let text = match rng.below(PRESETS.len() + EXAMPLES.len() + 1) {
         i if i < PRESETS.len() => {
             let mut text = PRESETS[i].text.to_string();
             if rng.below(3) == 0 {
@@ -389,7 +374,8 @@ fn mutated_case(rng: &mut Rng, known: &[(String, String)]) -> String {
             }
             text
         }
-        i => EXAMPLES[i - PRESETS.len()].to_string(),
+        i if i < PRESETS.len() + EXAMPLES.len() => EXAMPLES[i - PRESETS.len()].to_string(),
+        _ => common::SHAFT.replace("ORIENTATION", "reversed"),
     };
     let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
     for _ in 0..rng.below(4) {

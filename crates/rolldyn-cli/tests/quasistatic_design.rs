@@ -204,45 +204,6 @@ fn exit_codes() {
     assert!(stderr(&o).contains("no equilibrium"), "{}", stderr(&o));
 }
 
-/// Limits before work: a sweep grid beyond 10⁶ points and a run
-/// whose time series cannot fit are refused, naming the setting; `--force`
-/// lifts the run's check.
-#[test]
-fn limits_before_work() {
-    let o = rolldyn(
-        &[
-            "quasistatic",
-            "--sweep",
-            "speed=0rpm..20000rpm/100000",
-            "--sweep",
-            "axial=10N..1kN/100000",
-        ],
-        None,
-    );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("--sweep") && stderr(&o).contains("--force"),
-        "{}",
-        stderr(&o)
-    );
-    let o = rolldyn(
-        &[
-            "run",
-            "--duration",
-            "1000 s",
-            "-o",
-            "/nonexistent-never-made",
-        ],
-        None,
-    );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("output.sample_rate") && stderr(&o).contains("GiB"),
-        "{}",
-        stderr(&o)
-    );
-}
-
 /// Undefined quantities: the orders at 0 rpm are null in JSON
 /// and "—" in text.
 #[test]

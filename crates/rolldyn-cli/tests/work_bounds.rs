@@ -62,7 +62,7 @@ fn unbounded_work_is_refused_before_it_starts() {
                 "axial=10N..1kN/100000",
             ],
             None,
-            "above the limit of 1e6",
+            "above the limit of 1e6 (time and memory); use fewer points or pass --force",
         ),
         // thermal --transient: at most 10⁶ steps.
         (
