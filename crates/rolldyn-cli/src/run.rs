@@ -24,6 +24,7 @@ use std::path::Path;
 
 use crate::run_options::{
     DEFAULT_SAMPLE_RATE, MAX_CONTACT_PRESSURE, RunOptions, check_limits, speed_limit,
+    temperature_limit,
 };
 
 /// A warning for a stress law integrated over a strip grid with an odd
@@ -213,6 +214,16 @@ pub(crate) fn run_once(
             .names()
             .iter()
             .position(|n| n == "inner_ring_speed_rpm"),
+        temperature_columns: channels
+            .series
+            .names()
+            .iter()
+            .enumerate()
+            .filter_map(|(k, n)| {
+                let node = n.strip_prefix("temperature_")?.strip_suffix("_c")?;
+                Some((node.replace('_', " "), k))
+            })
+            .collect(),
         limit: None,
         channels,
     };
@@ -280,6 +291,8 @@ struct Output<'a> {
     loads: Vec<ContactSample>,
     /// Column of the inner ring's speed in a row.
     speed_column: Option<usize>,
+    /// Columns of a coupled run's part temperatures (`temperature_<node>_c`).
+    temperature_columns: Vec<(String, usize)>,
     /// The limit the state passed, if it did.
     limit: Option<String>,
 }
@@ -291,7 +304,15 @@ impl Recorder<BearingModel> for Output<'_> {
         self.channels
             .record(model, t, y, &mut self.row, &mut self.loads);
         if self.limit.is_none() {
-            self.limit = speed_limit(self.speed_column.map_or(0.0, |k| self.row[k]), t);
+            self.limit =
+                speed_limit(self.speed_column.map_or(0.0, |k| self.row[k])).or_else(|| {
+                    let row = &self.row;
+                    temperature_limit(
+                        self.temperature_columns
+                            .iter()
+                            .map(|(node, k)| (node.as_str(), row[*k])),
+                    )
+                });
         }
         self.channels.write_error.is_none()
     }

@@ -28,13 +28,36 @@ pub const MAX_CONTACT_PRESSURE: f64 = 10e9;
 /// (`rolldyn_case::case::MAX_SPEED`).
 pub const MAX_SPEED_RPM: f64 = rolldyn_case::case::MAX_SPEED * 60.0 / std::f64::consts::TAU;
 
-/// The limit a driven ring's speed `speed_rpm`, recorded at time `t`
-/// \[s\], has passed, if it has: the ±10⁶ rpm a case accepts holds
-/// during the run too.
-pub fn speed_limit(speed_rpm: f64, t: f64) -> Option<String> {
+/// The limit a driven ring's speed `speed_rpm` has passed, if it has:
+/// the ±10⁶ rpm a case accepts holds during the run too (the run's end
+/// names the time).
+pub fn speed_limit(speed_rpm: f64) -> Option<String> {
     (speed_rpm.abs() > MAX_SPEED_RPM || speed_rpm.is_nan()).then(|| {
         format!(
-            "at t = {t:.6e} s the inner ring turns at {speed_rpm:.4e} rpm, beyond the ±{MAX_SPEED_RPM:.0e} rpm a case may give (a drive torque too large for the rotor's inertia, or a run-away)"
+            "the inner ring turns at {speed_rpm:.4e} rpm, beyond the ±{MAX_SPEED_RPM:.0e} rpm a case may give (a drive torque too large for the rotor's inertia, or a run-away)"
+        )
+    })
+}
+
+/// The hottest a part of a thermally coupled run may become \[°C\]: the
+/// highest of the common bearing steels' maximum operating temperatures
+/// (AISI M50 315 °C; AISI 52100 177 °C; Harris & Kotzalas 2006,
+/// *Essential Concepts*, bearing steels). Beyond it no steel bearing
+/// keeps its hardness and the oil's viscosity law is far outside its
+/// data: the run has run away (or starts from a case no bearing runs at).
+pub const MAX_RUN_TEMPERATURE_C: f64 = 315.0;
+
+/// The limit the hottest of a coupled run's part temperatures
+/// `temperatures_c` (node name, °C) has passed, if it has.
+pub fn temperature_limit<'a>(
+    temperatures_c: impl Iterator<Item = (&'a str, f64)>,
+) -> Option<String> {
+    let (node, hottest) = temperatures_c
+        .map(|(node, c)| (node, if c.is_nan() { f64::INFINITY } else { c }))
+        .max_by(|a, b| a.1.total_cmp(&b.1))?;
+    (hottest > MAX_RUN_TEMPERATURE_C).then(|| {
+        format!(
+            "the {node} is at {hottest:.1} °C, beyond the {MAX_RUN_TEMPERATURE_C:.0} °C no steel bearing runs at (M50's maximum operating temperature): a thermal run-away, or a case hotter than any bearing runs"
         )
     })
 }

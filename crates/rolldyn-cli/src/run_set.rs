@@ -322,7 +322,7 @@ impl Recorder<ShaftDynamics> for Recording<'_> {
             self.write_error = self.writer.push(combined).err();
         }
         if self.limit.is_none() {
-            self.limit = speed_limit(self.speed_column.map_or(0.0, |k| self.rows[0][k]), t);
+            self.limit = speed_limit(self.speed_column.map_or(0.0, |k| self.rows[0][k]));
         }
         self.write_error.is_none()
     }

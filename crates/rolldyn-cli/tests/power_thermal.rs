@@ -327,6 +327,39 @@ fn quasistatic_sweep_has_power_columns() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A coupled run hotter than any steel bearing runs (315 °C, M50's
+/// maximum operating temperature) stops (`failed`, the part and its
+/// temperature named, exit 3) and keeps what it computed.
+#[test]
+fn a_coupled_run_stops_beyond_the_temperature_limit() {
+    let case = preset("acbb_30x62");
+    let dir = temp_dir("thermal-limit");
+    let d = dir.to_string_lossy().into_owned();
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--duration",
+            "1 ms",
+            "-o",
+            &d,
+            "--set",
+            "thermal.run_coupling=true",
+            "--set",
+            "thermal.run_start=\"ambient\"",
+            "--set",
+            "thermal.ambient_temperature=\"350 degC\"",
+        ],
+        Some(&case),
+    );
+    assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
+    assert!(stderr(&o).contains("beyond the 315 °C"), "{}", stderr(&o));
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["status"], "failed");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// `thermal.run_coupling`: the run starts at the quasi-static thermal
 /// steady state, updates every interval, records temperatures and the EHL
 /// viscosity, and reports the coupling in summary.json.
