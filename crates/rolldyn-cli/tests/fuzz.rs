@@ -27,8 +27,8 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// Cases of the CI run (about 150 s on 2 cores, debug build).
-const CI_CASES: u64 = 2500;
+/// Cases of the CI run (about 60 s on 2 cores, debug build).
+const CI_CASES: u64 = 2000;
 /// Longest a command may take before it counts as a hang; a `run` is then
 /// interrupted instead (SIGINT) and counts as slow, not hung, if it stops
 /// within [`GRACE`] with a summary that shows progress: a stiff
