@@ -157,15 +157,6 @@ pub fn run(
         )
         .map_err(bad)?;
     }
-    // Channels of a bearing's row the shaft's motion replaces: the inner
-    // ring's accelerations and the mechanical energy.
-    let patch = [
-        "inner_ring_acceleration_x_m_s2",
-        "inner_ring_acceleration_y_m_s2",
-        "inner_ring_acceleration_z_m_s2",
-        "mechanical_energy_j",
-    ]
-    .map(|name| index_of(&channels[0].series, name));
     let mut solver = settings
         .build(&system, &y0)
         .map_err(|e| bad(e.to_string()))?;
@@ -209,31 +200,13 @@ pub fn run(
             .map_err(|e| bad(e.to_string()))?;
         (Start::default(), writer)
     };
-    // Buffers for the largest bearing (a shaft's may differ in balls and
-    // states).
-    let layouts: Vec<_> = (0..count).map(|i| system.bearing(i).layout()).collect();
-    let recording = Recording {
-        own: vec![0.0; layouts.iter().map(|l| l.len()).max().unwrap_or(0)],
-        rows: vec![Vec::with_capacity(channels[0].series.width()); count],
-        contacts: vec![
-            ContactSample::default();
-            layouts.iter().map(|l| l.balls).max().unwrap_or(0)
-        ],
-        combined: Vec::with_capacity(series.width()),
-        loads: vec![[0.0; 5]; count],
-        speed_column: channels[0]
-            .series
-            .names()
-            .iter()
-            .position(|n| n == "inner_ring_speed_rpm"),
-        limit: None,
-        layouts,
-        patch,
+    let recording = Recording::new(
+        &system,
         channels,
+        series.width(),
         axial_sums,
         writer,
-        write_error: None,
-        context: Context {
+        Context {
             kind,
             mounting_preload,
             mounted: &mounted,
@@ -245,7 +218,7 @@ pub fn run(
             dir,
             record_hash,
         },
-    };
+    );
     drive(
         &mut system,
         &mut solver,
@@ -279,6 +252,53 @@ struct Recording<'a> {
     /// The limit the state passed, if it did.
     limit: Option<String>,
     context: Context<'a>,
+}
+
+impl<'a> Recording<'a> {
+    /// The recording of `system`'s run: its bearings' `channels`, the
+    /// combined row's `width`, the axial-load sums (a resumed run's),
+    /// the series `writer` and the summary's `context`; buffers sized for
+    /// the largest bearing (a shaft's may differ in balls and states).
+    fn new(
+        system: &ShaftDynamics,
+        channels: Vec<Channels>,
+        width: usize,
+        axial_sums: Vec<f64>,
+        writer: SeriesWriter,
+        context: Context<'a>,
+    ) -> Self {
+        let count = system.bearing_count();
+        let layouts: Vec<_> = (0..count).map(|i| system.bearing(i).layout()).collect();
+        let bearing_series = &channels[0].series;
+        // Channels of a bearing's row the shaft's motion replaces: the
+        // inner ring's accelerations and the mechanical energy.
+        let patch = [
+            "inner_ring_acceleration_x_m_s2",
+            "inner_ring_acceleration_y_m_s2",
+            "inner_ring_acceleration_z_m_s2",
+            "mechanical_energy_j",
+        ]
+        .map(|name| index_of(bearing_series, name));
+        Self {
+            own: vec![0.0; layouts.iter().map(|l| l.len()).max().unwrap_or(0)],
+            rows: vec![Vec::with_capacity(bearing_series.width()); count],
+            contacts: vec![
+                ContactSample::default();
+                layouts.iter().map(|l| l.balls).max().unwrap_or(0)
+            ],
+            combined: Vec::with_capacity(width),
+            loads: vec![[0.0; 5]; count],
+            speed_column: index_of(bearing_series, "inner_ring_speed_rpm"),
+            limit: None,
+            layouts,
+            patch,
+            channels,
+            axial_sums,
+            writer,
+            write_error: None,
+            context,
+        }
+    }
 }
 
 impl Recorder<ShaftDynamics> for Recording<'_> {

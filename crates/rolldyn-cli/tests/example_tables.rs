@@ -186,25 +186,30 @@ fn example_tables_match_and_their_figures_draw() {
         let expected = std::fs::read_to_string(examples_dir().join(name).join(expected)).unwrap();
         compare(name, &got, &expected, prefix);
         if let Some(python) = &python {
-            let script = examples_dir().join(name).join("plot.py");
-            let o = Command::new(python)
-                .arg(&script)
-                .arg(&out)
-                .env("MPLBACKEND", "Agg")
-                .output()
-                .unwrap();
-            assert!(
-                o.status.success(),
-                "{name}/plot.py: {}",
-                String::from_utf8_lossy(&o.stderr)
-            );
-            assert!(
-                out.join(figure).is_file(),
-                "{name}/plot.py wrote no {figure}"
-            );
+            draw(python, name, &out, figure);
         }
         std::fs::remove_dir_all(&out).ok();
     }
+}
+
+/// Runs example `name`'s plot.py on `out`, headless, with `python`; it
+/// must write `figure` there.
+fn draw(python: &str, name: &str, out: &Path, figure: &str) {
+    let o = Command::new(python)
+        .arg(examples_dir().join(name).join("plot.py"))
+        .arg(out)
+        .env("MPLBACKEND", "Agg")
+        .output()
+        .unwrap();
+    assert!(
+        o.status.success(),
+        "{name}/plot.py: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(
+        out.join(figure).is_file(),
+        "{name}/plot.py wrote no {figure}"
+    );
 }
 
 #[test]
@@ -227,103 +232,81 @@ fn every_other_example_figure_draws_from_its_commands() {
     let Some(python) = python() else {
         return;
     };
-    let case = |name: &str| {
-        examples_dir()
-            .join(name)
-            .join("case.toml")
-            .to_string_lossy()
-            .into_owned()
-    };
-    // (example, the commands with {out} for its output directory, the
-    // figure plot.py writes there).
-    let examples: [(&str, Vec<Vec<String>>, &str); 5] = [
+    // (example, the commands with {case} for its case file and {out} for
+    // its output directory, the figure plot.py writes there).
+    let examples: [(&str, &[&[&str]], &str); 5] = [
         (
             "cwru6205",
-            vec![
-                vec![
-                    "run".into(),
-                    case("cwru6205"),
-                    "-o".into(),
-                    "{out}".into(),
-                    "--duration".into(),
-                    "0.05 s".into(),
-                ],
-                vec![
-                    "spectrum".into(),
-                    "{out}".into(),
-                    "--kind".into(),
-                    "envelope".into(),
-                ],
+            &[
+                &["run", "{case}", "-o", "{out}", "--duration", "0.05 s"],
+                &["spectrum", "{out}", "--kind", "envelope"],
             ],
             "envelope_bpfo.png",
         ),
         (
             "run_down",
-            vec![
-                vec![
-                    "run".into(),
-                    case("run_down"),
-                    "-o".into(),
-                    "{out}/run_down".into(),
-                    "--duration".into(),
-                    "5 ms".into(),
+            &[
+                &[
+                    "run",
+                    "{case}",
+                    "-o",
+                    "{out}/run_down",
+                    "--duration",
+                    "5 ms",
                 ],
-                vec![
-                    "run".into(),
-                    "--speed".into(),
-                    "9500 rpm".into(),
-                    "--duration".into(),
-                    "2 ms".into(),
-                    "-o".into(),
-                    "{out}/steady_9500".into(),
+                &[
+                    "run",
+                    "--speed",
+                    "9500 rpm",
+                    "--duration",
+                    "2 ms",
+                    "-o",
+                    "{out}/steady_9500",
                 ],
             ],
             "run_down.png",
         ),
         (
             "seed000",
-            vec![vec![
-                "run".into(),
-                case("seed000"),
-                "--sweep".into(),
-                "radial=-25N,-50N".into(),
-                "--duration".into(),
-                "5 ms".into(),
-                "-o".into(),
-                "{out}".into(),
+            &[&[
+                "run",
+                "{case}",
+                "--sweep",
+                "radial=-25N,-50N",
+                "--duration",
+                "5 ms",
+                "-o",
+                "{out}",
             ]],
             "fig6_cage_speed.png",
         ),
         (
             "spindle_pair",
-            vec![vec![
-                "quasistatic".into(),
-                case("spindle_pair"),
-                "--sweep".into(),
-                "speed=0rpm..20000rpm/3".into(),
-                "-o".into(),
-                "{out}".into(),
+            &[&[
+                "quasistatic",
+                "{case}",
+                "--sweep",
+                "speed=0rpm..20000rpm/3",
+                "-o",
+                "{out}",
             ]],
             "spindle_pair.png",
         ),
         (
             "warmup60s",
-            vec![vec![
-                "run".into(),
-                case("warmup60s"),
-                "-o".into(),
-                "{out}".into(),
-                "--duration".into(),
-                "2 ms".into(),
-            ]],
+            &[&["run", "{case}", "-o", "{out}", "--duration", "2 ms"]],
             "warmup.png",
         ),
     ];
     for (name, commands, figure) in examples {
         let out = temp_dir(&format!("example-figure-{name}"));
-        let o = out.to_string_lossy().into_owned();
+        let case = examples_dir().join(name).join("case.toml");
+        let (case, o) = (case.to_string_lossy(), out.to_string_lossy());
         for command in commands {
-            let args: Vec<String> = command.iter().map(|a| a.replace("{out}", &o)).collect();
+            let args: Vec<String> = command
+                .iter()
+                .map(|a| a.replace("{case}", &case).replace("{out}", &o))
+                .collect();
             let args: Vec<&str> = args.iter().map(String::as_str).collect();
             let r = common::rolldyn(&args, None);
             assert!(
@@ -332,21 +315,7 @@ fn every_other_example_figure_draws_from_its_commands() {
                 common::stderr(&r)
             );
         }
-        let r = Command::new(&python)
-            .arg(examples_dir().join(name).join("plot.py"))
-            .arg(&out)
-            .env("MPLBACKEND", "Agg")
-            .output()
-            .unwrap();
-        assert!(
-            r.status.success(),
-            "{name}/plot.py: {}",
-            String::from_utf8_lossy(&r.stderr)
-        );
-        assert!(
-            out.join(figure).is_file(),
-            "{name}/plot.py wrote no {figure}"
-        );
+        draw(&python, name, &out, figure);
         std::fs::remove_dir_all(&out).ok();
     }
 }

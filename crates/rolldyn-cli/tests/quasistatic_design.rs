@@ -366,3 +366,30 @@ fn least_axial_load_is_named() {
         String::from_utf8_lossy(&o.stderr)
     );
 }
+
+/// Near rest the balls off the load zone are held only by their
+/// centrifugal force (~1e-7 N at 1 rpm): the shaft's solve still finds
+/// the statics (the reactions of 100 rpm, where speed effects are
+/// 1e-6 of the load) on the same branch, with every bearing loaded.
+#[test]
+fn a_shaft_near_rest_keeps_its_statics() {
+    let case = common::SHAFT.replace("ORIENTATION", "reversed");
+    let radial = |speed: &str| -> Vec<f64> {
+        let v = json(
+            &["quasistatic", "-", "--json", "--speed", speed],
+            Some(&case),
+        );
+        v["arrangement"]["bearings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|b| b["radial_load_n"].as_f64().unwrap())
+            .collect()
+    };
+    let reference = radial("100 rpm");
+    for speed in ["1 rpm", "30 rpm"] {
+        for (r, r0) in radial(speed).iter().zip(&reference) {
+            assert!((r / r0 - 1.0).abs() < 1e-4, "{speed}: {r} vs {r0}");
+        }
+    }
+}
