@@ -297,6 +297,30 @@ fn thermal_command_balances_heat_and_warms_up() {
     }
 }
 
+/// The default case's steady state: the heat falls steeply with the oil's
+/// temperature (Walther), so plain substitution alternates between a hot
+/// and a cold pass without end; the relaxed iteration converges, and says
+/// where the heat goes. A dry bearing at 10 kN and 10 000 rpm (7218B)
+/// reaches a steady state no steel bearing runs at: said.
+#[test]
+fn thermal_steady_states_of_presets_say_what_they_assume() {
+    let v = json_of(&["thermal", "--json"], None);
+    assert_eq!(v["converged"], true, "{}", v["history_k"]);
+    let history = v["history_k"].as_array().unwrap();
+    assert!(history.len() < 30, "{} passes", history.len());
+    let outer = v["temperatures_c"]["outer_ring"].as_f64().unwrap();
+    assert!(outer > 40.0 && outer < 315.0, "{outer}");
+    let warnings = v["warnings"].as_array().unwrap();
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    assert!(warnings[0].as_str().unwrap().contains("no oil flow"));
+    let hot = json_of(&["thermal", "-", "--json"], Some(&preset("7218B")));
+    let warnings = hot["warnings"].as_array().unwrap();
+    assert!(
+        warnings[0].as_str().unwrap().contains("beyond the 315 °C"),
+        "{warnings:?}"
+    );
+}
+
 /// Quasi-static sweeps carry the local power loss.
 #[test]
 fn quasistatic_sweep_has_power_columns() {

@@ -36,9 +36,11 @@ fn thermal_preload_of_a_pair() {
             "oil_flow_m3_s",
             "operating_preload_at_speed_n",
             "reference_preload_at_speed_n",
+            "warnings",
         ]
     );
     assert_eq!(v["converged"], true);
+    assert_eq!(v["warnings"], serde_json::json!([]), "oil flow given, cool");
     assert_eq!(v["kind"], "back_to_back");
     let bearings = v["bearings"].as_array().unwrap();
     assert_eq!(bearings.len(), 2);

@@ -60,6 +60,30 @@ pub struct ThermalReport {
     pub operating_clearance_m: f64,
     pub power: PowerReport,
     pub transient: Option<Vec<TransientRow>>,
+    /// What makes the steady state doubtful (printed at the end).
+    pub warnings: Vec<String>,
+}
+
+/// The warnings of a thermal steady state: a part beyond the temperature
+/// no steel bearing runs at, and a bearing whose heat leaves only by the
+/// housing and shaft to still air (no oil flow).
+pub fn warnings<'a>(
+    temperatures_c: impl Iterator<Item = (&'a str, f64)>,
+    heat_w: f64,
+    oil_flow_m3_s: f64,
+) -> Vec<String> {
+    let mut warnings = Vec::new();
+    if let Some(limit) = crate::run_options::temperature_limit(temperatures_c) {
+        warnings.push(format!(
+            "{limit}: the steady state is outside the model (oil and steel data); cool the bearing (thermal.oil_flow, thermal.housing_convection) or lower the speed or load"
+        ));
+    }
+    if oil_flow_m3_s == 0.0 && heat_w > 0.0 {
+        warnings.push(format!(
+            "no oil flow: all {heat_w:.1} W leave through the housing and the shaft to still air; a circulating or jet-lubricated bearing sets thermal.oil_flow"
+        ));
+    }
+    warnings
 }
 
 /// The coupled steady state of a case.
@@ -172,11 +196,17 @@ fn bearing_report(args: &ThermalArgs, case: &Case) -> Result<ThermalReport, Fail
             Some(rows)
         }
     };
+    let temperatures_c = temperatures(&s.thermal.temperatures);
     Ok(ThermalReport {
+        warnings: warnings(
+            temperatures_c.iter().map(|(n, t)| (*n, *t)),
+            s.power.total(),
+            inputs.oil_flow,
+        ),
         converged: s.converged,
         iterations: s.history.len(),
         history_k: s.history.clone(),
-        temperatures_c: temperatures(&s.thermal.temperatures),
+        temperatures_c,
         heat_generated_w: s.power.total(),
         heat_to_ambient_w: s.thermal.to_ambient,
         heat_to_oil_w: s.thermal.to_oil,
@@ -224,6 +254,9 @@ impl ThermalReport {
             report.operating_clearance_m * 1e6
         );
         report.power.text(&mut out);
+        for warning in &report.warnings {
+            let _ = writeln!(out, "  warning: {warning}");
+        }
         if let Some(rows) = &report.transient {
             let _ = writeln!(out, "\nWarm-up from the reference temperature:");
             let _ = writeln!(

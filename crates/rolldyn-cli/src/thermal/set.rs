@@ -49,6 +49,8 @@ pub struct SetThermalReport {
     pub heat_generated_w: f64,
     pub oil_flow_m3_s: f64,
     pub bearings: Vec<SetBearingReport>,
+    /// What makes the steady state doubtful (super::warnings).
+    pub warnings: Vec<String>,
 }
 
 fn axial_load(state: &Option<rolldyn::quasistatic::Equilibrium>) -> f64 {
@@ -128,7 +130,16 @@ fn build(
             power: PowerReport::new(&cases[i], state, &b.power)?,
         });
     }
+    let heat_generated_w = bearings.iter().map(|b| b.heat_generated_w).sum();
+    let warnings = super::warnings(
+        bearings
+            .iter()
+            .flat_map(|b| b.temperatures_c.iter().map(|(n, t)| (*n, *t))),
+        heat_generated_w,
+        inputs.oil_flow,
+    );
     Ok(SetThermalReport {
+        warnings,
         converged: hot.converged,
         iterations: hot.history.len(),
         history_k: hot.history.clone(),
@@ -137,7 +148,7 @@ fn build(
         reference_preload_at_speed_n: preload_at_speed.map(|p| p[0]),
         operating_preload_at_speed_n: preload_at_speed.map(|p| p[1]),
         axial_strain: hot.axial_strain,
-        heat_generated_w: bearings.iter().map(|b| b.heat_generated_w).sum(),
+        heat_generated_w,
         oil_flow_m3_s: inputs.oil_flow,
         bearings,
     })
@@ -244,6 +255,9 @@ impl SetThermalReport {
         );
         row("axial load N (reference)", &|b| b.reference_axial_load_n, 1);
         row("axial load N (operating)", &|b| b.operating_axial_load_n, 1);
+        for warning in &self.warnings {
+            let _ = writeln!(out, "  warning: {warning}");
+        }
         out
     }
 }

@@ -38,7 +38,8 @@ pub enum QuasiStaticError {
     /// ([`super::equilibrium`]'s axial-displacement search found the
     /// smallest reaction at a minimum that does not reach zero).
     #[error(
-        "no equilibrium found at {speed_rpm:.0} rpm: along the solution branch this load needs an axial load of at least {least_axial_load:.4} N at this radial load and speed (F_x = {axial_load} N given; below it the balls run over towards the groove's other flank); raise the axial load, under combined load hold the tilt (--fix-tilt), or reach the point by a sweep (another branch may exist)"
+        "no equilibrium found at {speed_rpm:.0} rpm: along the solution branch this load needs an axial load of at least {} N at this radial load and speed (F_x = {axial_load} N given; below it the balls run over towards the groove's other flank); raise the axial load, under combined load hold the tilt (--fix-tilt), or reach the point by a sweep (another branch may exist)",
+        significant(*.least_axial_load)
     )]
     AxialLoadTooSmall {
         /// The axial load given \[N\].
@@ -55,4 +56,14 @@ pub enum QuasiStaticError {
         /// What is missing.
         reason: String,
     },
+}
+
+/// `value` to four significant digits, fixed-point from 0.01 up (a
+/// least axial load of 3e-5 N printed as "0.0000" reads as none).
+fn significant(value: f64) -> String {
+    if value == 0.0 || value.abs() >= 0.01 {
+        format!("{value:.4}")
+    } else {
+        format!("{value:.3e}")
+    }
 }

@@ -40,7 +40,7 @@
 
 use super::ThermalSolution;
 use super::coupled::{
-    CoupledError, CoupledOptions, CoupledProblem, Expansion, heat_pass, largest_change,
+    CoupledError, CoupledOptions, CoupledProblem, Expansion, Relaxation, heat_pass,
     node_temperature, operating_geometry, start_temperatures,
 };
 use crate::error::InvalidParameter;
@@ -234,6 +234,7 @@ pub fn set_steady(
         .map(|b| b.expansion.reference_temperature)
         .collect();
     let mut near = cold.clone();
+    let mut relaxation = Relaxation::default();
     let mut history = Vec::new();
     let mut last = None;
     for _ in 0..options.max_iterations {
@@ -241,7 +242,7 @@ pub fn set_steady(
         let (system, geometries) = mounted_at(problem.system, &references, strain, &temperatures)?;
         let eq = system.solve_near(&near, &problem.conditions, &problem.options)?;
         let mut bearings = Vec::with_capacity(count);
-        let mut change: f64 = 0.0;
+        let mut mapped = Vec::with_capacity(10 * count);
         for (index, ((heat, geometry), state)) in problem
             .bearings
             .iter()
@@ -251,11 +252,7 @@ pub fn set_steady(
         {
             let state = state.as_ref().ok_or(SetThermalError::Unloaded { index })?;
             let pass = heat_pass(heat, geometry, state, &temperatures[index])?;
-            change = change.max(largest_change(
-                &pass.thermal.temperatures,
-                &temperatures[index],
-            ));
-            temperatures[index] = pass.thermal.temperatures;
+            mapped.extend_from_slice(&pass.thermal.temperatures);
             bearings.push(SetBearingThermal {
                 operating_clearance: geometry.equivalent_diametral_clearance(),
                 axial_offset: system.bearings[index].axial_offset,
@@ -263,6 +260,15 @@ pub fn set_steady(
                 thermal: pass.thermal,
                 oil_viscosity: pass.oil_viscosity,
             });
+        }
+        let mut current: Vec<f64> = temperatures.iter().flatten().copied().collect();
+        let change = mapped
+            .iter()
+            .zip(&current)
+            .fold(0.0_f64, |m, (f, t)| m.max((f - t).abs()));
+        relaxation.update(&mut current, &mapped);
+        for (node_temperatures, relaxed) in temperatures.iter_mut().zip(current.chunks_exact(10)) {
+            node_temperatures.copy_from_slice(relaxed);
         }
         history.push(change);
         let converged = change <= options.tolerance;
