@@ -11,7 +11,7 @@ use crate::vibration::VELOCITY_BAND;
 use crate::{Failure, bad_arg, emit, json};
 use clap::Args;
 use rolldyn::signal::{
-    CharacteristicFrequencies, Fault, Spectrum, Window, amplitude_spectrum, band_rms,
+    CharacteristicFrequencies, Fault, Spectrogram, Spectrum, Window, amplitude_spectrum, band_rms,
     band_velocity_rms, envelope_spectrum, find_peaks, spectrogram, welch_psd,
 };
 use rolldyn::surface::SpallSite;
@@ -172,14 +172,20 @@ pub fn command(args: SpectrumArgs) -> Result<(), Failure> {
     emit(&report.to_text())
 }
 
-/// The spectrum `rolldyn spectrum --json` prints; writes its CSV and JSON
-/// files into the run directory.
-pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
-    // The options' values first: refused before the record is read.
-    let band = args.band.as_deref().map(parse_band).transpose()?;
-    let dir = Path::new(&args.dir);
-    // Only the time and the channel analysed: a long record is not
-    // loaded whole.
+/// The record a spectrum is taken of: the channel from the start of
+/// the window, with the run's summary.
+struct Record {
+    channel: String,
+    unit: String,
+    time: Vec<f64>,
+    values: Vec<f64>,
+    summary: RunSummary,
+}
+
+/// Reads the channel of `args` (the sensor's, else the envelope
+/// channel's) from `--from` (the summary's averaging window) on; only the
+/// time and that channel are read, so a long record is not loaded whole.
+fn read_record(args: &SpectrumArgs, dir: &Path) -> Result<Record, Failure> {
     let mut path = RunDir::new(dir).series();
     let mut channels =
         rolldyn_io::read_schema(&path).map_err(|e| Failure::BadInput(e.to_string()))?;
@@ -196,17 +202,19 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         path = slow;
         channels = rolldyn_io::read_schema(&path).map_err(|e| Failure::BadInput(e.to_string()))?;
     }
-    if channels.unit(&channel).is_none() {
-        return Err(bad_arg(
+    let no_channel = || {
+        bad_arg(
             "--channel",
             &channel,
             "no such channel (rolldyn spectrum DIR --list shows them)",
-        ));
+        )
+    };
+    let no_time = || Failure::BadInput("timeseries.parquet has no time_s column".into());
+    if channels.unit(&channel).is_none() {
+        return Err(no_channel());
     }
     if channels.unit("time_s").is_none() {
-        return Err(Failure::BadInput(
-            "timeseries.parquet has no time_s column".into(),
-        ));
+        return Err(no_time());
     }
     let series = rolldyn_io::read_columns(&path, Some(&["time_s", channel.as_str()]))
         .map_err(|e| Failure::BadInput(e.to_string()))?;
@@ -220,16 +228,8 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
                 summary_path.display()
             ))
         })?;
-    let values = series.column(&channel).ok_or_else(|| {
-        bad_arg(
-            "--channel",
-            &channel,
-            "no such channel (rolldyn spectrum DIR --list shows them)",
-        )
-    })?;
-    let time = series
-        .column("time_s")
-        .ok_or_else(|| Failure::BadInput("timeseries.parquet has no time_s column".into()))?;
+    let values = series.column(&channel).ok_or_else(no_channel)?;
+    let time = series.column("time_s").ok_or_else(no_time)?;
     let from_time = args.from.unwrap_or(summary.averaging_window_s[0]);
     if !from_time.is_finite() {
         return Err(bad_arg("--from", &from_time.to_string(), "must be finite"));
@@ -238,83 +238,151 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         .iter()
         .position(|&t| t >= from_time)
         .unwrap_or(time.len());
-    let (time, record) = (&time[from..], &values[from..]);
-    if record.len() < 16 {
-        let rule = format!(
-            "leaves {} samples; a spectrum needs at least 16",
-            record.len()
-        );
+    let samples = time.len() - from;
+    if samples < 16 {
+        let rule = format!("leaves {samples} samples; a spectrum needs at least 16");
         return Err(match args.from {
             Some(_) => bad_arg("--from", &from_time.to_string(), rule),
             // The user gave no --from: the window is the summary's.
             None => Failure::BadInput(format!(
-                "{}: the run's averaging window (from t = {from_time} s, its second half) holds {} samples of {}; a spectrum needs at least 16: run longer or at a higher output.sample_rate, or pass --from \"0 s\" for the whole record",
+                "{}: the run's averaging window (from t = {from_time} s, its second half) holds {samples} samples of {channel}; a spectrum needs at least 16: run longer or at a higher output.sample_rate, or pass --from \"0 s\" for the whole record",
                 dir.display(),
-                record.len(),
-                channel
             )),
         });
     }
-    let sample_rate = (time.len() - 1) as f64 / (time[time.len() - 1] - time[0]);
+    Ok(Record {
+        unit: series.unit(&channel).unwrap_or("").to_string(),
+        time: time[from..].to_vec(),
+        values: values[from..].to_vec(),
+        channel,
+        summary,
+    })
+}
+
+/// A spectrum of `--kind`: the spectrum (a spectrogram's mean over its
+/// segments), its value unit, the envelope band, the segment length and
+/// a spectrogram's frames.
+struct Analysis {
+    spectrum: Spectrum,
+    value_unit: String,
+    band: Option<[f64; 2]>,
+    segment: Option<usize>,
+    frames: Option<Spectrogram>,
+}
+
+fn analyse(
+    args: &SpectrumArgs,
+    band: Option<(f64, f64)>,
+    record: &[f64],
+    unit: &str,
+    sample_rate: f64,
+) -> Result<Analysis, Failure> {
     let window = match args.window.as_str() {
         "hann" => Window::Hann,
         "rectangular" => Window::Rectangular,
         w => return Err(bad_arg("--window", w, "expected hann or rectangular")),
     };
-    let unit = series.unit(&channel).unwrap_or("").to_string();
     let spectrum_error = |e: rolldyn::signal::SpectrumError| Failure::BadInput(e.to_string());
-    let default_segment = || (record.len() / 8).max(16).next_power_of_two() / 2;
-    let mut frames = None;
-    let (spectrum, value_unit, band, segment): (Spectrum, String, Option<[f64; 2]>, Option<usize>) =
-        match args.kind.as_str() {
-            "amplitude" => (
-                amplitude_spectrum(record, sample_rate, window).map_err(spectrum_error)?,
-                unit.clone(),
+    let segment = args
+        .segment
+        .unwrap_or_else(|| (record.len() / 8).max(16).next_power_of_two() / 2);
+    let plain = |spectrum, value_unit: String, band, segment| Analysis {
+        spectrum,
+        value_unit,
+        band,
+        segment,
+        frames: None,
+    };
+    Ok(match args.kind.as_str() {
+        "amplitude" => plain(
+            amplitude_spectrum(record, sample_rate, window).map_err(spectrum_error)?,
+            unit.to_string(),
+            None,
+            None,
+        ),
+        "psd" => plain(
+            welch_psd(record, sample_rate, segment, args.overlap, window)
+                .map_err(spectrum_error)?,
+            format!("({unit})^2/Hz"),
+            None,
+            Some(segment),
+        ),
+        "envelope" => {
+            let band = band.unwrap_or((0.1 * sample_rate, 0.4 * sample_rate));
+            plain(
+                envelope_spectrum(record, sample_rate, band, window).map_err(spectrum_error)?,
+                unit.to_string(),
+                Some([band.0, band.1]),
                 None,
-                None,
-            ),
-            "psd" => {
-                let segment = args.segment.unwrap_or_else(default_segment);
-                (
-                    welch_psd(record, sample_rate, segment, args.overlap, window)
-                        .map_err(spectrum_error)?,
-                    format!("({unit})^2/Hz"),
-                    None,
-                    Some(segment),
-                )
+            )
+        }
+        "spectrogram" => {
+            let sg = spectrogram(record, sample_rate, segment, args.overlap, window)
+                .map_err(spectrum_error)?;
+            // Peaks and lines from the segments' mean spectrum.
+            let n = sg.value.len().max(1) as f64;
+            let mean = Spectrum {
+                frequency: sg.frequency.clone(),
+                value: (0..sg.frequency.len())
+                    .map(|k| sg.value.iter().map(|v| v[k]).sum::<f64>() / n)
+                    .collect(),
+            };
+            Analysis {
+                frames: Some(sg),
+                ..plain(mean, unit.to_string(), None, Some(segment))
             }
-            "envelope" => {
-                let band = band.unwrap_or((0.1 * sample_rate, 0.4 * sample_rate));
-                (
-                    envelope_spectrum(record, sample_rate, band, window).map_err(spectrum_error)?,
-                    unit.clone(),
-                    Some([band.0, band.1]),
-                    None,
-                )
+        }
+        k => {
+            return Err(bad_arg(
+                "--kind",
+                k,
+                "expected amplitude, psd, envelope or spectrogram",
+            ));
+        }
+    })
+}
+
+/// The CSV of an analysis: `frequency_hz,value` rows, or of a
+/// spectrogram one row per segment and frequency, the segment by the
+/// time of its centre (`start` the record's first time).
+fn spectrum_csv(analysis: &Analysis, start: f64) -> String {
+    let mut csv = String::new();
+    match &analysis.frames {
+        Some(sg) => {
+            csv.push_str("time_s,frequency_hz,value\n");
+            for (t, spectrum) in sg.time.iter().zip(&sg.value) {
+                for (f, v) in sg.frequency.iter().zip(spectrum) {
+                    let _ = writeln!(csv, "{},{f},{v:e}", start + t);
+                }
             }
-            "spectrogram" => {
-                let segment = args.segment.unwrap_or_else(default_segment);
-                let sg = spectrogram(record, sample_rate, segment, args.overlap, window)
-                    .map_err(spectrum_error)?;
-                // Peaks and lines from the segments' mean spectrum.
-                let n = sg.value.len().max(1) as f64;
-                let mean = Spectrum {
-                    frequency: sg.frequency.clone(),
-                    value: (0..sg.frequency.len())
-                        .map(|k| sg.value.iter().map(|v| v[k]).sum::<f64>() / n)
-                        .collect(),
-                };
-                frames = Some(sg);
-                (mean, unit.clone(), None, Some(segment))
+        }
+        None => {
+            csv.push_str("frequency_hz,value\n");
+            let spectrum = &analysis.spectrum;
+            for (f, v) in spectrum.frequency.iter().zip(&spectrum.value) {
+                let _ = writeln!(csv, "{f},{v:e}");
             }
-            k => {
-                return Err(bad_arg(
-                    "--kind",
-                    k,
-                    "expected amplitude, psd, envelope or spectrogram",
-                ));
-            }
-        };
+        }
+    }
+    csv
+}
+
+/// The spectrum `rolldyn spectrum --json` prints; writes its CSV and JSON
+/// files into the run directory.
+pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
+    // The options' values first: refused before the record is read.
+    let band = args.band.as_deref().map(parse_band).transpose()?;
+    let dir = Path::new(&args.dir);
+    let Record {
+        channel,
+        unit,
+        time,
+        values: record,
+        summary,
+    } = read_record(args, dir)?;
+    let sample_rate = (time.len() - 1) as f64 / (time[time.len() - 1] - time[0]);
+    let analysis = analyse(args, band, &record, &unit, sample_rate)?;
+    let spectrum = &analysis.spectrum;
     let alpha = 0.5
         * (summary.mean_contact_angle_inner_deg + summary.mean_contact_angle_outer_deg)
             .to_radians();
@@ -332,7 +400,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     let naming = characteristic.lines_up_to(band_end, MAX_NAMING_HARMONICS);
     let resolution = spectrum.resolution();
     let peaks = find_peaks(
-        &spectrum,
+        spectrum,
         resolution,
         args.peaks,
         &naming,
@@ -341,48 +409,29 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
     );
     let velocity_band = (VELOCITY_BAND.0, VELOCITY_BAND.1.min(0.5 * sample_rate));
     let velocity_rms = match unit.as_str() {
-        "m/s^2" => band_velocity_rms(record, sample_rate, velocity_band).ok(),
-        "m/s" => band_rms(record, sample_rate, velocity_band).ok(),
+        "m/s^2" => band_velocity_rms(&record, sample_rate, velocity_band).ok(),
+        "m/s" => band_rms(&record, sample_rate, velocity_band).ok(),
         _ => None,
     }
     .map(|v| 1e3 * v);
     let stem = format!("spectrum_{}_{}", channel, args.kind);
-    let mut csv = String::new();
-    match &frames {
-        // A spectrogram: one row per segment and frequency, the segment
-        // by the time of its centre.
-        Some(sg) => {
-            csv.push_str("time_s,frequency_hz,value\n");
-            for (t, spectrum) in sg.time.iter().zip(&sg.value) {
-                for (f, v) in sg.frequency.iter().zip(spectrum) {
-                    let _ = writeln!(csv, "{},{f},{v:e}", time[0] + t);
-                }
-            }
-        }
-        None => {
-            csv.push_str("frequency_hz,value\n");
-            for (f, v) in spectrum.frequency.iter().zip(&spectrum.value) {
-                let _ = writeln!(csv, "{f},{v:e}");
-            }
-        }
-    }
     let csv_path = dir.join(format!("{stem}.csv"));
-    rolldyn_io::write_atomic(&csv_path, csv.as_bytes())
+    rolldyn_io::write_atomic(&csv_path, spectrum_csv(&analysis, time[0]).as_bytes())
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     let report = Report {
         channel: channel.clone(),
         unit,
         kind: args.kind.clone(),
-        value_unit,
+        value_unit: analysis.value_unit.clone(),
         window: args.window.clone(),
         sample_rate_hz: sample_rate,
         samples: record.len(),
         from_s: time[0],
         to_s: time[time.len() - 1],
         resolution_hz: resolution,
-        band_hz: band,
-        segment,
-        segments: frames.as_ref().map(|sg| sg.time.len()),
+        band_hz: analysis.band,
+        segment: analysis.segment,
+        segments: analysis.frames.as_ref().map(|sg| sg.time.len()),
         velocity_rms_mm_s: velocity_rms,
         velocity_rms_band_hz: velocity_rms.map(|_| [velocity_band.0, velocity_band.1]),
         characteristic: Characteristic {

@@ -465,6 +465,173 @@ fn contact_constants(model: &TractionModel) -> Option<ExactTable> {
     }
 }
 
+/// The contact an evaluation runs: its traction law and grid, the Hertz
+/// ellipse, and for a bearing's raceway the radii, film data and ring.
+struct Setup {
+    model: TractionModel,
+    integration: rolldyn::traction::TractionIntegration,
+    /// Semi-axis along the rolling direction \[m\].
+    along: f64,
+    /// Semi-axis across it \[m\].
+    across: f64,
+    /// Normal load \[N\].
+    load: f64,
+    /// Radius of the deformed surface across the rolling direction \[m\].
+    deformed_radius: f64,
+    /// Rolling radius of the raceway contact \[m\].
+    rolling_radius: Option<f64>,
+    /// Effective modulus \[Pa\] and ellipticity, for the film.
+    film_of: Option<(f64, f64)>,
+    /// The ring's name and the contact angle \[rad\].
+    ring: Option<(&'static str, f64)>,
+}
+
+fn setup(contact: &Contact) -> Result<Setup, String> {
+    let setup = match contact {
+        Contact::Bearing {
+            case,
+            ring,
+            load,
+            angle,
+        } => {
+            let params = case
+                .dynamics_parameters()
+                .map_err(|e| format!("{}: {}", e.key, e.rule))?;
+            let g = &case.bearing.geometry;
+            let angle = angle.unwrap_or_else(|| g.nominal_contact_angle());
+            let (ball, rings) = (
+                &case.materials.ball.material,
+                &case.materials.rings.material,
+            );
+            let ep = effective_modulus(ball, rings);
+            let raceway = RacewayContactModel::new(g, *ring, ep, case.contact_stiffness);
+            let h = raceway
+                .coefficients(angle)
+                .map_err(|e| format!("{} raceway contact: {e}", ring.name()))?;
+            let q = match load {
+                Load::Force(q) => *q,
+                Load::Approach(d) => h.load(*d),
+            };
+            let at = h.at_load(q);
+            let rg = g.raceway(*ring).groove_radius;
+            let rb = 0.5 * g.ball_diameter;
+            Setup {
+                model: params.traction,
+                integration: params.traction_integration,
+                along: at.semi_minor,
+                across: at.semi_major,
+                load: q,
+                deformed_radius: 2.0 * rg * rb / (rg + rb),
+                rolling_radius: Some(raceway.curvature(angle).rolling_radius),
+                film_of: Some((ep, h.ellipticity)),
+                ring: Some((ring.name(), angle)),
+            }
+        }
+        Contact::Explicit {
+            along,
+            across,
+            load,
+            shear_modulus,
+            poisson_ratio,
+            friction,
+        } => {
+            let flag = |field: &str| {
+                if field.starts_with("semi_axis") {
+                    "--semi-axes".to_string()
+                } else {
+                    format!("--{}", field.replace('_', "-"))
+                }
+            };
+            check_axes(*along, *across, *poisson_ratio)
+                .map_err(|e| format!("{}: {e}", flag(e.field)))?;
+            let m = Fastsim::new(*friction, *shear_modulus, *poisson_ratio);
+            m.validate()
+                .map_err(|e| format!("{}: {e}", flag(e.field)))?;
+            Setup {
+                model: TractionModel::Fastsim(m),
+                integration: Default::default(),
+                along: *along,
+                across: *across,
+                load: *load,
+                deformed_radius: f64::INFINITY,
+                rolling_radius: None,
+                film_of: None,
+                ring: None,
+            }
+        }
+    };
+    let load = setup.load;
+    if !(load.is_finite() && load >= 0.0) {
+        return Err(format!("normal load {load} N: must be ≥ 0"));
+    }
+    Ok(setup)
+}
+
+/// The tabulated exact theory with the friction and elastic constants of
+/// `model`'s law (`--method table`).
+fn tabulated(model: &TractionModel) -> Result<TractionModel, String> {
+    contact_constants(model)
+        .map(TractionModel::ExactTable)
+        .ok_or_else(|| {
+            format!(
+                "--method table: the tabulated exact theory takes its friction and elastic constants from the fastsim or exact_table traction law (the case has {}; e.g. --set 'model.traction={{ law = \"exact_table\", friction = 0.1 }}')",
+                law_name(model)
+            )
+        })
+}
+
+/// Kalker's exact steady-rolling theory on `grid` (cells along × across)
+/// with the friction and elastic constants of `model`'s law; `map` (if
+/// given) receives the cells as CSV text. The result, its report and the
+/// cells written.
+fn solve_exact(
+    model: &TractionModel,
+    (along_cells, across_cells): (usize, usize),
+    kinematics: &ContactKinematics,
+    rolling_speed: f64,
+    map: Option<&mut String>,
+) -> Result<(TractionResult, ExactReport, usize), String> {
+    let Some(f) = contact_constants(model) else {
+        return Err(format!(
+            "--method exact: the exact theory takes its friction and elastic constants from the fastsim or exact_table traction law (the case has {}; e.g. --set 'model.traction={{ law = \"fastsim\", friction = 0.1 }}')",
+            law_name(model)
+        ));
+    };
+    if rolling_speed == 0.0 {
+        return Err(
+            "--method exact: the steady-rolling theory needs a rolling speed (--rolling-speed ≠ 0)"
+                .into(),
+        );
+    }
+    let mut m = ExactRolling::new(f.friction, f.shear_modulus, f.poisson_ratio);
+    m.cells_along = along_cells;
+    m.cells_across = across_cells;
+    let sol = m.solve(
+        &kinematics.patch,
+        &kinematics.slip,
+        &kinematics.relative_spin,
+        rolling_speed,
+    );
+    let mut cells = 0;
+    if let Some(text) = map {
+        text.push_str(MapCell::CSV_HEADER);
+        text.push('\n');
+        for c in &sol.cells {
+            let _ = writeln!(text, "{}", c.csv_row());
+        }
+        cells = sol.cells.len();
+    }
+    let report = ExactReport {
+        cells_along: along_cells,
+        cells_across: across_cells,
+        contact_cells: sol.cells.len(),
+        sweeps: sol.sweeps,
+        converged: sol.converged,
+        frictional_power_w: sol.frictional_power,
+    };
+    Ok((sol.result, report, cells))
+}
+
 /// Evaluates the contact; `map` (if given) receives the FASTSIM stick/slip
 /// map as CSV text.
 pub fn evaluate(
@@ -472,96 +639,22 @@ pub fn evaluate(
     inputs: &Inputs,
     map: Option<&mut String>,
 ) -> Result<TractionReport, String> {
-    let normal = Vector3::z();
-    let x = Vector3::x();
-    let y = normal.cross(&x);
+    // Contact frame: normal z, rolling direction x, y = z × x.
+    let (normal, x, y) = (Vector3::z(), Vector3::x(), Vector3::y());
     let v = inputs.rolling_speed;
-    let (model, integration, along, across, load, deformed_radius, rolling_radius, film_of, ring) =
-        match contact {
-            Contact::Bearing {
-                case,
-                ring,
-                load,
-                angle,
-            } => {
-                let params = case
-                    .dynamics_parameters()
-                    .map_err(|e| format!("{}: {}", e.key, e.rule))?;
-                let g = &case.bearing.geometry;
-                let angle = angle.unwrap_or_else(|| g.nominal_contact_angle());
-                let (ball, rings) = (
-                    &case.materials.ball.material,
-                    &case.materials.rings.material,
-                );
-                let ep = effective_modulus(ball, rings);
-                let raceway = RacewayContactModel::new(g, *ring, ep, case.contact_stiffness);
-                let h = raceway
-                    .coefficients(angle)
-                    .map_err(|e| format!("{} raceway contact: {e}", ring.name()))?;
-                let q = match load {
-                    Load::Force(q) => *q,
-                    Load::Approach(d) => h.load(*d),
-                };
-                let at = h.at_load(q);
-                let rg = g.raceway(*ring).groove_radius;
-                let rb = 0.5 * g.ball_diameter;
-                let rx = raceway.curvature(angle).rolling_radius;
-                (
-                    params.traction,
-                    params.traction_integration,
-                    at.semi_minor,
-                    at.semi_major,
-                    q,
-                    2.0 * rg * rb / (rg + rb),
-                    Some(rx),
-                    Some((ep, h.ellipticity)),
-                    Some((ring.name(), angle)),
-                )
-            }
-            Contact::Explicit {
-                along,
-                across,
-                load,
-                shear_modulus,
-                poisson_ratio,
-                friction,
-            } => {
-                let flag = |field: &str| {
-                    if field.starts_with("semi_axis") {
-                        "--semi-axes".to_string()
-                    } else {
-                        format!("--{}", field.replace('_', "-"))
-                    }
-                };
-                check_axes(*along, *across, *poisson_ratio)
-                    .map_err(|e| format!("{}: {e}", flag(e.field)))?;
-                let m = Fastsim::new(*friction, *shear_modulus, *poisson_ratio);
-                m.validate()
-                    .map_err(|e| format!("{}: {e}", flag(e.field)))?;
-                (
-                    TractionModel::Fastsim(m),
-                    Default::default(),
-                    *along,
-                    *across,
-                    *load,
-                    f64::INFINITY,
-                    None,
-                    None,
-                    None,
-                )
-            }
-        };
-    if !(load.is_finite() && load >= 0.0) {
-        return Err(format!("normal load {load} N: must be ≥ 0"));
-    }
+    let Setup {
+        model,
+        integration,
+        along,
+        across,
+        load,
+        deformed_radius,
+        rolling_radius,
+        film_of,
+        ring,
+    } = setup(contact)?;
     let model = if inputs.table {
-        let Some(t) = contact_constants(&model) else {
-            return Err(format!(
-                "--method table: the tabulated exact theory takes its friction and elastic constants from the fastsim or exact_table traction law (the case has {}; e.g. --set 'model.traction={{ law = \"exact_table\", friction = 0.1 }}')",
-                law_name(&model)
-            ));
-        };
-        TractionModel::ExactTable(t)
+        tabulated(&model)?
     } else {
         model
     };
@@ -592,57 +685,29 @@ pub fn evaluate(
         entrainment_speed: v.abs(),
         rolling_velocity: v,
     };
+    let kinematics = ContactKinematics {
+        patch,
+        ball_centre: Vector3::zeros(),
+        slip,
+        relative_spin,
+        conditions,
+    };
     let mut cells = 0;
     let mut exact_report = None;
     let result: TractionResult = match (&model, inputs.exact, map) {
-        (_, Some((along_cells, across_cells)), map) => {
-            let Some(f) = contact_constants(&model) else {
-                return Err(format!(
-                    "--method exact: the exact theory takes its friction and elastic constants from the fastsim or exact_table traction law (the case has {}; e.g. --set 'model.traction={{ law = \"fastsim\", friction = 0.1 }}')",
-                    law_name(&model)
-                ));
-            };
-            if v == 0.0 {
-                return Err("--method exact: the steady-rolling theory needs a rolling speed (--rolling-speed ≠ 0)".into());
-            }
-            let mut m = ExactRolling::new(f.friction, f.shear_modulus, f.poisson_ratio);
-            m.cells_along = along_cells;
-            m.cells_across = across_cells;
-            let sol = m.solve(&patch, &slip, &relative_spin, v);
-            if let Some(text) = map {
-                text.push_str(MapCell::CSV_HEADER);
-                text.push('\n');
-                for c in &sol.cells {
-                    let _ = writeln!(text, "{}", c.csv_row());
-                }
-                cells = sol.cells.len();
-            }
-            exact_report = Some(ExactReport {
-                cells_along: along_cells,
-                cells_across: across_cells,
-                contact_cells: sol.cells.len(),
-                sweeps: sol.sweeps,
-                converged: sol.converged,
-                frictional_power_w: sol.frictional_power,
-            });
-            sol.result
+        (_, Some(grid), map) => {
+            let (result, report, mapped) = solve_exact(&model, grid, &kinematics, v, map)?;
+            cells = mapped;
+            exact_report = Some(report);
+            result
         }
         (TractionModel::Fastsim(f), None, Some(text)) => {
             text.push_str(MapCell::CSV_HEADER);
             text.push('\n');
-            f.evaluate_mapped(
-                &ContactKinematics {
-                    patch,
-                    ball_centre: Vector3::zeros(),
-                    slip,
-                    relative_spin,
-                    conditions,
-                },
-                |c: &MapCell| {
-                    cells += 1;
-                    let _ = writeln!(text, "{}", c.csv_row());
-                },
-            )
+            f.evaluate_mapped(&kinematics, |c: &MapCell| {
+                cells += 1;
+                let _ = writeln!(text, "{}", c.csv_row());
+            })
         }
         (_, None, Some(_)) => {
             return Err(format!(
@@ -652,13 +717,7 @@ pub fn evaluate(
         }
         (m, None, None) => m.evaluate(
             &rolldyn::traction::TractionGrid::new(integration),
-            &ContactKinematics {
-                patch,
-                ball_centre: Vector3::zeros(),
-                slip,
-                relative_spin,
-                conditions,
-            },
+            &kinematics,
         ),
     };
     let (fx, fy) = (result.force.dot(&x), result.force.dot(&y));
@@ -681,12 +740,10 @@ pub fn evaluate(
         power_w: result.dissipation,
         stick_fraction: result.creep.map(|c| c.stick_fraction),
         map_cells: (cells > 0).then_some(cells),
-        method: if exact_report.is_some() {
-            "exact"
-        } else if inputs.table {
-            "table"
-        } else {
-            "fastsim"
+        method: match (&exact_report, inputs.table) {
+            (Some(_), _) => "exact",
+            (None, true) => "table",
+            (None, false) => "fastsim",
         },
         exact: exact_report,
     })
