@@ -341,83 +341,8 @@ impl SetReport {
             "  stiffness: axial {:.4e} N/m, radial {:.4e} / {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
             k[0][0], k[1][1], k[2][2], k[3][3], k[4][4]
         );
-        let _ = writeln!(
-            out,
-            "  bearing  position mm  faces  axial N     radial N    max Q_i N   max Q_o N   α_i °    α_o °"
-        );
-        for (i, b) in a.bearings.iter().enumerate() {
-            // An unloaded bearing has no contact angle: a dash.
-            let angle = |a: Option<f64>| a.map_or("—".to_string(), |a| format!("{a:.2}"));
-            let (qi, qo, ai, ao) =
-                b.quasistatic
-                    .as_ref()
-                    .map_or((0.0, 0.0, angle(None), angle(None)), |q| {
-                        let max = |g: fn(&super::single::BallRow) -> f64| {
-                            q.balls.iter().map(g).fold(0.0, f64::max)
-                        };
-                        // The contact angles of the most loaded ball (an
-                        // unloaded ball's are those of open contacts).
-                        let top = q
-                            .balls
-                            .iter()
-                            .max_by(|a, b| a.load_inner_n.total_cmp(&b.load_inner_n));
-                        (
-                            max(|r| r.load_inner_n),
-                            max(|r| r.load_outer_n),
-                            angle(top.map(|r| r.contact_angle_inner_deg)),
-                            angle(top.map(|r| r.contact_angle_outer_deg)),
-                        )
-                    });
-            let _ = writeln!(
-                out,
-                "  {i:<7}  {:>11.2}  {:<5}  {:>10.2}  {:>10.2}  {:>10.2}  {:>10.2}  {:>7}  {:>7}{}",
-                b.position_m * 1e3,
-                if b.orientation == "forward" {
-                    "+x"
-                } else {
-                    "−x"
-                },
-                b.axial_load_n,
-                b.radial_load_n,
-                qi,
-                qo,
-                ai,
-                ao,
-                if b.quasistatic.is_none() {
-                    "  (unloaded beyond lift-off)"
-                } else {
-                    ""
-                }
-            );
-        }
-        if let Some(nodes) = &a.shaft_nodes {
-            let _ = writeln!(
-                out,
-                "  elastic shaft: node  position mm   y µm       z µm       θ_y rad      θ_z rad"
-            );
-            for (n, node) in nodes.iter().enumerate() {
-                let u = node.displacement;
-                let _ = writeln!(
-                    out,
-                    "                 {n:<4}  {:>11.2}  {:>9.3}  {:>9.3}  {:>11.3e}  {:>11.3e}",
-                    node.position_m * 1e3,
-                    u[1] * 1e6,
-                    u[2] * 1e6,
-                    u[3],
-                    u[4]
-                );
-            }
-            let _ = writeln!(
-                out,
-                "  misalignment of the inner rings (shaft bending and tilt): {}",
-                a.bearings
-                    .iter()
-                    .enumerate()
-                    .map(|(i, b)| format!("{i}: {:.3e} rad", b.misalignment_rad))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            );
-        }
+        bearing_table(a, &mut out);
+        shaft_nodes_text(a, &mut out);
         let _ = writeln!(
             out,
             "  system life (bearings in series, e = 10/9): L10 {}, L10r {}, L10mr {}",
@@ -426,6 +351,93 @@ impl SetReport {
             f(a.system_modified_reference_rating_life_h, "h")
         );
         out
+    }
+}
+
+/// The table of the set's bearings: position, faces, loads, the most
+/// loaded ball's loads and contact angles.
+fn bearing_table(a: &ArrangementReport, out: &mut String) {
+    let _ = writeln!(
+        out,
+        "  bearing  position mm  faces  axial N     radial N    max Q_i N   max Q_o N   α_i °    α_o °"
+    );
+    for (i, b) in a.bearings.iter().enumerate() {
+        // An unloaded bearing has no contact angle: a dash.
+        let angle = |a: Option<f64>| a.map_or("—".to_string(), |a| format!("{a:.2}"));
+        let (qi, qo, ai, ao) =
+            b.quasistatic
+                .as_ref()
+                .map_or((0.0, 0.0, angle(None), angle(None)), |q| {
+                    let max = |g: fn(&super::single::BallRow) -> f64| {
+                        q.balls.iter().map(g).fold(0.0, f64::max)
+                    };
+                    // The contact angles of the most loaded ball (an
+                    // unloaded ball's are those of open contacts).
+                    let top = q
+                        .balls
+                        .iter()
+                        .max_by(|a, b| a.load_inner_n.total_cmp(&b.load_inner_n));
+                    (
+                        max(|r| r.load_inner_n),
+                        max(|r| r.load_outer_n),
+                        angle(top.map(|r| r.contact_angle_inner_deg)),
+                        angle(top.map(|r| r.contact_angle_outer_deg)),
+                    )
+                });
+        let _ = writeln!(
+            out,
+            "  {i:<7}  {:>11.2}  {:<5}  {:>10.2}  {:>10.2}  {:>10.2}  {:>10.2}  {:>7}  {:>7}{}",
+            b.position_m * 1e3,
+            if b.orientation == "forward" {
+                "+x"
+            } else {
+                "−x"
+            },
+            b.axial_load_n,
+            b.radial_load_n,
+            qi,
+            qo,
+            ai,
+            ao,
+            if b.quasistatic.is_none() {
+                "  (unloaded beyond lift-off)"
+            } else {
+                ""
+            }
+        );
+    }
+}
+
+/// An elastic shaft's node displacements and the inner rings'
+/// misalignments.
+fn shaft_nodes_text(a: &ArrangementReport, out: &mut String) {
+    if let Some(nodes) = &a.shaft_nodes {
+        let _ = writeln!(
+            out,
+            "  elastic shaft: node  position mm   y µm       z µm       θ_y rad      θ_z rad"
+        );
+        for (n, node) in nodes.iter().enumerate() {
+            let u = node.displacement;
+            let _ = writeln!(
+                out,
+                "                 {n:<4}  {:>11.2}  {:>9.3}  {:>9.3}  {:>11.3e}  {:>11.3e}",
+                node.position_m * 1e3,
+                u[1] * 1e6,
+                u[2] * 1e6,
+                u[3],
+                u[4]
+            );
+        }
+        let _ = writeln!(
+            out,
+            "  misalignment of the inner rings (shaft bending and tilt): {}",
+            a.bearings
+                .iter()
+                .enumerate()
+                .map(|(i, b)| format!("{i}: {:.3e} rad", b.misalignment_rad))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
     }
 }
 

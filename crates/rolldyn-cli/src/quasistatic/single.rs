@@ -417,6 +417,81 @@ impl QuasiStaticReport {
         }
     }
 
+    /// The stiffness lines: the diagonal of K, the conventional 1/C_ii
+    /// (with and without the film), and the note on a negative one.
+    fn stiffness_text(&self, out: &mut String) {
+        let _ = writeln!(
+            out,
+            "  stiffness, diagonal of K (other displacements held): axial {:.4e} N/m, radial y {:.4e} N/m, radial z {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
+            self.stiffness_n_per_m.axial,
+            self.stiffness_n_per_m.radial_y,
+            self.stiffness_n_per_m.radial_z,
+            self.tilt_stiffness_n_m_per_rad.y,
+            self.tilt_stiffness_n_m_per_rad.z
+        );
+        let conventional = |out: &mut String, what: &str, c: &ConventionalStiffness| {
+            let _ = writeln!(
+                out,
+                "  stiffness, 1/C_ii (other loads held){what}: axial {:.4e} N/m, radial y {:.4e} N/m, radial z {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
+                c.axial_n_per_m,
+                c.radial_y_n_per_m,
+                c.radial_z_n_per_m,
+                c.tilt_y_n_m_per_rad,
+                c.tilt_z_n_m_per_rad
+            );
+        };
+        if let Some(c) = &self.conventional_stiffness {
+            let what = if self.film_in_approach {
+                ", film in the approach"
+            } else {
+                ""
+            };
+            conventional(out, what, c);
+        }
+        if let Some(c) = &self.conventional_stiffness_without_film {
+            conventional(out, ", without the film", c);
+        }
+        self.negative_stiffness_note(out);
+    }
+
+    /// The table of the balls' loads, angles, speeds and pressures.
+    fn ball_table(&self, out: &mut String) {
+        let _ = writeln!(
+            out,
+            "\n  {:>7} {:>10} {:>10} {:>8} {:>8} {:>9} {:>9} {:>7} {:>8} {:>8} {:>8} {:>8}",
+            "φ deg",
+            "Q_i N",
+            "Q_o N",
+            "α_i °",
+            "α_o °",
+            "ω_m rpm",
+            "ω_R rpm",
+            "β °",
+            "s/r i",
+            "s/r o",
+            "p0_i MPa",
+            "p0_o MPa"
+        );
+        for b in &self.balls {
+            let _ = writeln!(
+                out,
+                "  {:>7.1} {:>10.2} {:>10.2} {:>8.3} {:>8.3} {:>9.1} {:>9.1} {:>7.3} {:>8.4} {:>8.4} {:>8.0} {:>8.0}",
+                b.azimuth_deg,
+                b.load_inner_n,
+                b.load_outer_n,
+                b.contact_angle_inner_deg,
+                b.contact_angle_outer_deg,
+                b.orbital_speed_rpm,
+                b.spin_speed_rpm,
+                b.attitude_deg,
+                b.spin_to_roll_inner,
+                b.spin_to_roll_outer,
+                b.max_pressure_inner_pa * 1e-6,
+                b.max_pressure_outer_pa * 1e-6
+            );
+        }
+    }
+
     pub fn to_text(&self) -> String {
         let mut out = String::new();
         let kind = if self.speed_rpm == 0.0 {
@@ -488,72 +563,8 @@ impl QuasiStaticReport {
                 self.orbital_speed_max_rpm
             );
         }
-        let _ = writeln!(
-            out,
-            "  stiffness, diagonal of K (other displacements held): axial {:.4e} N/m, radial y {:.4e} N/m, radial z {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
-            self.stiffness_n_per_m.axial,
-            self.stiffness_n_per_m.radial_y,
-            self.stiffness_n_per_m.radial_z,
-            self.tilt_stiffness_n_m_per_rad.y,
-            self.tilt_stiffness_n_m_per_rad.z
-        );
-        let conventional = |out: &mut String, what: &str, c: &ConventionalStiffness| {
-            let _ = writeln!(
-                out,
-                "  stiffness, 1/C_ii (other loads held){what}: axial {:.4e} N/m, radial y {:.4e} N/m, radial z {:.4e} N/m, tilt {:.4e} / {:.4e} N·m/rad",
-                c.axial_n_per_m,
-                c.radial_y_n_per_m,
-                c.radial_z_n_per_m,
-                c.tilt_y_n_m_per_rad,
-                c.tilt_z_n_m_per_rad
-            );
-        };
-        if let Some(c) = &self.conventional_stiffness {
-            let what = if self.film_in_approach {
-                ", film in the approach"
-            } else {
-                ""
-            };
-            conventional(&mut out, what, c);
-        }
-        if let Some(c) = &self.conventional_stiffness_without_film {
-            conventional(&mut out, ", without the film", c);
-        }
-        self.negative_stiffness_note(&mut out);
-        let _ = writeln!(
-            out,
-            "\n  {:>7} {:>10} {:>10} {:>8} {:>8} {:>9} {:>9} {:>7} {:>8} {:>8} {:>8} {:>8}",
-            "φ deg",
-            "Q_i N",
-            "Q_o N",
-            "α_i °",
-            "α_o °",
-            "ω_m rpm",
-            "ω_R rpm",
-            "β °",
-            "s/r i",
-            "s/r o",
-            "p0_i MPa",
-            "p0_o MPa"
-        );
-        for b in &self.balls {
-            let _ = writeln!(
-                out,
-                "  {:>7.1} {:>10.2} {:>10.2} {:>8.3} {:>8.3} {:>9.1} {:>9.1} {:>7.3} {:>8.4} {:>8.4} {:>8.0} {:>8.0}",
-                b.azimuth_deg,
-                b.load_inner_n,
-                b.load_outer_n,
-                b.contact_angle_inner_deg,
-                b.contact_angle_outer_deg,
-                b.orbital_speed_rpm,
-                b.spin_speed_rpm,
-                b.attitude_deg,
-                b.spin_to_roll_inner,
-                b.spin_to_roll_outer,
-                b.max_pressure_inner_pa * 1e-6,
-                b.max_pressure_outer_pa * 1e-6
-            );
-        }
+        self.stiffness_text(&mut out);
+        self.ball_table(&mut out);
         if let Some(r) = &self.rating_life {
             r.text(&mut out);
         }
