@@ -132,6 +132,7 @@ pub fn simulation_failure(e: rolldyn_case::simulation::SimulationError) -> Failu
                 ..
             },
         ) => Failure::Model(e.to_string()),
+        E::WarmEquilibrium(_) => Failure::Model(e.to_string()),
         other => Failure::BadInput(other.to_string()),
     }
 }

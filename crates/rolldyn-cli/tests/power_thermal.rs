@@ -319,6 +319,17 @@ fn thermal_steady_states_of_presets_say_what_they_assume() {
         warnings[0].as_str().unwrap().contains("beyond the 315 °C"),
         "{warnings:?}"
     );
+    // A hybrid bearing seated by its radial load alone: warm, its
+    // clearance grows and it is no longer seated; the refusal says where.
+    let o = rolldyn(&["thermal", "-"], Some(&preset("ceramic_45x75")));
+    assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
+    for part in [
+        "thermal steady state, pass",
+        "operating diametral clearance",
+        "axial load",
+    ] {
+        assert!(stderr(&o).contains(part), "{part}: {}", stderr(&o));
+    }
 }
 
 /// Quasi-static sweeps carry the local power loss.

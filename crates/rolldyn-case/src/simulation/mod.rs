@@ -65,6 +65,10 @@ pub enum SimulationError {
     /// The thermal network's data.
     #[error("thermal: {0}")]
     Thermal(InvalidParameter),
+    /// The thermal steady state's equilibrium at a warm pass (its
+    /// temperatures and clearance named).
+    #[error(transparent)]
+    WarmEquilibrium(rolldyn::thermal::coupled::CoupledError),
     /// The initial state the case asks for cannot be found.
     #[error("solver.start = \"{start}\": {reason}")]
     Start {

@@ -146,5 +146,6 @@ pub fn coupled_failure(e: CoupledError) -> SimulationError {
     match e {
         CoupledError::QuasiStatic(q) => SimulationError::QuasiStatic(q),
         CoupledError::Invalid(p) => SimulationError::Thermal(p),
+        warm @ CoupledError::Warm { .. } => SimulationError::WarmEquilibrium(warm),
     }
 }

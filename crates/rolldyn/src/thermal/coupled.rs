@@ -38,6 +38,26 @@ pub enum CoupledError {
     /// The quasi-static solve failed.
     #[error(transparent)]
     QuasiStatic(#[from] QuasiStaticError),
+    /// The quasi-static solve failed at a warm pass: the parts' expansion
+    /// has changed the clearance from the one the case gives.
+    #[error(
+        "thermal steady state, pass {pass}: with the hottest part at {:.1} °C the operating diametral clearance is {:.2} µm ({:.2} µm at the reference temperature): {source}",
+        hottest - 273.15,
+        clearance * 1e6,
+        reference_clearance * 1e6
+    )]
+    Warm {
+        /// The pass (1: the first) \[-\].
+        pass: usize,
+        /// The hottest node's temperature \[K\].
+        hottest: f64,
+        /// Equivalent diametral clearance at the pass's temperatures \[m\].
+        clearance: f64,
+        /// The same at the reference temperature \[m\].
+        reference_clearance: f64,
+        /// Why the solve failed.
+        source: QuasiStaticError,
+    },
 }
 
 /// Thermal expansion.
@@ -367,6 +387,16 @@ pub fn coupled_steady(
                     for (t, s) in temperatures.iter_mut().zip(&solved) {
                         *t = 0.5 * (*t + s);
                     }
+                }
+                Err(CoupledError::QuasiStatic(source)) if warm_start.is_some() => {
+                    return Err(CoupledError::Warm {
+                        pass: history.len() + 1,
+                        hottest: temperatures.iter().copied().fold(f64::MIN, f64::max),
+                        clearance: operating_geometry(p.geometry, &p.expansion, &temperatures)
+                            .map_or(f64::NAN, |g| g.equivalent_diametral_clearance()),
+                        reference_clearance: p.geometry.equivalent_diametral_clearance(),
+                        source,
+                    });
                 }
                 Err(e) => return Err(e),
             }
