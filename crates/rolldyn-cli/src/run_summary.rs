@@ -151,6 +151,86 @@ pub struct CreepMeans {
     pub mean_stick_fraction_outer: f64,
 }
 
+impl CreepMeans {
+    /// The means over loaded contacts, `loaded_mean` of a channel suffix.
+    fn of(loaded_mean: &dyn Fn(&str) -> f64) -> Self {
+        Self {
+            mean_creepage_longitudinal_inner: loaded_mean("creepage_longitudinal_inner"),
+            mean_creepage_longitudinal_outer: loaded_mean("creepage_longitudinal_outer"),
+            mean_creepage_lateral_inner: loaded_mean("creepage_lateral_inner"),
+            mean_creepage_lateral_outer: loaded_mean("creepage_lateral_outer"),
+            mean_creepage_spin_inner_1_m: loaded_mean("creepage_spin_inner_1_m"),
+            mean_creepage_spin_outer_1_m: loaded_mean("creepage_spin_outer_1_m"),
+            mean_stick_fraction_inner: loaded_mean("stick_fraction_inner"),
+            mean_stick_fraction_outer: loaded_mean("stick_fraction_outer"),
+        }
+    }
+}
+
+/// The run's energy balance from its accumulators \[J\]: drive and
+/// film work in, dissipation and the mechanical energy's change out.
+struct EnergyBalance {
+    drive: f64,
+    film_work: f64,
+    dissipated: f64,
+    delta_e: f64,
+    /// drive + film − ΔE − dissipated \[J\].
+    imbalance: f64,
+    /// The imbalance over the larger of |drive| and |dissipated|.
+    relative_error: f64,
+}
+
+impl EnergyBalance {
+    fn of(stats: &RunStatistics) -> Self {
+        let drive = stats.last("drive_work_j");
+        let film_work = stats.last("film_work_j");
+        let dissipated = stats.last("dissipated_energy_j");
+        let delta_e = stats.last("mechanical_energy_j") - stats.first("mechanical_energy_j");
+        let imbalance = drive + film_work - delta_e - dissipated;
+        let relative_error = if drive.abs() + dissipated.abs() > 0.0 {
+            imbalance / drive.abs().max(dissipated.abs())
+        } else {
+            0.0
+        };
+        Self {
+            drive,
+            film_work,
+            dissipated,
+            delta_e,
+            imbalance,
+            relative_error,
+        }
+    }
+}
+
+/// The cage speed ratio ω_c/ω_i and the cage's sliding rate
+/// 1 − (ω_c/ω_i)/(pure-rolling ratio), 0 where undefined (ring at rest,
+/// no rolling ratio).
+fn cage_ratios(cage_speed: f64, inner_speed: f64, rolling_ratio: f64) -> (f64, f64) {
+    if inner_speed == 0.0 {
+        return (0.0, 0.0);
+    }
+    let ratio = cage_speed / inner_speed;
+    let sliding = if rolling_ratio > 0.0 {
+        1.0 - ratio / rolling_ratio
+    } else {
+        0.0
+    };
+    (ratio, sliding)
+}
+
+/// The summary's `status` and `error` of how the run ended.
+fn status_of(end: &RunEnd) -> (&'static str, Option<String>) {
+    match end {
+        RunEnd::Completed => ("completed", None),
+        RunEnd::Interrupted { .. } => (
+            "interrupted",
+            Some("stopped by the user (Ctrl-C); the files hold what was computed".to_string()),
+        ),
+        RunEnd::Failed { error } => ("failed", Some(error.to_string())),
+    }
+}
+
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn summarise(
     source: &str,
@@ -172,24 +252,8 @@ pub(crate) fn summarise(
     let rolling_ratio = window.mean("pure_rolling_cage_speed_ratio");
     let balls = g.ball_count;
     let loaded_mean = |suffix: &str| window.loaded_mean(suffix);
-    let drive = stats.last("drive_work_j");
-    let film_work = stats.last("film_work_j");
-    let dissipated = stats.last("dissipated_energy_j");
-    let delta_e = stats.last("mechanical_energy_j") - stats.first("mechanical_energy_j");
-    let imbalance = drive + film_work - delta_e - dissipated;
-    let relative_error = if drive.abs() + dissipated.abs() > 0.0 {
-        imbalance / drive.abs().max(dissipated.abs())
-    } else {
-        0.0
-    };
-    let (status, error) = match end {
-        RunEnd::Completed => ("completed", None),
-        RunEnd::Interrupted { .. } => (
-            "interrupted",
-            Some("stopped by the user (Ctrl-C); the files hold what was computed".to_string()),
-        ),
-        RunEnd::Failed { error } => ("failed", Some(error.to_string())),
-    };
+    let energy = EnergyBalance::of(stats);
+    let (status, error) = status_of(end);
     let signal = window.signal();
     let passages = window.passage_jitter();
     let characteristic = rolldyn::signal::CharacteristicFrequencies::new(
@@ -200,11 +264,7 @@ pub(crate) fn summarise(
         (0.5 * (loaded_mean("contact_angle_inner_deg") + loaded_mean("contact_angle_outer_deg")))
             .to_radians(),
     );
-    let csr = if inner_speed != 0.0 {
-        cage_speed / inner_speed
-    } else {
-        0.0
-    };
+    let (csr, sliding_rate) = cage_ratios(cage_speed, inner_speed, rolling_ratio);
     Summary {
         source: source.to_string(),
         title: case.title.clone(),
@@ -240,11 +300,7 @@ pub(crate) fn summarise(
         pure_rolling_cage_speed_rpm: rolling_ratio * inner_speed,
         cage_speed_ratio: csr,
         pure_rolling_cage_speed_ratio: rolling_ratio,
-        cage_sliding_rate: if rolling_ratio > 0.0 && inner_speed != 0.0 {
-            1.0 - csr / rolling_ratio
-        } else {
-            0.0
-        },
+        cage_sliding_rate: sliding_rate,
         mean_load_inner_n: window.pooled_mean("load_inner_n"),
         max_load_inner_n: window.largest_load("inner"),
         mean_load_outer_n: window.pooled_mean("load_outer_n"),
@@ -253,16 +309,9 @@ pub(crate) fn summarise(
         mean_slide_to_roll_outer: loaded_mean("slide_to_roll_outer"),
         mean_spin_to_roll_inner: loaded_mean("spin_to_roll_inner"),
         mean_spin_to_roll_outer: loaded_mean("spin_to_roll_outer"),
-        creep: stats.has("ball0_stick_fraction_inner").then(|| CreepMeans {
-            mean_creepage_longitudinal_inner: loaded_mean("creepage_longitudinal_inner"),
-            mean_creepage_longitudinal_outer: loaded_mean("creepage_longitudinal_outer"),
-            mean_creepage_lateral_inner: loaded_mean("creepage_lateral_inner"),
-            mean_creepage_lateral_outer: loaded_mean("creepage_lateral_outer"),
-            mean_creepage_spin_inner_1_m: loaded_mean("creepage_spin_inner_1_m"),
-            mean_creepage_spin_outer_1_m: loaded_mean("creepage_spin_outer_1_m"),
-            mean_stick_fraction_inner: loaded_mean("stick_fraction_inner"),
-            mean_stick_fraction_outer: loaded_mean("stick_fraction_outer"),
-        }),
+        creep: stats
+            .has("ball0_stick_fraction_inner")
+            .then(|| CreepMeans::of(&loaded_mean)),
         mean_attitude_deg: window.pooled_mean("attitude_deg"),
         mean_yaw_deg: window.pooled_mean("yaw_deg"),
         max_abs_yaw_deg: window.pooled_max_abs("yaw_deg"),
@@ -286,16 +335,16 @@ pub(crate) fn summarise(
         thermal_coupling: model
             .thermal()
             .map(crate::power_channels::ThermalRunSummary::from),
-        drive_work_j: drive,
-        film_work_j: film_work,
-        dissipated_energy_j: dissipated,
-        mechanical_energy_change_j: delta_e,
-        energy_balance_error_j: imbalance,
-        energy_balance_relative_error: relative_error,
+        drive_work_j: energy.drive,
+        film_work_j: energy.film_work,
+        dissipated_energy_j: energy.dissipated,
+        mechanical_energy_change_j: energy.delta_e,
+        energy_balance_error_j: energy.imbalance,
+        energy_balance_relative_error: energy.relative_error,
         accuracy: crate::accuracy::assess(
-            relative_error,
-            imbalance,
-            drive,
+            energy.relative_error,
+            energy.imbalance,
+            energy.drive,
             settings.integrator,
             settings.relative_tolerance,
             settings.energy_tolerance,
