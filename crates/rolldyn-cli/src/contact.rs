@@ -129,39 +129,10 @@ impl ContactOutput {
     }
 }
 
-/// Evaluates the contact that `args` describe on `case` (its materials,
-/// raceways and lubricant; `args.case` is not read).
-pub fn evaluate(args: &ContactArgs, case: &Case) -> Result<ContactOutput, Failure> {
-    let load = quantity::<Force>("--load", &args.load)?;
-    if load.is_nan() || load < 0.0 {
-        return Err(bad_arg(
-            "--load",
-            &args.load,
-            "a contact load cannot be negative",
-        ));
-    }
-    let speed = args
-        .entrainment_speed
-        .as_ref()
-        .map(|s| {
-            let u = quantity::<Velocity>("--entrainment-speed", s)?;
-            if u >= 0.0 {
-                Ok(u)
-            } else {
-                Err(bad_arg("--entrainment-speed", s, "must not be negative"))
-            }
-        })
-        .transpose()?;
-    if let Some(l) = args.inlet_distance_ratio {
-        Supply::InletDistance(l)
-            .validate()
-            .map_err(|e| bad_arg("--inlet-distance-ratio", &l.to_string(), e.rule))?;
-    }
-    let ep = effective_modulus(
-        &case.materials.ball.material,
-        &case.materials.rings.material,
-    );
-    let explicit = match (&args.radii, &args.ball_on_flat) {
+/// The curvature of an explicit contact (`--radii` or `--ball-on-flat`),
+/// None for the case's raceways.
+fn explicit_curvature(args: &ContactArgs) -> Result<Option<Curvature>, Failure> {
+    Ok(match (&args.radii, &args.ball_on_flat) {
         (Some(_), Some(_)) => {
             return Err(bad_arg(
                 "--radii",
@@ -206,7 +177,94 @@ pub fn evaluate(args: &ContactArgs, case: &Case) -> Result<ContactOutput, Failur
             Some(Curvature::circular(0.5 * d))
         }
         (None, None) => None,
-    };
+    })
+}
+
+/// The films of the raceway contacts of `report` at entrainment speed
+/// `u` \[m/s\] and load \[N\], with the film in series with Hertz.
+fn raceway_films(
+    case: &Case,
+    report: &mut ContactReport,
+    u: f64,
+    load: f64,
+    ep: f64,
+) -> Result<(), Failure> {
+    let lub = lubricant(case)?;
+    let supply = case
+        .lubricant
+        .as_ref()
+        .map_or(Default::default(), |l| l.supply);
+    report.entrainment_speed_m_s = Some(u);
+    for (k, (ring, raceway)) in [
+        (RingKind::Inner, &mut report.inner),
+        (RingKind::Outer, &mut report.outer),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let (Some(b), Some(a), Some(d)) = (
+            raceway.semi_minor_m,
+            raceway.semi_major_m,
+            raceway.approach_m,
+        ) else {
+            continue;
+        };
+        let film = contact_film(
+            &lub,
+            &supply[k],
+            case.surface.composite_roughness(ring),
+            &FilmConditions {
+                entrainment_speed: u,
+                load,
+                rolling_radius: raceway.rolling_radius_m,
+                effective_modulus: ep,
+                ellipticity: a / b,
+                semi_minor: b,
+                ring_speed: 0.0,
+            },
+        );
+        raceway.film = Some(ContactFilmRow::new(&film, u));
+        raceway.series_stiffness_n_per_m = film
+            .stiffness
+            .is_finite()
+            .then(|| lubrication::series_stiffness(hertz_stiffness(load, d), film.stiffness));
+    }
+    Ok(())
+}
+
+/// Evaluates the contact that `args` describe on `case` (its materials,
+/// raceways and lubricant; `args.case` is not read).
+pub fn evaluate(args: &ContactArgs, case: &Case) -> Result<ContactOutput, Failure> {
+    let load = quantity::<Force>("--load", &args.load)?;
+    if load.is_nan() || load < 0.0 {
+        return Err(bad_arg(
+            "--load",
+            &args.load,
+            "a contact load cannot be negative",
+        ));
+    }
+    let speed = args
+        .entrainment_speed
+        .as_ref()
+        .map(|s| {
+            let u = quantity::<Velocity>("--entrainment-speed", s)?;
+            if u >= 0.0 {
+                Ok(u)
+            } else {
+                Err(bad_arg("--entrainment-speed", s, "must not be negative"))
+            }
+        })
+        .transpose()?;
+    if let Some(l) = args.inlet_distance_ratio {
+        Supply::InletDistance(l)
+            .validate()
+            .map_err(|e| bad_arg("--inlet-distance-ratio", &l.to_string(), e.rule))?;
+    }
+    let ep = effective_modulus(
+        &case.materials.ball.material,
+        &case.materials.rings.material,
+    );
+    let explicit = explicit_curvature(args)?;
     match explicit {
         Some(curvature) => {
             explicit_report(case, curvature, ep, load, speed, args.inlet_distance_ratio)
@@ -221,45 +279,7 @@ pub fn evaluate(args: &ContactArgs, case: &Case) -> Result<ContactOutput, Failur
             let angle = parse_angle("--angle", args.angle.as_ref())?;
             let mut report = ContactReport::new(case, load, angle).map_err(Failure::BadInput)?;
             if let Some(u) = speed {
-                let lub = lubricant(case)?;
-                let supply = case
-                    .lubricant
-                    .as_ref()
-                    .map_or(Default::default(), |l| l.supply);
-                report.entrainment_speed_m_s = Some(u);
-                for (k, (ring, raceway)) in [
-                    (RingKind::Inner, &mut report.inner),
-                    (RingKind::Outer, &mut report.outer),
-                ]
-                .into_iter()
-                .enumerate()
-                {
-                    let (Some(b), Some(a), Some(d)) = (
-                        raceway.semi_minor_m,
-                        raceway.semi_major_m,
-                        raceway.approach_m,
-                    ) else {
-                        continue;
-                    };
-                    let film = contact_film(
-                        &lub,
-                        &supply[k],
-                        case.surface.composite_roughness(ring),
-                        &FilmConditions {
-                            entrainment_speed: u,
-                            load,
-                            rolling_radius: raceway.rolling_radius_m,
-                            effective_modulus: ep,
-                            ellipticity: a / b,
-                            semi_minor: b,
-                            ring_speed: 0.0,
-                        },
-                    );
-                    raceway.film = Some(ContactFilmRow::new(&film, u));
-                    raceway.series_stiffness_n_per_m = film.stiffness.is_finite().then(|| {
-                        lubrication::series_stiffness(hertz_stiffness(load, d), film.stiffness)
-                    });
-                }
+                raceway_films(case, &mut report, u, load, ep)?;
             }
             Ok(ContactOutput::Raceways(Box::new(report)))
         }

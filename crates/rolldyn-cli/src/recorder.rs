@@ -126,6 +126,48 @@ fn passage_azimuth(loads: &rolldyn::operating::Loads) -> f64 {
     }
 }
 
+/// The channels of every run, in the time series' order (the power
+/// channels, sensor, spalls and balls follow): time, the rings', cage's and
+/// housing's motion, pocket and peak loads, the energy accumulators.
+const RUN_CHANNELS: [(&str, &str); 36] = [
+    ("time_s", "s"),
+    ("inner_ring_speed_rpm", "rpm"),
+    ("cage_angle_rad", "rad"),
+    ("cage_speed_rpm", "rpm"),
+    ("cage_y_m", "m"),
+    ("cage_z_m", "m"),
+    ("inner_ring_x_m", "m"),
+    ("inner_ring_y_m", "m"),
+    ("inner_ring_z_m", "m"),
+    ("inner_ring_tilt_y_rad", "rad"),
+    ("inner_ring_tilt_z_rad", "rad"),
+    ("inner_ring_velocity_y_m_s", "m/s"),
+    ("inner_ring_velocity_z_m_s", "m/s"),
+    ("outer_ring_y_m", "m"),
+    ("outer_ring_z_m", "m"),
+    ("inner_ring_velocity_x_m_s", "m/s"),
+    ("inner_ring_acceleration_x_m_s2", "m/s^2"),
+    ("inner_ring_acceleration_y_m_s2", "m/s^2"),
+    ("inner_ring_acceleration_z_m_s2", "m/s^2"),
+    ("outer_ring_velocity_y_m_s", "m/s"),
+    ("outer_ring_velocity_z_m_s", "m/s"),
+    ("outer_ring_acceleration_y_m_s2", "m/s^2"),
+    ("outer_ring_acceleration_z_m_s2", "m/s^2"),
+    ("housing_force_y_n", "N"),
+    ("housing_force_z_n", "N"),
+    ("cage_velocity_y_m_s", "m/s"),
+    ("cage_velocity_z_m_s", "m/s"),
+    ("pocket_force_sum_n", "N"),
+    ("pocket_force_max_n", "N"),
+    ("peak_load_inner_n", "N"),
+    ("peak_load_outer_n", "N"),
+    ("drive_work_j", "J"),
+    ("dissipated_energy_j", "J"),
+    ("mechanical_energy_j", "J"),
+    ("film_work_j", "J"),
+    ("pure_rolling_cage_speed_ratio", "1"),
+];
+
 impl Channels {
     /// The channels of `model`'s run (`power_per_ball`: the case's
     /// per-ball power channels) over `duration` at `sample_rate`, recorded
@@ -148,44 +190,7 @@ impl Channels {
         let growing_spalls = model.growing_spall_lengths().count();
         let states = model.layout().len();
         let mut series = TimeSeries::default();
-        for (name, unit) in [
-            ("time_s", "s"),
-            ("inner_ring_speed_rpm", "rpm"),
-            ("cage_angle_rad", "rad"),
-            ("cage_speed_rpm", "rpm"),
-            ("cage_y_m", "m"),
-            ("cage_z_m", "m"),
-            ("inner_ring_x_m", "m"),
-            ("inner_ring_y_m", "m"),
-            ("inner_ring_z_m", "m"),
-            ("inner_ring_tilt_y_rad", "rad"),
-            ("inner_ring_tilt_z_rad", "rad"),
-            ("inner_ring_velocity_y_m_s", "m/s"),
-            ("inner_ring_velocity_z_m_s", "m/s"),
-            ("outer_ring_y_m", "m"),
-            ("outer_ring_z_m", "m"),
-            ("inner_ring_velocity_x_m_s", "m/s"),
-            ("inner_ring_acceleration_x_m_s2", "m/s^2"),
-            ("inner_ring_acceleration_y_m_s2", "m/s^2"),
-            ("inner_ring_acceleration_z_m_s2", "m/s^2"),
-            ("outer_ring_velocity_y_m_s", "m/s"),
-            ("outer_ring_velocity_z_m_s", "m/s"),
-            ("outer_ring_acceleration_y_m_s2", "m/s^2"),
-            ("outer_ring_acceleration_z_m_s2", "m/s^2"),
-            ("housing_force_y_n", "N"),
-            ("housing_force_z_n", "N"),
-            ("cage_velocity_y_m_s", "m/s"),
-            ("cage_velocity_z_m_s", "m/s"),
-            ("pocket_force_sum_n", "N"),
-            ("pocket_force_max_n", "N"),
-            ("peak_load_inner_n", "N"),
-            ("peak_load_outer_n", "N"),
-            ("drive_work_j", "J"),
-            ("dissipated_energy_j", "J"),
-            ("mechanical_energy_j", "J"),
-            ("film_work_j", "J"),
-            ("pure_rolling_cage_speed_ratio", "1"),
-        ] {
+        for (name, unit) in RUN_CHANNELS {
             series.channel(name, unit);
         }
         crate::power_channels::add_channels(&mut series, thermal);

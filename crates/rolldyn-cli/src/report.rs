@@ -589,66 +589,7 @@ impl CheckReport {
             "\nBearing {name} (geometry from {})",
             g.parametrization.replace('_', " ")
         );
-        let mm = |v: f64| v * 1e3;
-        let lines = [
-            (
-                "ball diameter D",
-                format!("{:.4} mm", mm(g.ball_diameter_m)),
-            ),
-            ("number of balls Z", g.ball_count.to_string()),
-            (
-                "pitch diameter d_m",
-                format!("{:.4} mm", mm(g.pitch_diameter_m)),
-            ),
-            (
-                "groove curvature f_i, f_o",
-                format!(
-                    "{:.4}, {:.4} (B = f_i + f_o − 1 = {:.4})",
-                    g.inner_groove_curvature, g.outer_groove_curvature, g.total_curvature
-                ),
-            ),
-            (
-                "diametral clearance P_d",
-                format!("{:.2} µm", g.diametral_clearance_m * 1e6),
-            ),
-            ("axial play", format!("{:.2} µm", g.axial_play_m * 1e6)),
-            (
-                "free contact angle",
-                format!("{:.3}°", g.free_contact_angle_deg),
-            ),
-            (
-                "nominal contact angle",
-                format!("{:.3}°", g.nominal_contact_angle_deg),
-            ),
-            (
-                "raceway diameters d_i, d_o",
-                format!(
-                    "{:.4} mm, {:.4} mm",
-                    mm(g.inner_raceway_diameter_m),
-                    mm(g.outer_raceway_diameter_m)
-                ),
-            ),
-            (
-                "inner groove centre (r, x)",
-                format!(
-                    "{:.4} mm, {:+.4} mm",
-                    mm(g.inner_groove_centre_radius_m),
-                    mm(g.inner_groove_centre_axial_m)
-                ),
-            ),
-            (
-                "outer groove centre (r, x)",
-                format!(
-                    "{:.4} mm, {:+.4} mm",
-                    mm(g.outer_groove_centre_radius_m),
-                    mm(g.outer_groove_centre_axial_m)
-                ),
-            ),
-            ("ball mass", format!("{:.4} g", g.ball_mass_kg * 1e3)),
-        ];
-        for (k, v) in lines {
-            let _ = writeln!(out, "  {k:<28} {v}");
-        }
+        geometry_text(&mut out, g);
         let _ = writeln!(out, "\nMaterials");
         for (role, m) in [
             ("balls", &self.ball_material),
@@ -681,25 +622,7 @@ impl CheckReport {
             self.force_x_n, self.force_y_n, self.force_z_n, self.moment_y_n_m, self.moment_z_n_m
         );
         if let Some(a) = &self.arrangement {
-            let preload = match (a.preload_n, a.preload_displacement_m) {
-                (Some(f), _) => format!("preload {f} N at rest"),
-                (_, Some(d)) => format!("preload displacement {:.3} µm", d * 1e6),
-                _ => "no preload".into(),
-            };
-            let unbalance = match (a.unbalance_kg_m, a.unbalance_position_m) {
-                (Some(u), Some(x)) => format!(
-                    "; a rotating unbalance of {:.3} g·mm at {:+.1} mm (in runs)",
-                    u * 1e6,
-                    x * 1e3
-                ),
-                _ => String::new(),
-            };
-            let _ = writeln!(
-                out,
-                "Bearing set ([arrangement], docs/systems.md): {}, pitch planes {:.2} mm apart, {preload}; the loads act on the shaft between the bearings{unbalance}",
-                a.kind,
-                a.spacing_m * 1e3
-            );
+            arrangement_text(&mut out, a);
         }
         if let Some(f) = &self.frequencies {
             let _ = writeln!(out);
@@ -733,4 +656,91 @@ impl CheckReport {
         }
         out
     }
+}
+
+/// The geometry lines of `rolldyn check`.
+fn geometry_text(out: &mut String, g: &GeometryReport) {
+    let mm = |v: f64| v * 1e3;
+    let lines = [
+        (
+            "ball diameter D",
+            format!("{:.4} mm", mm(g.ball_diameter_m)),
+        ),
+        ("number of balls Z", g.ball_count.to_string()),
+        (
+            "pitch diameter d_m",
+            format!("{:.4} mm", mm(g.pitch_diameter_m)),
+        ),
+        (
+            "groove curvature f_i, f_o",
+            format!(
+                "{:.4}, {:.4} (B = f_i + f_o − 1 = {:.4})",
+                g.inner_groove_curvature, g.outer_groove_curvature, g.total_curvature
+            ),
+        ),
+        (
+            "diametral clearance P_d",
+            format!("{:.2} µm", g.diametral_clearance_m * 1e6),
+        ),
+        ("axial play", format!("{:.2} µm", g.axial_play_m * 1e6)),
+        (
+            "free contact angle",
+            format!("{:.3}°", g.free_contact_angle_deg),
+        ),
+        (
+            "nominal contact angle",
+            format!("{:.3}°", g.nominal_contact_angle_deg),
+        ),
+        (
+            "raceway diameters d_i, d_o",
+            format!(
+                "{:.4} mm, {:.4} mm",
+                mm(g.inner_raceway_diameter_m),
+                mm(g.outer_raceway_diameter_m)
+            ),
+        ),
+        (
+            "inner groove centre (r, x)",
+            format!(
+                "{:.4} mm, {:+.4} mm",
+                mm(g.inner_groove_centre_radius_m),
+                mm(g.inner_groove_centre_axial_m)
+            ),
+        ),
+        (
+            "outer groove centre (r, x)",
+            format!(
+                "{:.4} mm, {:+.4} mm",
+                mm(g.outer_groove_centre_radius_m),
+                mm(g.outer_groove_centre_axial_m)
+            ),
+        ),
+        ("ball mass", format!("{:.4} g", g.ball_mass_kg * 1e3)),
+    ];
+    for (k, v) in lines {
+        let _ = writeln!(out, "  {k:<28} {v}");
+    }
+}
+
+/// The bearing set's line of `rolldyn check`.
+fn arrangement_text(out: &mut String, a: &CheckArrangement) {
+    let preload = match (a.preload_n, a.preload_displacement_m) {
+        (Some(f), _) => format!("preload {f} N at rest"),
+        (_, Some(d)) => format!("preload displacement {:.3} µm", d * 1e6),
+        _ => "no preload".into(),
+    };
+    let unbalance = match (a.unbalance_kg_m, a.unbalance_position_m) {
+        (Some(u), Some(x)) => format!(
+            "; a rotating unbalance of {:.3} g·mm at {:+.1} mm (in runs)",
+            u * 1e6,
+            x * 1e3
+        ),
+        _ => String::new(),
+    };
+    let _ = writeln!(
+        out,
+        "Bearing set ([arrangement], docs/systems.md): {}, pitch planes {:.2} mm apart, {preload}; the loads act on the shaft between the bearings{unbalance}",
+        a.kind,
+        a.spacing_m * 1e3
+    );
 }
