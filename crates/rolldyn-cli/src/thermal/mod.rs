@@ -64,15 +64,24 @@ pub struct ThermalReport {
     pub warnings: Vec<String>,
 }
 
-/// The warnings of a thermal steady state: a part beyond the temperature
-/// no steel bearing runs at, and a bearing whose heat leaves only by the
-/// housing and shaft to still air (no oil flow).
+/// The warnings of a thermal steady state: an iteration that did not
+/// converge (`history_k`: each pass's largest change), a part beyond the
+/// temperature no steel bearing runs at, and a bearing whose heat leaves
+/// only by the housing and shaft to still air (no oil flow).
 pub fn warnings<'a>(
+    (converged, history_k): (bool, &[f64]),
     temperatures_c: impl Iterator<Item = (&'a str, f64)>,
     heat_w: f64,
     oil_flow_m3_s: f64,
 ) -> Vec<String> {
     let mut warnings = Vec::new();
+    if !converged {
+        warnings.push(format!(
+            "not converged: after {} passes the temperatures still change by {:.3e} K a pass (the tolerance is 0.01 K); they are the last pass's",
+            history_k.len(),
+            history_k.last().copied().unwrap_or(f64::NAN)
+        ));
+    }
     if let Some(limit) = crate::run_options::temperature_limit(temperatures_c) {
         warnings.push(format!(
             "{limit}: the steady state is outside the model (oil and steel data); cool the bearing (thermal.oil_flow, thermal.housing_convection) or lower the speed or load"
@@ -199,6 +208,7 @@ fn bearing_report(args: &ThermalArgs, case: &Case) -> Result<ThermalReport, Fail
     let temperatures_c = temperatures(&s.thermal.temperatures);
     Ok(ThermalReport {
         warnings: warnings(
+            (s.converged, &s.history),
             temperatures_c.iter().map(|(n, t)| (*n, *t)),
             s.power.total(),
             inputs.oil_flow,
@@ -279,5 +289,25 @@ impl ThermalReport {
             }
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::warnings;
+
+    #[test]
+    fn warnings_say_what_makes_a_steady_state_doubtful() {
+        let cool = [("ball", 60.0), ("outer_ring", 55.0)];
+        // Converged, cool, with an oil flow: nothing to say.
+        assert!(warnings((true, &[1.0, 0.001]), cool.into_iter(), 40.0, 1e-5).is_empty());
+        let w = warnings((false, &[3.0, 2.5]), cool.into_iter(), 40.0, 1e-5);
+        assert_eq!(w.len(), 1);
+        assert!(w[0].starts_with("not converged: after 2 passes"), "{w:?}");
+        let w = warnings((true, &[0.001]), [("ball", 400.0)].into_iter(), 2e3, 0.0);
+        assert_eq!(w.len(), 2, "{w:?}");
+        assert!(w[0].contains("ball is at 400.0 °C") && w[1].contains("no oil flow"));
+        // No heat: nothing leaves by any path worth a warning.
+        assert!(warnings((true, &[0.0]), cool.into_iter(), 0.0, 0.0).is_empty());
     }
 }

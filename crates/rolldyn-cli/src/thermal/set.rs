@@ -132,6 +132,7 @@ fn build(
     }
     let heat_generated_w = bearings.iter().map(|b| b.heat_generated_w).sum();
     let warnings = super::warnings(
+        (hot.converged, &hot.history),
         bearings
             .iter()
             .flat_map(|b| b.temperatures_c.iter().map(|(n, t)| (*n, *t))),
