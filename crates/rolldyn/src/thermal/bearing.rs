@@ -215,10 +215,12 @@ fn positive(field: &'static str, v: f64) -> Result<(), InvalidParameter> {
     }
 }
 
-impl BearingThermal {
-    /// Builds the network for `inputs` and `heat`.
-    pub fn new(inputs: &ThermalInputs, heat: &HeatSources) -> Result<Self, InvalidParameter> {
-        let i = inputs;
+impl ThermalInputs {
+    /// Refuses dimensions and oil data the network cannot take: every
+    /// size, property and temperature positive, and the parts nested
+    /// (bore < d_m − D < d_m + D < outside diameter < housing diameter).
+    fn validate(&self) -> Result<(), InvalidParameter> {
+        let i = self;
         for (field, v) in [
             ("bore", i.bore),
             ("outside_diameter", i.outside_diameter),
@@ -235,16 +237,45 @@ impl BearingThermal {
         ] {
             positive(field, v)?;
         }
-        let (d, dm, big_d) = (i.ball_diameter, i.pitch_diameter, i.outside_diameter);
-        let inner_race = dm - d;
-        let outer_race = dm + d;
-        if !(i.bore < inner_race && outer_race < big_d && big_d < i.housing_diameter) {
+        let (d, dm) = (i.ball_diameter, i.pitch_diameter);
+        if !(i.bore < dm - d
+            && dm + d < i.outside_diameter
+            && i.outside_diameter < i.housing_diameter)
+        {
             return Err(InvalidParameter::new(
                 "housing_diameter",
                 i.housing_diameter,
                 "need bore < d_m − D < d_m + D < outside diameter < housing diameter",
             ));
         }
+        Ok(())
+    }
+
+    /// The convection coefficient of the balls and ring lands to the oil
+    /// \[W/(m²K)\]: `oil_convection`, else the flat-plate coefficient at
+    /// the cage's pitch surface speed over the pitch circumference.
+    fn oil_convection_at(&self, cage_speed: f64) -> f64 {
+        let i = self;
+        i.oil_convection.unwrap_or_else(|| {
+            let nu = i.oil_kinematic_viscosity;
+            flat_plate_coefficient(
+                i.oil_conductivity,
+                nu,
+                nu * i.oil_density * i.oil_specific_heat / i.oil_conductivity,
+                cage_speed * 0.5 * i.pitch_diameter,
+                PI * i.pitch_diameter,
+            )
+        })
+    }
+}
+
+impl BearingThermal {
+    /// Builds the network for `inputs` and `heat`.
+    pub fn new(inputs: &ThermalInputs, heat: &HeatSources) -> Result<Self, InvalidParameter> {
+        let i = inputs;
+        i.validate()?;
+        let (d, dm, big_d) = (i.ball_diameter, i.pitch_diameter, i.outside_diameter);
+        let (inner_race, outer_race) = (dm - d, dm + d);
         let z = i.ball_count as f64;
         let mut net = ThermalNetwork::default();
         let annulus = |d1: f64, d2: f64, l: f64| PI / 4.0 * (d2 * d2 - d1 * d1) * l;
@@ -327,16 +358,7 @@ impl BearingThermal {
             net.resistance(shaft, ambient, convection(i.shaft_convection, shaft_area));
         }
         // Convection to the oil: balls, and the ring lands over the width.
-        let oil_h = i.oil_convection.unwrap_or_else(|| {
-            let nu = i.oil_kinematic_viscosity;
-            flat_plate_coefficient(
-                i.oil_conductivity,
-                nu,
-                nu * i.oil_density * i.oil_specific_heat / i.oil_conductivity,
-                heat.cage_speed * 0.5 * dm,
-                PI * dm,
-            )
-        });
+        let oil_h = i.oil_convection_at(heat.cage_speed);
         if oil_h > 0.0 {
             net.resistance(ball, oil, convection(oil_h, z * PI * d * d));
             net.resistance(
