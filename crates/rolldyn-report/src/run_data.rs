@@ -131,6 +131,28 @@ pub fn read_for_plots(path: &Path, window: [f64; 2]) -> Result<PlotData, rolldyn
     read_with_orbit(path, window, ["cage_y_m", "cage_z_m"])
 }
 
+/// The columns of the energy balance (drive work, film work if any,
+/// dissipated and mechanical energy), with its error channel added to
+/// `series`, if the record has them. The error is computed row by row,
+/// before any reduction (extremes of its terms at different instants
+/// would not difference to it).
+fn balance_columns(
+    index: &dyn Fn(&str) -> Option<usize>,
+    series: &mut TimeSeries,
+) -> Option<(usize, Option<usize>, usize, usize)> {
+    match (
+        index("drive_work_j"),
+        index("dissipated_energy_j"),
+        index("mechanical_energy_j"),
+    ) {
+        (Some(w), Some(d), Some(e)) => {
+            series.channel(BALANCE_ERROR, "J");
+            Some((w, index("film_work_j"), d, e))
+        }
+        _ => None,
+    }
+}
+
 /// [`read_for_plots`] with the orbit of the channels `orbit` (y, z).
 pub fn read_with_orbit(
     path: &Path,
@@ -148,20 +170,7 @@ pub fn read_with_orbit(
         series.channel(names[i].clone(), all.units()[i].clone());
     }
     let index = |name: &str| names.iter().position(|n| n == name);
-    // The energy balance's error is computed row by row, before any
-    // reduction (extremes of its terms at different instants would not
-    // difference to it).
-    let balance = match (
-        index("drive_work_j"),
-        index("dissipated_energy_j"),
-        index("mechanical_energy_j"),
-    ) {
-        (Some(w), Some(d), Some(e)) => {
-            series.channel(BALANCE_ERROR, "J");
-            Some((w, index("film_work_j"), d, e))
-        }
-        _ => None,
-    };
+    let balance = balance_columns(&index, &mut series);
     let width = series.width();
     let mut first_energy = None;
     let time = index("time_s");

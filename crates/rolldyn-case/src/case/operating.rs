@@ -37,26 +37,7 @@ pub(super) fn operating(op: &RawOperating) -> Result<Operating, Invalid> {
             check_force(key, q.si)?;
         }
     }
-    let speed = match (&op.speed, &op.speed_profile) {
-        (Some(_), Some(_)) => {
-            return Err(Invalid::new(
-                "operating.speed_profile",
-                None,
-                "give either operating.speed (constant) or operating.speed_profile, not both",
-            ));
-        }
-        (Some(s), None) => Some(SpeedProfile::Constant(s.si)),
-        (None, Some(points)) => Some(
-            SpeedProfile::piecewise_linear(
-                points.iter().map(|p| (p.time.si, p.speed.si)).collect(),
-            )
-            .map_err(|(i, e)| {
-                let v = points.get(i).map(|p| p.time.to_string());
-                Invalid::new(format!("operating.speed_profile[{i}].time"), v, e.rule)
-            })?,
-        ),
-        (None, None) => None,
-    };
+    let speed = speed(op)?;
     let force = |q: &Option<Quantity<crate::units::Force>>| q.as_ref().map_or(0.0, |q| q.si);
     let moment = |q: &Option<Quantity<crate::units::Moment>>| q.as_ref().map_or(0.0, |q| q.si);
     let mut loads = Loads {
@@ -140,6 +121,30 @@ pub(super) fn operating(op: &RawOperating) -> Result<Operating, Invalid> {
         prescribed_displacement: prescribed(op)?,
         drive: drive(op)?,
         unbalance: unbalance(op)?,
+    })
+}
+
+/// The inner-ring speed of `[operating]`: constant, a profile or none.
+fn speed(op: &RawOperating) -> Result<Option<SpeedProfile>, Invalid> {
+    Ok(match (&op.speed, &op.speed_profile) {
+        (Some(_), Some(_)) => {
+            return Err(Invalid::new(
+                "operating.speed_profile",
+                None,
+                "give either operating.speed (constant) or operating.speed_profile, not both",
+            ));
+        }
+        (Some(s), None) => Some(SpeedProfile::Constant(s.si)),
+        (None, Some(points)) => Some(
+            SpeedProfile::piecewise_linear(
+                points.iter().map(|p| (p.time.si, p.speed.si)).collect(),
+            )
+            .map_err(|(i, e)| {
+                let v = points.get(i).map(|p| p.time.to_string());
+                Invalid::new(format!("operating.speed_profile[{i}].time"), v, e.rule)
+            })?,
+        ),
+        (None, None) => None,
     })
 }
 

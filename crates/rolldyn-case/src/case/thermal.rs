@@ -96,31 +96,17 @@ fn positive_or<D: Dimension>(
     Ok(checked(key, q, positive)?.unwrap_or(default))
 }
 
-pub(super) fn thermal(t: &RawThermal, ball_material: &str) -> Result<Thermal, Invalid> {
-    if t.run_start.is_some() && !t.run_coupling.unwrap_or(false) {
-        return Err(Invalid::new(
-            "thermal.run_start",
-            None,
-            "is used only with thermal.run_coupling = true",
-        ));
-    }
-    if t.update_interval.is_some() && !t.run_coupling.unwrap_or(false) {
-        return Err(Invalid::new(
-            "thermal.update_interval",
-            t.update_interval.as_ref().map(|q| q.to_string()),
-            "is used only with thermal.run_coupling = true",
-        ));
-    }
-    let temperature = |key: &str, q| {
-        checked(key, q, |v| {
-            if v > 0.0 {
-                Ok(())
-            } else {
-                Err("must be above absolute zero".into())
-            }
-        })
-    };
-    let ceramic = ball_material == "silicon_nitride";
+/// The rings', balls' and housing's thermal properties (steel, or
+/// silicon nitride balls), changed by the keys that give them, and the
+/// balls' default expansion coefficient.
+struct Solids {
+    ring: Solid,
+    ball: Solid,
+    housing: Solid,
+    ball_expansion: f64,
+}
+
+fn solids(t: &RawThermal, ceramic: bool) -> Result<Solids, Invalid> {
     let steel = Solid::STEEL;
     let ring = Solid {
         conductivity: positive_or(
@@ -153,6 +139,44 @@ pub(super) fn thermal(t: &RawThermal, ball_material: &str) -> Result<Thermal, In
         )?,
         ..steel
     };
+    Ok(Solids {
+        ring,
+        ball,
+        housing,
+        ball_expansion: a_b,
+    })
+}
+
+pub(super) fn thermal(t: &RawThermal, ball_material: &str) -> Result<Thermal, Invalid> {
+    if t.run_start.is_some() && !t.run_coupling.unwrap_or(false) {
+        return Err(Invalid::new(
+            "thermal.run_start",
+            None,
+            "is used only with thermal.run_coupling = true",
+        ));
+    }
+    if t.update_interval.is_some() && !t.run_coupling.unwrap_or(false) {
+        return Err(Invalid::new(
+            "thermal.update_interval",
+            t.update_interval.as_ref().map(|q| q.to_string()),
+            "is used only with thermal.run_coupling = true",
+        ));
+    }
+    let temperature = |key: &str, q| {
+        checked(key, q, |v| {
+            if v > 0.0 {
+                Ok(())
+            } else {
+                Err("must be above absolute zero".into())
+            }
+        })
+    };
+    let Solids {
+        ring,
+        ball,
+        housing,
+        ball_expansion,
+    } = solids(t, ball_material == "silicon_nitride")?;
     let ambient =
         temperature("thermal.ambient_temperature", &t.ambient_temperature)?.unwrap_or(293.15);
     let ring_expansion = checked(
@@ -216,7 +240,7 @@ pub(super) fn thermal(t: &RawThermal, ball_material: &str) -> Result<Thermal, In
                 &t.ball_expansion,
                 super::non_negative,
             )?
-            .unwrap_or(a_b),
+            .unwrap_or(ball_expansion),
             reference_temperature: temperature(
                 "thermal.reference_temperature",
                 &t.reference_temperature,
