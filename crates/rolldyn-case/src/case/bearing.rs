@@ -46,42 +46,15 @@ fn groove(
     }
 }
 
-pub(super) fn bearing(b: &RawBearing, fits: Option<&RawFits>) -> Result<Bearing, Invalid> {
-    let d = b.ball_diameter.as_ref().ok_or_else(|| {
-        Invalid::missing(
-            "bearing.ball_diameter",
-            "ball diameter D, e.g. \"6.35 mm\" (or give bearing.preset)",
-        )
-    })?;
-    let z = b
-        .ball_count
-        .ok_or_else(|| Invalid::missing("bearing.ball_count", "number of balls Z"))?;
-    if z < 3 {
-        return Err(Invalid::new(
-            "bearing.ball_count",
-            Some(z.to_string()),
-            "a bearing needs at least 3 balls",
-        ));
-    }
-    let (fi, fi_form) = groove(
-        "inner",
-        b.inner_groove_curvature,
-        &b.inner_groove_radius,
-        d.si,
-    )?;
-    let (fo, fo_form) = groove(
-        "outer",
-        b.outer_groove_curvature,
-        &b.outer_groove_radius,
-        d.si,
-    )?;
-
+/// The clearance parametrization of `[bearing]`: exactly one of the free
+/// contact angle, the diametral clearance or both raceway diameters.
+fn clearance(b: &RawBearing) -> Result<Clearance, Invalid> {
     let given: Vec<&[&str]> = PARAMETRIZATIONS
         .iter()
         .copied()
         .filter(|keys| keys.iter().any(|k| param_value(b, k).is_some()))
         .collect();
-    let clearance = match given.as_slice() {
+    Ok(match given.as_slice() {
         [] => {
             return Err(Invalid::missing(
                 "bearing.free_contact_angle",
@@ -133,7 +106,70 @@ pub(super) fn bearing(b: &RawBearing, fits: Option<&RawFits>) -> Result<Bearing,
                 ),
             ));
         }
+    })
+}
+
+/// A geometry refusal as the case key the user wrote: a groove given by
+/// its radius named by it, the value as written.
+fn geometry_error(
+    b: &RawBearing,
+    e: rolldyn::error::InvalidParameter,
+    fi_form: &str,
+    fo_form: &str,
+) -> Invalid {
+    let key = match (e.field, fi_form, fo_form) {
+        ("inner_groove_curvature", "radius", _) => "inner_groove_radius",
+        ("outer_groove_curvature", _, "radius") => "outer_groove_radius",
+        (f, _, _) => f,
     };
+    let value = match key {
+        "ball_diameter" => text(&b.ball_diameter),
+        "pitch_diameter" => text(&b.pitch_diameter),
+        "inner_groove_radius" => text(&b.inner_groove_radius),
+        "outer_groove_radius" => text(&b.outer_groove_radius),
+        "free_contact_angle" => text(&b.free_contact_angle),
+        "diametral_clearance" => text(&b.diametral_clearance),
+        "inner_raceway_diameter" => text(&b.inner_raceway_diameter),
+        "outer_raceway_diameter" => text(&b.outer_raceway_diameter),
+        "ball_count" => b.ball_count.map(|z| z.to_string()),
+        "inner_groove_curvature" => b.inner_groove_curvature.map(|f| f.to_string()),
+        "outer_groove_curvature" => b.outer_groove_curvature.map(|f| f.to_string()),
+        _ => Some(e.value.clone()),
+    };
+    Invalid::new(format!("bearing.{key}"), value, e.rule)
+}
+
+pub(super) fn bearing(b: &RawBearing, fits: Option<&RawFits>) -> Result<Bearing, Invalid> {
+    let d = b.ball_diameter.as_ref().ok_or_else(|| {
+        Invalid::missing(
+            "bearing.ball_diameter",
+            "ball diameter D, e.g. \"6.35 mm\" (or give bearing.preset)",
+        )
+    })?;
+    let z = b
+        .ball_count
+        .ok_or_else(|| Invalid::missing("bearing.ball_count", "number of balls Z"))?;
+    if z < 3 {
+        return Err(Invalid::new(
+            "bearing.ball_count",
+            Some(z.to_string()),
+            "a bearing needs at least 3 balls",
+        ));
+    }
+    let (fi, fi_form) = groove(
+        "inner",
+        b.inner_groove_curvature,
+        &b.inner_groove_radius,
+        d.si,
+    )?;
+    let (fo, fo_form) = groove(
+        "outer",
+        b.outer_groove_curvature,
+        &b.outer_groove_radius,
+        d.si,
+    )?;
+
+    let clearance = clearance(b)?;
     let pitch = match clearance {
         Clearance::RacewayDiameters { .. } => 0.0,
         _ => {
@@ -168,28 +204,8 @@ pub(super) fn bearing(b: &RawBearing, fits: Option<&RawFits>) -> Result<Bearing,
                 .as_ref()
                 .is_some_and(|f| f.diametral_clearance_mounted_m < 0.0),
     };
-    let geometry = BearingGeometry::new(&spec).map_err(|e| {
-        let key = match (e.field, fi_form, fo_form) {
-            ("inner_groove_curvature", "radius", _) => "inner_groove_radius",
-            ("outer_groove_curvature", _, "radius") => "outer_groove_radius",
-            (f, _, _) => f,
-        };
-        let value = match key {
-            "ball_diameter" => text(&b.ball_diameter),
-            "pitch_diameter" => text(&b.pitch_diameter),
-            "inner_groove_radius" => text(&b.inner_groove_radius),
-            "outer_groove_radius" => text(&b.outer_groove_radius),
-            "free_contact_angle" => text(&b.free_contact_angle),
-            "diametral_clearance" => text(&b.diametral_clearance),
-            "inner_raceway_diameter" => text(&b.inner_raceway_diameter),
-            "outer_raceway_diameter" => text(&b.outer_raceway_diameter),
-            "ball_count" => b.ball_count.map(|z| z.to_string()),
-            "inner_groove_curvature" => b.inner_groove_curvature.map(|f| f.to_string()),
-            "outer_groove_curvature" => b.outer_groove_curvature.map(|f| f.to_string()),
-            _ => Some(e.value.clone()),
-        };
-        Invalid::new(format!("bearing.{key}"), value, e.rule)
-    })?;
+    let geometry =
+        BearingGeometry::new(&spec).map_err(|e| geometry_error(b, e, fi_form, fo_form))?;
     Ok(Bearing {
         preset: b.preset.clone(),
         designation: b.designation.clone(),
