@@ -361,46 +361,59 @@ pub fn check_force(key: &str, v: f64) -> Result<(), Invalid> {
     }
 }
 
+/// The normal force law of `[model]` and its impact-speed floor \[m/s\].
+fn normal_law(raw: &RawCase) -> Result<(NormalForceLaw, f64), Invalid> {
+    let normal_law = raw
+        .model
+        .normal_law
+        .map_or(NormalForceLaw::MATERIAL, |c| c.0);
+    normal_law.validate().map_err(|e| {
+        Invalid::new(
+            format!("model.normal_law.{}", e.field),
+            Some(e.value),
+            e.rule,
+        )
+    })?;
+    let impact_speed_floor = checked(
+        "model.impact_speed_floor",
+        &raw.model.impact_speed_floor,
+        positive,
+    )?
+    .unwrap_or(DEFAULT_IMPACT_SPEED_FLOOR);
+    Ok((normal_law, impact_speed_floor))
+}
+
+/// The `[shaft]` of a case, refused beside an `[arrangement]` or the
+/// case's own `[fits]`.
+fn shaft(raw: &RawCase, arrangement: bool) -> Result<Option<shaft::Shaft>, Invalid> {
+    let shaft = shaft::shaft(&raw.shaft)?;
+    if shaft.is_some() && arrangement {
+        return Err(Invalid::new(
+            "shaft",
+            None,
+            "give either [arrangement] (a matched set of the case's bearing) or [shaft] (presets at positions), not both",
+        ));
+    }
+    if shaft.is_some() && raw.fits.is_some() {
+        return Err(Invalid::new(
+            "fits",
+            None,
+            "[fits] applies to the case's one bearing; give each shaft bearing its own as [shaft.bearings.fits] (the same keys)",
+        ));
+    }
+    Ok(shaft)
+}
+
 impl Case {
     /// Validates a raw case (already merged with its preset and overrides).
     pub fn from_raw(raw: &RawCase) -> Result<Self, Invalid> {
         let operating = operating::operating(&raw.operating)?;
-        let normal_law = raw
-            .model
-            .normal_law
-            .map_or(NormalForceLaw::MATERIAL, |c| c.0);
-        normal_law.validate().map_err(|e| {
-            Invalid::new(
-                format!("model.normal_law.{}", e.field),
-                Some(e.value),
-                e.rule,
-            )
-        })?;
-        let impact_speed_floor = checked(
-            "model.impact_speed_floor",
-            &raw.model.impact_speed_floor,
-            positive,
-        )?
-        .unwrap_or(DEFAULT_IMPACT_SPEED_FLOOR);
+        let (normal_law, impact_speed_floor) = normal_law(raw)?;
         let solver = solver::solver(raw)?;
         let traction_integration = traction::integration(raw.model.traction_integration)?;
         let bearing = bearing(&raw.bearing, raw.fits.as_ref())?;
         let arrangement = arrangement::arrangement(&raw.arrangement, bearing.width)?;
-        let shaft = shaft::shaft(&raw.shaft)?;
-        if shaft.is_some() && arrangement.is_some() {
-            return Err(Invalid::new(
-                "shaft",
-                None,
-                "give either [arrangement] (a matched set of the case's bearing) or [shaft] (presets at positions), not both",
-            ));
-        }
-        if shaft.is_some() && raw.fits.is_some() {
-            return Err(Invalid::new(
-                "fits",
-                None,
-                "[fits] applies to the case's one bearing; give each shaft bearing its own as [shaft.bearings.fits] (the same keys)",
-            ));
-        }
+        let shaft = shaft(raw, arrangement.is_some())?;
         let lubricant = raw
             .lubricant
             .as_ref()
