@@ -400,6 +400,76 @@ fn base_bearing(
     }
 }
 
+/// A `[shaft]` system names its bearings (presets, catalogue or inline
+/// bearings); without a `[bearing]` of its own, the first of them stands
+/// in for the case's bearing (inserted into `table`). The key the
+/// bearing's errors are named by.
+fn shaft_bearing_stand_in(table: &mut Table) -> &'static str {
+    let mut bearing_key = "bearing";
+    if !table.contains_key("bearing") {
+        let first = table
+            .get("shaft")
+            .and_then(|s| s.get("bearings"))
+            .and_then(|b| b.as_array())
+            .and_then(|b| b.first())
+            .and_then(|b| b.as_table());
+        if let Some(first) = first {
+            let bearing: Table = match first.get("bearing").and_then(|b| b.as_table()) {
+                // An inline bearing stands in as it is.
+                Some(inline) => inline.clone(),
+                None => ["preset", "catalogue", "clearance_group"]
+                    .iter()
+                    .filter_map(|k| first.get(*k).map(|v| (k.to_string(), v.clone())))
+                    .collect(),
+            };
+            if !bearing.is_empty() {
+                table.insert("bearing".into(), Value::Table(bearing));
+                bearing_key = "shaft.bearings[0]";
+            }
+        }
+    }
+    bearing_key
+}
+
+/// The case `table` laid over the preset or catalogue bearing
+/// `base_text` (named `name`): the base's case sections, its assumptions
+/// on keys the case does not set, then the case's own keys.
+fn on_base(
+    table: &Table,
+    name: &str,
+    base_text: &str,
+    sources: &Sources,
+    bearing_key: &str,
+    displaced: &mut Vec<String>,
+) -> Result<Table, CaseError> {
+    let key = Some(bearing_key.to_string());
+    let base_table: Table = toml::from_str(base_text)
+        .map_err(|e| sources.error(key.clone(), None, format!("{name} does not parse: {e}")))?;
+    let mut merged = Table::new();
+    for section in PRESET_SECTIONS {
+        if let Some(v) = base_table.get(section) {
+            merged.insert(section.to_string(), v.clone());
+        }
+    }
+    let mut user_leaves = Vec::new();
+    leaf_paths(table, "", &mut user_leaves);
+    if let Some(Value::Table(assumed)) = base_table.get("assumptions") {
+        let inherited: Table = assumed
+            .iter()
+            .filter(|(k, _)| {
+                PRESET_SECTIONS
+                    .iter()
+                    .any(|s| k.starts_with(&format!("{s}.")))
+            })
+            .filter(|(k, _)| !user_leaves.contains(k))
+            .map(|(k, v)| (k.clone(), v.clone()))
+            .collect();
+        merged.insert("assumptions".into(), Value::Table(inherited));
+    }
+    overlay(&mut merged, table, "", displaced);
+    Ok(merged)
+}
+
 /// Loads and validates a case from `text` (named `source_name` in messages),
 /// applying `overrides` in order.
 pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Result<Case, CaseError> {
@@ -452,58 +522,16 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
             .insert(o.key.clone(), (o.text.clone(), o.value.to_string()));
     }
 
-    // A `[shaft]` system names its bearings (presets, catalogue or inline
-    // bearings); without a `[bearing]` of its own, the first of them
-    // stands in for the case's bearing.
-    let mut bearing_key = "bearing";
-    if !table.contains_key("bearing") {
-        let first = table
-            .get("shaft")
-            .and_then(|s| s.get("bearings"))
-            .and_then(|b| b.as_array())
-            .and_then(|b| b.first())
-            .and_then(|b| b.as_table());
-        if let Some(first) = first {
-            let bearing: Table = match first.get("bearing").and_then(|b| b.as_table()) {
-                // An inline bearing stands in as it is.
-                Some(inline) => inline.clone(),
-                None => ["preset", "catalogue", "clearance_group"]
-                    .iter()
-                    .filter_map(|k| first.get(*k).map(|v| (k.to_string(), v.clone())))
-                    .collect(),
-            };
-            if !bearing.is_empty() {
-                table.insert("bearing".into(), Value::Table(bearing));
-                bearing_key = "shaft.bearings[0]";
-            }
-        }
-    }
+    let bearing_key = shaft_bearing_stand_in(&mut table);
     if let Some((name, base_text)) = base_bearing(&table, &sources, bearing_key)? {
-        let key = Some(bearing_key.to_string());
-        let base_table: Table = toml::from_str(&base_text)
-            .map_err(|e| sources.error(key.clone(), None, format!("{name} does not parse: {e}")))?;
-        let mut merged = Table::new();
-        for section in PRESET_SECTIONS {
-            if let Some(v) = base_table.get(section) {
-                merged.insert(section.to_string(), v.clone());
-            }
-        }
-        let mut user_leaves = Vec::new();
-        leaf_paths(&table, "", &mut user_leaves);
-        if let Some(Value::Table(assumed)) = base_table.get("assumptions") {
-            let inherited: Table = assumed
-                .iter()
-                .filter(|(k, _)| {
-                    PRESET_SECTIONS
-                        .iter()
-                        .any(|s| k.starts_with(&format!("{s}.")))
-                })
-                .filter(|(k, _)| !user_leaves.contains(k))
-                .map(|(k, v)| (k.clone(), v.clone()))
-                .collect();
-            merged.insert("assumptions".into(), Value::Table(inherited));
-        }
-        overlay(&mut merged, &table, "", &mut displaced);
+        let merged = on_base(
+            &table,
+            &name,
+            &base_text,
+            &sources,
+            bearing_key,
+            &mut displaced,
+        )?;
         sources.preset = Some((name, merged.clone()));
         table = merged;
     }
