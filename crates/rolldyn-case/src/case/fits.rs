@@ -46,6 +46,77 @@ pub struct FitEffect {
     pub diametral_clearance_mounted_m: f64,
 }
 
+/// The inner raceway's expansion \[m\] under a shaft interference
+/// `shaft` \[m\] (bore d, raceway diameter `inner`, hollow shaft of bore
+/// d_s from `fits.shaft_bore`): Lamé's thick-walled cylinders of one
+/// material (module doc), Δ_i = I (d/d_i)(1 − (d_s/d)²)/(1 − (d_s/d_i)²).
+fn inner_raceway_expansion(
+    fits: &RawFits,
+    shaft: f64,
+    bore: Option<f64>,
+    inner: f64,
+) -> Result<f64, Invalid> {
+    Ok(if shaft > 0.0 {
+        let d = bore.ok_or_else(|| {
+            Invalid::missing(
+                "bearing.bore",
+                "the inner ring's bore, for fits.shaft_interference",
+            )
+        })?;
+        let ds = checked("fits.shaft_bore", &fits.shaft_bore, non_negative)?.unwrap_or(0.0);
+        if ds >= d {
+            return Err(Invalid::new(
+                "fits.shaft_bore",
+                fits.shaft_bore.as_ref().map(|q| q.to_string()),
+                "must be smaller than the bearing's bore",
+            ));
+        }
+        shaft * (d / inner) * (1.0 - (ds / d).powi(2)) / (1.0 - (ds / inner).powi(2))
+    } else {
+        0.0
+    })
+}
+
+/// The outer raceway's contraction \[m\] under a housing interference
+/// `housing` \[m\] (outside diameter D, raceway diameter `outer`, housing
+/// of outside diameter D_h from `fits.housing_outside_diameter`, else
+/// rigid), the same way: Δ_o = I (d_o/D)(1 − (D/D_h)²)/(1 − (d_o/D_h)²).
+fn outer_raceway_contraction(
+    fits: &RawFits,
+    housing: f64,
+    outside: Option<f64>,
+    outer: f64,
+) -> Result<f64, Invalid> {
+    Ok(if housing > 0.0 {
+        let big = outside.ok_or_else(|| {
+            Invalid::missing(
+                "bearing.outside_diameter",
+                "the outer ring's outside diameter, for fits.housing_interference",
+            )
+        })?;
+        let factor = match checked(
+            "fits.housing_outside_diameter",
+            &fits.housing_outside_diameter,
+            positive,
+        )? {
+            None => 1.0,
+            Some(dh) if dh > big => (1.0 - (big / dh).powi(2)) / (1.0 - (outer / dh).powi(2)),
+            Some(_) => {
+                return Err(Invalid::new(
+                    "fits.housing_outside_diameter",
+                    fits.housing_outside_diameter
+                        .as_ref()
+                        .map(|q| q.to_string()),
+                    "must be larger than the bearing's outside diameter",
+                ));
+            }
+        };
+        housing * (outer / big) * factor
+    } else {
+        0.0
+    })
+}
+
 /// The mounted clearance parametrization and pitch diameter for `clearance`
 /// and `pitch` of a bearing with ball diameter `ball`, bore `bore` and
 /// outside diameter `outside`, under `fits`.
@@ -123,53 +194,8 @@ pub(super) fn mount(
         )?
         .unwrap_or(0.0),
     };
-    let expansion = if shaft > 0.0 {
-        let d = bore.ok_or_else(|| {
-            Invalid::missing(
-                "bearing.bore",
-                "the inner ring's bore, for fits.shaft_interference",
-            )
-        })?;
-        let ds = checked("fits.shaft_bore", &fits.shaft_bore, non_negative)?.unwrap_or(0.0);
-        if ds >= d {
-            return Err(Invalid::new(
-                "fits.shaft_bore",
-                fits.shaft_bore.as_ref().map(|q| q.to_string()),
-                "must be smaller than the bearing's bore",
-            ));
-        }
-        shaft * (d / inner) * (1.0 - (ds / d).powi(2)) / (1.0 - (ds / inner).powi(2))
-    } else {
-        0.0
-    };
-    let contraction = if housing > 0.0 {
-        let big = outside.ok_or_else(|| {
-            Invalid::missing(
-                "bearing.outside_diameter",
-                "the outer ring's outside diameter, for fits.housing_interference",
-            )
-        })?;
-        let factor = match checked(
-            "fits.housing_outside_diameter",
-            &fits.housing_outside_diameter,
-            positive,
-        )? {
-            None => 1.0,
-            Some(dh) if dh > big => (1.0 - (big / dh).powi(2)) / (1.0 - (outer / dh).powi(2)),
-            Some(_) => {
-                return Err(Invalid::new(
-                    "fits.housing_outside_diameter",
-                    fits.housing_outside_diameter
-                        .as_ref()
-                        .map(|q| q.to_string()),
-                    "must be larger than the bearing's outside diameter",
-                ));
-            }
-        };
-        housing * (outer / big) * factor
-    } else {
-        0.0
-    };
+    let expansion = inner_raceway_expansion(fits, shaft, bore, inner)?;
+    let contraction = outer_raceway_contraction(fits, housing, outside, outer)?;
     let unmounted = outer - inner - 2.0 * ball;
     let mounted = unmounted - expansion - contraction;
     let effect = FitEffect {
