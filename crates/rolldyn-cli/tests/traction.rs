@@ -303,6 +303,8 @@ fn exact_method_reports_forces_grid_and_map() {
     let e = &exact["exact"];
     assert_eq!(e["cells_along"], 20);
     assert_eq!(e["cells_across"], 20);
+    assert_eq!(e["extrapolated_from"], serde_json::json!([]));
+    assert!(e["force_error_estimate_n"].is_null());
     assert_eq!(e["converged"], true);
     let cells = e["contact_cells"].as_u64().unwrap() as usize;
     // The loaded cells cover the ellipse: π/4 of the 20 × 20 box over
@@ -410,6 +412,12 @@ fn table_method_follows_the_exact_theory() {
     let creep = ["--creepages", "1e-3,2e-4,20"];
     let table = traction(&[creep.as_slice(), &["--method", "table"]].concat());
     let exact = traction(&[creep.as_slice(), &["--method", "exact"]].concat());
+    // The default exact solve: three grids extrapolated, its error stated.
+    let e = &exact["exact"];
+    assert_eq!(e["extrapolated_from"], serde_json::json!([32, 48, 64]));
+    assert_eq!(e["cells_along"], 64);
+    let error = e["force_error_estimate_n"].as_f64().unwrap();
+    assert!((0.0..0.01 * 0.1 * 1000.0).contains(&error), "{error} N");
     assert_eq!(table["method"], "table");
     assert_eq!(table["traction_law"], "exact_table");
     let mu_q = 0.1 * 1000.0;

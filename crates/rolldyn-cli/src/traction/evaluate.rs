@@ -3,7 +3,7 @@
 //! tabulated exact theory (`--method table`) or Kalker's exact theory
 //! (`--method exact`), with the FASTSIM or exact stick/slip map.
 
-use super::{Contact, ExactReport, Inputs, Load, Motion, TractionReport};
+use super::{Contact, ExactGrid, ExactReport, Inputs, Load, Motion, TractionReport};
 use nalgebra::Vector3;
 use rolldyn::contact::RacewayContactModel;
 use rolldyn::material::effective_modulus;
@@ -157,13 +157,13 @@ fn tabulated(model: &TractionModel) -> Result<TractionModel, String> {
         })
 }
 
-/// Kalker's exact steady-rolling theory on `grid` (cells along × across)
-/// with the friction and elastic constants of `model`'s law; `map` (if
-/// given) receives the cells as CSV text. The result, its report and the
-/// cells written.
+/// Kalker's exact steady-rolling theory on `grid` (one grid, or the default
+/// three extrapolated to zero cell size) with the friction and elastic
+/// constants of `model`'s law; `map` (if given) receives the (finest
+/// grid's) cells as CSV text. The result, its report and the cells written.
 fn solve_exact(
     model: &TractionModel,
-    (along_cells, across_cells): (usize, usize),
+    grid: ExactGrid,
     kinematics: &ContactKinematics,
     rolling_speed: f64,
     map: Option<&mut String>,
@@ -181,14 +181,35 @@ fn solve_exact(
         );
     }
     let mut m = ExactRolling::new(f.friction, f.shear_modulus, f.poisson_ratio);
-    m.cells_along = along_cells;
-    m.cells_across = across_cells;
-    let sol = m.solve(
-        &kinematics.patch,
-        &kinematics.slip,
-        &kinematics.relative_spin,
-        rolling_speed,
-    );
+    let solve = |m: &ExactRolling| {
+        m.solve(
+            &kinematics.patch,
+            &kinematics.slip,
+            &kinematics.relative_spin,
+            rolling_speed,
+        )
+    };
+    let (sol, extrapolated_from, force_error_estimate_n, converged) = match grid {
+        ExactGrid::Cells(along, across) => {
+            m.cells_along = along;
+            m.cells_across = across;
+            let sol = solve(&m);
+            let converged = sol.converged;
+            (sol, Vec::new(), None, converged)
+        }
+        ExactGrid::Extrapolated => {
+            let e = m.solve_extrapolated(
+                &kinematics.patch,
+                &kinematics.slip,
+                &kinematics.relative_spin,
+                rolling_speed,
+            );
+            m.cells_along = e.grids[2];
+            m.cells_across = e.grids[2];
+            let error = e.force_error();
+            (e.solution, e.grids.to_vec(), Some(error), e.converged)
+        }
+    };
     let mut cells = 0;
     if let Some(text) = map {
         text.push_str(MapCell::CSV_HEADER);
@@ -199,12 +220,14 @@ fn solve_exact(
         cells = sol.cells.len();
     }
     let report = ExactReport {
-        cells_along: along_cells,
-        cells_across: across_cells,
+        cells_along: m.cells_along,
+        cells_across: m.cells_across,
+        extrapolated_from,
+        force_error_estimate_n,
         contact_cells: sol.cells.len(),
         sweeps: sol.sweeps,
-        converged: sol.converged,
-        frictional_power_w: sol.frictional_power,
+        converged,
+        frictional_power_w: sol.resultants.frictional_power,
     };
     Ok((sol.result, report, cells))
 }

@@ -13,7 +13,7 @@
 use crate::{CaseArgs, Failure, bad_arg, emit, json, parse_angle};
 use clap::Args;
 use rolldyn::RingKind;
-use rolldyn::traction::exact::{DEFAULT_CELLS, MAX_CELLS};
+use rolldyn::traction::exact::MAX_CELLS;
 use rolldyn_case::Case;
 use rolldyn_case::units::{AngularSpeed, Dimension, Force, Length, Pressure, Quantity, Velocity};
 use serde::Serialize;
@@ -81,7 +81,8 @@ pub struct TractionArgs {
     #[arg(long, value_name = "METHOD", default_value = "fastsim")]
     pub method: String,
     /// Cells along and across the rolling direction of `--method exact`,
-    /// e.g. "32" or "48,32" (default 32).
+    /// e.g. "64" or "48,32": one grid, not extrapolated (default: 32, 48 and
+    /// 64 cells extrapolated to zero cell size).
     #[arg(long, value_name = "N[,M]")]
     pub cells: Option<String>,
     /// Write the stick/slip map (one row per element or cell) to FILE as CSV.
@@ -326,17 +327,18 @@ pub fn report(args: &TractionArgs) -> Result<TractionReport, Failure> {
     Ok(report)
 }
 
-/// `--cells` of `--method exact`: cells along and across.
-fn exact_grid(text: Option<&str>) -> Result<(usize, usize), Failure> {
+/// `--cells` of `--method exact`: one grid of cells along and across, or
+/// without it the default three grids extrapolated to zero cell size.
+fn exact_grid(text: Option<&str>) -> Result<ExactGrid, Failure> {
     let Some(text) = text else {
-        return Ok((DEFAULT_CELLS, DEFAULT_CELLS));
+        return Ok(ExactGrid::Extrapolated);
     };
     let parts: Result<Vec<usize>, _> = text.split(',').map(|p| p.trim().parse()).collect();
     let rule = format!("expected one or two whole numbers of cells between 4 and {MAX_CELLS}");
     let ok = |n: &usize| (4..=MAX_CELLS).contains(n);
     match parts.as_deref() {
-        Ok([n]) if ok(n) => Ok((*n, *n)),
-        Ok([a, b]) if ok(a) && ok(b) => Ok((*a, *b)),
+        Ok([n]) if ok(n) => Ok(ExactGrid::Cells(*n, *n)),
+        Ok([a, b]) if ok(a) && ok(b) => Ok(ExactGrid::Cells(*a, *b)),
         _ => Err(bad_arg("--cells", text, rule)),
     }
 }
@@ -347,11 +349,20 @@ pub struct Inputs {
     pub rolling_speed: f64,
     /// What slides.
     pub motion: Motion,
-    /// `--method exact` with its cells along and across, or None (FASTSIM
-    /// or the case's law).
-    pub exact: Option<(usize, usize)>,
+    /// `--method exact` with its grid, or None (FASTSIM or the case's law).
+    pub exact: Option<ExactGrid>,
     /// `--method table`: the exact theory tabulated (the `exact_table` law).
     pub table: bool,
+}
+
+/// The grid of `--method exact`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ExactGrid {
+    /// The default: 32, 48 and 64 cells per direction, extrapolated to zero
+    /// cell size (`ExactRolling::solve_extrapolated`).
+    Extrapolated,
+    /// One grid of cells along and across (`--cells`), not extrapolated.
+    Cells(usize, usize),
 }
 
 /// Creepages or slip velocities.
@@ -423,8 +434,16 @@ pub struct TractionReport {
 /// How the exact solution was obtained.
 #[derive(Serialize)]
 pub struct ExactReport {
+    /// The (finest) grid.
     pub cells_along: usize,
     pub cells_across: usize,
+    /// Cells per direction of the extrapolation's grids, coarsest first
+    /// (empty with `--cells`).
+    pub extrapolated_from: Vec<usize>,
+    /// Estimated error of the force: the extrapolation's correction, or the
+    /// change between the two finest grids where the values did not
+    /// converge regularly \[N\] (null with `--cells`).
+    pub force_error_estimate_n: Option<f64>,
     /// Cells of the numerical contact area (loaded by the normal problem).
     pub contact_cells: usize,
     pub sweeps: usize,
@@ -473,9 +492,15 @@ impl TractionReport {
             let _ = writeln!(out, "  stick area fraction {s:.4}");
         }
         if let Some(e) = &self.exact {
+            let grid = match (e.extrapolated_from.as_slice(), e.force_error_estimate_n) {
+                ([a, b, c], Some(error)) => format!(
+                    "extrapolated to zero cell size from {a}, {b} and {c} cells per direction (force error estimate {error:.2e} N); finest grid"
+                ),
+                _ => "grid".to_string(),
+            };
             let _ = writeln!(
                 out,
-                "  exact theory: {} × {} cells ({} in contact), {} sweeps{}; frictional power {:.6e} W",
+                "  exact theory: {grid} {} × {} cells ({} in contact), {} sweeps{}; frictional power {:.6e} W",
                 e.cells_along,
                 e.cells_across,
                 e.contact_cells,

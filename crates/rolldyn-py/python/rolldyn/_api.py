@@ -223,7 +223,8 @@ def traction(case: Optional[Case] = None, *, rolling_speed: Quantity,
     """``rolldyn traction --json``: one contact's traction with the case's
     traction model, e.g. ``traction(case, load="500 N",
     rolling_speed="10 m/s", creepages="1e-3,0,5", map="map.csv")``;
-    ``method="exact"`` (Kalker's exact theory, ``cells``) or ``"table"``.
+    ``method="exact"`` (Kalker's exact theory: by default three grids extrapolated
+    to zero cell size; ``cells`` one grid) or ``"table"``.
     The keywords are the CLI's flags (docs/cli.md); None keeps its
     default."""
     return TractionResult(json.loads(_rolldyn.traction_report(

@@ -42,16 +42,24 @@
 //!
 //! # Accuracy and cost
 //! The backward difference and the constant-traction cells make the
-//! forces converge at first order in the cell size; 32 × 32 cells
-//! reproduce Kalker's creep coefficients to 1–2 % (tests). Each
-//! evaluation convolves the normal problem by FFT and sweeps the
-//! tangential one in 15–50 sweeps of O(N²) for N cells: about 0.02 s at
-//! 32 × 32, 0.4 s at 64 × 64 (docs/performance.md).
+//! forces converge at first order in the cell size or faster (order ≈ 1.6
+//! for the lateral force of spin), plus a non-monotone part from the
+//! staircase edge; 32 × 32 cells reproduce Kalker's creep coefficients to
+//! 1–2 % (tests), and the lateral force of a spinning ball-bearing contact
+//! to −5.6 %. [`ExactRolling::solve_extrapolated`] (the default of
+//! `rolldyn traction --method exact`) solves three grids and extrapolates
+//! to zero cell size: 0.2 % on that force ([`extrapolate`]; the
+//! convergence table is in docs/dynamics.md). Each evaluation convolves
+//! the normal problem by FFT and sweeps the tangential one in 15–50 sweeps
+//! of O(N²) for N cells: about 0.03 s at 32 × 32, 0.3 s at 64 × 64.
 //! It is a reference for checks, not a law for the time loop.
 
+pub mod extrapolate;
 pub mod influence;
 pub mod normal;
 pub mod steady;
+
+pub use extrapolate::{EXTRAPOLATION_GRIDS, Extrapolated, FlowFrame, Resultants};
 
 use super::fastsim::MapCell;
 use super::{ContactPatch, Creep, TractionResult};
@@ -99,6 +107,10 @@ pub struct ExactRolling {
 pub struct ExactSolution {
     /// Resultants on the ball, in the frame of the patch (as FASTSIM's).
     pub result: TractionResult,
+    /// The same resultants as numbers in the flow frame.
+    pub resultants: Resultants,
+    /// The flow frame of the solve.
+    pub frame: FlowFrame,
     /// Every cell of the numerical contact area.
     pub cells: Vec<MapCell>,
     /// Frictional power −Σ p·s V ΔA dissipated in the slip area \[W\]
@@ -162,6 +174,12 @@ impl ExactRolling {
         if patch.load <= 0.0 {
             return ExactSolution {
                 result: TractionResult::default(),
+                resultants: Resultants::default(),
+                frame: FlowFrame {
+                    ex: patch.rolling_direction,
+                    ey: patch.normal.cross(&patch.rolling_direction),
+                    n: patch.normal,
+                },
                 cells: Vec::new(),
                 frictional_power: 0.0,
                 normal_iterations: 0,
@@ -205,20 +223,20 @@ impl ExactRolling {
         let (p, s, stick) = (&tangential.traction, &tangential.slip, &tangential.stick);
 
         // 4. Resultants and the map.
-        let (mut fx, mut fy, mut mn, mut mx, mut my) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        let (mut power, mut friction_power, mut stuck) = (0.0, 0.0, 0);
+        let mut sums = Resultants::default();
+        let mut stuck = 0;
         let mut cells = Vec::with_capacity(loaded.len());
         for &c in &loaded {
             let (x, y) = (x_of(c), y_of(c));
             let f = p[c] * cell_area;
-            fx += f.x;
-            fy += f.y;
-            mn += x * f.y - y * f.x;
+            sums.force_along += f.x;
+            sums.force_across += f.y;
+            sums.spin_moment += x * f.y - y * f.x;
             let d = depth(y);
-            mx += d * f.y;
-            my -= d * f.x;
-            power -= f.dot(&w[c]) * speed;
-            friction_power -= f.dot(&s[c]) * speed;
+            sums.couple_along += d * f.y;
+            sums.couple_across -= d * f.x;
+            sums.power -= f.dot(&w[c]) * speed;
+            sums.frictional_power -= f.dot(&s[c]) * speed;
             stuck += usize::from(stick[c]);
             cells.push(MapCell {
                 x,
@@ -228,26 +246,24 @@ impl ExactRolling {
                 stick: stick[c],
             });
         }
-        let result = TractionResult {
-            force: fx * ex + fy * ey,
-            moment: Vector3::zeros(),
-            couple: mx * ex + my * ey + mn * n,
-            dissipation: power,
-            creep: Some(Creep {
-                longitudinal: s_x / speed,
-                lateral: s_y / speed,
-                spin: w_n / speed,
-                stick_fraction: if loaded.is_empty() {
-                    0.0
-                } else {
-                    stuck as f64 / loaded.len() as f64
-                },
-            }),
+        let frame = FlowFrame { ex, ey, n };
+        let creep = Creep {
+            longitudinal: s_x / speed,
+            lateral: s_y / speed,
+            spin: w_n / speed,
+            stick_fraction: if loaded.is_empty() {
+                0.0
+            } else {
+                stuck as f64 / loaded.len() as f64
+            },
         };
+        let result = frame.result(&sums, creep);
         ExactSolution {
             result,
+            resultants: sums,
+            frame,
             cells,
-            frictional_power: friction_power,
+            frictional_power: sums.frictional_power,
             normal_iterations: contact.normal_iterations,
             sweeps: tangential.sweeps,
             converged: tangential.converged,
