@@ -143,7 +143,31 @@ fn traction_bad_input_exits_2() {
     for (args, needle) in [
         (
             vec!["traction", "--load", "1 kN", "--rolling-speed", "1 m/s"],
-            "--creepages",
+            "(--slip VX,VY): neither was given",
+        ),
+        (
+            vec![
+                "traction",
+                "--rolling-speed",
+                "1 m/s",
+                "--creepages",
+                "0,0,0",
+            ],
+            "(--approach): neither was given",
+        ),
+        (
+            vec![
+                "traction",
+                "--load",
+                "1 kN",
+                "--approach",
+                "1 um",
+                "--rolling-speed",
+                "1 m/s",
+                "--creepages",
+                "0,0,0",
+            ],
+            "(--approach), not both",
         ),
         (
             vec![

@@ -175,9 +175,20 @@ fn motion(args: &TractionArgs) -> Result<Motion, Failure> {
                 rate,
             ))
         }
-        _ => Err(Failure::BadInput(
-            "give the creepages (--creepages XI,ETA,PHI) or the slip velocities (--slip VX,VY), not both".into(),
-        )),
+        (a, b) => Err(Failure::BadInput(format!(
+            "give the creepages (--creepages XI,ETA,PHI) or the slip velocities (--slip VX,VY){}",
+            one_of(a.is_some() && b.is_some())
+        ))),
+    }
+}
+
+/// The end of a "give A or B" message: ", not both" when both were given,
+/// ": neither was given" when none was.
+fn one_of(both: bool) -> &'static str {
+    if both {
+        ", not both"
+    } else {
+        ": neither was given"
     }
 }
 
@@ -248,9 +259,10 @@ fn bearing_load(args: &TractionArgs) -> Result<Load, Failure> {
     match (&args.load, &args.approach) {
         (Some(t), None) => Ok(Load::Force(quantity::<Force>("--load", t)?)),
         (None, Some(t)) => Ok(Load::Approach(quantity::<Length>("--approach", t)?)),
-        _ => Err(Failure::BadInput(
-            "give the normal load (--load) or the approach (--approach), not both".into(),
-        )),
+        (a, b) => Err(Failure::BadInput(format!(
+            "give the normal load (--load) or the approach (--approach){}",
+            one_of(a.is_some() && b.is_some())
+        ))),
     }
 }
 
