@@ -62,8 +62,26 @@ fn to_py(failure: Failure) -> PyErr {
     }
 }
 
-fn json_text<T: serde::Serialize>(value: &T) -> PyResult<String> {
-    json_value(value).map_err(to_py)
+/// A report in memory in the data model of the CLI's `--json` output
+/// (objects, arrays, numbers, strings, null), not as text: fixed-size
+/// arrays become lists as in the JSON, and a non-finite number becomes
+/// null with the CLI's warning (`rolldyn_cli::finite`: a bug to report).
+fn in_memory<T: serde::Serialize>(value: &T) -> Result<serde_json::Value, Failure> {
+    if let Some(path) = finite::non_finite(value) {
+        eprintln!(
+            "warning: non-finite number at {path} given as None (a rolldyn bug: please report it with the case)"
+        );
+    }
+    serde_json::to_value(value).map_err(|e| Failure::Internal(e.to_string()))
+}
+
+/// A report as Python objects (dicts, lists, floats, ints, strings, None):
+/// the keys and values the CLI's `--json` prints.
+fn to_python<T: serde::Serialize>(py: Python<'_>, value: &T) -> PyResult<Py<PyAny>> {
+    let value = in_memory(value).map_err(to_py)?;
+    pythonize::pythonize(py, &value)
+        .map(Bound::unbind)
+        .map_err(|e| PyRuntimeError::new_err(e.to_string()))
 }
 
 fn overrides(sets: Vec<String>) -> CaseOverrides {
@@ -103,25 +121,31 @@ fn preset_text(name: &str) -> PyResult<&'static str> {
 /// Validates the case; returns `rolldyn check --json`.
 #[pyfunction]
 #[pyo3(signature = (source, text, sets))]
-fn check(source: &str, text: Option<&str>, sets: Vec<String>) -> PyResult<String> {
+fn check(
+    py: Python<'_>,
+    source: &str,
+    text: Option<&str>,
+    sets: Vec<String>,
+) -> PyResult<Py<PyAny>> {
     let case = load(source, text, sets)?;
     let report = CheckReport::new(source, &case).map_err(CaseError::new_err)?;
-    json_text(&report)
+    to_python(py, &report)
 }
 
 /// `rolldyn frequencies --json`.
 #[pyfunction]
 #[pyo3(signature = (source, text, sets, angle=None))]
 fn frequencies(
+    py: Python<'_>,
     source: &str,
     text: Option<&str>,
     sets: Vec<String>,
     angle: Option<String>,
-) -> PyResult<String> {
+) -> PyResult<Py<PyAny>> {
     let angle = parse_angle("angle", angle.as_ref()).map_err(to_py)?;
     let case = load(source, text, sets)?;
     let report = FrequencyReport::new(&case, angle).map_err(CaseError::new_err)?;
-    json_text(&report)
+    to_python(py, &report)
 }
 
 /// The arguments of a command parsed from its flags, as on the command
@@ -172,7 +196,7 @@ fn contact(
     radii: Option<String>,
     ball_on_flat: Option<String>,
     inlet_distance_ratio: Option<f64>,
-) -> PyResult<String> {
+) -> PyResult<Py<PyAny>> {
     let mut args: ContactArgs = defaults("contact", &["--load", &load])?;
     args.case = case_args(source, text, sets);
     args.angle = angle;
@@ -180,11 +204,13 @@ fn contact(
     args.radii = radii;
     args.ball_on_flat = ball_on_flat;
     args.inlet_distance_ratio = inlet_distance_ratio;
-    py.detach(|| {
-        let (_, case) = args.case.load()?;
-        evaluate(&args, &case).and_then(|r| json_value(&r))
-    })
-    .map_err(to_py)
+    let report = py
+        .detach(|| {
+            let (_, case) = args.case.load()?;
+            evaluate(&args, &case)
+        })
+        .map_err(to_py)?;
+    to_python(py, &report)
 }
 
 /// `rolldyn power --json`.
@@ -195,13 +221,13 @@ fn power_report(
     source: String,
     text: Option<String>,
     sets: Vec<String>,
-) -> PyResult<String> {
+) -> PyResult<Py<PyAny>> {
     let args = PowerArgs {
         case: case_args(source, text, sets),
         json: true,
     };
-    py.detach(|| power::report(&args).and_then(|r| json_value(&r)))
-        .map_err(to_py)
+    let report = py.detach(|| power::report(&args)).map_err(to_py)?;
+    to_python(py, &report)
 }
 
 /// `rolldyn thermal --json` (`--transient`, `--steps`: None keeps the
@@ -215,13 +241,13 @@ fn thermal_report(
     sets: Vec<String>,
     transient: Option<String>,
     steps: Option<usize>,
-) -> PyResult<String> {
+) -> PyResult<Py<PyAny>> {
     let mut args: ThermalArgs = defaults("thermal", &[])?;
     args.case = case_args(source, text, sets);
     args.transient = transient;
     args.steps = steps.unwrap_or(args.steps);
-    py.detach(|| thermal::report(&args).and_then(|r| json_value(&r)))
-        .map_err(to_py)
+    let report = py.detach(|| thermal::report(&args)).map_err(to_py)?;
+    to_python(py, &report)
 }
 
 /// `rolldyn traction --json`: every flag of the command as a keyword
@@ -249,7 +275,7 @@ fn traction_report(
     method: Option<String>,
     cells: Option<String>,
     map: Option<String>,
-) -> PyResult<String> {
+) -> PyResult<Py<PyAny>> {
     let mut args: TractionArgs = defaults("traction", &["--rolling-speed", &rolling_speed])?;
     args.case = case_args(source, text, sets);
     args.ring = ring.unwrap_or(args.ring);
@@ -266,8 +292,8 @@ fn traction_report(
     args.friction = friction;
     args.cells = cells;
     args.map = map;
-    py.detach(|| traction::report(&args).and_then(|r| json_value(&r)))
-        .map_err(to_py)
+    let report = py.detach(|| traction::report(&args)).map_err(to_py)?;
+    to_python(py, &report)
 }
 
 /// `rolldyn spectrum DIR --json` (None keeps the CLI's default).
@@ -286,7 +312,7 @@ fn spectrum_report(
     start: Option<f64>,
     harmonics: Option<usize>,
     peaks: Option<usize>,
-) -> PyResult<String> {
+) -> PyResult<Py<PyAny>> {
     let mut args: SpectrumArgs = defaults("spectrum", &[&directory, "--channel", &channel])?;
     args.kind = kind.unwrap_or(args.kind);
     args.window = window.unwrap_or(args.window);
@@ -296,12 +322,8 @@ fn spectrum_report(
     args.from = start;
     args.harmonics = harmonics.unwrap_or(args.harmonics);
     args.peaks = peaks.unwrap_or(args.peaks);
-    py.detach(|| spectrum::report(&args).and_then(|r| json_value(&r)))
-        .map_err(to_py)
-}
-
-fn json_value<T: serde::Serialize>(value: &T) -> Result<String, Failure> {
-    finite::to_json(value).map_err(|e| Failure::Internal(e.to_string()))
+    let report = py.detach(|| spectrum::report(&args)).map_err(to_py)?;
+    to_python(py, &report)
 }
 
 /// `rolldyn quasistatic --json`.
@@ -313,11 +335,11 @@ fn quasistatic_solve(
     text: Option<&str>,
     sets: Vec<String>,
     control: Option<String>,
-) -> PyResult<String> {
+) -> PyResult<Py<PyAny>> {
     let control = ControlChoice::parse(control.as_deref()).map_err(to_py)?;
     let case = load(source, text, sets)?;
     let output = py.detach(|| quasistatic::solve(&case, control).map_err(to_py))?;
-    json_text(&output)
+    to_python(py, &output)
 }
 
 /// `rolldyn quasistatic --sweep … --json`: the rows of the sweep.
@@ -330,7 +352,7 @@ fn quasistatic_sweep(
     sets: Vec<String>,
     sweeps: Vec<String>,
     control: Option<String>,
-) -> PyResult<String> {
+) -> PyResult<Py<PyAny>> {
     let ControlChoice::Raceway(control) =
         ControlChoice::parse(control.as_deref()).map_err(to_py)?
     else {
@@ -347,7 +369,7 @@ fn quasistatic_sweep(
     let rows = py
         .detach(|| quasistatic::sweep_case(&case, control, &sweeps))
         .map_err(to_py)?;
-    json_text(&rows)
+    to_python(py, &rows)
 }
 
 /// Options of a run from Python: its own stop flag (never the process's
@@ -437,7 +459,7 @@ fn run(
     force: bool,
     progress: Option<Bound<'_, PyAny>>,
     verify: bool,
-) -> PyResult<(String, bool)> {
+) -> PyResult<(Py<PyAny>, bool)> {
     let overrides = overrides(sets);
     let case = overrides
         .load_text(&source, text.as_deref())
@@ -454,24 +476,26 @@ fn run(
     let (summary, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
         if set {
             rolldyn_cli::run_set::run_and_verify(&record, &case, dir, &options)
-                .and_then(|s| json_value(&s))
+                .and_then(|s| in_memory(&s))
         } else {
-            run_case_series(&record, &case, dir, &options).and_then(|o| json_value(&o.summary))
+            run_case_series(&record, &case, dir, &options).and_then(|o| in_memory(&o.summary))
         }
     })?;
-    Ok((summary.map_err(to_py)?, interrupted))
+    Ok((to_python(py, &summary.map_err(to_py)?)?, interrupted))
 }
 
 /// Opens a run directory: its summary (JSON); checks that its time series
 /// reads (the channels, not the samples).
 #[pyfunction]
-fn open_run(directory: &str) -> PyResult<String> {
+fn open_run(py: Python<'_>, directory: &str) -> PyResult<Py<PyAny>> {
     let dir = Path::new(directory);
     let summary = std::fs::read_to_string(rolldyn_io::RunDir::new(dir).summary())
         .map_err(|e| CaseError::new_err(format!("{directory}: no summary.json: {e}")))?;
+    let summary: serde_json::Value = serde_json::from_str(&summary)
+        .map_err(|e| CaseError::new_err(format!("{directory}: summary.json: {e}")))?;
     rolldyn_io::read_schema(&rolldyn_io::RunDir::new(dir).series())
         .map_err(|e| CaseError::new_err(e.to_string()))?;
-    Ok(summary)
+    to_python(py, &summary)
 }
 
 /// `rolldyn run --sweep`: runs the points (each a list of overrides added
@@ -490,7 +514,7 @@ fn run_points(
     directory: &str,
     force: bool,
     progress: Option<Bound<'_, PyAny>>,
-) -> PyResult<(String, bool)> {
+) -> PyResult<(Py<PyAny>, bool)> {
     let points: Vec<CaseOverrides> = points
         .into_iter()
         .map(|p| overrides(sets.iter().cloned().chain(p).collect()))
@@ -501,7 +525,7 @@ fn run_points(
         run_sweep::run(&source, text.as_deref(), &points, &[], dir, &options)
     })?;
     let (rows, _) = rows.map_err(to_py)?;
-    Ok((json_text(&rows)?, interrupted))
+    Ok((to_python(py, &rows)?, interrupted))
 }
 
 /// `rolldyn run --sweep … --sample COUNT --seed SEED`'s random points:
@@ -534,7 +558,7 @@ fn run_point(
     sets: Vec<String>,
     directory: &str,
     force: bool,
-) -> PyResult<String> {
+) -> PyResult<Py<PyAny>> {
     let overrides = overrides(sets);
     let case = overrides.load_text(source, text).map_err(to_py)?;
     let (options, stop, fraction) = run_options(force, false);
@@ -542,7 +566,7 @@ fn run_point(
     let (row, _) = watched(py, &stop, &fraction, None, || {
         run_sweep::run_point(name, source, text, &overrides, &case, dir, &options)
     })?;
-    json_text(&row)
+    to_python(py, &row)
 }
 
 /// The directory name of point `k` of `count` (`point-NNNN`).
@@ -553,9 +577,9 @@ fn point_name(k: usize, count: usize) -> String {
 
 /// Writes `sweep.json` and `sweep.csv` of rows (JSON) into `directory`.
 #[pyfunction]
-fn write_sweep_tables(directory: &str, rows: &str) -> PyResult<()> {
+fn write_sweep_tables(directory: &str, rows: &Bound<'_, PyAny>) -> PyResult<()> {
     let rows: Vec<serde_json::Map<String, serde_json::Value>> =
-        serde_json::from_str(rows).map_err(|e| CaseError::new_err(e.to_string()))?;
+        pythonize::depythonize(rows).map_err(|e| CaseError::new_err(e.to_string()))?;
     run_sweep::write_tables(Path::new(directory), &rows).map_err(to_py)
 }
 
@@ -573,8 +597,8 @@ fn catalogue_text(designation: &str, clearance: Option<&str>) -> PyResult<String
 /// `rolldyn catalogue --json` (all, or one series such as "62").
 #[pyfunction]
 #[pyo3(signature = (series=None))]
-fn catalogue_entries(series: Option<&str>) -> PyResult<String> {
-    json_text(&rolldyn_cli::catalogue::entries(series).map_err(to_py)?)
+fn catalogue_entries(py: Python<'_>, series: Option<&str>) -> PyResult<Py<PyAny>> {
+    to_python(py, &rolldyn_cli::catalogue::entries(series).map_err(to_py)?)
 }
 
 /// Writes `directory/report.html` (as `rolldyn report`); returns its path.

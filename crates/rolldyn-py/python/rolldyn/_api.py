@@ -4,7 +4,6 @@ exports only the public names)."""
 from __future__ import annotations
 
 import itertools
-import json
 import os
 import shutil
 import tempfile
@@ -124,7 +123,7 @@ class Case:
     def describe(self) -> dict:
         """``rolldyn check --json``: derived geometry, contact constants,
         frequencies and the assumptions made."""
-        return json.loads(_rolldyn.check(self._source, self._text, self._overrides))
+        return _rolldyn.check(self._source, self._text, self._overrides)
 
     @property
     def source(self) -> str:
@@ -168,13 +167,13 @@ def catalogue(series: Optional[str] = None) -> list:
     """``rolldyn catalogue --json``: the catalogue bearings (or one series,
     e.g. ``"62"``) with their estimated ball sets and ISO 281/76 ratings,
     one dict per bearing (units in the keys)."""
-    return json.loads(_rolldyn.catalogue_entries(series))
+    return _rolldyn.catalogue_entries(series)
 
 
 def frequencies(case: Optional[Case] = None, angle: Optional[str] = None) -> "Frequencies":
     """``rolldyn frequencies --json``: cage, BPFO, BPFI, ball spin and
     waviness lines (at ``angle``, e.g. ``"15 deg"``; default the nominal)."""
-    return Frequencies(json.loads(_rolldyn.frequencies(*_case(case)._args(), angle)))
+    return Frequencies(_rolldyn.frequencies(*_case(case)._args(), angle))
 
 
 def _text(value: Any) -> Optional[str]:
@@ -191,15 +190,15 @@ def contact(load: Quantity, case: Optional[Case] = None, *, angle: Optional[Quan
     (``radii="2.8 mm,20 mm"`` or ``ball_on_flat="19.05 mm"``); with
     ``entrainment_speed="1 m/s"`` (and ``inlet_distance_ratio``) the
     lubricant film too."""
-    return ContactResult(json.loads(_rolldyn.contact(
+    return ContactResult(_rolldyn.contact(
         *_case(case)._args(), _value_text(load), _text(angle), _text(entrainment_speed),
-        _text(radii), _text(ball_on_flat), inlet_distance_ratio)))
+        _text(radii), _text(ball_on_flat), inlet_distance_ratio))
 
 
 def power(case: Optional[Case] = None) -> "PowerResult":
     """``rolldyn power --json``: friction power by component at the
     Jones–Harris equilibrium (Harris's local method, Lei et al. 2023)."""
-    return PowerResult(json.loads(_rolldyn.power_report(*_case(case)._args())))
+    return PowerResult(_rolldyn.power_report(*_case(case)._args()))
 
 
 def thermal(case: Optional[Case] = None, transient: Optional[Quantity] = None,
@@ -207,8 +206,8 @@ def thermal(case: Optional[Case] = None, transient: Optional[Quantity] = None,
     """``rolldyn thermal --json``: bearing temperatures coupled to the power
     loss; ``transient="30 min"`` adds the warm-up (``steps`` time steps,
     default 600)."""
-    return ThermalResult(json.loads(_rolldyn.thermal_report(
-        *_case(case)._args(), _text(transient), steps)))
+    return ThermalResult(_rolldyn.thermal_report(
+        *_case(case)._args(), _text(transient), steps))
 
 
 def traction(case: Optional[Case] = None, *, rolling_speed: Quantity,
@@ -227,10 +226,10 @@ def traction(case: Optional[Case] = None, *, rolling_speed: Quantity,
     to zero cell size; ``cells`` one grid) or ``"table"``.
     The keywords are the CLI's flags (docs/cli.md); None keeps its
     default."""
-    return TractionResult(json.loads(_rolldyn.traction_report(
+    return TractionResult(_rolldyn.traction_report(
         *_case(case)._args(), _value_text(rolling_speed), ring, _text(load), _text(approach),
         _text(angle), _text(creepages), _text(slip), _text(spin), _text(semi_axes),
-        _text(shear_modulus), poisson_ratio, friction, method, _text(cells), _text(map))))
+        _text(shear_modulus), poisson_ratio, friction, method, _text(cells), _text(map)))
 
 
 def spectrum(directory: Union[str, os.PathLike], channel: str, *, kind: Optional[str] = None,
@@ -244,8 +243,8 @@ def spectrum(directory: Union[str, os.PathLike], channel: str, *, kind: Optional
     the bearing's lines and the nearest line of each peak; writes
     ``spectrum_<channel>_<kind>.csv`` and ``.json`` into the run
     directory."""
-    return SpectrumResult(json.loads(_rolldyn.spectrum_report(
-        str(directory), channel, kind, window, segment, overlap, band, start, harmonics, peaks)))
+    return SpectrumResult(_rolldyn.spectrum_report(
+        str(directory), channel, kind, window, segment, overlap, band, start, harmonics, peaks))
 
 
 def quasistatic(case: Optional[Case] = None, control: Optional[str] = None) -> "QuasiStaticResult":
@@ -253,7 +252,7 @@ def quasistatic(case: Optional[Case] = None, control: Optional[str] = None) -> "
     Jones–Harris equilibrium. ``control``: ``outer``, ``inner``, ``harris``
     or ``traction`` (default: the case's). Raises :class:`ModelError`
     when the solve does not converge."""
-    return QuasiStaticResult(json.loads(_rolldyn.quasistatic_solve(*_case(case)._args(), control)))
+    return QuasiStaticResult(_rolldyn.quasistatic_solve(*_case(case)._args(), control))
 
 
 def _sweep_arg(name: str, values: Union[str, Iterable[Any]]) -> str:
@@ -268,7 +267,7 @@ def quasistatic_sweep(case: Optional[Case], grid: Mapping[str, Union[str, Iterab
     the first key is outermost. One row per point (failed points have
     ``converged`` False and an ``error``)."""
     args = [_sweep_arg(k, v) for k, v in grid.items()]
-    rows = json.loads(_rolldyn.quasistatic_sweep(*_case(case)._args(), args, control))
+    rows = _rolldyn.quasistatic_sweep(*_case(case)._args(), args, control)
     return SweepResult(rows, None)
 
 
@@ -316,7 +315,7 @@ class Result:
     def load(cls, directory: Union[str, os.PathLike]) -> "Result":
         """Opens a run directory written by ``rolldyn run`` or :func:`run`."""
         summary = _rolldyn.open_run(str(directory))
-        return cls(json.loads(summary), str(directory))
+        return cls(summary, str(directory))
 
     def dataset(self):
         """The time series as a ``pyarrow.dataset.Dataset`` (streams: scan
@@ -456,10 +455,10 @@ def run(case: Optional[Case] = None, duration: Optional[str] = None, *,
         summary, interrupted = _rolldyn.run(
             *case._args(), d.path, force, progress, verify)
         if d.given:
-            result = Result(json.loads(summary), d.path)
+            result = Result(summary, d.path)
         else:
             # The temporary directory goes: read the series now.
-            result = Result(json.loads(summary), None, _dataset(d.path).to_table())
+            result = Result(summary, None, _dataset(d.path).to_table())
     if interrupted:
         raise RunInterrupted(result)
     return result
@@ -569,7 +568,7 @@ def _dask_point(name: str, source: str, text: Optional[str], sets: list,
                 output: Optional[str], force: bool) -> dict:
     """One sweep point on a Dask worker (the same row as a local sweep)."""
     with _Directory(output) as d:
-        return json.loads(_rolldyn.run_point(name, source, text, sets, d.path, force))
+        return _rolldyn.run_point(name, source, text, sets, d.path, force)
 
 
 def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any = None, *,
@@ -597,7 +596,6 @@ def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any =
         with _Directory(output) as d:
             rows, interrupted = _rolldyn.run_points(
                 *case._args(), overrides, d.path, force, progress)
-            rows = json.loads(rows)
     else:
         source, text, base = case._args()
         names = [_rolldyn.point_name(k, len(points)) for k in range(len(points))]
@@ -624,7 +622,7 @@ def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any =
                     for f, name in zip(futures, names)]
             client.cancel([f for f in futures if f.status != "finished"])
         if out is not None:
-            _rolldyn.write_sweep_tables(out, json.dumps(rows))
+            _rolldyn.write_sweep_tables(out, rows)
     result = SweepResult([_with_inputs(r, keys, p) for r, p in zip(rows, points)],
                          None if output is None else str(output))
     if interrupted:
