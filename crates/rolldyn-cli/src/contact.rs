@@ -19,8 +19,9 @@ use rolldyn_case::units::{Force, Length, Quantity, Velocity};
 use serde::Serialize;
 use std::fmt::Write as _;
 
-/// Arguments of `rolldyn contact`.
-#[derive(Args, Debug)]
+/// Arguments of `rolldyn contact` (`Default`: the command line's defaults,
+/// the built-in case, no load: give one).
+#[derive(Args, Debug, Default)]
 pub struct ContactArgs {
     #[command(flatten)]
     pub case: CaseArgs,

@@ -39,7 +39,7 @@ use rolldyn_case::{Case, CaseError, Override, OverrideSource, load_case, load_de
 use std::io::{Read, Write};
 
 /// The case to work on, and overrides of its values.
-#[derive(Args, Debug, Clone)]
+#[derive(Args, Debug, Clone, Default)]
 pub struct CaseArgs {
     /// Case file (TOML); `-` reads standard input; omitted: the built-in
     /// default case (7008C at 10 000 rpm, F_x = 200 N).
@@ -256,4 +256,49 @@ pub fn emit(text: &str) -> Result<(), Failure> {
 pub fn json<T: serde::Serialize>(value: &T) -> Result<(), Failure> {
     let text = crate::finite::to_json(value).map_err(|e| Failure::Internal(e.to_string()))?;
     emit(&(text + "\n"))
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Flags<A: clap::Args> {
+        #[command(flatten)]
+        args: A,
+    }
+
+    /// A command's arguments parsed from `required` flags only.
+    fn parsed<A: clap::Args>(required: &[&str]) -> A {
+        Flags::<A>::try_parse_from(std::iter::once("rolldyn").chain(required.iter().copied()))
+            .expect("parses")
+            .args
+    }
+
+    /// The arguments' `Default`s (what the Python package starts from) are
+    /// the command line's defaults.
+    #[test]
+    fn argument_defaults_are_the_command_lines() {
+        use super::{contact, spectrum, thermal, traction};
+        let same = |a: String, b: String| assert_eq!(a, b);
+        same(
+            format!("{:?}", contact::ContactArgs::default()),
+            format!("{:?}", parsed::<contact::ContactArgs>(&["--load", ""])),
+        );
+        same(
+            format!("{:?}", thermal::ThermalArgs::default()),
+            format!("{:?}", parsed::<thermal::ThermalArgs>(&[])),
+        );
+        same(
+            format!("{:?}", traction::TractionArgs::default()),
+            format!(
+                "{:?}",
+                parsed::<traction::TractionArgs>(&["--rolling-speed", ""])
+            ),
+        );
+        same(
+            format!("{:?}", spectrum::SpectrumArgs::default()),
+            format!("{:?}", parsed::<spectrum::SpectrumArgs>(&[""])),
+        );
+    }
 }

@@ -20,7 +20,15 @@ use serde::Serialize;
 use std::fmt::Write;
 use std::path::Path;
 
-/// Arguments of `rolldyn spectrum`.
+/// `--kind`, `--window`, `--overlap`, `--harmonics` and `--peaks` by default.
+pub const DEFAULT_KIND: &str = "amplitude";
+pub const DEFAULT_WINDOW: &str = "hann";
+pub const DEFAULT_OVERLAP: f64 = 0.5;
+pub const DEFAULT_HARMONICS: usize = 5;
+pub const DEFAULT_PEAKS: usize = 10;
+
+/// Arguments of `rolldyn spectrum` (`Default`: the command line's defaults,
+/// no run directory: give one).
 #[derive(Args, Debug)]
 pub struct SpectrumArgs {
     /// Run directory (timeseries.parquet, summary.json).
@@ -32,17 +40,17 @@ pub struct SpectrumArgs {
     pub channel: Option<String>,
     /// amplitude, psd (Welch), envelope or spectrogram (amplitude spectra
     /// of overlapping segments, for speed ramps).
-    #[arg(long, default_value = "amplitude")]
+    #[arg(long, default_value = DEFAULT_KIND)]
     pub kind: String,
     /// Window: hann or rectangular.
-    #[arg(long, default_value = "hann")]
+    #[arg(long, default_value = DEFAULT_WINDOW)]
     pub window: String,
     /// Segment length in samples (psd, spectrogram; default: a power of two
     /// near an eighth of the record).
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub segment: Option<usize>,
     /// Overlap fraction of the segments (psd, spectrogram).
-    #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = DEFAULT_OVERLAP, allow_hyphen_values = true)]
     pub overlap: f64,
     /// Envelope band "LOW:HIGH", frequencies with their unit, e.g.
     /// "2 kHz:8 kHz" or "2000:8000 Hz" (envelope; default: 0.1 to 0.4 of
@@ -54,10 +62,10 @@ pub struct SpectrumArgs {
     #[arg(long, value_name = "TIME", allow_hyphen_values = true, value_parser = crate::time_value)]
     pub from: Option<f64>,
     /// Harmonics of each characteristic frequency to mark.
-    #[arg(long, default_value_t = 5, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = DEFAULT_HARMONICS, allow_hyphen_values = true)]
     pub harmonics: usize,
     /// Number of peaks to list.
-    #[arg(long, default_value_t = 10, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = DEFAULT_PEAKS, allow_hyphen_values = true)]
     pub peaks: usize,
     /// List the channels and exit.
     #[arg(long)]
@@ -65,6 +73,25 @@ pub struct SpectrumArgs {
     /// Print the JSON report instead of text.
     #[arg(long)]
     pub json: bool,
+}
+
+impl Default for SpectrumArgs {
+    fn default() -> Self {
+        Self {
+            dir: String::new(),
+            channel: None,
+            kind: DEFAULT_KIND.into(),
+            window: DEFAULT_WINDOW.into(),
+            segment: None,
+            overlap: DEFAULT_OVERLAP,
+            band: None,
+            from: None,
+            harmonics: DEFAULT_HARMONICS,
+            peaks: DEFAULT_PEAKS,
+            list: false,
+            json: false,
+        }
+    }
 }
 
 #[derive(Serialize)]

@@ -148,30 +148,6 @@ fn frequencies(
     to_python(py, &report)
 }
 
-/// The arguments of a command parsed from its flags, as on the command
-/// line (clap: the same names, defaults and messages).
-#[derive(clap::Parser)]
-#[command(name = "rolldyn")]
-struct Flags<A: clap::Args> {
-    #[command(flatten)]
-    args: A,
-}
-
-fn parse<A: clap::Args>(name: &str, argv: Vec<String>) -> PyResult<A> {
-    <Flags<A> as clap::Parser>::try_parse_from(
-        std::iter::once(format!("rolldyn {name}")).chain(argv),
-    )
-    .map(|f| f.args)
-    .map_err(|e| CaseError::new_err(e.render().to_string().trim().to_string()))
-}
-
-/// A command's arguments at the CLI's defaults, from its required flags
-/// (clap: the same defaults as on the command line); the typed functions
-/// below then set what Python gave.
-fn defaults<A: clap::Args>(name: &str, required: &[&str]) -> PyResult<A> {
-    parse(name, required.iter().map(|s| s.to_string()).collect())
-}
-
 /// The case of a typed function: its source, text and overrides.
 fn case_args(source: String, text: Option<String>, sets: Vec<String>) -> CaseArgs {
     CaseArgs {
@@ -197,13 +173,16 @@ fn contact(
     ball_on_flat: Option<String>,
     inlet_distance_ratio: Option<f64>,
 ) -> PyResult<Py<PyAny>> {
-    let mut args: ContactArgs = defaults("contact", &["--load", &load])?;
-    args.case = case_args(source, text, sets);
-    args.angle = angle;
-    args.entrainment_speed = entrainment_speed;
-    args.radii = radii;
-    args.ball_on_flat = ball_on_flat;
-    args.inlet_distance_ratio = inlet_distance_ratio;
+    let args = ContactArgs {
+        case: case_args(source, text, sets),
+        load,
+        angle,
+        entrainment_speed,
+        radii,
+        ball_on_flat,
+        inlet_distance_ratio,
+        ..Default::default()
+    };
     let report = py
         .detach(|| {
             let (_, case) = args.case.load()?;
@@ -242,10 +221,13 @@ fn thermal_report(
     transient: Option<String>,
     steps: Option<usize>,
 ) -> PyResult<Py<PyAny>> {
-    let mut args: ThermalArgs = defaults("thermal", &[])?;
-    args.case = case_args(source, text, sets);
-    args.transient = transient;
-    args.steps = steps.unwrap_or(args.steps);
+    let defaults = ThermalArgs::default();
+    let args = ThermalArgs {
+        case: case_args(source, text, sets),
+        transient,
+        steps: steps.unwrap_or(defaults.steps),
+        ..defaults
+    };
     let report = py.detach(|| thermal::report(&args)).map_err(to_py)?;
     to_python(py, &report)
 }
@@ -276,22 +258,26 @@ fn traction_report(
     cells: Option<String>,
     map: Option<String>,
 ) -> PyResult<Py<PyAny>> {
-    let mut args: TractionArgs = defaults("traction", &["--rolling-speed", &rolling_speed])?;
-    args.case = case_args(source, text, sets);
-    args.ring = ring.unwrap_or(args.ring);
-    args.method = method.unwrap_or(args.method);
-    args.load = load;
-    args.approach = approach;
-    args.angle = angle;
-    args.creepages = creepages;
-    args.slip = slip;
-    args.spin = spin;
-    args.semi_axes = semi_axes;
-    args.shear_modulus = shear_modulus;
-    args.poisson_ratio = poisson_ratio;
-    args.friction = friction;
-    args.cells = cells;
-    args.map = map;
+    let defaults = TractionArgs::default();
+    let args = TractionArgs {
+        case: case_args(source, text, sets),
+        ring: ring.unwrap_or(defaults.ring),
+        load,
+        approach,
+        angle,
+        rolling_speed,
+        creepages,
+        slip,
+        spin,
+        semi_axes,
+        shear_modulus,
+        poisson_ratio,
+        friction,
+        method: method.unwrap_or(defaults.method),
+        cells,
+        map,
+        ..defaults
+    };
     let report = py.detach(|| traction::report(&args)).map_err(to_py)?;
     to_python(py, &report)
 }
@@ -313,15 +299,20 @@ fn spectrum_report(
     harmonics: Option<usize>,
     peaks: Option<usize>,
 ) -> PyResult<Py<PyAny>> {
-    let mut args: SpectrumArgs = defaults("spectrum", &[&directory, "--channel", &channel])?;
-    args.kind = kind.unwrap_or(args.kind);
-    args.window = window.unwrap_or(args.window);
-    args.segment = segment;
-    args.overlap = overlap.unwrap_or(args.overlap);
-    args.band = band;
-    args.from = start;
-    args.harmonics = harmonics.unwrap_or(args.harmonics);
-    args.peaks = peaks.unwrap_or(args.peaks);
+    let defaults = SpectrumArgs::default();
+    let args = SpectrumArgs {
+        dir: directory,
+        channel: Some(channel),
+        kind: kind.unwrap_or(defaults.kind),
+        window: window.unwrap_or(defaults.window),
+        segment,
+        overlap: overlap.unwrap_or(defaults.overlap),
+        band,
+        from: start,
+        harmonics: harmonics.unwrap_or(defaults.harmonics),
+        peaks: peaks.unwrap_or(defaults.peaks),
+        ..defaults
+    };
     let report = py.detach(|| spectrum::report(&args)).map_err(to_py)?;
     to_python(py, &report)
 }

@@ -172,6 +172,68 @@ def test_reports_are_typed_objects():
     assert isinstance(f, rolldyn.Frequencies) and f == f.to_dict()
 
 
+def _declared(cls):
+    """A report class's declared fields: name -> the types an attribute
+    may have (Optional adds None)."""
+    import typing
+    kinds = {"float": (float, int), "int": (int,), "str": (str,), "bool": (bool,),
+             "Report": (rolldyn.Report,), "Table": (rolldyn.Table,), "np.ndarray": (np.ndarray,),
+             "list": (list,)}
+    out = {}
+    for name, annotation in cls.__annotations__.items():
+        text = annotation if isinstance(annotation, str) else str(annotation)
+        optional = text.startswith("Optional[")
+        inner = text[len("Optional["):-1] if optional else text
+        if inner.startswith("Union["):
+            inner = inner[len("Union["):-1]
+        types = tuple(t for part in inner.split(", ") for t in kinds[part])
+        out[name] = types + ((type(None),) if optional else ())
+    return out
+
+
+def test_report_classes_declare_their_fields(tmp_path):
+    """Every key of a report is a field declared with its type on the
+    report's class (scripts/python-report-fields.py writes them), every
+    declared field is a key of some report here, and each attribute has
+    the declared type: single bearings, a pair, a run of each."""
+    pair = rolldyn.Case.load(REPO / "examples" / "spindle_pair" / "case.toml")
+    cwru = rolldyn.Case.load(REPO / "examples" / "cwru6205" / "case.toml")
+    law = '{ law = "fastsim", friction = 0.1 }'
+    flags = dict(load="500 N", rolling_speed="10 m/s", creepages="1e-3,0,2")
+    fastsim = rolldyn.Case.default().set("model.traction", law)
+    run = rolldyn.run(duration="2 ms", output=tmp_path / "run")
+    reports = {
+        rolldyn.QuasiStaticResult: [rolldyn.quasistatic(), rolldyn.quasistatic(pair),
+                                    rolldyn.quasistatic(cwru)],
+        rolldyn.PowerResult: [rolldyn.power(), rolldyn.power(pair), rolldyn.power(cwru)],
+        rolldyn.ThermalResult: [rolldyn.thermal(), rolldyn.thermal(pair),
+                                rolldyn.thermal(transient="10 s")],
+        rolldyn.Frequencies: [rolldyn.frequencies(), rolldyn.frequencies(cwru)],
+        rolldyn.ContactResult: [rolldyn.contact("500 N")],
+        rolldyn.TractionResult: [rolldyn.traction(**flags),
+                                 rolldyn.traction(fastsim, method="exact", cells="8", **flags),
+                                 rolldyn.traction(fastsim, method="table", **flags)],
+        rolldyn.SpectrumResult: [run.spectrum("cage_speed_rpm")],
+        rolldyn.Summary: [run.summary,
+                          rolldyn.run(pair.set("output.sample_rate", "5 kHz"), "2 ms").summary],
+    }
+    for cls, results in reports.items():
+        declared = _declared(cls)
+        seen = set()
+        for result in results:
+            assert isinstance(result, cls)
+            for key in result:
+                assert key in declared, f"{cls.__name__}.{key} is not declared"
+                value = getattr(result, key)
+                assert isinstance(value, declared[key]), \
+                    f"{cls.__name__}.{key}: {type(value).__name__}, declared {declared[key]}"
+            seen |= set(result)
+        null_only = {k for k, t in declared.items() if k not in seen}
+        assert not null_only, f"{cls.__name__} declares fields no report has: {null_only}"
+    assert isinstance(run.summary, dict) and run.summary.mean_cage_speed_rpm == \
+        run.summary["mean_cage_speed_rpm"]
+
+
 def test_bearing_set_equals_the_cli(tmp_path):
     case = rolldyn.Case.load(REPO / "examples" / "spindle_pair" / "case.toml")
     path = str(REPO / "examples" / "spindle_pair" / "case.toml")

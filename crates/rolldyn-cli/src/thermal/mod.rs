@@ -19,7 +19,11 @@ use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
-/// Arguments of `rolldyn thermal`.
+/// Time steps of the transient by default.
+pub const DEFAULT_STEPS: usize = 600;
+
+/// Arguments of `rolldyn thermal` (`Default`: the command line's defaults,
+/// the built-in case).
 #[derive(Args, Debug)]
 pub struct ThermalArgs {
     #[command(flatten)]
@@ -29,11 +33,22 @@ pub struct ThermalArgs {
     #[arg(long, value_name = "TIME", allow_hyphen_values = true)]
     pub transient: Option<String>,
     /// Time steps of the transient.
-    #[arg(long, default_value_t = 600, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = DEFAULT_STEPS, allow_hyphen_values = true)]
     pub steps: usize,
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+}
+
+impl Default for ThermalArgs {
+    fn default() -> Self {
+        Self {
+            case: CaseArgs::default(),
+            transient: None,
+            steps: DEFAULT_STEPS,
+            json: false,
+        }
+    }
 }
 
 /// One sample of the transient.

@@ -25,6 +25,12 @@ pub use evaluate::evaluate;
 /// Arguments of `rolldyn traction`. The ring constraints of the shared
 /// case flags (`--fix-tilt`, `--misalignment`) do not enter one contact's
 /// traction and are refused, so its help does not offer them.
+/// `--ring` and `--method` by default.
+pub const DEFAULT_RING: &str = "inner";
+pub const DEFAULT_METHOD: &str = "fastsim";
+
+/// Arguments of `rolldyn traction` (`Default`: the command line's
+/// defaults, the built-in case, no rolling speed: give one).
 #[derive(Args, Debug)]
 #[command(
     mut_arg("fix_tilt", |a| a.hide(true)),
@@ -34,7 +40,7 @@ pub struct TractionArgs {
     #[command(flatten)]
     pub case: CaseArgs,
     /// Raceway: inner or outer.
-    #[arg(long, value_name = "RING", default_value = "inner")]
+    #[arg(long, value_name = "RING", default_value = DEFAULT_RING)]
     pub ring: String,
     /// Normal load, e.g. "2 kN".
     #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
@@ -78,7 +84,7 @@ pub struct TractionArgs {
     /// by boundary elements; needs the fastsim law's friction and elastic
     /// constants, or an explicit contact) or `table` (the exact theory
     /// tabulated, the `exact_table` law, with the same constants).
-    #[arg(long, value_name = "METHOD", default_value = "fastsim")]
+    #[arg(long, value_name = "METHOD", default_value = DEFAULT_METHOD)]
     pub method: String,
     /// Cells along and across the rolling direction of `--method exact`,
     /// e.g. "64" or "48,32": one grid, not extrapolated (default: 32, 48 and
@@ -91,6 +97,30 @@ pub struct TractionArgs {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+}
+
+impl Default for TractionArgs {
+    fn default() -> Self {
+        Self {
+            case: CaseArgs::default(),
+            ring: DEFAULT_RING.into(),
+            load: None,
+            approach: None,
+            angle: None,
+            rolling_speed: String::new(),
+            creepages: None,
+            slip: None,
+            spin: None,
+            semi_axes: None,
+            shear_modulus: None,
+            poisson_ratio: None,
+            friction: None,
+            method: DEFAULT_METHOD.into(),
+            cells: None,
+            map: None,
+            json: false,
+        }
+    }
 }
 
 /// A quantity given on the command line, in SI units.

@@ -4,8 +4,8 @@ The same engine and the same code paths as the ``rolldyn`` command: a case
 gives the same numbers here as on the command line. Cases carry explicit
 units (``"10000 rpm"``, ``"200 N"``); reports are typed objects whose
 attributes are the keys of the CLI's ``--json`` output (units in the
-names, docs/cli.md), with NumPy arrays for vectors, matrices and table
-columns; time series are pyarrow Tables shared with the engine's memory,
+names, docs/cli.md), each declared with its type on the report's class,
+with NumPy arrays for vectors, matrices and table columns; time series are pyarrow Tables shared with the engine's memory,
 and NumPy arrays per channel.
 
     >>> import rolldyn
@@ -53,6 +53,7 @@ from ._reports import (
     QuasiStaticResult,
     Report,
     SpectrumResult,
+    Summary,
     Table,
     ThermalResult,
     TractionResult,
@@ -76,6 +77,7 @@ __all__ = [
     "Result",
     "RunInterrupted",
     "SpectrumResult",
+    "Summary",
     "SweepResult",
     "Table",
     "ThermalResult",

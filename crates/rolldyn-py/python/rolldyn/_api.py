@@ -297,7 +297,8 @@ class Channel(np.ndarray):
 
 
 class Result:
-    """A dynamic run: ``summary`` (dict, the run's summary.json),
+    """A dynamic run: ``summary`` (a :class:`Summary`: the run's
+    summary.json as a dict with typed attributes),
     ``result[name]`` (a :class:`Channel`: NumPy array with ``.unit``, read
     from disk one channel at a time) and ``timeseries`` (the whole series as
     a pyarrow Table, each field's unit in its metadata; read on first use,
@@ -306,7 +307,7 @@ class Result:
 
     def __init__(self, summary: dict, directory: Optional[str],
                  timeseries: Optional[pa.Table] = None):
-        self.summary = summary
+        self.summary = Summary(summary)
         self.directory = directory
         self._table = timeseries
         self._schema = timeseries.schema if timeseries is not None else None
@@ -631,6 +632,6 @@ def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any =
 
 
 from ._reports import (  # noqa: E402  (the reports use nothing above)
-    ContactResult, Frequencies, PowerResult, QuasiStaticResult, SpectrumResult,
+    ContactResult, Frequencies, PowerResult, QuasiStaticResult, SpectrumResult, Summary,
     ThermalResult, TractionResult,
 )

@@ -7,7 +7,7 @@ entry). A report is also the mapping of the CLI's JSON, so
 
 from __future__ import annotations
 
-from typing import Any, Iterator, Mapping, Optional, Sequence
+from typing import Any, Iterator, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
@@ -141,11 +141,49 @@ class QuasiStaticResult(Report):
     ``cage_speed_rpm``, ``displacement`` (the ring's five displacements),
     ``rating_life``; a bearing set's solution has ``arrangement``."""
 
-    balls: Table
+    # fields: QuasiStaticResult (scripts/python-report-fields.py)
+    speed_rpm: float
+    raceway_control: str
+    force_x_n: float
+    force_y_n: float
+    force_z_n: float
+    moment_y_n_m: float
+    moment_z_n_m: float
+    cage_speed_rpm: float
+    cage_speed_ratio: float
+    axial_displacement_m: float
+    radial_displacement_y_m: float
+    radial_displacement_z_m: float
+    tilt_y_rad: float
+    tilt_z_rad: float
+    stiffness_n_per_m: Report
+    tilt_stiffness_n_m_per_rad: Report
     stiffness_matrix: np.ndarray
     compliance_matrix: np.ndarray
-    cage_speed_rpm: float
+    conventional_stiffness: Report
+    radial_load_n: float
+    radial_load_angle_deg: float
+    first_ball_azimuth_deg: float
+    held_displacements: list
+    reaction_force_x_n: Optional[float]
+    reaction_force_y_n: Optional[float]
+    reaction_force_z_n: Optional[float]
+    reaction_moment_y_n_m: Optional[float]
+    reaction_moment_z_n_m: Optional[float]
+    orbital_speed_min_rpm: float
+    orbital_speed_max_rpm: float
+    iterations: int
+    relative_residual: float
+    balls: Table
     rating_life: Report
+    films: Optional[Table]
+    film_in_approach: bool
+    stiffness_matrix_without_film: Optional[np.ndarray]
+    conventional_stiffness_without_film: Optional[Report]
+    modes: Optional[Report]
+    fits: Optional[Report]
+    arrangement: Report
+    # fields: end
 
     @property
     def displacement(self) -> Optional[np.ndarray]:
@@ -162,34 +200,251 @@ class PowerResult(Report):
     """``rolldyn power``: friction power by component at the Jones–Harris
     equilibrium (Harris's local method; keys in docs/cli.md)."""
 
+    # fields: PowerResult (scripts/python-report-fields.py)
+    speed_rpm: float
+    cage_speed_rpm: float
+    sliding_friction: float
+    hysteresis_coefficient: float
+    pocket_friction: float
+    inner: Report
+    outer: Report
+    cage_land_w: float
+    ball_pocket_w: float
+    ball_drag_w: float
+    cage_drag_w: float
+    seals_w: float
+    churning_w: float
+    power_loss_w: float
+    friction_torque_n_m: float
+    friction_torque_split_n_m: Report
+    models: Report
+    kind: str
+    bearings: Table
+    # fields: end
+
 
 class ThermalResult(Report):
     """``rolldyn thermal``: the bearing's temperatures coupled to its power
     loss, and the warm-up when asked; of a bearing set, every bearing's and
     the preload at the operating temperatures (keys in docs/cli.md)."""
 
+    # fields: ThermalResult (scripts/python-report-fields.py)
+    converged: bool
+    iterations: int
+    history_k: np.ndarray
+    temperatures_c: Report
+    heat_generated_w: float
+    heat_to_ambient_w: float
+    heat_to_oil_w: float
+    oil_viscosity_pa_s: float
+    oil_flow_m3_s: float
+    reference_clearance_m: float
+    operating_clearance_m: float
+    power: Report
+    transient: Optional[Table]
+    warnings: list
+    kind: str
+    mounting_preload_n: float
+    reference_preload_at_speed_n: float
+    operating_preload_at_speed_n: float
+    axial_strain: float
+    bearings: Table
+    # fields: end
+
 
 class Frequencies(Report):
     """``rolldyn frequencies``: cage, BPFO, BPFI, ball spin and waviness
     lines (keys in docs/cli.md)."""
+
+    # fields: Frequencies (scripts/python-report-fields.py)
+    speed_rpm: float
+    contact_angle_deg: float
+    shaft_hz: float
+    cage_hz: float
+    cage_speed_rpm: float
+    bpfo_hz: float
+    bpfi_hz: float
+    ball_spin_hz: float
+    ball_defect_hz: float
+    orders: Report
+    waviness: Table
+    # fields: end
 
 
 class ContactResult(Report):
     """``rolldyn contact``: one Hertz contact and its film (keys in
     docs/cli.md), e.g. ``semi_major_m``, ``max_pressure_pa``."""
 
+    # fields: ContactResult (scripts/python-report-fields.py)
+    load_n: float
+    contact_stiffness_model: str
+    effective_modulus_pa: float
+    inner: Report
+    outer: Report
+    # fields: end
+
 
 class TractionResult(Report):
     """``rolldyn traction``: one contact's traction: forces, spin moment,
     power, stick fraction (keys in docs/cli.md)."""
+
+    # fields: TractionResult (scripts/python-report-fields.py)
+    traction_law: str
+    ring: str
+    contact_angle_deg: float
+    load_n: float
+    semi_axis_along_m: float
+    semi_axis_across_m: float
+    rolling_speed_m_s: float
+    creepage_longitudinal: float
+    creepage_lateral: float
+    creepage_spin_1_m: float
+    force_x_n: float
+    force_y_n: float
+    force_n: float
+    traction_coefficient: float
+    spin_moment_nm: float
+    power_w: float
+    stick_fraction: Optional[float]
+    map_cells: Optional[int]
+    method: str
+    exact: Optional[Report]
+    # fields: end
 
 
 class SpectrumResult(Report):
     """``rolldyn spectrum``: a channel's spectrum with the bearing's lines
     and named peaks (keys in docs/cli.md)."""
 
+    # fields: SpectrumResult (scripts/python-report-fields.py)
+    channel: str
+    unit: str
+    kind: str
+    value_unit: str
+    window: str
+    sample_rate_hz: float
+    samples: int
+    from_s: float
+    to_s: float
+    resolution_hz: float
+    band_hz: Optional[np.ndarray]
+    segment: Optional[int]
+    segments: Optional[int]
+    velocity_rms_mm_s: Optional[float]
+    velocity_rms_band_hz: Optional[np.ndarray]
+    characteristic: Report
+    peaks: Table
+    lines: Table
+    csv: str
+    # fields: end
 
-for _cls in (Report, Table, QuasiStaticResult, PowerResult, ThermalResult, Frequencies,
+
+class Summary(dict):
+    """A run's summary (``summary.json``; keys and units in docs/cli.md):
+    a dict, so ``summary["mean_cage_speed_rpm"]`` and ``json.dump`` work,
+    whose keys are also typed attributes (``summary.mean_cage_speed_rpm``;
+    nested objects as :class:`Report`, lists of objects as :class:`Table`,
+    lists of numbers as NumPy arrays). A set's or shaft's summary has its
+    own keys (docs/cli.md); attributes absent from it raise AttributeError."""
+
+    __slots__ = ()
+
+    # fields: Summary (scripts/python-report-fields.py)
+    source: str
+    title: str
+    status: str
+    error: Optional[str]
+    requested_duration_s: float
+    simulated_time_s: float
+    wall_time_s: float
+    integrator: str
+    relative_tolerance: float
+    energy_tolerance: float
+    max_step_s: float
+    steps: int
+    rejected_steps: int
+    rhs_evaluations: int
+    jacobian_evaluations: int
+    jacobian_rhs_evaluations: int
+    fast_part_jacobians: int
+    factorizations: int
+    explicit_steps: int
+    integrator_switches: int
+    samples: int
+    sample_rate_hz: float
+    averaging_window_s: np.ndarray
+    ball_count: int
+    ball_diameter_m: float
+    pitch_diameter_m: float
+    mean_contact_angle_inner_deg: float
+    mean_contact_angle_outer_deg: float
+    inner_ring_speed_rpm: float
+    final_inner_ring_speed_rpm: float
+    mean_cage_speed_rpm: float
+    pure_rolling_cage_speed_rpm: float
+    cage_speed_ratio: float
+    pure_rolling_cage_speed_ratio: float
+    cage_sliding_rate: float
+    mean_load_inner_n: float
+    max_load_inner_n: float
+    mean_load_outer_n: float
+    max_load_outer_n: float
+    mean_slide_to_roll_inner: float
+    mean_slide_to_roll_outer: float
+    mean_spin_to_roll_inner: float
+    mean_spin_to_roll_outer: float
+    mean_attitude_deg: float
+    mean_yaw_deg: float
+    max_abs_yaw_deg: float
+    ball_pass_jitter: Optional[float]
+    ball_pass_interval_s: Optional[float]
+    cage_whirl_radius_mean_m: float
+    cage_whirl_radius_max_m: float
+    cage_whirl_speed_rpm: float
+    cage_whirl_speed_ratio: float
+    cage_whirl_sigma: float
+    velocity_rms_band_hz: np.ndarray
+    inner_ring_velocity_rms_x_mm_s: float
+    inner_ring_velocity_rms_y_mm_s: float
+    inner_ring_velocity_rms_z_mm_s: float
+    outer_ring_velocity_rms_y_mm_s: Optional[float]
+    outer_ring_velocity_rms_z_mm_s: Optional[float]
+    envelope_lines: Optional[Report]
+    waviness_lines: Optional[Report]
+    spall_growth: Optional[Table]
+    sensor: Optional[Report]
+    mean_power_loss_w: float
+    mean_dissipated_power_w: float
+    mean_sampled_power_loss_w: float
+    mean_friction_torque_n_m: float
+    mean_sampled_friction_torque_n_m: float
+    mean_power_loss_by_component_w: Report
+    lubrication_note: Optional[str]
+    thermal_coupling: Optional[Report]
+    drive_work_j: float
+    film_work_j: float
+    dissipated_energy_j: float
+    mechanical_energy_change_j: float
+    energy_balance_error_j: float
+    energy_balance_relative_error: float
+    accuracy: Report
+    kind: str
+    mounting_preload_n: float
+    bearings: Table
+    verify: Optional[Report]
+    # fields: end
+
+    def __getattr__(self, name: str) -> Any:
+        try:
+            return _view(self[name])
+        except KeyError:
+            raise AttributeError(f"Summary has no {name!r}; keys: {', '.join(self)}") from None
+
+    def __dir__(self) -> list:
+        return sorted(set(super().__dir__()) | set(self))
+
+
+for _cls in (Report, Table, Summary, QuasiStaticResult, PowerResult, ThermalResult, Frequencies,
              ContactResult, TractionResult, SpectrumResult):
     _cls.__module__ = "rolldyn"
 del _cls
