@@ -34,6 +34,7 @@ pub mod energy_control;
 pub mod explicit;
 pub mod jacobian;
 pub mod linear;
+mod point;
 pub mod rosenbrock;
 pub mod step_control;
 pub mod switching;

@@ -2,10 +2,9 @@
 //! output (Hairer, Nørsett & Wanner, *Solving Ordinary Differential
 //! Equations I*, 2nd ed., §II.4 step-size control, §II.6 dense output).
 
-use super::checkpoint::{
-    Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
-};
+use super::checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
 use super::energy_control::EnergyControl;
+use super::point::StepPoint;
 use super::step_control::{IntegrationError, IntegrationStats, PiControl, StepMethod, take_step};
 use super::tableau::Tableau;
 use super::{Integrator, OdeSystem, Tolerances};
@@ -34,25 +33,15 @@ pub enum StepControl {
 pub struct ExplicitRk {
     tableau: &'static Tableau,
     control: StepControl,
-    t: f64,
-    y: Vec<f64>,
-    /// f(t, y) at the current point (k_1 of the next step).
-    f: Vec<f64>,
-    h: f64,
+    /// The current point, the last accepted step, the controller, the
+    /// energy control and the counters.
+    point: StepPoint,
     k: Vec<Vec<f64>>,
     stage: Vec<f64>,
     y_new: Vec<f64>,
     tolerances: Tolerances,
-    // Last accepted step, for dense output.
-    t_prev: f64,
-    h_prev: f64,
-    y_prev: Vec<f64>,
-    f_prev: Vec<f64>,
+    /// Dense-output weights of the last accepted step (DOPRI5).
     dense: Vec<f64>,
-    stats: IntegrationStats,
-    control_state: PiControl,
-    /// Error control of the energy balance, if asked for.
-    energy: Option<EnergyControl>,
 }
 
 impl ExplicitRk {
@@ -70,13 +59,6 @@ impl ExplicitRk {
         t0: f64,
         y0: &[f64],
     ) -> Result<Self, IntegrationError> {
-        let n = system.dimension();
-        if y0.len() != n {
-            return Err(IntegrationError::Setting(format!(
-                "initial state has {} values, the system {n}",
-                y0.len()
-            )));
-        }
         match control {
             StepControl::Fixed { step } if !(step > 0.0 && step.is_finite()) => {
                 return Err(IntegrationError::Setting(format!(
@@ -94,16 +76,7 @@ impl ExplicitRk {
                         tableau.name
                     )));
                 }
-                if !(relative_tolerance > 0.0 && relative_tolerance < 1.0) {
-                    return Err(IntegrationError::Setting(format!(
-                        "relative tolerance {relative_tolerance} must lie in (0, 1)"
-                    )));
-                }
-                if max_step.is_nan() || max_step <= 0.0 {
-                    return Err(IntegrationError::Setting(format!(
-                        "max step {max_step} must be positive"
-                    )));
-                }
+                StepPoint::check_adaptive(relative_tolerance, max_step)?;
             }
             _ => {}
         }
@@ -113,39 +86,19 @@ impl ExplicitRk {
             } => Tolerances::new(system, relative_tolerance),
             _ => Tolerances::new(system, 1.0),
         };
-        let mut f = vec![0.0; n];
-        system.rhs(t0, y0, &mut f);
+        let point = StepPoint::start(system, t0, y0)?;
+        let n = y0.len();
         let mut me = Self {
             tableau,
             control,
-            t: t0,
-            y: y0.to_vec(),
-            f,
-            h: 0.0,
+            point,
             k: vec![vec![0.0; n]; tableau.c.len()],
             stage: vec![0.0; n],
             y_new: vec![0.0; n],
             tolerances,
-            t_prev: t0,
-            h_prev: 0.0,
-            y_prev: y0.to_vec(),
-            f_prev: vec![0.0; n],
             dense: vec![0.0; n],
-            stats: IntegrationStats {
-                rhs_evaluations: 1,
-                ..Default::default()
-            },
-            control_state: PiControl::new(),
-            energy: None,
         };
-        if me.f.iter().any(|v| !v.is_finite()) {
-            let first = me.f.iter().position(|v| !v.is_finite()).unwrap_or(0);
-            return Err(IntegrationError::NonFinite {
-                t: t0,
-                state: system.state_name(first),
-            });
-        }
-        me.h = match control {
+        me.point.h = match control {
             StepControl::Fixed { step } => step,
             StepControl::Adaptive {
                 initial_step: Some(h),
@@ -163,24 +116,24 @@ impl ExplicitRk {
         let norm = |v: &mut dyn Iterator<Item = f64>| {
             let (mut sum, mut n) = (0.0, 0.0);
             for (i, x) in v.enumerate() {
-                sum += (x / (self.tolerances.scale(i, self.y[i].abs()))).powi(2);
+                sum += (x / (self.tolerances.scale(i, self.point.y[i].abs()))).powi(2);
                 n += 1.0;
             }
             (sum / n).sqrt()
         };
-        let d0 = norm(&mut self.y.iter().copied());
-        let d1 = norm(&mut self.f.iter().copied());
+        let d0 = norm(&mut self.point.y.iter().copied());
+        let d1 = norm(&mut self.point.f.iter().copied());
         let h0 = if d0 < 1e-5 || d1 < 1e-5 {
             1e-6
         } else {
             0.01 * d0 / d1
         };
-        for i in 0..self.y.len() {
-            self.stage[i] = self.y[i] + h0 * self.f[i];
+        for i in 0..self.point.y.len() {
+            self.stage[i] = self.point.y[i] + h0 * self.point.f[i];
         }
-        system.rhs(self.t + h0, &self.stage, &mut self.y_new);
-        self.stats.rhs_evaluations += 1;
-        let d2 = norm(&mut self.y_new.iter().zip(&self.f).map(|(a, b)| a - b)) / h0;
+        system.rhs(self.point.t + h0, &self.stage, &mut self.y_new);
+        self.point.stats.rhs_evaluations += 1;
+        let d2 = norm(&mut self.y_new.iter().zip(&self.point.f).map(|(a, b)| a - b)) / h0;
         let order = self.tableau.order as f64;
         let h1 = if d1.max(d2) <= 1e-15 {
             (h0 * 1e-3).max(1e-6)
@@ -196,20 +149,15 @@ impl ExplicitRk {
     /// system that keeps no balance. Call before the first step.
     pub(crate) fn with_energy_control(mut self, system: &impl OdeSystem, tolerance: f64) -> Self {
         if matches!(self.control, StepControl::Adaptive { .. }) && !self.tableau.error.is_empty() {
-            self.energy = EnergyControl::new(
-                system,
-                tolerance,
-                f64::from(self.tableau.order),
-                self.t,
-                &self.y,
-            );
+            self.point
+                .control_energy(system, tolerance, self.tableau.order);
         }
         self
     }
 
     /// Step size the next step will try.
     pub fn step_size(&self) -> f64 {
-        self.h
+        self.point.h
     }
 
     /// Continues from (t, y) with a first step h, as after a hand-over from
@@ -223,39 +171,30 @@ impl ExplicitRk {
         h: f64,
         energy: Option<&EnergyControl>,
     ) {
-        self.t = t;
-        self.y.copy_from_slice(y);
-        system.rhs(t, y, &mut self.f);
-        self.stats.rhs_evaluations += 1;
-        self.t_prev = t;
-        self.h_prev = 0.0;
-        self.control_state = PiControl::new();
-        self.h = match self.control {
+        let h = match self.control {
             StepControl::Adaptive { max_step, .. } => h.min(max_step),
             StepControl::Fixed { step } => step,
         };
-        if let (Some(mine), Some(from)) = (&mut self.energy, energy) {
-            mine.continue_from(from);
-        }
+        self.point.restart(system, t, y, h, energy);
     }
 
     /// The energy-balance control, if any.
     pub(crate) fn energy_control(&self) -> Option<&EnergyControl> {
-        self.energy.as_ref()
+        self.point.energy.as_ref()
     }
 
     /// Computes the stages and the candidate y_new for step h; returns the
     /// scaled error norm (0 for methods without an estimate).
     fn try_step(&mut self, system: &mut impl OdeSystem, h: f64, rtol: Option<f64>) -> f64 {
         let tab = self.tableau;
-        let n = self.y.len();
+        let n = self.point.y.len();
         let last = tab.c.len() - 1;
         // An FSAL method's last stage is the candidate y₁ (its row of a is
         // b, so the same sums give the same bits): it serves the step's
         // acceptance, and the energy control's balance there comes with it.
-        let balance = rtol.is_some() && self.energy.is_some();
+        let balance = rtol.is_some() && self.point.energy.is_some();
         let mut end = None;
-        self.k[0].copy_from_slice(&self.f);
+        self.k[0].copy_from_slice(&self.point.f);
         for s in 1..tab.c.len() {
             let row = tab.a[s];
             for i in 0..n {
@@ -263,22 +202,22 @@ impl ExplicitRk {
                 for (j, a) in row.iter().enumerate() {
                     acc += a * self.k[j][i];
                 }
-                self.stage[i] = self.y[i] + h * acc;
+                self.stage[i] = self.point.y[i] + h * acc;
             }
-            let t_stage = self.t + tab.c[s] * h;
+            let t_stage = self.point.t + tab.c[s] * h;
             if tab.fsal && s == last {
                 end = system.rhs_at_end(t_stage, &self.stage, &mut self.k[s], balance);
             } else {
                 system.rhs(t_stage, &self.stage, &mut self.k[s]);
             }
-            self.stats.rhs_evaluations += 1;
+            self.point.stats.rhs_evaluations += 1;
         }
         for i in 0..n {
             let mut acc = 0.0;
             for (j, b) in tab.b.iter().enumerate() {
                 acc += b * self.k[j][i];
             }
-            self.y_new[i] = self.y[i] + h * acc;
+            self.y_new[i] = self.point.y[i] + h * acc;
         }
         if rtol.is_none() || tab.error.is_empty() {
             return if self.y_new.iter().all(|v| v.is_finite()) {
@@ -295,24 +234,31 @@ impl ExplicitRk {
             }
             let scale = self
                 .tolerances
-                .scale(i, self.y[i].abs().max(self.y_new[i].abs()));
+                .scale(i, self.point.y[i].abs().max(self.y_new[i].abs()));
             sum += (h * e / scale).powi(2);
         }
         let err = (sum / n as f64).sqrt();
         if !err.is_finite() {
             return f64::INFINITY;
         }
-        match &mut self.energy {
+        match &mut self.point.energy {
             // Only a step the states pass needs the energy's verdict.
             Some(energy) if err <= 1.0 => {
                 if !tab.fsal {
-                    end = system.energy_balance(self.t + h, &self.y_new);
+                    end = system.energy_balance(self.point.t + h, &self.y_new);
                 }
                 let (k, weights) = (&self.k, tab.error);
                 let error =
                     |i: usize| h * weights.iter().zip(k).map(|(w, k)| w * k[i]).sum::<f64>();
                 let candidate = (&self.y_new[..], end);
-                err.max(energy.scaled_error(system, self.t, &self.y, h, candidate, error))
+                err.max(energy.scaled_error(
+                    system,
+                    self.point.t,
+                    &self.point.y,
+                    h,
+                    candidate,
+                    error,
+                ))
             }
             _ => err,
         }
@@ -321,7 +267,7 @@ impl ExplicitRk {
     /// The scaled error of each component in the last attempt of step h
     /// (the terms of the error norm; the state itself where not finite).
     fn error_terms(&self, h: f64) -> impl Iterator<Item = f64> + '_ {
-        (0..self.y.len()).map(move |i| {
+        (0..self.point.y.len()).map(move |i| {
             let e: f64 = self
                 .tableau
                 .error
@@ -331,7 +277,7 @@ impl ExplicitRk {
                 .sum();
             let scale = self
                 .tolerances
-                .scale(i, self.y[i].abs().max(self.y_new[i].abs()));
+                .scale(i, self.point.y[i].abs().max(self.y_new[i].abs()));
             if self.y_new[i].is_finite() {
                 (h * e / scale).abs()
             } else {
@@ -341,12 +287,8 @@ impl ExplicitRk {
     }
 
     fn finish_step(&mut self, system: &mut impl OdeSystem, h: f64) {
-        let n = self.y.len();
+        let n = self.point.y.len();
         let tab = self.tableau;
-        self.t_prev = self.t;
-        self.h_prev = h;
-        self.y_prev.copy_from_slice(&self.y);
-        self.f_prev.copy_from_slice(&self.f);
         // Dense-output weights (DOPRI5): h Σ d_i k_i.
         if !tab.dense.is_empty() {
             for i in 0..n {
@@ -357,29 +299,25 @@ impl ExplicitRk {
                 self.dense[i] = h * acc;
             }
         }
-        self.t += h;
-        self.y.copy_from_slice(&self.y_new);
+        self.point.advance(h, &self.y_new);
         if tab.fsal {
             let last = tab.c.len() - 1;
-            self.f.copy_from_slice(&self.k[last]);
+            self.point.f.copy_from_slice(&self.k[last]);
         } else {
-            system.rhs(self.t, &self.y, &mut self.f);
-            self.stats.rhs_evaluations += 1;
+            system.rhs(self.point.t, &self.point.y, &mut self.point.f);
+            self.point.stats.rhs_evaluations += 1;
         }
-        self.stats.steps += 1;
-        if let Some(energy) = &mut self.energy {
-            energy.accepted();
-        }
-        if system.accept_step(self.t, &self.y) {
-            system.rhs(self.t, &self.y, &mut self.f);
-            self.stats.rhs_evaluations += 1;
+        self.point.accepted();
+        if system.accept_step(self.point.t, &self.point.y) {
+            system.rhs(self.point.t, &self.point.y, &mut self.point.f);
+            self.point.stats.rhs_evaluations += 1;
         }
     }
 }
 
 impl StepMethod for ExplicitRk {
     fn point(&self) -> (f64, &[f64]) {
-        (self.t, &self.y)
+        (self.point.t, &self.point.y)
     }
 
     fn max_step(&self) -> f64 {
@@ -397,7 +335,7 @@ impl StepMethod for ExplicitRk {
     }
 
     fn step_size(&mut self) -> (&mut f64, &mut PiControl) {
-        (&mut self.h, &mut self.control_state)
+        (&mut self.point.h, &mut self.point.control)
     }
 
     fn attempt<S: OdeSystem>(&mut self, system: &mut S, h: f64) -> f64 {
@@ -415,7 +353,7 @@ impl StepMethod for ExplicitRk {
     }
 
     fn reject(&mut self) {
-        self.stats.rejected_steps += 1;
+        self.point.stats.rejected_steps += 1;
     }
 
     /// A fixed step fails only on a non-finite state: the first one.
@@ -429,18 +367,18 @@ impl StepMethod for ExplicitRk {
         if let StepControl::Fixed { .. } = self.control {
             let first = self.y_new.iter().position(|v| !v.is_finite()).unwrap_or(0);
             return IntegrationError::NonFinite {
-                t: self.t,
+                t: self.point.t,
                 state: system.state_name(first),
             };
         }
         PiControl::too_small(
-            self.t,
+            self.point.t,
             step,
             err,
             system,
             self.error_terms(tried),
-            &self.y,
-            &self.f,
+            &self.point.y,
+            &self.point.f,
             &self.tolerances,
         )
     }
@@ -449,44 +387,32 @@ impl StepMethod for ExplicitRk {
 impl Checkpoint for ExplicitRk {
     fn save(&self, out: &mut StateWriter) {
         out.tag(self.tableau.name);
-        save_step(
-            out,
-            [self.t, self.h, self.t_prev, self.h_prev],
-            [&self.y, &self.f, &self.y_prev, &self.f_prev],
-        );
+        self.point.save(out);
         out.f64s(&self.dense);
-        out.f64(self.control_state.err_prev);
-        if let Some(energy) = &self.energy {
-            energy.save(out);
-        }
-        self.stats.save(out);
+        out.f64(self.point.control.err_prev);
+        self.point.save_energy(out);
+        self.point.stats.save(out);
     }
 
     fn restore(&mut self, input: &mut StateReader) -> Result<(), CheckpointError> {
         input.tag(self.tableau.name)?;
-        restore_step(
-            input,
-            [&mut self.t, &mut self.h, &mut self.t_prev, &mut self.h_prev],
-            [&mut self.y, &mut self.f, &mut self.y_prev, &mut self.f_prev],
-        )?;
+        self.point.restore(input)?;
         input.f64s_into("dense", &mut self.dense)?;
-        self.control_state.err_prev = input.f64()?;
-        if let Some(energy) = &mut self.energy {
-            energy.restore(input)?;
-        }
-        self.stats.restore(input)
+        self.point.control.err_prev = input.f64()?;
+        self.point.restore_energy(input)?;
+        self.point.stats.restore(input)
     }
 }
 
 impl Integrator for ExplicitRk {
     /// Current time.
     fn t(&self) -> f64 {
-        self.t
+        self.point.t
     }
 
     /// Current state.
     fn y(&self) -> &[f64] {
-        &self.y
+        &self.point.y
     }
 
     /// Takes one accepted step, not beyond `t_limit` (`step_control::take_step`).
@@ -499,28 +425,29 @@ impl Integrator for ExplicitRk {
     /// (clamped to it), written into `out`. DOPRI5 uses its 4th-order
     /// continuous extension; other methods a cubic Hermite interpolant.
     fn interpolate(&self, t: f64, out: &mut [f64]) {
-        if self.h_prev == 0.0 {
-            out.copy_from_slice(&self.y);
+        if self.point.h_prev == 0.0 {
+            out.copy_from_slice(&self.point.y);
             return;
         }
-        let h = self.h_prev;
-        let theta = ((t - self.t_prev) / h).clamp(0.0, 1.0);
+        let h = self.point.h_prev;
+        let theta = ((t - self.point.t_prev) / h).clamp(0.0, 1.0);
         let t1 = 1.0 - theta;
         if !self.tableau.dense.is_empty() {
             for (i, o) in out.iter_mut().enumerate() {
-                let r2 = self.y[i] - self.y_prev[i];
-                let r3 = h * self.f_prev[i] - r2;
-                let r4 = r2 - h * self.f[i] - r3;
-                *o = self.y_prev[i] + theta * (r2 + t1 * (r3 + theta * (r4 + t1 * self.dense[i])));
+                let r2 = self.point.y[i] - self.point.y_prev[i];
+                let r3 = h * self.point.f_prev[i] - r2;
+                let r4 = r2 - h * self.point.f[i] - r3;
+                *o = self.point.y_prev[i]
+                    + theta * (r2 + t1 * (r3 + theta * (r4 + t1 * self.dense[i])));
             }
         } else {
             hermite(
-                self.t_prev,
+                self.point.t_prev,
                 h,
-                &self.y_prev,
-                &self.f_prev,
-                &self.y,
-                &self.f,
+                &self.point.y_prev,
+                &self.point.f_prev,
+                &self.point.y,
+                &self.point.f,
                 t,
                 out,
             );
@@ -529,7 +456,7 @@ impl Integrator for ExplicitRk {
 
     /// Counters so far.
     fn stats(&self) -> IntegrationStats {
-        self.stats
+        self.point.stats
     }
 }
 

@@ -32,12 +32,11 @@
 //! also serves the step's acceptance), and kept if the step is accepted;
 //! an attempt the energy then rejects has spent it.
 
-use super::checkpoint::{
-    Checkpoint, CheckpointError, StateReader, StateWriter, restore_step, save_step,
-};
+use super::checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};
 use super::energy_control::EnergyControl;
 use super::jacobian::{JacobianWork, finite_difference};
 use super::linear::{BlockJacobian, BlockLayout, BlockLu};
+use super::point::StepPoint;
 use super::step_control::{IntegrationError, IntegrationStats, PiControl, StepMethod, take_step};
 use super::{Integrator, OdeSystem, Tolerances};
 use fast_part::FastRefresh;
@@ -185,11 +184,9 @@ pub struct Rosenbrock {
     tableau: &'static RosenbrockTableau,
     coefficients: Transformed,
     max_step: f64,
-    t: f64,
-    y: Vec<f64>,
-    /// f(t, y) at the current point (the first stage of the next step).
-    f: Vec<f64>,
-    h: f64,
+    /// The current point, the last accepted step, the controller, the
+    /// energy control and the counters.
+    point: StepPoint,
     stages: Vec<Vec<f64>>,
     stage_y: Vec<f64>,
     y_new: Vec<f64>,
@@ -212,14 +209,6 @@ pub struct Rosenbrock {
     /// Whether the factorization has gathered the current Jacobian (a new
     /// step size then only refactors, [`BlockLu::refactor`]).
     gathered: bool,
-    t_prev: f64,
-    h_prev: f64,
-    y_prev: Vec<f64>,
-    f_prev: Vec<f64>,
-    stats: IntegrationStats,
-    control_state: PiControl,
-    /// Error control of the energy balance, if asked for.
-    energy: Option<EnergyControl>,
 }
 
 impl Rosenbrock {
@@ -239,23 +228,9 @@ impl Rosenbrock {
         t0: f64,
         y0: &[f64],
     ) -> Result<Self, IntegrationError> {
-        let n = system.dimension();
-        if y0.len() != n {
-            return Err(IntegrationError::Setting(format!(
-                "initial state has {} values, the system {n}",
-                y0.len()
-            )));
-        }
-        if !(relative_tolerance > 0.0 && relative_tolerance < 1.0) {
-            return Err(IntegrationError::Setting(format!(
-                "relative tolerance {relative_tolerance} must lie in (0, 1)"
-            )));
-        }
-        if max_step.is_nan() || max_step <= 0.0 {
-            return Err(IntegrationError::Setting(format!(
-                "max step {max_step} must be positive"
-            )));
-        }
+        StepPoint::check_adaptive(relative_tolerance, max_step)?;
+        let point = StepPoint::start(system, t0, y0)?;
+        let n = y0.len();
         let layout = system
             .blocks()
             .map(|s| s.block_layout())
@@ -267,24 +242,12 @@ impl Rosenbrock {
             )));
         }
         let tolerances = Tolerances::new(system, relative_tolerance);
-        let mut f = vec![0.0; n];
-        system.rhs(t0, y0, &mut f);
-        if f.iter().any(|v| !v.is_finite()) {
-            let first = f.iter().position(|v| !v.is_finite()).unwrap_or(0);
-            return Err(IntegrationError::NonFinite {
-                t: t0,
-                state: system.state_name(first),
-            });
-        }
         let coefficients = Transformed::of(tableau);
         let mut me = Self {
             tableau,
             coefficients,
             max_step,
-            t: t0,
-            y: y0.to_vec(),
-            f,
-            h: 0.0,
+            point,
             stages: vec![vec![0.0; n]; coefficients.stages],
             stage_y: vec![0.0; n],
             y_new: vec![0.0; n],
@@ -310,18 +273,8 @@ impl Rosenbrock {
             jacobian_age: None,
             factored_step: None,
             gathered: false,
-            t_prev: t0,
-            h_prev: 0.0,
-            y_prev: y0.to_vec(),
-            f_prev: vec![0.0; n],
-            stats: IntegrationStats {
-                rhs_evaluations: 1,
-                ..Default::default()
-            },
-            control_state: PiControl::new(),
-            energy: None,
         };
-        me.h = initial_step
+        me.point.h = initial_step
             .unwrap_or_else(|| me.starting_step())
             .min(max_step);
         Ok(me)
@@ -333,10 +286,10 @@ impl Rosenbrock {
     /// corrects it within a few steps.
     fn starting_step(&self) -> f64 {
         let mut sum = 0.0;
-        for i in 0..self.y.len() {
-            sum += (self.f[i] / (self.tolerances.scale(i, self.y[i].abs()))).powi(2);
+        for i in 0..self.point.y.len() {
+            sum += (self.point.f[i] / (self.tolerances.scale(i, self.point.y[i].abs()))).powi(2);
         }
-        let d1 = (sum / self.y.len() as f64).sqrt();
+        let d1 = (sum / self.point.y.len() as f64).sqrt();
         if d1 < 1e-5 {
             1e-6
         } else {
@@ -349,19 +302,14 @@ impl Rosenbrock {
     /// ([`super::energy_control`]); no effect for a system that keeps no
     /// balance. Call before the first step.
     pub(crate) fn with_energy_control(mut self, system: &impl OdeSystem, tolerance: f64) -> Self {
-        self.energy = EnergyControl::new(
-            system,
-            tolerance,
-            f64::from(self.tableau.order),
-            self.t,
-            &self.y,
-        );
+        self.point
+            .control_energy(system, tolerance, self.tableau.order);
         self
     }
 
     /// Step size the next step will try.
     pub fn step_size(&self) -> f64 {
-        self.h
+        self.point.h
     }
 
     /// Continues from (t, y) with a first step h, as after a hand-over from
@@ -376,28 +324,19 @@ impl Rosenbrock {
         h: f64,
         energy: Option<&EnergyControl>,
     ) {
-        self.t = t;
-        self.y.copy_from_slice(y);
-        system.rhs(t, y, &mut self.f);
-        self.stats.rhs_evaluations += 1;
-        self.t_prev = t;
-        self.h_prev = 0.0;
-        self.control_state = PiControl::new();
-        self.h = h.min(self.max_step);
+        self.point
+            .restart(system, t, y, h.min(self.max_step), energy);
         self.jacobian_age = None;
         self.factored_step = None;
         self.gathered = false;
         if let Some(fast) = &mut self.fast {
             fast.restart();
         }
-        if let (Some(mine), Some(from)) = (&mut self.energy, energy) {
-            mine.continue_from(from);
-        }
     }
 
     /// The energy-balance control, if any.
     pub(crate) fn energy_control(&self) -> Option<&EnergyControl> {
-        self.energy.as_ref()
+        self.point.energy.as_ref()
     }
 
     /// The tableau's name.
@@ -408,21 +347,26 @@ impl Rosenbrock {
     fn evaluate_jacobian(&mut self, system: &impl OdeSystem) {
         let cost = finite_difference(
             system,
-            self.t,
-            &self.y,
-            &self.f,
+            self.point.t,
+            &self.point.y,
+            &self.point.f,
             &mut self.jacobian,
             &mut self.work,
         );
-        self.stats.jacobian_evaluations += 1;
-        self.stats.jacobian_rhs_evaluations += cost;
+        self.point.stats.jacobian_evaluations += 1;
+        self.point.stats.jacobian_rhs_evaluations += cost;
         self.jacobian_age = Some(0);
         self.factored_step = None;
         self.gathered = false;
         if let Some(fast) = &mut self.fast
-            && fast.split(system, (self.t, &self.y), &self.jacobian, &mut self.work)
+            && fast.split(
+                system,
+                (self.point.t, &self.point.y),
+                &self.jacobian,
+                &mut self.work,
+            )
         {
-            self.stats.fast_part_jacobians += 1;
+            self.point.stats.fast_part_jacobians += 1;
         }
     }
 
@@ -430,10 +374,10 @@ impl Rosenbrock {
     /// matrix is singular or the stages are not finite).
     fn try_step(&mut self, system: &mut impl OdeSystem, h: f64) -> f64 {
         let co = self.coefficients;
-        let n = self.y.len();
+        let n = self.point.y.len();
         self.end_evaluated = false;
         if self.factored_step != Some(h) {
-            self.stats.factorizations += 1;
+            self.point.stats.factorizations += 1;
             let sigma = 1.0 / (h * co.gamma);
             let factored = if self.gathered {
                 self.lu.refactor(&self.jacobian, sigma)
@@ -451,17 +395,17 @@ impl Rosenbrock {
             let (done, rest) = self.stages.split_at_mut(i);
             let u = &mut rest[0];
             if i == 0 {
-                u.copy_from_slice(&self.f);
+                u.copy_from_slice(&self.point.f);
             } else {
                 for k in 0..n {
-                    let mut acc = self.y[k];
+                    let mut acc = self.point.y[k];
                     for (j, d) in done.iter().enumerate() {
                         acc += co.a[i][j] * d[k];
                     }
                     self.stage_y[k] = acc;
                 }
-                system.rhs(self.t + co.node[i] * h, &self.stage_y, u);
-                self.stats.rhs_evaluations += 1;
+                system.rhs(self.point.t + co.node[i] * h, &self.stage_y, u);
+                self.point.stats.rhs_evaluations += 1;
                 for k in 0..n {
                     let mut acc = 0.0;
                     for (j, d) in done.iter().enumerate() {
@@ -479,11 +423,11 @@ impl Rosenbrock {
                 step += co.m[i] * self.stages[i][k];
                 err += co.error[i] * self.stages[i][k];
             }
-            self.y_new[k] = self.y[k] + step;
+            self.y_new[k] = self.point.y[k] + step;
             self.error[k] = err;
             let scale = self
                 .tolerances
-                .scale(k, self.y[k].abs().max(self.y_new[k].abs()));
+                .scale(k, self.point.y[k].abs().max(self.y_new[k].abs()));
             let term = (err / scale).powi(2);
             sum += term;
             if term > largest.1 {
@@ -506,38 +450,37 @@ impl Rosenbrock {
         }
         // The states pass: f(y₁), which an accepted step needs next, and
         // the balance there for the energy's verdict, from one evaluation.
-        let balance = self.energy.is_some();
-        let end = system.rhs_at_end(self.t + h, &self.y_new, &mut self.f_new, balance);
-        self.stats.rhs_evaluations += 1;
+        let balance = self.point.energy.is_some();
+        let end = system.rhs_at_end(self.point.t + h, &self.y_new, &mut self.f_new, balance);
+        self.point.stats.rhs_evaluations += 1;
         self.end_evaluated = true;
-        match &mut self.energy {
+        match &mut self.point.energy {
             Some(energy) => {
                 let e = &self.error;
                 let candidate = (&self.y_new[..], end);
-                err.max(energy.scaled_error(system, self.t, &self.y, h, candidate, |k| e[k]))
+                err.max(energy.scaled_error(
+                    system,
+                    self.point.t,
+                    &self.point.y,
+                    h,
+                    candidate,
+                    |k| e[k],
+                ))
             }
             None => err,
         }
     }
 
     fn finish_step(&mut self, system: &mut impl OdeSystem, h: f64) {
-        self.t_prev = self.t;
-        self.h_prev = h;
-        self.y_prev.copy_from_slice(&self.y);
-        self.f_prev.copy_from_slice(&self.f);
-        self.t += h;
-        self.y.copy_from_slice(&self.y_new);
-        let changed = system.accept_step(self.t, &self.y);
+        self.point.advance(h, &self.y_new);
+        let changed = system.accept_step(self.point.t, &self.point.y);
         if self.end_evaluated && !changed {
-            std::mem::swap(&mut self.f, &mut self.f_new);
+            std::mem::swap(&mut self.point.f, &mut self.f_new);
         } else {
-            system.rhs(self.t, &self.y, &mut self.f);
-            self.stats.rhs_evaluations += 1;
+            system.rhs(self.point.t, &self.point.y, &mut self.point.f);
+            self.point.stats.rhs_evaluations += 1;
         }
-        self.stats.steps += 1;
-        if let Some(energy) = &mut self.energy {
-            energy.accepted();
-        }
+        self.point.accepted();
         if let Some(age) = &mut self.jacobian_age {
             *age += 1;
         }
@@ -549,7 +492,7 @@ impl Rosenbrock {
 
 impl StepMethod for Rosenbrock {
     fn point(&self) -> (f64, &[f64]) {
-        (self.t, &self.y)
+        (self.point.t, &self.point.y)
     }
 
     fn max_step(&self) -> f64 {
@@ -562,7 +505,7 @@ impl StepMethod for Rosenbrock {
     }
 
     fn step_size(&mut self) -> (&mut f64, &mut PiControl) {
-        (&mut self.h, &mut self.control_state)
+        (&mut self.point.h, &mut self.point.control)
     }
 
     fn prepare<S: OdeSystem>(&mut self, system: &S) {
@@ -577,12 +520,12 @@ impl StepMethod for Rosenbrock {
         } else if let Some(fast) = &mut self.fast
             && fast.refresh(
                 system,
-                (self.t, &self.y),
+                (self.point.t, &self.point.y),
                 &mut self.jacobian,
                 &mut self.work,
             )
         {
-            self.stats.fast_part_jacobians += 1;
+            self.point.stats.fast_part_jacobians += 1;
             self.factored_step = None;
             self.gathered = false;
         }
@@ -598,7 +541,7 @@ impl StepMethod for Rosenbrock {
 
     /// A rejection with an old Jacobian refreshes it first.
     fn reject(&mut self) {
-        self.stats.rejected_steps += 1;
+        self.point.stats.rejected_steps += 1;
         let min_age = if self.fast.as_ref().is_some_and(FastRefresh::refreshing) {
             MIN_AGE_FOR_REFRESH_WITH_FAST_PART
         } else {
@@ -616,10 +559,10 @@ impl StepMethod for Rosenbrock {
         _tried: f64,
         err: f64,
     ) -> IntegrationError {
-        let terms = (0..self.y.len()).map(|k| {
+        let terms = (0..self.point.y.len()).map(|k| {
             let scale = self
                 .tolerances
-                .scale(k, self.y[k].abs().max(self.y_new[k].abs()));
+                .scale(k, self.point.y[k].abs().max(self.y_new[k].abs()));
             if self.y_new[k].is_finite() {
                 (self.error[k] / scale).abs()
             } else {
@@ -627,13 +570,13 @@ impl StepMethod for Rosenbrock {
             }
         });
         PiControl::too_small(
-            self.t,
+            self.point.t,
             step,
             err,
             system,
             terms,
-            &self.y,
-            &self.f,
+            &self.point.y,
+            &self.point.f,
             &self.tolerances,
         )
     }
@@ -642,12 +585,8 @@ impl StepMethod for Rosenbrock {
 impl Checkpoint for Rosenbrock {
     fn save(&self, out: &mut StateWriter) {
         out.tag(self.tableau.name);
-        save_step(
-            out,
-            [self.t, self.h, self.t_prev, self.h_prev],
-            [&self.y, &self.f, &self.y_prev, &self.f_prev],
-        );
-        out.f64(self.control_state.err_prev);
+        self.point.save(out);
+        out.f64(self.point.control.err_prev);
         // Age + 1, 0 for "no Jacobian yet".
         out.u64(self.jacobian_age.map_or(0, |a| u64::from(a) + 1));
         out.opt_f64(self.factored_step);
@@ -655,25 +594,19 @@ impl Checkpoint for Rosenbrock {
         for part in [&j.diag, &j.upper, &j.lower, &j.border] {
             out.f64s(part);
         }
-        if let Some(energy) = &self.energy {
-            energy.save(out);
-        }
+        self.point.save_energy(out);
         if let Some(fast) = &self.fast {
             fast.save(out);
         }
-        self.stats.save(out);
+        self.point.stats.save(out);
     }
 
     /// Restores the state; the iteration matrix is factored again from the
     /// saved Jacobian and step (the same operations, so the same bits).
     fn restore(&mut self, input: &mut StateReader) -> Result<(), CheckpointError> {
         input.tag(self.tableau.name)?;
-        restore_step(
-            input,
-            [&mut self.t, &mut self.h, &mut self.t_prev, &mut self.h_prev],
-            [&mut self.y, &mut self.f, &mut self.y_prev, &mut self.f_prev],
-        )?;
-        self.control_state.err_prev = input.f64()?;
+        self.point.restore(input)?;
+        self.point.control.err_prev = input.f64()?;
         self.jacobian_age = match input.u64()? {
             0 => None,
             a => Some(u32::try_from(a - 1).map_err(|_| {
@@ -687,13 +620,11 @@ impl Checkpoint for Rosenbrock {
         input.f64s_into("jacobian upper border", &mut j.upper)?;
         input.f64s_into("jacobian lower border", &mut j.lower)?;
         input.f64s_into("jacobian corner", &mut j.border)?;
-        if let Some(energy) = &mut self.energy {
-            energy.restore(input)?;
-        }
+        self.point.restore_energy(input)?;
         if let Some(fast) = &mut self.fast {
             fast.restore(input)?;
         }
-        self.stats.restore(input)?;
+        self.point.stats.restore(input)?;
         if let Some(h) = self.factored_step {
             self.gathered = true;
             if self
@@ -711,12 +642,12 @@ impl Checkpoint for Rosenbrock {
 impl Integrator for Rosenbrock {
     /// Current time.
     fn t(&self) -> f64 {
-        self.t
+        self.point.t
     }
 
     /// Current state.
     fn y(&self) -> &[f64] {
-        &self.y
+        &self.point.y
     }
 
     /// Takes one accepted step, not beyond `t_limit` (`step_control::take_step`).
@@ -729,12 +660,12 @@ impl Integrator for Rosenbrock {
     /// (clamped to it), order 3 like the method.
     fn interpolate(&self, t: f64, out: &mut [f64]) {
         super::explicit::hermite(
-            self.t_prev,
-            self.h_prev,
-            &self.y_prev,
-            &self.f_prev,
-            &self.y,
-            &self.f,
+            self.point.t_prev,
+            self.point.h_prev,
+            &self.point.y_prev,
+            &self.point.f_prev,
+            &self.point.y,
+            &self.point.f,
             t,
             out,
         );
@@ -742,7 +673,7 @@ impl Integrator for Rosenbrock {
 
     /// Counters so far.
     fn stats(&self) -> IntegrationStats {
-        self.stats
+        self.point.stats
     }
 }
 
