@@ -19,6 +19,47 @@ impl ShaftDynamics {
             .copy_from_slice(&y[b.first_ball + at..b.first_ball + at + self.ball_len]);
         self.gather_border(b, y, out);
     }
+
+    /// Evaluates ball `j` of bearing `i` by `f`: on the bearing's own
+    /// state (that ball and the border, gathered from `y`) and with the
+    /// bearing's slot of `coupling` (the others' slots zeroed).
+    fn on_ball<R>(
+        &self,
+        (i, j): (usize, usize),
+        y: &[f64],
+        coupling: &mut [f64],
+        f: impl FnOnce(&Mounted, &[f64], &mut [f64]) -> R,
+    ) -> R {
+        let b = &self.bearings[i];
+        let mut work = self.take();
+        let len = b.model.layout().len();
+        self.gather_ball(b, j, y, &mut work.y[..len]);
+        coupling.fill(0.0);
+        let slot = &mut coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN];
+        let out = f(b, &work.y[..len], slot);
+        self.give(work);
+        out
+    }
+
+    /// A state of the system as a bearing's and the index in that bearing's
+    /// own model (its balls, then its border from the outer ring on: the
+    /// inner ring's states are the shaft's); None for the shaft's states.
+    fn model_state(&self, state: usize) -> Option<(&Mounted, usize)> {
+        if state >= self.first_shaft {
+            return None;
+        }
+        self.bearings.iter().find_map(|b| {
+            let l = b.model.layout();
+            let n = l.balls * self.ball_len;
+            if (b.first_ball..b.first_ball + n).contains(&state) {
+                Some((b, state - b.first_ball))
+            } else if (b.first_border..b.first_border + l.len() - l.outer()).contains(&state) {
+                Some((b, state - b.first_border + l.outer()))
+            } else {
+                None
+            }
+        })
+    }
 }
 
 impl BlockSplit for ShaftDynamics {
@@ -47,14 +88,9 @@ impl BlockSplit for ShaftDynamics {
         coupling: &mut [f64],
     ) {
         let (i, j) = self.block_owner(block);
-        let b = &self.bearings[i];
-        let mut work = self.take();
-        let len = b.model.layout().len();
-        self.gather_ball(b, j, y, &mut work.y[..len]);
-        coupling.fill(0.0);
-        let slot = &mut coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN];
-        b.model.block_rhs(t, &work.y[..len], j, dy_block, slot);
-        self.give(work);
+        self.on_ball((i, j), y, coupling, |b, own, slot| {
+            b.model.block_rhs(t, own, j, dy_block, slot)
+        });
     }
 
     fn border_rhs(&self, t: f64, y: &[f64], coupling: &[f64], dy_border: &mut [f64]) {
@@ -95,18 +131,13 @@ impl BlockSplit for ShaftDynamics {
         memo: &mut [f64],
     ) {
         let (i, j) = self.block_owner(block);
-        let b = &self.bearings[i];
         let (own, _) = self.memo_parts();
-        let mut work = self.take();
-        let len = b.model.layout().len();
-        self.gather_ball(b, j, y, &mut work.y[..len]);
-        coupling.fill(0.0);
-        let slot = &mut coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN];
-        b.model
-            .block_rhs_memo(t, &work.y[..len], j, dy_block, slot, &mut memo[..own]);
-        self.give(work);
-        memo[own..own + self.ball_len].copy_from_slice(dy_block);
-        memo[own + self.ball_len..].copy_from_slice(slot);
+        self.on_ball((i, j), y, coupling, |b, state, slot| {
+            b.model
+                .block_rhs_memo(t, state, j, dy_block, slot, &mut memo[..own]);
+            memo[own..own + self.ball_len].copy_from_slice(dy_block);
+            memo[own + self.ball_len..].copy_from_slice(slot);
+        });
     }
 
     /// A border state of another bearing leaves the block as it was (its
@@ -131,24 +162,10 @@ impl BlockSplit for ShaftDynamics {
                 coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN]
                     .copy_from_slice(&memo[own + self.ball_len..]);
             }
-            Some((_, local)) => {
-                let b = &self.bearings[i];
-                let mut work = self.take();
-                let len = b.model.layout().len();
-                self.gather_ball(b, j, y, &mut work.y[..len]);
-                coupling.fill(0.0);
-                let slot = &mut coupling[i * BallCoupling::LEN..(i + 1) * BallCoupling::LEN];
-                b.model.block_rhs_border_column(
-                    t,
-                    &work.y[..len],
-                    j,
-                    local,
-                    &memo[..own],
-                    dy_block,
-                    slot,
-                );
-                self.give(work);
-            }
+            Some((_, local)) => self.on_ball((i, j), y, coupling, |b, state, slot| {
+                b.model
+                    .block_rhs_border_column(t, state, j, local, &memo[..own], dy_block, slot)
+            }),
             None => self.block_rhs(t, y, block, dy_block, coupling),
         }
     }
@@ -164,34 +181,20 @@ impl BlockSplit for ShaftDynamics {
                 _ => None,
             };
         }
-        for b in &self.bearings {
-            let l = b.model.layout();
-            let n = l.balls * self.ball_len;
-            if (b.first_ball..b.first_ball + n).contains(&state) {
-                return Some(b.model.rate_of(state - b.first_ball)? + b.first_ball);
-            }
-            if (b.first_border..b.first_border + l.len() - l.outer()).contains(&state) {
-                let v = b.model.rate_of(state - b.first_border + l.outer())?;
-                return Some(v - l.outer() + b.first_border);
-            }
-        }
-        None
+        // A ball's rate is a state of the same ball, a border state's one
+        // of the same border.
+        let (b, local) = self.model_state(state)?;
+        let rate = b.model.rate_of(local)?;
+        let outer = b.model.layout().outer();
+        Some(if local < outer {
+            rate + b.first_ball
+        } else {
+            rate - outer + b.first_border
+        })
     }
 
     fn inert(&self, state: usize) -> bool {
-        if state >= self.first_shaft {
-            return false;
-        }
-        for b in &self.bearings {
-            let l = b.model.layout();
-            let n = l.balls * self.ball_len;
-            if (b.first_ball..b.first_ball + n).contains(&state) {
-                return b.model.inert(state - b.first_ball);
-            }
-            if (b.first_border..b.first_border + l.len() - l.outer()).contains(&state) {
-                return b.model.inert(state - b.first_border + l.outer());
-            }
-        }
-        false
+        self.model_state(state)
+            .is_some_and(|(b, local)| b.model.inert(local))
     }
 }
