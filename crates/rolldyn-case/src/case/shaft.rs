@@ -5,7 +5,7 @@
 use super::{Invalid, checked};
 use crate::catalogue::{CatalogueBearing, CatalogueError};
 use crate::presets::Preset;
-use crate::raw::{RawAxial, RawOrientation, RawShaft};
+use crate::raw::{RawAxial, RawOrientation, RawShaft, RawShaftBearing, RawShaftLoad};
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::system::Orientation;
 use std::borrow::Cow;
@@ -148,167 +148,7 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
     }
     let mut bearings = Vec::with_capacity(raw.bearings.len());
     for (i, b) in raw.bearings.iter().enumerate() {
-        let key = |name: &str| format!("shaft.bearings[{i}].{name}");
-        if let (Some(group), None) = (&b.clearance_group, &b.catalogue) {
-            return Err(Invalid::new(
-                key("clearance_group"),
-                Some(group.clone()),
-                "a clearance group applies to a catalogue bearing (catalogue = \"6206\"; inline: bearing.catalogue with bearing.clearance_group)",
-            ));
-        }
-        // The tables that complete an inline bearing.
-        let with_inline = [
-            ("materials", b.materials.is_some()),
-            ("cage", b.cage.is_some()),
-            ("lubricant", b.lubricant.is_some()),
-            ("model", b.model.is_some()),
-            ("inner_ring", b.inner_ring.is_some()),
-        ];
-        if let (None, Some((table, _))) = (&b.bearing, with_inline.iter().find(|(_, given)| *given))
-        {
-            return Err(Invalid::new(
-                key(table),
-                None,
-                "applies to an inline bearing ([shaft.bearings.bearing]); a preset or catalogue bearing brings its own",
-            ));
-        }
-        let source = match (&b.preset, &b.catalogue, &b.bearing) {
-            (Some(name), None, None) => {
-                BearingSource::Preset(crate::presets::find(name).ok_or_else(|| {
-                    Invalid::new(
-                        key("preset"),
-                        Some(name.clone()),
-                        format!(
-                            "unknown bearing; built-in bearings: {}",
-                            crate::presets::names()
-                        ),
-                    )
-                })?)
-            }
-            (None, Some(designation), None) => BearingSource::Catalogue(
-                CatalogueBearing::lookup(designation, b.clearance_group.as_deref()).map_err(
-                    |e| match &e {
-                        CatalogueError::Designation { designation, .. } => {
-                            Invalid::new(key("catalogue"), Some(designation.clone()), e.to_string())
-                        }
-                        CatalogueError::Clearance { group, .. } => {
-                            Invalid::new(key("clearance_group"), Some(group.clone()), e.to_string())
-                        }
-                    },
-                )?,
-            ),
-            (None, None, Some(bearing)) => {
-                #[derive(serde::Serialize)]
-                struct Inline<'a> {
-                    bearing: &'a crate::raw::RawBearing,
-                    #[serde(skip_serializing_if = "Option::is_none")]
-                    materials: &'a Option<crate::raw::RawMaterials>,
-                    #[serde(skip_serializing_if = "Option::is_none")]
-                    cage: &'a Option<crate::raw::RawCage>,
-                    #[serde(skip_serializing_if = "Option::is_none")]
-                    lubricant: &'a Option<crate::raw::RawLubricant>,
-                    #[serde(skip_serializing_if = "Option::is_none")]
-                    model: &'a Option<crate::raw::RawModel>,
-                    #[serde(skip_serializing_if = "Option::is_none")]
-                    inner_ring: &'a Option<crate::raw::RawInnerRing>,
-                }
-                let text = toml::to_string(&Inline {
-                    bearing,
-                    materials: &b.materials,
-                    cage: &b.cage,
-                    lubricant: &b.lubricant,
-                    model: &b.model,
-                    inner_ring: &b.inner_ring,
-                })
-                .map_err(|e| Invalid::new(key("bearing"), None, e.to_string()))?;
-                BearingSource::Inline {
-                    name: bearing
-                        .designation
-                        .clone()
-                        .unwrap_or_else(|| format!("shaft.bearings[{i}]")),
-                    text,
-                }
-            }
-            _ => {
-                return Err(Invalid::new(
-                    key("preset"),
-                    None,
-                    "name the bearing once: by preset (rolldyn presets), catalogue (rolldyn catalogue) or an inline [shaft.bearings.bearing] table",
-                ));
-            }
-        };
-        let at = position(key("position"), &b.position)?;
-        if let Some(j) = bearings
-            .iter()
-            .position(|o: &ShaftBearing| (o.position - at).abs() < 1e-6)
-        {
-            return Err(Invalid::new(
-                key("position"),
-                Some(b.position.to_string()),
-                format!("bearing {j} sits there already (pitch planes at least 1 µm apart)"),
-            ));
-        }
-        let floating = b.axial == Some(RawAxial::Floating);
-        let housing_friction = match b.housing_friction {
-            None => {
-                if floating {
-                    DEFAULT_HOUSING_FRICTION
-                } else {
-                    0.0
-                }
-            }
-            Some(_) if !floating => {
-                return Err(Invalid::new(
-                    key("housing_friction"),
-                    b.housing_friction.map(|v| v.to_string()),
-                    "only a floating bearing's outer ring slides in its bore (axial = \"floating\")",
-                ));
-            }
-            Some(v) if !(v.is_finite() && (0.0..=1.0).contains(&v)) => {
-                return Err(Invalid::new(
-                    key("housing_friction"),
-                    Some(v.to_string()),
-                    "must lie in [0, 1]",
-                ));
-            }
-            Some(v) => v,
-        };
-        let preload_offset = checked(&key("preload_offset"), &b.preload_offset, |v| {
-            if floating && v != 0.0 {
-                Err("a floating bearing takes no preload (its outer ring slides)".into())
-            } else if (0.0..=MAX_PRELOAD_OFFSET).contains(&v) {
-                Ok(())
-            } else {
-                Err(format!(
-                    "must lie in [0, {} mm] (towards the bearing's loaded side)",
-                    MAX_PRELOAD_OFFSET * 1e3
-                ))
-            }
-        })?
-        .unwrap_or(0.0);
-        bearings.push(ShaftBearing {
-            source,
-            position: at,
-            orientation: match b.orientation {
-                None | Some(RawOrientation::Forward) => Orientation::Forward,
-                Some(RawOrientation::Reversed) => Orientation::Reversed,
-            },
-            floating,
-            housing_friction,
-            preload_offset,
-            fits: b
-                .fits
-                .as_ref()
-                .map(|fits| {
-                    #[derive(serde::Serialize)]
-                    struct Fits<'a> {
-                        fits: &'a crate::raw::RawFits,
-                    }
-                    toml::to_string(&Fits { fits })
-                        .map_err(|e| Invalid::new(key("fits"), None, e.to_string()))
-                })
-                .transpose()?,
-        });
+        bearings.push(shaft_bearing(i, b, &bearings)?);
     }
     if bearings.iter().all(|b| b.floating) {
         return Err(Invalid::new(
@@ -317,10 +157,206 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
             "every bearing floats: at least one must locate the shaft axially (axial = \"located\")",
         ));
     }
+    let (loads, point_loads, harmonic_loads) = shaft_loads(&raw.loads)?;
+    let section = shaft_section(raw)?;
+    Ok(Some(Shaft {
+        bearings,
+        loads,
+        point_loads,
+        harmonic_loads,
+        section,
+    }))
+}
+
+/// One `[[shaft.bearings]]` entry, checked (`placed`: the bearings
+/// before it, whose pitch planes it must not share).
+fn shaft_bearing(
+    i: usize,
+    b: &RawShaftBearing,
+    placed: &[ShaftBearing],
+) -> Result<ShaftBearing, Invalid> {
+    let key = |name: &str| format!("shaft.bearings[{i}].{name}");
+    if let (Some(group), None) = (&b.clearance_group, &b.catalogue) {
+        return Err(Invalid::new(
+            key("clearance_group"),
+            Some(group.clone()),
+            "a clearance group applies to a catalogue bearing (catalogue = \"6206\"; inline: bearing.catalogue with bearing.clearance_group)",
+        ));
+    }
+    // The tables that complete an inline bearing.
+    let with_inline = [
+        ("materials", b.materials.is_some()),
+        ("cage", b.cage.is_some()),
+        ("lubricant", b.lubricant.is_some()),
+        ("model", b.model.is_some()),
+        ("inner_ring", b.inner_ring.is_some()),
+    ];
+    if let (None, Some((table, _))) = (&b.bearing, with_inline.iter().find(|(_, given)| *given)) {
+        return Err(Invalid::new(
+            key(table),
+            None,
+            "applies to an inline bearing ([shaft.bearings.bearing]); a preset or catalogue bearing brings its own",
+        ));
+    }
+    let source = bearing_source(i, b)?;
+    let at = position(key("position"), &b.position)?;
+    if let Some(j) = placed
+        .iter()
+        .position(|o: &ShaftBearing| (o.position - at).abs() < 1e-6)
+    {
+        return Err(Invalid::new(
+            key("position"),
+            Some(b.position.to_string()),
+            format!("bearing {j} sits there already (pitch planes at least 1 µm apart)"),
+        ));
+    }
+    let floating = b.axial == Some(RawAxial::Floating);
+    let housing_friction = match b.housing_friction {
+        None => {
+            if floating {
+                DEFAULT_HOUSING_FRICTION
+            } else {
+                0.0
+            }
+        }
+        Some(_) if !floating => {
+            return Err(Invalid::new(
+                key("housing_friction"),
+                b.housing_friction.map(|v| v.to_string()),
+                "only a floating bearing's outer ring slides in its bore (axial = \"floating\")",
+            ));
+        }
+        Some(v) if !(v.is_finite() && (0.0..=1.0).contains(&v)) => {
+            return Err(Invalid::new(
+                key("housing_friction"),
+                Some(v.to_string()),
+                "must lie in [0, 1]",
+            ));
+        }
+        Some(v) => v,
+    };
+    let preload_offset = checked(&key("preload_offset"), &b.preload_offset, |v| {
+        if floating && v != 0.0 {
+            Err("a floating bearing takes no preload (its outer ring slides)".into())
+        } else if (0.0..=MAX_PRELOAD_OFFSET).contains(&v) {
+            Ok(())
+        } else {
+            Err(format!(
+                "must lie in [0, {} mm] (towards the bearing's loaded side)",
+                MAX_PRELOAD_OFFSET * 1e3
+            ))
+        }
+    })?
+    .unwrap_or(0.0);
+    Ok(ShaftBearing {
+        source,
+        position: at,
+        orientation: match b.orientation {
+            None | Some(RawOrientation::Forward) => Orientation::Forward,
+            Some(RawOrientation::Reversed) => Orientation::Reversed,
+        },
+        floating,
+        housing_friction,
+        preload_offset,
+        fits: b
+            .fits
+            .as_ref()
+            .map(|fits| {
+                #[derive(serde::Serialize)]
+                struct Fits<'a> {
+                    fits: &'a crate::raw::RawFits,
+                }
+                toml::to_string(&Fits { fits })
+                    .map_err(|e| Invalid::new(key("fits"), None, e.to_string()))
+            })
+            .transpose()?,
+    })
+}
+
+/// Where entry `i`'s bearing comes from: a preset, a catalogue bearing or
+/// an inline table (with the tables that complete it, as TOML text).
+fn bearing_source(i: usize, b: &RawShaftBearing) -> Result<BearingSource, Invalid> {
+    let key = |name: &str| format!("shaft.bearings[{i}].{name}");
+    Ok(match (&b.preset, &b.catalogue, &b.bearing) {
+        (Some(name), None, None) => {
+            BearingSource::Preset(crate::presets::find(name).ok_or_else(|| {
+                Invalid::new(
+                    key("preset"),
+                    Some(name.clone()),
+                    format!(
+                        "unknown bearing; built-in bearings: {}",
+                        crate::presets::names()
+                    ),
+                )
+            })?)
+        }
+        (None, Some(designation), None) => BearingSource::Catalogue(
+            CatalogueBearing::lookup(designation, b.clearance_group.as_deref()).map_err(|e| {
+                match &e {
+                    CatalogueError::Designation { designation, .. } => {
+                        Invalid::new(key("catalogue"), Some(designation.clone()), e.to_string())
+                    }
+                    CatalogueError::Clearance { group, .. } => {
+                        Invalid::new(key("clearance_group"), Some(group.clone()), e.to_string())
+                    }
+                }
+            })?,
+        ),
+        (None, None, Some(bearing)) => {
+            #[derive(serde::Serialize)]
+            struct Inline<'a> {
+                bearing: &'a crate::raw::RawBearing,
+                #[serde(skip_serializing_if = "Option::is_none")]
+                materials: &'a Option<crate::raw::RawMaterials>,
+                #[serde(skip_serializing_if = "Option::is_none")]
+                cage: &'a Option<crate::raw::RawCage>,
+                #[serde(skip_serializing_if = "Option::is_none")]
+                lubricant: &'a Option<crate::raw::RawLubricant>,
+                #[serde(skip_serializing_if = "Option::is_none")]
+                model: &'a Option<crate::raw::RawModel>,
+                #[serde(skip_serializing_if = "Option::is_none")]
+                inner_ring: &'a Option<crate::raw::RawInnerRing>,
+            }
+            let text = toml::to_string(&Inline {
+                bearing,
+                materials: &b.materials,
+                cage: &b.cage,
+                lubricant: &b.lubricant,
+                model: &b.model,
+                inner_ring: &b.inner_ring,
+            })
+            .map_err(|e| Invalid::new(key("bearing"), None, e.to_string()))?;
+            BearingSource::Inline {
+                name: bearing
+                    .designation
+                    .clone()
+                    .unwrap_or_else(|| format!("shaft.bearings[{i}]")),
+                text,
+            }
+        }
+        _ => {
+            return Err(Invalid::new(
+                key("preset"),
+                None,
+                "name the bearing once: by preset (rolldyn presets), catalogue (rolldyn catalogue) or an inline [shaft.bearings.bearing] table",
+            ));
+        }
+    })
+}
+
+/// The `[[shaft.loads]]`: their sum about the reference point, each
+/// with its position, and their gear-mesh fluctuations.
+type ShaftLoads = (
+    Loads,
+    Vec<(f64, Loads)>,
+    Vec<rolldyn::dynamics::shaft::HarmonicLoad>,
+);
+
+fn shaft_loads(raw: &[RawShaftLoad]) -> Result<ShaftLoads, Invalid> {
     let mut loads = Loads::default();
-    let mut point_loads = Vec::with_capacity(raw.loads.len());
+    let mut point_loads = Vec::with_capacity(raw.len());
     let mut harmonic_loads = Vec::new();
-    for (i, l) in raw.loads.iter().enumerate() {
+    for (i, l) in raw.iter().enumerate() {
         let key = |name: &str| format!("shaft.loads[{i}].{name}");
         let a = position(key("position"), &l.position)?;
         let force = |name: &str, q: &Option<crate::units::Quantity<crate::units::Force>>| {
@@ -350,89 +386,102 @@ pub(super) fn shaft(raw: &Option<RawShaft>) -> Result<Option<Shaft>, Invalid> {
                 moment: [my, mz],
             },
         ));
-        match (l.mesh_order, l.mesh_fluctuation) {
-            (None, None) => {}
-            (Some(order), Some(fluctuation)) => {
-                if !(order.is_finite() && order > 0.0) {
-                    return Err(Invalid::new(
-                        key("mesh_order"),
-                        Some(order.to_string()),
-                        "must be positive (the gear's tooth count)",
-                    ));
-                }
-                if !(0.0..=1.0).contains(&fluctuation) {
-                    return Err(Invalid::new(
-                        key("mesh_fluctuation"),
-                        Some(fluctuation.to_string()),
-                        "must lie in [0, 1] (a fraction of the force)",
-                    ));
-                }
-                harmonic_loads.push(rolldyn::dynamics::shaft::HarmonicLoad {
-                    position: a,
-                    amplitude: [fx, fy, fz].map(|f| fluctuation * f),
-                    order,
-                    phase: 0.0,
-                });
-            }
-            (Some(_), None) => {
-                return Err(Invalid::new(
-                    key("mesh_fluctuation"),
-                    None,
-                    "missing: a mesh_order needs the fluctuation's amplitude as a fraction of the force",
-                ));
-            }
-            (None, Some(_)) => {
-                return Err(Invalid::new(
-                    key("mesh_order"),
-                    None,
-                    "missing: a mesh_fluctuation needs the gear's tooth count",
-                ));
-            }
+        if let Some(h) = harmonic_load(i, l, a, [fx, fy, fz])? {
+            harmonic_loads.push(h);
         }
     }
-    let section = match checked("shaft.diameter", &raw.diameter, super::positive)? {
-        None => {
-            for (key, given) in [
-                ("shaft.bore", raw.bore.is_some()),
-                ("shaft.elastic_modulus", raw.elastic_modulus.is_some()),
-            ] {
-                if given {
-                    return Err(Invalid::new(
-                        key,
-                        None,
-                        "describes an elastic shaft: give shaft.diameter too (without it the shaft is rigid)",
-                    ));
-                }
+    Ok((loads, point_loads, harmonic_loads))
+}
+
+/// The gear-mesh fluctuation of load `i` at position `a` with forces
+/// `force`, if it has one.
+fn harmonic_load(
+    i: usize,
+    l: &RawShaftLoad,
+    a: f64,
+    [fx, fy, fz]: [f64; 3],
+) -> Result<Option<rolldyn::dynamics::shaft::HarmonicLoad>, Invalid> {
+    let key = |name: &str| format!("shaft.loads[{i}].{name}");
+    match (l.mesh_order, l.mesh_fluctuation) {
+        (None, None) => Ok(None),
+        (Some(order), Some(fluctuation)) => {
+            if !(order.is_finite() && order > 0.0) {
+                return Err(Invalid::new(
+                    key("mesh_order"),
+                    Some(order.to_string()),
+                    "must be positive (the gear's tooth count)",
+                ));
             }
-            None
+            if !(0.0..=1.0).contains(&fluctuation) {
+                return Err(Invalid::new(
+                    key("mesh_fluctuation"),
+                    Some(fluctuation.to_string()),
+                    "must lie in [0, 1] (a fraction of the force)",
+                ));
+            }
+            Ok(Some(rolldyn::dynamics::shaft::HarmonicLoad {
+                position: a,
+                amplitude: [fx, fy, fz].map(|f| fluctuation * f),
+                order,
+                phase: 0.0,
+            }))
         }
-        Some(diameter) => {
-            let bore = checked("shaft.bore", &raw.bore, |v| {
-                if (0.0..diameter).contains(&v) {
-                    Ok(())
-                } else {
-                    Err(format!("must lie in [0, shaft.diameter = {diameter} m)"))
+        (Some(_), None) => Err(Invalid::new(
+            key("mesh_fluctuation"),
+            None,
+            "missing: a mesh_order needs the fluctuation's amplitude as a fraction of the force",
+        )),
+        (None, Some(_)) => Err(Invalid::new(
+            key("mesh_order"),
+            None,
+            "missing: a mesh_fluctuation needs the gear's tooth count",
+        )),
+    }
+}
+
+/// The elastic shaft's section (`shaft.diameter`), or None for a rigid
+/// shaft.
+fn shaft_section(
+    raw: &RawShaft,
+) -> Result<Option<rolldyn::quasistatic::elastic_shaft::ShaftSection>, Invalid> {
+    Ok(
+        match checked("shaft.diameter", &raw.diameter, super::positive)? {
+            None => {
+                for (key, given) in [
+                    ("shaft.bore", raw.bore.is_some()),
+                    ("shaft.elastic_modulus", raw.elastic_modulus.is_some()),
+                ] {
+                    if given {
+                        return Err(Invalid::new(
+                            key,
+                            None,
+                            "describes an elastic shaft: give shaft.diameter too (without it the shaft is rigid)",
+                        ));
+                    }
                 }
-            })?
-            .unwrap_or(0.0);
-            let elastic_modulus = checked(
-                "shaft.elastic_modulus",
-                &raw.elastic_modulus,
-                super::positive,
-            )?
-            .unwrap_or(DEFAULT_SHAFT_MODULUS);
-            Some(rolldyn::quasistatic::elastic_shaft::ShaftSection {
-                diameter,
-                bore,
-                elastic_modulus,
-            })
-        }
-    };
-    Ok(Some(Shaft {
-        bearings,
-        loads,
-        point_loads,
-        harmonic_loads,
-        section,
-    }))
+                None
+            }
+            Some(diameter) => {
+                let bore = checked("shaft.bore", &raw.bore, |v| {
+                    if (0.0..diameter).contains(&v) {
+                        Ok(())
+                    } else {
+                        Err(format!("must lie in [0, shaft.diameter = {diameter} m)"))
+                    }
+                })?
+                .unwrap_or(0.0);
+                let elastic_modulus = checked(
+                    "shaft.elastic_modulus",
+                    &raw.elastic_modulus,
+                    super::positive,
+                )?
+                .unwrap_or(DEFAULT_SHAFT_MODULUS);
+                Some(rolldyn::quasistatic::elastic_shaft::ShaftSection {
+                    diameter,
+                    bore,
+                    elastic_modulus,
+                })
+            }
+        },
+    )
 }

@@ -2,7 +2,7 @@
 //! assumed lubricant and operating point, and every estimated or assumed
 //! value under `[assumptions]` (docs/catalogue.md).
 
-use super::{BALL_SECTION_FRACTION, BearingKind, CatalogueBearing};
+use super::{BALL_SECTION_FRACTION, BearingKind, CatalogueBearing, Ratings};
 use rolldyn::error::InvalidParameter;
 
 impl CatalogueBearing {
@@ -13,8 +13,16 @@ impl CatalogueBearing {
     /// `[assumptions]`.
     pub fn case_text(&self) -> Result<String, InvalidParameter> {
         let ratings = self.ratings()?;
-        let mm = |x: f64| format!("{} mm", trim(x * 1e3, 6));
-        let load_n = ((0.05 * ratings.dynamic) / 10.0).round() * 10.0;
+        let mut t = self.header(&ratings);
+        self.bearing_section(&mut t);
+        self.cage_section(&mut t);
+        self.running_sections(&mut t, &ratings);
+        self.assumptions(&mut t);
+        Ok(t)
+    }
+
+    /// The file's opening comment (what is estimated, the ratings) and title.
+    fn header(&self, ratings: &Ratings) -> String {
         let kind_text = match self.kind {
             BearingKind::DeepGroove => "deep-groove",
             BearingKind::AngularContact => "angular-contact",
@@ -47,27 +55,31 @@ impl CatalogueBearing {
             "title = \"{} (catalogue estimate) at 3000 rpm\"\n\n",
             self.designation
         ));
+        t
+    }
+
+    /// `[bearing]`: the estimated geometry.
+    fn bearing_section(&self, t: &mut String) {
         t.push_str("[bearing]\n");
         t.push_str(&format!(
             "designation = \"{} (catalogue estimate)\"\n",
             self.designation
         ));
-        let est = "# estimated: see [assumptions]";
         t.push_str(&format!(
-            "{:<37}{est}\n",
+            "{:<37}{EST}\n",
             format!("ball_diameter = \"{}\"", mm(self.ball_diameter))
         ));
         t.push_str(&format!(
-            "{:<37}{est}\n",
+            "{:<37}{EST}\n",
             format!("ball_count = {}", self.ball_count)
         ));
         t.push_str(&format!(
-            "{:<37}{est}\n",
+            "{:<37}{EST}\n",
             format!("pitch_diameter = \"{}\"", mm(self.pitch_diameter))
         ));
         if let Some(p_d) = self.diametral_clearance {
             t.push_str(&format!(
-                "{:<37}{est}\n",
+                "{:<37}{EST}\n",
                 format!("diametral_clearance = \"{}\"", mm(p_d))
             ));
         }
@@ -82,7 +94,7 @@ impl CatalogueBearing {
         }
         for ring in ["inner", "outer"] {
             t.push_str(&format!(
-                "{:<37}{est}\n",
+                "{:<37}{EST}\n",
                 format!("{ring}_groove_curvature = {}", self.groove_curvature)
             ));
         }
@@ -95,18 +107,22 @@ impl CatalogueBearing {
             mm(self.outside_diameter),
             mm(self.width)
         ));
+    }
+
+    /// `[cage]`: estimated and assumed.
+    fn cage_section(&self, t: &mut String) {
         t.push_str("[cage]\n");
-        t.push_str(&format!("{:<37}{est}\n", "guidance = \"ball\"".to_string()));
+        t.push_str(&format!("{:<37}{EST}\n", "guidance = \"ball\"".to_string()));
         t.push_str(&format!(
-            "{:<37}{est}\n",
+            "{:<37}{EST}\n",
             format!("mass = \"{} g\"", trim(self.cage_mass * 1e3, 2))
         ));
         t.push_str(&format!(
-            "{:<37}{est}\n",
+            "{:<37}{EST}\n",
             format!("inertia = \"{:.3e} kg.m^2\"", self.cage_inertia)
         ));
         t.push_str(&format!(
-            "{:<37}{est}\n",
+            "{:<37}{EST}\n",
             format!("pocket_clearance = \"{}\"", mm(self.pocket_clearance))
         ));
         for line in [
@@ -114,11 +130,16 @@ impl CatalogueBearing {
             "pocket_damping = \"20 N.s/m\"",
             "pocket_friction = 0.05",
         ] {
-            t.push_str(&format!("{line:<37}{est}\n"));
+            t.push_str(&format!("{line:<37}{EST}\n"));
         }
         t.push_str("whirl = false                        # cage rotation only\n\n");
+    }
+
+    /// `[materials]`, `[lubricant]`, `[operating]` (a load of 5 % of the
+    /// estimated C_r), `[model]` and `[solver]`.
+    fn running_sections(&self, t: &mut String, ratings: &Ratings) {
+        let load_n = ((0.05 * ratings.dynamic) / 10.0).round() * 10.0;
         t.push_str("[materials]\nball = \"steel_52100\"\nrings = \"steel_52100\"\n\n");
-        let assumed = "# assumed: see [assumptions]";
         t.push_str("[lubricant]\nname = \"ISO VG 68 mineral oil\"\n");
         for line in [
             "viscosity = \"0.059 Pa.s\"",
@@ -128,7 +149,7 @@ impl CatalogueBearing {
             "pressure_viscosity = \"2.2e-8 1/Pa\"",
             "density = \"870 kg/m^3\"",
         ] {
-            t.push_str(&format!("{line:<37}{assumed}\n"));
+            t.push_str(&format!("{line:<37}{ASSUMED}\n"));
         }
         t.push_str(
             "\n[operating]\nspeed = \"3000 rpm\"                   # assumed: see [assumptions]\n",
@@ -149,6 +170,11 @@ impl CatalogueBearing {
              duration = \"0.1 s\"                   # about two cage revolutions at 3000 rpm\n\
              start = \"jones_harris\"\n\n",
         );
+    }
+
+    /// `[assumptions]`: the source or the rule of every estimated or
+    /// assumed value.
+    fn assumptions(&self, t: &mut String) {
         t.push_str("[assumptions]\n");
         let rule = |key: &str, text: String| format!("\"{key}\" = \"{text}\"\n");
         t.push_str(&rule(
@@ -244,8 +270,17 @@ impl CatalogueBearing {
             "model.traction_integration",
             "graded 16 x 8 cells: the dissipated power within 0.5 % of a 48 x 24 grid (7210B, docs/catalogue.md)".into(),
         ));
-        Ok(t)
     }
+}
+
+/// The comment of an estimated value.
+const EST: &str = "# estimated: see [assumptions]";
+/// The comment of an assumed value.
+const ASSUMED: &str = "# assumed: see [assumptions]";
+
+/// A length in millimetres, as the case file writes it.
+fn mm(x: f64) -> String {
+    format!("{} mm", trim(x * 1e3, 6))
 }
 
 /// `x` with at most `digits` decimals, trailing zeros removed.
