@@ -13,12 +13,10 @@
 //! 12 × 6 grid, whirling outer-guided cage), each 5 ms into a run from its
 //! start. Figures in docs/performance.md.
 
-use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::jacobian::{JacobianWork, fast_part_difference, finite_difference};
 use rolldyn::integrate::linear::{BlockJacobian, BlockLu};
 use rolldyn::integrate::{Integrator, OdeSystem};
-use rolldyn::material::Material;
 use rolldyn::testing::{self, Method};
 use std::hint::black_box;
 use std::time::Instant;
@@ -174,27 +172,8 @@ fn main() {
         .num_threads(1)
         .build_global()
         .expect("one thread");
-    let steel = testing::steel_shan_2023();
-    let model = BearingModel::new(
-        &testing::bearing_6304(),
-        &steel,
-        &steel,
-        HertzModel::HertzCircular,
-        testing::dynamics_6304(100.0),
-    )
-    .expect("6304");
-    let y0 = model.pure_rolling_state([0.0; 5]);
+    let (model, y0) = testing::model_6304();
     bench("6304", model, &y0, 20_000);
-    let (params, equilibrium) = testing::dynamics_7008c(testing::drag_7008c());
-    let steel = Material::STEEL_52100;
-    let model = BearingModel::new(
-        &testing::bearing_7008c(),
-        &steel,
-        &steel,
-        HertzModel::Exact,
-        params,
-    )
-    .expect("7008C");
-    let y0 = model.state_from_equilibrium(&equilibrium);
+    let (model, y0) = testing::model_7008c();
     bench("7008C default", model, &y0, 2_000);
 }

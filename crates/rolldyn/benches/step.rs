@@ -12,12 +12,10 @@
 //! docs/performance.md; `--bench rhs` has the same evaluations with the
 //! factorization's two-thread comparison.
 
-use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::jacobian::{JacobianWork, finite_difference};
 use rolldyn::integrate::linear::{BlockJacobian, BlockLu};
 use rolldyn::integrate::{Integrator, OdeSystem, Solver};
-use rolldyn::material::Material;
 use rolldyn::testing::{self, Method};
 use std::sync::OnceLock;
 
@@ -43,30 +41,9 @@ struct Point {
 
 fn model(bearing: &str) -> (BearingModel, Vec<f64>) {
     if bearing == "6304" {
-        let steel = testing::steel_shan_2023();
-        let model = BearingModel::new(
-            &testing::bearing_6304(),
-            &steel,
-            &steel,
-            HertzModel::HertzCircular,
-            testing::dynamics_6304(100.0),
-        )
-        .expect("6304");
-        let y0 = model.pure_rolling_state([0.0; 5]);
-        (model, y0)
+        testing::model_6304()
     } else {
-        let (params, equilibrium) = testing::dynamics_7008c(testing::drag_7008c());
-        let steel = Material::STEEL_52100;
-        let model = BearingModel::new(
-            &testing::bearing_7008c(),
-            &steel,
-            &steel,
-            HertzModel::Exact,
-            params,
-        )
-        .expect("7008C");
-        let y0 = model.state_from_equilibrium(&equilibrium);
-        (model, y0)
+        testing::model_7008c()
     }
 }
 

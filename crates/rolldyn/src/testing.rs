@@ -196,6 +196,39 @@ pub fn guide_land_7008c() -> crate::dynamics::GuideLand {
     }
 }
 
+/// The 6304 preset's dynamic model (Shan et al. 2023, radial load 100 N)
+/// and its pure-rolling start.
+pub fn model_6304() -> (crate::dynamics::BearingModel, Vec<f64>) {
+    let steel = steel_shan_2023();
+    let model = crate::dynamics::BearingModel::new(
+        &bearing_6304(),
+        &steel,
+        &steel,
+        HertzModel::HertzCircular,
+        dynamics_6304(100.0),
+    )
+    .expect("the 6304 model builds");
+    let y0 = model.pure_rolling_state([0.0; 5]);
+    (model, y0)
+}
+
+/// The default case's 7008C dynamic model (Deng et al. 2022 with the
+/// default case's drag) and its Jones–Harris start.
+pub fn model_7008c() -> (crate::dynamics::BearingModel, Vec<f64>) {
+    let (params, equilibrium) = dynamics_7008c(drag_7008c());
+    let steel = Material::STEEL_52100;
+    let model = crate::dynamics::BearingModel::new(
+        &bearing_7008c(),
+        &steel,
+        &steel,
+        HertzModel::Exact,
+        params,
+    )
+    .expect("the 7008C model builds");
+    let y0 = model.state_from_equilibrium(&equilibrium);
+    (model, y0)
+}
+
 /// The adaptive integrators the dynamic validation cases run with: the
 /// explicit DOPRI5 and the stiff ROS34PW2 (both must pass).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

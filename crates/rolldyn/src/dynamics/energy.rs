@@ -204,9 +204,7 @@ impl BearingModel {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::HertzModel;
     use crate::integrate::{Integrator, OdeSystem};
-    use crate::material::Material;
     use crate::testing::{self, Method};
 
     /// `model` integrated for `duration` from `y0` (ROS34PW2 at 1e-3):
@@ -222,16 +220,7 @@ mod tests {
     /// The 6304 preset's model (Shan et al. 2023) and its state `duration`
     /// after a pure-rolling start.
     fn the_6304_after(duration: f64) -> (BearingModel, Vec<f64>) {
-        let steel = testing::steel_shan_2023();
-        let mut model = BearingModel::new(
-            &testing::bearing_6304(),
-            &steel,
-            &steel,
-            HertzModel::HertzCircular,
-            testing::dynamics_6304(100.0),
-        )
-        .expect("6304");
-        let y0 = model.pure_rolling_state([0.0; 5]);
+        let (mut model, y0) = testing::model_6304();
         let y = advanced(&mut model, &y0, duration);
         (model, y)
     }
@@ -276,17 +265,7 @@ mod tests {
         shared_pass_matches(&model, 2e-3, &y);
         // The default case's 7008C: EHL traction on the grid, the balls
         // across two threads.
-        let (params, equilibrium) = testing::dynamics_7008c(testing::drag_7008c());
-        let steel = Material::STEEL_52100;
-        let mut model = BearingModel::new(
-            &testing::bearing_7008c(),
-            &steel,
-            &steel,
-            HertzModel::Exact,
-            params,
-        )
-        .expect("7008C");
-        let y0 = model.state_from_equilibrium(&equilibrium);
+        let (mut model, y0) = testing::model_7008c();
         let y = advanced(&mut model, &y0, 2e-4);
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(2)

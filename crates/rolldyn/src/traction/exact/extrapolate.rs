@@ -164,13 +164,12 @@ impl ExactRolling {
         }
         let finest = fine.resultants;
         let resultants = Resultants::from_array(out);
-        let creep = fine
-            .result
-            .creep
-            .expect("the exact solver reports its creepages");
         let mut solution = fine;
-        solution.result = solution.frame.result(&resultants, creep);
-        solution.resultants = resultants;
+        // An unloaded contact has no creepages and no tractions to extrapolate.
+        if let Some(creep) = solution.result.creep {
+            solution.result = solution.frame.result(&resultants, creep);
+            solution.resultants = resultants;
+        }
         Extrapolated {
             solution,
             finest,
@@ -233,6 +232,28 @@ pub(super) fn richardson(cells: [usize; 3], values: [f64; 3]) -> Extrapolation {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An unloaded contact gives zero forces, not a panic.
+    #[test]
+    fn no_load_gives_nothing() {
+        let patch = ContactPatch {
+            point: Vector3::zeros(),
+            normal: Vector3::z(),
+            rolling_direction: Vector3::x(),
+            semi_major: 1e-3,
+            semi_minor: 1e-4,
+            load: 0.0,
+            deformed_radius: f64::INFINITY,
+        };
+        let e = ExactRolling::new(0.1, 80e9, 0.3).solve_extrapolated(
+            &patch,
+            &Vector3::new(1e-3, 0.0, 0.0),
+            &Vector3::zeros(),
+            1.0,
+        );
+        assert_eq!(e.solution.result.force, Vector3::zeros());
+        assert_eq!(e.force_error(), 0.0);
+    }
 
     /// A power law is recovered exactly, its order too.
     #[test]

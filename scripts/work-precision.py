@@ -1,0 +1,190 @@
+#!/usr/bin/env python3
+"""Work–precision of `rolldyn run`: the cost of an answer against its error
+(docs/performance.md, "Work and precision").
+
+For each case it runs the integrators (auto, the default; ROS34PW2;
+DOPRI5) at relative tolerances 1e-2 … 1e-5 with the energy tolerance a
+tenth of it (the defaults' ratio, 1e-3 and 1e-4), and a reference by
+ROS34PW2 at 1e-6 / 1e-7. Error: the largest relative difference from the
+reference among the outputs users read (mean cage speed, mean and largest
+inner loads, mean friction power, the inner ring's velocity RMS; with a
+spall the envelope's BPFO line). Cost: wall time (one thread), steps and
+right-hand sides (stages and Jacobian columns). With --exudyn, the 6304
+in Exudyn 1.13.6 (scripts/exudyn_6304.py: its DOPRI5 at rtol 1e-2 … 1e-5
+against its own run at 1e-7; its error is the cage speed's only, the one
+output that script reads).
+
+    cargo build --release
+    RAYON_NUM_THREADS=1 python3 scripts/work-precision.py [--cases 6304,default] [--exudyn] \\
+        [--figure docs/figures/work-precision.png]
+
+Prints a Markdown table per case. About 10 minutes for the 6304 and the
+default case (0.2 s each); Exudyn adds about as much.
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+TOLERANCES = [1e-2, 1e-3, 1e-4, 1e-5]
+REFERENCE = 1e-6
+INTEGRATORS = ["auto", "ros34pw2", "dopri5"]
+
+# case name -> (how to get its text, extra run arguments)
+CASES = {
+    "6304": (["new", "--preset", "6304"], ["--duration", "1 s"]),
+    "default": (["new"], ["--duration", "1 s"]),
+    "spalled 6205": (["new", "--preset", "6205"], [
+        "--duration", "0.1 s",
+        "--set", 'surface.outer.spall=[{ position = "270 deg", length = "0.533 mm", depth = "0.28 mm" }]',
+        "--set", "operating.force_z=1 kN"]),
+}
+
+
+def outputs(summary):
+    """The outputs users read, by name."""
+    out = {
+        "cage speed": summary["mean_cage_speed_rpm"],
+        "mean inner load": summary["mean_load_inner_n"],
+        "largest inner load": summary["max_load_inner_n"],
+        "friction power": summary["mean_power_loss_w"],
+        "velocity RMS": summary["inner_ring_velocity_rms_z_mm_s"],
+    }
+    lines = (summary.get("envelope_lines") or {}).get("lines") or []
+    for line in lines:
+        if line["name"] == "BPFO":
+            out["BPFO line"] = line["amplitude_m_s2"]
+    return out
+
+
+def run(exe, text, extra, integrator, rtol):
+    with tempfile.TemporaryDirectory() as out:
+        sets = ["--set", f"solver.integrator={integrator}",
+                "--set", f"solver.relative_tolerance={rtol:g}",
+                "--set", f"solver.energy_tolerance={rtol / 10:g}"]
+        start = time.perf_counter()
+        done = subprocess.run([exe, "run", "-", "-o", out, *extra, *sets], input=text,
+                              capture_output=True, text=True)
+        wall = time.perf_counter() - start
+        if done.returncode != 0:
+            return None
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+    return {
+        "wall": wall,
+        "steps": summary["steps"],
+        "rhs": summary["rhs_evaluations"] + summary["jacobian_rhs_evaluations"],
+        "outputs": outputs(summary),
+    }
+
+
+def error(result, reference):
+    """Largest relative difference over the outputs, and which."""
+    worst = (0.0, "")
+    for name, value in reference["outputs"].items():
+        got = result["outputs"].get(name)
+        if got is None or value == 0:
+            continue
+        e = abs(got / value - 1)
+        worst = max(worst, (e, name))
+    return worst
+
+
+def exudyn_points():
+    sys.path.insert(0, os.path.join(ROOT, "scripts"))
+    import exudyn_6304
+    reference = exudyn_6304.exudyn_run(0.2, 1e-7)[1]
+    points = []
+    for rtol in TOLERANCES:
+        wall, rpm = exudyn_6304.exudyn_run(0.2, rtol)
+        points.append((rtol, wall, abs(rpm / reference - 1)))
+    return reference, points
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--rolldyn", default=os.path.join(ROOT, "target", "release", "rolldyn"))
+    parser.add_argument("--cases", default="6304,default")
+    parser.add_argument("--exudyn", action="store_true")
+    parser.add_argument("--figure")
+    parser.add_argument("--cost", choices=["wall", "rhs"], default="rhs",
+                        help="the figure's cost axis: wall time or right-hand sides (default; "
+                             "independent of the machine's load)")
+    parser.add_argument("--raw", help="also write every run's cost and outputs to this JSON file")
+    args = parser.parse_args()
+    results = {}
+    for name in args.cases.split(","):
+        new, extra = CASES[name]
+        text = subprocess.run([args.rolldyn, *new], check=True, capture_output=True, text=True).stdout
+        reference = run(args.rolldyn, text, extra, "ros34pw2", REFERENCE)
+        rows = []
+        for integrator in INTEGRATORS:
+            for rtol in TOLERANCES:
+                r = run(args.rolldyn, text, extra, integrator, rtol)
+                if r is not None:
+                    rows.append((integrator, rtol, r, *error(r, reference)))
+        results[name] = (reference, rows)
+        print(f"\n{name}: reference ROS34PW2 at rtol {REFERENCE:g} ({reference['wall']:.1f} s, "
+              f"{reference['steps']} steps)")
+        names = list(reference["outputs"])
+        print("| integrator | rtol | wall [s] | steps | RHS | " + " | ".join(names) + " |")
+        print("|---" * (5 + len(names)) + "|")
+        for integrator, rtol, r, e, which in rows:
+            mark = " (default)" if integrator == "auto" and rtol == 1e-3 else ""
+            errors = [abs(r["outputs"][n] / reference["outputs"][n] - 1) if reference["outputs"][n]
+                      else 0.0 for n in names]
+            print(f"| {integrator}{mark} | {rtol:g} | {r['wall']:.2f} | {r['steps']} | {r['rhs']} | "
+                  + " | ".join(f"{100 * x:.3f} %" for x in errors) + " |")
+        sys.stdout.flush()
+    exudyn = None
+    if args.exudyn:
+        exudyn = exudyn_points()
+        print("\n6304 in Exudyn (DOPRI5), cage speed against its run at 1e-7 "
+              f"({exudyn[0]:.2f} rpm)")
+        print("| rtol | wall [s] | cage speed error |")
+        print("|---|---|---|")
+        for rtol, wall, e in exudyn[1]:
+            print(f"| {rtol:g} | {wall:.2f} | {100 * e:.4f} % |")
+    if args.raw:
+        with open(args.raw, "w") as f:
+            json.dump({"results": {name: {"reference": ref, "runs": [
+                {"integrator": i, "rtol": t, **r} for i, t, r, _, _ in rows]}
+                for name, (ref, rows) in results.items()}, "exudyn": exudyn}, f, indent=1)
+    if args.figure:
+        plot(results, exudyn, args.figure, args.cost)
+
+
+def plot(results, exudyn, path, cost):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, len(results), figsize=(5.2 * len(results), 4.2), squeeze=False)
+    for ax, (name, (_, rows)) in zip(axes[0], results.items()):
+        for integrator, marker in zip(INTEGRATORS, "os^"):
+            pts = [(max(e, 1e-7), r[cost], rtol) for i, rtol, r, e, _ in rows if i == integrator]
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker=marker, label=f"rolldyn {integrator}")
+            for e, w, rtol in pts:
+                if integrator == "auto":
+                    ax.annotate(f"{rtol:g}", (e, w), fontsize=7, xytext=(3, 3), textcoords="offset points")
+        default = [(max(e, 1e-7), r[cost]) for i, rtol, r, e, _ in rows if i == "auto" and rtol == 1e-3]
+        if default:
+            ax.plot(*default[0], "k*", markersize=14, label="defaults")
+        if name == "6304" and exudyn is not None and cost == "wall":
+            ax.loglog([max(p[2], 1e-7) for p in exudyn[1]], [p[1] for p in exudyn[1]], "x--",
+                      label="Exudyn DOPRI5 (cage speed only)")
+        ax.set_xlabel("largest relative error of the outputs")
+        ax.set_ylabel("wall time [s], one thread" if cost == "wall" else "right-hand sides (stages and Jacobian columns)")
+        ax.set_title(name)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+if __name__ == "__main__":
+    main()
