@@ -63,10 +63,12 @@ def outputs(summary):
 
 
 def run(exe, text, extra, integrator, rtol):
+    """One run; integrator None: the case's own settings (its defaults)."""
     with tempfile.TemporaryDirectory() as out:
-        sets = ["--set", f"solver.integrator={integrator}",
-                "--set", f"solver.relative_tolerance={rtol:g}",
-                "--set", f"solver.energy_tolerance={rtol / 10:g}"]
+        sets = [] if integrator is None else [
+            "--set", f"solver.integrator={integrator}",
+            "--set", f"solver.relative_tolerance={rtol:g}",
+            "--set", f"solver.energy_tolerance={rtol / 10:g}"]
         start = time.perf_counter()
         done = subprocess.run([exe, "run", "-", "-o", out, *extra, *sets], input=text,
                               capture_output=True, text=True)
@@ -116,34 +118,45 @@ def main():
                         help="the figure's cost axis: wall time or right-hand sides (default; "
                              "independent of the machine's load)")
     parser.add_argument("--raw", help="also write every run's cost and outputs to this JSON file")
+    parser.add_argument("--from-raw", help="no runs: the tables and figure from a --raw file")
     args = parser.parse_args()
-    results = {}
-    for name in args.cases.split(","):
-        new, extra = CASES[name]
-        text = subprocess.run([args.rolldyn, *new], check=True, capture_output=True, text=True).stdout
-        reference = run(args.rolldyn, text, extra, "ros34pw2", REFERENCE)
-        rows = []
-        for integrator in INTEGRATORS:
-            for rtol in TOLERANCES:
-                r = run(args.rolldyn, text, extra, integrator, rtol)
-                if r is not None:
-                    rows.append((integrator, rtol, r, *error(r, reference)))
-        results[name] = (reference, rows)
+    if args.from_raw:
+        with open(args.from_raw) as f:
+            raw = json.load(f)
+        results = {}
+        for name, v in raw["results"].items():
+            rows = [(r["integrator"], r["rtol"], r, *error(r, v["reference"])) for r in v["runs"]]
+            results[name] = (v["reference"], rows, v["defaults"])
+        exudyn = raw.get("exudyn")
+    else:
+        results = {}
+        for name in args.cases.split(","):
+            new, extra = CASES[name]
+            text = subprocess.run([args.rolldyn, *new], check=True, capture_output=True, text=True).stdout
+            reference = run(args.rolldyn, text, extra, "ros34pw2", REFERENCE)
+            defaults = run(args.rolldyn, text, extra, None, None)
+            rows = []
+            for integrator in INTEGRATORS:
+                for rtol in TOLERANCES:
+                    r = run(args.rolldyn, text, extra, integrator, rtol)
+                    if r is not None:
+                        rows.append((integrator, rtol, r, *error(r, reference)))
+            results[name] = (reference, rows, defaults)
+        exudyn = exudyn_points() if args.exudyn else None
+    for name, (reference, rows, defaults) in results.items():
         print(f"\n{name}: reference ROS34PW2 at rtol {REFERENCE:g} ({reference['wall']:.1f} s, "
               f"{reference['steps']} steps)")
         names = list(reference["outputs"])
         print("| integrator | rtol | wall [s] | steps | RHS | " + " | ".join(names) + " |")
         print("|---" * (5 + len(names)) + "|")
-        for integrator, rtol, r, e, which in rows:
-            mark = " (default)" if integrator == "auto" and rtol == 1e-3 else ""
+        for integrator, rtol, r in [("defaults", None, defaults)] + [row[:3] for row in rows]:
             errors = [abs(r["outputs"][n] / reference["outputs"][n] - 1) if reference["outputs"][n]
                       else 0.0 for n in names]
-            print(f"| {integrator}{mark} | {rtol:g} | {r['wall']:.2f} | {r['steps']} | {r['rhs']} | "
+            tol = "the case's" if rtol is None else f"{rtol:g}"
+            print(f"| {integrator} | {tol} | {r['wall']:.2f} | {r['steps']} | {r['rhs']} | "
                   + " | ".join(f"{100 * x:.3f} %" for x in errors) + " |")
         sys.stdout.flush()
-    exudyn = None
-    if args.exudyn:
-        exudyn = exudyn_points()
+    if exudyn:
         print("\n6304 in Exudyn (DOPRI5), cage speed against its run at 1e-7 "
               f"({exudyn[0]:.2f} rpm)")
         print("| rtol | wall [s] | cage speed error |")
@@ -152,9 +165,9 @@ def main():
             print(f"| {rtol:g} | {wall:.2f} | {100 * e:.4f} % |")
     if args.raw:
         with open(args.raw, "w") as f:
-            json.dump({"results": {name: {"reference": ref, "runs": [
+            json.dump({"results": {name: {"reference": ref, "defaults": defaults, "runs": [
                 {"integrator": i, "rtol": t, **r} for i, t, r, _, _ in rows]}
-                for name, (ref, rows) in results.items()}, "exudyn": exudyn}, f, indent=1)
+                for name, (ref, rows, defaults) in results.items()}, "exudyn": exudyn}, f, indent=1)
     if args.figure:
         plot(results, exudyn, args.figure, args.cost)
 
@@ -164,16 +177,15 @@ def plot(results, exudyn, path, cost):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, len(results), figsize=(5.2 * len(results), 4.2), squeeze=False)
-    for ax, (name, (_, rows)) in zip(axes[0], results.items()):
+    for ax, (name, (reference, rows, defaults)) in zip(axes[0], results.items()):
         for integrator, marker in zip(INTEGRATORS, "os^"):
             pts = [(max(e, 1e-7), r[cost], rtol) for i, rtol, r, e, _ in rows if i == integrator]
             ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker=marker, label=f"rolldyn {integrator}")
             for e, w, rtol in pts:
                 if integrator == "auto":
                     ax.annotate(f"{rtol:g}", (e, w), fontsize=7, xytext=(3, 3), textcoords="offset points")
-        default = [(max(e, 1e-7), r[cost]) for i, rtol, r, e, _ in rows if i == "auto" and rtol == 1e-3]
-        if default:
-            ax.plot(*default[0], "k*", markersize=14, label="defaults")
+        ax.plot(max(error(defaults, reference)[0], 1e-7), defaults[cost], "k*", markersize=14,
+                label="the case's defaults")
         if name == "6304" and exudyn is not None and cost == "wall":
             ax.loglog([max(p[2], 1e-7) for p in exudyn[1]], [p[1] for p in exudyn[1]], "x--",
                       label="Exudyn DOPRI5 (cage speed only)")
