@@ -6,7 +6,9 @@
 //! numbers from Python as from the CLI. A case crosses the boundary as its
 //! source name, its TOML text (None: the built-in default case) and its
 //! `KEY=VALUE` overrides, as `run.json` records it; reports come back as
-//! JSON text (the CLI's `--json` output, keys in docs/cli.md); time
+//! Python dicts and lists built from the engine's report types (the keys
+//! and values of the CLI's `--json` output, docs/cli.md; no JSON text in
+//! between); time
 //! series stay in the run directory's Parquet dataset, which the Python
 //! half reads with pyarrow, a column at a time.
 //!
@@ -436,7 +438,7 @@ fn watched<T: Send>(
 
 /// `rolldyn run`: runs the case into `directory` (with `verify`, also at
 /// ten times tighter tolerances into `directory/verify`, as `--verify`).
-/// Returns the summary (JSON), the time series and whether a Ctrl-C
+/// Returns the summary (a dict) and whether a Ctrl-C
 /// stopped the run.
 #[pyfunction]
 #[pyo3(signature = (source, text, sets, directory, force=false, progress=None, verify=false))]
@@ -475,7 +477,7 @@ fn run(
     Ok((to_python(py, &summary.map_err(to_py)?)?, interrupted))
 }
 
-/// Opens a run directory: its summary (JSON); checks that its time series
+/// Opens a run directory: its summary (a dict); checks that its time series
 /// reads (the channels, not the samples).
 #[pyfunction]
 fn open_run(py: Python<'_>, directory: &str) -> PyResult<Py<PyAny>> {
@@ -491,7 +493,7 @@ fn open_run(py: Python<'_>, directory: &str) -> PyResult<Py<PyAny>> {
 
 /// `rolldyn run --sweep`: runs the points (each a list of overrides added
 /// to the case's) in parallel into `directory/point-NNNN/`, writes
-/// `sweep.json` and `sweep.csv`, and returns the rows (JSON) and whether
+/// `sweep.json` and `sweep.csv`, and returns the rows (dicts) and whether
 /// a Ctrl-C stopped the sweep. Progress: the fraction of points done.
 #[pyfunction]
 #[pyo3(signature = (source, text, sets, points, directory, force=false, progress=None))]
@@ -536,7 +538,7 @@ fn sample_points(
 }
 
 /// One point of a sweep (a Dask task): runs the case with the point's
-/// overrides into `directory/name` and returns its row (JSON), the same
+/// overrides into `directory/name` and returns its row (a dict), the same
 /// row `run_points` gives.
 #[pyfunction]
 #[pyo3(signature = (name, source, text, sets, directory, force=false))]
@@ -566,7 +568,7 @@ fn point_name(k: usize, count: usize) -> String {
     run_sweep::point_name(k, count)
 }
 
-/// Writes `sweep.json` and `sweep.csv` of rows (JSON) into `directory`.
+/// Writes `sweep.json` and `sweep.csv` of rows (dicts) into `directory`.
 #[pyfunction]
 fn write_sweep_tables(directory: &str, rows: &Bound<'_, PyAny>) -> PyResult<()> {
     let rows: Vec<serde_json::Map<String, serde_json::Value>> =
