@@ -142,34 +142,6 @@ fn traction_evaluates_one_contact() {
 fn traction_bad_input_exits_2() {
     for (args, needle) in [
         (
-            vec!["traction", "--load", "1 kN", "--rolling-speed", "1 m/s"],
-            "(--slip VX,VY): neither was given",
-        ),
-        (
-            vec![
-                "traction",
-                "--rolling-speed",
-                "1 m/s",
-                "--creepages",
-                "0,0,0",
-            ],
-            "(--approach): neither was given",
-        ),
-        (
-            vec![
-                "traction",
-                "--load",
-                "1 kN",
-                "--approach",
-                "1 um",
-                "--rolling-speed",
-                "1 m/s",
-                "--creepages",
-                "0,0,0",
-            ],
-            "(--approach), not both",
-        ),
-        (
             vec![
                 "traction",
                 "--load",
@@ -294,6 +266,46 @@ fn traction(extra: &[&str]) -> serde_json::Value {
     args.extend(extra);
     args.push("--json");
     json(&args, None)
+}
+
+/// A missing or doubled load or motion is refused saying which: neither
+/// was given, or both were.
+#[test]
+fn load_and_motion_errors_say_which() {
+    for (args, needle) in [
+        (
+            vec!["traction", "--load", "1 kN", "--rolling-speed", "1 m/s"],
+            "(--slip VX,VY): neither was given",
+        ),
+        (
+            vec![
+                "traction",
+                "--rolling-speed",
+                "1 m/s",
+                "--creepages",
+                "0,0,0",
+            ],
+            "(--approach): neither was given",
+        ),
+        (
+            vec![
+                "traction",
+                "--load",
+                "1 kN",
+                "--approach",
+                "1 um",
+                "--rolling-speed",
+                "1 m/s",
+                "--creepages",
+                "0,0,0",
+            ],
+            "(--approach), not both",
+        ),
+    ] {
+        let o = rolldyn(&args, None);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(stderr(&o).contains(needle), "{args:?}: {}", stderr(&o));
+    }
 }
 
 /// The exact theory and FASTSIM agree on the linear (small creepage)
