@@ -401,6 +401,22 @@ fn shaft(raw: &RawCase, arrangement: bool) -> Result<Option<shaft::Shaft>, Inval
             "[fits] applies to the case's one bearing; give each shaft bearing its own as [shaft.bearings.fits] (the same keys)",
         ));
     }
+    let op = &raw.operating;
+    let held = [
+        ("fixed_tilt", op.fixed_tilt == Some(true)),
+        ("tilt_y", op.tilt_y.is_some()),
+        ("tilt_z", op.tilt_z.is_some()),
+        ("displacement_x", op.displacement_x.is_some()),
+        ("displacement_y", op.displacement_y.is_some()),
+        ("displacement_z", op.displacement_z.is_some()),
+    ];
+    if let Some((key, _)) = held.iter().find(|(_, given)| shaft.is_some() && *given) {
+        return Err(Invalid::new(
+            format!("operating.{key}"),
+            None,
+            "a shaft's displacements and tilts follow from its bearings and loads: not with [shaft]",
+        ));
+    }
     Ok(shaft)
 }
 

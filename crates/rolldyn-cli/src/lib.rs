@@ -65,8 +65,8 @@ pub struct CaseOverrides {
     /// Override the radial load F_z, e.g. "1 kN" (negative values allowed).
     #[arg(long, value_name = "FORCE", allow_hyphen_values = true)]
     pub radial_load: Option<String>,
-    /// Hold the inner ring's tilts at zero (quasi-static; the holding
-    /// moments are reported).
+    /// Hold the inner ring's tilts at zero (quasi-static: the holding
+    /// moments are reported; a run: a shaft held in tilt by its other bearing).
     #[arg(long)]
     pub fix_tilt: bool,
     /// Prescribe the inner ring's tilt θ_y, e.g. "0.05 deg" (quasi-static).

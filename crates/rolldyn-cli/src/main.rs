@@ -145,14 +145,11 @@ struct QuasistaticArgs {
     json: bool,
 }
 
-/// Arguments of `rolldyn run`. The quasi-static ring constraints of
-/// the shared case flags (`--fix-tilt`, `--misalignment`) are refused by a
-/// dynamic run, so its help does not offer them.
+/// Arguments of `rolldyn run`. A prescribed tilt (`--misalignment`) is
+/// quasi-static only and refused by a dynamic run, so its help does not
+/// offer it; `--fix-tilt` holds both tilts at zero in a run too.
 #[derive(Args)]
-#[command(
-    mut_arg("fix_tilt", |a| a.hide(true)),
-    mut_arg("misalignment", |a| a.hide(true))
-)]
+#[command(mut_arg("misalignment", |a| a.hide(true)))]
 struct RunArgs {
     #[command(flatten)]
     case: CaseArgs,

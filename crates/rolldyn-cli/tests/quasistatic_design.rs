@@ -145,10 +145,13 @@ fn fixed_tilt_and_misalignment() {
     );
     assert!((v["tilt_y_rad"].as_f64().unwrap() - 0.01f64.to_radians()).abs() < 1e-15);
     assert!(v["reaction_moment_y_n_m"].as_f64().is_some());
+    // A run holds both tilts at zero (a shaft held by its other bearing)
+    // but refuses a prescribed tilt.
     let o = rolldyn(
         &[
             "run",
-            "--fix-tilt",
+            "--misalignment",
+            "0.01 deg",
             "--duration",
             "1 ms",
             "-o",
@@ -158,6 +161,33 @@ fn fixed_tilt_and_misalignment() {
     );
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("quasi-static only"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("operating.tilt_y"), "{}", stderr(&o));
+    let dir = common::temp_dir("fixed-tilt-run");
+    let d = dir.to_str().unwrap();
+    let o = rolldyn(
+        &[
+            "run",
+            "--fix-tilt",
+            "--radial-load",
+            "300 N",
+            "--duration",
+            "0.5 ms",
+            "-o",
+            d,
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
+    for name in ["inner_ring_tilt_y_rad", "inner_ring_tilt_z_rad"] {
+        assert!(
+            series.column(name).unwrap().iter().all(|&v| v == 0.0),
+            "{name}"
+        );
+    }
+    let z = series.column("inner_ring_z_m").unwrap();
+    assert!(z.iter().any(|&v| v != z[0]), "the ring moves radially");
+    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Exit codes (docs/cli.md): an output path that cannot be

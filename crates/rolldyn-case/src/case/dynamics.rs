@@ -67,10 +67,15 @@ impl Case {
     /// a dynamic run needs but the case lacks is an error naming its key.
     pub fn dynamics_parameters(&self) -> Result<DynamicsParameters, Invalid> {
         let g = &self.bearing.geometry;
+        // Both tilts held at zero (`operating.fixed_tilt`): a shaft held in
+        // tilt by its other bearing. Any other prescribed displacement is
+        // quasi-static only.
+        let tilt_held = self.prescribed_displacement[3..] == [Some(0.0), Some(0.0)];
         if let Some(k) = self
             .prescribed_displacement
             .iter()
-            .position(Option::is_some)
+            .enumerate()
+            .position(|(k, p)| p.is_some() && !(tilt_held && k >= 3))
         {
             let key = [
                 "displacement_x",
@@ -82,7 +87,7 @@ impl Case {
             return Err(Invalid::new(
                 format!("operating.{key}"),
                 None,
-                "prescribed ring displacements (and operating.fixed_tilt) are quasi-static only: a dynamic run moves the ring under its loads",
+                "prescribed ring displacements are quasi-static only: a dynamic run moves the ring under its loads (it can hold both tilts at zero: operating.fixed_tilt)",
             ));
         }
         let speed = self.speed.clone().ok_or_else(|| {
@@ -163,6 +168,7 @@ impl Case {
             rolling_hysteresis: self.rolling_hysteresis,
             gravity: if self.gravity { STANDARD_GRAVITY } else { 0.0 },
             planar: self.planar,
+            inner_ring_tilt_held: tilt_held,
             drag: self.drag,
             seals: self.seals,
             rolling_resistance: self.rolling_resistance()?,

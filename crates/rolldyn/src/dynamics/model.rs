@@ -355,6 +355,11 @@ impl BearingModel {
                 dy[dr + k] = 0.0;
             }
         }
+        if p.inner_ring_tilt_held {
+            for k in [3, 4, 8, 9] {
+                dy[dr + k] = 0.0;
+            }
+        }
         // Tabulated loads: the load potential −F(t)·x changes explicitly
         // with time; that change is work of the external loads.
         let load_rate = p.loads.rate(t);

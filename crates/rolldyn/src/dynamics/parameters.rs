@@ -57,6 +57,10 @@ pub struct DynamicsParameters {
     /// Planar mode (Shan et al. 2023): axial coordinates, tilts and the ball spin
     /// components other than ω_x frozen.
     pub planar: bool,
+    /// The inner ring's tilts θ_y, θ_z held at zero: the ring sits on a
+    /// shaft that its other bearing holds in tilt (`operating.fixed_tilt`;
+    /// docs/dynamics.md, "Mounting").
+    pub inner_ring_tilt_held: bool,
     /// Drag of the air–oil mixture.
     pub drag: DragParameters,
     /// Raceway and ball surfaces: waviness and spalls (default: smooth).
@@ -115,6 +119,7 @@ impl DynamicsParameters {
             rolling_hysteresis: 0.0,
             gravity: 0.0,
             planar: false,
+            inner_ring_tilt_held: false,
             drag: DragParameters::default(),
             surface: SurfaceModel::default(),
             film_supply: Default::default(),

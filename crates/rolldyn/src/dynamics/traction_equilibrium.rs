@@ -238,7 +238,7 @@ impl Solver<'_> {
         for &k in translations {
             list.push((r + k, r + 5 + k, p.inner_ring_mass));
         }
-        if !self.planar {
+        if !self.planar && !p.inner_ring_tilt_held {
             for k in [3, 4] {
                 list.push((r + k, r + 5 + k, p.inner_ring_tilt_inertia / arm));
             }

@@ -36,6 +36,7 @@ mod efficiency;
 mod ehl_rolling_resistance;
 mod elastic_shaft;
 mod fast_part;
+mod held_tilt;
 mod jacobian_reuse;
 mod life_reference;
 mod pocket_squeeze;
