@@ -259,14 +259,17 @@ fn run_all(jobs: &[(String, f64, String)], duration: f64) -> Result<Vec<Outcome>
 
 fn simulate(label: &str, axial: f64, surface: &str, duration: f64) -> Result<Outcome, String> {
     let preset = presets::find("7008C").ok_or("no 7008C preset")?;
-    let text = preset
-        .text
-        .replacen("\n[assumptions]", &format!("\n{surface}\n[assumptions]"), 1);
-    // The paper's undamped Hertz contacts (case.toml), not the preset's
-    // default material damping.
+    let text = preset.without_mounting().replacen(
+        "\n[assumptions]",
+        &format!("\n{surface}\n[assumptions]"),
+        1,
+    );
+    // The paper's bearing alone (the preset without its mounting), with its
+    // undamped Hertz contacts and the ring mass of case.toml.
     let overrides = [
         Override::flag("--axial-load", "operating.force_x", &format!("{axial} N")),
         Override::parse_set("model.normal_law=hertz").map_err(|e| e.to_string())?,
+        Override::parse_set("inner_ring.mass=0.5 kg").map_err(|e| e.to_string())?,
     ];
     let case = load_case("7008C preset", &text, &overrides).map_err(|e| e.to_string())?;
     let params = case

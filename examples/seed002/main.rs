@@ -82,13 +82,15 @@ fn simulate(
 ) -> Result<Vec<Row>, String> {
     let preset = presets::find("7218B").ok_or("no 7218B preset")?;
     let traction = format!("model.traction={{ law = \"{law}\", friction = {mu} }}");
-    // The paper's undamped Hertz contacts (case.toml), not the preset's
-    // default material damping.
+    // The paper's bearing alone (the preset without its mounting), with
+    // its undamped Hertz contacts and the ring mass of case.toml.
     let overrides = [
         Override::parse_set(&traction).map_err(|e| e.to_string())?,
         Override::parse_set("model.normal_law=hertz").map_err(|e| e.to_string())?,
+        Override::parse_set("inner_ring.mass=0.7 kg").map_err(|e| e.to_string())?,
     ];
-    let case = load_case("7218B preset", preset.text, &overrides).map_err(|e| e.to_string())?;
+    let case = load_case("7218B preset", &preset.without_mounting(), &overrides)
+        .map_err(|e| e.to_string())?;
     let params = case
         .dynamics_parameters()
         .map_err(|e| format!("{}: {}", e.key, e.rule))?;

@@ -71,7 +71,10 @@ fn main() -> Result<(), String> {
         Some(other) => return Err(format!("{other}: expected \"static\" or nothing")),
     };
     std::fs::create_dir_all(&out).map_err(|e| format!("{}: {e}", out.display()))?;
-    let preset = presets::find("ceramic_45x75").ok_or("no ceramic_45x75 preset")?;
+    // Zhang et al. 2020's bearing alone: the preset without its mounting.
+    let preset = presets::find("ceramic_45x75")
+        .ok_or("no ceramic_45x75 preset")?
+        .without_mounting();
     let mut table = String::from(
         "Zhang et al. 2020 §3: ceramic 45x75, 15 000 rpm, most loaded ball, inner contact\n\
          F_z [N]      L   Q_i [N]      L*  h_c flooded [µm]  h_c [µm]  factor  K_oil [N/m]  dQ/dδ [N/m]  series [N/m]\n",
@@ -80,7 +83,7 @@ fn main() -> Result<(), String> {
         "radial_load_n,inlet_distance_ratio,load_inner_n,critical_inlet_distance_ratio,flooded_central_film_m,central_film_m,starvation_factor,film_stiffness_n_per_m,contact_stiffness_n_per_m,series_stiffness_n_per_m\n",
     );
     // The inner-ring mass of the dynamic runs (the preset's estimate).
-    let ring_mass = load_case("ceramic_45x75 preset", preset.text, &[])
+    let ring_mass = load_case("ceramic_45x75 preset", &preset, &[])
         .map_err(|e| e.to_string())?
         .dynamics_parameters()
         .map_err(|e| format!("{}: {}", e.key, e.rule))?
@@ -106,8 +109,8 @@ fn main() -> Result<(), String> {
             "operating.force_z",
             &format!("{fz} N"),
         )];
-        let case = load_case("ceramic_45x75 preset", preset.text, &overrides)
-            .map_err(|e| e.to_string())?;
+        let case =
+            load_case("ceramic_45x75 preset", &preset, &overrides).map_err(|e| e.to_string())?;
         let g = &case.bearing.geometry;
         let (ball, rings) = (
             &case.materials.ball.material,
@@ -215,7 +218,7 @@ fn main() -> Result<(), String> {
     let mut vibration_csv = String::new();
     if dynamic_runs {
         let jobs = dynamic::jobs(&RADIAL_LOADS, &RATIOS);
-        let results = dynamic::run_all(preset.text, &jobs);
+        let results = dynamic::run_all(&preset, &jobs);
         let vibration;
         (vibration, vibration_csv) = dynamic::tables(&results, &jobs);
         table.push_str(&vibration);

@@ -473,6 +473,22 @@ fn on_base(
 /// Loads and validates a case from `text` (named `source_name` in messages),
 /// applying `overrides` in order.
 pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Result<Case, CaseError> {
+    // A set or a shaft is its own mounting: a single bearing's mounting
+    // lines (from a preset's or a catalogue bearing's file) are left out,
+    // blanked so that line numbers stay those of the file.
+    let system = |t: &Table| t.contains_key("arrangement") || t.contains_key("shaft");
+    let unmounted;
+    let text = if text.contains(crate::mounting::MOUNTING_TAG)
+        && (overrides
+            .iter()
+            .any(|o| o.key.starts_with("arrangement") || o.key.starts_with("shaft"))
+            || toml::from_str::<Table>(text).is_ok_and(|t| system(&t)))
+    {
+        unmounted = crate::mounting::without_mounting(text);
+        unmounted.as_str()
+    } else {
+        text
+    };
     let document = toml::de::DeTable::parse(text).map_err(|e| CaseError {
         source_name: source_name.to_string(),
         origin: Box::new(

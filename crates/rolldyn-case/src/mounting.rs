@@ -1,12 +1,20 @@
 //! A bearing's mounting (docs/dynamics.md, "Mounting"): the natural
 //! frequencies `rolldyn check` reports, and a rule for the share of a
 //! shaft the inner ring carries and the pedestal housing the outer ring
-//! sits in (not yet written into the presets: docs/dynamics.md says why).
+//! sits in. The presets and `rolldyn new --bearing` write the shaft share,
+//! the held tilt and gravity ([`CASE_LINES`]); the pedestal is not yet
+//! written into them (docs/dynamics.md says why).
 //!
 //! * **Shaft share.** The inner ring carries half of a solid steel shaft of
 //!   the bore diameter d, 10 d long between two bearings (an assumption:
 //!   a motor or test-rig shaft), with the ring itself (a steel annulus from
 //!   the bore to the inner raceway, d_m − D_w).
+//! * **Held tilt.** The shaft's other bearing, 10 d away, holds the ring's
+//!   tilt: its radial stiffness times the span squared is hundreds of
+//!   times a single bearing's own moment stiffness, so the ring's tilts
+//!   are held at zero (`operating.fixed_tilt`). A free ring as heavy as a
+//!   shaft share but with a ring's small tilt inertia flutters
+//!   (docs/dynamics.md).
 //! * **Pedestal.** Sawalhi & Randall (2008) model the housing of a 6205-size
 //!   test bearing (9 balls of 7.94 mm on a 39.3 mm pitch circle) as a
 //!   pedestal of mass m_p = 6.6 kg on stiffness k_p = 1.51e7 N/m with
@@ -33,6 +41,43 @@ pub const PEDESTAL_DAMPING: f64 = 2210.7;
 pub const SHAFT_LENGTH_IN_BORES: f64 = 10.0;
 /// Density of the steel shaft and rings \[kg/m³\].
 pub const STEEL_DENSITY: f64 = 7850.0;
+
+/// The comment that ends each mounting line of a case file (presets,
+/// `rolldyn new --bearing`): [`crate::presets::Preset::without_mounting`]
+/// removes those lines.
+pub const MOUNTING_TAG: &str = "# mounting";
+
+/// `text` without its mounting (the lines carrying [`MOUNTING_TAG`] left
+/// empty, so that the others keep their numbers): the bearing alone, as
+/// its source paper models it, or as a set or a shaft mounts it (they are
+/// their own mounting).
+pub fn without_mounting(text: &str) -> String {
+    text.lines()
+        .map(|line| {
+            if line.contains(MOUNTING_TAG) {
+                "\n".to_string()
+            } else {
+                format!("{line}\n")
+            }
+        })
+        .collect()
+}
+
+/// The `[assumptions]` entries of a case file's mounting, key and text.
+pub const ASSUMPTIONS: [(&str, &str); 3] = [
+    (
+        "inner_ring.mass",
+        "mounting: the ring with half a solid steel shaft of the bore diameter, 10 bores long, that turns with it (docs/dynamics.md, \\\"Mounting\\\"); write your shaft's share when you know it",
+    ),
+    (
+        "operating.fixed_tilt",
+        "mounting: the shaft's other bearing holds the ring's tilt (its radial stiffness times the span squared is hundreds of times the bearing's own moment stiffness); false for a free ring, as in the source papers",
+    ),
+    (
+        "model.gravity",
+        "mounting: a horizontal shaft; the weights of the shaft share, the balls and the cage load the bearing",
+    ),
+];
 
 /// The mounting of one bearing.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -71,7 +71,10 @@ fn dynamics_parameters_defaults_and_missing_values() {
     // The default case has everything a run needs.
     let case = rolldyn_case::load_default(&[]).unwrap();
     let p = case.dynamics_parameters().unwrap();
-    assert_eq!(p.inner_ring_mass, 0.5);
+    // Mounted (docs/dynamics.md, "Mounting"): a shaft share, the tilts
+    // held, gravity.
+    assert_eq!(p.inner_ring_mass, 2.03);
+    assert!(p.inner_ring_tilt_held && p.gravity > 9.8);
     assert!(matches!(
         p.traction,
         rolldyn::traction::TractionModel::Ehl(_)

@@ -28,6 +28,9 @@ pub struct MountingReport {
     pub chain_hz: Option<[f64; 2]>,
     /// Gravity on.
     pub gravity: bool,
+    /// The inner ring's tilts held (`operating.fixed_tilt`: the shaft's
+    /// other bearing holds them).
+    pub inner_ring_tilt_held: bool,
 }
 
 impl MountingReport {
@@ -71,6 +74,7 @@ impl MountingReport {
                 rolldyn_case::mounting::chain_frequencies(m, k, o.mass, o.housing.stiffness[2])
             }),
             gravity: case.gravity,
+            inner_ring_tilt_held: p.inner_ring_tilt_held,
         })
     }
 
@@ -82,8 +86,13 @@ impl MountingReport {
         );
         let _ = writeln!(
             out,
-            "  inner ring with what turns with it  {:.3} kg",
-            self.inner_ring_mass_kg
+            "  inner ring with what turns with it  {:.3} kg, tilts {}",
+            self.inner_ring_mass_kg,
+            if self.inner_ring_tilt_held {
+                "held (operating.fixed_tilt: the shaft's other bearing)"
+            } else {
+                "free"
+            }
         );
         match (
             self.outer_ring_mass_kg,

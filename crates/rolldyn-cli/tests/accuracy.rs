@@ -104,7 +104,20 @@ const IMPACT_MEANS: [&str; 3] = [
 fn low_speed_ehl_closes_its_balance() {
     let (s, _) = run("500rpm", &["--speed", "500 rpm", "--verify"], None);
     assert_converged("500 rpm", &s, &MEANS);
-    let low = ["--speed", "100 rpm", "--duration", "10 ms", "--verify"];
+    // Without gravity at 100 rpm: the 3 g cage, started centred, drops
+    // onto its guide land in the first 6 ms (no lift at that speed), a
+    // transient a 10 ms window cannot average (its cage speed moves 1.1 %
+    // at tighter tolerances; over 30 ms with gravity, 1.3e-4:
+    // docs/dynamics.md, "Mounting").
+    let low = [
+        "--speed",
+        "100 rpm",
+        "--duration",
+        "10 ms",
+        "--verify",
+        "--set",
+        "model.gravity=false",
+    ];
     let (s, _) = run("100rpm", &low, None);
     assert_converged("100 rpm", &s, &MEANS);
     let verify = &s["accuracy"]["verify"];

@@ -332,9 +332,9 @@ fn quasistatic_sweep_writes_csv_and_json() {
     assert_eq!(o.status.code(), Some(2));
 }
 
-/// A refused sweep point (7218B, F_x = 100 N under F_z = 50 kN: below the
-/// least axial load) is counted apart from failures, and its least axial
-/// load is a column.
+/// A refused sweep point (7218B with a free ring, F_x = 100 N under F_z =
+/// 50 kN: below the least axial load) is counted apart from failures, and
+/// its least axial load is a column.
 #[test]
 fn quasistatic_sweep_reports_refused_points_with_their_least_axial_load() {
     let dir = temp_dir("sweep-refused");
@@ -350,6 +350,10 @@ fn quasistatic_sweep_reports_refused_points_with_their_least_axial_load() {
             "axial=100N,20kN",
             "--sweep",
             "radial=50kN",
+            // A free ring: held in tilt, the ring carries the radial load
+            // with a moment and needs no axial load.
+            "--set",
+            "operating.fixed_tilt=false",
             "-o",
             &dir_s,
         ],
@@ -704,7 +708,9 @@ fn traction_consistent_quasistatic() {
     );
 
     // With a ball-guided cage (the quasi-static state leaves out the guide
-    // land's drag on the cage) the run stays at the quasi-static state.
+    // land's drag on the cage) and without gravity (the quasi-static
+    // commands take the operating loads, a run's start adds the ring's
+    // weight) the run stays at the quasi-static state.
     let ball_guided = json(
         &[
             "quasistatic",
@@ -712,6 +718,8 @@ fn traction_consistent_quasistatic() {
             "traction",
             "--set",
             "cage.guidance=ball",
+            "--set",
+            "model.gravity=false",
             "--json",
         ],
         None,
@@ -725,6 +733,8 @@ fn traction_consistent_quasistatic() {
             "solver.start=quasistatic_traction",
             "--set",
             "cage.guidance=ball",
+            "--set",
+            "model.gravity=false",
             "--duration",
             "1 ms",
             "-o",

@@ -319,9 +319,13 @@ fn thermal_steady_states_of_presets_say_what_they_assume() {
         warnings[0].as_str().unwrap().contains("beyond the 315 °C"),
         "{warnings:?}"
     );
-    // A hybrid bearing seated by its radial load alone: warm, its
-    // clearance grows and it is no longer seated; the refusal says where.
-    let o = rolldyn(&["thermal", "-"], Some(&preset("ceramic_45x75")));
+    // A hybrid bearing seated by its radial load alone, its ring free to
+    // tilt (the preset without its mounting): warm, its clearance grows
+    // and it is no longer seated; the refusal says where.
+    let free = rolldyn_case::presets::find("ceramic_45x75")
+        .unwrap()
+        .without_mounting();
+    let o = rolldyn(&["thermal", "-"], Some(&free));
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
     for part in [
         "thermal steady state, pass",

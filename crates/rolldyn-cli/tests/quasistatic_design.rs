@@ -58,7 +58,9 @@ fn radial_load_direction_ball_azimuth_and_compliance() {
 /// (the dedicated flags apply before `--set`).
 #[test]
 fn radial_load_and_tilt_conflicts_are_located() {
-    let preset = rolldyn_case::presets::find("7008C").unwrap().text;
+    let preset = rolldyn_case::presets::find("7008C")
+        .unwrap()
+        .without_mounting();
     for (extra, key) in [
         (
             "radial_load = \"1 kN\"\nforce_z = \"5 N\"\n",
@@ -214,9 +216,11 @@ fn exit_codes() {
     }
     std::fs::remove_file(&file).ok();
     // A point of the stress grid that has no converged solution yet
-    // (the 7218B with light axial and heavy radial load, at speed); when the
-    // solver learns it, force a failure another way.
-    let case = rolldyn_case::presets::find("7218B").unwrap().text;
+    // (the 7218B with a free ring, light axial and heavy radial load, at
+    // speed); when the solver learns it, force a failure another way.
+    let case = rolldyn_case::presets::find("7218B")
+        .unwrap()
+        .without_mounting();
     let o = rolldyn(
         &[
             "quasistatic",
@@ -228,7 +232,7 @@ fn exit_codes() {
             "--radial-load",
             "10 kN",
         ],
-        Some(case),
+        Some(&case),
     );
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
     assert!(stderr(&o).contains("no equilibrium"), "{}", stderr(&o));
@@ -365,7 +369,9 @@ fn modified_and_reference_rating_lives() {
 /// and names the least axial load, which then solves.
 #[test]
 fn least_axial_load_is_named() {
-    let case = rolldyn_case::presets::find("7218B").unwrap().text;
+    let case = rolldyn_case::presets::find("7218B")
+        .unwrap()
+        .without_mounting();
     let args = [
         "quasistatic",
         "-",
@@ -374,7 +380,10 @@ fn least_axial_load_is_named() {
         "--radial-load",
         "50 kN",
     ];
-    let o = rolldyn(&[&args[..], &["--axial-load", "10 N"]].concat(), Some(case));
+    let o = rolldyn(
+        &[&args[..], &["--axial-load", "10 N"]].concat(),
+        Some(&case),
+    );
     assert_eq!(o.status.code(), Some(3));
     let err = String::from_utf8_lossy(&o.stderr);
     let least: f64 = err
@@ -387,7 +396,7 @@ fn least_axial_load_is_named() {
     let enough = format!("{} N", 1.05 * least + 1.0);
     let o = rolldyn(
         &[&args[..], &["--axial-load", &enough]].concat(),
-        Some(case),
+        Some(&case),
     );
     assert_eq!(
         o.status.code(),

@@ -51,6 +51,8 @@ fn quasistatic_films_and_modes() {
             "surface.inner.roughness=\"0.1 um\"",
             "--set",
             "inner_ring.tilt_inertia=\"1e-4 kg.m^2\"",
+            "--set",
+            "inner_ring.mass=\"0.5 kg\"",
         ],
         None,
     );

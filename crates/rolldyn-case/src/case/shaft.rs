@@ -41,11 +41,16 @@ pub enum BearingSource {
 }
 
 impl BearingSource {
-    /// The case text the bearing is solved with.
+    /// The case text the bearing is solved with: a preset or catalogue
+    /// bearing without its own mounting (the shaft mounts it).
     pub fn case_text(&self) -> Result<Cow<'static, str>, String> {
+        let bare = crate::mounting::without_mounting;
         match self {
-            Self::Preset(p) => Ok(Cow::Borrowed(p.text)),
-            Self::Catalogue(b) => b.case_text().map(Cow::Owned).map_err(|e| e.to_string()),
+            Self::Preset(p) => Ok(Cow::Owned(p.without_mounting())),
+            Self::Catalogue(b) => b
+                .case_text()
+                .map(|t| Cow::Owned(bare(&t)))
+                .map_err(|e| e.to_string()),
             Self::Inline { text, .. } => Ok(Cow::Owned(text.clone())),
         }
     }

@@ -3,6 +3,7 @@
 //! value under `[assumptions]` (docs/catalogue.md).
 
 use super::{BALL_SECTION_FRACTION, BearingKind, CatalogueBearing, Ratings};
+use crate::mounting::{ASSUMPTIONS, MOUNTING_TAG, Mounting};
 use rolldyn::error::InvalidParameter;
 
 impl CatalogueBearing {
@@ -135,10 +136,24 @@ impl CatalogueBearing {
         t.push_str("whirl = false                        # cage rotation only\n\n");
     }
 
-    /// `[materials]`, `[lubricant]`, `[operating]` (a load of 5 % of the
-    /// estimated C_r), `[model]` and `[solver]`.
+    /// `[inner_ring]` (the mounting rule's shaft share), `[materials]`,
+    /// `[lubricant]`, `[operating]` (a load of 5 % of the estimated C_r,
+    /// the tilts held), `[model]` (gravity on) and `[solver]`.
     fn running_sections(&self, t: &mut String, ratings: &Ratings) {
         let load_n = ((0.05 * ratings.dynamic) / 10.0).round() * 10.0;
+        let mounting = Mounting::by_rule(
+            self.bore,
+            self.outside_diameter,
+            self.width,
+            self.pitch_diameter,
+            self.ball_diameter,
+        );
+        let mass = mounting.inner_ring_mass();
+        let digits = (2 - mass.log10().floor() as i32).max(0) as usize;
+        t.push_str(&format!(
+            "[inner_ring]\n{:<37}{MOUNTING}\n\n",
+            format!("mass = \"{mass:.digits$} kg\"")
+        ));
         t.push_str("[materials]\nball = \"steel_52100\"\nrings = \"steel_52100\"\n\n");
         t.push_str("[lubricant]\nname = \"ISO VG 68 mineral oil\"\n");
         for line in [
@@ -159,13 +174,15 @@ impl CatalogueBearing {
             BearingKind::AngularContact => "force_x",
         };
         t.push_str(&format!(
-            "{:<37}# 5 % of the estimated C_r\n",
-            format!("{load_key} = \"{load_n} N\"")
+            "{:<37}# 5 % of the estimated C_r\n{:<37}{MOUNTING}\n",
+            format!("{load_key} = \"{load_n} N\""),
+            "fixed_tilt = true"
         ));
         t.push_str(
             "\n[model]\n\
              traction = { law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }  # assumed: see [assumptions]\n\
-             traction_integration = { method = \"graded\", across = 16, along = 8 }   # see [assumptions]\n\n\
+             traction_integration = { method = \"graded\", across = 16, along = 8 }   # see [assumptions]\n\
+             gravity = true                       # mounting: see [assumptions]\n\n\
              [solver]\n\
              duration = \"0.1 s\"                   # about two cage revolutions at 3000 rpm\n\
              start = \"jones_harris\"\n\n",
@@ -270,6 +287,9 @@ impl CatalogueBearing {
             "model.traction_integration",
             "graded 16 x 8 cells: the dissipated power within 0.5 % of a 48 x 24 grid (7210B, docs/catalogue.md)".into(),
         ));
+        for (key, text) in ASSUMPTIONS {
+            t.push_str(&format!("\"{key}\" = \"{text}\"  {MOUNTING_TAG}\n"));
+        }
     }
 }
 
@@ -277,6 +297,8 @@ impl CatalogueBearing {
 const EST: &str = "# estimated: see [assumptions]";
 /// The comment of an assumed value.
 const ASSUMED: &str = "# assumed: see [assumptions]";
+/// The comment of a mounting value.
+const MOUNTING: &str = "# mounting: see [assumptions]";
 
 /// A length in millimetres, as the case file writes it.
 fn mm(x: f64) -> String {

@@ -216,8 +216,10 @@ pub fn model(case: &Case, parameters: DynamicsParameters) -> Result<BearingModel
 }
 
 /// The Jones–Harris state of `model` at time `t` (that instant's speed and
-/// loads, the case's raceway control; with the film in the approach when
-/// the case asks).
+/// loads with the inner ring's weight when gravity acts, the case's
+/// raceway control; with the film in the approach when the case asks), so
+/// that a heavy ring (a shaft share) does not start by dropping onto its
+/// balls.
 pub fn jones_harris_state(
     case: &Case,
     model: &BearingModel,
@@ -225,8 +227,10 @@ pub fn jones_harris_state(
 ) -> Result<Vec<f64>, SimulationError> {
     let p = model.parameters();
     let problem = QuasiStatic::from_case(case)?;
+    let mut loads = p.loads.at(t);
+    loads.force[2] -= p.inner_ring_mass * p.gravity;
     let conditions = rolldyn::quasistatic::Conditions {
-        loads: p.loads.at(t),
+        loads,
         inner_speed: p.speed.speed_at(t),
         control: case.raceway_control,
     };

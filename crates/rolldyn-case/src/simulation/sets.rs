@@ -59,6 +59,14 @@ impl BearingSet {
             .iter()
             .position(Option::is_some)
         {
+            let tilt_held = case.prescribed_displacement[3..] == [Some(0.0), Some(0.0)];
+            if k >= 3 && tilt_held {
+                return Err(SimulationError::Case(Invalid {
+                    key: "operating.fixed_tilt".into(),
+                    value: Some("true".into()),
+                    rule: "a set's shaft holds its own tilt: not with [arrangement] (a single bearing's mounting; docs/dynamics.md, \"Mounting\")".into(),
+                }));
+            }
             let key = ["x", "y", "z"].get(k).map_or(
                 ["operating.tilt_y", "operating.tilt_z"][k - 3].to_string(),
                 |a| format!("operating.displacement_{a}"),

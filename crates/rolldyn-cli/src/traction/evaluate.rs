@@ -63,34 +63,6 @@ struct Setup {
     ring: Option<(&'static str, f64)>,
 }
 
-/// The ring constraints of a case (`operating.fixed_tilt`, prescribed
-/// displacements and tilts) do not enter one contact's traction: refused,
-/// the key named.
-fn refuse_ring_constraints(case: &rolldyn_case::Case) -> Result<(), String> {
-    let held = case.prescribed_displacement;
-    let key = if held[3..] == [Some(0.0), Some(0.0)] {
-        Some("fixed_tilt")
-    } else {
-        let names = [
-            "displacement_x",
-            "displacement_y",
-            "displacement_z",
-            "tilt_y",
-            "tilt_z",
-        ];
-        held.iter()
-            .zip(names)
-            .find(|(v, _)| v.is_some())
-            .map(|(_, k)| k)
-    };
-    match key {
-        Some(key) => Err(format!(
-            "operating.{key}: the inner ring's constraints do not enter one contact's traction"
-        )),
-        None => Ok(()),
-    }
-}
-
 fn setup(contact: &Contact) -> Result<Setup, String> {
     let setup = match contact {
         Contact::Bearing {
@@ -99,7 +71,6 @@ fn setup(contact: &Contact) -> Result<Setup, String> {
             load,
             angle,
         } => {
-            refuse_ring_constraints(case)?;
             let params = case
                 .dynamics_parameters()
                 .map_err(|e| format!("{}: {}", e.key, e.rule))?;

@@ -351,6 +351,13 @@ pub fn report(args: &TractionArgs) -> Result<TractionReport, Failure> {
                 _ => return Err(bad_arg("--ring", &args.ring, "expected inner or outer")),
             };
             let angle = parse_angle("--angle", args.angle.as_ref())?;
+            if args.case.overrides.fix_tilt {
+                return Err(bad_arg(
+                    "--fix-tilt",
+                    "",
+                    "the inner ring's constraints do not enter one contact's traction",
+                ));
+            }
             case = args.case.load()?.1;
             Contact::Bearing {
                 case: &case,

@@ -97,7 +97,11 @@ pub fn run_summary(tag: &str, case: Option<&str>, duration: &str, sets: &[&str])
 /// The default case (7008C) as a matched set.
 pub fn pair(arrangement: &str) -> String {
     let o = rolldyn(&["new", "--preset", "7008C"], None);
-    format!("{}\n[arrangement]\n{arrangement}\n", stdout(&o))
+    // The pair is its own mounting: the single bearing's lines go; each
+    // ring keeps the 0.5 kg of Deng et al. 2022's case (examples/seed001).
+    let bearing = rolldyn_case::mounting::without_mounting(&stdout(&o))
+        .replace("[inner_ring]\n", "[inner_ring]\nmass = \"0.5 kg\"\n");
+    format!("{bearing}\n[arrangement]\n{arrangement}\n")
 }
 
 /// Two 6206 on a rigid shaft 120 mm apart, a gear force of 4 kN at
