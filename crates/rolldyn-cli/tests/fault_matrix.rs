@@ -19,8 +19,9 @@
 //! 12 o'clock, where the channels look, without one), D_w/15 long and
 //! D_w/28 deep (the CWRU 0.021 in pit's proportions on a 6205). Each run lasts 3/f_c, at least 0.05 s, the
 //! window (its second half) resolving lines f_c/1.5 apart. The tests in CI
-//! check three of the ten bearings (two miss at defaults, docs/validation.md;
-//! five more pass and are left to the benchmark for CI's time); `fault_matrix_table` (ignored: a benchmark) runs
+//! check three of the ten bearings (with the mounted presets six miss some
+//! signatures at defaults, docs/validation.md; the 7008C passes and is left
+//! to the benchmark for CI's time); `fault_matrix_table` (ignored: a benchmark) runs
 //! all ten at 0.4 s or 3/f_c, whichever is longer, and prints the table of
 //! docs/validation.md.
 
