@@ -429,3 +429,24 @@ fn physical_ranges_are_checked() {
         "{e}"
     );
 }
+
+/// A shaft's displacements and tilts follow from its bearings: a held tilt
+/// or a prescribed displacement beside `[shaft]` is refused, the key and
+/// its line named (they were ignored before).
+#[test]
+fn a_shaft_refuses_prescribed_ring_displacements() {
+    let shaft = "[operating]\nspeed = \"3000 rpm\"\n{KEY}\n[shaft]\n[[shaft.bearings]]\npreset = \"6206\"\nposition = \"-60 mm\"\n[[shaft.bearings]]\npreset = \"6206\"\nposition = \"60 mm\"\n";
+    for (line, key) in [
+        ("fixed_tilt = true", "operating.fixed_tilt"),
+        ("tilt_y = \"0.1 deg\"", "operating.tilt_y"),
+        ("displacement_z = \"1 um\"", "operating.displacement_z"),
+    ] {
+        let e = err(&shaft.replace("{KEY}", line));
+        check(
+            &e,
+            key,
+            3,
+            &["follow from its bearings", "not with [shaft]"],
+        );
+    }
+}

@@ -427,6 +427,20 @@ fn errors_name_the_key() {
         let e = stderr(&o);
         assert!(e.contains(key) && e.contains(rule), "{arrangement}: {e}");
     }
+    // A held tilt written into a set's case (not a preset's tagged
+    // mounting line, which a set leaves out) is refused with its key.
+    let held = pair("kind = \"back_to_back\"\npreload = \"100 N\"").replacen(
+        "[operating]\n",
+        "[operating]\nfixed_tilt = true\n",
+        1,
+    );
+    let o = rolldyn(&["quasistatic", "-"], Some(&held));
+    assert_eq!(o.status.code(), Some(2));
+    let e = stderr(&o);
+    assert!(
+        e.contains("operating.fixed_tilt") && e.contains("holds its own tilt"),
+        "{e}"
+    );
     let case = pair("kind = \"back_to_back\"\npreload = \"100 N\"");
     // The power loss of every bearing at the set's equilibrium, each as
     // the bearing's own power report.
