@@ -478,13 +478,13 @@ pub fn load_case(source_name: &str, text: &str, overrides: &[Override]) -> Resul
     // blanked so that line numbers stay those of the file.
     let system = |t: &Table| t.contains_key("arrangement") || t.contains_key("shaft");
     let unmounted;
-    let text = if text.contains(crate::mounting::MOUNTING_TAG)
+    let text = if text.contains(crate::presets::MOUNTING_TAG)
         && (overrides
             .iter()
             .any(|o| o.key.starts_with("arrangement") || o.key.starts_with("shaft"))
             || toml::from_str::<Table>(text).is_ok_and(|t| system(&t)))
     {
-        unmounted = crate::mounting::without_mounting(text);
+        unmounted = crate::presets::without_mounting(text);
         unmounted.as_str()
     } else {
         text

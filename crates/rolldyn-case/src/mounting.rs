@@ -2,7 +2,7 @@
 //! frequencies `rolldyn check` reports, and a rule for the share of a
 //! shaft the inner ring carries and the pedestal housing the outer ring
 //! sits in. The presets and `rolldyn new --bearing` write the shaft share,
-//! the held tilt and gravity ([`ASSUMPTIONS`]); the pedestal is not yet
+//! the held tilt and gravity (`crate::presets::MOUNTING_ASSUMPTIONS`); the pedestal is not yet
 //! written into them (docs/dynamics.md says why).
 //!
 //! * **Shaft share.** The inner ring carries half of a solid steel shaft of
@@ -41,43 +41,6 @@ pub const PEDESTAL_DAMPING: f64 = 2210.7;
 pub const SHAFT_LENGTH_IN_BORES: f64 = 10.0;
 /// Density of the steel shaft and rings \[kg/m³\].
 pub const STEEL_DENSITY: f64 = 7850.0;
-
-/// The comment that ends each mounting line of a case file (presets,
-/// `rolldyn new --bearing`): [`crate::presets::Preset::without_mounting`]
-/// removes those lines.
-pub const MOUNTING_TAG: &str = "# mounting";
-
-/// `text` without its mounting (the lines carrying [`MOUNTING_TAG`] left
-/// empty, so that the others keep their numbers): the bearing alone, as
-/// its source paper models it, or as a set or a shaft mounts it (they are
-/// their own mounting).
-pub fn without_mounting(text: &str) -> String {
-    text.lines()
-        .map(|line| {
-            if line.contains(MOUNTING_TAG) {
-                "\n".to_string()
-            } else {
-                format!("{line}\n")
-            }
-        })
-        .collect()
-}
-
-/// The `[assumptions]` entries of a case file's mounting, key and text.
-pub const ASSUMPTIONS: [(&str, &str); 3] = [
-    (
-        "inner_ring.mass",
-        "mounting: the ring with half a solid steel shaft of the bore diameter, 10 bores long, that turns with it (docs/dynamics.md, \\\"Mounting\\\"); write your shaft's share when you know it",
-    ),
-    (
-        "operating.fixed_tilt",
-        "mounting: the shaft's other bearing holds the ring's tilt (its radial stiffness times the span squared is hundreds of times the bearing's own moment stiffness); false for a free ring, as in the source papers",
-    ),
-    (
-        "model.gravity",
-        "mounting: a horizontal shaft; the weights of the shaft share, the balls and the cage load the bearing",
-    ),
-];
 
 /// The mounting of one bearing.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -19,14 +19,49 @@ pub struct Preset {
     pub text: &'static str,
 }
 
-pub use crate::mounting::MOUNTING_TAG;
+/// The comment that ends each mounting line of a case file (presets,
+/// `rolldyn new --bearing`): [`Preset::without_mounting`]
+/// removes those lines.
+pub const MOUNTING_TAG: &str = "# mounting";
+
+/// `text` without its mounting (the lines carrying [`MOUNTING_TAG`] left
+/// empty, so that the others keep their numbers): the bearing alone, as
+/// its source paper models it, or as a set or a shaft mounts it (they are
+/// their own mounting).
+pub fn without_mounting(text: &str) -> String {
+    text.lines()
+        .map(|line| {
+            if line.contains(MOUNTING_TAG) {
+                "\n".to_string()
+            } else {
+                format!("{line}\n")
+            }
+        })
+        .collect()
+}
+
+/// The `[assumptions]` entries of a case file's mounting, key and text.
+pub const MOUNTING_ASSUMPTIONS: [(&str, &str); 3] = [
+    (
+        "inner_ring.mass",
+        "mounting: the ring with half a solid steel shaft of the bore diameter, 10 bores long, that turns with it (docs/dynamics.md, \\\"Mounting\\\"); write your shaft's share when you know it",
+    ),
+    (
+        "operating.fixed_tilt",
+        "mounting: the shaft's other bearing holds the ring's tilt (its radial stiffness times the span squared is hundreds of times the bearing's own moment stiffness); false for a free ring, as in the source papers",
+    ),
+    (
+        "model.gravity",
+        "mounting: a horizontal shaft; the weights of the shaft share, the balls and the cage load the bearing",
+    ),
+];
 
 impl Preset {
     /// The case text without its mounting (its lines carrying
     /// [`MOUNTING_TAG`] left empty): the inner ring alone, its tilts free,
     /// no gravity unless the source paper has it.
     pub fn without_mounting(&self) -> String {
-        crate::mounting::without_mounting(self.text)
+        without_mounting(self.text)
     }
 }
 
@@ -134,13 +169,13 @@ mod tests {
             );
             assert_eq!(case.prescribed_displacement[3..], [Some(0.0), Some(0.0)]);
             assert!(case.gravity, "{name}");
-            let bare_text = crate::mounting::without_mounting(&text);
+            let bare_text = without_mounting(&text);
             assert!(!bare_text.contains(MOUNTING_TAG));
             assert_eq!(bare_text.lines().count(), text.lines().count());
             let bare = load_case(&name, &bare_text, &[]).unwrap();
             assert_eq!(bare.prescribed_displacement, [None; 5], "{name}");
             assert!(!bare.gravity, "{name}");
-            for (key, assumption) in crate::mounting::ASSUMPTIONS {
+            for (key, assumption) in MOUNTING_ASSUMPTIONS {
                 let line = format!("\"{key}\" = \"{assumption}\"  {MOUNTING_TAG}");
                 assert!(text.contains(&line), "{name}: {line}");
             }

@@ -44,7 +44,7 @@ impl BearingSource {
     /// The case text the bearing is solved with: a preset or catalogue
     /// bearing without its own mounting (the shaft mounts it).
     pub fn case_text(&self) -> Result<Cow<'static, str>, String> {
-        let bare = crate::mounting::without_mounting;
+        let bare = crate::presets::without_mounting;
         match self {
             Self::Preset(p) => Ok(Cow::Owned(p.without_mounting())),
             Self::Catalogue(b) => b

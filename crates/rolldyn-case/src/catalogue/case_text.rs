@@ -3,7 +3,8 @@
 //! value under `[assumptions]` (docs/catalogue.md).
 
 use super::{BALL_SECTION_FRACTION, BearingKind, CatalogueBearing, Ratings};
-use crate::mounting::{ASSUMPTIONS, MOUNTING_TAG, Mounting};
+use crate::mounting::Mounting;
+use crate::presets::{MOUNTING_ASSUMPTIONS, MOUNTING_TAG};
 use rolldyn::error::InvalidParameter;
 
 impl CatalogueBearing {
@@ -287,7 +288,7 @@ impl CatalogueBearing {
             "model.traction_integration",
             "graded 16 x 8 cells: the dissipated power within 0.5 % of a 48 x 24 grid (7210B, docs/catalogue.md)".into(),
         ));
-        for (key, text) in ASSUMPTIONS {
+        for (key, text) in MOUNTING_ASSUMPTIONS {
             t.push_str(&format!("\"{key}\" = \"{text}\"  {MOUNTING_TAG}\n"));
         }
     }

@@ -99,7 +99,7 @@ pub fn pair(arrangement: &str) -> String {
     let o = rolldyn(&["new", "--preset", "7008C"], None);
     // The pair is its own mounting: the single bearing's lines go; each
     // ring keeps the 0.5 kg of Deng et al. 2022's case (examples/seed001).
-    let bearing = rolldyn_case::mounting::without_mounting(&stdout(&o))
+    let bearing = rolldyn_case::presets::without_mounting(&stdout(&o))
         .replace("[inner_ring]\n", "[inner_ring]\nmass = \"0.5 kg\"\n");
     format!("{bearing}\n[arrangement]\n{arrangement}\n")
 }
