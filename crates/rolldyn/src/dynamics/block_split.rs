@@ -111,8 +111,7 @@ impl BlockSplit for BearingModel {
         }
         if state < l.spin() {
             return match state - l.ring() {
-                0 | 3 | 4 if p.planar => None,
-                3 | 4 if p.inner_ring_tilt_held => None,
+                k if p.inner_ring_state_frozen(k) => None,
                 k @ 0..=4 => Some(l.ring() + k + 5),
                 _ => None,
             };
@@ -258,9 +257,7 @@ impl BlockSplit for PartOf<'_> {
             return p.planar && matches!(k, 0 | 3 | 7 | 8);
         }
         if state < l.outer() {
-            let k = state - l.ring();
-            return (p.planar && matches!(k, 0 | 3 | 4 | 5 | 8 | 9))
-                || (p.inner_ring_tilt_held && matches!(k, 3 | 4 | 8 | 9));
+            return p.inner_ring_state_frozen(state - l.ring());
         }
         if state < l.slide() {
             return p.outer_ring.is_none();

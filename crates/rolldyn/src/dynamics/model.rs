@@ -350,15 +350,8 @@ impl BearingModel {
         dy[dr + 7] = (ring_force.z + loads.force[2] + fz) / mi - g;
         dy[dr + 8] = (ring_moment.y + loads.moment[0]) / p.inner_ring_tilt_inertia;
         dy[dr + 9] = (ring_moment.z + loads.moment[1]) / p.inner_ring_tilt_inertia;
-        if p.planar {
-            for k in [0, 3, 4, 5, 8, 9] {
-                dy[dr + k] = 0.0;
-            }
-        }
-        if p.inner_ring_tilt_held {
-            for k in [3, 4, 8, 9] {
-                dy[dr + k] = 0.0;
-            }
+        for k in (0..10).filter(|&k| p.inner_ring_state_frozen(k)) {
+            dy[dr + k] = 0.0;
         }
         // Tabulated loads: the load potential −F(t)·x changes explicitly
         // with time; that change is work of the external loads.

@@ -88,6 +88,14 @@ pub struct DynamicsParameters {
 }
 
 impl DynamicsParameters {
+    /// Whether the inner ring's state `k` (0–4: x, y, z, θ_y, θ_z; 5–9
+    /// their rates) is frozen: the axial coordinate and the tilts in planar
+    /// mode, the tilts when they are held.
+    pub fn inner_ring_state_frozen(&self, k: usize) -> bool {
+        (self.planar && matches!(k, 0 | 3 | 4 | 5 | 8 | 9))
+            || (self.inner_ring_tilt_held && matches!(k, 3 | 4 | 8 | 9))
+    }
+
     /// The parameters of a bearing whose inner ring (with what turns with
     /// it) has mass `inner_ring_mass` \[kg\] and transverse moment of
     /// inertia `inner_ring_tilt_inertia` \[kg·m²\], with `cage`; the rest at
