@@ -17,6 +17,8 @@ output that script reads).
     cargo build --release
     RAYON_NUM_THREADS=1 python3 scripts/work-precision.py [--cases 6304,default] [--exudyn] \\
         [--figure docs/figures/work-precision.png]
+    python3 scripts/work-precision.py --defaults-only --reference-integrator auto \\
+        --cases "6205 outer pit,6205 inner pit,6205 ball pit"
 
 Prints a Markdown table per case. About 10 minutes for the 6304 and the
 default case (0.2 s each); Exudyn adds about as much.
@@ -44,10 +46,23 @@ CASES = {
         "--set", 'surface.outer.spall=[{ position = "270 deg", length = "0.533 mm", depth = "0.28 mm" }]',
         "--set", "operating.force_z=1 kN"]),
 }
+# The fault matrix's pits (D_w/15 long, D_w/28 deep, at the load zone's
+# centre) on the mounted 6205 under 1 kN at 1772 rpm, 0.2 s: whether the
+# defaults converge where users look (docs/validation.md, "Fault signatures
+# at defaults").
+PIT = 'position = "90 deg", length = "0.5293 mm", depth = "0.2836 mm"'
+for fault, key in [("outer", "surface.outer.spall"), ("inner", "surface.inner.spall"),
+                   ("ball", "surface.balls.spall")]:
+    ball = "ball = 0, " if fault == "ball" else ""
+    CASES[f"6205 {fault} pit"] = (["new", "--preset", "6205"], [
+        "--duration", "0.2 s", "--speed", "1772 rpm",
+        "--set", f"{key}=[{{ {ball}{PIT} }}]",
+        "--set", "operating.force_z=1 kN"])
 
 
-def outputs(summary):
-    """The outputs users read, by name."""
+def outputs(summary, all_outputs=False):
+    """The outputs users read, by name; with all_outputs also the largest
+    outer load, the housing sensor's RMS and peak and every envelope line."""
     out = {
         "cage speed": summary["mean_cage_speed_rpm"],
         "mean inner load": summary["mean_load_inner_n"],
@@ -55,14 +70,19 @@ def outputs(summary):
         "friction power": summary["mean_power_loss_w"],
         "velocity RMS": summary["inner_ring_velocity_rms_z_mm_s"],
     }
+    if all_outputs:
+        out["largest outer load"] = summary["max_load_outer_n"]
+        if summary.get("sensor"):
+            out["sensor RMS"] = summary["sensor"]["rms_m_s2"]
+            out["sensor peak"] = summary["sensor"]["peak_m_s2"]
     lines = (summary.get("envelope_lines") or {}).get("lines") or []
     for line in lines:
-        if line["name"] == "BPFO":
-            out["BPFO line"] = line["amplitude_m_s2"]
+        if all_outputs or line["name"] == "BPFO":
+            out[f"{line['name']} line"] = line["amplitude_m_s2"]
     return out
 
 
-def run(exe, text, extra, integrator, rtol):
+def run(exe, text, extra, integrator, rtol, all_outputs=False):
     """One run; integrator None: the case's own settings (its defaults)."""
     with tempfile.TemporaryDirectory() as out:
         sets = [] if integrator is None else [
@@ -74,6 +94,8 @@ def run(exe, text, extra, integrator, rtol):
                               capture_output=True, text=True)
         wall = time.perf_counter() - start
         if done.returncode != 0:
+            print(f"run failed ({' '.join(extra + sets)}): {done.stderr.strip()[-400:]}",
+                  file=sys.stderr)
             return None
         with open(os.path.join(out, "summary.json")) as f:
             summary = json.load(f)
@@ -81,7 +103,7 @@ def run(exe, text, extra, integrator, rtol):
         "wall": wall,
         "steps": summary["steps"],
         "rhs": summary["rhs_evaluations"] + summary["jacobian_rhs_evaluations"],
-        "outputs": outputs(summary),
+        "outputs": outputs(summary, all_outputs),
     }
 
 
@@ -114,6 +136,12 @@ def main():
     parser.add_argument("--cases", default="6304,default")
     parser.add_argument("--exudyn", action="store_true")
     parser.add_argument("--figure")
+    parser.add_argument("--reference-integrator", default="ros34pw2",
+                        help="the reference's integrator (ROS34PW2 at 1e-6 collapses its step at "
+                             "a pit's edge in the load zone: auto there)")
+    parser.add_argument("--defaults-only", action="store_true",
+                        help="only the case's defaults against the reference, with every output "
+                             "(largest outer load, the sensor, every envelope line)")
     parser.add_argument("--cost", choices=["wall", "rhs"], default="rhs",
                         help="the figure's cost axis: wall time or right-hand sides (default; "
                              "independent of the machine's load)")
@@ -133,10 +161,11 @@ def main():
         for name in args.cases.split(","):
             new, extra = CASES[name]
             text = subprocess.run([args.rolldyn, *new], check=True, capture_output=True, text=True).stdout
-            reference = run(args.rolldyn, text, extra, "ros34pw2", REFERENCE)
-            defaults = run(args.rolldyn, text, extra, None, None)
+            reference = run(args.rolldyn, text, extra, args.reference_integrator, REFERENCE,
+                            args.defaults_only)
+            defaults = run(args.rolldyn, text, extra, None, None, args.defaults_only)
             rows = []
-            for integrator in INTEGRATORS:
+            for integrator in [] if args.defaults_only else INTEGRATORS:
                 for rtol in TOLERANCES:
                     r = run(args.rolldyn, text, extra, integrator, rtol)
                     if r is not None:
@@ -144,7 +173,8 @@ def main():
             results[name] = (reference, rows, defaults)
         exudyn = exudyn_points() if args.exudyn else None
     for name, (reference, rows, defaults) in results.items():
-        print(f"\n{name}: reference ROS34PW2 at rtol {REFERENCE:g} ({reference['wall']:.1f} s, "
+        print(f"\n{name}: reference {args.reference_integrator} at rtol {REFERENCE:g} "
+              f"({reference['wall']:.1f} s, "
               f"{reference['steps']} steps)")
         names = list(reference["outputs"])
         print("| integrator | rtol | wall [s] | steps | RHS | " + " | ".join(names) + " |")

@@ -4,7 +4,8 @@
 //!
 //! Each bearing is mounted as on a machine (docs/dynamics.md, "Mounting"):
 //! its inner ring carries a shaft share, the shaft's other bearing holds
-//! the ring's tilt, gravity acts. Those lines end in [`MOUNTING_TAG`];
+//! the ring's tilt, gravity acts, and an accelerometer on the housing
+//! records what a test rig's would (`[sensor]`). Those lines end in [`MOUNTING_TAG`];
 //! [`Preset::without_mounting`] gives the bearing as its source paper
 //! models it, free ring and all (the examples reproduce the papers so).
 
@@ -41,7 +42,7 @@ pub fn without_mounting(text: &str) -> String {
 }
 
 /// The `[assumptions]` entries of a case file's mounting, key and text.
-pub const MOUNTING_ASSUMPTIONS: [(&str, &str); 3] = [
+pub const MOUNTING_ASSUMPTIONS: [(&str, &str); 4] = [
     (
         "inner_ring.mass",
         "mounting: the ring with half a solid steel shaft of the bore diameter, 10 bores long, that turns with it (docs/dynamics.md, \\\"Mounting\\\"); write your shaft's share when you know it",
@@ -53,6 +54,10 @@ pub const MOUNTING_ASSUMPTIONS: [(&str, &str); 3] = [
     (
         "model.gravity",
         "mounting: a horizontal shaft; the weights of the shaft share, the balls and the cage load the bearing",
+    ),
+    (
+        "sensor",
+        "mounting: an accelerometer on top of the housing (12 o'clock) with the [sensor] defaults (docs/signal.md): one housing mode at 3 kHz, damping ratio 0.05, 1 kg, driven one way by the force into the housing; write your rig's modes (an impact hammer test gives them) when you know them",
     ),
 ];
 
@@ -135,8 +140,8 @@ mod tests {
     /// shaft, planar) and the catalogue's cases are mounted by the rule of
     /// docs/dynamics.md: its
     /// stated inner-ring mass is the rule's to the three digits written,
-    /// its tilts are held and gravity acts; without its mounting it parses
-    /// with the tilts free.
+    /// its tilts are held, gravity acts and a housing sensor records;
+    /// without its mounting it parses with the tilts free and no sensor.
     #[test]
     fn presets_and_catalogue_cases_are_mounted_by_the_rule() {
         let catalogue: Vec<(String, String)> = ["6308", "7206B"]
@@ -169,12 +174,14 @@ mod tests {
             );
             assert_eq!(case.prescribed_displacement[3..], [Some(0.0), Some(0.0)]);
             assert!(case.gravity, "{name}");
+            assert!(case.sensor.is_some(), "{name}: no housing sensor");
             let bare_text = without_mounting(&text);
             assert!(!bare_text.contains(MOUNTING_TAG));
             assert_eq!(bare_text.lines().count(), text.lines().count());
             let bare = load_case(&name, &bare_text, &[]).unwrap();
             assert_eq!(bare.prescribed_displacement, [None; 5], "{name}");
             assert!(!bare.gravity, "{name}");
+            assert!(bare.sensor.is_none(), "{name}");
             for (key, assumption) in MOUNTING_ASSUMPTIONS {
                 let line = format!("\"{key}\" = \"{assumption}\"  {MOUNTING_TAG}");
                 assert!(text.contains(&line), "{name}: {line}");

@@ -1,6 +1,7 @@
 //! The mounting as `rolldyn check` reports it (docs/dynamics.md,
 //! "Mounting"): masses, the outer ring's mode on its housing, the bearing's
-//! radial stiffness and the radial chain's frequencies.
+//! radial stiffness, the radial chain's frequencies and the housing modes
+//! the `[sensor]` sees.
 
 use rolldyn_case::Case;
 use serde::Serialize;
@@ -31,6 +32,19 @@ pub struct MountingReport {
     /// The inner ring's tilts held (`operating.fixed_tilt`: the shaft's
     /// other bearing holds them).
     pub inner_ring_tilt_held: bool,
+    /// The housing's modes the `[sensor]` sees (empty without one).
+    pub sensor_modes: Vec<SensorModeReport>,
+}
+
+/// One housing mode of the `[sensor]` (docs/signal.md, "Sensor chain").
+#[derive(Serialize)]
+pub struct SensorModeReport {
+    /// Natural frequency \[Hz\].
+    pub frequency_hz: f64,
+    /// Damping ratio.
+    pub damping_ratio: f64,
+    /// Modal mass at the seat \[kg\].
+    pub mass_kg: f64,
 }
 
 impl MountingReport {
@@ -75,6 +89,16 @@ impl MountingReport {
             }),
             gravity: case.gravity,
             inner_ring_tilt_held: p.inner_ring_tilt_held,
+            sensor_modes: case
+                .sensor
+                .iter()
+                .flat_map(|s| &s.modes)
+                .map(|m| SensorModeReport {
+                    frequency_hz: m.frequency,
+                    damping_ratio: m.damping_ratio,
+                    mass_kg: m.mass,
+                })
+                .collect(),
         })
     }
 
@@ -134,6 +158,13 @@ impl MountingReport {
             let _ = writeln!(
                 out,
                 "  radial chain rotor–bearing–housing  {lo:.1} Hz, {hi:.1} Hz"
+            );
+        }
+        for m in &self.sensor_modes {
+            let _ = writeln!(
+                out,
+                "  housing mode at the sensor          {:.1} Hz, damping ratio {:.3}, {:.3} kg (one way: [sensor])",
+                m.frequency_hz, m.damping_ratio, m.mass_kg
             );
         }
     }

@@ -384,8 +384,15 @@ fn compared(summary: &Summary) -> Vec<(&'static str, f64, f64, f64)> {
         out.push((key, value, vibration, noise_mm_s.max(zero)));
     }
     // Envelope lines of a run with a spall; a line below a tenth of the
-    // strongest is the spectrum's floor, not a signature.
-    if let Some(envelope) = &summary.surface_lines.envelope_lines {
+    // strongest is the spectrum's floor, not a signature. A smooth
+    // bearing's lines (a run with a sensor) are all floor: the sensor's
+    // noise and the integration's.
+    if let Some(envelope) = summary
+        .surface_lines
+        .envelope_lines
+        .as_ref()
+        .filter(|_| summary.surface_lines.spall)
+    {
         let strongest = envelope
             .lines
             .iter()

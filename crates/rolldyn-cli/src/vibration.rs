@@ -255,6 +255,10 @@ pub struct SurfaceLines {
     /// Amplitude spectrum at the lines the case's waviness excites (runs
     /// with waviness; null otherwise).
     pub waviness_lines: Option<WavinessLines>,
+    /// The run has a spall: its envelope lines are a defect's signature,
+    /// not the floor of a smooth bearing's record.
+    #[serde(skip)]
+    pub spall: bool,
 }
 
 /// [`envelope_lines`] for a surface with a spall or a run with a sensor,
@@ -265,12 +269,13 @@ pub fn surface_lines(
     ball_count: usize,
     surface: &SurfaceModel,
 ) -> SurfaceLines {
+    let spall = surface.spalls().next().is_some();
     SurfaceLines {
-        envelope_lines: (surface.spalls().next().is_some()
-            || series.column(SENSOR_CHANNEL).is_some())
-        .then(|| envelope_lines(series, 0, characteristic))
-        .flatten(),
+        envelope_lines: (spall || series.column(SENSOR_CHANNEL).is_some())
+            .then(|| envelope_lines(series, 0, characteristic))
+            .flatten(),
         waviness_lines: waviness_lines(series, 0, characteristic, ball_count, surface),
+        spall,
     }
 }
 

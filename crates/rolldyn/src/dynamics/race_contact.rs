@@ -26,16 +26,18 @@
 //! opposite; 2 F_R u in pure rolling is dissipated.
 
 use super::elements::Elements;
-use super::film::FilmWork;
+use super::film::{FilmApproach, FilmWork};
 use super::motion::{BallMotion, RingMotion};
 use super::surface_contact::SurfaceEffect;
 use crate::contact::normal_law::{ContactEpisode, ContactState, NormalLaw};
-use crate::contact::{ContactTable, TorusContact};
+use crate::contact::{ContactTable, HertzCoefficients, HertzResult, TorusContact};
 use crate::lubrication::rolling_resistance::{RollingContact, RollingResistance};
-use crate::lubrication::{FilmConditions, Supply, contact_film};
+use crate::lubrication::{ContactFilm, FilmConditions, Supply, contact_film};
 use crate::power::ContactLosses;
 use crate::traction::fastsim::MapCell;
-use crate::traction::{ContactConditions, ContactKinematics, ContactPatch, Creep, TractionModel};
+use crate::traction::{
+    ContactConditions, ContactKinematics, ContactPatch, Creep, TractionModel, TractionResult,
+};
 use nalgebra::Vector3;
 
 /// Rolling speed over which the hysteresis couple ramps up from zero
@@ -117,6 +119,78 @@ pub(super) struct RaceContact {
     pub(super) output: ContactOutput,
 }
 
+/// The normal part of one ball–raceway contact (`Elements::race_normal`).
+struct NormalContact {
+    /// Geometry; the penetration includes the surfaces' Δδ (with the film
+    /// in the approach, the elastic approach).
+    geometry: TorusContact,
+    /// The surfaces' effect per unit load.
+    surface: SurfaceEffect,
+    penetration_rate: f64,
+    /// Hertz constants at the contact angle.
+    hertz: HertzCoefficients,
+    /// Entrainment velocity u and its magnitude (zero where not needed).
+    entrainment: Vector3<f64>,
+    entrainment_speed: f64,
+    /// The film in the approach (None without it).
+    approach: Option<FilmApproach>,
+    /// Normal load Q \[N\].
+    load: f64,
+}
+
+impl NormalContact {
+    /// The normal force alone (episode bookkeeping): no ellipse, film or
+    /// traction.
+    fn alone(self) -> RaceContact {
+        RaceContact {
+            surface: self.surface.scaled(self.load),
+            penetration_rate: self.penetration_rate,
+            load: self.load,
+            dissipation: 0.0,
+            film_work: None,
+            losses: ContactLosses::default(),
+            force: -self.load * self.geometry.normal,
+            moment: Vector3::zeros(),
+            couple: Vector3::zeros(),
+            output: ContactOutput::default(),
+            geometry: self.geometry,
+        }
+    }
+}
+
+impl ContactOutput {
+    /// The output of a contact of `geometry` in motion `kinematics` at
+    /// rolling rate `rolling_rate` about the rolling axis.
+    fn of(
+        geometry: &TorusContact,
+        kinematics: &ContactKinematics,
+        rolling_rate: f64,
+        asperity_share: f64,
+        creep: Option<Creep>,
+        losses: ContactLosses,
+    ) -> Self {
+        let (slip, n) = (kinematics.slip, kinematics.patch.normal);
+        let u = kinematics.conditions.entrainment_speed;
+        let slip_speed = (slip - slip.dot(&n) * n).norm();
+        Self {
+            load: kinematics.patch.load,
+            angle: geometry.contact_angle,
+            slip_speed,
+            entrainment_speed: u,
+            slide_to_roll: if u > 0.0 { slip_speed / u } else { 0.0 },
+            spin_to_roll: if rolling_rate != 0.0 {
+                kinematics.relative_spin.dot(&n) / rolling_rate.abs()
+            } else {
+                0.0
+            },
+            film: kinematics.conditions.film,
+            asperity_share,
+            creep,
+            losses,
+        }
+    }
+}
+
 impl Elements {
     /// Contact geometry of a ball with a ring, the penetration including the
     /// surfaces (docs/model.md §2.1, §6), and the surfaces' effect per unit load;
@@ -147,16 +221,18 @@ impl Elements {
         Some((geometry, surface))
     }
 
-    pub(super) fn race_contact(
+    /// The normal part of a ball–raceway contact: its geometry with the
+    /// surfaces, the film in the approach and the normal law's load; None
+    /// when open. The entrainment is computed only where it is used
+    /// (`with_output`, the film, the traction curve, the resistances).
+    fn race_normal(
         &self,
         ring: &RingMotion,
         table: &ContactTable,
         episode: &ContactEpisode,
         ball: &BallMotion,
-        want: Want,
-    ) -> Option<RaceContact> {
-        let with_output = matches!(want, Want::Output | Want::Map(_));
-        let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
+        with_output: bool,
+    ) -> Option<NormalContact> {
         let films = self.layout.film_work;
         let (mut geometry, surface) = if films {
             self.race_geometry_any(ring, ball)?
@@ -168,20 +244,15 @@ impl Elements {
             + ring
                 .omega_frame
                 .cross(&(geometry.groove_centre - ring.centre));
-        let penetration_rate = (v - groove_velocity).dot(&n) + surface.approach_rate;
+        let penetration_rate = (ball.velocity - groove_velocity).dot(&n) + surface.approach_rate;
         let hertz = table.at(geometry.contact_angle);
-        let stiffness = hertz.stiffness;
-        let point = geometry.contact_point;
-        // Computed only where used (film, traction curve, hysteresis, output).
-        let hysteresis = self.params.rolling_hysteresis > 0.0;
-        let rolling = self.params.rolling_resistance.as_ref();
-        let (entrainment, u) = if with_output
-            || hysteresis
+        let (entrainment, entrainment_speed) = if with_output
+            || self.params.rolling_hysteresis > 0.0
             || films
-            || rolling.is_some()
+            || self.params.rolling_resistance.is_some()
             || self.params.traction.needs_entrainment()
         {
-            let e = Self::entrainment(ring, ball, &point, &n);
+            let e = Self::entrainment(ring, ball, &geometry.contact_point, &n);
             (e, e.norm())
         } else {
             (Vector3::zeros(), 0.0)
@@ -189,75 +260,67 @@ impl Elements {
         // Film in the approach (dynamics::film): the contact is closed while
         // δ + h > 0 and its elastic approach is δ_el = δ + h(Q).
         let approach = if films {
-            let a = self.film_approach(ring, &hertz, &geometry, u)?;
+            let a = self.film_approach(ring, &hertz, &geometry, entrainment_speed)?;
             geometry.penetration = a.elastic_approach;
             Some(a)
         } else {
             None
         };
         let state = ContactState {
-            stiffness,
+            stiffness: hertz.stiffness,
             penetration: geometry.penetration,
             penetration_rate,
             impact_speed: episode.impact_speed(penetration_rate, self.params.impact_speed_floor),
             effective_mass: self.ball_mass,
         };
         let load = self.params.normal_law.force(&state);
+        Some(NormalContact {
+            geometry,
+            surface,
+            penetration_rate,
+            hertz,
+            entrainment,
+            entrainment_speed,
+            approach,
+            load,
+        })
+    }
+
+    pub(super) fn race_contact(
+        &self,
+        ring: &RingMotion,
+        table: &ContactTable,
+        episode: &ContactEpisode,
+        ball: &BallMotion,
+        want: Want,
+    ) -> Option<RaceContact> {
+        let with_output = matches!(want, Want::Output | Want::Map(_));
+        let normal = self.race_normal(ring, table, episode, ball, with_output)?;
         if let Want::Penetration = want {
-            // The normal force alone: no ellipse, film or traction.
-            return Some(RaceContact {
-                geometry,
-                surface: surface.scaled(load),
-                penetration_rate,
-                load,
-                dissipation: 0.0,
-                film_work: None,
-                losses: ContactLosses::default(),
-                force: -load * n,
-                moment: Vector3::zeros(),
-                couple: Vector3::zeros(),
-                output: ContactOutput::default(),
-            });
+            return Some(normal.alone());
         }
-        let ball_surface = v + w.cross(&(point - q));
-        let ring_surface = ring.velocity + ring.omega.cross(&(point - ring.centre));
-        let slip = ball_surface - ring_surface;
-        // Rolling direction: the azimuthal direction at P, tangent to the contact.
-        let azimuthal = Vector3::new(0.0, -point.z, point.y);
-        let along = azimuthal - azimuthal.dot(&n) * n;
-        let rolling_direction = if along.norm() > 0.0 {
-            along.normalize()
-        } else {
-            n.cross(&Vector3::x()).normalize()
-        };
+        let NormalContact {
+            geometry,
+            surface,
+            penetration_rate,
+            hertz,
+            entrainment,
+            entrainment_speed: u,
+            approach,
+            load,
+        } = normal;
+        let n = geometry.normal;
+        let q = &ball.centre;
+        let point = geometry.contact_point;
         let ellipse = hertz.at_load(load);
-        // Film (docs/model.md §4): h(Q) of the elastic load with the film in the
-        // approach, else the steady Hamrock–Dowson film at the load; both
-        // starved by the ring's supply.
-        let steady = match &approach {
-            Some(_) => None,
-            None => self.steady_film(
-                ring,
-                &hertz,
-                geometry.contact_angle,
-                u,
-                load,
-                ellipse.semi_minor,
-            ),
-        };
-        let film = match &approach {
-            Some(a) => a.film,
-            None => steady.map_or(0.0, |f| f.central),
-        };
-        // Mixed lubrication (dynamics::mixed): the asperities' share.
-        let asperity_share = self.asperity_share(
+        let (steady, film, asperity_share) = self.race_film(
             ring,
             &hertz,
             geometry.contact_angle,
             u,
             load,
             &ellipse,
-            steady.as_ref(),
+            approach.as_ref(),
         );
         let film_work = approach.map(|a| FilmWork {
             law: a.law,
@@ -270,44 +333,10 @@ impl Elements {
             },
             point,
         });
-        let rg = ring.raceway.groove_radius;
-        let rb = 0.5 * self.geometry.ball_diameter;
-        let patch = ContactPatch {
-            point,
-            normal: n,
-            rolling_direction,
-            semi_major: ellipse.semi_major,
-            semi_minor: ellipse.semi_minor,
-            load,
-            deformed_radius: 2.0 * rg * rb / (rg + rb),
-        };
-        let relative_spin = w - ring.omega;
-        // `None`: only the penetration is wanted (episode bookkeeping).
-        let conditions = ContactConditions {
-            film,
-            entrainment_speed: u,
-            rolling_velocity: entrainment.dot(&rolling_direction),
-        };
-        let model = &self.params.traction;
-        let kinematics = ContactKinematics {
-            patch,
-            ball_centre: *q,
-            slip,
-            relative_spin,
-            conditions,
-        };
-        let traction = match (want, model) {
-            (Want::Map(map), TractionModel::Fastsim(f)) => f.evaluate_mapped(&kinematics, map),
-            _ => match &self.params.mixed_lubrication {
-                Some(mixed) => model.evaluate_blended(
-                    &mixed.boundary,
-                    asperity_share,
-                    &self.traction_grid,
-                    &kinematics,
-                ),
-                None => model.evaluate(&self.traction_grid, &kinematics),
-            },
-        };
+        let kinematics =
+            self.race_kinematics(ring, ball, &geometry, &ellipse, load, &entrainment, film);
+        let traction = self.race_traction(want, &kinematics, asperity_share);
+        let (slip, relative_spin) = (kinematics.slip, kinematics.relative_spin);
         // Rolling axis e_a = n × û and the rolling rate about it.
         let rolling_axis = if u > 0.0 {
             n.cross(&(entrainment / u))
@@ -318,30 +347,16 @@ impl Elements {
         let mut moment = traction.moment;
         let mut couple = traction.couple;
         let mut dissipation = traction.dissipation;
-        // By mechanism (crate::power::dissipation): rigid sliding along and
-        // across the rolling direction, spin about n, and the rest of the
-        // traction's power (differential sliding).
-        let across = n.cross(&rolling_direction);
-        let mut losses = ContactLosses {
-            rolling_sliding: -traction.force.dot(&rolling_direction) * slip.dot(&rolling_direction),
-            transverse_sliding: -traction.force.dot(&across) * slip.dot(&across),
-            spin: -traction.couple.dot(&n) * relative_spin.dot(&n),
-            ..ContactLosses::default()
-        };
-        losses.differential_sliding =
-            traction.dissipation - losses.rolling_sliding - losses.transverse_sliding - losses.spin;
-        if hysteresis {
-            let rolling_speed = 0.5 * self.geometry.ball_diameter * rolling_rate;
-            let ramp = (rolling_speed / HYSTERESIS_RAMP_SPEED).clamp(-1.0, 1.0);
-            let m_h = -(0.1875 * self.params.rolling_hysteresis * ellipse.semi_minor * load * ramp)
-                * rolling_axis;
+        let mut losses = traction_losses(&traction, &kinematics);
+        if self.params.rolling_hysteresis > 0.0 {
+            let m_h = self.hysteresis_couple(rolling_rate, &rolling_axis, ellipse.semi_minor, load);
             moment += m_h;
             couple += m_h;
             dissipation -= m_h.dot(&relative_spin);
             losses.hysteresis = -m_h.dot(&relative_spin);
         }
         let mut force = -load * n + traction.force;
-        if let Some(rolling) = rolling.filter(|_| u > 0.0) {
+        if let Some(rolling) = self.params.rolling_resistance.as_ref().filter(|_| u > 0.0) {
             let (f_r, c_r) = self.rolling_resistance(
                 rolling,
                 ring,
@@ -360,27 +375,18 @@ impl Elements {
             dissipation += power;
             losses.rolling_resistance = power;
         }
-        let elastic = stiffness * geometry.penetration * geometry.penetration.sqrt();
+        let elastic = hertz.stiffness * geometry.penetration * geometry.penetration.sqrt();
         dissipation += (load - elastic) * penetration_rate;
         losses.damping = (load - elastic) * penetration_rate;
         let output = if with_output {
-            let slip_speed = (slip - slip.dot(&n) * n).norm();
-            ContactOutput {
-                load,
-                angle: geometry.contact_angle,
-                slip_speed,
-                entrainment_speed: u,
-                slide_to_roll: if u > 0.0 { slip_speed / u } else { 0.0 },
-                spin_to_roll: if rolling_rate != 0.0 {
-                    relative_spin.dot(&n) / rolling_rate.abs()
-                } else {
-                    0.0
-                },
-                film,
+            ContactOutput::of(
+                &geometry,
+                &kinematics,
+                rolling_rate,
                 asperity_share,
-                creep: traction.creep,
+                traction.creep,
                 losses,
-            }
+            )
         } else {
             ContactOutput::default()
         };
@@ -397,6 +403,137 @@ impl Elements {
             couple,
             output,
         })
+    }
+
+    /// The contact's film (docs/model.md §4): h(Q) of the elastic load with
+    /// the film in the approach (`approach`), else the steady
+    /// Hamrock–Dowson film at the load (returned too, for the rolling
+    /// resistance), both starved by the ring's supply; and the asperities'
+    /// share of the load (dynamics::mixed).
+    #[allow(clippy::too_many_arguments)]
+    fn race_film(
+        &self,
+        ring: &RingMotion,
+        hertz: &HertzCoefficients,
+        contact_angle: f64,
+        entrainment_speed: f64,
+        load: f64,
+        ellipse: &HertzResult,
+        approach: Option<&FilmApproach>,
+    ) -> (Option<ContactFilm>, f64, f64) {
+        let steady = match approach {
+            Some(_) => None,
+            None => self.steady_film(
+                ring,
+                hertz,
+                contact_angle,
+                entrainment_speed,
+                load,
+                ellipse.semi_minor,
+            ),
+        };
+        let film = match approach {
+            Some(a) => a.film,
+            None => steady.map_or(0.0, |f| f.central),
+        };
+        let asperity_share = self.asperity_share(
+            ring,
+            hertz,
+            contact_angle,
+            entrainment_speed,
+            load,
+            ellipse,
+            steady.as_ref(),
+        );
+        (steady, film, asperity_share)
+    }
+
+    /// The contact's kinematics for the traction (docs/model.md §3): the
+    /// slip of ball material over ring material at P, the relative spin,
+    /// the rolling direction (the azimuthal direction at P, tangent to
+    /// the contact) and the patch at load Q.
+    #[allow(clippy::too_many_arguments)]
+    fn race_kinematics(
+        &self,
+        ring: &RingMotion,
+        ball: &BallMotion,
+        geometry: &TorusContact,
+        ellipse: &HertzResult,
+        load: f64,
+        entrainment: &Vector3<f64>,
+        film: f64,
+    ) -> ContactKinematics {
+        let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
+        let (point, n) = (geometry.contact_point, geometry.normal);
+        let ball_surface = v + w.cross(&(point - q));
+        let ring_surface = ring.velocity + ring.omega.cross(&(point - ring.centre));
+        let slip = ball_surface - ring_surface;
+        let azimuthal = Vector3::new(0.0, -point.z, point.y);
+        let along = azimuthal - azimuthal.dot(&n) * n;
+        let rolling_direction = if along.norm() > 0.0 {
+            along.normalize()
+        } else {
+            n.cross(&Vector3::x()).normalize()
+        };
+        let rg = ring.raceway.groove_radius;
+        let rb = 0.5 * self.geometry.ball_diameter;
+        ContactKinematics {
+            patch: ContactPatch {
+                point,
+                normal: n,
+                rolling_direction,
+                semi_major: ellipse.semi_major,
+                semi_minor: ellipse.semi_minor,
+                load,
+                deformed_radius: 2.0 * rg * rb / (rg + rb),
+            },
+            ball_centre: *q,
+            slip,
+            relative_spin: w - ring.omega,
+            conditions: ContactConditions {
+                film,
+                entrainment_speed: entrainment.norm(),
+                rolling_velocity: entrainment.dot(&rolling_direction),
+            },
+        }
+    }
+
+    /// The traction model's forces (blended with the boundary friction by
+    /// the asperities' share under mixed lubrication), or FASTSIM's with
+    /// its stick/slip map for [`Want::Map`].
+    fn race_traction(
+        &self,
+        want: Want,
+        kinematics: &ContactKinematics,
+        asperity_share: f64,
+    ) -> TractionResult {
+        let model = &self.params.traction;
+        match (want, model) {
+            (Want::Map(map), TractionModel::Fastsim(f)) => f.evaluate_mapped(kinematics, map),
+            _ => match &self.params.mixed_lubrication {
+                Some(mixed) => model.evaluate_blended(
+                    &mixed.boundary,
+                    asperity_share,
+                    &self.traction_grid,
+                    kinematics,
+                ),
+                None => model.evaluate(&self.traction_grid, kinematics),
+            },
+        }
+    }
+
+    /// The hysteresis couple on the ball, M_h = −(3/16) α_h b Q e_a, ramped
+    /// over [`HYSTERESIS_RAMP_SPEED`] of rolling speed (module doc).
+    fn hysteresis_couple(
+        &self,
+        rolling_rate: f64,
+        rolling_axis: &Vector3<f64>,
+        semi_minor: f64,
+        load: f64,
+    ) -> Vector3<f64> {
+        let rolling_speed = 0.5 * self.geometry.ball_diameter * rolling_rate;
+        let ramp = (rolling_speed / HYSTERESIS_RAMP_SPEED).clamp(-1.0, 1.0);
+        -(0.1875 * self.params.rolling_hysteresis * semi_minor * load * ramp) * rolling_axis
     }
 
     /// The EHL rolling resistance's force at the contact point and couple
@@ -459,4 +596,25 @@ impl Elements {
             rolling_axis,
         )
     }
+}
+
+/// The traction's power by mechanism (crate::power::dissipation): rigid
+/// sliding along and across the rolling direction, spin about n, and the
+/// rest of the traction's power (differential sliding).
+fn traction_losses(traction: &TractionResult, kinematics: &ContactKinematics) -> ContactLosses {
+    let (n, rolling_direction) = (
+        &kinematics.patch.normal,
+        &kinematics.patch.rolling_direction,
+    );
+    let (slip, relative_spin) = (&kinematics.slip, &kinematics.relative_spin);
+    let across = n.cross(rolling_direction);
+    let mut losses = ContactLosses {
+        rolling_sliding: -traction.force.dot(rolling_direction) * slip.dot(rolling_direction),
+        transverse_sliding: -traction.force.dot(&across) * slip.dot(&across),
+        spin: -traction.couple.dot(n) * relative_spin.dot(n),
+        ..ContactLosses::default()
+    };
+    losses.differential_sliding =
+        traction.dissipation - losses.rolling_sliding - losses.transverse_sliding - losses.spin;
+    losses
 }

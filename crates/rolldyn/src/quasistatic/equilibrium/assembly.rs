@@ -4,7 +4,7 @@
 //! ball's load on the inner ring with its derivatives; summed over the
 //! balls into the bordered system Newton solves.
 
-use super::race_drive::{kinematic_inner, race_drive};
+use super::race_drive::{RaceDrive, kinematic_inner, race_drive};
 use super::{Assembly, Matrix5, QuasiStaticSolver, Row3, Row5, Setup, State, Vector5};
 use crate::geometry::RingKind;
 use crate::quasistatic::ring_contact::{Matrix3x5, RingContactEval, RingDisplacement};
@@ -99,26 +99,14 @@ impl QuasiStaticSolver {
         // its contact is closed, → 0 as it opens.
         let drive = race_drive(&inner, self.drive_reference(), setup.options.race_drive);
         let inner_k = kinematic_inner(&inner, &outer, &drive);
-        // Friction shares (λ_i, λ_o) of the gyroscopic moment and the
-        // weights of the no-spin conditions s_i, s_o: at the controlling
-        // raceway. An inner-controlled ball's share s = t w: faded by the
-        // drive weight w, and blended by `inner_share` t on the way from
-        // outer control (s s_i − (1 − s) s_o: the minus keeps the blend
-        // regular for a loaded ball, whose n_i ≈ −n_o).
-        let t = setup.inner_share;
-        let inner_controlled = control == RingKind::Inner;
-        let share = t * drive.weight;
-        let (lambda_i, lambda_o, spin_i_weight, spin_o_weight) = if inner_controlled {
-            (2.0 * share, 2.0 * (1.0 - t), share, share - 1.0)
-        } else {
-            (0.0, 2.0, 0.0, 1.0)
-        };
-        // Gradients of the inner-control share s = t w.
-        let (dshare_dq, dshare_du) = if inner_controlled {
-            (t * drive.dq, t * drive.du)
-        } else {
-            (Row3::zeros(), Row5::zeros())
-        };
+        let ControlShares {
+            lambda_i,
+            lambda_o,
+            spin_i_weight,
+            spin_o_weight,
+            dshare_dq,
+            dshare_du,
+        } = ControlShares::new(control, setup.inner_share, &drive);
 
         // Normal components and their gradients.
         let nx = |c: &RingContactEval| c.normal.dot(&ex);
@@ -213,65 +201,15 @@ impl QuasiStaticSolver {
         let spin_u: Row5 = (wx - omega_i) * grad_u(&inner, &ex) + wr * grad_u(&inner, &er);
         b.set_row(4, &(spin_i_weight * spin_u + (spin_i + spin_o) * dshare_du));
 
-        // Ring: force and moment of this ball on the inner ring
-        // (physical normal law plus the inner friction force).
-        let (fn_phys, dfn_dq, dfn_du) = if inner.in_contact() {
-            (inner.force, inner.dforce_dball, inner.dforce_dring)
-        } else {
-            (Vector3::zeros(), Matrix3::zeros(), Matrix3x5::zeros())
+        // Ring: force and moment of this ball on the inner ring.
+        let friction = InnerFriction {
+            force: fi,
+            dq: dfric_i_dq,
+            du: dfric_i_du,
+            dwm: lambda_i * inertia * wr / d * tangent(&inner),
+            dwr: lambda_i * inertia * wm / d * tangent(&inner),
         };
-        let f_ring = -(fn_phys + fi);
-        let df_ring_dq = -(dfn_dq + dfric_i_dq);
-        let df_ring_du = -(dfn_du + dfric_i_du);
-        let df_ring_dwm = -(lambda_i * inertia * wr / d) * tangent(&inner);
-        let df_ring_dwr = -(lambda_i * inertia * wm / d) * tangent(&inner);
-        let arm = q - ring.translation;
-        let arm_x = cross_matrix(&arm);
-        let f_x = cross_matrix(&f_ring);
-        let n_x = cross_matrix(&inner.normal);
-        let fi_x = cross_matrix(&fi);
-        // Friction acts at P = q + (D/2) n: extra couple −(D/2) n × f_i.
-        let moment = arm.cross(&f_ring) - half * inner.normal.cross(&fi);
-        let dm_dq =
-            arm_x * df_ring_dq - f_x - half * (n_x * dfric_i_dq - fi_x * inner.dnormal_dball);
-        let mut dm_du = arm_x * df_ring_du - half * (n_x * dfric_i_du - fi_x * inner.dnormal_dring);
-        for k in 0..3 {
-            let col = dm_du.column(k) + f_x.column(k);
-            dm_du.set_column(k, &col);
-        }
-        let dm_dwm =
-            arm_x * df_ring_dwm - half * n_x * (lambda_i * inertia * wr / d * tangent(&inner));
-        let dm_dwr =
-            arm_x * df_ring_dwr - half * n_x * (lambda_i * inertia * wm / d * tangent(&inner));
-        let ring_load = Vector5::new(f_ring.x, f_ring.y, f_ring.z, moment.y, moment.z);
-
-        let mut c = Matrix5::zeros();
-        let fq = df_ring_dq * e;
-        let mq = dm_dq * e;
-        for col in 0..2 {
-            for row in 0..3 {
-                c[(row, col)] = fq[(row, col)];
-            }
-            c[(3, col)] = mq[(1, col)];
-            c[(4, col)] = mq[(2, col)];
-        }
-        for row in 0..3 {
-            c[(row, 2)] = df_ring_dwm[row];
-            c[(row, 4)] = df_ring_dwr[row];
-        }
-        c[(3, 2)] = dm_dwm.y;
-        c[(4, 2)] = dm_dwm.z;
-        c[(3, 4)] = dm_dwr.y;
-        c[(4, 4)] = dm_dwr.z;
-
-        let mut dd = Matrix5::zeros();
-        for col in 0..5 {
-            for row in 0..3 {
-                dd[(row, col)] = df_ring_du[(row, col)];
-            }
-            dd[(3, col)] = dm_du[(1, col)];
-            dd[(4, col)] = dm_du[(2, col)];
-        }
+        let (ring_load, c, dd) = ring_terms(&inner, &friction, q - ring.translation, half, &e);
         let mut speed_derivative = Vector5::zeros();
         speed_derivative[2] = -(r + half * nr(&inner_k));
         speed_derivative[4] = -spin_i_weight * nx(&inner);
@@ -286,6 +224,125 @@ impl QuasiStaticSolver {
             largest_load,
         }
     }
+}
+
+/// Friction shares (λ_i, λ_o) of the gyroscopic moment and the weights of
+/// the no-spin conditions s_i, s_o: at the controlling raceway. An
+/// inner-controlled ball's share s = t w: faded by the drive weight w, and
+/// blended by `inner_share` t on the way from outer control
+/// (s s_i − (1 − s) s_o: the minus keeps the blend regular for a loaded
+/// ball, whose n_i ≈ −n_o); with the gradients of s = t w.
+struct ControlShares {
+    lambda_i: f64,
+    lambda_o: f64,
+    spin_i_weight: f64,
+    spin_o_weight: f64,
+    dshare_dq: Row3,
+    dshare_du: Row5,
+}
+
+impl ControlShares {
+    fn new(control: RingKind, t: f64, drive: &RaceDrive) -> Self {
+        if control == RingKind::Inner {
+            let share = t * drive.weight;
+            Self {
+                lambda_i: 2.0 * share,
+                lambda_o: 2.0 * (1.0 - t),
+                spin_i_weight: share,
+                spin_o_weight: share - 1.0,
+                dshare_dq: t * drive.dq,
+                dshare_du: t * drive.du,
+            }
+        } else {
+            Self {
+                lambda_i: 0.0,
+                lambda_o: 2.0,
+                spin_i_weight: 0.0,
+                spin_o_weight: 1.0,
+                dshare_dq: Row3::zeros(),
+                dshare_du: Row5::zeros(),
+            }
+        }
+    }
+}
+
+/// The inner raceway's gyroscopic friction force f_i on the ball and its
+/// derivatives by the ball's position q, the ring's displacement u and
+/// the ball's ω_m, ω_r.
+struct InnerFriction {
+    force: Vector3<f64>,
+    dq: Matrix3<f64>,
+    du: Matrix3x5,
+    dwm: Vector3<f64>,
+    dwr: Vector3<f64>,
+}
+
+/// Force and moment of one ball on the inner ring (the physical normal
+/// law plus the inner friction force, acting at P = q + (D/2) n: an extra
+/// couple −(D/2) n × f_i) at arm `arm` = q − the ring's translation, and
+/// their derivatives: the load (F_x, F_y, F_z, M_y, M_z), C (by the ball's
+/// x, r, ω_m, ω_x, ω_r through the basis `e`) and D (by the ring's u).
+fn ring_terms(
+    inner: &RingContactEval,
+    friction: &InnerFriction,
+    arm: Vector3<f64>,
+    half: f64,
+    e: &SMatrix<f64, 3, 2>,
+) -> (Vector5, Matrix5, Matrix5) {
+    let (fn_phys, dfn_dq, dfn_du) = if inner.in_contact() {
+        (inner.force, inner.dforce_dball, inner.dforce_dring)
+    } else {
+        (Vector3::zeros(), Matrix3::zeros(), Matrix3x5::zeros())
+    };
+    let fi = friction.force;
+    let f_ring = -(fn_phys + fi);
+    let df_ring_dq = -(dfn_dq + friction.dq);
+    let df_ring_du = -(dfn_du + friction.du);
+    let df_ring_dwm = -friction.dwm;
+    let df_ring_dwr = -friction.dwr;
+    let arm_x = cross_matrix(&arm);
+    let f_x = cross_matrix(&f_ring);
+    let n_x = cross_matrix(&inner.normal);
+    let fi_x = cross_matrix(&fi);
+    let moment = arm.cross(&f_ring) - half * inner.normal.cross(&fi);
+    let dm_dq = arm_x * df_ring_dq - f_x - half * (n_x * friction.dq - fi_x * inner.dnormal_dball);
+    let mut dm_du = arm_x * df_ring_du - half * (n_x * friction.du - fi_x * inner.dnormal_dring);
+    for k in 0..3 {
+        let col = dm_du.column(k) + f_x.column(k);
+        dm_du.set_column(k, &col);
+    }
+    let dm_dwm = arm_x * df_ring_dwm - half * n_x * friction.dwm;
+    let dm_dwr = arm_x * df_ring_dwr - half * n_x * friction.dwr;
+    let ring_load = Vector5::new(f_ring.x, f_ring.y, f_ring.z, moment.y, moment.z);
+
+    let mut c = Matrix5::zeros();
+    let fq = df_ring_dq * e;
+    let mq = dm_dq * e;
+    for col in 0..2 {
+        for row in 0..3 {
+            c[(row, col)] = fq[(row, col)];
+        }
+        c[(3, col)] = mq[(1, col)];
+        c[(4, col)] = mq[(2, col)];
+    }
+    for row in 0..3 {
+        c[(row, 2)] = df_ring_dwm[row];
+        c[(row, 4)] = df_ring_dwr[row];
+    }
+    c[(3, 2)] = dm_dwm.y;
+    c[(4, 2)] = dm_dwm.z;
+    c[(3, 4)] = dm_dwr.y;
+    c[(4, 4)] = dm_dwr.z;
+
+    let mut dd = Matrix5::zeros();
+    for col in 0..5 {
+        for row in 0..3 {
+            dd[(row, col)] = df_ring_du[(row, col)];
+        }
+        dd[(3, col)] = dm_du[(1, col)];
+        dd[(4, col)] = dm_du[(2, col)];
+    }
+    (ring_load, c, dd)
 }
 
 #[cfg(test)]
