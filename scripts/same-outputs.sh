@@ -2,8 +2,10 @@
 # Whether two builds of `rolldyn` write the same outputs: every command's
 # standard output, and every file of a run directory (summary.json
 # without its timings, run.json, the time series' values and report.html
-# without its timings), for the default case, every example's case, a
-# bearing set (examples/spindle_pair) and a shaft. For a change that must not change results
+# without its timings), for the default case (also from the
+# traction-consistent start, and a quasi-static speed sweep), every
+# example's case, a bearing set (examples/spindle_pair) and a shaft (rigid
+# in motion, elastic quasi-statically). For a change that must not change results
 # (a refactoring).
 #
 #   scripts/same-outputs.sh OLD_BINARY [NEW_BINARY] [DURATION]
@@ -132,6 +134,9 @@ CASE
 run_pair "shaft" "$work/shaft.toml"
 command_pair "shaft quasistatic" quasistatic "$work/shaft.toml" --json
 command_pair "shaft power" power "$work/shaft.toml" --json
+command_pair "elastic shaft quasistatic" quasistatic "$work/shaft.toml" --set 'shaft.diameter="30 mm"' --json
+run_pair "traction-consistent start" "$work/default.toml" --set solver.start=quasistatic_traction
+command_pair "quasistatic speed sweep" quasistatic "$work/default.toml" --sweep "speed=5000rpm,10000rpm,15000rpm" --json
 for c in examples/*/case.toml; do
     run_pair "$c" "$c"
 done

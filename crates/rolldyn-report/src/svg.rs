@@ -254,18 +254,26 @@ impl Plot {
         if let Some(heat) = &self.heat {
             heat.to_svg(&frame, &mut out);
         }
-        // Grid and tick labels.
-        for &t in &x_ticks {
+        self.axes_to_svg(&frame, &x_ticks, &y_ticks, &mut out);
+        self.series_to_svg(&frame, &mut out);
+        self.legend_to_svg(&mut out);
+        out.push_str("</svg>");
+        out
+    }
+
+    /// The grid, the tick labels, the frame and the axis labels.
+    fn axes_to_svg(&self, frame: &Frame, x_ticks: &[f64], y_ticks: &[f64], out: &mut String) {
+        for &t in x_ticks {
             let px = frame.px(t);
             let _ = write!(
                 out,
                 r#"<line x1="{px:.1}" y1="{TOP}" x2="{px:.1}" y2="{:.1}" class="grid"/><text x="{px:.1}" y="{:.1}" text-anchor="middle">{}</text>"#,
                 HEIGHT - BOTTOM,
                 HEIGHT - BOTTOM + 15.0,
-                number(t, &x_ticks)
+                number(t, x_ticks)
             );
         }
-        for &t in &y_ticks {
+        for &t in y_ticks {
             let py = frame.py(t);
             let _ = write!(
                 out,
@@ -273,7 +281,7 @@ impl Plot {
                 WIDTH - RIGHT,
                 LEFT - 5.0,
                 py + 4.0,
-                number(t, &y_ticks)
+                number(t, y_ticks)
             );
         }
         let _ = write!(
@@ -295,6 +303,10 @@ impl Plot {
             TOP + 0.5 * (HEIGHT - TOP - BOTTOM),
             escape(&self.y_label)
         );
+    }
+
+    /// The series: polylines (broken at non-finite points) or markers.
+    fn series_to_svg(&self, frame: &Frame, out: &mut String) {
         for (k, s) in self.series.iter().enumerate() {
             let colour = COLOURS[k % COLOURS.len()];
             match s.style {
@@ -304,7 +316,7 @@ impl Plot {
                     } else {
                         ""
                     };
-                    for run in polylines(&s.x, &s.y, &frame) {
+                    for run in polylines(&s.x, &s.y, frame) {
                         let _ = write!(
                             out,
                             r#"<polyline class="series" data-series="{}" fill="none" stroke="{colour}" stroke-width="1.4"{dash} points="{run}"/>"#,
@@ -332,7 +344,10 @@ impl Plot {
                 }
             }
         }
-        // Legend (when there is more than one series).
+    }
+
+    /// The legend, when there is more than one series.
+    fn legend_to_svg(&self, out: &mut String) {
         if self.series.len() > 1 {
             let longest = self.series.iter().map(|s| s.name.chars().count()).max();
             let _ = write!(
@@ -357,8 +372,6 @@ impl Plot {
                 );
             }
         }
-        out.push_str("</svg>");
-        out
     }
 
     /// Data ranges over the finite points (a unit range around a constant).

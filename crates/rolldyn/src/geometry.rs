@@ -173,6 +173,123 @@ fn groove_curvature(field: &'static str, f: f64) -> Result<(), InvalidParameter>
     Ok(())
 }
 
+/// The ball count's rules: at least 3, at most [`MAX_BALL_COUNT`].
+fn ball_count(z: usize) -> Result<(), InvalidParameter> {
+    if z < 3 {
+        return Err(InvalidParameter::new(
+            "ball_count",
+            z,
+            "a bearing needs at least 3 balls",
+        ));
+    }
+    if z > MAX_BALL_COUNT {
+        return Err(InvalidParameter::new(
+            "ball_count",
+            z,
+            format!("more than {MAX_BALL_COUNT} balls is not a plausible bearing"),
+        ));
+    }
+    Ok(())
+}
+
+/// The pitch diameter, the diametral clearance and the offset contact
+/// angle of the spec's way of giving the clearance (docs/geometry.md).
+fn pitch_clearance_and_angle(spec: &GeometrySpec) -> Result<(f64, f64, f64), InvalidParameter> {
+    let d = spec.ball_diameter;
+    Ok(match spec.clearance {
+        Clearance::FreeContactAngle(a0) => {
+            if !a0.is_finite() {
+                return Err(InvalidParameter::new(
+                    "free_contact_angle",
+                    a0,
+                    "must be a finite number",
+                ));
+            }
+            let deg = a0.to_degrees();
+            if !(0.0..=MAX_FREE_CONTACT_ANGLE_DEG).contains(&deg) {
+                return Err(InvalidParameter::new(
+                    "free_contact_angle",
+                    format!("{deg} deg"),
+                    format!("must lie in [0, {MAX_FREE_CONTACT_ANGLE_DEG}] deg"),
+                ));
+            }
+            positive_finite("pitch_diameter", spec.pitch_diameter, "m")?;
+            (spec.pitch_diameter, 0.0, a0)
+        }
+        Clearance::Diametral(pd) => {
+            if !pd.is_finite() {
+                return Err(InvalidParameter::new(
+                    "diametral_clearance",
+                    pd,
+                    "must be a finite number",
+                ));
+            }
+            positive_finite("pitch_diameter", spec.pitch_diameter, "m")?;
+            (spec.pitch_diameter, pd, 0.0)
+        }
+        Clearance::RacewayDiameters { inner, outer } => {
+            positive_finite("inner_raceway_diameter", inner, "m")?;
+            positive_finite("outer_raceway_diameter", outer, "m")?;
+            if outer <= inner {
+                return Err(InvalidParameter::new(
+                    "outer_raceway_diameter",
+                    format!("{outer} m"),
+                    format!(
+                        "raceways cross: the outer raceway diameter must exceed the inner one ({inner} m)"
+                    ),
+                ));
+            }
+            ((inner + outer) / 2.0, outer - inner - 2.0 * d, 0.0)
+        }
+    })
+}
+
+/// The diametral clearance's limits: an interference only with the
+/// explicit preload flag and at most a fraction of the ball diameter per
+/// contact; a clearance below 2(f_i + f_o − 1)D.
+fn clearance_limits(
+    spec: &GeometrySpec,
+    pd: f64,
+    total_curvature: f64,
+) -> Result<(), InvalidParameter> {
+    let d = spec.ball_diameter;
+    let pd_field = match spec.clearance {
+        Clearance::RacewayDiameters { .. } => "outer_raceway_diameter",
+        _ => "diametral_clearance",
+    };
+    if pd < 0.0 {
+        if !spec.preload {
+            return Err(InvalidParameter::new(
+                pd_field,
+                format!("diametral clearance {pd} m"),
+                "negative clearance (interference) needs the explicit flag preload = true",
+            ));
+        }
+        let per_contact = -pd / 4.0;
+        if per_contact > MAX_PRELOAD_INTERFERENCE_FRACTION * d {
+            return Err(InvalidParameter::new(
+                pd_field,
+                format!("diametral clearance {pd} m"),
+                format!(
+                    "raceways cross: the interference per contact ({per_contact} m) exceeds {}% of the ball diameter",
+                    MAX_PRELOAD_INTERFERENCE_FRACTION * 100.0
+                ),
+            ));
+        }
+    }
+    if pd >= total_curvature * d * 2.0 {
+        return Err(InvalidParameter::new(
+            pd_field,
+            format!("diametral clearance {pd} m"),
+            format!(
+                "clearance reaches 2(f_i + f_o − 1)D = {} m: the ball could pass the raceway shoulders (free contact angle ≥ 90°)",
+                2.0 * total_curvature * d
+            ),
+        ));
+    }
+    Ok(())
+}
+
 impl BearingGeometry {
     /// Validates a [`GeometrySpec`] against the rules of docs/model.md §2 and builds
     /// the groove-centre circles.
@@ -180,71 +297,13 @@ impl BearingGeometry {
         let d = spec.ball_diameter;
         positive_finite("ball_diameter", d, "m")?;
         let z = spec.ball_count;
-        if z < 3 {
-            return Err(InvalidParameter::new(
-                "ball_count",
-                z,
-                "a bearing needs at least 3 balls",
-            ));
-        }
-        if z > MAX_BALL_COUNT {
-            return Err(InvalidParameter::new(
-                "ball_count",
-                z,
-                format!("more than {MAX_BALL_COUNT} balls is not a plausible bearing"),
-            ));
-        }
+        ball_count(z)?;
         groove_curvature("inner_groove_curvature", spec.inner_groove_curvature)?;
         groove_curvature("outer_groove_curvature", spec.outer_groove_curvature)?;
         let (fi, fo) = (spec.inner_groove_curvature, spec.outer_groove_curvature);
         let total_curvature = fi + fo - 1.0;
 
-        let (pitch, pd, alpha0) = match spec.clearance {
-            Clearance::FreeContactAngle(a0) => {
-                if !a0.is_finite() {
-                    return Err(InvalidParameter::new(
-                        "free_contact_angle",
-                        a0,
-                        "must be a finite number",
-                    ));
-                }
-                let deg = a0.to_degrees();
-                if !(0.0..=MAX_FREE_CONTACT_ANGLE_DEG).contains(&deg) {
-                    return Err(InvalidParameter::new(
-                        "free_contact_angle",
-                        format!("{deg} deg"),
-                        format!("must lie in [0, {MAX_FREE_CONTACT_ANGLE_DEG}] deg"),
-                    ));
-                }
-                positive_finite("pitch_diameter", spec.pitch_diameter, "m")?;
-                (spec.pitch_diameter, 0.0, a0)
-            }
-            Clearance::Diametral(pd) => {
-                if !pd.is_finite() {
-                    return Err(InvalidParameter::new(
-                        "diametral_clearance",
-                        pd,
-                        "must be a finite number",
-                    ));
-                }
-                positive_finite("pitch_diameter", spec.pitch_diameter, "m")?;
-                (spec.pitch_diameter, pd, 0.0)
-            }
-            Clearance::RacewayDiameters { inner, outer } => {
-                positive_finite("inner_raceway_diameter", inner, "m")?;
-                positive_finite("outer_raceway_diameter", outer, "m")?;
-                if outer <= inner {
-                    return Err(InvalidParameter::new(
-                        "outer_raceway_diameter",
-                        format!("{outer} m"),
-                        format!(
-                            "raceways cross: the outer raceway diameter must exceed the inner one ({inner} m)"
-                        ),
-                    ));
-                }
-                ((inner + outer) / 2.0, outer - inner - 2.0 * d, 0.0)
-            }
-        };
+        let (pitch, pd, alpha0) = pitch_clearance_and_angle(spec)?;
         if pitch <= d {
             return Err(InvalidParameter::new(
                 "pitch_diameter",
@@ -264,40 +323,7 @@ impl BearingGeometry {
                 ),
             ));
         }
-        let pd_field = match spec.clearance {
-            Clearance::RacewayDiameters { .. } => "outer_raceway_diameter",
-            _ => "diametral_clearance",
-        };
-        if pd < 0.0 {
-            if !spec.preload {
-                return Err(InvalidParameter::new(
-                    pd_field,
-                    format!("diametral clearance {pd} m"),
-                    "negative clearance (interference) needs the explicit flag preload = true",
-                ));
-            }
-            let per_contact = -pd / 4.0;
-            if per_contact > MAX_PRELOAD_INTERFERENCE_FRACTION * d {
-                return Err(InvalidParameter::new(
-                    pd_field,
-                    format!("diametral clearance {pd} m"),
-                    format!(
-                        "raceways cross: the interference per contact ({per_contact} m) exceeds {}% of the ball diameter",
-                        MAX_PRELOAD_INTERFERENCE_FRACTION * 100.0
-                    ),
-                ));
-            }
-        }
-        if pd >= total_curvature * d * 2.0 {
-            return Err(InvalidParameter::new(
-                pd_field,
-                format!("diametral clearance {pd} m"),
-                format!(
-                    "clearance reaches 2(f_i + f_o − 1)D = {} m: the ball could pass the raceway shoulders (free contact angle ≥ 90°)",
-                    2.0 * total_curvature * d
-                ),
-            ));
-        }
+        clearance_limits(spec, pd, total_curvature)?;
 
         let (s0, c0) = alpha0.sin_cos();
         let inner_rc = pitch / 2.0 + (fi - 0.5) * d * c0 - pd / 4.0;

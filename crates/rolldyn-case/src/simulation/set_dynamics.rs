@@ -38,6 +38,90 @@ fn refuse<T>(key: &str, rule: &str) -> Result<T, SimulationError> {
     }))
 }
 
+/// Refuses what bearings on a shaft in motion do not do, naming the key.
+fn refuse_unsupported(case: &Case) -> Result<(), SimulationError> {
+    if case.load_profile.is_some() {
+        return refuse("operating.load_profile", "time-varying loads");
+    }
+    if case.thermal.run_coupling.is_some() {
+        return refuse(
+            "thermal.run_coupling",
+            "the thermal network coupled to the run",
+        );
+    }
+    if case.sensor.is_some() {
+        return refuse("sensor", "the sensor chain");
+    }
+    if case.unbalance.is_some() {
+        return refuse(
+            "operating.unbalance",
+            "an unbalance on one bearing's ring (a set's shaft takes arrangement.unbalance)",
+        );
+    }
+    if case.start != crate::raw::StartChoice::JonesHarris {
+        return refuse(
+            "solver.start",
+            "the bearings start from their quasi-static equilibrium (\"jones_harris\"); other starts",
+        );
+    }
+    Ok(())
+}
+
+/// Each mounted bearing's model from its case (`on_shaft`: a `[shaft]`'s
+/// bearing, whose errors name it), the shaft's drive turning its inner
+/// ring, and the shaft body the inner rings make up.
+fn bearing_models(
+    case: &Case,
+    mounted: &[MountedBearing],
+    bearing_cases: &[Case],
+    on_shaft: bool,
+    inner_speed: f64,
+) -> Result<(Vec<rolldyn::dynamics::BearingModel>, ShaftBody), SimulationError> {
+    let mut models = Vec::with_capacity(mounted.len());
+    let mut body = ShaftBody {
+        mass: 0.0,
+        tilt_inertia: 0.0,
+    };
+    for (i, (b, bearing_case)) in mounted.iter().zip(bearing_cases).enumerate() {
+        // A shaft bearing's own case: its errors name it.
+        let name = |mut invalid: Invalid| {
+            if on_shaft {
+                invalid.key = format!("shaft.bearings[{i}].{}", invalid.key);
+            }
+            invalid
+        };
+        let named = |e: SimulationError| match e {
+            SimulationError::Case(invalid) => SimulationError::Case(name(invalid)),
+            e => e,
+        };
+        let mut parameters = bearing_case
+            .dynamics_parameters()
+            .map_err(|e| named(e.into()))?;
+        // The shaft's drive turns every bearing's inner ring.
+        parameters.drive = case.drive.clone();
+        if b.floating {
+            // Its outer ring slides in its bore.
+            parameters.sliding_outer_ring = Some(SlidingRing {
+                mass: bearing_case
+                    .outer_ring_mass()
+                    .map_err(|e| named(e.into()))?,
+                friction: case
+                    .shaft
+                    .as_ref()
+                    .map_or(0.0, |s| s.bearings[i].housing_friction),
+            });
+        }
+        if parameters.speed.speed_at(0.0) != inner_speed {
+            return refuse("operating.speed", "a speed that changes over the run");
+        }
+        body.mass += parameters.inner_ring_mass;
+        body.tilt_inertia += parameters.inner_ring_tilt_inertia
+            + parameters.inner_ring_mass * b.position * b.position;
+        models.push(super::model(bearing_case, parameters).map_err(named)?);
+    }
+    Ok((models, body))
+}
+
 impl SetSimulation {
     /// The case's bearings on their shaft in motion, or None when the
     /// case has one bearing. The shaft carries each bearing's inner ring
@@ -46,30 +130,7 @@ impl SetSimulation {
     /// positions) act on it at the reference point, constant, and
     /// `arrangement.unbalance` turns with it.
     pub fn from_case(case: &Case) -> Result<Option<Self>, SimulationError> {
-        if case.load_profile.is_some() {
-            return refuse("operating.load_profile", "time-varying loads");
-        }
-        if case.thermal.run_coupling.is_some() {
-            return refuse(
-                "thermal.run_coupling",
-                "the thermal network coupled to the run",
-            );
-        }
-        if case.sensor.is_some() {
-            return refuse("sensor", "the sensor chain");
-        }
-        if case.unbalance.is_some() {
-            return refuse(
-                "operating.unbalance",
-                "an unbalance on one bearing's ring (a set's shaft takes arrangement.unbalance)",
-            );
-        }
-        if case.start != crate::raw::StartChoice::JonesHarris {
-            return refuse(
-                "solver.start",
-                "the bearings start from their quasi-static equilibrium (\"jones_harris\"); other starts",
-            );
-        }
+        refuse_unsupported(case)?;
         let harmonic_loads = case
             .shaft
             .as_ref()
@@ -112,49 +173,13 @@ impl SetSimulation {
             } else {
                 return Ok(None);
             };
-        let mut models = Vec::with_capacity(mounted.len());
-        let mut body = ShaftBody {
-            mass: 0.0,
-            tilt_inertia: 0.0,
-        };
-        let on_shaft = kind.is_none();
-        for (i, (b, bearing_case)) in mounted.iter().zip(&bearing_cases).enumerate() {
-            // A shaft bearing's own case: its errors name it.
-            let name = |mut invalid: Invalid| {
-                if on_shaft {
-                    invalid.key = format!("shaft.bearings[{i}].{}", invalid.key);
-                }
-                invalid
-            };
-            let named = |e: SimulationError| match e {
-                SimulationError::Case(invalid) => SimulationError::Case(name(invalid)),
-                e => e,
-            };
-            let mut parameters = bearing_case
-                .dynamics_parameters()
-                .map_err(|e| named(e.into()))?;
-            // The shaft's drive turns every bearing's inner ring.
-            parameters.drive = case.drive.clone();
-            if b.floating {
-                // Its outer ring slides in its bore.
-                parameters.sliding_outer_ring = Some(SlidingRing {
-                    mass: bearing_case
-                        .outer_ring_mass()
-                        .map_err(|e| named(e.into()))?,
-                    friction: case
-                        .shaft
-                        .as_ref()
-                        .map_or(0.0, |s| s.bearings[i].housing_friction),
-                });
-            }
-            if parameters.speed.speed_at(0.0) != conditions.inner_speed {
-                return refuse("operating.speed", "a speed that changes over the run");
-            }
-            body.mass += parameters.inner_ring_mass;
-            body.tilt_inertia += parameters.inner_ring_tilt_inertia
-                + parameters.inner_ring_mass * b.position * b.position;
-            models.push(super::model(bearing_case, parameters).map_err(named)?);
-        }
+        let (models, body) = bearing_models(
+            case,
+            &mounted,
+            &bearing_cases,
+            kind.is_none(),
+            conditions.inner_speed,
+        )?;
         let settings = SolverSettings::of(
             case,
             &models[0].parameters().cage,

@@ -316,9 +316,8 @@ impl Elements {
         let (steady, film, asperity_share) = self.race_film(
             ring,
             &hertz,
-            geometry.contact_angle,
-            u,
-            load,
+            &geometry,
+            (u, load),
             &ellipse,
             approach.as_ref(),
         );
@@ -405,22 +404,22 @@ impl Elements {
         })
     }
 
-    /// The contact's film (docs/model.md §4): h(Q) of the elastic load with
-    /// the film in the approach (`approach`), else the steady
-    /// Hamrock–Dowson film at the load (returned too, for the rolling
-    /// resistance), both starved by the ring's supply; and the asperities'
-    /// share of the load (dynamics::mixed).
-    #[allow(clippy::too_many_arguments)]
+    /// The contact's film (docs/model.md §4) at entrainment speed u and
+    /// load Q: h(Q) of the elastic load with the film in the approach
+    /// (`approach`), else the steady Hamrock–Dowson film at the load
+    /// (returned too, for the rolling resistance), both starved by the
+    /// ring's supply; and the asperities' share of the load
+    /// (dynamics::mixed).
     fn race_film(
         &self,
         ring: &RingMotion,
         hertz: &HertzCoefficients,
-        contact_angle: f64,
-        entrainment_speed: f64,
-        load: f64,
+        geometry: &TorusContact,
+        (entrainment_speed, load): (f64, f64),
         ellipse: &HertzResult,
         approach: Option<&FilmApproach>,
     ) -> (Option<ContactFilm>, f64, f64) {
+        let contact_angle = geometry.contact_angle;
         let steady = match approach {
             Some(_) => None,
             None => self.steady_film(

@@ -252,11 +252,94 @@ impl Solver<'_> {
         list
     }
 
+    /// The first solve of every ball: each starts from its Jones–Harris
+    /// state moved by the correction its neighbour needed, with the
+    /// neighbour's Jacobian (the balls' states vary smoothly around the
+    /// bearing); if that fails, from the Jones–Harris state itself. Err:
+    /// a ball's residual.
+    fn solve_balls_first(
+        &mut self,
+        y: &mut [f64],
+        start: &[f64],
+        load_scale: f64,
+    ) -> Result<(), f64> {
+        let layout = self.layout;
+        let unknowns_ball = ball_unknowns(self.planar);
+        for j in 0..layout.balls {
+            let b = layout.ball(j);
+            if j > 0 {
+                let prev = layout.ball(j - 1);
+                for &k in unknowns_ball {
+                    y[b + k] += y[prev + k] - start[prev + k];
+                }
+                self.jacobians[j] = self.jacobians[j - 1].clone();
+                if self.solve_ball(y, j, load_scale).is_ok() {
+                    continue;
+                }
+                for &k in unknowns_ball {
+                    y[b + k] = start[b + k];
+                }
+                self.jacobians[j] = None;
+            }
+            self.solve_ball(y, j, load_scale)?;
+        }
+        Ok(())
+    }
+
+    /// The ring residual's Jacobian by finite differences over the ring's
+    /// unknowns, every ball re-solved for each column (`res`: the residual
+    /// at `y`). Err: a ball's residual.
+    fn ring_jacobian(
+        &mut self,
+        y: &[f64],
+        unknowns: &[(usize, usize, f64)],
+        res: &[f64],
+        load_scale: f64,
+    ) -> Result<DMatrix<f64>, f64> {
+        let n = unknowns.len();
+        let r = self.layout.ring();
+        let pitch_diameter = self.model.geometry().pitch_diameter;
+        let mut jac = DMatrix::zeros(n, n);
+        for (col, &(k, _, _)) in unknowns.iter().enumerate() {
+            let tilt = k == r + 3 || k == r + 4;
+            let h = if tilt {
+                self.step_position / (0.5 * pitch_diameter)
+            } else {
+                self.step_position
+            };
+            let mut yp = y.to_vec();
+            yp[k] += h;
+            self.solve_balls(&mut yp, load_scale)?;
+            let rp = self.ring_residual(&yp, unknowns);
+            for row in 0..n {
+                jac[(row, col)] = (rp[row] - res[row]) / h;
+            }
+        }
+        Ok(jac)
+    }
+
     fn ring_residual(&self, y: &[f64], unknowns: &[(usize, usize, f64)]) -> Vec<f64> {
         let mut dy = vec![0.0; y.len()];
         self.model.rhs(self.t, y, &mut dy);
         unknowns.iter().map(|&(_, acc, m)| dy[acc] * m).collect()
     }
+}
+
+/// Rings and balls at rest in their frames; the cage centred on the balls.
+fn at_rest_in_their_frames(layout: &StateLayout, y: &mut [f64]) {
+    for j in 0..layout.balls {
+        let b = layout.ball(j);
+        y[b + 3] = 0.0;
+        y[b + 4] = 0.0;
+    }
+    let r = layout.ring();
+    y[r + 5..r + 10].fill(0.0);
+    let o = layout.outer();
+    y[o + 2..o + 4].fill(0.0);
+    let c = layout.cage();
+    y[c + 2] = y[layout.ball(0) + 2];
+    y[c + 3] = 0.0;
+    y[c + 4] = 0.0;
 }
 
 /// Largest contact load of state `y` (at least 1 N).
@@ -281,20 +364,8 @@ pub fn solve_traction_consistent(
     let layout = model.layout();
     let g = model.geometry();
     let mut y = start.to_vec();
-    // Rings and balls at rest in their frames; cage centred on the balls.
-    for j in 0..layout.balls {
-        let b = layout.ball(j);
-        y[b + 3] = 0.0;
-        y[b + 4] = 0.0;
-    }
-    let r = layout.ring();
-    y[r + 5..r + 10].fill(0.0);
-    let o = layout.outer();
-    y[o + 2..o + 4].fill(0.0);
+    at_rest_in_their_frames(&layout, &mut y);
     let c = layout.cage();
-    y[c + 2] = y[layout.ball(0) + 2];
-    y[c + 3] = 0.0;
-    y[c + 4] = 0.0;
     let omega_i = model.parameters().speed.speed_at(t);
     let mass = model.ball_mass();
     let mut solver = Solver {
@@ -319,33 +390,10 @@ pub fn solve_traction_consistent(
         speed_rpm: omega_i * 60.0 / std::f64::consts::TAU,
     };
     let load_scale = largest_load(model, t, &y);
-    // First solve: each ball starts from its Jones–Harris state moved by
-    // the correction its neighbour needed, with the neighbour's Jacobian
-    // (the balls' states vary smoothly around the bearing); if that fails,
-    // from the Jones–Harris state itself.
-    let unknowns_ball = ball_unknowns(solver.planar);
-    for j in 0..layout.balls {
-        let b = layout.ball(j);
-        if j > 0 {
-            let prev = layout.ball(j - 1);
-            for &k in unknowns_ball {
-                y[b + k] += y[prev + k] - start[prev + k];
-            }
-            solver.jacobians[j] = solver.jacobians[j - 1].clone();
-            if solver.solve_ball(&mut y, j, load_scale).is_ok() {
-                continue;
-            }
-            for &k in unknowns_ball {
-                y[b + k] = start[b + k];
-            }
-            solver.jacobians[j] = None;
-        }
-        solver
-            .solve_ball(&mut y, j, load_scale)
-            .map_err(|res| failed(res / load_scale, solver.ball_iterations))?;
-    }
+    solver
+        .solve_balls_first(&mut y, start, load_scale)
+        .map_err(|res| failed(res / load_scale, solver.ball_iterations))?;
     let unknowns = solver.ring_unknowns();
-    let n = unknowns.len();
     let norm = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let mut res = solver.ring_residual(&y, &unknowns);
     let mut ring_iterations = 0;
@@ -361,24 +409,9 @@ pub fn solve_traction_consistent(
         attempts += 1;
         let fresh = ring_lu.is_none();
         if fresh {
-            let mut jac = DMatrix::zeros(n, n);
-            for (col, &(k, _, _)) in unknowns.iter().enumerate() {
-                let tilt = k == r + 3 || k == r + 4;
-                let h = if tilt {
-                    solver.step_position / (0.5 * g.pitch_diameter)
-                } else {
-                    solver.step_position
-                };
-                let mut yp = y.clone();
-                yp[k] += h;
-                solver
-                    .solve_balls(&mut yp, load_scale)
-                    .map_err(|res| failed(res / load_scale, solver.ball_iterations))?;
-                let rp = solver.ring_residual(&yp, &unknowns);
-                for row in 0..n {
-                    jac[(row, col)] = (rp[row] - res[row]) / h;
-                }
-            }
+            let jac = solver
+                .ring_jacobian(&y, &unknowns, &res, load_scale)
+                .map_err(|res| failed(res / load_scale, solver.ball_iterations))?;
             ring_lu = Some(jac.lu());
         }
         let Some(delta) = ring_lu

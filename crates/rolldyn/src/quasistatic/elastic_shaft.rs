@@ -220,18 +220,13 @@ impl ElasticShaft {
             .collect()
     }
 
-    /// The equilibrium under `conditions` (their loads at the reference
-    /// point, with [`Self::loads`] at theirs), from the rigid shaft's.
-    pub fn solve(
+    /// The rigid shaft's solution under the same loads (moved to x = 0)
+    /// and the nodes' displacements it gives (a rigid shaft's).
+    fn rigid_start(
         &self,
         conditions: &SystemConditions,
         options: &SolverOptions,
-    ) -> Result<ElasticEquilibrium, SystemError> {
-        let nodes = self.nodes.len();
-        let dim = 5 * nodes;
-        let shaft = self.stiffness();
-        let external = self.load_vector(&conditions.loads);
-        // The rigid shaft's solution under the same loads about x = 0.
+    ) -> Result<(SystemEquilibrium, DVector<f64>), SystemError> {
         let mut total = conditions.loads;
         for (x, l) in &self.loads {
             for k in 0..3 {
@@ -248,7 +243,7 @@ impl ElasticShaft {
             options,
         )?;
         let u0 = rigid.displacement;
-        let mut u = DVector::from_fn(dim, |i, _| {
+        let u = DVector::from_fn(5 * self.nodes.len(), |i, _| {
             let x = self.nodes[i / 5];
             match i % 5 {
                 0 => u0[0],
@@ -257,6 +252,20 @@ impl ElasticShaft {
                 k => u0[k],
             }
         });
+        Ok((rigid, u))
+    }
+
+    /// The equilibrium under `conditions` (their loads at the reference
+    /// point, with [`Self::loads`] at theirs), from the rigid shaft's.
+    pub fn solve(
+        &self,
+        conditions: &SystemConditions,
+        options: &SolverOptions,
+    ) -> Result<ElasticEquilibrium, SystemError> {
+        let nodes = self.nodes.len();
+        let shaft = self.stiffness();
+        let external = self.load_vector(&conditions.loads);
+        let (rigid, mut u) = self.rigid_start(conditions, options)?;
         let bearings = self.at_nodes();
         let evaluate = |u: &DVector<f64>, warm: &[Option<Equilibrium>]| {
             let mut residual = &shaft * u - &external;

@@ -73,11 +73,7 @@ impl QuasiStaticSolver {
             .max(f64::MIN_POSITIVE);
         let target = options.relative_tolerance.max(1e-12) * scale;
         let max_step = 0.05 * self.geometry.ball_diameter;
-        let held_at = |x: f64| {
-            let mut held = *options;
-            held.prescribed_displacement[0] = Some(x);
-            held
-        };
+        let held_at = |x: f64| held_at(options, x);
         let mut iterations = 0;
         // Each solve starts from the last solution (one Newton pass at the
         // conditions' speed), else from the built-in start.
@@ -95,53 +91,14 @@ impl QuasiStaticSolver {
                 (eq, r)
             })
         };
-        let finish = |mut eq: Equilibrium, r: f64, iterations: usize| {
-            eq.reaction[0] = 0.0;
-            eq.residual = eq.residual.max(r.abs() / scale);
-            eq.iterations = iterations;
-            eq
-        };
         let mut first_iterations = 0;
-        let (mut x, (mut eq, mut r)) = match start {
-            AxialStart::Neighbour(near) => {
-                let x = near.displacement[0];
-                let held = held_at(x);
-                let guess = Self::at_speed_of(near, conditions);
-                let (state, schur, it, residual, controls) =
-                    self.solve_at(guess, conditions, &held)?;
-                let eq = self.solution(&state, &schur, it, residual, &controls, conditions, &held);
+        let (mut x, (mut eq, mut r)) = match self.axial_start(start, conditions, options)? {
+            Some((x, eq, it)) => {
                 first_iterations = it;
                 let r = eq.reaction[0];
                 (x, (eq, r))
             }
-            AxialStart::Rest(rest) => {
-                let controls = rest.balls.iter().map(|b| b.control).collect();
-                let from = (Self::state_of(rest), Matrix5::zeros(), 0, 0.0, controls);
-                let (x, (state, schur, it, residual, controls)) = self
-                    .continue_in_speed_via_outer_control(
-                        from,
-                        conditions,
-                        &held_at(rest.displacement[0]),
-                    )
-                    .map(|path| (rest.displacement[0], path))
-                    .or_else(|e| {
-                        self.axial_then_load_at_speed_held(conditions, options)
-                            .map_err(|_| e)
-                    })?;
-                let eq = self.solution(
-                    &state,
-                    &schur,
-                    it,
-                    residual,
-                    &controls,
-                    conditions,
-                    &held_at(x),
-                );
-                first_iterations = it;
-                let r = eq.reaction[0];
-                (x, (eq, r))
-            }
-            AxialStart::BuiltIn => {
+            None => {
                 let x = self.initial_state(&conditions.loads, options, false).ring[0];
                 (x, solve(x, None)?)
             }
@@ -160,21 +117,14 @@ impl QuasiStaticSolver {
         let mut samples = vec![(x, r, eq.clone())];
         for _ in 0..MAX_SOLVES {
             if r.abs() <= target {
-                return Ok(finish(eq, r, iterations + first_iterations));
+                return Ok(finish(eq, r / scale, iterations + first_iterations));
             }
             let next = match (bracket, last_step) {
                 (Some(((a, ra), (b, rb))), _) => (a * rb - b * ra) / (rb - ra),
                 // |R| grew: past a minimum of R (another branch of
                 // equilibria lies further on); march on, doubling.
                 (None, Some(step)) if !improving => x + (2.0 * step).clamp(-max_step, max_step),
-                (None, _) => {
-                    let k = eq
-                        .conventional_stiffness()
-                        .map(|k| k[0])
-                        .filter(|k| k.is_finite() && *k > 0.0)
-                        .unwrap_or(eq.stiffness[0][0].abs().max(f64::MIN_POSITIVE));
-                    x - (r / k).clamp(-max_step, max_step)
-                }
+                (None, _) => x - (r / axial_stiffness(&eq)).clamp(-max_step, max_step),
             };
             let (eq_next, r_next) = match solve(next, Some(&eq)) {
                 Ok(v) => v,
@@ -217,33 +167,118 @@ impl QuasiStaticSolver {
                 }
             }
             last_step = Some(x_next - x);
-            bracket = match bracket {
-                None if r.signum() != r_next.signum() => Some(((x, r), (x_next, r_next))),
-                None => None,
-                Some(((a, ra), (b, rb))) => {
-                    // Illinois: halve the retained end's value when the
-                    // same end is kept twice.
-                    if r_next.signum() == ra.signum() {
-                        let rb = if last_side == 1 { 0.5 * rb } else { rb };
-                        last_side = 1;
-                        Some(((x_next, r_next), (b, rb)))
-                    } else {
-                        let ra = if last_side == -1 { 0.5 * ra } else { ra };
-                        last_side = -1;
-                        Some(((a, ra), (x_next, r_next)))
-                    }
-                }
-            };
+            bracket = next_bracket(bracket, &mut last_side, (x, r), (x_next, r_next));
             (x, eq, r) = (x_next, eq_next, r_next);
         }
         if r.abs() <= STAGNATION_ACCEPT * scale {
-            return Ok(finish(eq, r, iterations + first_iterations));
+            return Ok(finish(eq, r / scale, iterations + first_iterations));
         }
         Err(QuasiStaticError::NoConvergence {
             iterations: iterations + first_iterations,
             residual: r.abs() / scale,
             speed_rpm: conditions.inner_speed * 60.0 / std::f64::consts::TAU,
         })
+    }
+
+    /// The first solution of the root search from a sweep's neighbour or
+    /// the solution at rest, with its axial displacement and iterations;
+    /// None for the built-in start.
+    fn axial_start(
+        &self,
+        start: AxialStart<'_>,
+        conditions: &Conditions,
+        options: &SolverOptions,
+    ) -> Result<Option<(f64, Equilibrium, usize)>, QuasiStaticError> {
+        let held_at = |x: f64| held_at(options, x);
+        Ok(Some(match start {
+            AxialStart::Neighbour(near) => {
+                let x = near.displacement[0];
+                let held = held_at(x);
+                let guess = Self::at_speed_of(near, conditions);
+                let (state, schur, it, residual, controls) =
+                    self.solve_at(guess, conditions, &held)?;
+                let eq = self.solution(&state, &schur, it, residual, &controls, conditions, &held);
+                (x, eq, it)
+            }
+            AxialStart::Rest(rest) => {
+                let controls = rest.balls.iter().map(|b| b.control).collect();
+                let from = (Self::state_of(rest), Matrix5::zeros(), 0, 0.0, controls);
+                let (x, (state, schur, it, residual, controls)) = self
+                    .continue_in_speed_via_outer_control(
+                        from,
+                        conditions,
+                        &held_at(rest.displacement[0]),
+                    )
+                    .map(|path| (rest.displacement[0], path))
+                    .or_else(|e| {
+                        self.axial_then_load_at_speed_held(conditions, options)
+                            .map_err(|_| e)
+                    })?;
+                let eq = self.solution(
+                    &state,
+                    &schur,
+                    it,
+                    residual,
+                    &controls,
+                    conditions,
+                    &held_at(x),
+                );
+                (x, eq, it)
+            }
+            AxialStart::BuiltIn => return Ok(None),
+        }))
+    }
+}
+
+/// The root search's solution: its axial reaction taken as zero, its
+/// residual at least the reaction's relative to the loads' scale.
+fn finish(mut eq: Equilibrium, relative_reaction: f64, iterations: usize) -> Equilibrium {
+    eq.reaction[0] = 0.0;
+    eq.residual = eq.residual.max(relative_reaction.abs());
+    eq.iterations = iterations;
+    eq
+}
+
+/// `options` with the axial displacement held at `x`.
+fn held_at(options: &SolverOptions, x: f64) -> SolverOptions {
+    let mut held = *options;
+    held.prescribed_displacement[0] = Some(x);
+    held
+}
+
+/// The axial stiffness of a Newton step on the reaction: the conventional
+/// one where positive, else the magnitude of K_xx.
+fn axial_stiffness(eq: &Equilibrium) -> f64 {
+    eq.conventional_stiffness()
+        .map(|k| k[0])
+        .filter(|k| k.is_finite() && *k > 0.0)
+        .unwrap_or(eq.stiffness[0][0].abs().max(f64::MIN_POSITIVE))
+}
+
+/// The root search's bracket after the step from `(x, r)` to `next`: a
+/// first bracket once the reaction changes sign, then Illinois (the
+/// retained end's value halved when the same end is kept twice;
+/// `last_side` remembers which).
+fn next_bracket(
+    bracket: Option<((f64, f64), (f64, f64))>,
+    last_side: &mut i8,
+    (x, r): (f64, f64),
+    (x_next, r_next): (f64, f64),
+) -> Option<((f64, f64), (f64, f64))> {
+    match bracket {
+        None if r.signum() != r_next.signum() => Some(((x, r), (x_next, r_next))),
+        None => None,
+        Some(((a, ra), (b, rb))) => {
+            if r_next.signum() == ra.signum() {
+                let rb = if *last_side == 1 { 0.5 * rb } else { rb };
+                *last_side = 1;
+                Some(((x_next, r_next), (b, rb)))
+            } else {
+                let ra = if *last_side == -1 { 0.5 * ra } else { ra };
+                *last_side = -1;
+                Some(((a, ra), (x_next, r_next)))
+            }
+        }
     }
 }
 
@@ -254,6 +289,34 @@ enum Minimum {
     /// Two points (x, R) whose reactions differ in sign, a root between,
     /// with the solution at the second (or the second is a root).
     Crossing((f64, f64), Box<(f64, f64, Equilibrium)>),
+}
+
+/// The next point of the successive parabolic interpolation through
+/// (a, f_a), (b, f_b), (c, f_c), a < b < c with f_b the least: the
+/// parabola's vertex, or a golden-section step into the wider side when
+/// the vertex lies outside (a, c) or within 1e-3 of the width from b; None
+/// when the value the parabola predicts at its vertex is within 1e-4 of
+/// f_b (converged).
+fn parabolic_step((a, b, c): (f64, f64, f64), (fa, fb, fc): (f64, f64, f64)) -> Option<f64> {
+    const GOLDEN: f64 = 0.381_966_011_250_105_1;
+    let p = (b - a) * (b - a) * (fb - fc) - (b - c) * (b - c) * (fb - fa);
+    let q = (b - a) * (fb - fc) - (b - c) * (fb - fa);
+    let vertex = if q != 0.0 { b - 0.5 * p / q } else { f64::NAN };
+    let curvature = 2.0 * ((fc - fb) / (c - b) - (fb - fa) / (b - a)) / (c - a);
+    let predicted = fb - 0.5 * curvature * (vertex - b).powi(2);
+    if vertex.is_finite() && (fb - predicted).abs() <= 1e-4 * fb.abs() {
+        return None;
+    }
+    let width = c - a;
+    Some(
+        if vertex.is_finite() && vertex > a && vertex < c && (vertex - b).abs() > 1e-3 * width {
+            vertex
+        } else if c - b > b - a {
+            b + GOLDEN * (c - b)
+        } else {
+            b - GOLDEN * (b - a)
+        },
+    )
 }
 
 /// Solves of the minimum's refinement.
@@ -276,7 +339,6 @@ fn refine_minimum(
     tolerance: f64,
     solve: &mut impl FnMut(f64, Option<&Equilibrium>) -> Result<(Equilibrium, f64), QuasiStaticError>,
 ) -> Minimum {
-    const GOLDEN: f64 = 0.381_966_011_250_105_1;
     samples.sort_by(|a, b| a.0.total_cmp(&b.0));
     let sign = samples[0].1.signum();
     let value = |r: f64| sign * r;
@@ -361,32 +423,13 @@ fn refine_minimum(
             break;
         }
         let (a, b, c) = (samples[i - 1].0, samples[i].0, samples[i + 1].0);
-        let (fa, fb, fc) = (
+        let values = (
             value(samples[i - 1].1),
             value(samples[i].1),
             value(samples[i + 1].1),
         );
-        // Vertex of the parabola through the three points, and the value
-        // it predicts there: converged when that is within 1e-4 of f(b).
-        let p = (b - a) * (b - a) * (fb - fc) - (b - c) * (b - c) * (fb - fa);
-        let q = (b - a) * (fb - fc) - (b - c) * (fb - fa);
-        let vertex = if q != 0.0 { b - 0.5 * p / q } else { f64::NAN };
-        let curvature = 2.0 * ((fc - fb) / (c - b) - (fb - fa) / (b - a)) / (c - a);
-        let predicted = fb - 0.5 * curvature * (vertex - b).powi(2);
-        if vertex.is_finite() && (fb - predicted).abs() <= 1e-4 * fb.abs() {
+        let Some(x) = parabolic_step((a, b, c), values) else {
             break;
-        }
-        let width = c - a;
-        let x = if vertex.is_finite()
-            && vertex > a
-            && vertex < c
-            && (vertex - b).abs() > 1e-3 * width
-        {
-            vertex
-        } else if c - b > b - a {
-            b + GOLDEN * (c - b)
-        } else {
-            b - GOLDEN * (b - a)
         };
         match probe(samples, x, &mut solves) {
             Ok(Some(crossing)) => return crossing,
