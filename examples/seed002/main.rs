@@ -136,23 +136,7 @@ fn simulate(
             m.contact_samples(t, y, &mut samples);
             let inner = m.parameters().speed.speed_at(t);
             let cage_speed = y[cage + 5];
-            let mut creep = [[0.0; 4]; 2];
-            for (k, side) in creep.iter_mut().enumerate() {
-                let mut n = 0.0;
-                for s in &samples {
-                    let c = if k == 0 { &s.inner } else { &s.outer };
-                    if let (true, Some(cr)) = (c.load > 0.0, c.creep) {
-                        side[0] += cr.longitudinal.abs();
-                        side[1] += cr.lateral.abs();
-                        side[2] += cr.spin;
-                        side[3] += cr.stick_fraction;
-                        n += 1.0;
-                    }
-                }
-                if n > 0.0 {
-                    side.iter_mut().for_each(|v| *v /= n);
-                }
-            }
+            let creep = mean_creep(&samples);
             rows.push(Row {
                 t,
                 inner_rpm: inner / RPM,
@@ -190,12 +174,48 @@ fn simulate(
         started.elapsed().as_secs_f64(),
         report.stats.steps
     );
+    std::fs::write(
+        out.join(format!("timeseries_mu{mu}{suffix}.csv")),
+        rows_csv(&rows),
+    )
+    .map_err(|e| e.to_string())?;
+    for (name, text) in maps {
+        std::fs::write(out.join(name), text).map_err(|e| e.to_string())?;
+    }
+    Ok(rows)
+}
+
+/// The loaded contacts' mean |creepages| (longitudinal, lateral), spin
+/// creepage and stick fraction, inner and outer.
+fn mean_creep(samples: &[ContactSample]) -> [[f64; 4]; 2] {
+    let mut creep = [[0.0; 4]; 2];
+    for (k, side) in creep.iter_mut().enumerate() {
+        let mut n = 0.0;
+        for s in samples {
+            let c = if k == 0 { &s.inner } else { &s.outer };
+            if let (true, Some(cr)) = (c.load > 0.0, c.creep) {
+                side[0] += cr.longitudinal.abs();
+                side[1] += cr.lateral.abs();
+                side[2] += cr.spin;
+                side[3] += cr.stick_fraction;
+                n += 1.0;
+            }
+        }
+        if n > 0.0 {
+            side.iter_mut().for_each(|v| *v /= n);
+        }
+    }
+    creep
+}
+
+/// The rows as the time-series CSV.
+fn rows_csv(rows: &[Row]) -> String {
     let mut csv = String::from(
         "time_s,inner_ring_speed_rpm,cage_speed_rpm,cage_speed_ratio,pure_rolling_cage_speed_ratio,\
          creepage_longitudinal_abs_inner,creepage_lateral_abs_inner,creepage_spin_inner_1_m,stick_fraction_inner,\
          creepage_longitudinal_abs_outer,creepage_lateral_abs_outer,creepage_spin_outer_1_m,stick_fraction_outer\n",
     );
-    for r in &rows {
+    for r in rows {
         let _ = write!(
             csv,
             "{},{},{},{},{}",
@@ -208,12 +228,7 @@ fn simulate(
         }
         csv.push('\n');
     }
-    std::fs::write(out.join(format!("timeseries_mu{mu}{suffix}.csv")), csv)
-        .map_err(|e| e.to_string())?;
-    for (name, text) in maps {
-        std::fs::write(out.join(name), text).map_err(|e| e.to_string())?;
-    }
-    Ok(rows)
+    csv
 }
 
 /// Mean of `f` over the rows with a ≤ t < b.

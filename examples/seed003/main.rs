@@ -103,115 +103,15 @@ fn main() -> Result<(), String> {
     let mut approach_csv = String::from(
         "radial_load_n,inlet_distance_ratio,loaded_balls,max_load_inner_n,radial_stiffness_n_per_m,radial_frequency_hz,dry_radial_stiffness_n_per_m,dry_radial_frequency_hz\n",
     );
+    let mut tables = Tables {
+        table: &mut table,
+        csv: &mut csv,
+        mixed: &mut mixed,
+        approach: &mut approach,
+        approach_csv: &mut approach_csv,
+    };
     for fz in RADIAL_LOADS {
-        let overrides = [Override::flag(
-            "--radial-load",
-            "operating.force_z",
-            &format!("{fz} N"),
-        )];
-        let case =
-            load_case("ceramic_45x75 preset", &preset, &overrides).map_err(|e| e.to_string())?;
-        let g = &case.bearing.geometry;
-        let (ball, rings) = (
-            &case.materials.ball.material,
-            &case.materials.rings.material,
-        );
-        let solver = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
-            .map_err(|e| e.to_string())?;
-        let conditions = Conditions {
-            loads: case.loads,
-            inner_speed: case.speed.as_ref().map_or(0.0, |s| s.final_speed()),
-            control: case.raceway_control,
-        };
-        let eq = solver
-            .solve(&conditions, &SolverOptions::default())
-            .map_err(|e| e.to_string())?;
-        let j = (0..eq.balls.len())
-            .max_by(|&a, &b| eq.balls[a].inner.load.total_cmp(&eq.balls[b].inner.load))
-            .ok_or("no balls")?;
-        let contact = eq.balls[j].inner;
-
-        let hertz_stiffness = 1.5 * contact.load / contact.penetration;
-        let inputs_at = |l: f64| dynamic::film_inputs(&case, l);
-        for l in RATIOS {
-            let inputs = inputs_at(l)?;
-            let film = equilibrium_films(g, &eq, &inputs)[j].films[0];
-            let series = lubrication::series_stiffness(hertz_stiffness, film.stiffness);
-            let _ = writeln!(
-                table,
-                "{fz:>7.0} {:>6} {:>9.3} {:>7.3} {:>17.4} {:>9.4} {:>7.4} {:>12.4e} {:>12.4e} {:>13.4e}",
-                ratio_label(l),
-                contact.load,
-                film.critical_ratio,
-                film.flooded_central * 1e6,
-                film.central * 1e6,
-                film.starvation_factor,
-                film.stiffness,
-                hertz_stiffness,
-                series
-            );
-            // Mixed lubrication (docs/model.md §3 model 5) with assumed surfaces.
-            let lambda = film.minimum / MIXED_ROUGHNESS;
-            let e = contact.hertz;
-            let share = MIXED.asperity_share(
-                lambda,
-                contact.load / (std::f64::consts::PI * e.semi_major * e.semi_minor),
-                effective_modulus(ball, rings),
-            );
-            let _ = writeln!(
-                mixed,
-                "{fz:>7.0} {:>6} {:>13.4} {lambda:>7.2} {share:>9.2e}",
-                ratio_label(l),
-                film.minimum * 1e6
-            );
-            let _ = writeln!(
-                csv,
-                "{fz},{l},{},{},{},{},{},{},{hertz_stiffness},{series}",
-                contact.load,
-                film.critical_ratio,
-                film.flooded_central,
-                film.central,
-                film.starvation_factor,
-                film.stiffness
-            );
-        }
-        // The film in the approach, tilts held (Zhang et al. 2020's ring moves in
-        // its radial plane only; under a pure radial load at 15 000 rpm the
-        // free-tilt solution is not found with the film).
-        let options = SolverOptions {
-            prescribed_displacement: [None, None, None, Some(0.0), Some(0.0)],
-            ..SolverOptions::default()
-        };
-        let frequency = |k: f64| (k / ring_mass).sqrt() / std::f64::consts::TAU;
-        let dry = solver
-            .solve(&conditions, &options)
-            .map_err(|e| e.to_string())?;
-        let dry_k = dry.stiffness[2][2];
-        for l in APPROACH_RATIOS {
-            let label = ratio_label(l);
-            match solver.solve_with_films(&conditions, &options, &inputs_at(l)?) {
-                Ok(wet) => {
-                    let k = wet.stiffness[2][2];
-                    let loaded = wet.balls.iter().filter(|b| b.inner.load > 0.0).count();
-                    let max_q = wet.balls.iter().map(|b| b.inner.load).fold(0.0, f64::max);
-                    let _ = writeln!(
-                        approach,
-                        "{fz:>7.0} {label:>6} {loaded:>13} {max_q:>12.3} {k:>11.4e} {:>9.1} {dry_k:>15.4e} {:>13.1}",
-                        frequency(k),
-                        frequency(dry_k)
-                    );
-                    let _ = writeln!(
-                        approach_csv,
-                        "{fz},{l},{loaded},{max_q},{k},{},{dry_k},{}",
-                        frequency(k),
-                        frequency(dry_k)
-                    );
-                }
-                Err(e) => {
-                    let _ = writeln!(approach, "{fz:>7.0} {label:>6}  no equilibrium: {e}");
-                }
-            }
-        }
+        load_rows(&preset, fz, ring_mass, &mut tables)?;
     }
     table.push_str(&mixed);
     table.push_str(&approach);
@@ -229,6 +129,136 @@ fn main() -> Result<(), String> {
     std::fs::write(out.join("approach.csv"), &approach_csv).map_err(|e| e.to_string())?;
     if dynamic_runs {
         std::fs::write(out.join("vibration.csv"), &vibration_csv).map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
+
+/// The tables' texts, filled load by load.
+struct Tables<'a> {
+    table: &'a mut String,
+    csv: &'a mut String,
+    mixed: &'a mut String,
+    approach: &'a mut String,
+    approach_csv: &'a mut String,
+}
+
+/// The rows of radial load `fz` \[N\]: the most loaded ball's inner
+/// contact's film, its mixed lubrication, and the film in the approach
+/// (tilts held) against the dry bearing.
+fn load_rows(preset: &str, fz: f64, ring_mass: f64, tables: &mut Tables) -> Result<(), String> {
+    let Tables {
+        table,
+        csv,
+        mixed,
+        approach,
+        approach_csv,
+    } = tables;
+    let overrides = [Override::flag(
+        "--radial-load",
+        "operating.force_z",
+        &format!("{fz} N"),
+    )];
+    let case = load_case("ceramic_45x75 preset", preset, &overrides).map_err(|e| e.to_string())?;
+    let g = &case.bearing.geometry;
+    let (ball, rings) = (
+        &case.materials.ball.material,
+        &case.materials.rings.material,
+    );
+    let solver = QuasiStaticSolver::new(g, ball, rings, case.contact_stiffness)
+        .map_err(|e| e.to_string())?;
+    let conditions = Conditions {
+        loads: case.loads,
+        inner_speed: case.speed.as_ref().map_or(0.0, |s| s.final_speed()),
+        control: case.raceway_control,
+    };
+    let eq = solver
+        .solve(&conditions, &SolverOptions::default())
+        .map_err(|e| e.to_string())?;
+    let j = (0..eq.balls.len())
+        .max_by(|&a, &b| eq.balls[a].inner.load.total_cmp(&eq.balls[b].inner.load))
+        .ok_or("no balls")?;
+    let contact = eq.balls[j].inner;
+
+    let hertz_stiffness = 1.5 * contact.load / contact.penetration;
+    let inputs_at = |l: f64| dynamic::film_inputs(&case, l);
+    for l in RATIOS {
+        let inputs = inputs_at(l)?;
+        let film = equilibrium_films(g, &eq, &inputs)[j].films[0];
+        let series = lubrication::series_stiffness(hertz_stiffness, film.stiffness);
+        let _ = writeln!(
+            table,
+            "{fz:>7.0} {:>6} {:>9.3} {:>7.3} {:>17.4} {:>9.4} {:>7.4} {:>12.4e} {:>12.4e} {:>13.4e}",
+            ratio_label(l),
+            contact.load,
+            film.critical_ratio,
+            film.flooded_central * 1e6,
+            film.central * 1e6,
+            film.starvation_factor,
+            film.stiffness,
+            hertz_stiffness,
+            series
+        );
+        // Mixed lubrication (docs/model.md §3 model 5) with assumed surfaces.
+        let lambda = film.minimum / MIXED_ROUGHNESS;
+        let e = contact.hertz;
+        let share = MIXED.asperity_share(
+            lambda,
+            contact.load / (std::f64::consts::PI * e.semi_major * e.semi_minor),
+            effective_modulus(ball, rings),
+        );
+        let _ = writeln!(
+            mixed,
+            "{fz:>7.0} {:>6} {:>13.4} {lambda:>7.2} {share:>9.2e}",
+            ratio_label(l),
+            film.minimum * 1e6
+        );
+        let _ = writeln!(
+            csv,
+            "{fz},{l},{},{},{},{},{},{},{hertz_stiffness},{series}",
+            contact.load,
+            film.critical_ratio,
+            film.flooded_central,
+            film.central,
+            film.starvation_factor,
+            film.stiffness
+        );
+    }
+    // The film in the approach, tilts held (Zhang et al. 2020's ring moves in
+    // its radial plane only; under a pure radial load at 15 000 rpm the
+    // free-tilt solution is not found with the film).
+    let options = SolverOptions {
+        prescribed_displacement: [None, None, None, Some(0.0), Some(0.0)],
+        ..SolverOptions::default()
+    };
+    let frequency = |k: f64| (k / ring_mass).sqrt() / std::f64::consts::TAU;
+    let dry = solver
+        .solve(&conditions, &options)
+        .map_err(|e| e.to_string())?;
+    let dry_k = dry.stiffness[2][2];
+    for l in APPROACH_RATIOS {
+        let label = ratio_label(l);
+        match solver.solve_with_films(&conditions, &options, &inputs_at(l)?) {
+            Ok(wet) => {
+                let k = wet.stiffness[2][2];
+                let loaded = wet.balls.iter().filter(|b| b.inner.load > 0.0).count();
+                let max_q = wet.balls.iter().map(|b| b.inner.load).fold(0.0, f64::max);
+                let _ = writeln!(
+                    approach,
+                    "{fz:>7.0} {label:>6} {loaded:>13} {max_q:>12.3} {k:>11.4e} {:>9.1} {dry_k:>15.4e} {:>13.1}",
+                    frequency(k),
+                    frequency(dry_k)
+                );
+                let _ = writeln!(
+                    approach_csv,
+                    "{fz},{l},{loaded},{max_q},{k},{},{dry_k},{}",
+                    frequency(k),
+                    frequency(dry_k)
+                );
+            }
+            Err(e) => {
+                let _ = writeln!(approach, "{fz:>7.0} {label:>6}  no equilibrium: {e}");
+            }
+        }
     }
     Ok(())
 }
