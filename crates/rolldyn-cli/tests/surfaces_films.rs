@@ -136,7 +136,12 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
     let f = lines[0]["frequency_hz"].as_f64().unwrap();
     assert!((f - 22.0 * cage_hz).abs() < 1e-9 * f, "{f}");
     assert!(lines[0]["amplitude_m_s2"].as_f64().unwrap() >= 0.0);
-    assert!(summary["envelope_lines"].is_null());
+    // No spall: the envelope lines are the preset's housing sensor's.
+    assert_eq!(
+        summary["envelope_lines"]["channel"], "sensor_acceleration_m_s2",
+        "{}",
+        summary["envelope_lines"]
+    );
     let check = json(&["check", "-", "--json"], Some(&case));
     assert_eq!(check["surfaces"][0]["part"], "outer");
     assert_eq!(check["surfaces"][0]["max_order"], 22);
@@ -218,6 +223,8 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
             &d,
             "--kind",
             "spectrogram",
+            "--channel",
+            "inner_ring_acceleration_z_m_s2",
             "--segment",
             "16",
             "--from",
