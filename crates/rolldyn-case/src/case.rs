@@ -123,6 +123,9 @@ pub struct Case {
     pub planar: bool,
     /// Gravity along −z.
     pub gravity: bool,
+    /// The bearing's damping between its rings as a time τ \[s\]
+    /// (c = τ k_r; None: none).
+    pub bearing_damping: Option<f64>,
     /// The lubricant film in the normal approach.
     pub film_in_approach: bool,
     /// Mixed lubrication (`[model.mixed_lubrication]`; None: off).
@@ -286,6 +289,17 @@ fn checked<D: Dimension>(
         Some(q) => rule(q.si)
             .map(|_| Some(q.si))
             .map_err(|r| Invalid::new(key, Some(q.to_string()), r)),
+    }
+}
+
+/// The bearing damping's time τ: at most 1e-3 s (a bearing's published
+/// range is (0.25–2.5)·10⁻⁵ s; 1e-3 s would damp a 1 kHz mode
+/// supercritically).
+fn bearing_damping_time(v: f64) -> Result<(), String> {
+    if (0.0..=1e-3).contains(&v) {
+        Ok(())
+    } else {
+        Err("must lie in [0, 1e-3] s (rolling bearings: (0.25–2.5)e-5 s, docs/dynamics.md \"Mounting\")".into())
     }
 }
 
@@ -492,6 +506,11 @@ impl Case {
             traction_integration,
             planar: raw.model.planar.unwrap_or(false),
             gravity: raw.model.gravity.unwrap_or(false),
+            bearing_damping: checked(
+                "model.bearing_damping",
+                &raw.model.bearing_damping,
+                bearing_damping_time,
+            )?,
             film_in_approach,
             mixed_lubrication,
             inner_ring_mass: rings.inner_ring_mass,

@@ -450,3 +450,34 @@ fn a_shaft_refuses_prescribed_ring_displacements() {
         );
     }
 }
+
+/// `model.bearing_damping` τ adds c = τ k_r radially to the inner ring's
+/// support, k_r the quasi-static radial stiffness at the operating point;
+/// a τ outside [0, 1e-3] s, an `[outer_ring]` and a bearing set are
+/// refused naming the key.
+#[test]
+fn bearing_damping_is_tau_times_the_radial_stiffness() {
+    let preset = rolldyn_case::presets::find("6205").unwrap().text;
+    let case = load_case("6205", preset, &[]).unwrap();
+    let k = case.radial_stiffness().unwrap();
+    let support = case.dynamics_parameters().unwrap().inner_support;
+    assert_eq!(support.damping, [0.0, 1.25e-5 * k, 1.25e-5 * k]);
+    // Stiffer under a larger load, so more damping.
+    let heavy = preset.replacen("force_z = \"100 N\"", "force_z = \"1 kN\"", 1);
+    let heavy = load_case("6205", &heavy, &[]).unwrap();
+    assert!(heavy.radial_stiffness().unwrap() > 2.0 * k);
+    let e = err(&preset.replacen(
+        "bearing_damping = \"1.25e-5 s\"",
+        "bearing_damping = \"2e-3 s\"",
+        1,
+    ));
+    check(&e, "model.bearing_damping", 44, &["[0, 1e-3] s"]);
+    let with_housing =
+        format!("{preset}\n[outer_ring]\nmass = \"1 kg\"\nhousing_stiffness = \"1e8 N/m\"\n");
+    let e = load_case("6205", &with_housing, &[])
+        .unwrap()
+        .dynamics_parameters()
+        .unwrap_err();
+    assert_eq!(e.key, "model.bearing_damping");
+    assert!(e.rule.contains("[outer_ring]"), "{}", e.rule);
+}

@@ -25,6 +25,12 @@ pub struct MountingReport {
     pub bearing_radial_stiffness_n_per_m: Option<f64>,
     /// The inner ring on the bearing with a rigid housing \[Hz\].
     pub rotor_on_bearing_hz: Option<f64>,
+    /// The bearing's damping between its rings (`model.bearing_damping`
+    /// τ k_r) \[N·s/m\] (null without it).
+    pub bearing_damping_n_s_per_m: Option<f64>,
+    /// The damping ratio it gives the inner ring's mode on the bearing
+    /// (null without it).
+    pub rotor_on_bearing_damping_ratio: Option<f64>,
     /// The radial chain rotor–bearing–housing \[Hz\], lower first.
     pub chain_hz: Option<[f64; 2]>,
     /// Gravity on.
@@ -57,24 +63,13 @@ impl MountingReport {
         let housing = outer.map(|o| {
             rolldyn_case::mounting::oscillator(o.mass, o.housing.stiffness[2], o.housing.damping[2])
         });
-        // Radial stiffness along the radial load, from the quasi-static
-        // solution's 5×5 stiffness over (x, y, z, θ_y, θ_z).
-        let bearing = rolldyn_case::simulation::QuasiStatic::from_case(case)
-            .ok()
-            .and_then(|q| q.solve().ok())
-            .map(|sol| {
-                let (fy, fz) = (case.loads.force[1], case.loads.force[2]);
-                let norm = fy.hypot(fz);
-                let (cy, cz) = if norm > 0.0 {
-                    (fy / norm, fz / norm)
-                } else {
-                    (0.0, 1.0)
-                };
-                let k = &sol.stiffness;
-                cy * cy * k[1][1] + cy * cz * (k[1][2] + k[2][1]) + cz * cz * k[2][2]
-            })
-            .filter(|k| k.is_finite() && *k > 0.0);
+        let bearing = case.radial_stiffness().ok();
         let m = p.inner_ring_mass;
+        let bearing_damping = case
+            .bearing_damping
+            .filter(|&tau| tau > 0.0)
+            .zip(bearing)
+            .map(|(tau, k)| tau * k);
         Some(Self {
             inner_ring_mass_kg: m,
             outer_ring_mass_kg: outer.map(|o| o.mass),
@@ -84,6 +79,10 @@ impl MountingReport {
             housing_damping_ratio: housing.map(|h| h.1),
             bearing_radial_stiffness_n_per_m: bearing,
             rotor_on_bearing_hz: bearing.map(|k| rolldyn_case::mounting::oscillator(m, k, 0.0).0),
+            bearing_damping_n_s_per_m: bearing_damping,
+            rotor_on_bearing_damping_ratio: bearing
+                .zip(bearing_damping)
+                .map(|(k, c)| rolldyn_case::mounting::oscillator(m, k, c).1),
             chain_hz: bearing.zip(outer).map(|(k, o)| {
                 rolldyn_case::mounting::chain_frequencies(m, k, o.mass, o.housing.stiffness[2])
             }),
@@ -152,6 +151,15 @@ impl MountingReport {
             let _ = writeln!(
                 out,
                 "  inner ring on the bearing           {f:.1} Hz (rigid housing)"
+            );
+        }
+        if let (Some(c), Some(z)) = (
+            self.bearing_damping_n_s_per_m,
+            self.rotor_on_bearing_damping_ratio,
+        ) {
+            let _ = writeln!(
+                out,
+                "  bearing damping between the rings   {c:.3e} N·s/m (model.bearing_damping), damping ratio {z:.3} of that mode"
             );
         }
         if let Some([lo, hi]) = self.chain_hz {

@@ -162,7 +162,7 @@ impl Case {
                 .load_profile
                 .clone()
                 .unwrap_or(LoadProfile::Constant(self.loads)),
-            inner_support: self.inner_support,
+            inner_support: self.inner_support_with_bearing_damping()?,
             outer_ring: self.outer_ring,
             sliding_outer_ring: None,
             rolling_hysteresis: self.rolling_hysteresis,
@@ -185,6 +185,74 @@ impl Case {
 }
 
 impl Case {
+    /// The bearing's radial stiffness k_r \[N/m\] at the case's operating
+    /// point (its loads and final speed, dry, the case's raceway control
+    /// and held displacements): the quasi-static 5 × 5 stiffness along the
+    /// radial load (along z without one). Err: why the quasi-static solve
+    /// failed, or a stiffness that is not positive.
+    pub fn radial_stiffness(&self) -> Result<f64, String> {
+        let solver = rolldyn::quasistatic::QuasiStaticSolver::new(
+            &self.bearing.geometry,
+            &self.materials.ball.material,
+            &self.materials.rings.material,
+            self.contact_stiffness,
+        )
+        .map_err(|e| e.to_string())?;
+        let conditions = rolldyn::quasistatic::Conditions {
+            loads: self.loads,
+            inner_speed: self.speed.as_ref().map_or(0.0, |s| s.final_speed()),
+            control: self.raceway_control,
+        };
+        let k = solver
+            .solve(&conditions, &self.solver_options())
+            .map_err(|e| e.to_string())?
+            .stiffness;
+        let (fy, fz) = (self.loads.force[1], self.loads.force[2]);
+        let norm = fy.hypot(fz);
+        let (cy, cz) = if norm > 0.0 {
+            (fy / norm, fz / norm)
+        } else {
+            (0.0, 1.0)
+        };
+        let radial = cy * cy * k[1][1] + cy * cz * (k[1][2] + k[2][1]) + cz * cz * k[2][2];
+        if radial.is_finite() && radial > 0.0 {
+            Ok(radial)
+        } else {
+            Err(format!("a radial stiffness of {radial} N/m"))
+        }
+    }
+
+    /// `inner_ring`'s support with the bearing's damping between the rings
+    /// (`model.bearing_damping` τ: c = τ k_r radially, on the inner ring
+    /// against the fixed outer ring), added to any support damping the
+    /// case gives.
+    fn inner_support_with_bearing_damping(&self) -> Result<rolldyn::dynamics::Support, Invalid> {
+        let mut support = self.inner_support;
+        let Some(tau) = self.bearing_damping.filter(|&t| t > 0.0) else {
+            return Ok(support);
+        };
+        let value = Some(format!("{tau:e} s"));
+        if self.outer_ring.is_some() {
+            return Err(Invalid::new(
+                "model.bearing_damping",
+                value,
+                "acts between the rings with a fixed outer ring: with [outer_ring] set it to \"0 s\" and give the damping as inner_ring.support_radial_damping and outer_ring.housing_damping",
+            ));
+        }
+        let k = self.radial_stiffness().map_err(|e| {
+            Invalid::new(
+                "model.bearing_damping",
+                value,
+                format!(
+                    "needs the bearing's quasi-static radial stiffness at the operating point: {e}"
+                ),
+            )
+        })?;
+        support.damping[1] += tau * k;
+        support.damping[2] += tau * k;
+        Ok(support)
+    }
+
     /// The ball–pocket law with its constants: K_bc of the hertz laws from
     /// the ball and pocket curvatures and the ball and cage materials.
     fn pocket_law(&self) -> Result<PocketLaw, Invalid> {

@@ -48,6 +48,10 @@ pub struct RawModel {
     pub planar: Option<bool>,
     /// Gravity along −z (default false).
     pub gravity: Option<bool>,
+    /// The bearing's damping between its rings as a time τ: c = τ k_r,
+    /// k_r the bearing's radial stiffness at the case's operating point
+    /// (stiffness-proportional damping; default none).
+    pub bearing_damping: Option<Quantity<Time>>,
     /// Lubricant film in the normal approach (docs/model.md §4): elastic
     /// compression δ + h, the film a state of each contact following its
     /// steady value (default false; needs a traction law with a lubricant).

@@ -52,6 +52,12 @@ fn refuse_unsupported(case: &Case) -> Result<(), SimulationError> {
     if case.sensor.is_some() {
         return refuse("sensor", "the sensor chain");
     }
+    if case.bearing_damping.is_some() {
+        return refuse(
+            "model.bearing_damping",
+            "a damping between one bearing's rings (a shaft's bearings damp through their contacts and supports)",
+        );
+    }
     if case.unbalance.is_some() {
         return refuse(
             "operating.unbalance",
