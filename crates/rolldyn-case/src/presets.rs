@@ -4,9 +4,8 @@
 //!
 //! Each bearing is mounted as on a machine (docs/dynamics.md, "Mounting"):
 //! its inner ring carries a shaft share, the shaft's other bearing holds
-//! the ring's tilt, gravity acts, the bearing damps between its rings
-//! (`model.bearing_damping`), and an accelerometer on the housing records
-//! what a test rig's would (`[sensor]`). Those lines end in [`MOUNTING_TAG`];
+//! the ring's tilt, gravity acts, and an accelerometer on the housing
+//! records what a test rig's would (`[sensor]`). Those lines end in [`MOUNTING_TAG`];
 //! [`Preset::without_mounting`] gives the bearing as its source paper
 //! models it, free ring and all (the examples reproduce the papers so).
 
@@ -43,7 +42,7 @@ pub fn without_mounting(text: &str) -> String {
 }
 
 /// The `[assumptions]` entries of a case file's mounting, key and text.
-pub const MOUNTING_ASSUMPTIONS: [(&str, &str); 5] = [
+pub const MOUNTING_ASSUMPTIONS: [(&str, &str); 4] = [
     (
         "inner_ring.mass",
         "mounting: the ring with half a solid steel shaft of the bore diameter, 10 bores long, that turns with it (docs/dynamics.md, \\\"Mounting\\\"); write your shaft's share when you know it",
@@ -55,10 +54,6 @@ pub const MOUNTING_ASSUMPTIONS: [(&str, &str); 5] = [
     (
         "model.gravity",
         "mounting: a horizontal shaft; the weights of the shaft share, the balls and the cage load the bearing",
-    ),
-    (
-        "model.bearing_damping",
-        "mounting: the bearing's damping between its rings, c = tau k_r, tau = 1.25e-5 s (the default of the ROSS rotordynamics library's ball-bearing element, whose documentation gives (0.25-2.5)e-5 s as the typical range for rolling bearings), k_r the quasi-static radial stiffness at the operating point; it stands for the lubricant's, the fits' and the housing joints' damping, which the contacts' material law does not carry",
     ),
     (
         "sensor",
@@ -180,7 +175,6 @@ mod tests {
             assert_eq!(case.prescribed_displacement[3..], [Some(0.0), Some(0.0)]);
             assert!(case.gravity, "{name}");
             assert!(case.sensor.is_some(), "{name}: no housing sensor");
-            assert_eq!(case.bearing_damping, Some(1.25e-5), "{name}");
             let bare_text = without_mounting(&text);
             assert!(!bare_text.contains(MOUNTING_TAG));
             assert_eq!(bare_text.lines().count(), text.lines().count());
@@ -188,7 +182,6 @@ mod tests {
             assert_eq!(bare.prescribed_displacement, [None; 5], "{name}");
             assert!(!bare.gravity, "{name}");
             assert!(bare.sensor.is_none(), "{name}");
-            assert_eq!(bare.bearing_damping, None, "{name}");
             for (key, assumption) in MOUNTING_ASSUMPTIONS {
                 let line = format!("\"{key}\" = \"{assumption}\"  {MOUNTING_TAG}");
                 assert!(text.contains(&line), "{name}: {line}");

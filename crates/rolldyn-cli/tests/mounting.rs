@@ -100,3 +100,48 @@ fn a_run_starts_seated_in_its_housing() {
     assert!(rms < 0.5, "housing velocity RMS {rms} mm/s");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `model.bearing_damping` τ: `check` reports c = τ k_r and the damping
+/// ratio c/(2√(k_r m)) of the ring's mode on the bearing; a run closes its
+/// energy balance with the damper's power in the ledger.
+#[test]
+fn bearing_damping_is_reported_and_dissipates() {
+    let damping = "model.bearing_damping=\"1.25e-5 s\"";
+    let o = rolldyn(&["check", "-", "--set", damping, "--json"], Some(&preset()));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let m = &v["mounting"];
+    let f = |k: &str| m[k].as_f64().unwrap();
+    let (k, c, mass) = (
+        f("bearing_radial_stiffness_n_per_m"),
+        f("bearing_damping_n_s_per_m"),
+        f("inner_ring_mass_kg"),
+    );
+    assert!((c / (1.25e-5 * k) - 1.0).abs() < 1e-12, "{m}");
+    let zeta = f("rotor_on_bearing_damping_ratio");
+    assert!((zeta - c / (2.0 * (k * mass).sqrt())).abs() < 1e-12, "{m}");
+    assert!(zeta > 0.01 && zeta < 0.2, "{zeta}");
+    let dir = temp_dir("bearing-damping");
+    let o = rolldyn(
+        &[
+            "run",
+            "-",
+            "--set",
+            damping,
+            "--duration",
+            "10 ms",
+            "-o",
+            dir.to_str().unwrap(),
+        ],
+        Some(&preset()),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["accuracy"]["status"], "ok");
+    let support = s["mean_power_loss_by_component_w"]["support_damping"]
+        .as_f64()
+        .unwrap();
+    assert!(support > 0.0, "{support}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -183,8 +183,7 @@ impl CatalogueBearing {
             "\n[model]\n\
              traction = { law = \"ehl\", eyring_stress = \"5 MPa\", limiting_shear_coefficient = 0.08 }  # assumed: see [assumptions]\n\
              traction_integration = { method = \"graded\", across = 16, along = 8 }   # see [assumptions]\n\
-             gravity = true                       # mounting: see [assumptions]\n\
-             bearing_damping = \"1.25e-5 s\"         # mounting: see [assumptions]\n\n\
+             gravity = true                       # mounting: see [assumptions]\n\n\
              [sensor]                             # mounting: see [assumptions]\n\n\
              [solver]\n\
              duration = \"0.1 s\"                   # about two cage revolutions at 3000 rpm\n\
