@@ -453,3 +453,32 @@ fn spindle_pair_in_motion_is_converged_at_its_defaults() {
     }
     assert_eq!(verify["status"], "ok");
 }
+
+/// The bearing's damping between its rings (`model.bearing_damping`, the
+/// ROSS default τ = 1.25e-5 s) on the 6205 preset with the fault matrix's
+/// outer-race pit (D_w/15 × D_w/28 at the load zone's centre): an impact
+/// run with the damper in its ledger, its first 20 ms.
+#[test]
+fn bearing_damping_closes_its_balance() {
+    let case = String::from_utf8(rolldyn(&["new", "--preset", "6205"], None).stdout).unwrap();
+    let (s, _) = run(
+        "bearing-damping",
+        &[
+            "--duration",
+            "20 ms",
+            "--verify",
+            "--set",
+            "model.bearing_damping=\"1.25e-5 s\"",
+            "--set",
+            "surface.outer.spall=[{ position = \"90 deg\", length = \"0.529336 mm\", depth = \"0.283573 mm\" }]",
+        ],
+        Some(&case),
+    );
+    assert_converged("bearing damping", &s, &IMPACT_MEANS);
+    assert!(
+        s["mean_power_loss_by_component_w"]["support_damping"]
+            .as_f64()
+            .unwrap()
+            > 0.0
+    );
+}
