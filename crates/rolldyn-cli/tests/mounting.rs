@@ -73,11 +73,9 @@ fn check_reports_the_mounting_frequencies() {
 /// with the seating taken out). Seated, the housing barely moves.
 #[test]
 fn a_run_starts_seated_in_its_housing() {
-    let dir = temp_dir("mounting-seated");
-    let o = rolldyn(
+    let summary = run_preset(
+        "mounting-seated",
         &[
-            "run",
-            "-",
             "--set",
             PEDESTAL,
             "--set",
@@ -88,17 +86,23 @@ fn a_run_starts_seated_in_its_housing() {
             "operating.force_z=\"-100 N\"",
             "--duration",
             "20 ms",
-            "-o",
-            dir.to_str().unwrap(),
         ],
-        Some(&preset()),
     );
-    assert!(o.status.success(), "{}", stderr(&o));
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     let rms = summary["outer_ring_velocity_rms_z_mm_s"].as_f64().unwrap();
     assert!(rms < 0.5, "housing velocity RMS {rms} mm/s");
+}
+
+/// The summary of a run of the 6205 preset with `args`.
+fn run_preset(tag: &str, args: &[&str]) -> serde_json::Value {
+    let dir = temp_dir(tag);
+    let mut all = vec!["run", "-", "-o", dir.to_str().unwrap()];
+    all.extend_from_slice(args);
+    let o = rolldyn(&all, Some(&preset()));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     std::fs::remove_dir_all(&dir).ok();
+    summary
 }
 
 /// `model.bearing_damping` τ: `check` reports c = τ k_r and the damping
@@ -121,27 +125,13 @@ fn bearing_damping_is_reported_and_dissipates() {
     let zeta = f("rotor_on_bearing_damping_ratio");
     assert!((zeta - c / (2.0 * (k * mass).sqrt())).abs() < 1e-12, "{m}");
     assert!(zeta > 0.01 && zeta < 0.2, "{zeta}");
-    let dir = temp_dir("bearing-damping");
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--set",
-            damping,
-            "--duration",
-            "10 ms",
-            "-o",
-            dir.to_str().unwrap(),
-        ],
-        Some(&preset()),
+    let s = run_preset(
+        "bearing-damping",
+        &["--set", damping, "--duration", "10 ms"],
     );
-    assert!(o.status.success(), "{}", stderr(&o));
-    let s: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     assert_eq!(s["accuracy"]["status"], "ok");
     let support = s["mean_power_loss_by_component_w"]["support_damping"]
         .as_f64()
         .unwrap();
     assert!(support > 0.0, "{support}");
-    std::fs::remove_dir_all(&dir).ok();
 }
