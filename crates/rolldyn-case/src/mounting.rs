@@ -2,7 +2,8 @@
 //! frequencies `rolldyn check` reports, and a rule for the share of a
 //! shaft the inner ring carries and the pedestal housing the outer ring
 //! sits in. The presets and `rolldyn new --bearing` write the shaft share,
-//! the held tilt and gravity (`crate::presets::MOUNTING_ASSUMPTIONS`); the pedestal is not yet
+//! the held tilt, gravity and a housing sensor
+//! (`crate::presets::MOUNTING_ASSUMPTIONS`); the pedestal is not yet
 //! written into them (docs/dynamics.md says why).
 //!
 //! * **Shaft share.** The inner ring carries half of a solid steel shaft of
