@@ -332,8 +332,15 @@ impl Elements {
             },
             point,
         });
-        let kinematics =
-            self.race_kinematics(ring, ball, &geometry, &ellipse, load, &entrainment, film);
+        let kinematics = self.race_kinematics(
+            ring,
+            ball,
+            &geometry,
+            &ellipse,
+            load,
+            (&entrainment, u),
+            film,
+        );
         let traction = self.race_traction(want, &kinematics, asperity_share);
         let (slip, relative_spin) = (kinematics.slip, kinematics.relative_spin);
         // Rolling axis e_a = n × û and the rolling rate about it.
@@ -459,7 +466,7 @@ impl Elements {
         geometry: &TorusContact,
         ellipse: &HertzResult,
         load: f64,
-        entrainment: &Vector3<f64>,
+        (entrainment, entrainment_speed): (&Vector3<f64>, f64),
         film: f64,
     ) -> ContactKinematics {
         let (q, v, w) = (&ball.centre, &ball.velocity, &ball.omega);
@@ -491,7 +498,7 @@ impl Elements {
             relative_spin: w - ring.omega,
             conditions: ContactConditions {
                 film,
-                entrainment_speed: entrainment.norm(),
+                entrainment_speed,
                 rolling_velocity: entrainment.dot(&rolling_direction),
             },
         }
