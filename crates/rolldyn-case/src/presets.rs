@@ -42,7 +42,7 @@ pub fn without_mounting(text: &str) -> String {
 }
 
 /// The `[assumptions]` entries of a case file's mounting, key and text.
-pub const MOUNTING_ASSUMPTIONS: [(&str, &str); 4] = [
+pub const MOUNTING_ASSUMPTIONS: [(&str, &str); 5] = [
     (
         "inner_ring.mass",
         "mounting: the ring with half a solid steel shaft of the bore diameter, 10 bores long, that turns with it (docs/dynamics.md, \\\"Mounting\\\"); write your shaft's share when you know it",
@@ -54,6 +54,10 @@ pub const MOUNTING_ASSUMPTIONS: [(&str, &str); 4] = [
     (
         "model.gravity",
         "mounting: a horizontal shaft; the weights of the shaft share, the balls and the cage load the bearing",
+    ),
+    (
+        "model.bearing_damping",
+        "mounting: the bearing's damping between its rings, c = tau k_r with tau = 1.25e-5 s on its quasi-static radial stiffness, the ROSS rotordynamics library's ball-bearing default (typical range 0.25e-5 to 2.5e-5 s; docs/dynamics.md, \\\"Bearing damping\\\"): the lubricant, fits and housing joints damp the ring's mode on the bearing, which the contacts' material law leaves undamped; write your rig's when you know it",
     ),
     (
         "sensor",

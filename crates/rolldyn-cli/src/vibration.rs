@@ -161,6 +161,10 @@ pub struct SensorSummary {
     pub kurtosis: Option<f64>,
     /// Samples of the whole run beyond the ADC's range (clipped).
     pub clipped_samples: u64,
+    /// The accelerometer's white noise, RMS over 0 to half the sample
+    /// rate (`sensor.noise`) \[m/s²\]: a record whose RMS is within twice
+    /// it reads mostly its own noise.
+    pub noise_rms_m_s2: f64,
 }
 
 /// The sensor's indicators over `series` (the window); None without a
@@ -178,6 +182,7 @@ pub fn sensor_summary(
         crest_factor: (rms > 0.0).then_some(crest_factor),
         kurtosis: (rms > 0.0).then_some(kurtosis),
         clipped_samples: sensor.clipped(),
+        noise_rms_m_s2: sensor.spec().noise_rms,
     })
 }
 
