@@ -60,6 +60,25 @@ pub struct Change {
     pub relative_change: f64,
     /// The limit it is held to.
     pub limit: f64,
+    /// How much the run's own value moves within its averaging window:
+    /// |first half − second half| / |value| (null when the window has
+    /// fewer than two blocks of samples or a half has no value).
+    pub window_spread: Option<f64>,
+}
+
+impl Change {
+    /// Beyond its limit.
+    pub fn beyond(&self) -> bool {
+        self.relative_change > self.limit
+    }
+
+    /// Beyond its limit, but by no more than it moves between the halves
+    /// of the run's own window: a statistic the window is too short to
+    /// settle, whatever the tolerance.
+    pub fn within_window_spread(&self) -> bool {
+        self.window_spread
+            .is_some_and(|spread| self.relative_change <= spread)
+    }
 }
 
 /// The result of `run --verify`.
@@ -86,9 +105,27 @@ pub struct Verification {
     pub worst_ratio_to_limit: f64,
     /// `ok` or `warning`.
     pub status: &'static str,
+    /// Why a `warning`: `tolerance` when a quantity beyond its limit moved
+    /// more than it does between the halves of the run's averaging window
+    /// (tighten the tolerances), `window` when every one moved no more
+    /// than that (the window is too short for them: run longer); null
+    /// when `ok`.
+    pub cause: Option<&'static str>,
 }
 
 impl Verification {
+    /// The `cause` of a comparison's `changes` (null when none is beyond
+    /// its limit).
+    pub fn cause_of(changes: &[Change]) -> Option<&'static str> {
+        let mut beyond = changes.iter().filter(|c| c.beyond()).peekable();
+        beyond.peek()?;
+        Some(if beyond.all(Change::within_window_spread) {
+            "window"
+        } else {
+            "tolerance"
+        })
+    }
+
     /// The line `rolldyn run --verify` prints: the tighter settings and
     /// the largest change against its limit.
     pub fn line(&self) -> String {
@@ -221,11 +258,24 @@ pub fn warning(accuracy: &Accuracy) -> Option<String> {
         let moved: Vec<String> = v
             .changes
             .iter()
-            .filter(|c| c.relative_change > c.limit)
-            .map(|c| format!("{} by {:.2} %", c.key, 100.0 * c.relative_change))
+            .filter(|c| c.beyond())
+            .map(|c| match c.window_spread {
+                Some(spread) => format!(
+                    "{} by {:.2} % (between its window's halves: {:.2} %)",
+                    c.key,
+                    100.0 * c.relative_change,
+                    100.0 * spread
+                ),
+                None => format!("{} by {:.2} %", c.key, 100.0 * c.relative_change),
+            })
             .collect();
+        let verdict = if v.cause == Some("window") {
+            "each by no more than it moves between the halves of the run's averaging window: statistics the window is too short to settle, not an integration error; run longer (--duration) before reading them to better than that"
+        } else {
+            "the results are not converged at these settings"
+        };
         lines.push(format!(
-            "warning: --verify: at ten times tighter tolerances{} {} moved beyond their limits ({} % for means and loads, {} % for vibration); the results are not converged at these settings",
+            "warning: --verify: at ten times tighter tolerances{} {} moved beyond their limits ({} % for means and loads, {} % for vibration); {verdict}",
             if v.traction_grid.is_some() {
                 " and a finer traction grid"
             } else {
@@ -263,5 +313,39 @@ mod tests {
         assert!(fixed.hint.unwrap().contains("solver.time_step"));
         let off = assess(-0.1, -1e-4, 1e-3, "dopri5", Some(1e-3), None);
         assert!(off.hint.unwrap().contains("energy_tolerance = 0"));
+    }
+
+    fn change(relative_change: f64, limit: f64, window_spread: Option<f64>) -> Change {
+        Change {
+            key: "k".into(),
+            value: 1.0,
+            reference: 1.0,
+            relative_change,
+            limit,
+            window_spread,
+        }
+    }
+
+    /// A warning's cause is the window only when every quantity beyond its
+    /// limit moved no more than it does between its window's halves.
+    #[test]
+    fn the_cause_of_a_warning_is_the_window_only_when_every_change_is_within_its_spread() {
+        let within = change(0.08, 0.05, Some(0.1));
+        let beyond = change(0.08, 0.05, Some(0.02));
+        let unsplit = change(0.08, 0.05, None);
+        let passing = change(0.001, 0.01, Some(0.0));
+        assert_eq!(Verification::cause_of(std::slice::from_ref(&passing)), None);
+        assert_eq!(
+            Verification::cause_of(&[passing.clone(), within.clone()]),
+            Some("window")
+        );
+        assert_eq!(
+            Verification::cause_of(&[within.clone(), beyond]),
+            Some("tolerance")
+        );
+        assert_eq!(
+            Verification::cause_of(&[within, unsplit]),
+            Some("tolerance")
+        );
     }
 }

@@ -128,7 +128,6 @@ pub struct PowerSummary {
 /// unbalance, whose mean over whole periods vanishes.
 pub fn summarise(
     window: &crate::run_stats::Window,
-    stats: &crate::run_stats::RunStatistics,
     rotor_inertia: Option<f64>,
     lubrication_note: Option<String>,
 ) -> PowerSummary {
@@ -142,7 +141,7 @@ pub fn summarise(
     let span = t1 - t0;
     let rate = |name: &str| {
         if span > 0.0 {
-            (stats.last(name) - window.first(name)) / span
+            (window.last(name) - window.first(name)) / span
         } else {
             0.0
         }
@@ -154,7 +153,7 @@ pub fn summarise(
         Some(j) if span > 0.0 => {
             let (w0, w1) = (
                 window.first("inner_ring_speed_rpm") * rpm,
-                stats.last("inner_ring_speed_rpm") * rpm,
+                window.last("inner_ring_speed_rpm") * rpm,
             );
             0.5 * j * (w1 * w1 - w0 * w0) / span
         }

@@ -615,9 +615,12 @@ pub fn run_and_verify(
                 reference: reference_value,
                 relative_change,
                 limit: VERIFY_LIMIT_MEANS,
+                // A set's statistics are not split into halves.
+                window_spread: None,
             });
         }
     }
+    let cause = Verification::cause_of(&changes);
     summary.verify = Some(Verification {
         relative_tolerance: reference.relative_tolerance,
         energy_tolerance: reference.energy_tolerance,
@@ -628,6 +631,7 @@ pub fn run_and_verify(
         changes,
         worst_ratio_to_limit: worst,
         status: if worst <= 1.0 { "ok" } else { "warning" },
+        cause,
     });
     let json = crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
     RunDir::new(dir)

@@ -9,7 +9,7 @@ use crate::accuracy::{
 };
 use crate::power_channels::PowerSummary;
 use crate::run_options::DEFAULT_SAMPLE_RATE;
-use crate::run_stats::RunStatistics;
+use crate::run_stats::{RunStatistics, Window};
 use crate::vibration::VibrationSummary;
 use rolldyn::dynamics::BearingModel;
 use rolldyn::integrate::{IntegrationStats, RunEnd};
@@ -103,6 +103,11 @@ pub struct Summary {
     pub energy_balance_relative_error: f64,
     /// How accurate the run is (docs/cli.md).
     pub accuracy: crate::accuracy::Accuracy,
+    /// The quantities `--verify` compares over each half of the averaging
+    /// window (empty with fewer than two blocks of samples in it): how
+    /// much they move within the window.
+    #[serde(skip)]
+    pub window_halves: Vec<(&'static str, [f64; 2])>,
 }
 
 /// A growing spall at the run's end (`summary.json`).
@@ -243,8 +248,47 @@ pub(crate) fn summarise(
     integration: IntegrationStats,
     end: &RunEnd,
 ) -> Summary {
+    let over = |window: &Window| {
+        summary_over(
+            window,
+            source,
+            case,
+            model,
+            stats,
+            duration,
+            wall,
+            settings,
+            integration,
+            end,
+        )
+    };
     // Means over the second half of the run (the first half is transient).
-    let window = stats.window();
+    let mut summary = over(&stats.window());
+    if let Some([first, second]) = stats.window_halves() {
+        let (first, second) = (compared(&over(&first)), compared(&over(&second)));
+        summary.window_halves = first
+            .into_iter()
+            .zip(second)
+            .map(|((key, a, ..), (_, b, ..))| (key, [a, b]))
+            .collect();
+    }
+    summary
+}
+
+/// The summary with its statistics over `window`.
+#[allow(clippy::too_many_arguments)]
+fn summary_over(
+    window: &Window,
+    source: &str,
+    case: &Case,
+    model: &BearingModel,
+    stats: &RunStatistics,
+    duration: f64,
+    wall: f64,
+    settings: &SolverSettings,
+    integration: IntegrationStats,
+    end: &RunEnd,
+) -> Summary {
     let [window_start, t_end] = window.span();
     let inner_speed = window.mean("inner_ring_speed_rpm");
     let cage_speed = window.mean("cage_speed_rpm");
@@ -327,8 +371,7 @@ pub(crate) fn summarise(
         spall_growth: spall_growth(model, t_end, characteristic.bpfo),
         sensor: crate::vibration::sensor_summary(&signal, model.sensor()),
         power: crate::power_channels::summarise(
-            &window,
-            stats,
+            window,
             model.parameters().drive.as_ref().map(|d| d.inertia),
             case.lubrication_note(),
         ),
@@ -349,6 +392,7 @@ pub(crate) fn summarise(
             settings.relative_tolerance,
             settings.energy_tolerance,
         ),
+        window_halves: Vec::new(),
     }
 }
 
@@ -454,14 +498,22 @@ pub fn verify(
         }
         let relative_change = (value - reference_value).abs() / reference_value.abs();
         worst = worst.max(relative_change / limit);
+        let window_spread = run
+            .window_halves
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map(|(_, [a, b])| (a - b).abs() / value.abs())
+            .filter(|spread| spread.is_finite());
         changes.push(Change {
             key: key.into(),
             value,
             reference: reference_value,
             relative_change,
             limit,
+            window_spread,
         });
     }
+    let cause = Verification::cause_of(&changes);
     Verification {
         relative_tolerance: reference.relative_tolerance,
         energy_tolerance,
@@ -472,5 +524,6 @@ pub fn verify(
         changes,
         worst_ratio_to_limit: worst,
         status: if worst <= 1.0 { "ok" } else { "warning" },
+        cause,
     }
 }

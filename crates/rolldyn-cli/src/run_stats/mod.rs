@@ -407,15 +407,41 @@ impl RunStatistics {
     /// The averaging window: the second half of the run (from the block
     /// holding half the last sample's time).
     pub fn window(&self) -> Window<'_> {
+        self.window_over(self.window_start()..self.blocks.len())
+    }
+
+    /// The averaging window's two halves (its blocks split in the middle),
+    /// for how much its statistics move within it; None with fewer than
+    /// two blocks of samples in it.
+    pub fn window_halves(&self) -> Option<[Window<'_>; 2]> {
+        let from = self.window_start();
+        let to = self.blocks.len();
+        let middle = from + (to - from) / 2;
+        let filled = |range: std::ops::Range<usize>| self.blocks[range].iter().any(|b| b.count > 0);
+        (middle > from && filled(from..middle) && filled(middle..to))
+            .then(|| [self.window_over(from..middle), self.window_over(middle..to)])
+    }
+
+    fn window_start(&self) -> usize {
         let t_end = self.last.first().copied().unwrap_or(0.0);
-        let from = self.block_of(0.5 * t_end).min(self.blocks.len());
+        self.block_of(0.5 * t_end).min(self.blocks.len())
+    }
+
+    /// The window of `blocks`; it ends at the first sample of the next
+    /// block that has one, or at the run's last sample.
+    fn window_over(&self, blocks: std::ops::Range<usize>) -> Window<'_> {
         let mut merged = Block::new(self.names.len());
-        for block in &self.blocks[from..] {
+        for block in &self.blocks[blocks.clone()] {
             merged.merge(block);
         }
+        let end = self.blocks[blocks.end..]
+            .iter()
+            .find(|b| b.count > 0)
+            .map_or(self.last.as_slice(), |b| b.first.as_slice());
         Window {
             stats: self,
             merged,
+            end,
         }
     }
 }
@@ -424,15 +450,29 @@ impl RunStatistics {
 pub struct Window<'a> {
     stats: &'a RunStatistics,
     merged: Block,
+    /// The row at the window's end: the next block's first sample, or the
+    /// run's last.
+    end: &'a [f64],
 }
 
 impl Window<'_> {
-    /// Time of the window's first sample and of the run's last one \[s\].
+    /// Time of the window's first sample and of its end (the run's last
+    /// sample for the averaging window) \[s\].
     pub fn span(&self) -> [f64; 2] {
         [
             self.merged.first.first().copied().unwrap_or(0.0),
-            self.stats.last.first().copied().unwrap_or(0.0),
+            self.end.first().copied().unwrap_or(0.0),
         ]
+    }
+
+    /// Value of `name` at the window's end (the run's last sample for the
+    /// averaging window).
+    pub fn last(&self, name: &str) -> f64 {
+        self.stats
+            .index(name)
+            .and_then(|i| self.end.get(i))
+            .copied()
+            .unwrap_or(0.0)
     }
 
     /// Value of `name` at the window's first sample.
@@ -521,7 +561,7 @@ impl Window<'_> {
     /// The vibration and whirl channels the run has over the window (their
     /// last [`SIGNAL_SAMPLES`] samples).
     pub fn signal(&self) -> TimeSeries {
-        let from = self.span()[0];
+        let [from, to] = self.span();
         let mut series = TimeSeries::default();
         let mut kept = Vec::with_capacity(SIGNAL_CHANNELS.len());
         for (k, name) in SIGNAL_CHANNELS.iter().enumerate() {
@@ -531,7 +571,12 @@ impl Window<'_> {
             }
         }
         let mut row = Vec::with_capacity(kept.len());
-        for signal in self.stats.signal.iter().filter(|r| r[0] >= from) {
+        for signal in self
+            .stats
+            .signal
+            .iter()
+            .filter(|r| r[0] >= from && r[0] <= to)
+        {
             row.clear();
             row.extend(kept.iter().map(|&k| signal[k]));
             series.push(&row);

@@ -216,3 +216,30 @@ fn passage_jitter_counts_the_windows_intervals_and_survives_a_checkpoint() {
         None
     );
 }
+
+/// The window's halves split its blocks in the middle: each has the
+/// means of its own samples, the first ends where the second starts, and
+/// their means bracket the window's.
+#[test]
+fn the_window_halves_split_it_in_the_middle() {
+    let (duration, rate) = (0.064, 1000.0);
+    let mut stats = RunStatistics::new(&template(), duration, rate, 0.0);
+    for k in 0..=64 {
+        let t = k as f64 / rate;
+        stats.push(&[t, 4000.0 + k as f64, 1.0, 0.0, 1.0, 0.0]);
+    }
+    let [first, second] = stats.window_halves().unwrap();
+    assert_eq!(first.span(), [0.032, 0.048]);
+    assert_eq!(second.span(), [0.048, 0.064]);
+    assert_eq!(first.last("cage_speed_rpm"), 4048.0);
+    assert_eq!(second.last("cage_speed_rpm"), 4064.0);
+    // Samples 32..=47 and 48..=64.
+    assert!((first.mean("cage_speed_rpm") - 4039.5).abs() < 1e-9);
+    assert!((second.mean("cage_speed_rpm") - 4056.0).abs() < 1e-9);
+    assert_eq!(first.signal().len(), 17);
+    assert_eq!(second.signal().len(), 17);
+    // Too short a window has no halves.
+    let mut short = RunStatistics::new(&template(), duration, rate, 0.0);
+    short.push(&[0.0, 1.0, 1.0, 0.0, 1.0, 0.0]);
+    assert!(short.window_halves().is_none());
+}
