@@ -12,9 +12,9 @@ use crate::accuracy::{VERIFY_TIGHTENING, refined_traction_grid};
 use crate::checkpoint::{self, Position, RunRecord, continue_to};
 use crate::pipeline::{Recorder, Start, drive, fresh_dir};
 use crate::recorder::Channels;
-use crate::run_summary::summarise;
 use crate::run_summary::verify;
 pub use crate::run_summary::{CreepMeans, Summary};
+use crate::run_summary::{SummaryInputs, summarise};
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::{Integrator, RunEnd, Solver};
 use rolldyn_case::Case;
@@ -201,6 +201,7 @@ pub(crate) fn run_once(
         Start::default()
     };
     let recorder = Output {
+        verify: options.verify,
         source,
         case,
         dir,
@@ -295,6 +296,8 @@ struct Output<'a> {
     temperature_columns: Vec<(String, usize)>,
     /// The limit the state passed, if it did.
     limit: Option<String>,
+    /// `--verify` will compare this run's summary.
+    verify: bool,
 }
 
 impl Recorder<BearingModel> for Output<'_> {
@@ -342,17 +345,19 @@ impl Recorder<BearingModel> for Output<'_> {
         // A checkpoint's summary is built like a final one; its status and
         // error are then replaced below.
         let in_progress = RunEnd::Completed;
-        let mut summary = summarise(
-            self.source,
-            self.case,
+        let inputs = SummaryInputs {
+            source: self.source,
+            case: self.case,
             model,
-            &channels.stats,
-            self.duration,
+            stats: &channels.stats,
+            duration: self.duration,
             wall,
-            &self.settings,
-            solver.stats(),
-            end.unwrap_or(&in_progress),
-        );
+            settings: &self.settings,
+            integration: solver.stats(),
+            end: end.unwrap_or(&in_progress),
+        };
+        // The window's halves only for the run `--verify` compares.
+        let mut summary = summarise(&inputs, self.verify && end.is_some());
         if let Solver::Switching(auto) = solver {
             summary.explicit_steps = Some(auto.steps_by_method().1);
             summary.integrator_switches = Some(auto.switches());

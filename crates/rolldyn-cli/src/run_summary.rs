@@ -236,36 +236,33 @@ fn status_of(end: &RunEnd) -> (&'static str, Option<String>) {
     }
 }
 
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn summarise(
-    source: &str,
-    case: &Case,
-    model: &BearingModel,
-    stats: &RunStatistics,
-    duration: f64,
-    wall: f64,
-    settings: &SolverSettings,
-    integration: IntegrationStats,
-    end: &RunEnd,
-) -> Summary {
-    let over = |window: &Window| {
-        summary_over(
-            window,
-            source,
-            case,
-            model,
-            stats,
-            duration,
-            wall,
-            settings,
-            integration,
-            end,
-        )
-    };
+/// What a run's summary is built from.
+pub(crate) struct SummaryInputs<'a> {
+    pub source: &'a str,
+    pub case: &'a Case,
+    pub model: &'a BearingModel,
+    pub stats: &'a RunStatistics,
+    /// The requested duration \[s\].
+    pub duration: f64,
+    /// Wall time so far \[s\].
+    pub wall: f64,
+    pub settings: &'a SolverSettings,
+    pub integration: IntegrationStats,
+    pub end: &'a RunEnd,
+}
+
+/// The summary of a run, its statistics over the averaging window; with
+/// `halves` also the compared quantities over each half of the window
+/// (`Summary::window_halves`, for `--verify`).
+pub(crate) fn summarise(inputs: &SummaryInputs, halves: bool) -> Summary {
+    let stats = inputs.stats;
     // Means over the second half of the run (the first half is transient).
-    let mut summary = over(&stats.window());
-    if let Some([first, second]) = stats.window_halves() {
-        let (first, second) = (compared(&over(&first)), compared(&over(&second)));
+    let mut summary = summary_over(&stats.window(), inputs);
+    if let Some([first, second]) = stats.window_halves().filter(|_| halves) {
+        let (first, second) = (
+            compared(&summary_over(&first, inputs)),
+            compared(&summary_over(&second, inputs)),
+        );
         summary.window_halves = first
             .into_iter()
             .zip(second)
@@ -276,19 +273,18 @@ pub(crate) fn summarise(
 }
 
 /// The summary with its statistics over `window`.
-#[allow(clippy::too_many_arguments)]
-fn summary_over(
-    window: &Window,
-    source: &str,
-    case: &Case,
-    model: &BearingModel,
-    stats: &RunStatistics,
-    duration: f64,
-    wall: f64,
-    settings: &SolverSettings,
-    integration: IntegrationStats,
-    end: &RunEnd,
-) -> Summary {
+fn summary_over(window: &Window, inputs: &SummaryInputs) -> Summary {
+    let &SummaryInputs {
+        source,
+        case,
+        model,
+        stats,
+        duration,
+        wall,
+        settings,
+        integration,
+        end,
+    } = inputs;
     let [window_start, t_end] = window.span();
     let inner_speed = window.mean("inner_ring_speed_rpm");
     let cage_speed = window.mean("cage_speed_rpm");
