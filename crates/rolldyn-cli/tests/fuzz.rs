@@ -203,6 +203,17 @@ const HOSTILE: &[&str] = &["nan N", "abc", "", "1e300 rpm", "inf deg", "5 kN"];
 
 /// A command line for a case read from standard input; `dir` for outputs.
 fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
+    let mut args = base_command(rng, dir);
+    // Half the time the text output (searched for NaN and inf).
+    if rng.below(2) == 0 {
+        args.retain(|a| a != "--json");
+    }
+    push_case_flags(rng, &mut args);
+    args
+}
+
+/// The command and its own options, drawn.
+fn base_command(rng: &mut Rng, dir: &str) -> Vec<String> {
     let base: &[&str] = match rng.below(12) {
         10 => &[
             "traction",
@@ -278,11 +289,40 @@ fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
             "output.sample_rate=\"200 kHz\"",
         ],
     };
-    let mut args: Vec<String> = base.iter().map(|s| s.to_string()).collect();
-    // Half the time the text output (searched for NaN and inf).
-    if rng.below(2) == 0 {
-        args.retain(|a| a != "--json");
-    }
+    base.iter().map(|s| s.to_string()).collect()
+}
+
+/// The `--set` keys the flags draw from.
+const SET_KEYS: &[&str] = &[
+    "solver.relative_tolerance",
+    "operating.speed",
+    "bearing.ball_count",
+    "output.sample_rate",
+    "solver.max_step",
+    "model.traction",
+    "operating.radial_load_angle",
+    "life.contamination_factor",
+    "life.viscosity_ratio",
+    "output.channels",
+    "output.balls",
+    "output.precision",
+    "output.slow_channels",
+    "output.slow_rate",
+    "thermal.run_start",
+    "operating.drive_torque",
+    "operating.rotor_inertia",
+    "surface.outer.spall.0.length",
+    "surface.outer.spall.0.growth_rate",
+    "sensor.modes.0.frequency",
+    "shaft.loads.0.force_z",
+    "shaft.bearings.1.position",
+    "arrangement.preload",
+    "arrangement.kind",
+];
+
+/// Up to two distinct case flags (`--speed`, `--axial-load`,
+/// `--radial-load`, `--misalignment`, `--set`) with drawn values.
+fn push_case_flags(rng: &mut Rng, args: &mut Vec<String>) {
     let flags = [
         "--speed",
         "--axial-load",
@@ -296,32 +336,7 @@ fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
         let flag = flags[(first + k) % flags.len()];
         args.push(flag.to_string());
         if flag == "--set" {
-            let key = *rng.pick(&[
-                "solver.relative_tolerance",
-                "operating.speed",
-                "bearing.ball_count",
-                "output.sample_rate",
-                "solver.max_step",
-                "model.traction",
-                "operating.radial_load_angle",
-                "life.contamination_factor",
-                "life.viscosity_ratio",
-                "output.channels",
-                "output.balls",
-                "output.precision",
-                "output.slow_channels",
-                "output.slow_rate",
-                "thermal.run_start",
-                "operating.drive_torque",
-                "operating.rotor_inertia",
-                "surface.outer.spall.0.length",
-                "surface.outer.spall.0.growth_rate",
-                "sensor.modes.0.frequency",
-                "shaft.loads.0.force_z",
-                "shaft.bearings.1.position",
-                "arrangement.preload",
-                "arrangement.kind",
-            ]);
+            let key = *rng.pick(SET_KEYS);
             let value = if rng.below(2) == 0 {
                 *rng.pick(NUMBERS)
             } else {
@@ -338,7 +353,6 @@ fn command(rng: &mut Rng, dir: &str) -> Vec<String> {
             args.push(rng.pick(pool).to_string());
         }
     }
-    args
 }
 
 /// Every `key = value` line of the presets, as (key, value).
