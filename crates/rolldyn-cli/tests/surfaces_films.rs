@@ -101,6 +101,38 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
     let d = dir.to_string_lossy().into_owned();
     let o = rolldyn(&["run", "-", "--duration", "12 ms", "-o", &d], Some(&case));
     assert!(o.status.success(), "{}", stderr(&o));
+    assert_summary_of_a_wavy_run(&dir);
+    let check = json(&["check", "-", "--json"], Some(&case));
+    assert_eq!(check["surfaces"][0]["part"], "outer");
+    assert_eq!(check["surfaces"][0]["max_order"], 22);
+    assert!(
+        json(&["check", "--json"], None)["surfaces"]
+            .as_array()
+            .unwrap()
+            .is_empty()
+    );
+    let list = stdout(&rolldyn(&["spectrum", &d, "--list"], None));
+    for channel in [
+        "inner_ring_acceleration_x_m_s2 [m/s^2]",
+        "outer_ring_acceleration_z_m_s2 [m/s^2]",
+        "housing_force_y_n [N]",
+        "cage_velocity_z_m_s [m/s]",
+        "pocket_force_max_n [N]",
+        "pocket_force_sum_n [N]",
+    ] {
+        assert!(list.contains(channel), "--list lacks {channel}");
+    }
+    assert_spectrum_finds_bpfo(&dir);
+    assert_spectrogram(&dir);
+    assert_spectrum_refuses_bad_arguments(&d);
+    let o = rolldyn(&["spectrum", "/nonexistent-dir"], None);
+    assert_eq!(o.status.code(), Some(2));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The summary of the wavy run: its vibration keys, the waviness line at
+/// 22 f_c and the sensor's envelope lines.
+fn assert_summary_of_a_wavy_run(dir: &std::path::Path) {
     let summary: Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     for k in [
@@ -142,26 +174,12 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
         "{}",
         summary["envelope_lines"]
     );
-    let check = json(&["check", "-", "--json"], Some(&case));
-    assert_eq!(check["surfaces"][0]["part"], "outer");
-    assert_eq!(check["surfaces"][0]["max_order"], 22);
-    assert!(
-        json(&["check", "--json"], None)["surfaces"]
-            .as_array()
-            .unwrap()
-            .is_empty()
-    );
-    let list = stdout(&rolldyn(&["spectrum", &d, "--list"], None));
-    for channel in [
-        "inner_ring_acceleration_x_m_s2 [m/s^2]",
-        "outer_ring_acceleration_z_m_s2 [m/s^2]",
-        "housing_force_y_n [N]",
-        "cage_velocity_z_m_s [m/s]",
-        "pocket_force_max_n [N]",
-        "pocket_force_sum_n [N]",
-    ] {
-        assert!(list.contains(channel), "--list lacks {channel}");
-    }
+}
+
+/// The amplitude spectrum of the axial acceleration names BPFO first and
+/// writes its CSV and JSON; the PSD and the envelope spectrum run.
+fn assert_spectrum_finds_bpfo(dir: &std::path::Path) {
+    let d = dir.to_string_lossy().into_owned();
     let s = json(
         &[
             "spectrum",
@@ -215,8 +233,12 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
         let s = json(&["spectrum", &d, kind[0], kind[1], "--json"], None);
         assert_eq!(s["kind"], kind[1]);
     }
-    // A spectrogram: segments of 16 samples half overlapping, one CSV row
-    // per segment and frequency.
+}
+
+/// A spectrogram: segments of 16 samples half overlapping, one CSV row per
+/// segment and frequency.
+fn assert_spectrogram(dir: &std::path::Path) {
+    let d = dir.to_string_lossy().into_owned();
     let s = json(
         &[
             "spectrum",
@@ -243,7 +265,10 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
     assert!(csv.starts_with("time_s,frequency_hz,value\n"));
     // 9 frequencies (0 … Nyquist) per segment of 16.
     assert_eq!(csv.lines().count(), 1 + 9 * segments);
-    // Bad arguments: exit 2, named.
+}
+
+/// Bad arguments: exit 2, the argument named.
+fn assert_spectrum_refuses_bad_arguments(d: &str) {
     for (args, fragment) in [
         (vec!["--channel", "nope"], "--channel nope"),
         (vec!["--kind", "cepstrum"], "--kind cepstrum"),
@@ -255,15 +280,12 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
         // A bare number: the case files' message.
         (vec!["--from", "0.1"], "missing unit"),
     ] {
-        let mut all = vec!["spectrum", d.as_str()];
+        let mut all = vec!["spectrum", d];
         all.extend(args);
         let o = rolldyn(&all, None);
         assert_eq!(o.status.code(), Some(2), "{all:?}");
         assert!(stderr(&o).contains(fragment), "{}", stderr(&o));
     }
-    let o = rolldyn(&["spectrum", "/nonexistent-dir"], None);
-    assert_eq!(o.status.code(), Some(2));
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Ball surfaces add a spin-angle state per ball: the traction-consistent
