@@ -130,6 +130,44 @@ fn dynamic_run_of_a_pair() {
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(stdout(&o).contains("back_to_back system"), "{}", stdout(&o));
+    assert_pair_summary(&out);
+    assert_pair_series(&out);
+    // `rolldyn spectrum` analyses the set's channels with bearing 0's lines.
+    let o = rolldyn(
+        &[
+            "spectrum",
+            out.to_str().unwrap(),
+            "--channel",
+            "shaft_z_m",
+            "--from",
+            "0 s",
+        ],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("BPFO"), "{}", stdout(&o));
+    // The report of a set's run: its own sections.
+    let o = rolldyn(&["report", out.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    for heading in [
+        "The bearings",
+        "Axial loads and cage speeds",
+        "The shaft",
+        "Energy balance",
+    ] {
+        assert!(html.contains(heading), "{heading}");
+    }
+    assert_pair_sweep(&case, &dir);
+    // A completed run is not resumed, only extended.
+    let o = rolldyn(&["run", "--resume", out.to_str().unwrap()], None);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--until"), "{}", stderr(&o));
+}
+
+/// The summary of a pair's run: its keys and each bearing's, the balance
+/// closed, the two bearings' preloads equal and near the quasi-static one.
+fn assert_pair_summary(out: &std::path::Path) {
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     assert_eq!(
@@ -194,6 +232,10 @@ fn dynamic_run_of_a_pair() {
     );
     assert!((a0 - a1).abs() < 1e-3 * a0, "{a0} {a1}");
     assert!((a0 / qs - 1.0).abs() < 0.1, "{a0} vs {qs}");
+}
+
+/// The series of a pair's run: each bearing's channels and the shaft's.
+fn assert_pair_series(out: &std::path::Path) {
     let names = rolldyn_io::read_parquet(&out.join("timeseries.parquet"))
         .unwrap()
         .names()
@@ -208,34 +250,11 @@ fn dynamic_run_of_a_pair() {
     ] {
         assert!(names.iter().any(|n| n == name), "{name}");
     }
-    // `rolldyn spectrum` analyses the set's channels with bearing 0's lines.
-    let o = rolldyn(
-        &[
-            "spectrum",
-            out.to_str().unwrap(),
-            "--channel",
-            "shaft_z_m",
-            "--from",
-            "0 s",
-        ],
-        None,
-    );
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    assert!(stdout(&o).contains("BPFO"), "{}", stdout(&o));
-    // The report of a set's run: its own sections.
-    let o = rolldyn(&["report", out.to_str().unwrap()], None);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
-    for heading in [
-        "The bearings",
-        "Axial loads and cage speeds",
-        "The shaft",
-        "Energy balance",
-    ] {
-        assert!(html.contains(heading), "{heading}");
-    }
-    // A sweep of the set in motion: one row per point with each
-    // bearing's numbers.
+}
+
+/// A sweep of the set in motion: one row per point with each bearing's
+/// numbers.
+fn assert_pair_sweep(case: &str, dir: &std::path::Path) {
     let o = rolldyn(
         &[
             "run",
@@ -249,7 +268,7 @@ fn dynamic_run_of_a_pair() {
             "-o",
             dir.join("sweep").to_str().unwrap(),
         ],
-        Some(&case),
+        Some(case),
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let rows: serde_json::Value = serde_json::from_str(
@@ -262,10 +281,6 @@ fn dynamic_run_of_a_pair() {
         assert_eq!(row["status"], "completed");
         assert!(row["bearings.1.mean_axial_load_n"].as_f64().unwrap() > 100.0);
     }
-    // A completed run is not resumed, only extended.
-    let o = rolldyn(&["run", "--resume", out.to_str().unwrap()], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--until"), "{}", stderr(&o));
 }
 
 /// `rolldyn run` of a `[shaft]`: two 6206 under a gear force, each with
