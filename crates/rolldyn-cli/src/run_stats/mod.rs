@@ -412,14 +412,20 @@ impl RunStatistics {
 
     /// The averaging window's two halves (its blocks split in the middle),
     /// for how much its statistics move within it; None with fewer than
-    /// two blocks of samples in it.
+    /// two blocks of samples in it, or when the kept signal
+    /// ([`SIGNAL_SAMPLES`]) does not reach back to the window's start (a
+    /// long run: its first half would have no vibration record).
     pub fn window_halves(&self) -> Option<[Window<'_>; 2]> {
         let from = self.window_start();
         let to = self.blocks.len();
         let middle = from + (to - from) / 2;
         let filled = |range: std::ops::Range<usize>| self.blocks[range].iter().any(|b| b.count > 0);
-        (middle > from && filled(from..middle) && filled(middle..to))
-            .then(|| [self.window_over(from..middle), self.window_over(middle..to)])
+        if middle <= from || !filled(from..middle) || !filled(middle..to) {
+            return None;
+        }
+        let [first, second] = [self.window_over(from..middle), self.window_over(middle..to)];
+        let signal_start = self.signal.front().map_or(f64::INFINITY, |r| r[0]);
+        (signal_start <= first.span()[0]).then_some([first, second])
     }
 
     fn window_start(&self) -> usize {

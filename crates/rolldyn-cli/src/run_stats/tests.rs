@@ -238,6 +238,15 @@ fn the_window_halves_split_it_in_the_middle() {
     assert!((second.mean("cage_speed_rpm") - 4056.0).abs() < 1e-9);
     assert_eq!(first.signal().len(), 17);
     assert_eq!(second.signal().len(), 17);
+    // A window longer than the kept signal has no halves (the first would
+    // have no vibration record).
+    let mut long = RunStatistics::new(&template(), 4.0, 10_000.0, 0.0);
+    for k in 0..=40_000 {
+        let t = k as f64 / 10_000.0;
+        long.push(&[t, 4000.0, 1.0, 0.0, 1.0, 0.0]);
+    }
+    assert!(long.window().signal().len() < 20_000);
+    assert!(long.window_halves().is_none());
     // Too short a window has no halves.
     let mut short = RunStatistics::new(&template(), duration, rate, 0.0);
     short.push(&[0.0, 1.0, 1.0, 0.0, 1.0, 0.0]);
