@@ -8,7 +8,7 @@
 
 mod common;
 
-use common::{rolldyn, stderr, temp_dir};
+use common::{pair, rolldyn, stderr, temp_dir};
 use std::path::Path;
 use std::process::{Command, Stdio};
 
@@ -231,4 +231,77 @@ fn until_extends_a_finished_run() {
     assert_eq!(summary(&dir)["requested_duration_s"], 0.005);
     std::fs::remove_dir_all(&dir).ok();
     std::fs::remove_dir_all(&straight).ok();
+}
+
+/// A set's run killed after two checkpoints resumes to the bytes of the
+/// uninterrupted run (series and summary), as a single bearing's does;
+/// `--until` extends a finished one without a gap.
+#[test]
+fn a_set_run_resumes_bit_identically() {
+    let case = pair("kind = \"back_to_back\"\npreload = \"200 N\"");
+    let dir = temp_dir("set-resume");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("case.toml");
+    std::fs::write(&path, &case).unwrap();
+    let args = |out: &str| {
+        vec![
+            "run".to_string(),
+            path.to_str().unwrap().to_string(),
+            // Long enough that the second checkpoint (the first one's
+            // cost times 50 later: ~3.5 s in a debug build) comes well
+            // before the end.
+            "--duration".into(),
+            "160 ms".into(),
+            "--set".into(),
+            "output.sample_rate=\"5 kHz\"".into(),
+            "--checkpoint-interval".into(),
+            "0 s".into(),
+            "-o".into(),
+            out.to_string(),
+        ]
+    };
+    let (whole, killed) = (dir.join("whole"), dir.join("killed"));
+    let o = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .args(args(whole.to_str().unwrap()))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .args(args(killed.to_str().unwrap()))
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    common::kill_after_two_checkpoints(&mut child, &killed);
+    let read = |d: &std::path::Path| {
+        let mut v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(d.join("summary.json")).unwrap())
+                .unwrap();
+        v.as_object_mut().unwrap().remove("wall_time_s");
+        v
+    };
+    assert_eq!(read(&killed)["status"], "partial");
+    let o = rolldyn(&["run", "--resume", killed.to_str().unwrap()], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(
+        common::series_bytes(&killed),
+        common::series_bytes(&whole),
+        "the resumed series differs from the uninterrupted one"
+    );
+    assert_eq!(read(&killed), read(&whole));
+    let o = rolldyn(
+        &[
+            "run",
+            "--resume",
+            whole.to_str().unwrap(),
+            "--until",
+            "164 ms",
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let extended = read(&whole);
+    assert_eq!(extended["status"], "completed");
+    assert_eq!(extended["samples"], 821);
+    std::fs::remove_dir_all(&dir).ok();
 }
