@@ -109,7 +109,7 @@ fn dynamics_parameters_defaults_and_missing_values() {
 }
 
 #[test]
-fn pocket_laws_supports_and_load_tables() {
+fn pocket_laws_and_the_pocket_squeeze_film() {
     const CAGE: &str = "\n[inner_ring]\nmass = \"0.5 kg\"\ntilt_inertia = \"1e-4 kg.m^2\"\n\n[cage]\nmass = \"3 g\"\ninertia = \"2e-6 kg.m^2\"\npocket_clearance = \"0.175 mm\"\n";
     // The Hertz pocket laws need the cage material; the linear law its stiffness.
     let case = load_case(
@@ -203,6 +203,13 @@ fn pocket_laws_supports_and_load_tables() {
     assert!(dynamics(&off).unwrap().cage.pocket_squeeze.is_none());
     let e = err(&format!("{BASE}{CAGE}pocket_min_film = \"0 um\"\n"));
     check(&e, "cage.pocket_min_film", 22, &["must be positive"]);
+}
+
+/// A load table and constant loads exclude each other, its times increase;
+/// an outer ring's mass, the rolling hysteresis and a traction curve's
+/// coefficients are refused outside their ranges, located.
+#[test]
+fn load_tables_housing_and_model_ranges() {
     // Constant loads and a load table exclude each other.
     let e = err(&format!(
         "{BASE}load_profile = [{{ time = \"0 s\", force_x = \"100 N\" }}]\n"
