@@ -110,19 +110,30 @@ pub struct Verification {
     /// (tighten the tolerances), `window` when every one moved no more
     /// than that (the window is too short for them: run longer); null
     /// when `ok`.
-    pub cause: Option<&'static str>,
+    pub cause: Option<Cause>,
+}
+
+/// Why `--verify` warns (`summary.json`: `"window"` or `"tolerance"`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Cause {
+    /// Every quantity beyond its limit moved no more than it does between
+    /// the halves of the run's window: run longer.
+    Window,
+    /// Some moved more: tighten the tolerances.
+    Tolerance,
 }
 
 impl Verification {
     /// The `cause` of a comparison's `changes` (null when none is beyond
     /// its limit).
-    pub fn cause_of(changes: &[Change]) -> Option<&'static str> {
+    pub fn cause_of(changes: &[Change]) -> Option<Cause> {
         let mut beyond = changes.iter().filter(|c| c.beyond()).peekable();
         beyond.peek()?;
         Some(if beyond.all(Change::within_window_spread) {
-            "window"
+            Cause::Window
         } else {
-            "tolerance"
+            Cause::Tolerance
         })
     }
 
@@ -269,7 +280,7 @@ pub fn warning(accuracy: &Accuracy) -> Option<String> {
                 None => format!("{} by {:.2} %", c.key, 100.0 * c.relative_change),
             })
             .collect();
-        let verdict = if v.cause == Some("window") {
+        let verdict = if v.cause == Some(Cause::Window) {
             "each by no more than it moves between the halves of the run's averaging window: statistics the window is too short to settle, not an integration error; run longer (--duration) before reading them to better than that"
         } else {
             "the results are not converged at these settings"
@@ -337,15 +348,15 @@ mod tests {
         assert_eq!(Verification::cause_of(std::slice::from_ref(&passing)), None);
         assert_eq!(
             Verification::cause_of(&[passing.clone(), within.clone()]),
-            Some("window")
+            Some(Cause::Window)
         );
         assert_eq!(
             Verification::cause_of(&[within.clone(), beyond]),
-            Some("tolerance")
+            Some(Cause::Tolerance)
         );
         assert_eq!(
             Verification::cause_of(&[within, unsplit]),
-            Some("tolerance")
+            Some(Cause::Tolerance)
         );
     }
 }
