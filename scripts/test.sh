@@ -13,7 +13,7 @@ if [ ! -x "$venv/bin/python" ]; then
   python3 -m venv "$venv"
 fi
 # matplotlib and pyarrow first: the examples' plot scripts draw their figures
-# headless in `cargo test` (crates/rolldyn-cli/tests/example_tables.rs).
+# headless in `cargo test` (crates/rolldyn-cli/tests/end_to_end/example_tables.rs).
 "$venv/bin/python" -m pip install --quiet --disable-pip-version-check "maturin>=1.16,<2" \
   "matplotlib>=3.5" "pyarrow>=15"
 

@@ -20,7 +20,7 @@
 
 use super::ball_pass::Extras;
 use super::coupling::BallCoupling;
-use super::end_point::RacewayRecord;
+use super::end_point::{EndRecord, RacewayRecord};
 use super::film::FilmWork;
 use super::layout::StateLayout;
 use super::model::BearingModel;
@@ -35,6 +35,38 @@ pub(super) enum BallContact {
     Inner = 0,
     Outer = 1,
     Pocket = 2,
+}
+
+/// The closed contacts' shares (inner, outer, pocket, in that order)
+/// added to the ball's `force` and `moment`; their reactions on the inner
+/// ring, the outer ring and the cage, and their dissipation.
+#[inline(always)]
+fn add_shares(
+    shares: &[ContactShare; 3],
+    force: &mut Vector3<f64>,
+    moment: &mut Vector3<f64>,
+) -> BallCoupling {
+    let mut out = BallCoupling::default();
+    for (contact, share) in BallContact::ALL.iter().zip(shares) {
+        if !share.closed {
+            continue;
+        }
+        *force += share.force;
+        *moment += share.moment;
+        match contact {
+            BallContact::Inner => {
+                out.ring_force += share.body_force;
+                out.ring_moment += share.body_moment;
+            }
+            BallContact::Outer => out.outer_force += share.body_force,
+            BallContact::Pocket => {
+                out.cage_force += share.body_force;
+                out.cage_torque += share.body_moment.x;
+            }
+        }
+        out.dissipation += share.dissipation;
+    }
+    out
 }
 
 impl BallContact {
@@ -292,16 +324,7 @@ impl BearingModel {
         };
         let shares = [inner_share, outer_share, pocket_share];
         if let Some(end) = end {
-            // The energy share only where the slot asks for it.
-            end.energy = end.energy.map(|_| {
-                let known = |k: usize| Some(records[k].map(|r| (r.penetration, r.contact_angle)));
-                let raceways = [
-                    self.raceway_energy(inner, &self.elements.inner_table, &ball, known(0)),
-                    self.raceway_energy(outer, &self.elements.outer_table, &ball, known(1)),
-                ];
-                self.ball_energy(j, y, &ball, raceways)
-            });
-            end.raceways = records;
+            self.end_record(j, y, &ball, (inner, outer), records, end);
         }
         if let Some(memo) = memo {
             for (share, slot) in shares.iter().zip(memo.chunks_mut(ContactShare::LEN)) {
@@ -310,26 +333,7 @@ impl BearingModel {
         }
         let mut force = Vector3::new(0.0, 0.0, -self.elements.ball_mass * p.gravity);
         let mut moment = Vector3::zeros();
-        let mut out = BallCoupling::default();
-        for (contact, share) in BallContact::ALL.iter().zip(&shares) {
-            if !share.closed {
-                continue;
-            }
-            force += share.force;
-            moment += share.moment;
-            match contact {
-                BallContact::Inner => {
-                    out.ring_force += share.body_force;
-                    out.ring_moment += share.body_moment;
-                }
-                BallContact::Outer => out.outer_force += share.body_force,
-                BallContact::Pocket => {
-                    out.cage_force += share.body_force;
-                    out.cage_torque += share.body_moment.x;
-                }
-            }
-            out.dissipation += share.dissipation;
-        }
+        let mut out = add_shares(&shares, &mut force, &mut moment);
         let b = l.ball(j);
         let drag = &p.drag;
         if drag.effective_density > 0.0 {
@@ -374,6 +378,29 @@ impl BearingModel {
                 .add_film_work(t, y, j, dy, &film_work, inner, &mut out);
         }
         out
+    }
+
+    /// Ball j's part of an end-point evaluation: its raceway `records`,
+    /// and its energy share only where the slot asks for it.
+    #[inline(always)]
+    fn end_record(
+        &self,
+        j: usize,
+        y: &[f64],
+        ball: &BallMotion,
+        (inner, outer): (&RingMotion, &RingMotion),
+        records: [Option<RacewayRecord>; 2],
+        end: &mut EndRecord,
+    ) {
+        end.energy = end.energy.map(|_| {
+            let known = |k: usize| Some(records[k].map(|r| (r.penetration, r.contact_angle)));
+            let raceways = [
+                self.raceway_energy(inner, &self.elements.inner_table, ball, known(0)),
+                self.raceway_energy(outer, &self.elements.outer_table, ball, known(1)),
+            ];
+            self.ball_energy(j, y, ball, raceways)
+        });
+        end.raceways = records;
     }
 
     /// Ball j's share of its contact with `ring` (0: inner, whose moment

@@ -47,6 +47,7 @@ use super::parameters::DynamicsParameters;
 use super::peaks::PeakLoads;
 use super::race_contact::{ContactSample, Want};
 use super::thermal_coupling::ThermalCoupling;
+use crate::cage::GuideLand;
 use crate::contact::HertzModel;
 use crate::contact::normal_law::ContactEpisode;
 use crate::error::InvalidParameter;
@@ -275,19 +276,8 @@ impl BearingModel {
         let l = self.elements.layout;
         let p = &self.elements.params;
         let g = p.gravity;
-        let c = l.cage();
-        let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
-        let BallCoupling {
-            mut ring_force,
-            mut ring_moment,
-            mut outer_force,
-            mut cage_force,
-            mut cage_torque,
-            mut dissipation,
-            film_power,
-            ring_velocity_gradient,
-            outer_velocity_gradient,
-        } = *balls;
+        // The balls' sums, to which the border's own terms are added.
+        let mut sums = *balls;
         let mut external_power = 0.0;
         // `dy` starts at the inner ring: ring, outer ring, cage and work
         // offsets within it.
@@ -298,32 +288,7 @@ impl BearingModel {
             l.work() - l.ring(),
         );
         if let Some(guide) = &p.cage.guide {
-            let (centre, centre_velocity, land_speed) = self.elements.guide_ring(guide, t, y);
-            let cage_velocity = Vector3::new(0.0, y[c + 3], y[c + 4]);
-            let gf = guide.forces(&(cage_centre - centre), y[c + 5], land_speed);
-            cage_force += gf.force;
-            cage_torque += gf.torque;
-            // Fluid power is dissipation; the stop spring is conservative.
-            let stop_force = -guide.stop_stiffness * gf.stop * (cage_centre - centre).normalize();
-            let fluid = gf.force
-                - if gf.stop > 0.0 {
-                    stop_force
-                } else {
-                    Vector3::zeros()
-                };
-            let fluid_power = -(fluid.dot(&(cage_velocity - centre_velocity))
-                + gf.torque * (y[c + 5] - land_speed));
-            dissipation += fluid_power;
-            if let Some(d) = sink.as_deref_mut() {
-                d.guide_land = fluid_power;
-            }
-            match guide.ring {
-                RingKind::Inner => {
-                    ring_force -= gf.force;
-                    ring_moment -= gf.torque * Vector3::x();
-                }
-                RingKind::Outer => outer_force -= gf.force,
-            }
+            self.add_guide_land(guide, t, y, &mut sums, sink.as_deref_mut());
         }
         let r = l.ring();
         dy[dr..dr + 5].copy_from_slice(&y[r + 5..r + 10]);
@@ -333,8 +298,8 @@ impl BearingModel {
             Vector3::new(y[r], y[r + 1], y[r + 2]),
             Vector3::new(y[r + 5], y[r + 6], y[r + 7]),
         );
-        ring_force += p.inner_support.force(&ring_position, &ring_velocity);
-        dissipation += p.inner_support.dissipation(&ring_velocity);
+        sums.ring_force += p.inner_support.force(&ring_position, &ring_velocity);
+        sums.dissipation += p.inner_support.dissipation(&ring_velocity);
         if let Some(d) = sink.as_deref_mut() {
             d.support_damping = p.inner_support.dissipation(&ring_velocity);
         }
@@ -345,11 +310,11 @@ impl BearingModel {
             u.force(spin.speed, spin.angle)
         });
         external_power += fy * y[r + 6] + fz * y[r + 7];
-        dy[dr + 5] = (ring_force.x + loads.force[0]) / mi;
-        dy[dr + 6] = (ring_force.y + loads.force[1] + fy) / mi;
-        dy[dr + 7] = (ring_force.z + loads.force[2] + fz) / mi - g;
-        dy[dr + 8] = (ring_moment.y + loads.moment[0]) / p.inner_ring_tilt_inertia;
-        dy[dr + 9] = (ring_moment.z + loads.moment[1]) / p.inner_ring_tilt_inertia;
+        dy[dr + 5] = (sums.ring_force.x + loads.force[0]) / mi;
+        dy[dr + 6] = (sums.ring_force.y + loads.force[1] + fy) / mi;
+        dy[dr + 7] = (sums.ring_force.z + loads.force[2] + fz) / mi - g;
+        dy[dr + 8] = (sums.ring_moment.y + loads.moment[0]) / p.inner_ring_tilt_inertia;
+        dy[dr + 9] = (sums.ring_moment.z + loads.moment[1]) / p.inner_ring_tilt_inertia;
         for k in (0..10).filter(|&k| p.inner_ring_state_frozen(k)) {
             dy[dr + k] = 0.0;
         }
@@ -361,62 +326,21 @@ impl BearingModel {
             + load_rate.force[2] * y[r + 2]
             + load_rate.moment[0] * y[r + 3]
             + load_rate.moment[1] * y[r + 4];
-        let o = l.outer();
-        if let Some(ring) = &p.sliding_outer_ring {
-            // The bore takes the balls' radial load on the ring and holds
-            // it axially by friction.
-            let s = l.slide();
-            let speed = y[s + 1];
-            let friction = ring.friction_force(speed, outer_force.y.hypot(outer_force.z));
-            dissipation -= friction * speed;
-            if let Some(d) = sink.as_deref_mut() {
-                d.support_damping -= friction * speed;
-            }
-            let ds = s - l.ring();
-            dy[ds] = speed;
-            dy[ds + 1] = (outer_force.x + friction) / ring.mass;
+        self.outer_ring_rhs(y, &mut sums, &mut dy[dob..], sink.as_deref_mut());
+        let (cage_speed, cage_drag, unbalance_power) = self.cage_rhs(y, &mut sums, &mut dy[dc..]);
+        if let Some(power) = unbalance_power {
+            external_power += power;
         }
-        dy[dob..dob + 4].fill(0.0);
-        if let Some(ring) = &p.outer_ring {
-            let position = Vector3::new(0.0, y[o], y[o + 1]);
-            let velocity = Vector3::new(0.0, y[o + 2], y[o + 3]);
-            outer_force += ring.housing.force(&position, &velocity);
-            dissipation += ring.housing.dissipation(&velocity);
-            if let Some(d) = sink.as_deref_mut() {
-                d.support_damping += ring.housing.dissipation(&velocity);
-            }
-            dy[dob] = y[o + 2];
-            dy[dob + 1] = y[o + 3];
-            dy[dob + 2] = outer_force.y / ring.mass;
-            dy[dob + 3] = outer_force.z / ring.mass - g;
-        }
-        dy[dc..dc + 3].copy_from_slice(&y[c + 3..c + 6]);
-        if p.cage.whirl {
-            let [fy, fz] = p.cage.unbalance_force(y[c + 2], y[c + 5]);
-            external_power += fy * y[c + 3] + fz * y[c + 4];
-            dy[dc + 3] = (cage_force.y + fy) / p.cage.mass;
-            dy[dc + 4] = (cage_force.z + fz) / p.cage.mass - g;
-        } else {
-            dy[dc] = 0.0;
-            dy[dc + 1] = 0.0;
-            dy[dc + 3] = 0.0;
-            dy[dc + 4] = 0.0;
-        }
-        let cage_speed = y[c + 5];
-        let cage_drag = -(p.drag.cage_viscous * cage_speed
-            + p.drag.cage_windage * cage_speed * cage_speed.abs());
-        dissipation -= cage_drag * cage_speed;
-        dy[dc + 5] = (cage_torque + cage_drag) / p.cage.inertia;
         // The moment about the ring's (tilted) axis of the bearing's forces
         // on the inner ring (contacts, an inner guide land) and its seals' and
         // churning's.
-        let mut axial_moment = ring_moment.dot(&inner.axis);
+        let mut axial_moment = sums.ring_moment.dot(&inner.axis);
         // The seals' and the churning's moments and powers on the ring.
         let w = inner.spin_speed;
         let seals = p.seals.as_ref().map(|s| (s.moment(w), s.power(w)));
         let churning = p.churning.as_ref().map(|c| (c.moment(w), c.power(w)));
         for (moment, power) in [seals, churning].into_iter().flatten() {
-            dissipation += power;
+            sums.dissipation += power;
             axial_moment += moment;
         }
         if let Some(d) = sink.as_deref_mut() {
@@ -441,13 +365,132 @@ impl BearingModel {
             d.friction_torque = -axial_moment;
         }
         dy[dw] = drive_torque * inner.spin_speed + external_power;
-        dy[dw + 1] = dissipation;
+        dy[dw + 1] = sums.dissipation;
         if l.film_work {
             // The rings' accelerations complete the films' power.
             let dot = |g: &[f64], a: &[f64]| g.iter().zip(a).map(|(g, a)| g * a).sum::<f64>();
-            dy[dw + 2] = film_power
-                + dot(&ring_velocity_gradient, &dy[dr + 5..dr + 10])
-                + dot(&outer_velocity_gradient, &dy[dob + 2..dob + 4]);
+            dy[dw + 2] = sums.film_power
+                + dot(&sums.ring_velocity_gradient, &dy[dr + 5..dr + 10])
+                + dot(&sums.outer_velocity_gradient, &dy[dob + 2..dob + 4]);
+        }
+    }
+
+    /// The cage's equations (`dy` starts at its first state): its centre's
+    /// motion when it whirls (with its unbalance, whose power it returns),
+    /// else held; its rotation under the contacts' torque and its drag.
+    /// Returns the cage's speed, its drag torque and the unbalance's power.
+    #[inline(always)]
+    fn cage_rhs(
+        &self,
+        y: &[f64],
+        sums: &mut BallCoupling,
+        dy: &mut [f64],
+    ) -> (f64, f64, Option<f64>) {
+        let p = &self.elements.params;
+        let c = self.elements.layout.cage();
+        let mut unbalance_power = None;
+        dy[..3].copy_from_slice(&y[c + 3..c + 6]);
+        if p.cage.whirl {
+            let [fy, fz] = p.cage.unbalance_force(y[c + 2], y[c + 5]);
+            unbalance_power = Some(fy * y[c + 3] + fz * y[c + 4]);
+            dy[3] = (sums.cage_force.y + fy) / p.cage.mass;
+            dy[4] = (sums.cage_force.z + fz) / p.cage.mass - p.gravity;
+        } else {
+            dy[0] = 0.0;
+            dy[1] = 0.0;
+            dy[3] = 0.0;
+            dy[4] = 0.0;
+        }
+        let cage_speed = y[c + 5];
+        let cage_drag = -(p.drag.cage_viscous * cage_speed
+            + p.drag.cage_windage * cage_speed * cage_speed.abs());
+        sums.dissipation -= cage_drag * cage_speed;
+        dy[5] = (sums.cage_torque + cage_drag) / p.cage.inertia;
+        (cage_speed, cage_drag, unbalance_power)
+    }
+
+    /// The guide land's forces on the cage and their reaction on the ring
+    /// that guides it, added to `sums` with the fluid's dissipated power
+    /// (the stop spring is conservative).
+    #[inline(always)]
+    fn add_guide_land(
+        &self,
+        guide: &GuideLand,
+        t: f64,
+        y: &[f64],
+        sums: &mut BallCoupling,
+        sink: Option<&mut Dissipation>,
+    ) {
+        let c = self.elements.layout.cage();
+        let cage_centre = Vector3::new(0.0, y[c], y[c + 1]);
+        let (centre, centre_velocity, land_speed) = self.elements.guide_ring(guide, t, y);
+        let cage_velocity = Vector3::new(0.0, y[c + 3], y[c + 4]);
+        let gf = guide.forces(&(cage_centre - centre), y[c + 5], land_speed);
+        sums.cage_force += gf.force;
+        sums.cage_torque += gf.torque;
+        // Fluid power is dissipation; the stop spring is conservative.
+        let stop_force = -guide.stop_stiffness * gf.stop * (cage_centre - centre).normalize();
+        let fluid = gf.force
+            - if gf.stop > 0.0 {
+                stop_force
+            } else {
+                Vector3::zeros()
+            };
+        let fluid_power =
+            -(fluid.dot(&(cage_velocity - centre_velocity)) + gf.torque * (y[c + 5] - land_speed));
+        sums.dissipation += fluid_power;
+        if let Some(d) = sink {
+            d.guide_land = fluid_power;
+        }
+        match guide.ring {
+            RingKind::Inner => {
+                sums.ring_force -= gf.force;
+                sums.ring_moment -= gf.torque * Vector3::x();
+            }
+            RingKind::Outer => sums.outer_force -= gf.force,
+        }
+    }
+
+    /// The outer ring's equations (`dy` starts at its first state): the
+    /// sliding ring's axial motion under the bore's friction, the housed
+    /// ring's radial motion on its housing; their dissipation into `sums`.
+    #[inline(always)]
+    fn outer_ring_rhs(
+        &self,
+        y: &[f64],
+        sums: &mut BallCoupling,
+        dy: &mut [f64],
+        mut sink: Option<&mut Dissipation>,
+    ) {
+        let (l, p) = (self.elements.layout, &self.elements.params);
+        let o = l.outer();
+        if let Some(ring) = &p.sliding_outer_ring {
+            // The bore takes the balls' radial load on the ring and holds
+            // it axially by friction.
+            let s = l.slide();
+            let speed = y[s + 1];
+            let friction = ring.friction_force(speed, sums.outer_force.y.hypot(sums.outer_force.z));
+            sums.dissipation -= friction * speed;
+            if let Some(d) = sink.as_deref_mut() {
+                d.support_damping -= friction * speed;
+            }
+            let ds = s - l.outer();
+            dy[ds] = speed;
+            dy[ds + 1] = (sums.outer_force.x + friction) / ring.mass;
+        }
+        dy[..4].fill(0.0);
+        if let Some(ring) = &p.outer_ring {
+            let position = Vector3::new(0.0, y[o], y[o + 1]);
+            let velocity = Vector3::new(0.0, y[o + 2], y[o + 3]);
+            sums.outer_force += ring.housing.force(&position, &velocity);
+            sums.dissipation += ring.housing.dissipation(&velocity);
+            if let Some(d) = sink {
+                d.support_damping += ring.housing.dissipation(&velocity);
+            }
+            dy[0] = y[o + 2];
+            dy[1] = y[o + 3];
+            dy[2] = sums.outer_force.y / ring.mass;
+            dy[3] = sums.outer_force.z / ring.mass - p.gravity;
         }
     }
 }

@@ -321,15 +321,17 @@ impl Elements {
             &ellipse,
             approach.as_ref(),
         );
+        // The entrainment's direction û (zero at rest).
+        let direction = if u > 0.0 {
+            entrainment / u
+        } else {
+            Vector3::zeros()
+        };
         let film_work = approach.map(|a| FilmWork {
             law: a.law,
             load: a.load,
             speed: u,
-            direction: if u > 0.0 {
-                entrainment / u
-            } else {
-                Vector3::zeros()
-            },
+            direction,
             point,
         });
         let kinematics = self.race_kinematics(
@@ -345,7 +347,7 @@ impl Elements {
         let (slip, relative_spin) = (kinematics.slip, kinematics.relative_spin);
         // Rolling axis e_a = n × û and the rolling rate about it.
         let rolling_axis = if u > 0.0 {
-            n.cross(&(entrainment / u))
+            n.cross(&direction)
         } else {
             Vector3::zeros()
         };

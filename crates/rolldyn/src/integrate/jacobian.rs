@@ -325,53 +325,13 @@ fn by_blocks(
 ) -> u64 {
     let layout = split.block_layout();
     debug_assert_eq!(jacobian.layout(), layout);
-    let (b, m, start) = (layout.block_size, layout.border, layout.border_start());
+    let (b, m) = (layout.block_size, layout.border);
     let c = split.coupling_len();
     let parallel = split.parallel();
     let stride = work.block_stride;
     let mut cost = 1;
-    // Base values f_j, c_j, f_B of the split at the unperturbed point (the
-    // split may be an approximation of the system's rhs).
-    let y = &work.y;
-    let memo_len = work.memo_len;
-    if memo_len > 0 {
-        each_block3(
-            parallel,
-            (&mut work.f[..start], b),
-            (&mut work.couplings, c),
-            (&mut work.memos, memo_len),
-            |j, f_j, c_j, memo| split.block_rhs_memo(t, y, j, f_j, c_j, memo),
-        );
-    } else {
-        each_block2(
-            parallel,
-            (&mut work.f[..start], b),
-            (&mut work.couplings, c),
-            |j, f_j, c_j| split.block_rhs(t, y, j, f_j, c_j),
-        );
-    }
-    work.coupling_sum.fill(0.0);
-    for cj in work.couplings.chunks(c) {
-        for (s, v) in work.coupling_sum.iter_mut().zip(cj) {
-            *s += v;
-        }
-    }
-    let (_, f_border) = work.f.split_at_mut(start);
-    split.border_rhs(t, &work.y, &work.coupling_sum, f_border);
-    // G = ∂f_B/∂C, one border evaluation per coupling component: the
-    // chain rule then gives each block's lower border, ∂f_B/∂y_j =
-    // G ∂c_j/∂y_j, from its perturbed coupling, instead of a border
-    // evaluation per block and column.
-    for i in 0..c {
-        let base = work.coupling_sum[i];
-        let delta = increment(base, 1.0, true);
-        work.coupling_trial.copy_from_slice(&work.coupling_sum);
-        work.coupling_trial[i] = base + delta;
-        split.border_rhs(t, &work.y, &work.coupling_trial, &mut work.f_perturbed[..m]);
-        for r in 0..m {
-            work.border_gradient[i * m + r] = (work.f_perturbed[r] - work.f[start + r]) / delta;
-        }
-    }
+    base_values(split, t, work);
+    coupling_gradient(split, t, work);
     // Every block's columns and border columns, the blocks shared out in
     // contiguous chunks, a few per thread: block j reads only its own states
     // and the border's, so a chunk perturbs its blocks' states, and the
@@ -388,7 +348,7 @@ fn by_blocks(
         f: &work.f,
         couplings: &work.couplings,
         memos: &work.memos,
-        memo_len,
+        memo_len: work.memo_len,
         gradient: &work.border_gradient,
         scale: &work.scale,
         sized: &work.sized,
@@ -434,8 +394,77 @@ fn by_blocks(
     for k in 0..b {
         cost += u64::from((0..layout.blocks).any(|j| !split.inert(j * b + k)));
     }
-    // Border rows of the border columns: the blocks' perturbed couplings
-    // summed in block order.
+    cost += border_columns(split, t, jacobian, work);
+    cost
+}
+
+/// [`by_blocks`]' base values f_j, c_j, f_B of the split at the
+/// unperturbed point (the split may be an approximation of the system's
+/// rhs), and the couplings' sum.
+fn base_values(split: &dyn BlockSplit, t: f64, work: &mut JacobianWork) {
+    let layout = split.block_layout();
+    let (b, start) = (layout.block_size, layout.border_start());
+    let c = split.coupling_len();
+    let parallel = split.parallel();
+    let y = &work.y;
+    let memo_len = work.memo_len;
+    if memo_len > 0 {
+        each_block3(
+            parallel,
+            (&mut work.f[..start], b),
+            (&mut work.couplings, c),
+            (&mut work.memos, memo_len),
+            |j, f_j, c_j, memo| split.block_rhs_memo(t, y, j, f_j, c_j, memo),
+        );
+    } else {
+        each_block2(
+            parallel,
+            (&mut work.f[..start], b),
+            (&mut work.couplings, c),
+            |j, f_j, c_j| split.block_rhs(t, y, j, f_j, c_j),
+        );
+    }
+    work.coupling_sum.fill(0.0);
+    for cj in work.couplings.chunks(c) {
+        for (s, v) in work.coupling_sum.iter_mut().zip(cj) {
+            *s += v;
+        }
+    }
+    let (_, f_border) = work.f.split_at_mut(start);
+    split.border_rhs(t, &work.y, &work.coupling_sum, f_border);
+}
+
+/// [`by_blocks`]' G = ∂f_B/∂C, one border evaluation per coupling
+/// component: the chain rule then gives each block's lower border,
+/// ∂f_B/∂y_j = G ∂c_j/∂y_j, from its perturbed coupling, instead of a
+/// border evaluation per block and column.
+fn coupling_gradient(split: &dyn BlockSplit, t: f64, work: &mut JacobianWork) {
+    let layout = split.block_layout();
+    let (m, start) = (layout.border, layout.border_start());
+    for i in 0..split.coupling_len() {
+        let base = work.coupling_sum[i];
+        let delta = increment(base, 1.0, true);
+        work.coupling_trial.copy_from_slice(&work.coupling_sum);
+        work.coupling_trial[i] = base + delta;
+        split.border_rhs(t, &work.y, &work.coupling_trial, &mut work.f_perturbed[..m]);
+        for r in 0..m {
+            work.border_gradient[i * m + r] = (work.f_perturbed[r] - work.f[start + r]) / delta;
+        }
+    }
+}
+
+/// [`by_blocks`]' border rows of the border columns: the blocks' perturbed
+/// couplings summed in block order. Returns the border evaluations' cost.
+fn border_columns(
+    split: &dyn BlockSplit,
+    t: f64,
+    jacobian: &mut BlockJacobian,
+    work: &mut JacobianWork,
+) -> u64 {
+    let layout = split.block_layout();
+    let (m, start) = (layout.border, layout.border_start());
+    let c = split.coupling_len();
+    let mut cost = 0;
     for p in 0..m {
         let col = start + p;
         if split.inert(col) {

@@ -597,18 +597,24 @@ impl BlockLu {
                 )?;
             }
         }
-        // S −= Σⱼ (−Lⱼ) Wⱼ, the blocks in order (the rows where Lⱼ has
-        // an entry).
-        for j in (0..l.blocks).filter(|&j| coupled_nonzero[j]) {
+        self.subtract_schur_shares();
+        lu_factor(&mut self.schur, mk, &mut self.schur_pivots)
+    }
+
+    /// S −= Σⱼ (−Lⱼ) Wⱼ, the blocks in order (the rows where Lⱼ has an
+    /// entry), so the Schur complement does not depend on the threads.
+    #[inline(always)]
+    fn subtract_schur_shares(&mut self) {
+        let mk = self.border_kept.len();
+        for j in (0..self.layout.blocks).filter(|&j| self.coupled_nonzero[j]) {
             let part = &self.schur_parts[j * mk * mk..(j + 1) * mk * mk];
-            for r in (0..mk).filter(|&r| lower_row_nonzero[j * mk + r]) {
+            for r in (0..mk).filter(|&r| self.lower_row_nonzero[j * mk + r]) {
                 let schur_row = &mut self.schur[r * mk..(r + 1) * mk];
                 for (s, p) in schur_row.iter_mut().zip(&part[r * mk..(r + 1) * mk]) {
                     *s -= p;
                 }
             }
         }
-        lu_factor(&mut self.schur, mk, &mut self.schur_pivots)
     }
 
     /// Solves (σI − J) x = r in place (`x` holds r on entry). The common

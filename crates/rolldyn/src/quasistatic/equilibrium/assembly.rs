@@ -38,6 +38,113 @@ fn weighted(eval: &RingContactEval, extension: f64) -> (Vector3<f64>, Matrix3<f6
     (w * eval.force, w * eval.dforce_dball, w * eval.dforce_dring)
 }
 
+/// The frame of a ball's azimuth, e_x (axial) and e_r (radial), and the
+/// contact normals' components in it with their gradients by the ball's
+/// position q and the ring's displacement u.
+struct Frame {
+    ex: Vector3<f64>,
+    er: Vector3<f64>,
+    e: SMatrix<f64, 3, 2>,
+}
+
+impl Frame {
+    fn at(phi: f64) -> Self {
+        let (ex, er) = QuasiStaticSolver::basis(phi);
+        Self {
+            ex,
+            er,
+            e: SMatrix::<f64, 3, 2>::from_columns(&[ex, er]),
+        }
+    }
+
+    fn nx(&self, c: &RingContactEval) -> f64 {
+        c.normal.dot(&self.ex)
+    }
+
+    fn nr(&self, c: &RingContactEval) -> f64 {
+        c.normal.dot(&self.er)
+    }
+
+    fn grad_q_x(&self, c: &RingContactEval) -> Row3 {
+        self.ex.transpose() * c.dnormal_dball
+    }
+
+    fn grad_q_r(&self, c: &RingContactEval) -> Row3 {
+        self.er.transpose() * c.dnormal_dball
+    }
+
+    fn grad_u_x(&self, c: &RingContactEval) -> Row5 {
+        self.ex.transpose() * c.dnormal_dring
+    }
+
+    fn grad_u_r(&self, c: &RingContactEval) -> Row5 {
+        self.er.transpose() * c.dnormal_dring
+    }
+
+    /// The gyroscopic friction's direction t = n_x e_r − n_r e_x.
+    fn tangent(&self, c: &RingContactEval) -> Vector3<f64> {
+        self.nx(c) * self.er - self.nr(c) * self.ex
+    }
+
+    fn dtangent_dq(&self, c: &RingContactEval) -> Matrix3<f64> {
+        self.er * self.grad_q_x(c) - self.ex * self.grad_q_r(c)
+    }
+
+    fn dtangent_du(&self, c: &RingContactEval) -> Matrix3x5 {
+        self.er * self.grad_u_x(c) - self.ex * self.grad_u_r(c)
+    }
+}
+
+/// A ball's orbit radius r and speeds ω_m, ω_x, ω_r (its unknowns 1–4),
+/// with its half diameter: the rolling and no-spin conditions at a
+/// contact and their gradients by the ball's position.
+struct BallSpeeds {
+    r: f64,
+    wm: f64,
+    wx: f64,
+    wr: f64,
+    half: f64,
+}
+
+impl BallSpeeds {
+    fn of(y: &Vector5, half: f64) -> Self {
+        Self {
+            r: y[1],
+            wm: y[2],
+            wx: y[3],
+            wr: y[4],
+            half,
+        }
+    }
+
+    /// Rolling at contact c against a raceway turning at `omega`.
+    fn rolling(&self, f: &Frame, c: &RingContactEval, omega: f64) -> f64 {
+        let (r, half) = (self.r, self.half);
+        self.wm * r + half * (self.wx * f.nr(c) - self.wr * f.nx(c)) - omega * (r + half * f.nr(c))
+    }
+
+    fn rolling_dq(&self, f: &Frame, c: &RingContactEval, omega: f64) -> Row3 {
+        self.half * (self.wx - omega) * f.grad_q_r(c) - self.half * self.wr * f.grad_q_x(c)
+    }
+
+    fn rolling_du(&self, f: &Frame, c: &RingContactEval, omega: f64) -> Row5 {
+        self.half * (self.wx - omega) * f.grad_u_r(c) - self.half * self.wr * f.grad_u_x(c)
+    }
+
+    /// Spin at contact c against a raceway turning at `omega`.
+    fn spin(&self, f: &Frame, c: &RingContactEval, omega: f64) -> f64 {
+        (self.wx - omega) * f.nx(c) + self.wr * f.nr(c)
+    }
+
+    fn spin_dq(&self, f: &Frame, c: &RingContactEval, omega: f64) -> Row3 {
+        (self.wx - omega) * f.grad_q_x(c) + self.wr * f.grad_q_r(c)
+    }
+
+    fn spin_du(&self, f: &Frame, c: &RingContactEval, omega: f64) -> Row5 {
+        (self.wx - omega) * f.grad_u_x(c) + self.wr * f.grad_u_r(c)
+    }
+}
+
 impl QuasiStaticSolver {
     /// The bordered system: every ball's terms, the applied loads on the
     /// ring.
@@ -90,44 +197,26 @@ impl QuasiStaticSolver {
         let (m, inertia) = (self.ball_mass, self.ball_inertia);
         let omega_i = setup.conditions.inner_speed;
         let phi = self.azimuth(j, setup.options);
-        let (ex, er) = Self::basis(phi);
-        let e = SMatrix::<f64, 3, 2>::from_columns(&[ex, er]);
+        let f = Frame::at(phi);
+        let e = f.e;
         let (q, inner, outer) = self.contacts(j, y, phi, ring);
         let largest_load = inner.load.max(outer.load);
-        let (r, wm, wx, wr) = (y[1], y[2], y[3], y[4]);
+        let s = BallSpeeds::of(y, half);
+        let (r, wm) = (s.r, s.wm);
         // How far the inner raceway drives the ball (`race_drive`): 1 while
         // its contact is closed, → 0 as it opens.
         let drive = race_drive(&inner, self.drive_reference(), setup.options.race_drive);
         let inner_k = kinematic_inner(&inner, &outer, &drive);
+        let shares = ControlShares::new(control, setup.inner_share, &drive);
         let ControlShares {
-            lambda_i,
-            lambda_o,
             spin_i_weight,
             spin_o_weight,
             dshare_dq,
             dshare_du,
-        } = ControlShares::new(control, setup.inner_share, &drive);
-
-        // Normal components and their gradients.
-        let nx = |c: &RingContactEval| c.normal.dot(&ex);
-        let nr = |c: &RingContactEval| c.normal.dot(&er);
-        let grad_q = |c: &RingContactEval, axis: &Vector3<f64>| -> Row3 {
-            axis.transpose() * c.dnormal_dball
-        };
-        let grad_u = |c: &RingContactEval, axis: &Vector3<f64>| -> Row5 {
-            axis.transpose() * c.dnormal_dring
-        };
-
-        // Gyroscopic friction f_k = c_k t_k, t_k = n_x e_r − n_r e_x.
-        let mg = inertia * wm * wr;
-        let tangent = |c: &RingContactEval| nx(c) * er - nr(c) * ex;
-        let dtangent_dq = |c: &RingContactEval| er * grad_q(c, &ex) - ex * grad_q(c, &er);
-        let dtangent_du = |c: &RingContactEval| er * grad_u(c, &ex) - ex * grad_u(c, &er);
-        let (ci, co) = (lambda_i * mg / d, lambda_o * mg / d);
-        let (fi, fo) = (ci * tangent(&inner), co * tangent(&outer));
-        // ∂f_i/∂(q, u), with the share's own dependence (λ_i = 2s).
-        let dfric_i_dq = ci * dtangent_dq(&inner) + tangent(&inner) * (2.0 * mg / d * dshare_dq);
-        let dfric_i_du = ci * dtangent_du(&inner) + tangent(&inner) * (2.0 * mg / d * dshare_du);
+            ..
+        } = shares;
+        let gyro = Gyroscopic::new(&f, &s, &shares, (&inner, &outer), inertia, d);
+        let (fi, fo, dfric_i_dq, dfric_i_du) = (gyro.fi, gyro.fo, gyro.dfi_dq, gyro.dfi_du);
 
         let (force_i, dfi_dq, dfi_du) = weighted(&inner, setup.extension);
         // An open outer contact keeps its full extension: it pulls the ball
@@ -141,25 +230,17 @@ impl QuasiStaticSolver {
         let force = e.transpose() * (force_i + force_o + fi + fo);
         res[0] = force[0];
         res[1] = force[1] + m * r * wm * wm;
-        let rolling = |c: &RingContactEval, omega: f64| {
-            wm * r + half * (wx * nr(c) - wr * nx(c)) - omega * (r + half * nr(c))
-        };
-        res[2] = rolling(&inner_k, omega_i);
-        res[3] = rolling(&outer, 0.0);
-        let spin = |c: &RingContactEval, omega: f64| (wx - omega) * nx(c) + wr * nr(c);
-        let (spin_i, spin_o) = (spin(&inner, omega_i), spin(&outer, 0.0));
+        res[2] = s.rolling(&f, &inner_k, omega_i);
+        res[3] = s.rolling(&f, &outer, 0.0);
+        let (spin_i, spin_o) = (s.spin(&f, &inner, omega_i), s.spin(&f, &outer, 0.0));
         res[4] = spin_i_weight * spin_i + spin_o_weight * spin_o;
 
         // A: ball rows × (x, r, ω_m, ω_x, ω_r).
         let mut a = Matrix5::zeros();
-        let df_dq = dfi_dq + dfo_dq + dfric_i_dq + co * dtangent_dq(&outer);
+        let df_dq = dfi_dq + dfo_dq + dfric_i_dq + gyro.co * f.dtangent_dq(&outer);
         let f_pos = e.transpose() * df_dq * e;
-        let dforce_dwm = e.transpose()
-            * (lambda_i * inertia * wr / d * tangent(&inner)
-                + lambda_o * inertia * wr / d * tangent(&outer));
-        let dforce_dwr = e.transpose()
-            * (lambda_i * inertia * wm / d * tangent(&inner)
-                + lambda_o * inertia * wm / d * tangent(&outer));
+        let dforce_dwm = e.transpose() * (gyro.dfi_dwm + gyro.dfo_dwm);
+        let dforce_dwr = e.transpose() * (gyro.dfi_dwr + gyro.dfo_dwr);
         for row in 0..2 {
             a[(row, 0)] = f_pos[(row, 0)];
             a[(row, 1)] = f_pos[(row, 1)];
@@ -168,37 +249,29 @@ impl QuasiStaticSolver {
         }
         a[(1, 1)] += m * wm * wm;
         a[(1, 2)] += 2.0 * m * r * wm;
-        let rolling_dq = |c: &RingContactEval, omega: f64| -> Row3 {
-            half * (wx - omega) * grad_q(c, &er) - half * wr * grad_q(c, &ex)
-        };
         for (row, c, omega) in [(2, &inner_k, omega_i), (3, &outer, 0.0)] {
-            let g = rolling_dq(c, omega) * e;
+            let g = s.rolling_dq(&f, c, omega) * e;
             a[(row, 0)] = g[0];
             a[(row, 1)] = g[1] + wm - omega;
             a[(row, 2)] = r;
-            a[(row, 3)] = half * nr(c);
-            a[(row, 4)] = -half * nx(c);
+            a[(row, 3)] = half * f.nr(c);
+            a[(row, 4)] = -half * f.nx(c);
         }
-        let spin_dq = |c: &RingContactEval, omega: f64| -> Row3 {
-            (wx - omega) * grad_q(c, &ex) + wr * grad_q(c, &er)
-        };
-        let g = (spin_i_weight * spin_dq(&inner, omega_i)
-            + spin_o_weight * spin_dq(&outer, 0.0)
+        let g = (spin_i_weight * s.spin_dq(&f, &inner, omega_i)
+            + spin_o_weight * s.spin_dq(&f, &outer, 0.0)
             + (spin_i + spin_o) * dshare_dq)
             * e;
         a[(4, 0)] = g[0];
         a[(4, 1)] = g[1];
-        a[(4, 3)] = spin_i_weight * nx(&inner) + spin_o_weight * nx(&outer);
-        a[(4, 4)] = spin_i_weight * nr(&inner) + spin_o_weight * nr(&outer);
+        a[(4, 3)] = spin_i_weight * f.nx(&inner) + spin_o_weight * f.nx(&outer);
+        a[(4, 4)] = spin_i_weight * f.nr(&inner) + spin_o_weight * f.nr(&outer);
 
         // B: ball rows × ring u (only the inner contact depends on u).
         let mut b = Matrix5::zeros();
         let fu = e.transpose() * (dfi_du + dfric_i_du);
         b.fixed_view_mut::<2, 5>(0, 0).copy_from(&fu);
-        let roll_u: Row5 =
-            half * (wx - omega_i) * grad_u(&inner_k, &er) - half * wr * grad_u(&inner_k, &ex);
-        b.set_row(2, &roll_u);
-        let spin_u: Row5 = (wx - omega_i) * grad_u(&inner, &ex) + wr * grad_u(&inner, &er);
+        b.set_row(2, &s.rolling_du(&f, &inner_k, omega_i));
+        let spin_u = s.spin_du(&f, &inner, omega_i);
         b.set_row(4, &(spin_i_weight * spin_u + (spin_i + spin_o) * dshare_du));
 
         // Ring: force and moment of this ball on the inner ring.
@@ -206,15 +279,18 @@ impl QuasiStaticSolver {
             force: fi,
             dq: dfric_i_dq,
             du: dfric_i_du,
-            dwm: lambda_i * inertia * wr / d * tangent(&inner),
-            dwr: lambda_i * inertia * wm / d * tangent(&inner),
+            dwm: gyro.dfi_dwm,
+            dwr: gyro.dfi_dwr,
         };
         let (ring_load, c, dd) = ring_terms(&inner, &friction, q - ring.translation, half, &e);
-        let mut speed_derivative = Vector5::zeros();
-        speed_derivative[2] = -(r + half * nr(&inner_k));
-        speed_derivative[4] = -spin_i_weight * nx(&inner);
         BallTerms {
-            speed_derivative,
+            speed_derivative: Vector5::new(
+                0.0,
+                0.0,
+                -(r + half * f.nr(&inner_k)),
+                0.0,
+                -spin_i_weight * f.nx(&inner),
+            ),
             residual: res,
             a,
             b,
@@ -222,6 +298,49 @@ impl QuasiStaticSolver {
             d: dd,
             ring: ring_load,
             largest_load,
+        }
+    }
+}
+
+/// The gyroscopic friction f_k = c_k t_k at the inner and outer contact
+/// (t_k = n_x e_r − n_r e_x, c_k = λ_k I ω_m ω_r / D), and its derivatives
+/// by ω_m, ω_r and, at the inner contact, by q and u with the share's own
+/// dependence (λ_i = 2s).
+struct Gyroscopic {
+    fi: Vector3<f64>,
+    fo: Vector3<f64>,
+    co: f64,
+    dfi_dq: Matrix3<f64>,
+    dfi_du: Matrix3x5,
+    dfi_dwm: Vector3<f64>,
+    dfo_dwm: Vector3<f64>,
+    dfi_dwr: Vector3<f64>,
+    dfo_dwr: Vector3<f64>,
+}
+
+impl Gyroscopic {
+    fn new(
+        f: &Frame,
+        s: &BallSpeeds,
+        shares: &ControlShares,
+        (inner, outer): (&RingContactEval, &RingContactEval),
+        inertia: f64,
+        d: f64,
+    ) -> Self {
+        let (lambda_i, lambda_o, wm, wr) = (shares.lambda_i, shares.lambda_o, s.wm, s.wr);
+        let mg = inertia * wm * wr;
+        let (ci, co) = (lambda_i * mg / d, lambda_o * mg / d);
+        let (ti, to) = (f.tangent(inner), f.tangent(outer));
+        Self {
+            fi: ci * ti,
+            fo: co * to,
+            co,
+            dfi_dq: ci * f.dtangent_dq(inner) + ti * (2.0 * mg / d * shares.dshare_dq),
+            dfi_du: ci * f.dtangent_du(inner) + ti * (2.0 * mg / d * shares.dshare_du),
+            dfi_dwm: lambda_i * inertia * wr / d * ti,
+            dfo_dwm: lambda_o * inertia * wr / d * to,
+            dfi_dwr: lambda_i * inertia * wm / d * ti,
+            dfo_dwr: lambda_o * inertia * wm / d * to,
         }
     }
 }
@@ -350,11 +469,161 @@ mod tests {
     use super::super::{Conditions, RacewayControl, SolverOptions};
     use super::*;
     use crate::contact::HertzModel;
-    use crate::geometry::test_bearing;
+    use crate::geometry::{BearingGeometry, test_bearing};
     use crate::material::Material;
     use crate::operating::Loads;
     use crate::quasistatic::equilibrium::race_drive::GAP_FRACTION;
     use crate::quasistatic::ring_contact::RingDisplacement;
+
+    /// A state of five balls at speed with the ring displaced: balls 3
+    /// (outer control) and 4 (inner control) in the race drive's band,
+    /// their inner gap at g_ref (w = 1/2); ball 2's inner contact open wide
+    /// (w ≈ 0.008).
+    fn drive_band_state(
+        g: &BearingGeometry,
+        solver: &QuasiStaticSolver,
+        options: &SolverOptions,
+    ) -> State {
+        let mut state = State {
+            balls: (0..5)
+                .map(|j| {
+                    Vector5::new(
+                        -3e-6 + 1e-7 * j as f64,
+                        27.002e-3,
+                        440.0 + j as f64,
+                        180.0,
+                        -2400.0,
+                    )
+                })
+                .collect(),
+            ring: Vector5::new(1.2e-5, 1e-6, -2e-6, 1e-4, -5e-5),
+        };
+        let ring = RingDisplacement::from_array(state.ring.into());
+        let g_ref = GAP_FRACTION * g.ball_diameter;
+        for (j, gap) in [(2, 5.0 * g_ref), (3, g_ref), (4, g_ref)] {
+            let phi = solver.azimuth(j, options);
+            let (mut outside, mut inside) = (26.9e-3, 27.1e-3);
+            for _ in 0..200 {
+                let mut y = state.balls[j];
+                y[1] = 0.5 * (outside + inside);
+                if solver.contacts(j, &y, phi, &ring).1.penetration > -gap {
+                    outside = y[1];
+                } else {
+                    inside = y[1];
+                }
+            }
+            state.balls[j][1] = 0.5 * (outside + inside);
+            let (_, inner, outer) = solver.contacts(j, &state.balls[j], phi, &ring);
+            assert!((inner.penetration + gap).abs() < 1e-3 * gap, "ball {j}");
+            assert!(outer.in_contact(), "ball {j}: outer contact open");
+        }
+        state
+    }
+
+    /// Fourth-order central differences of the balls' residuals and the
+    /// ring load under `perturbed` (the drive band is steep).
+    fn fourth_order(perturbed: &dyn Fn(f64) -> Assembly, h: f64) -> (Vec<Vector5>, Vector5) {
+        let (p1, m1, p2, m2) = (
+            perturbed(h),
+            perturbed(-h),
+            perturbed(2.0 * h),
+            perturbed(-2.0 * h),
+        );
+        let combine = |f: &dyn Fn(&Assembly) -> Vector5| {
+            (8.0 * (f(&p1) - f(&m1)) - (f(&p2) - f(&m2))) / (12.0 * h)
+        };
+        let balls: Vec<Vector5> = (0..p1.ball.len())
+            .map(|j| combine(&|a: &Assembly| a.ball[j]))
+            .collect();
+        (balls, combine(&|a: &Assembly| a.ring))
+    }
+
+    fn close(fd: &Vector5, exact: Vector5) -> bool {
+        (fd - exact).norm() <= 1e-4 * fd.norm().max(1e-3)
+    }
+
+    /// The blocks A, C (ball columns), B, D (ring columns) and the speed
+    /// derivative of one assembly against [`fourth_order`] differences.
+    fn check_blocks(
+        solver: &QuasiStaticSolver,
+        state: &State,
+        controls: &[RingKind],
+        setup: Setup,
+    ) {
+        let inner_share = setup.inner_share;
+        let conditions = setup.conditions;
+        let asm = solver.assemble(state, controls, setup);
+        let steps = [1e-9, 1e-9, 1e-3, 1e-3, 1e-3];
+        for j in 0..5 {
+            for (k, &step) in steps.iter().enumerate() {
+                let (fd_balls, fd_ring) = fourth_order(
+                    &|h| {
+                        let mut moved = state.clone();
+                        moved.balls[j][k] += h;
+                        solver.assemble(&moved, controls, setup)
+                    },
+                    step,
+                );
+                let (a, c) = (
+                    asm.a[j].column(k).into_owned(),
+                    asm.c[j].column(k).into_owned(),
+                );
+                assert!(
+                    close(&fd_balls[j], a),
+                    "A[{j}] col {k} (t {inner_share}): {:?} vs {a:?}",
+                    fd_balls[j]
+                );
+                assert!(
+                    close(&fd_ring, c),
+                    "C[{j}] col {k} (t {inner_share}): {fd_ring:?} vs {c:?}"
+                );
+            }
+        }
+        let ring_steps = [1e-9, 1e-9, 1e-9, 1e-8, 1e-8];
+        for (k, &step) in ring_steps.iter().enumerate() {
+            let (fd_balls, fd_ring) = fourth_order(
+                &|h| {
+                    let mut moved = state.clone();
+                    moved.ring[k] += h;
+                    solver.assemble(&moved, controls, setup)
+                },
+                step,
+            );
+            let d = asm.d.column(k).into_owned();
+            assert!(
+                close(&fd_ring, d),
+                "D col {k} (t {inner_share}): {fd_ring:?} vs {d:?}"
+            );
+            for (j, fd_ball) in fd_balls.iter().enumerate() {
+                let b = asm.b[j].column(k).into_owned();
+                assert!(
+                    close(fd_ball, b),
+                    "B[{j}] col {k} (t {inner_share}): {fd_ball:?} vs {b:?}"
+                );
+            }
+        }
+        // ∂residual/∂ω_i: the residual is linear in ω_i.
+        let faster = Conditions {
+            inner_speed: conditions.inner_speed + 1.0,
+            ..*conditions
+        };
+        let moved = solver.assemble(
+            state,
+            controls,
+            Setup {
+                conditions: &faster,
+                ..setup
+            },
+        );
+        for j in 0..5 {
+            let fd = moved.ball[j] - asm.ball[j];
+            assert!(
+                close(&fd, asm.speed_derivative[j]),
+                "speed derivative of ball {j}: {fd:?} vs {:?}",
+                asm.speed_derivative[j]
+            );
+        }
+    }
 
     /// The assembled Jacobian blocks equal central differences of the
     /// residual, at speed, with friction on the inner ring: balls under
@@ -379,42 +648,7 @@ mod tests {
             control: RacewayControl::Inner,
         };
         let options = SolverOptions::default();
-        let mut state = State {
-            balls: (0..5)
-                .map(|j| {
-                    Vector5::new(
-                        -3e-6 + 1e-7 * j as f64,
-                        27.002e-3,
-                        440.0 + j as f64,
-                        180.0,
-                        -2400.0,
-                    )
-                })
-                .collect(),
-            ring: Vector5::new(1.2e-5, 1e-6, -2e-6, 1e-4, -5e-5),
-        };
-        // Balls 3 (outer control) and 4 (inner control) in the race
-        // drive's band, their inner gap at g_ref (w = 1/2); ball 2's inner
-        // contact open wide (w ≈ 0.008).
-        let ring = RingDisplacement::from_array(state.ring.into());
-        let g_ref = GAP_FRACTION * g.ball_diameter;
-        for (j, gap) in [(2, 5.0 * g_ref), (3, g_ref), (4, g_ref)] {
-            let phi = solver.azimuth(j, &options);
-            let (mut outside, mut inside) = (26.9e-3, 27.1e-3);
-            for _ in 0..200 {
-                let mut y = state.balls[j];
-                y[1] = 0.5 * (outside + inside);
-                if solver.contacts(j, &y, phi, &ring).1.penetration > -gap {
-                    outside = y[1];
-                } else {
-                    inside = y[1];
-                }
-            }
-            state.balls[j][1] = 0.5 * (outside + inside);
-            let (_, inner, outer) = solver.contacts(j, &state.balls[j], phi, &ring);
-            assert!((inner.penetration + gap).abs() < 1e-3 * gap, "ball {j}");
-            assert!(outer.in_contact(), "ball {j}: outer contact open");
-        }
+        let state = drive_band_state(&g, &solver, &options);
         let controls: Vec<RingKind> = (0..5)
             .map(|j| {
                 if j % 2 == 0 {
@@ -424,23 +658,6 @@ mod tests {
                 }
             })
             .collect();
-        // Fourth-order central differences of the residual and the ring
-        // load (the drive band is steep).
-        let derivative = |perturbed: &dyn Fn(f64) -> Assembly, h: f64| {
-            let (p1, m1, p2, m2) = (
-                perturbed(h),
-                perturbed(-h),
-                perturbed(2.0 * h),
-                perturbed(-2.0 * h),
-            );
-            let combine = |f: &dyn Fn(&Assembly) -> Vector5| {
-                (8.0 * (f(&p1) - f(&m1)) - (f(&p2) - f(&m2))) / (12.0 * h)
-            };
-            let balls: Vec<Vector5> = (0..5).map(|j| combine(&|a: &Assembly| a.ball[j])).collect();
-            (balls, combine(&|a: &Assembly| a.ring))
-        };
-        let close =
-            |fd: &Vector5, exact: Vector5| (fd - exact).norm() <= 1e-4 * fd.norm().max(1e-3);
         for inner_share in [1.0, 0.4] {
             let setup = Setup {
                 conditions: &conditions,
@@ -448,77 +665,7 @@ mod tests {
                 extension: 1e-6,
                 inner_share,
             };
-            let asm = solver.assemble(&state, &controls, setup);
-            let steps = [1e-9, 1e-9, 1e-3, 1e-3, 1e-3];
-            for j in 0..5 {
-                for (k, &step) in steps.iter().enumerate() {
-                    let (fd_balls, fd_ring) = derivative(
-                        &|h| {
-                            let mut moved = state.clone();
-                            moved.balls[j][k] += h;
-                            solver.assemble(&moved, &controls, setup)
-                        },
-                        step,
-                    );
-                    let (a, c) = (
-                        asm.a[j].column(k).into_owned(),
-                        asm.c[j].column(k).into_owned(),
-                    );
-                    assert!(
-                        close(&fd_balls[j], a),
-                        "A[{j}] col {k} (t {inner_share}): {:?} vs {a:?}",
-                        fd_balls[j]
-                    );
-                    assert!(
-                        close(&fd_ring, c),
-                        "C[{j}] col {k} (t {inner_share}): {fd_ring:?} vs {c:?}"
-                    );
-                }
-            }
-            let ring_steps = [1e-9, 1e-9, 1e-9, 1e-8, 1e-8];
-            for (k, &step) in ring_steps.iter().enumerate() {
-                let (fd_balls, fd_ring) = derivative(
-                    &|h| {
-                        let mut moved = state.clone();
-                        moved.ring[k] += h;
-                        solver.assemble(&moved, &controls, setup)
-                    },
-                    step,
-                );
-                let d = asm.d.column(k).into_owned();
-                assert!(
-                    close(&fd_ring, d),
-                    "D col {k} (t {inner_share}): {fd_ring:?} vs {d:?}"
-                );
-                for (j, fd_ball) in fd_balls.iter().enumerate() {
-                    let b = asm.b[j].column(k).into_owned();
-                    assert!(
-                        close(fd_ball, b),
-                        "B[{j}] col {k} (t {inner_share}): {fd_ball:?} vs {b:?}"
-                    );
-                }
-            }
-            // ∂residual/∂ω_i: the residual is linear in ω_i.
-            let faster = Conditions {
-                inner_speed: conditions.inner_speed + 1.0,
-                ..conditions
-            };
-            let moved = solver.assemble(
-                &state,
-                &controls,
-                Setup {
-                    conditions: &faster,
-                    ..setup
-                },
-            );
-            for j in 0..5 {
-                let fd = moved.ball[j] - asm.ball[j];
-                assert!(
-                    close(&fd, asm.speed_derivative[j]),
-                    "speed derivative of ball {j}: {fd:?} vs {:?}",
-                    asm.speed_derivative[j]
-                );
-            }
+            check_blocks(&solver, &state, &controls, setup);
         }
     }
 }

@@ -5,9 +5,9 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
-use common::{SHAFT, json, keys, pair, rolldyn, stderr, stdout, temp_dir};
+use crate::common::{SHAFT, json, keys, pair, rolldyn, stderr, stdout, temp_dir};
 
 /// `rolldyn thermal` of a pair: every bearing's network with the set in
 /// the loop; the preload at the operating temperatures above the one at

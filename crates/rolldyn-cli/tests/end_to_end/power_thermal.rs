@@ -3,9 +3,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{rolldyn, stderr, temp_dir};
+use crate::common::{rolldyn, stderr, temp_dir};
 use serde_json::Value;
 
 /// The default case's run: the component means sum to the mean

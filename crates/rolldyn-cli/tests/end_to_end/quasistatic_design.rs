@@ -4,9 +4,9 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
-use common::{json, rolldyn, stderr};
+use crate::common::{json, rolldyn, stderr};
 
 #[test]
 fn radial_load_direction_ball_azimuth_and_compliance() {

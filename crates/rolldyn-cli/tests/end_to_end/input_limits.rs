@@ -11,9 +11,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{pair, rolldyn, stderr, temp_dir};
+use crate::common::{pair, rolldyn, stderr, temp_dir};
 
 #[test]
 fn unbounded_work_is_refused_before_it_starts() {

@@ -7,9 +7,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{rolldyn, stderr, temp_dir};
+use crate::common::{rolldyn, stderr, temp_dir};
 use std::path::PathBuf;
 
 fn examples() -> PathBuf {

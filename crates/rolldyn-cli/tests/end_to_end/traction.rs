@@ -4,14 +4,11 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{FASTSIM, json, keys, rolldyn, stderr, temp_dir};
+use crate::common::{FASTSIM, json, keys, rolldyn, stderr, temp_dir};
 
 /// `rolldyn traction`: stable keys; an explicit flat contact reproduces
 /// Kalker's linear theory (F_x = −G c² C₁₁ ξ, C₁₁ = 3.44 at g = 0.3,
-/// ν = 0.25, Kalker 1990 Table E.3) and saturates at μQ; every case
-/// traction law evaluates one contact; the map has one row per element.
+/// ν = 0.25, Kalker 1990 Table E.3) and saturates at μQ.
 #[test]
 fn traction_evaluates_one_contact() {
     let explicit = |creepages: &str| {
@@ -70,7 +67,11 @@ fn traction_evaluates_one_contact() {
     let slide = explicit("-1,0,0");
     assert!((slide["force_x_n"].as_f64().unwrap() - 200.0).abs() < 1e-6);
     assert!(slide["power_w"].as_f64().unwrap() > 0.0);
+}
 
+/// Every case traction law evaluates one contact of the default case.
+#[test]
+fn every_traction_law_evaluates_one_contact() {
     for law in [
         FASTSIM,
         "model.traction={ law = \"modified_coulomb\", friction = 0.1 }",
@@ -100,7 +101,11 @@ fn traction_evaluates_one_contact() {
         assert!(r["power_w"].as_f64().unwrap() > 0.0, "{law}");
         assert_eq!(r["ring"], "outer");
     }
+}
 
+/// The stick/slip map has one row per element of FASTSIM's grid.
+#[test]
+fn the_traction_map_has_one_row_per_element() {
     let dir = temp_dir("traction-map");
     std::fs::create_dir_all(&dir).unwrap();
     let map = dir.join("map.csv");

@@ -5,9 +5,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{rolldyn, stderr, temp_dir};
+use crate::common::{rolldyn, stderr, temp_dir};
 use serde_json::Value;
 use std::process::{Command, Stdio};
 

@@ -18,9 +18,9 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
-use common::temp_dir;
+use crate::common::temp_dir;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

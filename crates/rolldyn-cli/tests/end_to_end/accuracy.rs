@@ -16,9 +16,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{rolldyn, stderr, temp_dir};
+use crate::common::{rolldyn, stderr, temp_dir};
 use serde_json::Value;
 
 /// Runs `rolldyn run` with `args` (and the case text on stdin when

@@ -6,9 +6,9 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
-use common::{pair, rolldyn, stderr, temp_dir};
+use crate::common::{pair, rolldyn, stderr, temp_dir};
 use std::path::Path;
 use std::process::{Command, Stdio};
 

@@ -9,9 +9,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{envelope_json, rolldyn, stderr, temp_dir};
+use crate::common::{envelope_json, rolldyn, stderr, temp_dir};
 use std::collections::HashMap;
 use std::path::PathBuf;
 

@@ -4,9 +4,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{rolldyn, stderr, stdout, temp_dir};
+use crate::common::{rolldyn, stderr, stdout, temp_dir};
 use serde_json::Value;
 
 /// `output.channels`, `output.balls` and `output.precision` choose what the

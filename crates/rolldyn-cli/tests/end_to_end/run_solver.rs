@@ -5,9 +5,9 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
-use common::{stderr, temp_dir};
+use crate::common::{stderr, temp_dir};
 use serde_json::Value;
 
 #[test]

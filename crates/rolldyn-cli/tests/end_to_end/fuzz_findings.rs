@@ -4,7 +4,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
 use rolldyn_case::presets::PRESETS;
 use serde_json::Value;
@@ -12,23 +12,30 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+/// Runs `rolldyn` and checks what the user meets: the exit code, no
+/// panic, and each of `says` in its stderr.
+fn expect(args: &[&str], stdin: Option<&str>, code: i32, says: &[&str]) {
+    let o = common::rolldyn(args, stdin);
+    let err = common::stderr(&o);
+    assert_eq!(o.status.code(), Some(code), "{args:?}: {err}");
+    assert!(!err.contains("panicked"), "{args:?}: {err}");
+    for s in says {
+        assert!(err.contains(s), "{args:?}: {err:?} lacks {s:?}");
+    }
+}
+
+fn preset(name: &str) -> &'static str {
+    PRESETS.iter().find(|p| p.name == name).unwrap().text
+}
+
 /// What an independent fuzzing campaign (17 000 cases) found, each as the
 /// user met it: the command, its exit code and what the message must say.
+/// Here the files: a flat sweep's report, a final rename that fails.
 #[test]
 fn findings_of_independent_fuzzing_stay_fixed() {
     let dir = common::temp_dir("fuzz-findings");
     std::fs::create_dir_all(&dir).unwrap();
     let d = |name: &str| dir.join(name).to_string_lossy().into_owned();
-    let preset = |name: &str| PRESETS.iter().find(|p| p.name == name).unwrap().text;
-    let expect = |args: &[&str], stdin: Option<&str>, code: i32, says: &[&str]| {
-        let o = common::rolldyn(args, stdin);
-        let err = common::stderr(&o);
-        assert_eq!(o.status.code(), Some(code), "{args:?}: {err}");
-        assert!(!err.contains("panicked"), "{args:?}: {err}");
-        for s in says {
-            assert!(err.contains(s), "{args:?}: {err:?} lacks {s:?}");
-        }
-    };
     // A quasi-static sweep whose plotted contact angle is constant: the
     // report's tick labels panicked on a range flat to round-off.
     let sweep = d("sweep");
@@ -64,6 +71,16 @@ fn findings_of_independent_fuzzing_stay_fixed() {
     assert!(left.is_empty(), "{left:?}");
     let o = common::rolldyn(&["run", "--duration", "0.1 ms", "-o", &taken], None);
     assert_eq!(common::stderr(&o).matches("cannot write").count(), 1);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The independent campaign's absurd inputs: refused before any work,
+/// naming the key, or run when they are sound (negative speeds).
+#[test]
+fn fuzzed_absurd_inputs_are_refused_or_run() {
+    let dir = common::temp_dir("fuzz-findings-inputs");
+    std::fs::create_dir_all(&dir).unwrap();
+    let d = |name: &str| dir.join(name).to_string_lossy().into_owned();
     // Absurd inputs are refused before any work, naming the key.
     let wavy = format!(
         "{}\n[surface.outer]\nradial_waviness = [{{ order = 22, amplitude = \"20 mm\" }}]\n",
@@ -127,6 +144,16 @@ fn findings_of_independent_fuzzing_stay_fixed() {
         0,
         &[],
     );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The independent campaign's spectrum and number findings: a run too
+/// short for a spectrum, `--list --json`, a TOML number that overflows.
+#[test]
+fn fuzzed_spectra_and_numbers_are_located() {
+    let dir = common::temp_dir("fuzz-findings-spectra");
+    std::fs::create_dir_all(&dir).unwrap();
+    let d = |name: &str| dir.join(name).to_string_lossy().into_owned();
     // A spectrum of a run too short for one: the averaging window is
     // blamed, not a --from the user did not give; --list --json is JSON.
     let short = d("short");

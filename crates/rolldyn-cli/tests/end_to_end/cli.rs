@@ -3,9 +3,9 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
-use common::{FASTSIM, json, keys, rolldyn, stderr, stdout, temp_dir};
+use crate::common::{FASTSIM, json, keys, rolldyn, stderr, stdout, temp_dir};
 use rolldyn_case::presets::PRESETS;
 use serde_json::Value;
 
@@ -620,8 +620,7 @@ fn fastsim_run_records_creepages() {
 
 /// `quasistatic --control traction` (no raceway control): stable keys, a
 /// cage speed between the inner- and outer-control Jones–Harris values,
-/// FASTSIM stick fractions; refused with --sweep; a clear error where the
-/// balls have no rolling equilibrium; and the run start from it.
+/// FASTSIM stick fractions.
 #[test]
 fn traction_consistent_quasistatic() {
     let r = json(&["quasistatic", "--control", "traction", "--json"], None);
@@ -687,7 +686,12 @@ fn traction_consistent_quasistatic() {
     );
     assert_eq!(f["traction_law"], "fastsim");
     assert!(f["balls"][0]["stick_fraction_outer"].as_f64().is_some());
+}
 
+/// `quasistatic --control traction` is refused with --sweep, and gives a
+/// clear error where the balls have no rolling equilibrium.
+#[test]
+fn traction_consistent_quasistatic_refusals() {
     let o = rolldyn(
         &[
             "quasistatic",
@@ -708,7 +712,11 @@ fn traction_consistent_quasistatic() {
         "{}",
         stderr(&o)
     );
+}
 
+/// A run started from the traction-consistent state stays there.
+#[test]
+fn a_run_starts_from_the_traction_consistent_state() {
     // With a ball-guided cage (the quasi-static state leaves out the guide
     // land's drag on the cage) and without gravity (the quasi-static
     // commands take the operating loads, a run's start adds the ring's

@@ -27,9 +27,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{envelope_json, line_frequency, rolldyn, stderr, stdout, temp_dir};
+use crate::common::{envelope_json, line_frequency, rolldyn, stderr, stdout, temp_dir};
 use std::path::Path;
 
 /// The bearings: presets by name, catalogue bearings by designation.
@@ -307,7 +305,7 @@ signatures! {
 
 /// The benchmark: the matrix at 0.4 s (or 3/f_c when longer), printed as
 /// docs/validation.md's table:
-/// `cargo test --release -p rolldyn-cli --test fault_matrix -- --ignored --nocapture`;
+/// `cargo test --release -p rolldyn-cli --test end_to_end fault_matrix:: -- --ignored --nocapture`;
 /// `ROLLDYN_FAULT_MATRIX_MIN_DURATION=0.05` prints it at the CI's durations,
 /// `ROLLDYN_FAULT_MATRIX_BEARINGS=6205,7218B` for some bearings only.
 #[test]

@@ -4,9 +4,9 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
-use common::{rolldyn, stderr, temp_dir};
+use crate::common::{rolldyn, stderr, temp_dir};
 use rolldyn_io::read_parquet;
 
 const CASE: &str = concat!(

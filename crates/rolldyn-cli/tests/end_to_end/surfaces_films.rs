@@ -5,9 +5,9 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
-use common::{json, keys, rolldyn, stderr, stdout, temp_dir};
+use crate::common::{json, keys, rolldyn, stderr, stdout, temp_dir};
 use rolldyn_case::presets::PRESETS;
 use serde_json::Value;
 

@@ -3,9 +3,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{json, pair, run_summary};
+use crate::common::{json, pair, run_summary};
 
 /// `rolldyn quasistatic` of a 7008C TBT set with 300 N of preload at
 /// 10 000 rpm and no external load: three bearings, the single one

@@ -18,9 +18,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{envelope_json, line_frequency, rolldyn, stderr, temp_dir};
+use crate::common::{envelope_json, line_frequency, rolldyn, stderr, temp_dir};
 use std::path::{Path, PathBuf};
 
 fn case() -> PathBuf {

@@ -4,9 +4,9 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
-use common::{rolldyn, stderr, stdout, temp_dir};
+use crate::common::{rolldyn, stderr, stdout, temp_dir};
 use serde_json::Value;
 
 /// Sections of a report page, checked to be well-formed XML with inline

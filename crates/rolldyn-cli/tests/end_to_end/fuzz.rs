@@ -18,7 +18,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
 use rolldyn_case::presets::PRESETS;
 use serde_json::Value;
@@ -103,8 +103,8 @@ const REGRESSIONS: &[(&str, &[&str], i32)] = &[
 /// sensor and a spall (and the tests' shaft on two bearings,
 /// `common::SHAFT`).
 const EXAMPLES: &[&str] = &[
-    include_str!("../../../examples/spindle_pair/case.toml"),
-    include_str!("../../../examples/cwru6205/case.toml"),
+    include_str!("../../../../examples/spindle_pair/case.toml"),
+    include_str!("../../../../examples/cwru6205/case.toml"),
 ];
 
 /// Sections added to a preset's text (one of them, a third of the time).

@@ -3,9 +3,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{json, keys, rolldyn, stderr, stdout};
+use crate::common::{json, keys, rolldyn, stderr, stdout};
 
 /// `new --bearing` writes a case that checks, with the ball set of
 /// `catalogue --json`; `catalogue` lists every series with its keys;

@@ -4,9 +4,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{rolldyn, stderr, stdout, temp_dir};
+use crate::common::{rolldyn, stderr, stdout, temp_dir};
 
 /// The 6205 preset's case text (read from standard input as `-`).
 fn preset() -> String {

@@ -10,8 +10,16 @@ pub const FASTSIM: &str = "model.traction={ law = \"fastsim\", friction = 0.1 }"
 use std::io::Write;
 use std::process::{Command, Output, Stdio};
 
+/// Runs `rolldyn` with `args` and `stdin`. On one thread unless the
+/// environment sets `RAYON_NUM_THREADS`: the test threads already fill
+/// the cores, and two runs with two threads each on a two-core machine
+/// took 1.5 times as long as one after the other (their pools' threads
+/// wait actively, docs/performance.md). The results do not depend on
+/// the threads (the tests that compare thread counts set their own).
 pub fn rolldyn(args: &[&str], stdin: Option<&str>) -> Output {
+    let threads = std::env::var("RAYON_NUM_THREADS").unwrap_or_else(|_| "1".into());
     let mut child = Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .env("RAYON_NUM_THREADS", threads)
         .args(args)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
@@ -51,8 +59,12 @@ pub fn keys(v: &Value) -> Vec<String> {
     k
 }
 
+/// A fresh directory name under the system's temporary directory, unique
+/// to this process and this call (the test modules share one process).
 pub fn temp_dir(tag: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("rolldyn-{tag}-{}", std::process::id()));
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("rolldyn-{tag}-{}-{call}", std::process::id()));
     std::fs::remove_dir_all(&dir).ok();
     dir
 }

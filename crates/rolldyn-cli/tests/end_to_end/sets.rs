@@ -4,9 +4,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{SHAFT, json, keys, pair, rolldyn, stderr, stdout, temp_dir};
+use crate::common::{SHAFT, json, keys, pair, rolldyn, stderr, stdout, temp_dir};
 
 #[test]
 fn back_to_back_pair_report() {

@@ -5,9 +5,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{SHAFT, pair, rolldyn, run_summary as run, stderr, temp_dir};
+use crate::common::{SHAFT, pair, rolldyn, run_summary as run, stderr, temp_dir};
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
 
