@@ -34,6 +34,7 @@
 mod ball_equations;
 mod ball_pass;
 mod block_split;
+mod border;
 pub mod checkpoint;
 mod coupling;
 pub mod elements;
