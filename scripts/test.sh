@@ -17,11 +17,15 @@ fi
 "$venv/bin/python" -m pip install --quiet --disable-pip-version-check "maturin>=1.16,<2" \
   "matplotlib>=3.5" "pyarrow>=15"
 
+start=$SECONDS
 ROLLDYN_PYTHON="$PWD/$venv/bin/python" cargo test --workspace
+echo "[test] $((SECONDS - start)) s: cargo test --workspace"
 
 # The dev profile (dependencies and the engine at -O2, Cargo.toml) reuses
 # what `cargo test` built; a user's `pip install` builds the release
 # profile.
+start=$SECONDS
 PATH="$PWD/$venv/bin:$PATH" MATURIN_PEP517_ARGS="--profile dev" "$venv/bin/python" -m pip install --quiet \
   --disable-pip-version-check --no-build-isolation "./crates/rolldyn-py[test,plot]"
+echo "[test] $((SECONDS - start)) s: pip install ./crates/rolldyn-py"
 ROLLDYN_CLI="$PWD/target/debug/rolldyn" "$venv/bin/python" -m pytest -q crates/rolldyn-py/tests

@@ -51,7 +51,6 @@ pub mod quasistatic;
 pub mod seals;
 pub mod signal;
 pub mod surface;
-#[cfg(any(test, feature = "testing"))]
 pub mod testing;
 pub mod thermal;
 pub mod threads;

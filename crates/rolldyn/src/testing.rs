@@ -1,6 +1,5 @@
 //! Bearings and configurations of the source papers, built from their
-//! printed tables, for tests, benchmarks and examples (feature `testing`;
-//! always in the crate's own tests): the 7008C, 6304 and 7218B geometries,
+//! printed tables, for tests, benchmarks and examples: the 7008C, 6304 and 7218B geometries,
 //! Shan et al. 2023's and the default case's dynamic configurations, and
 //! the two adaptive integrators the dynamic validation cases run with.
 //! Fixtures of known-valid data: they panic on a bug.
