@@ -100,7 +100,12 @@ const IMPACT_MEANS: [&str; 3] = [
 /// flagged.
 #[test]
 fn low_speed_ehl_closes_its_balance() {
-    let (s, _) = run("500rpm", &["--speed", "500 rpm", "--verify"], None);
+    // 20 ms of the case's 50: from about 20 ms on, the cage rattles in its
+    // pockets at this speed (impacts of tens of newtons), and the whole
+    // run with its verifying run took 265 s of the test suite's time
+    // against 68 s; the balance failed from the first milliseconds.
+    let at_500 = ["--speed", "500 rpm", "--duration", "20 ms", "--verify"];
+    let (s, _) = run("500rpm", &at_500, None);
     assert_converged("500 rpm", &s, &MEANS);
     // Without gravity at 100 rpm: the 3 g cage, started centred, drops
     // onto its guide land in the first 6 ms (no lift at that speed), a
