@@ -6,6 +6,9 @@
 //! `run`'s). docs/dynamics.md, "Accuracy at default
 //! settings", explains the measures and their limits.
 
+use crate::Failure;
+use crate::checkpoint::RunRecord;
+use rolldyn_case::Case;
 use serde::Serialize;
 
 /// Largest energy-balance error, relative to the drive work, that a run
@@ -205,6 +208,59 @@ pub fn assess(
         hint,
         verify: None,
     }
+}
+
+/// The tolerances of a completed run, which `--verify` tightens.
+#[derive(Debug, Clone, Copy)]
+pub struct RunTolerances {
+    /// The relative tolerance (None: a fixed-step method).
+    pub relative: Option<f64>,
+    /// The energy tolerance (None: no energy error control).
+    pub energy: Option<f64>,
+    /// A fixed-step method's step \[s\], tightened when there is no
+    /// relative tolerance (None: left as it is).
+    pub fixed_step: Option<f64>,
+}
+
+/// The verifying run of `--verify`: the run's record with its tolerances
+/// tightened [`VERIFY_TIGHTENING`]-fold (the relative and energy
+/// tolerances, or the fixed step) and its traction grid refined two-fold
+/// each way; the case it gives; the refined grid's description (None: no
+/// grid to refine). The record keeps the changes as `--set` overrides, so
+/// that the verifying run's `run.json` says what it ran.
+pub fn verifying_case(
+    record: &RunRecord,
+    tolerances: RunTolerances,
+) -> Result<(RunRecord, Case, Option<String>), Failure> {
+    let mut tight = record.clone();
+    let sets = &mut tight.overrides.set;
+    match (tolerances.relative, tolerances.fixed_step) {
+        (Some(rtol), _) => {
+            sets.push(format!(
+                "solver.relative_tolerance={:e}",
+                (rtol / VERIFY_TIGHTENING).max(1e-12)
+            ));
+            if let Some(eps) = tolerances.energy {
+                sets.push(format!(
+                    "solver.energy_tolerance={:e}",
+                    (eps / VERIFY_TIGHTENING).max(1e-9)
+                ));
+            }
+        }
+        (None, Some(step)) => sets.push(format!(
+            "solver.time_step={:e} s",
+            (step / VERIFY_TIGHTENING).max(1e-10)
+        )),
+        (None, None) => {}
+    }
+    let load = |r: &RunRecord| r.overrides.load_text(&r.source, r.case_text.as_deref());
+    let case = load(&tight)?;
+    let Some((grid_sets, description)) = refined_traction_grid(&case) else {
+        return Ok((tight, case, None));
+    };
+    tight.overrides.set.extend(grid_sets);
+    let case = load(&tight)?;
+    Ok((tight, case, Some(description)))
 }
 
 /// The overrides that refine a case's traction grid two-fold each way,

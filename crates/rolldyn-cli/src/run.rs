@@ -8,7 +8,7 @@
 //! shows on a terminal. Keys are documented in docs/cli.md.
 
 use crate::Failure;
-use crate::accuracy::{VERIFY_TIGHTENING, refined_traction_grid};
+use crate::accuracy::{RunTolerances, verifying_case};
 use crate::checkpoint::{self, Position, RunRecord, continue_to};
 use crate::pipeline::{Recorder, Start, drive, fresh_dir};
 use crate::recorder::Channels;
@@ -404,39 +404,14 @@ fn verify_run(
     options: &RunOptions,
     summary: &mut Summary,
 ) -> Result<(), Failure> {
-    let mut tight = record.clone();
-    let sets = &mut tight.overrides.set;
-    match summary.relative_tolerance {
-        Some(rtol) => {
-            sets.push(format!(
-                "solver.relative_tolerance={:e}",
-                (rtol / VERIFY_TIGHTENING).max(1e-12)
-            ));
-            if let Some(eps) = summary.energy_tolerance {
-                sets.push(format!(
-                    "solver.energy_tolerance={:e}",
-                    (eps / VERIFY_TIGHTENING).max(1e-9)
-                ));
-            }
-        }
-        None => sets.push(format!(
-            "solver.time_step={:e} s",
-            (summary.max_step_s / VERIFY_TIGHTENING).max(1e-10)
-        )),
-    }
-    let mut case = tight
-        .overrides
-        .load_text(&tight.source, tight.case_text.as_deref())?;
-    let traction_grid = match refined_traction_grid(&case) {
-        Some((grid_sets, description)) => {
-            tight.overrides.set.extend(grid_sets);
-            case = tight
-                .overrides
-                .load_text(&tight.source, tight.case_text.as_deref())?;
-            Some(description)
-        }
-        None => None,
-    };
+    let (tight, case, traction_grid) = verifying_case(
+        record,
+        RunTolerances {
+            relative: summary.relative_tolerance,
+            energy: summary.energy_tolerance,
+            fixed_step: Some(summary.max_step_s),
+        },
+    )?;
     let verify_dir = dir.join("verify");
     let quiet = RunOptions {
         resume: false,

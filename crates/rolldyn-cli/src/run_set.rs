@@ -9,7 +9,7 @@
 //! extends a finished one.
 
 use crate::Failure;
-use crate::accuracy::{Change, VERIFY_LIMIT_MEANS, VERIFY_TIGHTENING, Verification};
+use crate::accuracy::{Change, VERIFY_LIMIT_MEANS, Verification};
 use crate::checkpoint::{self, Position, RunRecord};
 use crate::pipeline::{Recorder, Start, drive, fresh_dir};
 use crate::recorder::Channels;
@@ -543,31 +543,15 @@ pub fn run_and_verify(
     if !options.verify || summary.status != "completed" {
         return Ok(summary);
     }
-    let mut tight = record.clone();
-    if let Some(rtol) = summary.relative_tolerance {
-        tight.overrides.set.push(format!(
-            "solver.relative_tolerance={:e}",
-            (rtol / VERIFY_TIGHTENING).max(1e-12)
-        ));
-    }
-    if let Some(eps) = summary.energy_tolerance {
-        tight.overrides.set.push(format!(
-            "solver.energy_tolerance={:e}",
-            (eps / VERIFY_TIGHTENING).max(1e-9)
-        ));
-    }
-    let mut tight_case = tight
-        .overrides
-        .load_text(&tight.source, tight.case_text.as_deref())?;
-    let traction_grid = crate::accuracy::refined_traction_grid(&tight_case).map(|(sets, text)| {
-        tight.overrides.set.extend(sets);
-        text
-    });
-    if traction_grid.is_some() {
-        tight_case = tight
-            .overrides
-            .load_text(&tight.source, tight.case_text.as_deref())?;
-    }
+    // A set's fixed step is left as it is (its summary does not state it).
+    let (tight, tight_case, traction_grid) = crate::accuracy::verifying_case(
+        record,
+        crate::accuracy::RunTolerances {
+            relative: summary.relative_tolerance,
+            energy: summary.energy_tolerance,
+            fixed_step: None,
+        },
+    )?;
     let verify_dir = dir.join("verify");
     let quiet = RunOptions {
         quiet: true,

@@ -344,48 +344,40 @@ impl Elements {
             film,
         );
         let traction = self.race_traction(want, &kinematics, asperity_share);
-        let (slip, relative_spin) = (kinematics.slip, kinematics.relative_spin);
         // Rolling axis e_a = n × û and the rolling rate about it.
         let rolling_axis = if u > 0.0 {
             n.cross(&direction)
         } else {
             Vector3::zeros()
         };
-        let rolling_rate = relative_spin.dot(&rolling_axis);
-        let mut moment = traction.moment;
-        let mut couple = traction.couple;
-        let mut dissipation = traction.dissipation;
-        let mut losses = traction_losses(&traction, &kinematics);
-        if self.params.rolling_hysteresis > 0.0 {
-            let m_h = self.hysteresis_couple(rolling_rate, &rolling_axis, ellipse.semi_minor, load);
-            moment += m_h;
-            couple += m_h;
-            dissipation -= m_h.dot(&relative_spin);
-            losses.hysteresis = -m_h.dot(&relative_spin);
-        }
-        let mut force = -load * n + traction.force;
-        if let Some(rolling) = self.params.rolling_resistance.as_ref().filter(|_| u > 0.0) {
-            let (f_r, c_r) = self.rolling_resistance(
-                rolling,
+        let rolling_rate = kinematics.relative_spin.dot(&rolling_axis);
+        let mut loads = BallLoads {
+            force: -load * n + traction.force,
+            moment: traction.moment,
+            couple: traction.couple,
+            dissipation: traction.dissipation,
+            losses: traction_losses(&traction, &kinematics),
+        };
+        self.add_rolling_losses(
+            &mut loads,
+            &Rolling {
                 ring,
-                &hertz,
-                &geometry,
-                &ellipse,
+                hertz: &hertz,
+                geometry: &geometry,
+                ellipse: &ellipse,
                 load,
-                &entrainment,
-                &rolling_axis,
-                steady.as_ref(),
-            );
-            force += f_r;
-            moment += (point - q).cross(&f_r) + c_r;
-            couple += c_r;
-            let power = -(f_r.dot(&slip) + c_r.dot(&relative_spin));
-            dissipation += power;
-            losses.rolling_resistance = power;
-        }
+                entrainment: &entrainment,
+                axis: rolling_axis,
+                rate: rolling_rate,
+                steady: steady.as_ref(),
+                lever: point - q,
+                slip: kinematics.slip,
+                relative_spin: kinematics.relative_spin,
+            },
+        );
         let elastic = hertz.stiffness * geometry.penetration * geometry.penetration.sqrt();
-        dissipation += (load - elastic) * penetration_rate;
-        losses.damping = (load - elastic) * penetration_rate;
+        loads.dissipation += (load - elastic) * penetration_rate;
+        loads.losses.damping = (load - elastic) * penetration_rate;
         let output = if with_output {
             ContactOutput::of(
                 &geometry,
@@ -393,7 +385,7 @@ impl Elements {
                 rolling_rate,
                 asperity_share,
                 traction.creep,
-                losses,
+                loads.losses,
             )
         } else {
             ContactOutput::default()
@@ -403,12 +395,12 @@ impl Elements {
             surface: surface.scaled(load),
             penetration_rate,
             load,
-            dissipation,
+            dissipation: loads.dissipation,
             film_work,
-            losses,
-            force,
-            moment,
-            couple,
+            losses: loads.losses,
+            force: loads.force,
+            moment: loads.moment,
+            couple: loads.couple,
             output,
         })
     }
@@ -544,24 +536,50 @@ impl Elements {
         -(0.1875 * self.params.rolling_hysteresis * semi_minor * load * ramp) * rolling_axis
     }
 
+    /// The rolling losses (module doc) added to a contact's loads on the
+    /// ball: the hysteresis couple, and the EHL rolling resistance's force
+    /// at the contact point and its couple, with their powers.
+    fn add_rolling_losses(&self, loads: &mut BallLoads, at: &Rolling) {
+        if self.params.rolling_hysteresis > 0.0 {
+            let m_h = self.hysteresis_couple(at.rate, &at.axis, at.ellipse.semi_minor, at.load);
+            loads.moment += m_h;
+            loads.couple += m_h;
+            loads.dissipation -= m_h.dot(&at.relative_spin);
+            loads.losses.hysteresis = -m_h.dot(&at.relative_spin);
+        }
+        let u = at.entrainment.norm();
+        if let Some(rolling) = self.params.rolling_resistance.as_ref().filter(|_| u > 0.0) {
+            let (f_r, c_r) = self.rolling_resistance(rolling, at);
+            loads.force += f_r;
+            loads.moment += at.lever.cross(&f_r) + c_r;
+            loads.couple += c_r;
+            let power = -(f_r.dot(&at.slip) + c_r.dot(&at.relative_spin));
+            loads.dissipation += power;
+            loads.losses.rolling_resistance = power;
+        }
+    }
+
     /// The EHL rolling resistance's force at the contact point and couple
     /// about it on the ball (module doc) at entrainment velocity
-    /// `entrainment` (|u| > 0) and rolling axis e_a; starved by the film's
-    /// supply (`steady`, the steady film, when computed), or with a flooded
-    /// supply by the method's kinematic replenishment.
-    #[allow(clippy::too_many_arguments)]
+    /// `at.entrainment` (|u| > 0) and rolling axis e_a; starved by the
+    /// film's supply (`at.steady`, the steady film, when computed), or with
+    /// a flooded supply by the method's kinematic replenishment.
     fn rolling_resistance(
         &self,
         rolling: &RollingResistance,
-        ring: &RingMotion,
-        hertz: &crate::contact::HertzCoefficients,
-        geometry: &TorusContact,
-        ellipse: &crate::contact::HertzResult,
-        load: f64,
-        entrainment: &Vector3<f64>,
-        rolling_axis: &Vector3<f64>,
-        steady: Option<&crate::lubrication::ContactFilm>,
+        at: &Rolling,
     ) -> (Vector3<f64>, Vector3<f64>) {
+        let Rolling {
+            ring,
+            hertz,
+            geometry,
+            ellipse,
+            load,
+            entrainment,
+            axis: rolling_axis,
+            steady,
+            ..
+        } = *at;
         let u = entrainment.norm();
         let curvature = self.curvature(ring, geometry.contact_angle);
         let rolling_radius = curvature.rolling_radius;
@@ -601,9 +619,40 @@ impl Elements {
             0.5 * self.geometry.ball_diameter,
             rolling_radius,
             &(entrainment / u),
-            rolling_axis,
+            &rolling_axis,
         )
     }
+}
+
+/// A contact's loads on the ball and their power, summed as the contact
+/// is evaluated: the normal load and the traction, then the rolling losses.
+struct BallLoads {
+    force: Vector3<f64>,
+    moment: Vector3<f64>,
+    couple: Vector3<f64>,
+    dissipation: f64,
+    losses: ContactLosses,
+}
+
+/// What the rolling losses read of a contact: its ring, Hertz
+/// coefficients, geometry and ellipse at load Q, the entrainment velocity
+/// u, the rolling axis e_a = n × û and the rolling rate about it, the steady
+/// film (when computed), the lever P − q from the ball's centre, and the
+/// ball's slip and spin relative to the ring.
+#[derive(Clone, Copy)]
+struct Rolling<'a> {
+    ring: &'a RingMotion,
+    hertz: &'a HertzCoefficients,
+    geometry: &'a TorusContact,
+    ellipse: &'a HertzResult,
+    load: f64,
+    entrainment: &'a Vector3<f64>,
+    axis: Vector3<f64>,
+    rate: f64,
+    steady: Option<&'a ContactFilm>,
+    lever: Vector3<f64>,
+    slip: Vector3<f64>,
+    relative_spin: Vector3<f64>,
 }
 
 /// The traction's power by mechanism (crate::power::dissipation): rigid

@@ -622,71 +622,16 @@ impl Fastsim {
                 },
                 &separable,
             );
-            let mut px = [0.0; LANES];
-            let mut py = [0.0; LANES];
-            // Per-lane sums keep the additions out of one serial chain.
-            let mut sfx = [0.0; LANES];
-            let mut sfy = [0.0; LANES];
-            let mut smn = [0.0; LANES];
-            let mut spower = [0.0; LANES];
-            let mut sstuck = [0.0; LANES];
-            for e in 0..elements {
-                let t = -1.0 + (e as f64 + 0.5) * dt;
-                let shape = element_shape(e);
-                // Rigid slip integrated exactly (it is linear in x) from the
-                // previous element centre, or from the leading edge.
-                let (step, back) = if e == 0 { (0.5, 0.25) } else { (1.0, 0.5) };
-                for l in 0..LANES {
-                    let st = &lane[l];
-                    let x = st.half * t;
-                    let x_between = x - back * st.dx;
-                    let gain = step * st.gain;
-                    let tx = px[l] - gain * st.rate_x;
-                    let ty = py[l] - gain * (st.slip_y + w_n * x_between);
-                    let limit = st.limit * shape;
-                    let size2 = tx * tx + ty * ty;
-                    let stick = size2 <= limit * limit;
-                    if stick {
-                        px[l] = tx;
-                        py[l] = ty;
-                    } else {
-                        // The slip step: the rigid slip at x_k rather than
-                        // between the centres, blended in by the overshoot.
-                        let excess = 1.0 - limit / size2.sqrt();
-                        let ty = ty - excess * gain * w_n * back * st.dx;
-                        let scale = limit / (tx * tx + ty * ty).sqrt();
-                        px[l] = tx * scale;
-                        py[l] = ty * scale;
-                    }
-                    let cell = st.dx * dy;
-                    let (dfx, dfy) = (px[l] * cell, py[l] * cell);
-                    sfx[l] += dfx;
-                    sfy[l] += dfy;
-                    smn[l] += x * dfy - st.y * dfx;
-                    spower[l] -= dfx * st.rate_x + dfy * (st.slip_y + w_n * x);
-                    if stick {
-                        sstuck[l] += cell;
-                    }
-                    if st.active {
-                        map(&MapCell {
-                            x,
-                            y: st.y,
-                            traction: Vector2::new(px[l], py[l]),
-                            bound: limit,
-                            stick,
-                        });
-                    }
-                }
-            }
+            let sums = march_lanes(&lane, elements, (dt, dy), w_n, &element_shape, map);
             for (l, st) in lane.iter().enumerate() {
-                fx += sfx[l];
-                fy += sfy[l];
-                mn += smn[l];
-                power += spower[l];
-                stuck += sstuck[l];
+                fx += sums.fx[l];
+                fy += sums.fy[l];
+                mn += sums.mn[l];
+                power += sums.power[l];
+                stuck += sums.stuck[l];
                 // (x x̂ + y ŷ − d n) × (f_x x̂ + f_y ŷ): the −d n part.
-                mx += st.depth * sfy[l];
-                my -= st.depth * sfx[l];
+                mx += st.depth * sums.fy[l];
+                my -= st.depth * sums.fx[l];
             }
         }
         let result = TractionResult {
@@ -708,6 +653,92 @@ impl Fastsim {
         };
         (result, creep)
     }
+}
+
+/// One group of [`LANES`] strips' sums over their elements: the forces
+/// along x̂ and ŷ, the moment about n, the power and the stuck area, one
+/// entry per lane (kept apart so that the additions do not form one serial
+/// chain).
+struct LaneSums {
+    fx: [f64; LANES],
+    fy: [f64; LANES],
+    mn: [f64; LANES],
+    power: [f64; LANES],
+    stuck: [f64; LANES],
+}
+
+/// Marches a group of strips through their `elements` elements together
+/// (cell sizes `(dt, dy)`, spin w_n about the normal), so that the strips'
+/// sequential element recurrences overlap in the pipeline; `map` receives
+/// every cell of the active strips. Inlined into both builds of the march
+/// (`Fastsim::march`), the AVX2 one and the baseline.
+#[inline(always)]
+fn march_lanes(
+    lane: &[Strip; LANES],
+    elements: usize,
+    (dt, dy): (f64, f64),
+    w_n: f64,
+    element_shape: &impl Fn(usize) -> f64,
+    map: &mut impl FnMut(&MapCell),
+) -> LaneSums {
+    let mut px = [0.0; LANES];
+    let mut py = [0.0; LANES];
+    let mut sums = LaneSums {
+        fx: [0.0; LANES],
+        fy: [0.0; LANES],
+        mn: [0.0; LANES],
+        power: [0.0; LANES],
+        stuck: [0.0; LANES],
+    };
+    for e in 0..elements {
+        let t = -1.0 + (e as f64 + 0.5) * dt;
+        let shape = element_shape(e);
+        // Rigid slip integrated exactly (it is linear in x) from the
+        // previous element centre, or from the leading edge.
+        let (step, back) = if e == 0 { (0.5, 0.25) } else { (1.0, 0.5) };
+        for l in 0..LANES {
+            let st = &lane[l];
+            let x = st.half * t;
+            let x_between = x - back * st.dx;
+            let gain = step * st.gain;
+            let tx = px[l] - gain * st.rate_x;
+            let ty = py[l] - gain * (st.slip_y + w_n * x_between);
+            let limit = st.limit * shape;
+            let size2 = tx * tx + ty * ty;
+            let stick = size2 <= limit * limit;
+            if stick {
+                px[l] = tx;
+                py[l] = ty;
+            } else {
+                // The slip step: the rigid slip at x_k rather than
+                // between the centres, blended in by the overshoot.
+                let excess = 1.0 - limit / size2.sqrt();
+                let ty = ty - excess * gain * w_n * back * st.dx;
+                let scale = limit / (tx * tx + ty * ty).sqrt();
+                px[l] = tx * scale;
+                py[l] = ty * scale;
+            }
+            let cell = st.dx * dy;
+            let (dfx, dfy) = (px[l] * cell, py[l] * cell);
+            sums.fx[l] += dfx;
+            sums.fy[l] += dfy;
+            sums.mn[l] += x * dfy - st.y * dfx;
+            sums.power[l] -= dfx * st.rate_x + dfy * (st.slip_y + w_n * x);
+            if stick {
+                sums.stuck[l] += cell;
+            }
+            if st.active {
+                map(&MapCell {
+                    x,
+                    y: st.y,
+                    traction: Vector2::new(px[l], py[l]),
+                    bound: limit,
+                    stick,
+                });
+            }
+        }
+    }
+    sums
 }
 
 #[cfg(test)]
