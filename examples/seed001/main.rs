@@ -265,10 +265,12 @@ fn simulate(label: &str, axial: f64, surface: &str, duration: f64) -> Result<Out
         1,
     );
     // The paper's bearing alone (the preset without its mounting), with its
-    // undamped Hertz contacts and the ring mass of case.toml.
+    // undamped Hertz contacts, its pockets without an oil film and the ring
+    // mass of case.toml.
     let overrides = [
         Override::flag("--axial-load", "operating.force_x", &format!("{axial} N")),
         Override::parse_set("model.normal_law=hertz").map_err(|e| e.to_string())?,
+        Override::parse_set("cage.pocket_squeeze_film=false").map_err(|e| e.to_string())?,
         Override::parse_set("inner_ring.mass=0.5 kg").map_err(|e| e.to_string())?,
     ];
     let case = load_case("7008C preset", &text, &overrides).map_err(|e| e.to_string())?;

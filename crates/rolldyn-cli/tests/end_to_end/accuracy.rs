@@ -100,10 +100,10 @@ const IMPACT_MEANS: [&str; 3] = [
 /// flagged.
 #[test]
 fn low_speed_ehl_closes_its_balance() {
-    // 20 ms of the case's 50: from about 20 ms on, the cage rattles in its
-    // pockets at this speed (impacts of tens of newtons), and the whole
-    // run with its verifying run took 265 s of the test suite's time
-    // against 68 s; the balance failed from the first milliseconds.
+    // 20 ms of the case's 50: after about 20 ms at this speed the cage and
+    // balls settle into a motion under their weights that takes a hundred
+    // times the steps (docs/dynamics.md, "Limits"); the balance failed
+    // from the first milliseconds.
     let at_500 = ["--speed", "500 rpm", "--duration", "20 ms", "--verify"];
     let (s, _) = run("500rpm", &at_500, None);
     assert_converged("500 rpm", &s, &MEANS);
