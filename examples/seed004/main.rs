@@ -57,54 +57,79 @@ fn main() -> Result<(), String> {
     let mut csv = String::from(
         "speed_rpm,inner_w,outer_w,spin_w,hysteresis_w,differential_sliding_w,cage_w,total_w,outer_ring_c,inner_ring_c,ball_c,oil_c,passes,paper_inner_w,paper_outer_w,paper_outer_ring_c,paper_fe_outer_ring_c\n",
     );
-    for (rpm, p_in, p_out, t_paper, t_fe) in TABLE2 {
-        let case = case_at(rpm)?;
-        let bad = |e: rolldyn_case::case::Invalid| format!("{}: {}", e.key, e.rule);
-        let problem = CoupledProblem {
-            geometry: &case.bearing.geometry,
-            ball: &case.materials.ball.material,
-            rings: &case.materials.rings.material,
-            hertz: case.contact_stiffness,
-            conditions: rolldyn::quasistatic::Conditions {
-                loads: case.loads,
-                inner_speed: rpm * std::f64::consts::TAU / 60.0,
-                control: case.raceway_control,
-            },
-            options: case.solver_options(),
-            power: case.local_method_inputs().map_err(bad)?,
-            thermal: case.thermal_inputs().map_err(bad)?,
-            viscosity: case.lubricant.as_ref().and_then(|l| l.viscosity_law),
-            expansion: case.thermal.expansion,
-        };
-        let s = coupled_steady(&problem, &CoupledOptions::default()).map_err(|e| e.to_string())?;
-        let p = &s.power;
-        let c = |n: &str| s.thermal.temperature(n).unwrap_or(f64::NAN) - 273.15;
-        let spin = p.inner.spin + p.outer.spin;
-        let hyst = p.inner.hysteresis + p.outer.hysteresis;
-        let diff = p.inner.differential_sliding + p.outer.differential_sliding;
-        let cage = p.cage_land + p.ball_pocket + p.ball_drag + p.cage_drag;
-        let _ = writeln!(
-            table,
-            "{rpm:>6.0} {:>9.2} {:>8.2} {spin:>7.2} {hyst:>7.2} {diff:>7.2} {cage:>6.2} {:>9.2} {:>10.2}   | {p_in:>15.2} {p_out:>8.2} {t_paper:>7.2} ({t_fe:.1})",
-            p.inner.total(),
-            p.outer.total(),
-            p.total(),
-            c("outer_ring"),
-        );
-        let _ = writeln!(
-            csv,
-            "{rpm},{},{},{spin},{hyst},{diff},{cage},{},{},{},{},{},{},{p_in},{p_out},{t_paper},{t_fe}",
-            p.inner.total(),
-            p.outer.total(),
-            p.total(),
-            c("outer_ring"),
-            c("inner_ring"),
-            c("ball"),
-            c("oil"),
-            s.history.len()
-        );
+    for row in TABLE2 {
+        coupled_row(row, &mut table, &mut csv)?;
     }
-    // Dynamic model at 9000 rpm: exact dissipation by component.
+    dynamic_against_local(&mut table)?;
+    print!("{table}");
+    let write = |name: &str, text: &str| {
+        std::fs::write(out.join(name), text).map_err(|e| format!("{name}: {e}"))
+    };
+    write("table.txt", &table)?;
+    write("power_temperature.csv", &csv)?;
+    Ok(())
+}
+
+/// One speed of Lei et al. 2023's Table 2: the local method's power by
+/// component and the coupled network's temperatures, as a row of the
+/// table and of the CSV file, beside the paper's values.
+fn coupled_row(
+    (rpm, p_in, p_out, t_paper, t_fe): (f64, f64, f64, f64, f64),
+    table: &mut String,
+    csv: &mut String,
+) -> Result<(), String> {
+    let case = case_at(rpm)?;
+    let bad = |e: rolldyn_case::case::Invalid| format!("{}: {}", e.key, e.rule);
+    let problem = CoupledProblem {
+        geometry: &case.bearing.geometry,
+        ball: &case.materials.ball.material,
+        rings: &case.materials.rings.material,
+        hertz: case.contact_stiffness,
+        conditions: rolldyn::quasistatic::Conditions {
+            loads: case.loads,
+            inner_speed: rpm * std::f64::consts::TAU / 60.0,
+            control: case.raceway_control,
+        },
+        options: case.solver_options(),
+        power: case.local_method_inputs().map_err(bad)?,
+        thermal: case.thermal_inputs().map_err(bad)?,
+        viscosity: case.lubricant.as_ref().and_then(|l| l.viscosity_law),
+        expansion: case.thermal.expansion,
+    };
+    let s = coupled_steady(&problem, &CoupledOptions::default()).map_err(|e| e.to_string())?;
+    let p = &s.power;
+    let c = |n: &str| s.thermal.temperature(n).unwrap_or(f64::NAN) - 273.15;
+    let spin = p.inner.spin + p.outer.spin;
+    let hyst = p.inner.hysteresis + p.outer.hysteresis;
+    let diff = p.inner.differential_sliding + p.outer.differential_sliding;
+    let cage = p.cage_land + p.ball_pocket + p.ball_drag + p.cage_drag;
+    let _ = writeln!(
+        table,
+        "{rpm:>6.0} {:>9.2} {:>8.2} {spin:>7.2} {hyst:>7.2} {diff:>7.2} {cage:>6.2} {:>9.2} {:>10.2}   | {p_in:>15.2} {p_out:>8.2} {t_paper:>7.2} ({t_fe:.1})",
+        p.inner.total(),
+        p.outer.total(),
+        p.total(),
+        c("outer_ring"),
+    );
+    let _ = writeln!(
+        csv,
+        "{rpm},{},{},{spin},{hyst},{diff},{cage},{},{},{},{},{},{},{p_in},{p_out},{t_paper},{t_fe}",
+        p.inner.total(),
+        p.outer.total(),
+        p.total(),
+        c("outer_ring"),
+        c("inner_ring"),
+        c("ball"),
+        c("oil"),
+        s.history.len()
+    );
+    Ok(())
+}
+
+/// The dynamic model at 9000 rpm against the local method, power by
+/// component (the dynamic model's exact dissipation, step-weighted over
+/// its last 20 ms), appended to the table.
+fn dynamic_against_local(table: &mut String) -> Result<(), String> {
     let case = case_at(9000.0)?;
     let params = case
         .dynamics_parameters()
@@ -206,12 +231,6 @@ fn main() -> Result<(), String> {
         mean.total() * w,
         qs.total()
     );
-    print!("{table}");
-    let write = |name: &str, text: &str| {
-        std::fs::write(out.join(name), text).map_err(|e| format!("{name}: {e}"))
-    };
-    write("table.txt", &table)?;
-    write("power_temperature.csv", &csv)?;
     Ok(())
 }
 
