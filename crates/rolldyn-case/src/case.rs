@@ -484,7 +484,7 @@ impl Case {
             traction::mixed_lubrication(raw.model.mixed_lubrication.as_ref(), &traction, &surface)?;
         let output = output::selection(&raw.output, bearing.geometry.ball_count)?;
         let thermal = thermal::thermal(&raw.thermal, &materials.ball.name)?;
-        Ok(Self {
+        let case = Self {
             title: raw.title.clone(),
             bearing,
             cage: cage::cage(&raw.cage)?,
@@ -543,7 +543,11 @@ impl Case {
                 .iter()
                 .map(|(k, v)| (k.clone(), v.clone()))
                 .collect(),
-        })
+        };
+        // The pockets' squeeze film needs the oil of every command's case,
+        // not only a run's: refused where the file states it.
+        case.pocket_squeeze()?;
+        Ok(case)
     }
 }
 

@@ -242,6 +242,10 @@ fn has_path(table: &Table, path: &str) -> bool {
 /// Sections a `bearing.preset` brings in.
 const PRESET_SECTIONS: [&str; 3] = ["bearing", "cage", "materials"];
 
+/// The key of the pockets' squeeze film, which a `bearing.preset` brings
+/// only into a case with a `[lubricant]`.
+const POCKET_SQUEEZE_FILM: &str = "cage.pocket_squeeze_film";
+
 struct Sources<'a> {
     name: &'a str,
     text: &'a str,
@@ -451,6 +455,13 @@ fn on_base(
             merged.insert(section.to_string(), v.clone());
         }
     }
+    // The pockets' squeeze film is of the preset's oil: a case without a
+    // [lubricant] takes the cage without it (docs/case-format.md,
+    // `bearing.preset`).
+    let dry = !table.contains_key("lubricant");
+    if dry && let Some(Value::Table(cage)) = merged.get_mut("cage") {
+        cage.remove(POCKET_SQUEEZE_FILM.trim_start_matches("cage."));
+    }
     let mut user_leaves = Vec::new();
     leaf_paths(table, "", &mut user_leaves);
     if let Some(Value::Table(assumed)) = base_table.get("assumptions") {
@@ -461,6 +472,7 @@ fn on_base(
                     .iter()
                     .any(|s| k.starts_with(&format!("{s}.")))
             })
+            .filter(|(k, _)| !(dry && k.as_str() == POCKET_SQUEEZE_FILM))
             .filter(|(k, _)| !user_leaves.contains(k))
             .map(|(k, v)| (k.clone(), v.clone()))
             .collect();

@@ -156,9 +156,11 @@ fn pocket_laws_and_the_pocket_squeeze_film() {
             .unwrap()
             .dynamics_parameters()
     };
-    let e = dynamics(&squeeze).unwrap_err();
-    assert_eq!(e.key, "cage.pocket_squeeze_film");
-    assert!(e.rule.contains("[lubricant]"), "{}", e.rule);
+    // Refused when the case loads, located in the file.
+    let e = err(&squeeze);
+    assert_eq!(e.key.as_deref(), Some("cage.pocket_squeeze_film"), "{e}");
+    assert!(e.to_string().contains("case.toml:"), "{e}");
+    assert!(e.rule.contains("[lubricant]"), "{e}");
     let lubricated = format!(
         "{squeeze}\n[lubricant]\nviscosity = \"0.05 Pa.s\"\npressure_viscosity = \"2e-8 1/Pa\"\n"
     );
@@ -185,13 +187,9 @@ fn pocket_laws_and_the_pocket_squeeze_film() {
             .cavitation,
         rolldyn::cage::SqueezeCavitation::FullFilm
     );
-    let e = dynamics(&with("pocket_min_film = \"0.1 mm\"")).unwrap_err();
-    assert_eq!(e.key, "cage.pocket_min_film");
-    assert!(
-        e.rule.contains("half of cage.pocket_clearance"),
-        "{}",
-        e.rule
-    );
+    let e = err(&with("pocket_min_film = \"0.1 mm\""));
+    assert_eq!(e.key.as_deref(), Some("cage.pocket_min_film"), "{e}");
+    assert!(e.rule.contains("half of cage.pocket_clearance"), "{e}");
     let e = err(&full.replace("\"full_film\"", "\"gumbel\""));
     assert_eq!(
         e.key.as_deref(),
@@ -458,6 +456,36 @@ fn a_shaft_refuses_prescribed_ring_displacements() {
     }
 }
 
+/// A `bearing.preset` brings its pockets' squeeze film only into a case
+/// with a `[lubricant]` (the film is of the preset's oil); a file that
+/// asks for the film itself without one is refused where it says so, by
+/// every command (the case does not load).
+#[test]
+fn a_presets_pocket_film_needs_the_cases_oil() {
+    let dry = "[bearing]\npreset = \"6205\"\n[operating]\nspeed = \"1797 rpm\"\n";
+    let case = load_case("case.toml", dry, &[]).unwrap();
+    assert!(!case.cage.pocket_squeeze_film);
+    assert!(
+        !case
+            .assumptions
+            .iter()
+            .any(|(k, _)| k == "cage.pocket_squeeze_film")
+    );
+    let oiled = format!(
+        "{dry}[lubricant]\nviscosity = \"0.01 Pa.s\"\npressure_viscosity = \"2e-8 1/Pa\"\n"
+    );
+    let case = load_case("case.toml", &oiled, &[]).unwrap();
+    assert!(case.cage.pocket_squeeze_film);
+    assert!(
+        case.assumptions
+            .iter()
+            .any(|(k, _)| k == "cage.pocket_squeeze_film")
+    );
+    let asked = format!("{dry}[cage]\npocket_squeeze_film = true\n");
+    let e = load_case("case.toml", &asked, &[]).unwrap_err();
+    check(&e, "cage.pocket_squeeze_film", 6, &["needs a [lubricant]"]);
+}
+
 /// `model.bearing_damping` τ adds c = τ k_r radially to the inner ring's
 /// support, k_r the quasi-static radial stiffness at the operating point;
 /// a τ outside [0, 1e-3] s, an `[outer_ring]` and a bearing set are
@@ -479,7 +507,11 @@ fn bearing_damping_is_tau_times_the_radial_stiffness() {
         "bearing_damping = \"2e-3 s\"",
         1,
     ));
-    check(&e, "model.bearing_damping", 44, &["[0, 1e-3] s"]);
+    let line = 1 + preset
+        .lines()
+        .position(|l| l.starts_with("bearing_damping"))
+        .unwrap();
+    check(&e, "model.bearing_damping", line, &["[0, 1e-3] s"]);
     let with_housing =
         format!("{preset}\n[outer_ring]\nmass = \"1 kg\"\nhousing_stiffness = \"1e8 N/m\"\n");
     let e = load_case("6205", &with_housing, &[])

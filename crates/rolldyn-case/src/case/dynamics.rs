@@ -305,7 +305,7 @@ impl Case {
 
     /// The pocket film's squeeze damping, if asked for: η₀ from the
     /// lubricant, R = D/2.
-    fn pocket_squeeze(&self) -> Result<Option<PocketSqueeze>, Invalid> {
+    pub(crate) fn pocket_squeeze(&self) -> Result<Option<PocketSqueeze>, Invalid> {
         let c = &self.cage;
         if !c.pocket_squeeze_film {
             return Ok(None);
