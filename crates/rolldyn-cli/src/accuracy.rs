@@ -6,7 +6,6 @@
 //! `run`'s). docs/dynamics.md, "Accuracy at default
 //! settings", explains the measures and their limits.
 
-use crate::Failure;
 use crate::checkpoint::RunRecord;
 use rolldyn_case::Case;
 use serde::Serialize;
@@ -222,95 +221,185 @@ pub struct RunTolerances {
     pub fixed_step: Option<f64>,
 }
 
-/// The verifying run of `--verify`: the run's record with its tolerances
+/// What `--verify` changes in a case, as typed values: the tolerances
 /// tightened [`VERIFY_TIGHTENING`]-fold (the relative and energy
-/// tolerances, or the fixed step) and its traction grid refined two-fold
-/// each way; the case it gives; the refined grid's description (None: no
-/// grid to refine). The record keeps the changes as `--set` overrides, so
-/// that the verifying run's `run.json` says what it ran.
-pub fn verifying_case(
-    record: &RunRecord,
-    tolerances: RunTolerances,
-) -> Result<(RunRecord, Case, Option<String>), Failure> {
-    let mut tight = record.clone();
-    let sets = &mut tight.overrides.set;
-    match (tolerances.relative, tolerances.fixed_step) {
-        (Some(rtol), _) => {
-            sets.push(format!(
-                "solver.relative_tolerance={:e}",
-                (rtol / VERIFY_TIGHTENING).max(1e-12)
-            ));
-            if let Some(eps) = tolerances.energy {
-                sets.push(format!(
-                    "solver.energy_tolerance={:e}",
-                    (eps / VERIFY_TIGHTENING).max(1e-9)
-                ));
-            }
-        }
-        (None, Some(step)) => sets.push(format!(
-            "solver.time_step={:e} s",
-            (step / VERIFY_TIGHTENING).max(1e-10)
-        )),
-        (None, None) => {}
-    }
-    let load = |r: &RunRecord| r.overrides.load_text(&r.source, r.case_text.as_deref());
-    let case = load(&tight)?;
-    let Some((grid_sets, description)) = refined_traction_grid(&case) else {
-        return Ok((tight, case, None));
-    };
-    tight.overrides.set.extend(grid_sets);
-    let case = load(&tight)?;
-    Ok((tight, case, Some(description)))
+/// tolerances, or a fixed-step method's step) and the traction grid
+/// refined two-fold each way. [`Tightening::apply`] changes a loaded case;
+/// [`Tightening::overrides`] writes the same changes as the `--set`
+/// overrides that the verifying run's `run.json` records.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tightening {
+    /// The relative tolerance (with a relative tolerance).
+    relative_tolerance: Option<f64>,
+    /// The energy tolerance (with the energy error control).
+    energy_tolerance: Option<f64>,
+    /// A fixed-step method's step \[s\] (without a relative tolerance).
+    time_step: Option<f64>,
+    /// The refined traction grid (None: no grid to refine).
+    grid: Option<RefinedGrid>,
 }
 
-/// The overrides that refine a case's traction grid two-fold each way,
-/// and its description: FASTSIM's strips and elements, or a stress law's
-/// strip grid (left alone beyond the case's limits: FASTSIM's
+/// A traction grid refined two-fold each way.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum RefinedGrid {
+    /// FASTSIM's strips and elements.
+    Fastsim { strips: usize, elements: usize },
+    /// A stress law's integration over the ellipse.
+    Cells(rolldyn::traction::TractionIntegration),
+}
+
+impl Tightening {
+    /// The changes of `--verify` to `case`, which ran at `tolerances`.
+    pub fn of(case: &Case, tolerances: RunTolerances) -> Self {
+        let (relative_tolerance, energy_tolerance, time_step) =
+            match (tolerances.relative, tolerances.fixed_step) {
+                (Some(rtol), _) => (
+                    Some((rtol / VERIFY_TIGHTENING).max(1e-12)),
+                    tolerances
+                        .energy
+                        .map(|eps| (eps / VERIFY_TIGHTENING).max(1e-9)),
+                    None,
+                ),
+                (None, Some(step)) => (None, None, Some((step / VERIFY_TIGHTENING).max(1e-10))),
+                (None, None) => (None, None, None),
+            };
+        Self {
+            relative_tolerance,
+            energy_tolerance,
+            time_step,
+            grid: refined_grid(case),
+        }
+    }
+
+    /// The `--set` overrides of the changes, in the order a run's record
+    /// keeps them (the tolerances, then the grid).
+    pub fn overrides(&self) -> Vec<String> {
+        let mut sets = Vec::new();
+        if let Some(rtol) = self.relative_tolerance {
+            sets.push(format!("solver.relative_tolerance={rtol:e}"));
+        }
+        if let Some(eps) = self.energy_tolerance {
+            sets.push(format!("solver.energy_tolerance={eps:e}"));
+        }
+        if let Some(step) = self.time_step {
+            sets.push(format!("solver.time_step={step:e} s"));
+        }
+        match self.grid {
+            None => {}
+            Some(RefinedGrid::Fastsim { strips, elements }) => sets.extend([
+                format!("model.traction.strips={strips}"),
+                format!("model.traction.elements={elements}"),
+            ]),
+            Some(RefinedGrid::Cells(integration)) => {
+                let (across, along) = integration.cells().unwrap_or_default();
+                // The method too: a case that relies on the default grid
+                // has no such table to amend.
+                sets.extend([
+                    format!(
+                        "model.traction_integration.method={}",
+                        integration.method_name()
+                    ),
+                    format!("model.traction_integration.across={across}"),
+                    format!("model.traction_integration.along={along}"),
+                ]);
+            }
+        }
+        sets
+    }
+
+    /// Makes the changes in `case`. As with an override, a changed value is
+    /// no longer an assumption of the case.
+    pub fn apply(&self, case: &mut Case) {
+        use rolldyn::traction::TractionModel;
+        if let Some(rtol) = self.relative_tolerance {
+            case.relative_tolerance = Some(rtol);
+        }
+        if let Some(eps) = self.energy_tolerance {
+            case.energy_tolerance = Some(eps);
+        }
+        if let Some(step) = self.time_step {
+            case.time_step = Some(step);
+        }
+        match (self.grid, &mut case.traction) {
+            (Some(RefinedGrid::Fastsim { strips, elements }), TractionModel::Fastsim(f)) => {
+                (f.strips, f.elements) = (strips, elements);
+            }
+            (Some(RefinedGrid::Cells(integration)), _) => {
+                case.traction_integration = integration;
+            }
+            _ => {}
+        }
+        let changed: Vec<String> = self
+            .overrides()
+            .iter()
+            .filter_map(|set| set.split_once('=').map(|(key, _)| key.to_string()))
+            .collect();
+        case.assumptions.retain(|(key, _)| !changed.contains(key));
+    }
+
+    /// The refined grid's description (None: no grid to refine), e.g.
+    /// "graded 24 × 12 cells (run: 12 × 6)".
+    pub fn grid_description(&self) -> Option<String> {
+        use rolldyn::traction::TractionIntegration;
+        self.grid.map(|grid| match grid {
+            RefinedGrid::Fastsim { strips, elements } => format!(
+                "FASTSIM {strips} × {elements} (run: {} × {})",
+                strips / 2,
+                elements / 2
+            ),
+            RefinedGrid::Cells(integration) => {
+                let (a, b) = integration.cells().unwrap_or_default();
+                format!(
+                    "{}{a} × {b} cells (run: {} × {})",
+                    match integration {
+                        TractionIntegration::Graded { .. } => "graded ",
+                        _ => "",
+                    },
+                    a / 2,
+                    b / 2
+                )
+            }
+        })
+    }
+}
+
+/// The verifying run of `--verify`: the run's `case` with
+/// [`Tightening`]'s changes, its record with the same changes as `--set`
+/// overrides (so that the verifying run's `run.json` says what it ran),
+/// and the refined grid's description (None: no grid to refine).
+pub fn verifying_case(
+    record: &RunRecord,
+    case: &Case,
+    tolerances: RunTolerances,
+) -> (RunRecord, Case, Option<String>) {
+    let tightening = Tightening::of(case, tolerances);
+    let mut tight = record.clone();
+    tight.overrides.set.extend(tightening.overrides());
+    let mut tight_case = case.clone();
+    tightening.apply(&mut tight_case);
+    (tight, tight_case, tightening.grid_description())
+}
+
+/// A case's traction grid refined two-fold each way (None: no grid, or
+/// beyond the case's limits: FASTSIM's
 /// [`rolldyn::traction::fastsim::MAX_DIVISIONS`], 10 000 grid cells).
-pub fn refined_traction_grid(case: &rolldyn_case::Case) -> Option<(Vec<String>, String)> {
+fn refined_grid(case: &Case) -> Option<RefinedGrid> {
     use rolldyn::traction::{TractionIntegration, TractionModel, fastsim::MAX_DIVISIONS};
     match (&case.traction, case.traction_integration) {
         // No grid: the table's error is stated with it (docs/validation.md).
         (TractionModel::None | TractionModel::ExactTable(_), _) => None,
         (TractionModel::Fastsim(f), _) => {
             let (strips, elements) = (2 * f.strips, 2 * f.elements);
-            (strips.max(elements) <= MAX_DIVISIONS).then(|| {
-                (
-                    vec![
-                        format!("model.traction.strips={strips}"),
-                        format!("model.traction.elements={elements}"),
-                    ],
-                    format!(
-                        "FASTSIM {strips} × {elements} (run: {} × {})",
-                        f.strips, f.elements
-                    ),
-                )
-            })
+            (strips.max(elements) <= MAX_DIVISIONS)
+                .then_some(RefinedGrid::Fastsim { strips, elements })
         }
         (_, integration) => {
             let (across, along) = integration.cells()?;
-            let (a, b) = (2 * across, 2 * along);
-            (a * b <= 10_000).then(|| {
-                (
-                    // The method too: a case that relies on the default grid
-                    // has no such table to amend.
-                    vec![
-                        format!(
-                            "model.traction_integration.method={}",
-                            integration.method_name()
-                        ),
-                        format!("model.traction_integration.across={a}"),
-                        format!("model.traction_integration.along={b}"),
-                    ],
-                    format!(
-                        "{}{a} × {b} cells (run: {across} × {along})",
-                        match integration {
-                            TractionIntegration::Graded { .. } => "graded ",
-                            _ => "",
-                        }
-                    ),
-                )
-            })
+            let (across, along) = (2 * across, 2 * along);
+            (across * along <= 10_000).then_some(RefinedGrid::Cells(match integration {
+                TractionIntegration::Graded { .. } => TractionIntegration::Graded { across, along },
+                _ => TractionIntegration::Grid { across, along },
+            }))
         }
     }
 }
@@ -380,6 +469,60 @@ mod tests {
         assert!(fixed.hint.unwrap().contains("solver.time_step"));
         let off = assess(-0.1, -1e-4, 1e-3, "dopri5", Some(1e-3), None);
         assert!(off.hint.unwrap().contains("energy_tolerance = 0"));
+    }
+
+    /// `--verify`'s typed changes give the case that loading the case
+    /// again with their `--set` overrides gives (which the verifying run's
+    /// `run.json` records): a stress law's grid (the default case), FASTSIM
+    /// (7218B), no grid (6205), a fixed step, a bearing set, and
+    /// assumptions the overrides displace.
+    #[test]
+    fn typed_tightening_equals_the_recorded_overrides() {
+        use rolldyn_case::{Override, load_case, presets};
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let spindle_pair =
+            std::fs::read_to_string(root.join("examples/spindle_pair/case.toml")).unwrap();
+        let preset = |name: &str| presets::find(name).unwrap().text.to_string();
+        // An assumption on a value the tightening changes.
+        let assumed = preset("6304").replacen(
+            "\n[assumptions]\n",
+            "\n[assumptions]\n\"solver.relative_tolerance\" = \"as the paper\"\n",
+            1,
+        );
+        // A fixed-step run.
+        let rk4 = preset("6304").replace(
+            "\nrelative_tolerance = 1e-3",
+            "\nintegrator = \"rk4\"\ntime_step = \"2e-7 s\"\n# rtol",
+        );
+        let cases = [
+            (preset("7008C"), Some(1e-3), Some(1e-4), None),
+            (preset("7218B"), Some(1e-3), Some(1e-4), None),
+            (preset("6205"), Some(1e-3), None, None),
+            (rk4, None, None, Some(2e-7)),
+            (assumed, Some(1e-3), Some(1e-4), None),
+            (spindle_pair, Some(1e-3), Some(1e-4), None),
+        ];
+        for (text, relative, energy, fixed_step) in cases {
+            let case = load_case("case.toml", &text, &[]).unwrap();
+            let tightening = Tightening::of(
+                &case,
+                RunTolerances {
+                    relative,
+                    energy,
+                    fixed_step,
+                },
+            );
+            let mut typed = case.clone();
+            tightening.apply(&mut typed);
+            let overrides: Vec<Override> = tightening
+                .overrides()
+                .iter()
+                .map(|set| Override::parse_set(set).unwrap())
+                .collect();
+            let reloaded = load_case("case.toml", &text, &overrides).unwrap();
+            assert_eq!(typed, reloaded, "{:?}", tightening.overrides());
+            assert_ne!(typed, case);
+        }
     }
 
     fn change(relative_change: f64, limit: f64, window_spread: Option<f64>) -> Change {

@@ -123,7 +123,7 @@ pub fn run_case_series(
     };
     let mut output = run_once(record, case, dir, &options)?;
     if options.verify && output.summary.status == "completed" {
-        verify_run(record, dir, &options, &mut output.summary)?;
+        verify_run(record, case, dir, &options, &mut output.summary)?;
     }
     Ok(output)
 }
@@ -400,18 +400,20 @@ impl Recorder<BearingModel> for Output<'_> {
 /// again.
 fn verify_run(
     record: &RunRecord,
+    case: &Case,
     dir: &Path,
     options: &RunOptions,
     summary: &mut Summary,
 ) -> Result<(), Failure> {
     let (tight, case, traction_grid) = verifying_case(
         record,
+        case,
         RunTolerances {
             relative: summary.relative_tolerance,
             energy: summary.energy_tolerance,
             fixed_step: Some(summary.max_step_s),
         },
-    )?;
+    );
     let verify_dir = dir.join("verify");
     let quiet = RunOptions {
         resume: false,
