@@ -34,6 +34,9 @@ pub(crate) struct StepPoint {
     pub control: PiControl,
     /// Error control of the energy balance, if asked for.
     pub energy: Option<EnergyControl>,
+    /// The states' scaled error norm of the last attempt (∞ before the
+    /// first, or when its stages were not finite), apart from the energy's.
+    pub states_error: f64,
 }
 
 impl StepPoint {
@@ -71,6 +74,7 @@ impl StepPoint {
             },
             control: PiControl::new(),
             energy: None,
+            states_error: f64::INFINITY,
         })
     }
 

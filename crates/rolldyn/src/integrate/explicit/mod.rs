@@ -194,6 +194,7 @@ impl ExplicitRk {
         // acceptance, and the energy control's balance there comes with it.
         let balance = rtol.is_some() && self.point.energy.is_some();
         let mut end = None;
+        self.point.states_error = f64::INFINITY;
         self.k[0].copy_from_slice(&self.point.f);
         for s in 1..tab.c.len() {
             let row = tab.a[s];
@@ -238,6 +239,7 @@ impl ExplicitRk {
             sum += (h * e / scale).powi(2);
         }
         let err = (sum / n as f64).sqrt();
+        self.point.states_error = err;
         if !err.is_finite() {
             return f64::INFINITY;
         }
@@ -354,6 +356,10 @@ impl StepMethod for ExplicitRk {
 
     fn reject(&mut self) {
         self.point.stats.rejected_steps += 1;
+    }
+
+    fn states_error(&self) -> f64 {
+        self.point.states_error
     }
 
     /// A fixed step fails only on a non-finite state: the first one.

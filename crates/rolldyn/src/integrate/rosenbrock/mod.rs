@@ -376,6 +376,7 @@ impl Rosenbrock {
         let co = self.coefficients;
         let n = self.point.y.len();
         self.end_evaluated = false;
+        self.point.states_error = f64::INFINITY;
         if self.factored_step != Some(h) {
             self.point.stats.factorizations += 1;
             let sigma = 1.0 / (h * co.gamma);
@@ -442,6 +443,7 @@ impl Rosenbrock {
             }
         }
         let err = (sum / n as f64).sqrt();
+        self.point.states_error = err;
         if !err.is_finite() {
             return f64::INFINITY;
         }
@@ -537,6 +539,10 @@ impl StepMethod for Rosenbrock {
 
     fn finish<S: OdeSystem>(&mut self, system: &mut S, h: f64) {
         self.finish_step(system, h);
+    }
+
+    fn states_error(&self) -> f64 {
+        self.point.states_error
     }
 
     /// A rejection with an old Jacobian refreshes it first.
