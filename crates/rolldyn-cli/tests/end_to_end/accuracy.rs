@@ -16,7 +16,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, temp_dir};
+use crate::common::{rolldyn, stderr, summary_of, temp_dir};
 use serde_json::Value;
 
 /// Runs `rolldyn run` with `args` (and the case text on stdin when
@@ -33,8 +33,7 @@ fn run(tag: &str, args: &[&str], case: Option<&str>) -> (Value, String) {
     all.extend_from_slice(&["-o", &dir_text]);
     let o = rolldyn(&all, case);
     assert!(o.status.success(), "{tag}: {}", stderr(&o));
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: Value = summary_of(&dir);
     let report = std::fs::read_to_string(dir.join("report.html")).unwrap_or_default();
     std::fs::remove_dir_all(&dir).ok();
     (summary, stderr(&o) + &report)
@@ -217,9 +216,7 @@ fn the_greased_cwru_balls_stay_on_their_race() {
         args.extend_from_slice(extra);
         let o = rolldyn(&args, Some(&case));
         assert!(o.status.success(), "{tag}: {}", stderr(&o));
-        let summary: Value =
-            serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
-                .unwrap();
+        let summary: Value = summary_of(&dir);
         let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
         let time = series.column("time_s").unwrap();
         // After the start's first 10 ms.

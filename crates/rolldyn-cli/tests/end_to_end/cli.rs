@@ -5,7 +5,7 @@
 
 use crate::common;
 
-use crate::common::{FASTSIM, json, keys, rolldyn, stderr, stdout, temp_dir};
+use crate::common::{FASTSIM, json, keys, rolldyn, stderr, stdout, summary_of, temp_dir};
 use rolldyn_case::presets::PRESETS;
 use serde_json::Value;
 
@@ -391,8 +391,7 @@ fn run_writes_parquet_and_summary() {
     let d = dir.to_string_lossy().into_owned();
     let o = rolldyn(&["run", "--duration", "1 ms", "-o", &d], None);
     assert!(o.status.success(), "{}", stderr(&o));
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: Value = summary_of(&dir);
     assert_eq!(summary["status"], "completed");
     assert_eq!(summary["simulated_time_s"].as_f64(), Some(0.001));
     for k in [
@@ -574,8 +573,7 @@ fn fastsim_run_records_creepages() {
         None,
     );
     assert!(o.status.success(), "{}", stderr(&o));
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: Value = summary_of(&dir);
     for k in [
         "mean_creepage_longitudinal_inner",
         "mean_creepage_longitudinal_outer",
@@ -610,9 +608,7 @@ fn fastsim_run_records_creepages() {
             .status
             .success()
     );
-    let s: Value =
-        serde_json::from_str(&std::fs::read_to_string(plain.join("summary.json")).unwrap())
-            .unwrap();
+    let s: Value = summary_of(&plain);
     assert!(s.get("mean_stick_fraction_inner").is_none());
     std::fs::remove_dir_all(&dir).ok();
     std::fs::remove_dir_all(&plain).ok();
@@ -753,8 +749,7 @@ fn a_run_starts_from_the_traction_consistent_state() {
         None,
     );
     assert!(o.status.success(), "{}", stderr(&o));
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: Value = summary_of(&dir);
     let mean = summary["mean_load_inner_n"].as_f64().unwrap();
     let qs = ball_guided["balls"][0]["load_inner_n"].as_f64().unwrap();
     assert!((mean / qs - 1.0).abs() < 1e-4, "{mean} vs {qs}");

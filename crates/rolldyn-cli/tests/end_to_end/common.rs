@@ -87,6 +87,11 @@ pub fn series_bytes(run: &std::path::Path) -> Vec<u8> {
     bytes
 }
 
+/// The summary.json of run directory `dir`.
+pub fn summary_of(dir: &std::path::Path) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap()
+}
+
 /// Runs `case` (None: the built-in default) for `duration` with `sets`
 /// and returns its summary (the run directory removed).
 pub fn run_summary(tag: &str, case: Option<&str>, duration: &str, sets: &[&str]) -> Value {
@@ -101,9 +106,9 @@ pub fn run_summary(tag: &str, case: Option<&str>, duration: &str, sets: &[&str])
     }
     let o = rolldyn(&args, case);
     assert!(o.status.success(), "{}", stderr(&o));
-    let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    let summary = summary_of(&dir);
     std::fs::remove_dir_all(&dir).ok();
-    serde_json::from_str(&text).unwrap()
+    summary
 }
 
 /// The default case (7008C) as a matched set.

@@ -9,7 +9,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{envelope_json, rolldyn, stderr, temp_dir};
+use crate::common::{envelope_json, rolldyn, stderr, summary_of, temp_dir};
 use std::collections::HashMap;
 use std::path::PathBuf;
 
@@ -59,8 +59,7 @@ fn the_outer_race_pit_against_cwru_record_130() {
         None,
     );
     assert!(o.status.success(), "{}", stderr(&o));
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: serde_json::Value = summary_of(&dir);
     let sensor = &summary["sensor"];
     let ratio =
         |key: &str, measured_key: &str| sensor[key].as_f64().unwrap() / number(measured_key);

@@ -5,7 +5,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{SHAFT, pair, rolldyn, run_summary as run, stderr, temp_dir};
+use crate::common::{SHAFT, pair, rolldyn, run_summary as run, stderr, summary_of, temp_dir};
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
 
@@ -174,9 +174,7 @@ fn a_run_away_drive_stops_at_the_speed_limit() {
             e.contains("beyond the ±1e6 rpm") && e.contains("at t = "),
             "{tag}: {e}"
         );
-        let summary: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
-                .unwrap();
+        let summary: serde_json::Value = summary_of(&dir);
         assert_eq!(summary["status"], "failed", "{tag}");
         assert!(
             summary["simulated_time_s"].as_f64().unwrap() < 1e-3,

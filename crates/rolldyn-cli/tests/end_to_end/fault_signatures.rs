@@ -18,7 +18,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{envelope_json, line_frequency, rolldyn, stderr, temp_dir};
+use crate::common::{envelope_json, line_frequency, rolldyn, stderr, summary_of, temp_dir};
 use std::path::{Path, PathBuf};
 
 fn case() -> PathBuf {
@@ -182,9 +182,7 @@ fn the_ball_passage_jitters_as_measured_only_around_a_drifting_cage() {
             None,
         );
         assert!(o.status.success(), "{name}: {}", stderr(&o));
-        let summary: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap())
-                .unwrap();
+        let summary: serde_json::Value = summary_of(&out);
         // The passages at 1/BPFO (107.5 Hz at 1797 rpm); a drifting cage
         // slips behind it (12 runs: 0.3–1.1 % longer intervals, the cage
         // at 711–715 rpm), as measured bearings do by 1–2 %.

@@ -4,7 +4,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, stdout, temp_dir};
+use crate::common::{rolldyn, stderr, stdout, summary_of, temp_dir};
 
 /// The 6205 preset's case text (read from standard input as `-`).
 fn preset() -> String {
@@ -97,8 +97,7 @@ fn run_preset(tag: &str, args: &[&str]) -> serde_json::Value {
     all.extend_from_slice(args);
     let o = rolldyn(&all, Some(&preset()));
     assert!(o.status.success(), "{}", stderr(&o));
-    let summary =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary = summary_of(&dir);
     std::fs::remove_dir_all(&dir).ok();
     summary
 }

@@ -4,7 +4,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, stdout, temp_dir};
+use crate::common::{rolldyn, stderr, stdout, summary_of, temp_dir};
 use serde_json::Value;
 
 /// `output.channels`, `output.balls` and `output.precision` choose what the
@@ -34,9 +34,7 @@ fn recorded_channels_are_chosen_and_the_summary_does_not_change() {
     );
     assert!(o.status.success(), "{}", stderr(&o));
     let summary = |d: &std::path::Path| {
-        let mut v: Value =
-            serde_json::from_str(&std::fs::read_to_string(d.join("summary.json")).unwrap())
-                .unwrap();
+        let mut v: Value = summary_of(&d);
         v["wall_time_s"] = Value::Null;
         v
     };

@@ -3,7 +3,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, temp_dir};
+use crate::common::{rolldyn, stderr, summary_of, temp_dir};
 use serde_json::Value;
 
 /// The default case's run: the component means sum to the mean
@@ -27,8 +27,7 @@ fn run_reports_power_by_component() {
         None,
     );
     assert!(o.status.success(), "{}", stderr(&o));
-    let s: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let s: Value = summary_of(&dir);
     let f = |k: &str| s[k].as_f64().unwrap_or_else(|| panic!("{k} missing"));
     let (sum, exact) = (f("mean_sampled_power_loss_w"), f("mean_dissipated_power_w"));
     assert_eq!(f("mean_power_loss_w"), exact);
@@ -96,9 +95,7 @@ fn seals_add_their_moment_to_the_drive() {
         }
         let o = rolldyn(&args, None);
         assert!(o.status.success(), "{}", stderr(&o));
-        let s: Value =
-            serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
-                .unwrap();
+        let s: Value = summary_of(&dir);
         let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
         std::fs::remove_dir_all(&dir).ok();
         (s, series)
@@ -391,8 +388,7 @@ fn a_coupled_run_stops_beyond_the_temperature_limit() {
     );
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
     assert!(stderr(&o).contains("beyond the 315 °C"), "{}", stderr(&o));
-    let s: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let s: Value = summary_of(&dir);
     assert_eq!(s["status"], "failed");
     std::fs::remove_dir_all(&dir).ok();
 }
@@ -421,8 +417,7 @@ fn run_with_thermal_coupling() {
         Some(&case),
     );
     assert!(o.status.success(), "{}", stderr(&o));
-    let s: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let s: Value = summary_of(&dir);
     let t = &s["thermal_coupling"];
     assert_eq!(t["updates"].as_u64(), Some(5), "{t}");
     let steady = json_of(&["thermal", "-", "--json"], Some(&case));
@@ -443,9 +438,7 @@ fn run_with_thermal_coupling() {
             .status
             .success()
     );
-    let s: Value =
-        serde_json::from_str(&std::fs::read_to_string(plain.join("summary.json")).unwrap())
-            .unwrap();
+    let s: Value = summary_of(&plain);
     assert!(s["thermal_coupling"].is_null());
     let o = rolldyn(
         &[
@@ -485,8 +478,7 @@ fn run_with_thermal_coupling() {
         Some(&case),
     );
     assert!(o.status.success(), "{}", stderr(&o));
-    let s: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let s: Value = summary_of(&dir);
     let t = &s["thermal_coupling"];
     for node in ["ball", "inner_ring", "outer_ring", "housing", "oil"] {
         let start = t["initial_temperatures_c"][node].as_f64().unwrap();
@@ -528,9 +520,7 @@ fn every_preset_reports_the_torque_that_did_the_work() {
             Some(&preset(name)),
         );
         assert!(o.status.success(), "{name}: {}", stderr(&o));
-        let s: Value =
-            serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
-                .unwrap();
+        let s: Value = summary_of(&dir);
         let f = |k: &str| s[k].as_f64().unwrap_or_else(|| panic!("{name}: {k}"));
         let drive_power = window_drive_power(&dir, &s);
         let omega = f("inner_ring_speed_rpm") * std::f64::consts::TAU / 60.0;

@@ -5,7 +5,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, temp_dir};
+use crate::common::{rolldyn, stderr, summary_of, temp_dir};
 use serde_json::Value;
 use std::process::{Command, Stdio};
 
@@ -46,8 +46,7 @@ fn interrupted_run(tag: &str, args: &[&str], settle: u64) -> (std::path::PathBuf
         "{tag}: {}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: Value = summary_of(&dir);
     assert_eq!(summary["status"], "interrupted", "{tag}");
     (dir, summary)
 }

@@ -6,7 +6,7 @@
 
 use crate::common;
 
-use crate::common::{rolldyn, stderr, stdout, temp_dir};
+use crate::common::{rolldyn, stderr, stdout, summary_of, temp_dir};
 use serde_json::Value;
 
 /// Sections of a report page, checked to be well-formed XML with inline
@@ -198,9 +198,7 @@ fn dynamic_sweep_is_deterministic_whatever_the_thread_count() {
         assert_eq!(r["point"], format!("point-{k:04}"));
         // Each point is a run directory of its own, resumable and reported.
         let point = serial.join(format!("point-{k:04}"));
-        let summary: Value =
-            serde_json::from_str(&std::fs::read_to_string(point.join("summary.json")).unwrap())
-                .unwrap();
+        let summary: Value = summary_of(&point);
         assert_eq!(summary["mean_cage_speed_rpm"], r["mean_cage_speed_rpm"]);
         assert!(point.join("run.json").is_file() && point.join("report.html").is_file());
         // The same time series from one thread or two.

@@ -8,7 +8,7 @@
 
 use crate::common;
 
-use crate::common::{pair, rolldyn, stderr, temp_dir};
+use crate::common::{pair, rolldyn, stderr, summary_of, temp_dir};
 use std::path::Path;
 use std::process::{Command, Stdio};
 
@@ -274,9 +274,7 @@ fn a_set_run_resumes_bit_identically() {
         .unwrap();
     common::kill_after_two_checkpoints(&mut child, &killed);
     let read = |d: &std::path::Path| {
-        let mut v: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(d.join("summary.json")).unwrap())
-                .unwrap();
+        let mut v: serde_json::Value = summary_of(&d);
         v.as_object_mut().unwrap().remove("wall_time_s");
         v
     };

@@ -7,7 +7,7 @@
 
 use crate::common;
 
-use crate::common::{stderr, temp_dir};
+use crate::common::{stderr, summary_of, temp_dir};
 use serde_json::Value;
 
 #[test]
@@ -25,9 +25,7 @@ fn run_is_deterministic_whatever_the_thread_count() {
                 .expect("rolldyn runs");
             assert!(o.status.success(), "{}", stderr(&o));
             let parquet = common::series_bytes(&dir);
-            let mut summary: Value =
-                serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
-                    .unwrap();
+            let mut summary: Value = summary_of(&dir);
             summary["wall_time_s"] = Value::Null;
             std::fs::remove_dir_all(&dir).ok();
             (parquet, summary)
@@ -56,9 +54,7 @@ fn auto_switches_identically_whatever_the_thread_count() {
                 .output()
                 .expect("rolldyn runs");
             assert!(o.status.success(), "{}", stderr(&o));
-            let mut summary: Value =
-                serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
-                    .unwrap();
+            let mut summary: Value = summary_of(&dir);
             summary["wall_time_s"] = Value::Null;
             std::fs::remove_dir_all(&dir).ok();
             summary
@@ -82,8 +78,7 @@ fn default_case_closes_its_energy_balance_in_the_whirl_limit_cycle() {
         .output()
         .expect("rolldyn runs");
     assert!(o.status.success(), "{}", stderr(&o));
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: Value = summary_of(&dir);
     std::fs::remove_dir_all(&dir).ok();
     let whirl = summary["cage_whirl_radius_mean_m"].as_f64().unwrap();
     assert!(
@@ -119,9 +114,7 @@ fn film_pockets_cap_the_default_step() {
             .output()
             .expect("rolldyn runs");
         assert!(o.status.success(), "{}", stderr(&o));
-        let summary =
-            serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap())
-                .unwrap();
+        let summary = summary_of(&dir);
         std::fs::remove_dir_all(&dir).ok();
         summary
     };

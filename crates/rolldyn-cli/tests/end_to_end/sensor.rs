@@ -6,7 +6,7 @@
 
 use crate::common;
 
-use crate::common::{rolldyn, stderr, temp_dir};
+use crate::common::{rolldyn, stderr, summary_of, temp_dir};
 use rolldyn_io::read_parquet;
 
 const CASE: &str = concat!(
@@ -73,8 +73,7 @@ fn a_constant_sensor_record_has_no_crest_factor() {
     );
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(!stderr(&o).contains("non-finite"), "{}", stderr(&o));
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: serde_json::Value = summary_of(&dir);
     let s = &summary["sensor"];
     assert_eq!(s["rms_m_s2"].as_f64(), Some(0.0), "{s}");
     assert!(

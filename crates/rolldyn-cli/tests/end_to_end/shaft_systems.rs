@@ -7,7 +7,7 @@
 
 use crate::common;
 
-use crate::common::{SHAFT, json, keys, pair, rolldyn, stderr, stdout, temp_dir};
+use crate::common::{SHAFT, json, keys, pair, rolldyn, stderr, stdout, summary_of, temp_dir};
 
 /// `rolldyn thermal` of a pair: every bearing's network with the set in
 /// the loop; the preload at the operating temperatures above the one at
@@ -168,8 +168,7 @@ fn dynamic_run_of_a_pair() {
 /// The summary of a pair's run: its keys and each bearing's, the balance
 /// closed, the two bearings' preloads equal and near the quasi-static one.
 fn assert_pair_summary(out: &std::path::Path) {
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let v: serde_json::Value = summary_of(&out);
     assert_eq!(
         keys(&v),
         [
@@ -304,8 +303,7 @@ fn dynamic_run_of_a_shaft() {
         Some(&case),
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let v: serde_json::Value = summary_of(&out);
     assert_eq!(v["kind"], "shaft");
     assert!(v["mounting_preload_n"].is_null());
     let b = v["bearings"].as_array().unwrap();
@@ -341,10 +339,7 @@ fn dynamic_run_of_a_shaft() {
         Some(&floating),
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let v: serde_json::Value = serde_json::from_str(
-        &std::fs::read_to_string(dir.join("floating").join("summary.json")).unwrap(),
-    )
-    .unwrap();
+    let v: serde_json::Value = summary_of(&dir.join("floating"));
     let b = v["bearings"].as_array().unwrap();
     let (locating, floating) = (f(&b[0], "mean_axial_load_n"), f(&b[1], "mean_axial_load_n"));
     assert!((locating - 300.0).abs() < 0.01 * 300.0, "{locating} N");
@@ -595,9 +590,7 @@ fn a_gear_mesh_shakes_the_shaft() {
             Some(case),
         );
         assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-        let s: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap())
-                .unwrap();
+        let s: serde_json::Value = summary_of(&out);
         assert!(s["energy_balance_relative_error"].as_f64().unwrap() < 1e-3);
         let series = rolldyn_io::read_parquet(&out.join("timeseries.parquet")).unwrap();
         let (t, z) = (

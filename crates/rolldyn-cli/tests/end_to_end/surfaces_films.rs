@@ -7,7 +7,7 @@
 
 use crate::common;
 
-use crate::common::{json, keys, rolldyn, stderr, stdout, temp_dir};
+use crate::common::{json, keys, rolldyn, stderr, stdout, summary_of, temp_dir};
 use rolldyn_case::presets::PRESETS;
 use serde_json::Value;
 
@@ -133,8 +133,7 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
 /// The summary of the wavy run: its vibration keys, the waviness line at
 /// 22 f_c and the sensor's envelope lines.
 fn assert_summary_of_a_wavy_run(dir: &std::path::Path) {
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: Value = summary_of(&dir);
     for k in [
         "cage_whirl_radius_mean_m",
         "cage_whirl_radius_max_m",
@@ -470,8 +469,7 @@ fn the_film_in_the_approach_in_quasistatic_and_run() {
         None,
     );
     assert!(o.status.success(), "{}", stderr(&o));
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: Value = summary_of(&dir);
     assert!(summary["film_work_j"].is_f64());
     let balance = g(&summary["energy_balance_relative_error"]);
     assert!(balance.abs() < 1e-3, "{balance}");
