@@ -413,6 +413,10 @@ pub struct CheckReport {
     /// for a bearing set or a shaft, which have their own).
     pub mounting: Option<crate::mounting_report::MountingReport>,
     pub surfaces: Vec<SurfaceEntry>,
+    /// A case with a spall: why the envelope band at its sample rate (the
+    /// default 0.1–0.4 of it) cannot show the fastest defect rate, with
+    /// the sample rate that would; null when it can, or without a spall.
+    pub envelope_band_warning: Option<String>,
     /// The bearing set of `[arrangement]` (null for one bearing).
     pub arrangement: Option<CheckArrangement>,
     pub assumptions: Vec<AssumptionReport>,
@@ -497,6 +501,23 @@ impl CheckReport {
             .as_ref()
             .map(|_| FrequencyReport::new(case, None))
             .transpose()?;
+        let envelope_band_warning = frequencies
+            .as_ref()
+            .filter(|_| case.surface.spalls().next().is_some())
+            .and_then(|f| {
+                let sample_rate = case
+                    .sample_rate
+                    .unwrap_or(rolldyn_case::case::DEFAULT_SAMPLE_RATE);
+                let lines = rolldyn::signal::CharacteristicFrequencies {
+                    shaft: f.shaft_hz,
+                    cage: f.cage_hz,
+                    bpfo: f.bpfo_hz,
+                    bpfi: f.bpfi_hz,
+                    ball_spin: f.ball_spin_hz,
+                };
+                let band = rolldyn::signal::default_envelope_band(sample_rate);
+                crate::vibration::band_warning(band, &lines)
+            });
         Ok(Self {
             source: source.to_string(),
             title: case.title.clone(),
@@ -544,6 +565,7 @@ impl CheckReport {
             frequencies,
             mounting: crate::mounting_report::MountingReport::new(case),
             surfaces: surface_entries(&case.surface),
+            envelope_band_warning,
             arrangement: case.bearing_set().map(|a| {
                 use rolldyn_case::case::Preload;
                 CheckArrangement {
@@ -644,6 +666,9 @@ impl CheckReport {
                     e.max_amplitude_m * 1e6,
                     e.spalls
                 );
+            }
+            if let Some(warning) = &self.envelope_band_warning {
+                let _ = writeln!(out, "  warning: {warning}");
             }
         }
         if self.assumptions.is_empty() {

@@ -12,7 +12,8 @@ use crate::{Failure, bad_arg, emit, json};
 use clap::Args;
 use rolldyn::signal::{
     CharacteristicFrequencies, Fault, Spectrogram, Spectrum, Window, amplitude_spectrum, band_rms,
-    band_velocity_rms, envelope_spectrum, find_peaks, spectrogram, welch_psd,
+    band_velocity_rms, default_envelope_band, envelope_spectrum, find_peaks, spectrogram,
+    welch_psd,
 };
 use rolldyn::surface::SpallSite;
 use rolldyn_io::RunDir;
@@ -133,6 +134,10 @@ pub struct Report {
     to_s: f64,
     resolution_hz: f64,
     band_hz: Option<[f64; 2]>,
+    /// Envelope: why the band cannot show the bearing's fastest defect
+    /// rate (narrower than twice it), with the sample rate that would;
+    /// null when it can (or for the other kinds).
+    band_warning: Option<String>,
     segment: Option<usize>,
     /// Spectrogram: the number of segments (spectra) in the CSV.
     segments: Option<usize>,
@@ -335,7 +340,7 @@ fn analyse(
             Some(segment),
         ),
         "envelope" => {
-            let band = band.unwrap_or((0.1 * sample_rate, 0.4 * sample_rate));
+            let band = band.unwrap_or_else(|| default_envelope_band(sample_rate));
             plain(
                 envelope_spectrum(record, sample_rate, band, window).map_err(spectrum_error)?,
                 unit.to_string(),
@@ -457,6 +462,9 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         to_s: time[time.len() - 1],
         resolution_hz: resolution,
         band_hz: analysis.band,
+        band_warning: analysis
+            .band
+            .and_then(|[lo, hi]| crate::vibration::band_warning((lo, hi), &characteristic)),
         segment: analysis.segment,
         segments: analysis.frames.as_ref().map(|sg| sg.time.len()),
         velocity_rms_mm_s: velocity_rms,
@@ -570,6 +578,9 @@ impl Report {
         );
         if let Some([lo, hi]) = self.band_hz {
             let _ = writeln!(t, "envelope band {lo:.0}–{hi:.0} Hz");
+        }
+        if let Some(warning) = &self.band_warning {
+            let _ = writeln!(t, "warning: {warning}");
         }
         if let (Some(n), Some(segment)) = (self.segments, self.segment) {
             let _ = writeln!(

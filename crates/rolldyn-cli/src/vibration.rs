@@ -10,8 +10,8 @@
 
 use rolldyn::kinematics::{Frequencies, Motion, WavyPart, waviness_frequencies};
 use rolldyn::signal::{
-    CharacteristicFrequencies, Spectrum, Window, amplitude_spectrum, band_rms, envelope_spectrum,
-    whirl_metrics,
+    CharacteristicFrequencies, DEFAULT_ENVELOPE_BAND, Spectrum, Window, amplitude_spectrum,
+    band_rms, default_envelope_band, envelope_band_holds, envelope_spectrum, whirl_metrics,
 };
 use rolldyn::surface::{SurfaceModel, Waviness};
 use rolldyn_io::TimeSeries;
@@ -195,6 +195,27 @@ pub const ENVELOPE_LINES: [(&str, &str); 4] = [
     ("2×BSF", "envelope_lines.2×BSF"),
 ];
 
+/// Why the envelope band (lo, hi) \[Hz\] cannot show the impacts of the
+/// bearing's fastest defect (`envelope_band_holds`), with the sample rate
+/// whose default band would; None when it can.
+pub fn band_warning(band: (f64, f64), lines: &CharacteristicFrequencies) -> Option<String> {
+    let rate = lines.fastest_defect_rate();
+    if envelope_band_holds(band, rate) || rate <= 0.0 {
+        return None;
+    }
+    let (lo, hi) = DEFAULT_ENVELOPE_BAND;
+    let needed = 2.0 * rate / (hi - lo);
+    Some(format!(
+        "the envelope band {:.0}–{:.0} Hz is narrower than twice the fastest defect rate ({rate:.0} Hz): \
+         a resonance with its first sidebands does not fit, and the defect's lines may not show; \
+         sample the run at {:.0} kHz or more (output.sample_rate; the default band is {lo}–{hi} of it), \
+         or give `rolldyn spectrum` a wider --band",
+        band.0,
+        band.1,
+        (needed / 1e3).ceil()
+    ))
+}
+
 /// One line of the envelope spectrum.
 #[derive(Serialize, Clone, Debug)]
 pub struct EnvelopeLine {
@@ -224,7 +245,7 @@ pub fn envelope_lines(
     characteristic: &CharacteristicFrequencies,
 ) -> Option<EnvelopeLines> {
     let (record, sample_rate) = analysed_record(series, from)?;
-    let band = (0.1 * sample_rate, 0.4 * sample_rate);
+    let band = default_envelope_band(sample_rate);
     let spectrum = envelope_spectrum(record, sample_rate, band, Window::Hann).ok()?;
     let resolution = spectrum.resolution();
     let frequencies = [

@@ -34,7 +34,7 @@ fn recorded_channels_are_chosen_and_the_summary_does_not_change() {
     );
     assert!(o.status.success(), "{}", stderr(&o));
     let summary = |d: &std::path::Path| {
-        let mut v: Value = summary_of(&d);
+        let mut v: Value = summary_of(d);
         v["wall_time_s"] = Value::Null;
         v
     };

@@ -274,7 +274,7 @@ fn a_set_run_resumes_bit_identically() {
         .unwrap();
     common::kill_after_two_checkpoints(&mut child, &killed);
     let read = |d: &std::path::Path| {
-        let mut v: serde_json::Value = summary_of(&d);
+        let mut v: serde_json::Value = summary_of(d);
         v.as_object_mut().unwrap().remove("wall_time_s");
         v
     };

@@ -243,3 +243,53 @@ fn bad_sensor_values_name_the_key() {
         assert!(stderr(&o).contains(key), "{set}: {}", stderr(&o));
     }
 }
+
+/// An envelope band narrower than twice the fastest defect rate is said
+/// (docs/signal.md, "Envelope band"): the CWRU case (12 kHz, band
+/// 1.2–4.8 kHz) at 25 000 rpm (BPFI 2.26 kHz) by `check`, which has the
+/// spall, and by `spectrum --kind envelope`; at its own 1797 rpm, or
+/// sampled at 20 kHz (band 2–8 kHz), not.
+#[test]
+fn an_envelope_band_too_narrow_for_the_defect_rate_is_said() {
+    let fast = "operating.speed=\"25000 rpm\"";
+    let check = |sets: &[&str]| {
+        let mut args = vec!["check", "-", "--json"];
+        for s in sets {
+            args.extend(["--set", s]);
+        }
+        common::json(&args, Some(&case_text(true)))["envelope_band_warning"].clone()
+    };
+    let warning = check(&[fast]);
+    let text = warning.as_str().unwrap();
+    assert!(
+        text.contains("1200–4800 Hz") && text.contains("16 kHz"),
+        "{text}"
+    );
+    assert!(check(&[]).is_null());
+    assert!(check(&[fast, "output.sample_rate=\"20 kHz\""]).is_null());
+    for (rate, warned) in [("12 kHz", true), ("20 kHz", false)] {
+        let (dir, _) = run(
+            "envelope-band",
+            true,
+            &[
+                "--set",
+                fast,
+                "--set",
+                &format!("output.sample_rate=\"{rate}\""),
+            ],
+        );
+        let d = dir.to_str().unwrap();
+        let spectrum = common::json(&["spectrum", d, "--kind", "envelope", "--json"], None);
+        assert_eq!(
+            spectrum["band_warning"].is_string(),
+            warned,
+            "{rate}: {spectrum}"
+        );
+        let o = rolldyn(&["spectrum", d, "--kind", "envelope"], None);
+        assert_eq!(
+            common::stdout(&o).contains("warning: the envelope band"),
+            warned
+        );
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}

@@ -168,7 +168,7 @@ fn dynamic_run_of_a_pair() {
 /// The summary of a pair's run: its keys and each bearing's, the balance
 /// closed, the two bearings' preloads equal and near the quasi-static one.
 fn assert_pair_summary(out: &std::path::Path) {
-    let v: serde_json::Value = summary_of(&out);
+    let v: serde_json::Value = summary_of(out);
     assert_eq!(
         keys(&v),
         [

@@ -133,7 +133,7 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
 /// The summary of the wavy run: its vibration keys, the waviness line at
 /// 22 f_c and the sensor's envelope lines.
 fn assert_summary_of_a_wavy_run(dir: &std::path::Path) {
-    let summary: Value = summary_of(&dir);
+    let summary: Value = summary_of(dir);
     for k in [
         "cage_whirl_radius_mean_m",
         "cage_whirl_radius_max_m",

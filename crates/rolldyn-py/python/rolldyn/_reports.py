@@ -328,6 +328,7 @@ class SpectrumResult(Report):
     to_s: float
     resolution_hz: float
     band_hz: Optional[np.ndarray]
+    band_warning: Optional[str]
     segment: Optional[int]
     segments: Optional[int]
     velocity_rms_mm_s: Optional[float]

@@ -45,6 +45,13 @@ pub struct CharacteristicFrequencies {
 }
 
 impl CharacteristicFrequencies {
+    /// The fastest rate at which a defect's impacts repeat \[Hz\]: the
+    /// larger of BPFO, BPFI and 2 × BSF (a ball defect strikes both races
+    /// once a spin).
+    pub fn fastest_defect_rate(&self) -> f64 {
+        self.bpfo.max(self.bpfi).max(2.0 * self.ball_spin)
+    }
+
     /// From f_i, f_c \[Hz\], the ball count Z, D/d_m (γ₀) and the contact angle α.
     pub fn new(
         shaft: f64,
@@ -278,6 +285,17 @@ mod tests {
             assert!(names.contains(&expected), "{expected} missing");
         }
         assert!(lines.windows(2).all(|w| w[0].frequency <= w[1].frequency));
+    }
+
+    #[test]
+    fn the_fastest_defect_rate_is_the_largest_of_the_defect_lines() {
+        // 7008C at 10 000 rpm: BPFI leads; two large balls: 2 × BSF.
+        let fi = 10_000.0 / 60.0;
+        let many = CharacteristicFrequencies::new(fi, 0.43 * fi, 22, 0.118, 0.3);
+        assert_eq!(many.fastest_defect_rate(), many.bpfi);
+        let few = CharacteristicFrequencies::new(fi, 0.3 * fi, 2, 0.4, 0.0);
+        assert_eq!(few.fastest_defect_rate(), 2.0 * few.ball_spin);
+        assert!(2.0 * few.ball_spin > few.bpfi.max(few.bpfo));
     }
 
     #[test]

@@ -25,8 +25,8 @@ pub use passage::{PassageJitter, passage_jitter};
 pub use sensor::{HousingMode, SensorChain, SensorSample, SensorSpec};
 pub use spectrogram::{Spectrogram, spectrogram};
 pub use spectrum::{
-    Spectrum, SpectrumError, Window, amplitude_spectrum, band_rms, band_velocity_rms,
-    envelope_spectrum, welch_psd,
+    DEFAULT_ENVELOPE_BAND, Spectrum, SpectrumError, Window, amplitude_spectrum, band_rms,
+    band_velocity_rms, default_envelope_band, envelope_band_holds, envelope_spectrum, welch_psd,
 };
 pub use statistics::statistics;
 pub use whirl::{WhirlMetrics, whirl_metrics};
