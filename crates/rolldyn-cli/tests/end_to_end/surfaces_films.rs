@@ -195,6 +195,7 @@ fn assert_spectrum_finds_bpfo(dir: &std::path::Path) {
         keys(&s),
         [
             "band_hz",
+            "band_warning",
             "channel",
             "characteristic",
             "csv",
