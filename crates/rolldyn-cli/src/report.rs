@@ -296,6 +296,17 @@ impl FrequencyReport {
         })
     }
 
+    /// The lines as the spectra name them.
+    pub fn lines(&self) -> rolldyn::signal::CharacteristicFrequencies {
+        rolldyn::signal::CharacteristicFrequencies {
+            shaft: self.shaft_hz,
+            cage: self.cage_hz,
+            bpfo: self.bpfo_hz,
+            bpfi: self.bpfi_hz,
+            ball_spin: self.ball_spin_hz,
+        }
+    }
+
     pub fn to_text(&self) -> String {
         let mut out = String::new();
         let note = if self.from_profile {
@@ -508,15 +519,8 @@ impl CheckReport {
                 let sample_rate = case
                     .sample_rate
                     .unwrap_or(rolldyn_case::case::DEFAULT_SAMPLE_RATE);
-                let lines = rolldyn::signal::CharacteristicFrequencies {
-                    shaft: f.shaft_hz,
-                    cage: f.cage_hz,
-                    bpfo: f.bpfo_hz,
-                    bpfi: f.bpfi_hz,
-                    ball_spin: f.ball_spin_hz,
-                };
                 let band = rolldyn::signal::default_envelope_band(sample_rate);
-                crate::vibration::band_warning(band, &lines)
+                crate::vibration::band_warning(band, &f.lines())
             });
         Ok(Self {
             source: source.to_string(),

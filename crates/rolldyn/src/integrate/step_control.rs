@@ -226,10 +226,14 @@ pub(crate) fn take_step<M: StepMethod, S: OdeSystem>(
         let natural = (*method.step_size().0).min(max_step);
         let h = PiControl::landing(natural, remaining);
         let err = method.attempt(system, h);
-        if err <= 1.0 {
+        // Only the energy rejects it, and the next try would fall below
+        // the time resolution: taken (above).
+        let at_resolution = method.states_error() <= 1.0
+            && order.is_some_and(|q| PiControl::rejected(h, err, q) < min_step);
+        if err <= 1.0 || at_resolution {
             if let Some(q) = order {
                 let (step, control) = method.step_size();
-                *step = control.accepted(natural, err, q, rejected);
+                *step = control.accepted(natural, err.min(1.0), q, rejected);
             }
             method.finish(system, h);
             return Ok(());
@@ -238,12 +242,6 @@ pub(crate) fn take_step<M: StepMethod, S: OdeSystem>(
             return Err(method.too_small(system, h, h, err));
         };
         let next = PiControl::rejected(h, err, q);
-        if next < min_step && method.states_error() <= 1.0 {
-            let (step, control) = method.step_size();
-            *step = control.accepted(natural, 1.0, q, rejected);
-            method.finish(system, h);
-            return Ok(());
-        }
         method.reject();
         rejected = true;
         *method.step_size().0 = next;
