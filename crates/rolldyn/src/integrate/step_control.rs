@@ -226,11 +226,12 @@ pub(crate) fn take_step<M: StepMethod, S: OdeSystem>(
         let natural = (*method.step_size().0).min(max_step);
         let h = PiControl::landing(natural, remaining);
         let err = method.attempt(system, h);
-        // Only the energy rejects it, and the next try would fall below
-        // the time resolution: taken (above).
-        let at_resolution = method.states_error() <= 1.0
-            && order.is_some_and(|q| PiControl::rejected(h, err, q) < min_step);
-        if err <= 1.0 || at_resolution {
+        // Passed, or only the energy rejects it and the next try would
+        // fall below the time resolution (above).
+        let accept = err <= 1.0
+            || (method.states_error() <= 1.0
+                && order.is_some_and(|q| PiControl::rejected(h, err, q) < min_step));
+        if accept {
             if let Some(q) = order {
                 let (step, control) = method.step_size();
                 *step = control.accepted(natural, err.min(1.0), q, rejected);
