@@ -27,8 +27,9 @@ use std::path::Path;
 
 /// Version of `run.json` and `checkpoint.bin` (2: with the summary's
 /// statistics; 3: with the fast part's Jacobian refresh and the ball
-/// passages).
-const FORMAT: u64 = 3;
+/// passages; 4: the rings' displacements, not velocities, in the kept
+/// vibration signal).
+const FORMAT: u64 = 4;
 /// First part of a checkpoint.
 const TAG: &str = "rolldyn-run-checkpoint";
 

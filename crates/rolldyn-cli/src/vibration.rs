@@ -1,6 +1,8 @@
 //! Vibration and cage-whirl quantities of a run for `summary.json`
 //! (docs/model.md §9; keys in docs/cli.md): vibration velocity RMS of the rings in
-//! the ISO 20816-1 band 10–1000 Hz from the recorded velocities, and the
+//! the ISO 20816-1 band 10–1000 Hz from the interval means of the recorded
+//! displacements (an anti-alias filter: docs/signal.md, "Velocity RMS";
+//! [`rolldyn::signal::band_velocity_rms_of_displacement`]), and the
 //! cage-whirl metrics of [`rolldyn::signal::whirl`] (orbit radius, whirl
 //! speed, Deng et al. 2022's σ), all over the summary's averaging window;
 //! for a run with a spall, the envelope-spectrum amplitudes of the
@@ -11,7 +13,8 @@
 use rolldyn::kinematics::{Frequencies, Motion, WavyPart, waviness_frequencies};
 use rolldyn::signal::{
     CharacteristicFrequencies, DEFAULT_ENVELOPE_BAND, Spectrum, Window, amplitude_spectrum,
-    band_rms, default_envelope_band, envelope_band_holds, envelope_spectrum, whirl_metrics,
+    band_velocity_rms_of_displacement, default_envelope_band, envelope_band_holds,
+    envelope_spectrum, whirl_metrics,
 };
 use rolldyn::surface::{SurfaceModel, Waviness};
 use rolldyn_io::TimeSeries;
@@ -100,9 +103,11 @@ pub fn summarise(series: &TimeSeries, from: usize, outer_ring: bool) -> Vibratio
         _ => 0.0,
     };
     let band = (VELOCITY_BAND.0, VELOCITY_BAND.1.min(0.5 * sample_rate));
-    let rms = |name: &str| -> Option<f64> {
+    let rms = |displacement: &str| -> Option<f64> {
         (band.1 > band.0)
-            .then(|| band_rms(window(name), sample_rate, band).ok())
+            .then(|| {
+                band_velocity_rms_of_displacement(window(displacement), sample_rate, band).ok()
+            })
             .flatten()
             .map(|v| 1e3 * v)
     };
@@ -114,15 +119,11 @@ pub fn summarise(series: &TimeSeries, from: usize, outer_ring: bool) -> Vibratio
         cage_whirl_speed_ratio: (cage_speed != 0.0).then(|| whirl_rpm / cage_speed),
         cage_whirl_sigma: whirl.sigma,
         velocity_rms_band_hz: [band.0, band.1.max(band.0)],
-        inner_ring_velocity_rms_x_mm_s: rms("inner_ring_velocity_x_m_s"),
-        inner_ring_velocity_rms_y_mm_s: rms("inner_ring_velocity_y_m_s"),
-        inner_ring_velocity_rms_z_mm_s: rms("inner_ring_velocity_z_m_s"),
-        outer_ring_velocity_rms_y_mm_s: outer_ring
-            .then(|| rms("outer_ring_velocity_y_m_s"))
-            .flatten(),
-        outer_ring_velocity_rms_z_mm_s: outer_ring
-            .then(|| rms("outer_ring_velocity_z_m_s"))
-            .flatten(),
+        inner_ring_velocity_rms_x_mm_s: rms("inner_ring_x_m"),
+        inner_ring_velocity_rms_y_mm_s: rms("inner_ring_y_m"),
+        inner_ring_velocity_rms_z_mm_s: rms("inner_ring_z_m"),
+        outer_ring_velocity_rms_y_mm_s: outer_ring.then(|| rms("outer_ring_y_m")).flatten(),
+        outer_ring_velocity_rms_z_mm_s: outer_ring.then(|| rms("outer_ring_z_m")).flatten(),
     }
 }
 

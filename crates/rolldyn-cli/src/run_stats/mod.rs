@@ -55,11 +55,13 @@ const SIGNAL_CHANNELS: [&str; 13] = [
     "cage_z_m",
     "cage_velocity_y_m_s",
     "cage_velocity_z_m_s",
-    "inner_ring_velocity_x_m_s",
-    "inner_ring_velocity_y_m_s",
-    "inner_ring_velocity_z_m_s",
-    "outer_ring_velocity_y_m_s",
-    "outer_ring_velocity_z_m_s",
+    // The rings' velocity RMS, from interval means of the displacements
+    // (`rolldyn::signal::band_velocity_rms_of_displacement`).
+    "inner_ring_x_m",
+    "inner_ring_y_m",
+    "inner_ring_z_m",
+    "outer_ring_y_m",
+    "outer_ring_z_m",
     // The envelope lines of a run with a spall or a sensor
     // (`crate::vibration`).
     "inner_ring_acceleration_z_m_s2",

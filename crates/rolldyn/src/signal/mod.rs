@@ -26,7 +26,8 @@ pub use sensor::{HousingMode, SensorChain, SensorSample, SensorSpec};
 pub use spectrogram::{Spectrogram, spectrogram};
 pub use spectrum::{
     DEFAULT_ENVELOPE_BAND, Spectrum, SpectrumError, Window, amplitude_spectrum, band_rms,
-    band_velocity_rms, default_envelope_band, envelope_band_holds, envelope_spectrum, welch_psd,
+    band_velocity_rms, band_velocity_rms_of_displacement, default_envelope_band,
+    envelope_band_holds, envelope_spectrum, welch_psd,
 };
 pub use statistics::statistics;
 pub use whirl::{WhirlMetrics, whirl_metrics};
