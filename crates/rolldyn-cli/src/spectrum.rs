@@ -12,8 +12,8 @@ use crate::{Failure, bad_arg, emit, json};
 use clap::Args;
 use rolldyn::signal::{
     CharacteristicFrequencies, Fault, Spectrogram, Spectrum, Window, amplitude_spectrum, band_rms,
-    band_velocity_rms, default_envelope_band, envelope_spectrum, find_peaks, spectrogram,
-    welch_psd,
+    band_velocity_rms, band_velocity_rms_of_displacement, default_envelope_band, envelope_spectrum,
+    find_peaks, spectrogram, welch_psd,
 };
 use rolldyn::surface::SpallSite;
 use rolldyn_io::RunDir;
@@ -211,7 +211,17 @@ struct Record {
     unit: String,
     time: Vec<f64>,
     values: Vec<f64>,
+    /// A velocity channel's displacement channel, where the series has it
+    /// (the velocity RMS from its interval means, as the summary's).
+    displacement: Option<Vec<f64>>,
     summary: RunSummary,
+}
+
+/// The displacement channel of a velocity channel by the recorder's names
+/// (`inner_ring_velocity_z_m_s` → `inner_ring_z_m`); None for others.
+fn displacement_channel(velocity: &str) -> Option<String> {
+    let (body, axis) = velocity.strip_suffix("_m_s")?.split_once("_velocity_")?;
+    Some(format!("{body}_{axis}_m"))
 }
 
 /// Reads the channel of `args` (the sensor's, else the envelope
@@ -248,7 +258,11 @@ fn read_record(args: &SpectrumArgs, dir: &Path) -> Result<Record, Failure> {
     if channels.unit("time_s").is_none() {
         return Err(no_time());
     }
-    let series = rolldyn_io::read_columns(&path, Some(&["time_s", channel.as_str()]))
+    let displacement =
+        displacement_channel(&channel).filter(|name| channels.unit(name) == Some("m"));
+    let mut columns = vec!["time_s", channel.as_str()];
+    columns.extend(displacement.as_deref());
+    let series = rolldyn_io::read_columns(&path, Some(&columns))
         .map_err(|e| Failure::BadInput(e.to_string()))?;
     let summary_path = RunDir::new(dir).summary();
     let summary: RunSummary = std::fs::read_to_string(&summary_path)
@@ -286,6 +300,9 @@ fn read_record(args: &SpectrumArgs, dir: &Path) -> Result<Record, Failure> {
         unit: series.unit(&channel).unwrap_or("").to_string(),
         time: time[from..].to_vec(),
         values: values[from..].to_vec(),
+        displacement: displacement
+            .and_then(|name| series.column(&name))
+            .map(|x| x[from..].to_vec()),
         channel,
         summary,
     })
@@ -410,6 +427,7 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         unit,
         time,
         values: record,
+        displacement,
         summary,
     } = read_record(args, dir)?;
     let sample_rate = (time.len() - 1) as f64 / (time[time.len() - 1] - time[0]);
@@ -440,9 +458,10 @@ pub fn report(args: &SpectrumArgs) -> Result<Report, Failure> {
         &faults(dir),
     );
     let velocity_band = (VELOCITY_BAND.0, VELOCITY_BAND.1.min(0.5 * sample_rate));
-    let velocity_rms = match unit.as_str() {
-        "m/s^2" => band_velocity_rms(&record, sample_rate, velocity_band).ok(),
-        "m/s" => band_rms(&record, sample_rate, velocity_band).ok(),
+    let velocity_rms = match (unit.as_str(), &displacement) {
+        ("m/s^2", _) => band_velocity_rms(&record, sample_rate, velocity_band).ok(),
+        ("m/s", Some(x)) => band_velocity_rms_of_displacement(x, sample_rate, velocity_band).ok(),
+        ("m/s", None) => band_rms(&record, sample_rate, velocity_band).ok(),
         _ => None,
     }
     .map(|v| 1e3 * v);

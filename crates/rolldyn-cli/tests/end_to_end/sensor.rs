@@ -300,27 +300,66 @@ fn an_envelope_band_too_narrow_for_the_defect_rate_is_said() {
 /// near 12 kHz too; the velocity's samples at 12 kHz read z 85 % above
 /// the 48 kHz value (that vibration folded into the band), the interval
 /// means of the displacements within 3 % (docs/signal.md, "Velocity
-/// RMS").
+/// RMS"). `rolldyn spectrum` on the velocity channel reads what the
+/// summary does.
 #[test]
 fn the_rings_velocity_rms_does_not_fold_the_vibration_above_nyquist() {
     let text = case_text(false);
     let at = |rate: &str| {
-        common::run_summary(
-            &format!("alias-{rate}"),
+        let dir = temp_dir(&format!("alias-{rate}"));
+        let o = rolldyn(
+            &[
+                "run",
+                "-",
+                "--duration",
+                "0.1 s",
+                "--set",
+                &format!("output.sample_rate={rate}"),
+                "-o",
+                dir.to_str().unwrap(),
+            ],
             Some(&text),
-            "0.1 s",
-            &[&format!("output.sample_rate={rate}")],
-        )
+        );
+        assert!(o.status.success(), "{}", stderr(&o));
+        dir
     };
     let (coarse, fine) = (at("12 kHz"), at("48 kHz"));
+    let (c_summary, f_summary) = (summary_of(&coarse), summary_of(&fine));
     for key in [
         "inner_ring_velocity_rms_y_mm_s",
         "inner_ring_velocity_rms_z_mm_s",
     ] {
-        let (c, f) = (coarse[key].as_f64().unwrap(), fine[key].as_f64().unwrap());
+        let c = c_summary[key].as_f64().unwrap();
+        let f = f_summary[key].as_f64().unwrap();
         assert!(
             f > 0.0 && (c / f - 1.0).abs() < 0.05,
             "{key}: {c} at 12 kHz, {f} at 48 kHz"
         );
+    }
+    let spectrum = common::json(
+        &[
+            "spectrum",
+            coarse.to_str().unwrap(),
+            "--channel",
+            "inner_ring_velocity_z_m_s",
+            "--json",
+        ],
+        None,
+    );
+    let (from_spectrum, from_summary) = (
+        spectrum["velocity_rms_mm_s"].as_f64().unwrap(),
+        c_summary["inner_ring_velocity_rms_z_mm_s"]
+            .as_f64()
+            .unwrap(),
+    );
+    // The same method; the summary keeps the window's last half-duration
+    // of samples (602 here), the spectrum reads the whole window (619).
+    // The velocity's samples would read 0.10 mm/s.
+    assert!(
+        (from_spectrum / from_summary - 1.0).abs() < 0.01,
+        "spectrum {from_spectrum}, summary {from_summary}"
+    );
+    for dir in [coarse, fine] {
+        std::fs::remove_dir_all(dir).ok();
     }
 }

@@ -491,8 +491,9 @@ pub fn row_count(path: &Path) -> Result<u64, InputError> {
 
 /// Calls `f` with each record batch of the series at `path` (a file or a
 /// dataset directory), in order, holding one batch in memory; `columns`
-/// selects channels by name (None: all). Every part must have the first
-/// part's channels.
+/// selects channels by name (None: all), which come in the file's order
+/// (the returned schema's). Every part must have the first part's
+/// channels.
 pub fn for_each_batch(
     path: &Path,
     columns: Option<&[&str]>,
@@ -503,7 +504,7 @@ pub fn for_each_batch(
         message,
     };
     let all = read_schema(path)?;
-    let selected: Vec<usize> = match columns {
+    let mut selected: Vec<usize> = match columns {
         None => (0..all.width()).collect(),
         Some(names) => names
             .iter()
@@ -515,6 +516,10 @@ pub fn for_each_batch(
             })
             .collect::<Result<_, _>>()?,
     };
+    // A projection yields its columns in the file's order, whatever order
+    // they were asked in: the schema names them so.
+    selected.sort_unstable();
+    selected.dedup();
     let mut schema = TimeSeries::default();
     for &i in &selected {
         schema.channel(all.names()[i].clone(), all.units()[i].clone());

@@ -49,6 +49,12 @@ fn parts_hold_fixed_row_ranges_and_read_back_as_one_series() {
     let x = read_columns(&dir, Some(&["x_m"])).unwrap();
     assert_eq!(x.names(), ["x_m"]);
     assert_eq!(x.column("x_m"), whole.column("x_m"));
+    // Asked in another order than the file's (and twice): each name keeps
+    // its own values.
+    let both = read_columns(&dir, Some(&["x_m", "time_s", "x_m"])).unwrap();
+    assert_eq!(both.names(), ["time_s", "x_m"]);
+    assert_eq!(both.column("x_m"), whole.column("x_m"));
+    assert_eq!(both.column("time_s"), whole.column("time_s"));
     // A missing part is a gap in time: refused, naming it.
     std::fs::rename(&parts[1], dir.join("moved")).unwrap();
     let e = read_parquet(&dir).unwrap_err().to_string();
