@@ -299,8 +299,8 @@ fn an_envelope_band_too_narrow_for_the_defect_rate_is_said() {
 /// depend on it) recorded at its 12 kHz and at 48 kHz. Its ring vibrates
 /// near 12 kHz too; the velocity's samples at 12 kHz read z 85 % above
 /// the 48 kHz value (that vibration folded into the band), the interval
-/// means of the displacements within 3 % (docs/signal.md, "Velocity
-/// RMS"). `rolldyn spectrum` on the velocity channel reads what the
+/// means of the displacements 2.5 % below it, asserted within 5 %
+/// (docs/signal.md, "Velocity RMS"). `rolldyn spectrum` on the velocity channel reads what the
 /// summary does.
 #[test]
 fn the_rings_velocity_rms_does_not_fold_the_vibration_above_nyquist() {

@@ -369,8 +369,8 @@ pub fn band_velocity_rms(
 /// sin(π f/f_s)/(π f/f_s) vanishes at every multiple of f_s. A component at
 /// m f_s ± f keeps about f/(m f_s ± f) of its amplitude (−21 dB for the 1 kHz
 /// band edge at 12 kHz, −33 dB at 48 kHz). In the band the gain is
-/// divided out line by line (at most 1 − sinc(1/2) = 36 % at f_s/2; 1.1 %
-/// at 1 kHz of 12 kHz). Then [`band_rms`] over the N − 1 means.
+/// divided out line by line (it is 0.989 at 1 kHz of 12 kHz, 2/π at f_s/2);
+/// otherwise as [`band_rms`] over the N − 1 means.
 pub fn band_velocity_rms_of_displacement(
     displacement: &[f64],
     sample_rate: f64,
