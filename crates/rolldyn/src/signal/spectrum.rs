@@ -370,7 +370,9 @@ pub fn band_velocity_rms(
 /// m f_s ± f keeps about f/(m f_s ± f) of its amplitude (−21 dB for the 1 kHz
 /// band edge at 12 kHz, −33 dB at 48 kHz). In the band the gain is
 /// divided out line by line (it is 0.989 at 1 kHz of 12 kHz, 2/π at f_s/2);
-/// otherwise as [`band_rms`] over the N − 1 means.
+/// otherwise as [`band_rms`] over the N − 1 means. Aliasing and
+/// anti-alias prefilters: Oppenheim & Schafer 2010, §4.2, §4.8
+/// (docs/references.md).
 pub fn band_velocity_rms_of_displacement(
     displacement: &[f64],
     sample_rate: f64,
