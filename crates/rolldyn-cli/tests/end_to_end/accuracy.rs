@@ -271,14 +271,15 @@ fn a_one_rpm_start_closes_its_balance() {
 }
 
 /// `--verify` refines the traction grid of a case that relies on the
-/// default grid too (the acbb_30x62 preset writes no
+/// default grid too (the ceramic_45x75 preset writes no
 /// `traction_integration`): the verifying run must not fail on a grid
 /// table without its method, and names the grids it compared.
 #[test]
 fn verify_refines_the_default_grid() {
-    let case = String::from_utf8(rolldyn(&["new", "--preset", "acbb_30x62"], None).stdout).unwrap();
+    let case =
+        String::from_utf8(rolldyn(&["new", "--preset", "ceramic_45x75"], None).stdout).unwrap();
     assert!(!case.contains("traction_integration"));
-    let (s, _) = run("acbb", &["--duration", "5 ms", "--verify"], Some(&case));
+    let (s, _) = run("ceramic", &["--duration", "5 ms", "--verify"], Some(&case));
     let verify = &s["accuracy"]["verify"];
     assert_eq!(
         verify["traction_grid"],
