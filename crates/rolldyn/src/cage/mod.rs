@@ -81,6 +81,16 @@ impl CageParameters {
     }
 
     /// Checks the cage data.
+    /// How far the cage centre can move from the bearing's axis before it
+    /// touches \[m\]: half the diametral pocket clearance (the balls
+    /// hold a ball-guided cage), or the guide land's radial clearance when
+    /// that is smaller.
+    pub fn radial_freedom(&self) -> f64 {
+        let pockets = 0.5 * self.pocket_clearance;
+        self.guide
+            .map_or(pockets, |guide| guide.radial_clearance.min(pockets))
+    }
+
     pub fn validate(&self) -> Result<(), InvalidParameter> {
         require_positive("cage_mass", self.mass)?;
         require_positive("cage_inertia", self.inertia)?;
@@ -170,6 +180,26 @@ mod tests {
             guide: None,
             unbalance: 0.0,
         }
+    }
+
+    /// A ball-guided cage moves half its pocket clearance; a land-guided
+    /// one the land's radial clearance, or the pockets' when they hold it
+    /// first.
+    #[test]
+    fn radial_freedom_is_the_nearest_stop() {
+        let linear = PocketLaw::Linear {
+            stiffness: 1e7,
+            damping: 0.0,
+        };
+        let mut c = cage(linear, PocketShape::Cylindrical, true);
+        assert_eq!(c.radial_freedom(), 0.5 * 0.175e-3);
+        let mut land = crate::testing::guide_land_7008c();
+        land.radial_clearance = 50e-6;
+        c.guide = Some(land);
+        assert_eq!(c.radial_freedom(), 50e-6);
+        land.radial_clearance = 175e-6;
+        c.guide = Some(land);
+        assert_eq!(c.radial_freedom(), 0.5 * 0.175e-3);
     }
 
     /// The 7008C's 22 film pockets (F_w = 11 N, C_p = 0.175 mm):
