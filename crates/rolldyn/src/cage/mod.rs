@@ -80,7 +80,6 @@ impl CageParameters {
         }
     }
 
-    /// Checks the cage data.
     /// How far the cage centre can move from the bearing's axis before it
     /// touches \[m\]: half the diametral pocket clearance (the balls
     /// hold a ball-guided cage), or the guide land's radial clearance when
@@ -91,6 +90,7 @@ impl CageParameters {
             .map_or(pockets, |guide| guide.radial_clearance.min(pockets))
     }
 
+    /// Checks the cage data.
     pub fn validate(&self) -> Result<(), InvalidParameter> {
         require_positive("cage_mass", self.mass)?;
         require_positive("cage_inertia", self.inertia)?;
