@@ -182,16 +182,21 @@ mod tests {
         }
     }
 
+    /// The cage with stiff linear cylindrical pockets, free to whirl.
+    fn linear_pockets() -> CageParameters {
+        let linear = PocketLaw::Linear {
+            stiffness: 1e7,
+            damping: 0.0,
+        };
+        cage(linear, PocketShape::Cylindrical, true)
+    }
+
     /// A ball-guided cage moves half its pocket clearance; a land-guided
     /// one the land's radial clearance, or the pockets' when they hold it
     /// first.
     #[test]
     fn radial_freedom_is_the_nearest_stop() {
-        let linear = PocketLaw::Linear {
-            stiffness: 1e7,
-            damping: 0.0,
-        };
-        let mut c = cage(linear, PocketShape::Cylindrical, true);
+        let mut c = linear_pockets();
         assert_eq!(c.radial_freedom(), 0.5 * 0.175e-3);
         let mut land = crate::testing::guide_land_7008c();
         land.radial_clearance = 50e-6;
@@ -208,11 +213,7 @@ mod tests {
     /// whirl √(22 k/m)/2π = 4.75 kHz above both.
     #[test]
     fn squeeze_film_thinner_than_the_clearance() {
-        let linear = PocketLaw::Linear {
-            stiffness: 1e7,
-            damping: 0.0,
-        };
-        let mut c = cage(linear, PocketShape::Cylindrical, true);
+        let mut c = linear_pockets();
         c.pocket_squeeze = Some(PocketSqueeze {
             viscosity: 0.02,
             ball_radius: 4e-3,
