@@ -231,6 +231,17 @@ fn simulate(preset: &str, job: &Job) -> Result<Vibration, String> {
         RunEnd::Interrupted { t } => return Err(format!("interrupted at {t} s")),
         RunEnd::Failed { error } => return Err(format!("failed: {error}")),
     };
+    vibration(&velocity, &cage_speed, model.layout().balls, status)
+}
+
+/// The record's statistics: the ring's RMS velocities, the ball-pass line
+/// and the strongest peak off its harmonics.
+fn vibration(
+    velocity: &[Vec<f64>; 3],
+    cage_speed: &[f64],
+    balls: usize,
+    status: String,
+) -> Result<Vibration, String> {
     let centred = |v: &[f64]| {
         let mean = v.iter().sum::<f64>() / v.len().max(1) as f64;
         v.iter().map(|x| x - mean).collect::<Vec<f64>>()
@@ -240,7 +251,7 @@ fn simulate(preset: &str, job: &Job) -> Result<Vibration, String> {
     let spectrum = amplitude_spectrum(&vz, SAMPLE_RATE, Window::Hann).map_err(|e| e.to_string())?;
     let df = spectrum.resolution();
     let mean_cage = cage_speed.iter().sum::<f64>() / cage_speed.len().max(1) as f64;
-    let ball_pass = model.layout().balls as f64 * mean_cage / std::f64::consts::TAU;
+    let ball_pass = balls as f64 * mean_cage / std::f64::consts::TAU;
     let bin = |f: f64| ((f / df).round() as usize).min(spectrum.value.len() - 1);
     let ball_pass_amplitude = spectrum.value[bin(ball_pass)];
     let harmonic = |f: f64| (1..=6).any(|k| (f - k as f64 * ball_pass).abs() <= HARMONIC_BINS * df);
