@@ -1,7 +1,9 @@
 //! The workspace's dependency structure (ARCHITECTURE.md, "Layers"): in
 //! every crate no module uses one in a higher layer, every module is in
 //! exactly one layer, no modules or files import each other in a circle,
-//! and the command-line tool's commands do not use one another.
+//! and the command-line tool's commands do not use one another; and no
+//! function in the workspace (library, tests, examples) is longer than
+//! [`MAX_FUNCTION_LINES`].
 //!
 //! Read from the sources: every `crate::…`, `super::…` and `self::…` path
 //! in code is an edge from the file's module to the longest module prefix
@@ -633,6 +635,107 @@ fn the_reader_finds_planted_faults() {
             "not found: {expected} in {faults:?}"
         );
     }
+}
+
+/// The most lines a function may span, its signature to its closing brace.
+const MAX_FUNCTION_LINES: usize = 120;
+
+/// The functions of `source` longer than `limit` lines: (first line, name,
+/// lines). Read from the blanked code, so braces in comments and literals
+/// do not count; a `fn` without a body (a trait's declaration) is skipped.
+fn long_functions(source: &str, limit: usize) -> Vec<(usize, String, usize)> {
+    let code = blank(source);
+    let bytes = code.as_bytes();
+    let ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let line_of = |at: usize| code[..at].matches('\n').count() + 1;
+    let mut found = Vec::new();
+    let mut from = 0;
+    while let Some(k) = code[from..].find("fn ") {
+        let at = from + k;
+        from = at + 3;
+        if at > 0 && ident(bytes[at - 1]) {
+            continue;
+        }
+        let name: String = code[at + 3..]
+            .trim_start()
+            .chars()
+            .take_while(|&c| c.is_alphanumeric() || c == '_')
+            .collect();
+        let (Some(brace), semicolon) = (code[at..].find('{'), code[at..].find(';')) else {
+            continue;
+        };
+        if name.is_empty() || semicolon.is_some_and(|s| s < brace) {
+            continue;
+        }
+        let mut depth = 0usize;
+        let mut end = at + brace;
+        while end < bytes.len() {
+            match bytes[end] {
+                b'{' => depth += 1,
+                b'}' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        break;
+                    }
+                }
+                _ => {}
+            }
+            end += 1;
+        }
+        let lines = line_of(end) - line_of(at) + 1;
+        if lines > limit {
+            found.push((line_of(at), name, lines));
+        }
+    }
+    found
+}
+
+#[test]
+fn no_function_is_longer_than_its_limit() {
+    let workspace = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut files = Vec::new();
+    for spec in &CRATES {
+        for part in ["src", "tests", "benches", "examples"] {
+            let dir = workspace.join("crates").join(spec.dir).join(part);
+            if dir.is_dir() {
+                rust_files(&dir, &mut files);
+            }
+        }
+    }
+    rust_files(&workspace.join("examples"), &mut files);
+    files.sort();
+    assert!(files.len() > 100, "{} files read", files.len());
+    let mut long = Vec::new();
+    for file in &files {
+        let source = std::fs::read_to_string(file).unwrap();
+        let shown = file.strip_prefix(&workspace).unwrap_or(file).display();
+        for (line, name, lines) in long_functions(&source, MAX_FUNCTION_LINES) {
+            long.push(format!("{shown}:{line} `{name}`: {lines} lines"));
+        }
+    }
+    assert!(
+        long.is_empty(),
+        "functions over {MAX_FUNCTION_LINES} lines (split them):\n{}",
+        long.join("\n")
+    );
+}
+
+/// The length check on planted functions: the limit is exclusive, braces in
+/// literals and comments do not count, a declaration without a body and an
+/// identifier ending in `fn` are not functions.
+#[test]
+fn the_length_check_finds_planted_long_functions() {
+    let body = |n: usize| "    let x = 1;\n".repeat(n);
+    let source = format!(
+        "trait T {{ fn declared(&self); }}\nfn ok() {{\n{}}}\n\
+         fn long(a: u8) -> u8 {{\n    let s = \"}}\"; // }}\n{}    a\n}}\nlet myfn = 1;\n",
+        body(3),
+        body(5)
+    );
+    // `ok` spans lines 2–6 (5 lines), `long` lines 7–15 (9).
+    assert_eq!(long_functions(&source, 5), vec![(7, "long".to_owned(), 9)]);
+    assert_eq!(long_functions(&source, 4).len(), 2);
+    assert!(long_functions(&source, 9).is_empty());
 }
 
 /// The edges of one file's code (module `here`) to top-level modules.
