@@ -21,9 +21,8 @@ output that script reads).
     python3 scripts/work-precision.py --defaults-only --reference-integrator auto \\
         --cases "6205 outer pit,6205 inner pit,6205 ball pit"  # also 6203, 6206
 
-Prints a Markdown table per case. Hours on one thread for the 6304 and
-the default case over 1 s (the default case's reference at rtol 1e-6
-alone ran over 45 minutes on 2026-11-30); Exudyn adds about 10 minutes.
+Prints a Markdown table per case. About an hour on one thread for the
+6304 and the default case over 1 s; Exudyn adds about 10 minutes.
 """
 
 import argparse
