@@ -31,6 +31,8 @@ pub enum OverrideSource {
     CommandLine,
     /// `Case.set(key, value)` in the Python package.
     Python,
+    /// A point's value of `rolldyn run --sweep`.
+    Sweep,
 }
 
 impl OverrideSource {
@@ -39,6 +41,7 @@ impl OverrideSource {
         match self {
             Self::CommandLine => format!("command-line override `--set {text}`"),
             Self::Python => format!("override `{text}` (Case.set)"),
+            Self::Sweep => format!("`--sweep` value `{text}`"),
         }
     }
 }
@@ -73,6 +76,18 @@ impl Override {
             value,
             text: source.describe(&format!("{key}={raw}")),
         })
+    }
+
+    /// A typed value for `key` from `source`: a number (`0.1`), or a
+    /// quantity as case files write it (`String::from("523.6 rad/s")`).
+    pub fn typed(key: &str, value: impl Into<Value>, source: OverrideSource) -> Self {
+        let value = value.into();
+        let text = source.describe(&format!("{key}={value}"));
+        Self {
+            key: key.to_string(),
+            value,
+            text,
+        }
     }
 
     /// A string-valued override from a dedicated flag (`--speed 8000rpm`).

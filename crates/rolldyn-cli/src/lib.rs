@@ -86,6 +86,7 @@ pub struct CaseOverrides {
 pub const DEFAULT_RUN_DIR: &str = "rolldyn-run";
 
 /// A failure with its exit code.
+#[derive(Debug)]
 pub enum Failure {
     /// 2: the user's input, arguments or output path.
     BadInput(String),
@@ -148,17 +149,11 @@ pub fn bad_arg(flag: &str, value: &str, rule: impl std::fmt::Display) -> Failure
 }
 
 impl CaseOverrides {
+    /// The case's overrides, in the order they apply: the operating
+    /// point's flags ([`Self::operating_flags`]), `--fix-tilt`,
+    /// `--misalignment`, then the `--set`s.
     pub fn overrides(&self) -> Result<Vec<Override>, Failure> {
-        let mut out = Vec::new();
-        if let Some(s) = &self.speed {
-            out.push(Override::flag("--speed", "operating.speed", s));
-        }
-        if let Some(f) = &self.axial_load {
-            out.push(Override::flag("--axial-load", "operating.force_x", f));
-        }
-        if let Some(f) = &self.radial_load {
-            out.push(Override::flag("--radial-load", "operating.force_z", f));
-        }
+        let mut out: Vec<Override> = self.operating_flags().into_iter().flatten().collect();
         if self.fix_tilt {
             out.push(Override::parse_set("operating.fixed_tilt=true")?);
         }
@@ -176,15 +171,37 @@ impl CaseOverrides {
         Ok(out)
     }
 
+    /// `--speed`, `--axial-load` and `--radial-load` as overrides of
+    /// `operating.speed`, `operating.force_x` and `operating.force_z`.
+    pub fn operating_flags(&self) -> [Option<Override>; 3] {
+        let flag = |value: &Option<String>, flag: &str, key: &str| {
+            value.as_deref().map(|v| Override::flag(flag, key, v))
+        };
+        [
+            flag(&self.speed, "--speed", "operating.speed"),
+            flag(&self.axial_load, "--axial-load", "operating.force_x"),
+            flag(&self.radial_load, "--radial-load", "operating.force_z"),
+        ]
+    }
+
     /// Loads and validates a case from its text (None: the built-in
     /// default case) with these overrides.
     pub fn load_text(&self, source: &str, text: Option<&str>) -> Result<Case, Failure> {
-        let overrides = self.overrides()?;
-        Ok(match text {
-            None => load_default(&overrides)?,
-            Some(text) => load_case(source, text, &overrides)?,
-        })
+        load_with(source, text, &self.overrides()?)
     }
+}
+
+/// Loads and validates a case from its text (None: the built-in default
+/// case) with `overrides`, applied in order.
+pub fn load_with(
+    source: &str,
+    text: Option<&str>,
+    overrides: &[Override],
+) -> Result<Case, Failure> {
+    Ok(match text {
+        None => load_default(overrides)?,
+        Some(text) => load_case(source, text, overrides)?,
+    })
 }
 
 impl CaseArgs {

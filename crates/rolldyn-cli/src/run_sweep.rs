@@ -20,12 +20,12 @@ use crate::checkpoint::RunRecord;
 use crate::run::run_case;
 use crate::run_options::RunOptions;
 use crate::sweep_grid::{Swept, parse_sweep};
-use crate::{CaseArgs, CaseOverrides, Failure, bad_arg, emit, html_report};
+use crate::{CaseArgs, CaseOverrides, Failure, bad_arg, emit, html_report, load_with};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use rolldyn::math::random::SplitMix64;
-use rolldyn_case::Case;
 use rolldyn_case::simulation::conditions;
+use rolldyn_case::{Case, Override, OverrideSource};
 use rolldyn_io::RunDir;
 use serde_json::{Map, Value};
 use std::fmt::Write;
@@ -77,47 +77,170 @@ pub fn parse_run_sweep(arg: &str) -> Result<RunSweep, String> {
     })
 }
 
-/// A grid point: its overrides and the labels of its case-key sweeps
-/// (key, value as given).
-pub type GridPoint = (CaseOverrides, Vec<(String, String)>);
+/// A grid point: the overrides its case loads with, the same changes as
+/// its run record keeps them (`rolldyn run --resume` reads the record),
+/// and the labels of its case-key sweeps (key, value as given).
+#[derive(Debug, Clone, PartialEq)]
+pub struct GridPoint {
+    /// The base case's overrides with the point's values, typed, in the
+    /// order they apply (as [`CaseOverrides::overrides`] orders the
+    /// record's).
+    pub overrides: Vec<Override>,
+    /// The point's overrides as flags and `--set` text.
+    pub record: CaseOverrides,
+    /// The case-key sweeps' values.
+    pub labels: Vec<(String, String)>,
+}
 
-/// The overrides of each grid point: the base ones plus the swept values
-/// (first sweep outermost).
-pub fn grid(base: &CaseOverrides, sweeps: &[RunSweep]) -> Vec<GridPoint> {
-    let mut points: Vec<GridPoint> = vec![(base.clone(), Vec::new())];
-    for sweep in sweeps {
-        points = points
-            .iter()
-            .flat_map(|(p, labels)| -> Vec<GridPoint> {
-                match sweep {
-                    RunSweep::Operating(swept, values) => values
-                        .iter()
-                        .map(|&v| {
-                            let mut o = p.clone();
-                            // SI text: the point runs at exactly the swept value.
-                            match swept {
-                                Swept::Speed => o.speed = Some(format!("{v:?} rad/s")),
-                                Swept::Axial => o.axial_load = Some(format!("{v:?} N")),
-                                Swept::Radial => o.radial_load = Some(format!("{v:?} N")),
-                            }
-                            (o, labels.clone())
-                        })
-                        .collect(),
-                    RunSweep::Key { key, values } => values
-                        .iter()
-                        .map(|v| {
-                            let mut o = p.clone();
-                            o.set.push(format!("{key}={v}"));
-                            let mut labels = labels.clone();
-                            labels.push((key.clone(), v.clone()));
-                            (o, labels)
-                        })
-                        .collect(),
-                }
-            })
-            .collect();
+impl GridPoint {
+    /// A point given by its record alone (the Python package's points).
+    pub fn from_record(record: CaseOverrides) -> Result<Self, Failure> {
+        Ok(Self {
+            overrides: record.overrides()?,
+            record,
+            labels: Vec::new(),
+        })
     }
-    points
+}
+
+/// A point while the grid is built: its operating flags (speed, axial,
+/// radial: the base's or swept) and its case-key values, which the base's
+/// other overrides separate.
+#[derive(Clone)]
+struct Partial {
+    operating: [Option<Override>; 3],
+    keys: Vec<Override>,
+    record: CaseOverrides,
+    labels: Vec<(String, String)>,
+}
+
+impl Partial {
+    fn of(base: &CaseOverrides) -> Self {
+        Self {
+            operating: base.operating_flags(),
+            keys: Vec::new(),
+            record: base.clone(),
+            labels: Vec::new(),
+        }
+    }
+
+    /// A case-key value: applied after the base's overrides, recorded as
+    /// `--set key=value`, labelled with its text.
+    fn with_key(&self, key: &str, value: Override, text: &str) -> Self {
+        let mut p = self.clone();
+        p.keys.push(value);
+        p.record.set.push(format!("{key}={text}"));
+        p.labels.push((key.to_string(), text.to_string()));
+        p
+    }
+
+    /// The point: its operating flags, the base's other overrides
+    /// (`rest`), its case-key values.
+    fn finish(self, rest: &[Override]) -> GridPoint {
+        let mut overrides: Vec<Override> = self.operating.into_iter().flatten().collect();
+        overrides.extend_from_slice(rest);
+        overrides.extend(self.keys);
+        GridPoint {
+            overrides,
+            record: self.record,
+            labels: self.labels,
+        }
+    }
+}
+
+/// The base's overrides other than its operating flags, which a point
+/// replaces.
+fn rest_of(base: &CaseOverrides) -> Result<Vec<Override>, Failure> {
+    CaseOverrides {
+        speed: None,
+        axial_load: None,
+        radial_load: None,
+        ..base.clone()
+    }
+    .overrides()
+}
+
+/// A case-key value as `--set` reads it, from `--sweep`.
+fn swept_value(key: &str, text: &str) -> Result<Override, Failure> {
+    Ok(Override::parse_from(
+        &format!("{key}={text}"),
+        OverrideSource::Sweep,
+    )?)
+}
+
+/// The overrides of each grid point: the base ones with the swept values
+/// (first sweep outermost). The operating point's values are typed (SI,
+/// exact); a case key's values are read as `--set` reads them.
+pub fn grid(base: &CaseOverrides, sweeps: &[RunSweep]) -> Result<Vec<GridPoint>, Failure> {
+    let mut points = vec![Partial::of(base)];
+    for sweep in sweeps {
+        let mut next = Vec::with_capacity(points.len());
+        for p in &points {
+            match sweep {
+                RunSweep::Operating(swept, values) => {
+                    for &v in values {
+                        let (slot, key, unit) = match swept {
+                            Swept::Speed => (0, "operating.speed", "rad/s"),
+                            Swept::Axial => (1, "operating.force_x", "N"),
+                            Swept::Radial => (2, "operating.force_z", "N"),
+                        };
+                        let text = format!("{v:?} {unit}");
+                        let mut q = p.clone();
+                        let value = Override::typed(key, text.clone(), OverrideSource::Sweep);
+                        q.operating[slot] = Some(value);
+                        *[
+                            &mut q.record.speed,
+                            &mut q.record.axial_load,
+                            &mut q.record.radial_load,
+                        ][slot] = Some(text);
+                        next.push(q);
+                    }
+                }
+                RunSweep::Key { key, values } => {
+                    for v in values {
+                        next.push(p.with_key(key, swept_value(key, v)?, v));
+                    }
+                }
+            }
+        }
+        points = next;
+    }
+    let rest = rest_of(base)?;
+    Ok(points.into_iter().map(|p| p.finish(&rest)).collect())
+}
+
+/// The `--set` keys of the base that an operating-point sweep would not
+/// override (they apply after its flags): refused rather than silently
+/// winning over every point.
+fn conflicts(base: &CaseOverrides, sweeps: &[RunSweep]) -> Result<(), Failure> {
+    for sweep in sweeps {
+        let RunSweep::Operating(swept, _) = sweep else {
+            continue;
+        };
+        let (name, keys): (&str, &[&str]) = match swept {
+            Swept::Speed => ("speed", &["operating.speed", "operating.speed_profile"]),
+            Swept::Axial => ("axial", &["operating.force_x", "operating.displacement_x"]),
+            Swept::Radial => (
+                "radial",
+                &[
+                    "operating.force_z",
+                    "operating.radial_load",
+                    "operating.radial_load_angle",
+                ],
+            ),
+        };
+        for set in &base.set {
+            let key = set.split_once('=').map_or(set.as_str(), |(k, _)| k).trim();
+            if keys.contains(&key) {
+                return Err(bad_arg(
+                    "--set",
+                    set,
+                    format!("sets what `--sweep {name}=…` sweeps; give one of them"),
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// `--sample N --seed S`: random points instead of the grid.
@@ -211,31 +334,34 @@ pub fn sample(
         .iter()
         .map(|s| parse_draw(s).map_err(|e| bad_arg("--sweep", s, e)))
         .collect::<Result<Vec<_>, _>>()?;
+    let rest = rest_of(base)?;
     let mut rng = SplitMix64::new(sampling.seed);
-    Ok((0..sampling.count)
-        .map(|_| {
-            let (mut o, mut labels) = (base.clone(), Vec::new());
-            for (key, draw) in &draws {
-                let value = match draw {
-                    Draw::Range { low, high, unit } => {
-                        let v = low + (high - low) * rng.unit();
-                        if unit.is_empty() {
-                            format!("{v:?}")
-                        } else {
-                            format!("{v:?} {unit}")
-                        }
-                    }
-                    Draw::Choice(values) => {
-                        let k = (rng.unit() * values.len() as f64) as usize;
-                        values[k.min(values.len() - 1)].clone()
-                    }
-                };
-                o.set.push(format!("{key}={value}"));
-                labels.push((key.clone(), value));
-            }
-            (o, labels)
-        })
-        .collect())
+    let mut points = Vec::with_capacity(sampling.count);
+    for _ in 0..sampling.count {
+        let mut p = Partial::of(base);
+        for (key, draw) in &draws {
+            p = match draw {
+                Draw::Range { low, high, unit } => {
+                    let v = low + (high - low) * rng.unit();
+                    let sweep = OverrideSource::Sweep;
+                    let (text, value) = if unit.is_empty() {
+                        (format!("{v:?}"), Override::typed(key, v, sweep))
+                    } else {
+                        let text = format!("{v:?} {unit}");
+                        (text.clone(), Override::typed(key, text, sweep))
+                    };
+                    p.with_key(key, value, &text)
+                }
+                Draw::Choice(values) => {
+                    let k = (rng.unit() * values.len() as f64) as usize;
+                    let text = &values[k.min(values.len() - 1)];
+                    p.with_key(key, swept_value(key, text)?, text)
+                }
+            };
+        }
+        points.push(p.finish(&rest));
+    }
+    Ok(points)
 }
 
 /// `rolldyn run --sweep`: parses the sweeps, runs the grid (or, with
@@ -280,14 +406,14 @@ pub fn command(
         case.overrides.set.push(format!("solver.duration={d}"));
     }
     case.overrides.overrides()?;
-    let (source, text) = case.read()?;
-    let grid = match sampling {
+    conflicts(&case.overrides, &grid_sweeps)?;
+    let points = match sampling {
         Some(s) => sample(&case.overrides, sweeps, s)?,
-        None => grid(&case.overrides, &grid_sweeps),
+        None => grid(&case.overrides, &grid_sweeps)?,
     };
-    let (points, labels): (Vec<_>, Vec<_>) = grid.into_iter().unzip();
+    let (source, text) = case.read()?;
     let dir = Path::new(output);
-    let (rows, interrupted) = run(&source, text.as_deref(), &points, &labels, dir, options)?;
+    let (rows, interrupted) = run(&source, text.as_deref(), &points, dir, options)?;
     let mut out = String::new();
     for row in &rows {
         let _ = writeln!(
@@ -336,15 +462,14 @@ pub fn command(
 pub fn run(
     source: &str,
     case_text: Option<&str>,
-    points: &[CaseOverrides],
-    labels: &[Vec<(String, String)>],
+    points: &[GridPoint],
     dir: &Path,
     options: &RunOptions,
 ) -> Result<(Vec<Map<String, Value>>, bool), Failure> {
     // Every point's case first: bad input fails before any run starts.
     let cases = points
         .iter()
-        .map(|o| o.load_text(source, case_text))
+        .map(|p| load_with(source, case_text, &p.overrides))
         .collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(dir)
         .map_err(|e| Failure::BadInput(format!("cannot create {}: {e}", dir.display())))?;
@@ -374,7 +499,7 @@ pub fn run(
         .par_iter()
         .zip(&cases)
         .enumerate()
-        .map(|(k, (overrides, case))| {
+        .map(|(k, (point, case))| {
             let name = point_name(k, points.len());
             let mut row = if stop.load(Ordering::Relaxed) {
                 let mut row = inputs_row(&name, case);
@@ -382,9 +507,9 @@ pub fn run(
                 row.insert("error".into(), Value::Null);
                 row
             } else {
-                run_point(&name, source, case_text, overrides, case, dir, &options)
+                run_point(&name, source, case_text, &point.record, case, dir, &options)
             };
-            for (key, value) in labels.get(k).into_iter().flatten() {
+            for (key, value) in &point.labels {
                 row.insert(key.clone(), Value::from(value.as_str()));
             }
             let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
@@ -401,9 +526,9 @@ pub fn run(
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    let label_keys: Vec<&str> = labels
+    let label_keys: Vec<&str> = points
         .first()
-        .map(|l| l.iter().map(|(k, _)| k.as_str()).collect())
+        .map(|p| p.labels.iter().map(|(k, _)| k.as_str()).collect())
         .unwrap_or_default();
     write_tables_labelled(dir, &rows, &label_keys)?;
     Ok((rows, stop.load(Ordering::Relaxed)))
@@ -568,18 +693,98 @@ mod tests {
         assert_eq!(points, at(7));
         assert_ne!(points, at(8));
         let mut speeds = std::collections::BTreeSet::new();
-        for (overrides, labels) in &points {
+        for GridPoint { record, labels, .. } in &points {
             assert_eq!(labels[0].0, "surface.outer.spall.0.length");
             let (v, unit) = number_and_unit(&labels[0].1).unwrap();
             assert!((0.1..=0.5).contains(&v) && unit == "mm", "{labels:?}");
             assert_eq!(labels[1].0, "operating.speed");
             speeds.insert(labels[1].1.clone());
-            assert_eq!(overrides.set[0], format!("{}={}", labels[0].0, labels[0].1));
+            assert_eq!(record.set[0], format!("{}={}", labels[0].0, labels[0].1));
         }
         assert_eq!(speeds.len(), 2);
         assert_eq!(number_and_unit("0.36 mm"), Some((0.36, "mm")));
         assert_eq!(number_and_unit("1e-3"), Some((1e-3, "")));
         assert!(parse_draw("surface.outer.spall.0.length=0.1 mm..0.5 in").is_err());
         assert!(parse_draw("temperature=1..2").is_err());
+    }
+
+    /// A point's case from its typed overrides is the case its run record
+    /// loads (what `--resume` runs): grids over the operating point and a
+    /// case key, on bases with flags and `--set`s, and sampled points.
+    #[test]
+    fn typed_points_load_the_cases_their_records_load() {
+        let sweep = |s: &str| parse_run_sweep(s).unwrap();
+        let bases = [
+            CaseOverrides::default(),
+            CaseOverrides {
+                speed: Some("3000 rpm".into()),
+                radial_load: Some("-500 N".into()),
+                set: vec!["cage.pocket_friction=0.2".into()],
+                ..CaseOverrides::default()
+            },
+            CaseOverrides {
+                set: vec!["operating.radial_load=\"1 kN\"".into()],
+                ..CaseOverrides::default()
+            },
+        ];
+        let sweeps = [
+            sweep("speed=1000rpm..5000rpm/3"),
+            sweep("radial=-1kN,-2kN"),
+            sweep("cage.pocket_friction=0.05,0.1"),
+        ];
+        let mut checked = 0;
+        for base in &bases {
+            let sampled = [
+                "speed=1000 rpm..2000 rpm".to_string(),
+                "axial=100 N,200 N".into(),
+            ];
+            let sampled = sample(base, &sampled, Sampling { count: 3, seed: 1 }).unwrap();
+            let sweeps = if base.set.iter().any(|s| s.starts_with("operating.radial")) {
+                &sweeps[..1]
+            } else {
+                &sweeps[..]
+            };
+            for point in grid(base, sweeps).unwrap().iter().chain(&sampled) {
+                let typed = load_with("test", None, &point.overrides).unwrap_or_else(|_| panic!());
+                let recorded = point
+                    .record
+                    .load_text("test", None)
+                    .unwrap_or_else(|_| panic!());
+                assert_eq!(typed, recorded, "{:?}", point.record);
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, 3 * 3 + 12 * 2 + 3);
+    }
+
+    /// A bad value names `--sweep`, not `--set`; a `--set` that would win
+    /// over an operating-point sweep is refused.
+    #[test]
+    fn sweep_values_are_named_as_sweeps() {
+        let message = |f: Failure| match f {
+            Failure::BadInput(m) => m,
+            _ => String::from("not bad input"),
+        };
+        let points = grid(
+            &CaseOverrides::default(),
+            &[parse_run_sweep("cage.pocket_friction=abc,0.1").unwrap()],
+        )
+        .unwrap();
+        let error = message(load_with("test", None, &points[0].overrides).unwrap_err());
+        assert!(
+            error.contains("`--sweep` value `cage.pocket_friction=abc`"),
+            "{error}"
+        );
+        let base = CaseOverrides {
+            set: vec!["operating.speed_profile=[]".into()],
+            ..CaseOverrides::default()
+        };
+        let error =
+            message(conflicts(&base, &[parse_run_sweep("speed=1rpm,2rpm").unwrap()]).unwrap_err());
+        assert!(
+            error.contains("sets what `--sweep speed=…` sweeps"),
+            "{error}"
+        );
+        assert!(conflicts(&base, &[parse_run_sweep("axial=1N,2N").unwrap()]).is_ok());
     }
 }

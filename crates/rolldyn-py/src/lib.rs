@@ -508,14 +508,17 @@ fn run_points(
     force: bool,
     progress: Option<Bound<'_, PyAny>>,
 ) -> PyResult<(Py<PyAny>, bool)> {
-    let points: Vec<CaseOverrides> = points
+    let points = points
         .into_iter()
-        .map(|p| overrides(sets.iter().cloned().chain(p).collect()))
-        .collect();
+        .map(|p| {
+            run_sweep::GridPoint::from_record(overrides(sets.iter().cloned().chain(p).collect()))
+        })
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(to_py)?;
     let (options, stop, fraction) = run_options(force, false);
     let dir = Path::new(directory);
     let (rows, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
-        run_sweep::run(&source, text.as_deref(), &points, &[], dir, &options)
+        run_sweep::run(&source, text.as_deref(), &points, dir, &options)
     })?;
     let (rows, _) = rows.map_err(to_py)?;
     Ok((to_python(py, &rows)?, interrupted))
@@ -533,7 +536,7 @@ fn sample_points(
     let points = run_sweep::sample(&CaseOverrides::default(), &sweeps, sampling).map_err(to_py)?;
     Ok(points
         .into_iter()
-        .map(|(o, labels)| (o.set, labels.into_iter().map(|(_, v)| v).collect()))
+        .map(|p| (p.record.set, p.labels.into_iter().map(|(_, v)| v).collect()))
         .collect())
 }
 
