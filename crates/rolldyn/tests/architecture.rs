@@ -306,30 +306,32 @@ fn code(text: &str) -> (String, Vec<String>) {
                 }
                 i = s + 1;
             }
-            (_, Some(b)) => {
-                let mut depth = 0usize;
-                i = b;
-                while i < bytes.len() {
-                    match bytes[i] {
-                        b'{' => depth += 1,
-                        b'}' => {
-                            depth -= 1;
-                            if depth == 0 {
-                                i += 1;
-                                break;
-                            }
-                        }
-                        _ => {}
-                    }
-                    i += 1;
-                }
-            }
+            (_, Some(b)) => i = (closing_brace(bytes, b) + 1).min(bytes.len()),
             _ => i = bytes.len(),
         }
         from = i;
     }
     out.push_str(&blanked[from..]);
     (out, test_files)
+}
+
+/// The index of the brace that closes the one at `open` in blanked code
+/// (the end of the text when it stays open).
+fn closing_brace(bytes: &[u8], open: usize) -> usize {
+    let mut depth = 0usize;
+    for (i, &b) in bytes.iter().enumerate().skip(open) {
+        match b {
+            b'{' => depth += 1,
+            b'}' => {
+                depth -= 1;
+                if depth == 0 {
+                    return i;
+                }
+            }
+            _ => {}
+        }
+    }
+    bytes.len()
 }
 
 /// The paths a file's code names, each as its segments (a `{…}` group
@@ -667,21 +669,7 @@ fn long_functions(source: &str, limit: usize) -> Vec<(usize, String, usize)> {
         if name.is_empty() || semicolon.is_some_and(|s| s < brace) {
             continue;
         }
-        let mut depth = 0usize;
-        let mut end = at + brace;
-        while end < bytes.len() {
-            match bytes[end] {
-                b'{' => depth += 1,
-                b'}' => {
-                    depth -= 1;
-                    if depth == 0 {
-                        break;
-                    }
-                }
-                _ => {}
-            }
-            end += 1;
-        }
+        let end = closing_brace(bytes, at + brace);
         let lines = line_of(end) - line_of(at) + 1;
         if lines > limit {
             found.push((line_of(at), name, lines));
