@@ -174,6 +174,24 @@ pub fn encode_parts(
     w.into_bytes()
 }
 
+/// Writes a run's checkpoint (when given) and then its `summary.json`,
+/// each atomically, in that order: a summary never describes a checkpoint
+/// that is not there yet.
+pub fn persist(
+    dir: &Path,
+    checkpoint: Option<Vec<u8>>,
+    summary: &impl serde::Serialize,
+) -> Result<(), Failure> {
+    let bad = |e: rolldyn_io::OutputError| Failure::BadInput(e.to_string());
+    if let Some(bytes) = checkpoint {
+        RunDir::new(dir)
+            .write(RunDir::CHECKPOINT, &bytes)
+            .map_err(bad)?;
+    }
+    let json = crate::finite::to_json(summary).map_err(|e| Failure::Internal(e.to_string()))?;
+    RunDir::new(dir).write_summary(&json).map_err(bad)
+}
+
 /// Restores `solver` and `model` (built from the same record) from
 /// `DIR/checkpoint.bin`; returns where it leaves the run.
 pub fn restore(

@@ -377,18 +377,10 @@ impl Recorder<BearingModel> for Output<'_> {
         if let Some(writer) = channels.slow.as_mut().and_then(|s| s.writer.as_mut()) {
             writer.sync().map_err(|e| bad(e.to_string()))?;
         }
-        if let Some(position) = position {
-            let bytes =
-                checkpoint::encode(self.record_hash, position, solver, model, &channels.stats);
-            RunDir::new(self.dir)
-                .write(RunDir::CHECKPOINT, &bytes)
-                .map_err(|e| bad(e.to_string()))?;
-        }
-        let json =
-            crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
-        RunDir::new(self.dir)
-            .write_summary(&json)
-            .map_err(|e| bad(e.to_string()))?;
+        let bytes = position.map(|position| {
+            checkpoint::encode(self.record_hash, position, solver, model, &channels.stats)
+        });
+        checkpoint::persist(self.dir, bytes, &summary)?;
         Ok(summary)
     }
 }

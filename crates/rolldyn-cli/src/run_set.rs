@@ -409,27 +409,19 @@ impl Context<'_> {
         position: Option<Position>,
         wall: f64,
     ) -> Result<SetSummary, Failure> {
-        let bad = |e: String| Failure::BadInput(e);
-        if let Some(position) = position {
+        let bytes = position.map(|position| {
             let stats: Vec<&RunStatistics> = channels.iter().map(|c| &c.stats).collect();
-            let bytes = checkpoint::encode_parts(
+            checkpoint::encode_parts(
                 self.record_hash,
                 position,
                 solver,
                 system,
                 &stats,
                 axial_sums,
-            );
-            RunDir::new(self.dir)
-                .write(RunDir::CHECKPOINT, &bytes)
-                .map_err(|e| bad(e.to_string()))?;
-        }
+            )
+        });
         let summary = self.summarise(system, solver, channels, axial_sums, end, wall);
-        let json =
-            crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
-        RunDir::new(self.dir)
-            .write_summary(&json)
-            .map_err(|e| bad(e.to_string()))?;
+        checkpoint::persist(self.dir, bytes, &summary)?;
         Ok(summary)
     }
 

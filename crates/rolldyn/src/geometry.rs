@@ -450,17 +450,7 @@ pub(crate) fn test_bearing(ball_count: usize) -> BearingGeometry {
 mod tests {
     use super::*;
 
-    fn spec_7008c() -> GeometrySpec {
-        GeometrySpec {
-            ball_diameter: 6.35e-3,
-            ball_count: 22,
-            pitch_diameter: 54e-3,
-            inner_groove_curvature: 3.493 / 6.35,
-            outer_groove_curvature: 3.302 / 6.35,
-            clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
-            preload: false,
-        }
-    }
+    use crate::testing::spec_7008c;
 
     #[test]
     fn seed001_groove_bottom_diameters() {

@@ -19,8 +19,8 @@ use crate::{BearingGeometry, Clearance, GeometrySpec};
 
 /// 7008C, Deng et al. 2022 Table 1: d_m 54, D 6.35 mm, Z 22, α₀ 17.7°,
 /// r_i 3.493, r_o 3.302 mm.
-pub fn bearing_7008c() -> BearingGeometry {
-    BearingGeometry::new(&GeometrySpec {
+pub fn spec_7008c() -> GeometrySpec {
+    GeometrySpec {
         ball_diameter: 6.35e-3,
         ball_count: 22,
         pitch_diameter: 54e-3,
@@ -28,8 +28,12 @@ pub fn bearing_7008c() -> BearingGeometry {
         outer_groove_curvature: 3.302 / 6.35,
         clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
         preload: false,
-    })
-    .expect("Deng et al. 2022 geometry is valid")
+    }
+}
+
+/// The geometry of [`spec_7008c`].
+pub fn bearing_7008c() -> BearingGeometry {
+    BearingGeometry::new(&spec_7008c()).expect("Deng et al. 2022 geometry is valid")
 }
 
 /// 6304, Shan et al. 2023 Table 1: R_i 13.24, R_o 22.77, r_b 4.76 mm, 7 balls.

@@ -173,17 +173,8 @@ impl Builder<RosenbrockTableau> {
 mod tests {
     use super::*;
     use crate::integrate::tableau::DOPRI5;
+    use crate::integrate::test_systems::Decay;
     use crate::integrate::{Integrator, ROS34PW2};
-
-    struct Decay;
-    impl OdeSystem for Decay {
-        fn dimension(&self) -> usize {
-            1
-        }
-        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = -y[0];
-        }
-    }
 
     #[test]
     fn builders_set_what_they_name() {

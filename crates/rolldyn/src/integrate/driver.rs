@@ -142,17 +142,8 @@ pub fn run_from<S: OdeSystem, I: Integrator>(
 mod tests {
     use super::*;
     use crate::integrate::tableau::DOPRI5;
+    use crate::integrate::test_systems::Decay;
     use crate::integrate::{ExplicitRk, StepControl};
-
-    struct Decay;
-    impl OdeSystem for Decay {
-        fn dimension(&self) -> usize {
-            1
-        }
-        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = -y[0];
-        }
-    }
 
     #[test]
     fn samples_on_the_grid_independent_of_steps() {

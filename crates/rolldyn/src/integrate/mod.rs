@@ -39,6 +39,8 @@ pub mod rosenbrock;
 pub mod step_control;
 pub mod switching;
 pub mod tableau;
+#[cfg(test)]
+pub(crate) mod test_systems;
 
 pub use builder::Builder;
 pub use checkpoint::{Checkpoint, CheckpointError, StateReader, StateWriter};

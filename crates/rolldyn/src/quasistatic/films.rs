@@ -225,7 +225,6 @@ mod tests {
     use crate::material::{Material, effective_modulus};
     use crate::operating::Loads;
     use crate::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
-    use crate::{Clearance, GeometrySpec};
 
     /// Under pure axial load at speed, outer control: the outer contact rolls
     /// without spin, so its entrainment speed is the classical pure-rolling
@@ -233,16 +232,7 @@ mod tests {
     /// surface speed at the contact; and the films follow Hamrock–Dowson.
     #[test]
     fn entrainment_and_films_at_a_jones_harris_state() {
-        let g = BearingGeometry::new(&GeometrySpec {
-            ball_diameter: 6.35e-3,
-            ball_count: 22,
-            pitch_diameter: 54e-3,
-            inner_groove_curvature: 3.493 / 6.35,
-            outer_groove_curvature: 3.302 / 6.35,
-            clearance: Clearance::FreeContactAngle(17.7f64.to_radians()),
-            preload: false,
-        })
-        .unwrap();
+        let g = crate::testing::bearing_7008c();
         let steel = Material::STEEL_52100;
         let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
         let speed = 10_000.0 * std::f64::consts::TAU / 60.0;

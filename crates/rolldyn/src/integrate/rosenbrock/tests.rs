@@ -53,17 +53,8 @@ fn order_conditions_up_to_three() {
 /// pockets; docs/dynamics.md).
 #[test]
 fn oscillation_damped_per_period_as_the_stability_function_says() {
+    use crate::integrate::test_systems::UnitOscillator as Oscillator;
     use nalgebra::Complex;
-    struct Oscillator;
-    impl OdeSystem for Oscillator {
-        fn dimension(&self) -> usize {
-            2
-        }
-        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = y[1];
-            dy[1] = -y[0];
-        }
-    }
     let t = &ROS34PW2;
     let stability = |z: Complex<f64>| {
         // (I − z(α + Γ)) k = 1 is lower triangular: forward substitution.
