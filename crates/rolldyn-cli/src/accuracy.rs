@@ -66,6 +66,10 @@ pub struct Change {
     /// |first half − second half| / |value| (null when the window has
     /// fewer than two blocks of samples or a half has no value).
     pub window_spread: Option<f64>,
+    /// |value − grid value| / |grid value|, the grid value from a third run
+    /// with only the traction grid refined (null when that run was not
+    /// needed: see [`Cause::Grid`]).
+    pub grid_change: Option<f64>,
 }
 
 impl Change {
@@ -80,6 +84,13 @@ impl Change {
     pub fn within_window_spread(&self) -> bool {
         self.window_spread
             .is_some_and(|spread| self.relative_change <= spread)
+    }
+
+    /// The finer grid alone moved it by at least half of what the finer
+    /// grid and the tighter tolerances moved it together.
+    pub fn moved_by_grid(&self) -> bool {
+        self.grid_change
+            .is_some_and(|change| change >= 0.5 * self.relative_change)
     }
 }
 
@@ -124,19 +135,48 @@ pub enum Cause {
     Window,
     /// Some moved more: tighten the tolerances.
     Tolerance,
+    /// Every one that moved more than its window spread moved as much
+    /// with the traction grid refined alone (the run's tolerances kept):
+    /// refine the grid, not the tolerances.
+    Grid,
 }
 
 impl Verification {
     /// The `cause` of a comparison's `changes` (null when none is beyond
     /// its limit).
     pub fn cause_of(changes: &[Change]) -> Option<Cause> {
-        let mut beyond = changes.iter().filter(|c| c.beyond()).peekable();
-        beyond.peek()?;
-        Some(if beyond.all(Change::within_window_spread) {
-            Cause::Window
+        let beyond: Vec<&Change> = changes.iter().filter(|c| c.beyond()).collect();
+        let unsettled: Vec<&&Change> = beyond
+            .iter()
+            .filter(|c| !c.within_window_spread())
+            .collect();
+        if beyond.is_empty() {
+            None
+        } else if unsettled.is_empty() {
+            Some(Cause::Window)
+        } else if unsettled.iter().all(|c| c.moved_by_grid()) {
+            Some(Cause::Grid)
         } else {
-            Cause::Tolerance
-        })
+            Some(Cause::Tolerance)
+        }
+    }
+
+    /// Whether a run with the grid refined alone would tell the grid's
+    /// share: the cause is `tolerance` and the run has a grid.
+    pub fn wants_grid_run(&self) -> bool {
+        self.cause == Some(Cause::Tolerance) && self.traction_grid.is_some()
+    }
+
+    /// Records the changes of a run with only the traction grid refined,
+    /// `grid_value(key)` its value of each compared key, and the cause that
+    /// follows.
+    pub fn attribute_to_grid(&mut self, grid_value: impl Fn(&str) -> Option<f64>) {
+        for change in &mut self.changes {
+            change.grid_change = grid_value(&change.key)
+                .filter(|g| g.is_finite() && *g != 0.0)
+                .map(|g| (change.value - g).abs() / g.abs());
+        }
+        self.cause = Self::cause_of(&self.changes);
     }
 
     /// The line `rolldyn run --verify` prints: the tighter settings and
@@ -337,6 +377,15 @@ impl Tightening {
         case.assumptions.retain(|(key, _)| !changed.contains(key));
     }
 
+    /// The run's record and case with the changes made.
+    fn changed(&self, record: &RunRecord, case: &Case) -> (RunRecord, Case) {
+        let mut changed = record.clone();
+        changed.overrides.set.extend(self.overrides());
+        let mut changed_case = case.clone();
+        self.apply(&mut changed_case);
+        (changed, changed_case)
+    }
+
     /// The refined grid's description (None: no grid to refine), e.g.
     /// "graded 24 × 12 cells (run: 12 × 6)".
     pub fn grid_description(&self) -> Option<String> {
@@ -373,11 +422,21 @@ pub fn verifying_case(
     tolerances: RunTolerances,
 ) -> (RunRecord, Case, Option<String>) {
     let tightening = Tightening::of(case, tolerances);
-    let mut tight = record.clone();
-    tight.overrides.set.extend(tightening.overrides());
-    let mut tight_case = case.clone();
-    tightening.apply(&mut tight_case);
+    let (tight, tight_case) = tightening.changed(record, case);
     (tight, tight_case, tightening.grid_description())
+}
+
+/// The run of `--verify` that tells the grid's share (when the verifying
+/// run warns with cause `tolerance`): the run's `case` and record with
+/// only the traction grid refined, the tolerances kept.
+pub fn grid_case(record: &RunRecord, case: &Case) -> (RunRecord, Case) {
+    let tightening = Tightening {
+        relative_tolerance: None,
+        energy_tolerance: None,
+        time_step: None,
+        grid: refined_grid(case),
+    };
+    tightening.changed(record, case)
 }
 
 /// A case's traction grid refined two-fold each way (None: no grid, or
@@ -425,10 +484,14 @@ pub fn warning(accuracy: &Accuracy) -> Option<String> {
                 None => format!("{} by {:.2} %", c.key, 100.0 * c.relative_change),
             })
             .collect();
-        let verdict = if v.cause == Some(Cause::Window) {
-            "each by no more than it moves between the halves of the run's averaging window: statistics the window is too short to settle, not an integration error; run longer (--duration) before reading them to better than that"
-        } else {
-            "the results are not converged at these settings"
+        let verdict = match v.cause {
+            Some(Cause::Window) => {
+                "each by no more than it moves between the halves of the run's averaging window: statistics the window is too short to settle, not an integration error; run longer (--duration) before reading them to better than that"
+            }
+            Some(Cause::Grid) => {
+                "the finer traction grid alone moves them as much (`grid_change` in summary.json): the results are not converged in the traction grid, whatever the tolerances; refine the grid (model.traction's strips and elements for FASTSIM, else model.traction_integration's across and along) before reading them to better than that"
+            }
+            _ => "the results are not converged at these settings",
         };
         lines.push(format!(
             "warning: --verify: at ten times tighter tolerances{} {} moved beyond their limits ({} % for means and loads, {} % for vibration); {verdict}",
@@ -533,6 +596,7 @@ mod tests {
             relative_change,
             limit,
             window_spread,
+            grid_change: None,
         }
     }
 
@@ -556,6 +620,63 @@ mod tests {
         assert_eq!(
             Verification::cause_of(&[within, unsplit]),
             Some(Cause::Tolerance)
+        );
+    }
+
+    /// The grid is the cause when the finer grid alone moved every
+    /// unsettled quantity by half or more of the whole change; a quantity
+    /// within its window's spread does not count either way.
+    #[test]
+    fn the_grid_is_the_cause_when_it_alone_moves_what_moved() {
+        let with_grid = |relative: f64, spread: Option<f64>, grid: Option<f64>| Change {
+            grid_change: grid,
+            ..change(relative, 0.05, spread)
+        };
+        let by_grid = with_grid(0.7, Some(0.39), Some(0.66));
+        let by_tolerance = with_grid(0.7, Some(0.39), Some(0.2));
+        let settled = with_grid(0.06, Some(1.3), Some(0.0));
+        assert!(by_grid.moved_by_grid() && !by_tolerance.moved_by_grid());
+        assert_eq!(
+            Verification::cause_of(&[by_grid.clone(), settled.clone()]),
+            Some(Cause::Grid)
+        );
+        assert_eq!(
+            Verification::cause_of(&[by_grid.clone(), by_tolerance]),
+            Some(Cause::Tolerance)
+        );
+        let unknown = with_grid(0.7, Some(0.39), None);
+        assert_eq!(Verification::cause_of(&[unknown]), Some(Cause::Tolerance));
+        // The third run's values turn a `tolerance` cause into `grid`.
+        let mut v = Verification {
+            relative_tolerance: Some(1e-4),
+            energy_tolerance: None,
+            traction_grid: Some("FASTSIM 32 × 20 (run: 16 × 10)".into()),
+            directory: String::new(),
+            wall_time_s: 0.0,
+            energy_balance_relative_error: 0.0,
+            changes: vec![Change {
+                value: 1.7,
+                reference: 1.0,
+                ..with_grid(0.7, Some(0.39), None)
+            }],
+            worst_ratio_to_limit: 14.0,
+            status: "warning",
+            cause: Some(Cause::Tolerance),
+        };
+        assert!(v.wants_grid_run());
+        v.attribute_to_grid(|_| Some(1.05));
+        let grid_change = v.changes[0].grid_change.unwrap();
+        assert!((grid_change - 0.65 / 1.05).abs() < 1e-12, "{grid_change}");
+        assert_eq!(v.cause, Some(Cause::Grid));
+        assert!(!v.wants_grid_run());
+        let text = warning(&Accuracy {
+            verify: Some(v),
+            ..assess(0.0, 0.0, 1.0, "auto", Some(1e-3), Some(1e-4))
+        })
+        .unwrap();
+        assert!(
+            text.contains("not converged in the traction grid"),
+            "{text}"
         );
     }
 }

@@ -8,13 +8,13 @@
 //! shows on a terminal. Keys are documented in docs/cli.md.
 
 use crate::Failure;
-use crate::accuracy::{RunTolerances, verifying_case};
+use crate::accuracy::{RunTolerances, grid_case, verifying_case};
 use crate::checkpoint::{self, Position, RunRecord, continue_to};
 use crate::pipeline::{Recorder, Start, drive, fresh_dir};
 use crate::recorder::Channels;
-use crate::run_summary::verify;
 pub use crate::run_summary::{CreepMeans, Summary};
 use crate::run_summary::{SummaryInputs, summarise};
+use crate::run_summary::{compared_value, verify};
 use rolldyn::dynamics::{BearingModel, ContactSample};
 use rolldyn::integrate::{Integrator, RunEnd, Solver};
 use rolldyn_case::Case;
@@ -397,7 +397,7 @@ fn verify_run(
     options: &RunOptions,
     summary: &mut Summary,
 ) -> Result<(), Failure> {
-    let (tight, case, traction_grid) = verifying_case(
+    let (tight, tight_case, traction_grid) = verifying_case(
         record,
         case,
         RunTolerances {
@@ -414,7 +414,7 @@ fn verify_run(
         verify: false,
         ..options.clone()
     };
-    let reference = run_once(&tight, &case, &verify_dir, &quiet)?.summary;
+    let reference = run_once(&tight, &tight_case, &verify_dir, &quiet)?.summary;
     if reference.status == "interrupted" {
         return Err(Failure::Interrupted(format!(
             "--verify interrupted; {} holds the completed run, {} what the verifying run computed",
@@ -430,13 +430,22 @@ fn verify_run(
             reference.error.unwrap_or_default()
         )));
     }
-    summary.accuracy.verify = Some(verify(
+    let mut verification = verify(
         summary,
         &reference,
         verify_dir.display().to_string(),
         reference.energy_tolerance,
         traction_grid,
-    ));
+    );
+    // Whether the grid or the tolerances moved it: the grid refined alone.
+    if verification.wants_grid_run() {
+        let (record, case) = grid_case(record, case);
+        let grid = run_once(&record, &case, &dir.join("verify-grid"), &quiet)?.summary;
+        if grid.status == "completed" {
+            verification.attribute_to_grid(|key| compared_value(&grid, key));
+        }
+    }
+    summary.accuracy.verify = Some(verification);
     let json = crate::finite::to_json(&*summary).map_err(|e| Failure::Internal(e.to_string()))?;
     RunDir::new(dir)
         .write_summary(&json)

@@ -594,6 +594,7 @@ pub fn run_and_verify(
                 limit: VERIFY_LIMIT_MEANS,
                 // A set's statistics are not split into halves.
                 window_spread: None,
+                grid_change: None,
             });
         }
     }

@@ -487,6 +487,15 @@ fn compared(summary: &Summary) -> Vec<(&'static str, f64, f64, f64)> {
     out
 }
 
+/// A run's value of a quantity `--verify` compares (None: not compared
+/// in this run).
+pub fn compared_value(summary: &Summary, key: &str) -> Option<f64> {
+    compared(summary)
+        .into_iter()
+        .find(|(k, ..)| *k == key)
+        .map(|(_, value, ..)| value)
+}
+
 /// Compares a run with its verifying run. Quantities below their noise
 /// magnitude in both runs are left out: a planar run's axial vibration, an
 /// unloaded ring, the integration noise of a bearing without vibration.
@@ -521,6 +530,7 @@ pub fn verify(
             relative_change,
             limit,
             window_spread,
+            grid_change: None,
         });
     }
     let cause = Verification::cause_of(&changes);

@@ -163,8 +163,17 @@ fn accuracy_warnings(data: &RunData) -> Vec<String> {
                 )
             })
             .collect();
+        let verdict = match text(verify, "cause").as_deref() {
+            Some("window") => {
+                "each by no more than between the halves of the averaging window: statistics the window is too short to settle (run longer)"
+            }
+            Some("grid") => {
+                "the finer traction grid alone moves them as much: the results are not converged in the traction grid (refine it)"
+            }
+            _ => "the results are not converged at these settings",
+        };
         out.push(format!(
-            "At ten times tighter tolerances (--verify) {} moved beyond their limits: the results are not converged at these settings.",
+            "At ten times tighter tolerances and a finer traction grid (--verify) {} moved beyond their limits: {verdict}.",
             moved.join(", ")
         ));
     }

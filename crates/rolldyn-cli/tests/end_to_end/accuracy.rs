@@ -604,3 +604,56 @@ fn bearing_damping_closes_its_balance() {
             > 0.0
     );
 }
+
+/// A run on a traction grid too coarse for its vibration: `--verify`
+/// runs the grid refined alone, finds that it moves what moved, and
+/// names the grid (not the tolerances) as the cause, in summary.json,
+/// on stderr and in the report's banner.
+#[test]
+fn verify_names_the_grid_when_the_grid_alone_moves_the_results() {
+    let (s, text) = run(
+        "coarse-grid",
+        &[
+            "--duration",
+            "10 ms",
+            "--set",
+            "model.traction_integration={ method = \"graded\", across = 2, along = 2 }",
+            "--verify",
+            "--report",
+        ],
+        None,
+    );
+    let verify = &s["accuracy"]["verify"];
+    assert_eq!(verify["cause"], "grid", "{verify}");
+    let changes = verify["changes"].as_array().unwrap();
+    let beyond: Vec<&Value> = changes
+        .iter()
+        .filter(|c| c["relative_change"].as_f64() > c["limit"].as_f64())
+        .collect();
+    assert!(!beyond.is_empty(), "{verify}");
+    for c in beyond {
+        let (whole, grid) = (c["relative_change"].as_f64(), c["grid_change"].as_f64());
+        assert!(grid >= whole.map(|w| 0.5 * w), "{c}");
+    }
+    assert!(
+        text.contains("not converged in the traction grid"),
+        "{text}"
+    );
+    // A run without a grid makes no third run.
+    let (s, _) = run(
+        "no-grid",
+        &[
+            "--duration",
+            "2 ms",
+            "--set",
+            "model.traction_integration={ method = \"centre\" }",
+            "--verify",
+        ],
+        None,
+    );
+    let verify = &s["accuracy"]["verify"];
+    assert!(verify["traction_grid"].is_null(), "{verify}");
+    assert_ne!(verify["cause"], "grid", "{verify}");
+    let changes = verify["changes"].as_array().unwrap();
+    assert!(changes.iter().all(|c| c["grid_change"].is_null()));
+}
