@@ -541,8 +541,13 @@ fn print_set_run(
     if let Some(v) = &summary.verify {
         emit(&v.line())?;
         if v.status != "ok" {
+            let verdict = if v.cause == Some(rolldyn_cli::accuracy::Cause::Grid) {
+                "the finer traction grid alone moves them as much (`grid_change` in summary.json): refine the grid"
+            } else {
+                "they are not converged at these settings"
+            };
             eprintln!(
-                "warning: --verify: the set's results moved beyond 1 % at ten times tighter tolerances; they are not converged at these settings"
+                "warning: --verify: the set's results moved beyond 1 % at ten times tighter tolerances and a finer traction grid; {verdict}"
             );
         }
     }

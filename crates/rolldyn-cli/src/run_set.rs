@@ -520,11 +520,30 @@ impl Context<'_> {
     }
 }
 
+/// The quantities a set's `--verify` compares: each bearing's mean axial
+/// load, cage speed and mean inner load, keyed `bearings.{i}.{key}`.
+fn compared_values(summary: &SetSummary) -> Vec<(String, f64)> {
+    summary
+        .bearings
+        .iter()
+        .enumerate()
+        .flat_map(|(i, b)| {
+            [
+                ("mean_axial_load_n", b.mean_axial_load_n),
+                ("mean_cage_speed_rpm", b.mean_cage_speed_rpm),
+                ("mean_inner_load_n", b.mean_inner_load_n),
+            ]
+            .map(|(key, value)| (format!("bearings.{i}.{key}"), value))
+        })
+        .collect()
+}
+
 /// [`run`], then with `options.verify` the case again into `DIR/verify/`
 /// at ten times tighter tolerances and a two-fold finer traction grid
 /// (as a single bearing's `--verify`), each bearing's mean axial load,
 /// cage speed and mean inner load compared (limit 1 %) in the summary's
-/// `verify`.
+/// `verify`; when they moved and the run has a grid, a third run with
+/// the grid refined alone (`DIR/verify-grid/`) tells the grid's share.
 pub fn run_and_verify(
     record: &RunRecord,
     case: &Case,
@@ -561,45 +580,29 @@ pub fn run_and_verify(
             reference.error.unwrap_or_default()
         )));
     }
+    let values = compared_values(&summary);
     let mut changes = Vec::new();
     let mut worst: f64 = 0.0;
-    for (i, (a, b)) in summary.bearings.iter().zip(&reference.bearings).enumerate() {
-        for (key, value, reference_value) in [
-            (
-                "mean_axial_load_n",
-                a.mean_axial_load_n,
-                b.mean_axial_load_n,
-            ),
-            (
-                "mean_cage_speed_rpm",
-                a.mean_cage_speed_rpm,
-                b.mean_cage_speed_rpm,
-            ),
-            (
-                "mean_inner_load_n",
-                a.mean_inner_load_n,
-                b.mean_inner_load_n,
-            ),
-        ] {
-            if reference_value == 0.0 || !value.is_finite() || !reference_value.is_finite() {
-                continue;
-            }
-            let relative_change = (value - reference_value).abs() / reference_value.abs();
-            worst = worst.max(relative_change / VERIFY_LIMIT_MEANS);
-            changes.push(Change {
-                key: format!("bearings.{i}.{key}").into(),
-                value,
-                reference: reference_value,
-                relative_change,
-                limit: VERIFY_LIMIT_MEANS,
-                // A set's statistics are not split into halves.
-                window_spread: None,
-                grid_change: None,
-            });
+    for ((key, value), (_, reference_value)) in values.into_iter().zip(compared_values(&reference))
+    {
+        if reference_value == 0.0 || !value.is_finite() || !reference_value.is_finite() {
+            continue;
         }
+        let relative_change = (value - reference_value).abs() / reference_value.abs();
+        worst = worst.max(relative_change / VERIFY_LIMIT_MEANS);
+        changes.push(Change {
+            key: key.into(),
+            value,
+            reference: reference_value,
+            relative_change,
+            limit: VERIFY_LIMIT_MEANS,
+            // A set's statistics are not split into halves.
+            window_spread: None,
+            grid_change: None,
+        });
     }
     let cause = Verification::cause_of(&changes);
-    summary.verify = Some(Verification {
+    let mut verification = Verification {
         relative_tolerance: reference.relative_tolerance,
         energy_tolerance: reference.energy_tolerance,
         traction_grid,
@@ -610,10 +613,18 @@ pub fn run_and_verify(
         worst_ratio_to_limit: worst,
         status: if worst <= 1.0 { "ok" } else { "warning" },
         cause,
-    });
-    let json = crate::finite::to_json(&summary).map_err(|e| Failure::Internal(e.to_string()))?;
-    RunDir::new(dir)
-        .write_summary(&json)
-        .map_err(|e| Failure::BadInput(e.to_string()))?;
+    };
+    // Whether the grid or the tolerances moved it: the grid refined alone.
+    if verification.wants_grid_run() {
+        let (record, case) = crate::accuracy::grid_case(record, case);
+        let grid = run(&record, &case, &dir.join("verify-grid"), &quiet)?;
+        if grid.status == "completed" {
+            let values = compared_values(&grid);
+            verification
+                .attribute_to_grid(|key| values.iter().find(|(k, _)| k == key).map(|(_, v)| *v));
+        }
+    }
+    summary.verify = Some(verification);
+    crate::checkpoint::persist(dir, None, &summary)?;
     Ok(summary)
 }

@@ -656,4 +656,23 @@ fn verify_names_the_grid_when_the_grid_alone_moves_the_results() {
     assert_ne!(verify["cause"], "grid", "{verify}");
     let changes = verify["changes"].as_array().unwrap();
     assert!(changes.iter().all(|c| c["grid_change"].is_null()));
+    // A set: its bearings' loads on a one-strip grid move with the grid.
+    let pair = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/spindle_pair/case.toml"
+    );
+    let (s, text) = run(
+        "coarse-grid-pair",
+        &[
+            pair,
+            "--duration",
+            "5 ms",
+            "--set",
+            "model.traction_integration={ method = \"grid\", across = 1, along = 2 }",
+            "--verify",
+        ],
+        None,
+    );
+    assert_eq!(s["verify"]["cause"], "grid", "{}", s["verify"]);
+    assert!(text.contains("refine the grid"), "{text}");
 }
