@@ -635,17 +635,15 @@ mod tests {
         let by_grid = with_grid(0.7, Some(0.39), Some(0.66));
         let by_tolerance = with_grid(0.7, Some(0.39), Some(0.2));
         let settled = with_grid(0.06, Some(1.3), Some(0.0));
-        assert!(by_grid.moved_by_grid() && !by_tolerance.moved_by_grid());
-        assert_eq!(
-            Verification::cause_of(&[by_grid.clone(), settled.clone()]),
-            Some(Cause::Grid)
-        );
-        assert_eq!(
-            Verification::cause_of(&[by_grid.clone(), by_tolerance]),
-            Some(Cause::Tolerance)
-        );
         let unknown = with_grid(0.7, Some(0.39), None);
-        assert_eq!(Verification::cause_of(&[unknown]), Some(Cause::Tolerance));
+        assert!(by_grid.moved_by_grid() && !by_tolerance.moved_by_grid());
+        for (changes, cause) in [
+            (vec![by_grid.clone(), settled], Cause::Grid),
+            (vec![by_grid, by_tolerance], Cause::Tolerance),
+            (vec![unknown], Cause::Tolerance),
+        ] {
+            assert_eq!(Verification::cause_of(&changes), Some(cause), "{changes:?}");
+        }
         // The third run's values turn a `tolerance` cause into `grid`.
         let mut v = Verification {
             relative_tolerance: Some(1e-4),
