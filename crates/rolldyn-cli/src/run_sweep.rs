@@ -179,20 +179,18 @@ pub fn grid(base: &CaseOverrides, sweeps: &[RunSweep]) -> Result<Vec<GridPoint>,
             match sweep {
                 RunSweep::Operating(swept, values) => {
                     for &v in values {
-                        let (slot, key, unit) = match swept {
-                            Swept::Speed => (0, "operating.speed", "rad/s"),
-                            Swept::Axial => (1, "operating.force_x", "N"),
-                            Swept::Radial => (2, "operating.force_z", "N"),
+                        let mut q = p.clone();
+                        // SI: the point runs at exactly the swept value.
+                        let (slot, key, unit, recorded) = match swept {
+                            Swept::Speed => (0, "operating.speed", "rad/s", &mut q.record.speed),
+                            Swept::Axial => (1, "operating.force_x", "N", &mut q.record.axial_load),
+                            Swept::Radial => {
+                                (2, "operating.force_z", "N", &mut q.record.radial_load)
+                            }
                         };
                         let text = format!("{v:?} {unit}");
-                        let mut q = p.clone();
-                        let value = Override::typed(key, text.clone(), OverrideSource::Sweep);
-                        q.operating[slot] = Some(value);
-                        *[
-                            &mut q.record.speed,
-                            &mut q.record.axial_load,
-                            &mut q.record.radial_load,
-                        ][slot] = Some(text);
+                        *recorded = Some(text.clone());
+                        q.operating[slot] = Some(Override::typed(key, text, OverrideSource::Sweep));
                         next.push(q);
                     }
                 }
