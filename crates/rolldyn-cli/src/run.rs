@@ -446,8 +446,5 @@ fn verify_run(
         }
     }
     summary.accuracy.verify = Some(verification);
-    let json = crate::finite::to_json(&*summary).map_err(|e| Failure::Internal(e.to_string()))?;
-    RunDir::new(dir)
-        .write_summary(&json)
-        .map_err(|e| Failure::BadInput(e.to_string()))
+    checkpoint::persist(dir, None, &*summary)
 }
