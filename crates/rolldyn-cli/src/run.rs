@@ -406,7 +406,7 @@ fn verify_run(
             fixed_step: Some(summary.max_step_s),
         },
     );
-    let verify_dir = dir.join("verify");
+    let verify_dir = dir.join(RunDir::VERIFY);
     let quiet = RunOptions {
         resume: false,
         quiet: true,
@@ -440,7 +440,7 @@ fn verify_run(
     // Whether the grid or the tolerances moved it: the grid refined alone.
     if verification.wants_grid_run() {
         let (record, case) = grid_case(record, case);
-        let grid = run_once(&record, &case, &dir.join("verify-grid"), &quiet)?.summary;
+        let grid = run_once(&record, &case, &dir.join(RunDir::VERIFY_GRID), &quiet)?.summary;
         if grid.status == "completed" {
             verification.attribute_to_grid(|key| compared_value(&grid, key));
         }

@@ -564,7 +564,7 @@ pub fn run_and_verify(
             fixed_step: None,
         },
     );
-    let verify_dir = dir.join("verify");
+    let verify_dir = dir.join(RunDir::VERIFY);
     let quiet = RunOptions {
         quiet: true,
         progress: None,
@@ -617,7 +617,7 @@ pub fn run_and_verify(
     // Whether the grid or the tolerances moved it: the grid refined alone.
     if verification.wants_grid_run() {
         let (record, case) = crate::accuracy::grid_case(record, case);
-        let grid = run(&record, &case, &dir.join("verify-grid"), &quiet)?;
+        let grid = run(&record, &case, &dir.join(RunDir::VERIFY_GRID), &quiet)?;
         if grid.status == "completed" {
             let values = compared_values(&grid);
             verification

@@ -41,6 +41,11 @@ impl RunDir {
     pub const SWEEP_JSON: &'static str = "sweep.json";
     /// A sweep's table as CSV.
     pub const SWEEP_CSV: &'static str = "sweep.csv";
+    /// `--verify`'s run at tighter tolerances and a finer grid (a run
+    /// directory of its own inside this one).
+    pub const VERIFY: &'static str = "verify";
+    /// `--verify`'s run with only the traction grid refined.
+    pub const VERIFY_GRID: &'static str = "verify-grid";
 
     /// The run directory at `path`.
     pub fn new(path: impl Into<PathBuf>) -> Self {
