@@ -486,12 +486,13 @@ pub fn warning(accuracy: &Accuracy) -> Option<String> {
             .collect();
         let verdict = match v.cause {
             Some(Cause::Window) => {
-                "each by no more than it moves between the halves of the run's averaging window: statistics the window is too short to settle, not an integration error; run longer (--duration) before reading them to better than that"
+                "each by no more than it moves between the halves of the run's averaging window: statistics the window is too short to settle, not an integration error; run longer (--duration) before reading them to better than that".to_string()
             }
-            Some(Cause::Grid) => {
-                "the finer traction grid alone moves them as much (`grid_change` in summary.json): the results are not converged in the traction grid, whatever the tolerances; refine the grid (model.traction's strips and elements for FASTSIM, else model.traction_integration's across and along) before reading them to better than that"
-            }
-            _ => "the results are not converged at these settings",
+            Some(Cause::Grid) => format!(
+                "the finer traction grid alone moves them as much (`grid_change` in summary.json): the results are not converged in the traction grid, whatever the tolerances; refine the grid (model.traction's strips and elements for FASTSIM, else model.traction_integration's across and along; the verifying run's: {}) before reading them to better than that",
+                v.traction_grid.as_deref().unwrap_or("-")
+            ),
+            _ => "the results are not converged at these settings".to_string(),
         };
         lines.push(format!(
             "warning: --verify: at ten times tighter tolerances{} {} moved beyond their limits ({} % for means and loads, {} % for vibration); {verdict}",
@@ -674,6 +675,10 @@ mod tests {
         .unwrap();
         assert!(
             text.contains("not converged in the traction grid"),
+            "{text}"
+        );
+        assert!(
+            text.contains("the verifying run's: FASTSIM 32 × 20 (run: 16 × 10)"),
             "{text}"
         );
     }
