@@ -146,8 +146,9 @@ impl Verification {
     /// its limit).
     pub fn cause_of(changes: &[Change]) -> Option<Cause> {
         let beyond: Vec<&Change> = changes.iter().filter(|c| c.beyond()).collect();
-        let unsettled: Vec<&&Change> = beyond
+        let unsettled: Vec<&Change> = beyond
             .iter()
+            .copied()
             .filter(|c| !c.within_window_spread())
             .collect();
         if beyond.is_empty() {

@@ -207,9 +207,9 @@ pub fn grid(base: &CaseOverrides, sweeps: &[RunSweep]) -> Result<Vec<GridPoint>,
     Ok(points.into_iter().map(|p| p.finish(&rest)).collect())
 }
 
-/// The `--set` keys of the base that an operating-point sweep would not
-/// override (they apply after its flags): refused rather than silently
-/// winning over every point.
+/// The base's overrides (other than its operating flags) of what an
+/// operating-point sweep sets: they apply after the swept flag, so they
+/// are refused rather than silently winning over every point.
 fn conflicts(base: &CaseOverrides, sweeps: &[RunSweep]) -> Result<(), Failure> {
     for sweep in sweeps {
         let RunSweep::Operating(swept, _) = sweep else {
@@ -227,15 +227,14 @@ fn conflicts(base: &CaseOverrides, sweeps: &[RunSweep]) -> Result<(), Failure> {
                 ],
             ),
         };
-        for set in &base.set {
-            let key = set.split_once('=').map_or(set.as_str(), |(k, _)| k).trim();
-            if keys.contains(&key) {
-                return Err(bad_arg(
-                    "--set",
-                    set,
-                    format!("sets what `--sweep {name}=…` sweeps; give one of them"),
-                ));
-            }
+        if let Some(o) = rest_of(base)?
+            .iter()
+            .find(|o| keys.contains(&o.key.as_str()))
+        {
+            return Err(Failure::BadInput(format!(
+                "{}: sets what `--sweep {name}=…` sweeps; give one of them",
+                o.text
+            )));
         }
     }
     Ok(())
