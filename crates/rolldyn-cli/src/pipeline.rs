@@ -78,7 +78,8 @@ impl From<Position> for Start {
 }
 
 /// Prepares `dir` for a fresh run: created, an older run's checkpoint
-/// removed (it is no longer valid), the run's record written.
+/// removed (it is no longer valid), and the runs its `--verify` made, the
+/// run's record written.
 pub fn fresh_dir(dir: &Path, record: &RunRecord) -> Result<(), Failure> {
     let bad = Failure::BadInput;
     std::fs::create_dir_all(dir)
@@ -88,6 +89,14 @@ pub fn fresh_dir(dir: &Path, record: &RunRecord) -> Result<(), Failure> {
         bad(format!(
             "cannot remove {}: {e}",
             run_dir.checkpoint().display()
+        ))
+    })?;
+    run_dir.remove_verify_runs().map_err(|e| {
+        bad(format!(
+            "cannot remove an earlier run's {} or {} in {}: {e}",
+            RunDir::VERIFY,
+            RunDir::VERIFY_GRID,
+            dir.display()
         ))
     })?;
     let text = record.to_json().map_err(Failure::Internal)?;

@@ -135,6 +135,21 @@ impl RunDir {
             _ => Ok(()),
         }
     }
+
+    /// Removes the runs an earlier `--verify` made inside this directory
+    /// ([`Self::VERIFY`], [`Self::VERIFY_GRID`]): a fresh run's summary
+    /// would not name them, and they would be taken for its own. A
+    /// directory of either name that is not a run directory (no
+    /// [`Self::RECORD`] in it) is not rolldyn's and is left alone.
+    pub fn remove_verify_runs(&self) -> std::io::Result<()> {
+        for name in [Self::VERIFY, Self::VERIFY_GRID] {
+            let run = RunDir::new(self.file(name));
+            if run.record().is_file() {
+                std::fs::remove_dir_all(run.path())?;
+            }
+        }
+        Ok(())
+    }
 }
 
 #[cfg(test)]
@@ -159,6 +174,24 @@ mod tests {
             run.read_text(RunDir::SUMMARY),
             Err(InputError::Io { .. })
         ));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn an_earlier_runs_verify_runs_are_removed_and_nothing_else() {
+        let dir = std::env::temp_dir().join(format!("rolldyn-verify-dirs-{}", std::process::id()));
+        let run = RunDir::new(&dir);
+        let verify = RunDir::new(run.file(RunDir::VERIFY));
+        std::fs::create_dir_all(verify.series()).unwrap();
+        verify.write(RunDir::RECORD, b"{}").unwrap();
+        // A folder of the other name that rolldyn did not write.
+        let other = run.file(RunDir::VERIFY_GRID);
+        std::fs::create_dir_all(&other).unwrap();
+        std::fs::write(other.join("notes.txt"), "mine").unwrap();
+        run.remove_verify_runs().unwrap();
+        assert!(!verify.path().exists());
+        assert!(other.join("notes.txt").is_file());
+        run.remove_verify_runs().unwrap();
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

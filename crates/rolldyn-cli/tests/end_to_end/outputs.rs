@@ -129,3 +129,28 @@ fn slow_channels_are_recorded_at_their_rate_and_resume() {
     assert!(html.contains("Friction power") && html.contains("Energy balance"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A run into a directory an earlier `--verify` ran into removes the
+/// verifying runs it left (`verify/`, `verify-grid/`), which its summary
+/// would not name; a folder of such a name that is not a run directory
+/// is the user's and stays.
+#[test]
+fn a_run_removes_an_earlier_runs_verify_runs() {
+    let dir = temp_dir("stale-verify");
+    let verify = dir.join("verify");
+    std::fs::create_dir_all(verify.join("timeseries.parquet")).unwrap();
+    std::fs::write(verify.join("run.json"), "{}").unwrap();
+    let mine = dir.join("verify-grid");
+    std::fs::create_dir_all(&mine).unwrap();
+    std::fs::write(mine.join("notes.txt"), "mine").unwrap();
+    let d = dir.to_str().unwrap();
+    let o = rolldyn(&["run", "--duration", "1 ms", "-o", d], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!verify.exists());
+    assert_eq!(
+        std::fs::read_to_string(mine.join("notes.txt")).unwrap(),
+        "mine"
+    );
+    assert!(summary_of(&dir)["accuracy"]["verify"].is_null());
+    std::fs::remove_dir_all(&dir).ok();
+}
