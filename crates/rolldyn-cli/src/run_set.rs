@@ -87,6 +87,12 @@ pub struct SetSummary {
     pub bearings: Vec<SetBearingSummary>,
     /// The `--verify` comparison (null without `--verify`).
     pub verify: Option<Verification>,
+    /// The compared quantities that have one (each bearing's cage speed
+    /// and mean inner load, keyed as [`compared_values`]) over each half
+    /// of the averaging window, for how much they move within it
+    /// (`--verify`'s window spread); not written.
+    #[serde(skip)]
+    pub window_halves: Vec<(String, [f64; 2])>,
 }
 
 /// Index of the first recorded channel of `names` called `name`.
@@ -516,8 +522,32 @@ impl Context<'_> {
                 })
                 .collect(),
             verify: None,
+            window_halves: window_halves(channels),
         }
     }
+}
+
+/// Each bearing's cage speed and mean inner load over the two halves of
+/// its averaging window (none for a bearing whose window cannot be split;
+/// the axial load is a mean over the whole run and has no halves).
+fn window_halves(channels: &[Channels]) -> Vec<(String, [f64; 2])> {
+    let mut halves = Vec::new();
+    for (i, c) in channels.iter().enumerate() {
+        if let Some([first, second]) = c.stats.window_halves() {
+            halves.push((
+                format!("bearings.{i}.mean_cage_speed_rpm"),
+                [first.mean("cage_speed_rpm"), second.mean("cage_speed_rpm")],
+            ));
+            halves.push((
+                format!("bearings.{i}.mean_inner_load_n"),
+                [
+                    first.loaded_mean("load_inner_n"),
+                    second.loaded_mean("load_inner_n"),
+                ],
+            ));
+        }
+    }
+    halves
 }
 
 /// The quantities a set's `--verify` compares: each bearing's mean axial
@@ -590,14 +620,19 @@ pub fn run_and_verify(
         }
         let relative_change = (value - reference_value).abs() / reference_value.abs();
         worst = worst.max(relative_change / VERIFY_LIMIT_MEANS);
+        let window_spread = summary
+            .window_halves
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map(|(_, [a, b])| (a - b).abs() / value.abs())
+            .filter(|spread| spread.is_finite());
         changes.push(Change {
             key: key.into(),
             value,
             reference: reference_value,
             relative_change,
             limit: VERIFY_LIMIT_MEANS,
-            // A set's statistics are not split into halves.
-            window_spread: None,
+            window_spread,
             grid_change: None,
         });
     }

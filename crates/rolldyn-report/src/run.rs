@@ -139,45 +139,50 @@ fn accuracy_warnings(data: &RunData) -> Vec<String> {
             sentence(&text(accuracy, "hint").unwrap_or_default())
         ));
     }
-    if let Some(verify) = accuracy
-        .get("verify")
-        .filter(|v| text(v, "status").as_deref() == Some("warning"))
-    {
-        let moved: Vec<String> = verify
-            .get("changes")
-            .and_then(Value::as_array)
-            .into_iter()
-            .flatten()
-            .filter(|c| {
-                let f = |k: &str| c.get(k).and_then(Value::as_f64).unwrap_or(0.0);
-                f("relative_change") > f("limit")
-            })
-            .map(|c| {
-                format!(
-                    "{} by {:.2} %",
-                    text(c, "key").unwrap_or_default(),
-                    100.0
-                        * c.get("relative_change")
-                            .and_then(Value::as_f64)
-                            .unwrap_or(0.0)
-                )
-            })
-            .collect();
-        let verdict = match text(verify, "cause").as_deref() {
-            Some("window") => {
-                "each by no more than between the halves of the averaging window: statistics the window is too short to settle (run longer)"
-            }
-            Some("grid") => {
-                "the finer traction grid alone moves them as much: the results are not converged in the traction grid (refine it)"
-            }
-            _ => "the results are not converged at these settings",
-        };
-        out.push(format!(
-            "At ten times tighter tolerances and a finer traction grid (--verify) {} moved beyond their limits: {verdict}.",
-            moved.join(", ")
-        ));
-    }
+    out.extend(accuracy.get("verify").and_then(verify_warning));
     out
+}
+
+/// The banner line of a failed `--verify` (its `status` `warning`): what
+/// moved beyond its limit, and why (`cause`); None when it passed.
+pub(crate) fn verify_warning(verify: &Value) -> Option<String> {
+    let text = |v: &Value, key: &str| v.get(key).and_then(Value::as_str).map(str::to_string);
+    if text(verify, "status").as_deref() != Some("warning") {
+        return None;
+    }
+    let moved: Vec<String> = verify
+        .get("changes")
+        .and_then(Value::as_array)
+        .into_iter()
+        .flatten()
+        .filter(|c| {
+            let f = |k: &str| c.get(k).and_then(Value::as_f64).unwrap_or(0.0);
+            f("relative_change") > f("limit")
+        })
+        .map(|c| {
+            format!(
+                "{} by {:.2} %",
+                text(c, "key").unwrap_or_default(),
+                100.0
+                    * c.get("relative_change")
+                        .and_then(Value::as_f64)
+                        .unwrap_or(0.0)
+            )
+        })
+        .collect();
+    let verdict = match text(verify, "cause").as_deref() {
+        Some("window") => {
+            "each by no more than between the halves of the averaging window: statistics the window is too short to settle (run longer)"
+        }
+        Some("grid") => {
+            "the finer traction grid alone moves them as much: the results are not converged in the traction grid (refine it)"
+        }
+        _ => "the results are not converged at these settings",
+    };
+    Some(format!(
+        "At ten times tighter tolerances and a finer traction grid (--verify) {} moved beyond their limits: {verdict}.",
+        moved.join(", ")
+    ))
 }
 
 /// `text` with its first letter in upper case.

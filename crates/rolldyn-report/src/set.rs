@@ -76,6 +76,11 @@ pub fn build(data: &RunData) -> Report {
             "The energy balance closes only to {e:.2e} of the work (a converged run: ≤ 1e-3); tighten solver.relative_tolerance."
         ));
     }
+    warnings.extend(
+        data.summary
+            .get("verify")
+            .and_then(crate::run::verify_warning),
+    );
     let sections = [
         summary(data),
         table_of_bearings(data),

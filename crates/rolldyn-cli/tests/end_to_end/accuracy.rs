@@ -636,7 +636,7 @@ fn verify_names_the_grid_when_the_grid_alone_moves_the_results() {
         assert!(grid >= whole.map(|w| 0.5 * w), "{c}");
     }
     assert!(
-        text.contains("not converged in the traction grid"),
+        text.contains("not converged in the traction grid (refine it)"),
         "{text}"
     );
     // A run without a grid makes no third run.
@@ -670,9 +670,26 @@ fn verify_names_the_grid_when_the_grid_alone_moves_the_results() {
             "--set",
             "model.traction_integration={ method = \"grid\", across = 1, along = 2 }",
             "--verify",
+            "--report",
         ],
         None,
     );
     assert_eq!(s["verify"]["cause"], "grid", "{}", s["verify"]);
     assert!(text.contains("refine the grid"), "{text}");
+    // The set's report states it in its banner, as a single bearing's.
+    assert!(
+        text.contains("not converged in the traction grid (refine it)"),
+        "{text}"
+    );
+    // Its cage speeds and inner loads have their window's spread as a
+    // single bearing's; the axial loads, means over the whole run, none.
+    for c in s["verify"]["changes"].as_array().unwrap() {
+        let key = c["key"].as_str().unwrap();
+        let spread = &c["window_spread"];
+        if key.ends_with("mean_axial_load_n") {
+            assert!(spread.is_null(), "{c}");
+        } else {
+            assert!(spread.as_f64().is_some_and(|s| s >= 0.0), "{c}");
+        }
+    }
 }
