@@ -154,3 +154,44 @@ fn a_run_removes_an_earlier_runs_verify_runs() {
     assert!(summary_of(&dir)["accuracy"]["verify"].is_null());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A sweep into a directory an earlier, larger sweep ran into removes the
+/// points it does not write again (`sweep.json` would not list them, but
+/// `point-*` would find them); folders that are not run directories
+/// named `point-` and digits stay.
+#[test]
+fn a_sweep_removes_an_earlier_sweeps_other_points() {
+    let dir = temp_dir("stale-points");
+    let plant = |name: &str, record: bool| {
+        let point = dir.join(name);
+        std::fs::create_dir_all(&point).unwrap();
+        if record {
+            std::fs::write(point.join("run.json"), "{}").unwrap();
+        }
+        point
+    };
+    let stale = plant("point-0007", true);
+    let wider = plant("point-00001", true);
+    let notes = plant("point-notes", true);
+    let bare = plant("point-0009", false);
+    let d = dir.to_str().unwrap();
+    let o = rolldyn(
+        &[
+            "run",
+            "--duration",
+            "1 ms",
+            "--sweep",
+            "axial=100N,200N",
+            "-o",
+            d,
+        ],
+        None,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stale.exists() && !wider.exists());
+    assert!(notes.exists() && bare.exists());
+    for point in ["point-0000", "point-0001"] {
+        assert!(summary_of(&dir.join(point))["status"] == "completed");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
