@@ -73,6 +73,21 @@ pub struct Change {
 }
 
 impl Change {
+    /// The window spread of `key` whose run value is `value`, from the
+    /// run's compared quantities over its window's halves (None when the
+    /// key has none or the spread is not finite).
+    pub fn window_spread<K: AsRef<str>>(
+        halves: &[(K, [f64; 2])],
+        key: &str,
+        value: f64,
+    ) -> Option<f64> {
+        halves
+            .iter()
+            .find(|(k, _)| k.as_ref() == key)
+            .map(|(_, [a, b])| (a - b).abs() / value.abs())
+            .filter(|spread| spread.is_finite())
+    }
+
     /// Beyond its limit.
     pub fn beyond(&self) -> bool {
         self.relative_change > self.limit

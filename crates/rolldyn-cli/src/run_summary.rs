@@ -517,12 +517,7 @@ pub fn verify(
         }
         let relative_change = (value - reference_value).abs() / reference_value.abs();
         worst = worst.max(relative_change / limit);
-        let window_spread = run
-            .window_halves
-            .iter()
-            .find(|(k, _)| *k == key)
-            .map(|(_, [a, b])| (a - b).abs() / value.abs())
-            .filter(|spread| spread.is_finite());
+        let window_spread = Change::window_spread(&run.window_halves, key, value);
         changes.push(Change {
             key: key.into(),
             value,
