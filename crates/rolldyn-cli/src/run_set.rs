@@ -88,7 +88,7 @@ pub struct SetSummary {
     /// The `--verify` comparison (null without `--verify`).
     pub verify: Option<Verification>,
     /// The compared quantities that have one (each bearing's cage speed
-    /// and mean inner load, keyed as [`compared_values`]) over each half
+    /// and mean inner load, keyed as `compared_values` keys them) over each half
     /// of the averaging window, for how much they move within it
     /// (`--verify`'s window spread); not written.
     #[serde(skip)]
