@@ -470,10 +470,14 @@ pub fn run(
         .collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(dir)
         .map_err(|e| Failure::BadInput(format!("cannot create {}: {e}", dir.display())))?;
-    remove_earlier_points(dir, points.len()).map_err(|e| {
+    // An earlier, larger sweep's points that this one does not write again.
+    let ours = |name: &str| (0..points.len()).any(|k| point_name(k, points.len()) == name);
+    let point = |n: &str| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit());
+    let stale = |name: &str| name.strip_prefix("point-").is_some_and(point) && !ours(name);
+    RunDir::new(dir).remove_runs_named(stale).map_err(|e| {
+        let dir = dir.display();
         Failure::BadInput(format!(
-            "cannot remove an earlier sweep's points in {}: {e}",
-            dir.display()
+            "cannot remove an earlier sweep's points in {dir}: {e}"
         ))
     })?;
     let stop = options.stop_flag();
@@ -535,34 +539,6 @@ pub fn run(
         .unwrap_or_default();
     write_tables_labelled(dir, &rows, &label_keys)?;
     Ok((rows, stop.load(Ordering::Relaxed)))
-}
-
-/// Removes the point directories an earlier sweep into `dir` left that
-/// this sweep of `count` points does not write again (a larger sweep's
-/// last points, or points named with more digits): `sweep.json` would
-/// not list them, but `point-*` would find them. Only run directories
-/// (with a `run.json`) named `point-` and digits are removed.
-fn remove_earlier_points(dir: &Path, count: usize) -> std::io::Result<()> {
-    for entry in std::fs::read_dir(dir)? {
-        let entry = entry?;
-        let name = entry.file_name();
-        let Some(name) = name.to_str() else { continue };
-        let Some(number) = name.strip_prefix("point-") else {
-            continue;
-        };
-        let ours = number
-            .parse::<usize>()
-            .is_ok_and(|k| k < count && point_name(k, count) == name);
-        let run = RunDir::new(entry.path());
-        if !ours
-            && !number.is_empty()
-            && number.bytes().all(|b| b.is_ascii_digit())
-            && run.record().is_file()
-        {
-            std::fs::remove_dir_all(run.path())?;
-        }
-    }
-    Ok(())
 }
 
 /// The directory name of point `k` of `count`: `point-NNNN` (at least four

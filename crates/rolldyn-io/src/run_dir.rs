@@ -142,9 +142,24 @@ impl RunDir {
     /// directory of either name that is not a run directory (no
     /// [`Self::RECORD`] in it) is not rolldyn's and is left alone.
     pub fn remove_verify_runs(&self) -> std::io::Result<()> {
-        for name in [Self::VERIFY, Self::VERIFY_GRID] {
-            let run = RunDir::new(self.file(name));
-            if run.record().is_file() {
+        self.remove_runs_named(|name| name == Self::VERIFY || name == Self::VERIFY_GRID)
+    }
+
+    /// Removes the run directories in this directory whose names `stale`
+    /// accepts (a sweep's points it does not write again, an earlier
+    /// `--verify`'s runs). Only run directories (with a [`Self::RECORD`])
+    /// are removed: a user's folder of such a name stays.
+    pub fn remove_runs_named(&self, stale: impl Fn(&str) -> bool) -> std::io::Result<()> {
+        let entries = match std::fs::read_dir(&self.path) {
+            Ok(entries) => entries,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
+            Err(e) => return Err(e),
+        };
+        for entry in entries {
+            let entry = entry?;
+            let run = RunDir::new(entry.path());
+            let named = entry.file_name().to_str().is_some_and(&stale);
+            if named && run.record().is_file() {
                 std::fs::remove_dir_all(run.path())?;
             }
         }
