@@ -29,6 +29,8 @@
 //! * [`signal`] — spectra, envelope, velocity RMS, characteristic lines, cage whirl (docs/model.md §9);
 //! * [`power`] — dissipation by component (dynamic) and Harris's local method (docs/model.md §10, Lei et al. 2023);
 //! * [`thermal`] — thermal network, viscosity–temperature law, coupled iteration (docs/model.md §10, Lei et al. 2023);
+//! * [`stability`] — linear stability of a running state: the model's Jacobian,
+//!   averaged over a period, and its eigenmodes (docs/dynamics.md);
 //! * [`math`] — elliptic integrals, root finding, monotone interpolation, random numbers.
 //!
 //! Equation numbers refer to `docs/model.md` and the source papers (docs/references.md);
@@ -50,6 +52,7 @@ pub mod power;
 pub mod quasistatic;
 pub mod seals;
 pub mod signal;
+pub mod stability;
 pub mod surface;
 pub mod testing;
 pub mod thermal;

@@ -62,7 +62,7 @@ const CRATES: [Crate; 6] = [
                 "quasi-static solutions",
                 &["quasistatic", "power", "thermal"],
             ),
-            ("dynamics", &["dynamics"]),
+            ("dynamics", &["dynamics", "stability"]),
             ("test fixtures", &["testing"]),
         ],
         apart: None,
