@@ -64,16 +64,19 @@ fn main() -> Result<(), String> {
         "# The free inner ring of examples/ring_stability/case.toml: the inner ring's least \
          stable mode of 100 Hz to 5 kHz of the model's Jacobian averaged over one ball pass, 5 ms into a \
          run at constant speed (rolldyn::stability)\n\
-         # speed [rpm] | friction | growth rate [1/s] | frequency [Hz] | damping ratio | whirl | leading state\n",
+         # sweep | speed [rpm] | friction | growth rate [1/s] | frequency [Hz] | damping ratio | whirl | leading state\n",
     );
     let base_friction = 0.1;
     let base_speed = 10000.0;
-    let mut points: Vec<(f64, f64)> = speeds.iter().map(|&n| (n, base_friction)).collect();
-    points.extend(frictions.iter().map(|&mu| (base_speed, mu)));
-    for (speed_rpm, friction) in points {
+    let mut points: Vec<(&str, f64, f64)> = speeds
+        .iter()
+        .map(|&n| ("speed", n, base_friction))
+        .collect();
+    points.extend(frictions.iter().map(|&mu| ("friction", base_speed, mu)));
+    for (sweep, speed_rpm, friction) in points {
         let p = analyse(&path, &text, speed_rpm, friction)?;
         let line = format!(
-            "{:>6.0} | {:>5} | {:>9.1} | {:>7.1} | {:>8.4} | {} | {}",
+            "{sweep:>8} | {:>6.0} | {:>5} | {:>9.1} | {:>7.1} | {:>8.4} | {} | {}",
             p.speed_rpm,
             p.friction,
             p.mode.growth_rate,

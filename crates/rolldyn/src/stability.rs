@@ -5,16 +5,16 @@
 //! A = ∂f/∂y by central differences of the right-hand side, and the
 //! eigenvalues λ = σ ± iω of A are its small motions' growth rates σ and
 //! angular frequencies ω: σ > 0 grows as e^{σt}, ζ = −σ/|λ| is the
-//! damping ratio (Meirovitch, *Fundamentals of Vibrations*, 2001, §8.2;
+//! damping ratio (Meirovitch, *Fundamentals of Vibrations*, 2001;
 //! in rotordynamics the logarithmic decrement, Genta, *Dynamics of
-//! Rotating Systems*, 2005, §4.5).
+//! Rotating Systems*, 2005).
 //!
 //! A bearing's equations are periodic in time (the balls turn), so a
 //! Jacobian frozen at one instant does not decide stability in general;
 //! the exact answer is Floquet's, from the flow map over a period. A
 //! Jacobian **averaged** over states sampled along a period is the
 //! first-order averaging approximation of the periodic system (Nayfeh &
-//! Mook, *Nonlinear Oscillations*, 1979, §5.4), good when the coefficients
+//! Mook, *Nonlinear Oscillations*, 1979, the method of averaging), good when the coefficients
 //! vary little over a period against their mean (a ring running under a
 //! centred load, whose contacts all carry alike); where the contacts load
 //! and unload along the period (a radially loaded ring) it can miss, and
@@ -107,7 +107,7 @@ pub fn eigenmodes(jac: &DMatrix<f64>, scale: &[f64]) -> Vec<Eigenmode> {
 }
 
 /// The eigenvector of `jac` for its eigenvalue `lambda` by inverse
-/// iteration (Golub & Van Loan, *Matrix Computations*, 2013, §7.6.1),
+/// iteration (Golub & Van Loan, *Matrix Computations*, 2013),
 /// normalized over the scaled states.
 fn mode_shape(jac: &DMatrix<f64>, lambda: Complex<f64>, scale: &[f64]) -> Vec<Complex<f64>> {
     let n = jac.nrows();
@@ -144,7 +144,7 @@ mod tests {
     use super::*;
 
     /// An isotropic rotor on its bearing with cross-coupled stiffness q
-    /// (Genta 2005, §4.5; the destabilizing force of seals and of the
+    /// (Genta 2005; the destabilizing force of seals and of the
     /// Alford effect): m ÿ + c ẏ + k y + q z = 0, m z̈ + c ż + k z − q y = 0.
     struct CrossCoupledRotor {
         mass: f64,

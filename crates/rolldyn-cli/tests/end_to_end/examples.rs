@@ -1,5 +1,6 @@
 //! Every directory of `examples/` (one per source paper, the CWRU 6205,
-//! the minute-long warm-up, the spindle pair and the run-down)
+//! the minute-long warm-up, the spindle pair, the run-down and the ring's
+//! stability)
 //! holds a README, its case file and a matplotlib script; its case is
 //! valid and runs, shortened; a scripted example (the CWRU test matrix)
 //! holds a README, its script and its table script, and runs, shortened.
@@ -15,7 +16,7 @@ fn examples() -> PathBuf {
 }
 
 /// (directory, the shortened command after the case path).
-const EXAMPLES: [(&str, &[&str]); 9] = [
+const EXAMPLES: [(&str, &[&str]); 10] = [
     ("seed000", &["run", "--duration", "2 ms"]),
     ("seed001", &["run", "--duration", "2 ms"]),
     ("seed002", &["run", "--duration", "2 ms"]),
@@ -27,6 +28,8 @@ const EXAMPLES: [(&str, &[&str]); 9] = [
     ("warmup60s", &["run", "--duration", "1 ms"]),
     // A matched pair: its quasi-static solution at the case's speed.
     ("spindle_pair", &["quasistatic"]),
+    // The free ring held at 10 000 rpm (the example linearizes its runs).
+    ("ring_stability", &["run", "--duration", "2 ms"]),
     // The default case coasting down (a torque-driven ring).
     ("run_down", &["run", "--duration", "2 ms"]),
 ];
