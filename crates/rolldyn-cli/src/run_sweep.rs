@@ -470,16 +470,7 @@ pub fn run(
         .collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(dir)
         .map_err(|e| Failure::BadInput(format!("cannot create {}: {e}", dir.display())))?;
-    // An earlier, larger sweep's points that this one does not write again.
-    let ours = |name: &str| (0..points.len()).any(|k| point_name(k, points.len()) == name);
-    let point = |n: &str| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit());
-    let stale = |name: &str| name.strip_prefix("point-").is_some_and(point) && !ours(name);
-    RunDir::new(dir).remove_runs_named(stale).map_err(|e| {
-        let dir = dir.display();
-        Failure::BadInput(format!(
-            "cannot remove an earlier sweep's points in {dir}: {e}"
-        ))
-    })?;
+    remove_stale_points(dir, points.len())?;
     let stop = options.stop_flag();
     let progress = options.progress.clone();
     // The points share the pool: no active helpers (rolldyn::threads).
@@ -539,6 +530,21 @@ pub fn run(
         .unwrap_or_default();
     write_tables_labelled(dir, &rows, &label_keys)?;
     Ok((rows, stop.load(Ordering::Relaxed)))
+}
+
+/// Removes the point directories an earlier, larger sweep left in `dir`:
+/// run directories named `point-` and digits that a sweep of `count`
+/// points does not write again.
+pub fn remove_stale_points(dir: &Path, count: usize) -> Result<(), Failure> {
+    let ours = |name: &str| (0..count).any(|k| point_name(k, count) == name);
+    let point = |n: &str| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit());
+    let stale = |name: &str| name.strip_prefix("point-").is_some_and(point) && !ours(name);
+    RunDir::new(dir).remove_runs_named(stale).map_err(|e| {
+        let dir = dir.display();
+        Failure::BadInput(format!(
+            "cannot remove an earlier sweep's points in {dir}: {e}"
+        ))
+    })
 }
 
 /// The directory name of point `k` of `count`: `point-NNNN` (at least four

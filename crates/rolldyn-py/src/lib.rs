@@ -571,6 +571,13 @@ fn point_name(k: usize, count: usize) -> String {
     run_sweep::point_name(k, count)
 }
 
+/// Removes the point directories an earlier, larger sweep left in
+/// `directory` (as `rolldyn run --sweep` does before its points run).
+#[pyfunction]
+fn remove_stale_points(directory: &str, count: usize) -> PyResult<()> {
+    run_sweep::remove_stale_points(Path::new(directory), count).map_err(to_py)
+}
+
 /// Writes `sweep.json` and `sweep.csv` of rows (dicts) into `directory`.
 #[pyfunction]
 fn write_sweep_tables(directory: &str, rows: &Bound<'_, PyAny>) -> PyResult<()> {
@@ -633,6 +640,7 @@ fn _rolldyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(point_name, m)?)?;
     m.add_function(wrap_pyfunction!(sample_points, m)?)?;
     m.add_function(wrap_pyfunction!(write_sweep_tables, m)?)?;
+    m.add_function(wrap_pyfunction!(remove_stale_points, m)?)?;
     m.add_function(wrap_pyfunction!(report, m)?)?;
     Ok(())
 }

@@ -427,6 +427,11 @@ def test_sampled_sweep_equals_the_clis(tmp_path):
 def test_sweep_on_a_dask_local_cluster_equals_the_serial_sweep(tmp_path):
     distributed = pytest.importorskip("distributed")
     serial = rolldyn.sweep(None, GRID, duration="1 ms")
+    # An earlier, larger sweep's point (a run directory) goes; a folder
+    # that is not a run stays.
+    (tmp_path / "point-0007").mkdir()
+    (tmp_path / "point-0007" / "run.json").write_text("{}")
+    (tmp_path / "point-0008").mkdir()
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
@@ -437,6 +442,8 @@ def test_sweep_on_a_dask_local_cluster_equals_the_serial_sweep(tmp_path):
     assert seen[-1] == pytest.approx(1.0)
     assert json.loads((tmp_path / "sweep.json").read_text())[0]["point"] == "point-0000"
     assert (tmp_path / "point-0002" / "summary.json").is_file()
+    assert not (tmp_path / "point-0007").exists()
+    assert (tmp_path / "point-0008").is_dir()
 
     # A Ctrl-C (here raised by the progress callback after the first point)
     # keeps the finished points and marks the rest.

@@ -16,9 +16,11 @@
 //! first-order averaging approximation of the periodic system (Nayfeh &
 //! Mook, *Nonlinear Oscillations*, 1979, the method of averaging), good when the coefficients
 //! vary little over a period against their mean (a ring running under a
-//! centred load, whose contacts all carry alike); where the contacts load
-//! and unload along the period (a radially loaded ring) it can miss, and
-//! docs/dynamics.md ("Dry traction at speed") shows where it does.
+//! centred load, whose contacts all carry alike). Where the contacts load
+//! and unload along the period, and above all where balls strike their
+//! pockets, the run is not smooth and neither the averaged Jacobian nor a
+//! differenced flow map describes it: docs/dynamics.md ("Dry traction at
+//! speed") shows both missing on the mounted 7218B.
 //!
 //! Increments: each state is perturbed by 1e-4 of its error scale
 //! ([`OdeSystem::error_scale`]), the size the integrator judges it at, so

@@ -584,7 +584,8 @@ def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any =
     ``distributed.Client`` they run as its tasks. The rows are the same
     either way (but for ``wall_time_s``). With ``output`` each point's run
     directory ``output/point-NNNN`` and ``sweep.json``/``sweep.csv`` are
-    kept (on a cluster ``output`` must be a shared file system). With
+    kept (on a cluster ``output`` must be a shared file system), and the
+    point directories an earlier, larger sweep left there are removed. With
     ``sample=N`` the sweep runs N random points instead of the grid
     (``--sample N --seed S``): a range text ``"0.1 mm..0.5 mm"`` is drawn
     uniformly, a list by choice; the rows hold the drawn values."""
@@ -603,6 +604,7 @@ def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any =
         out = None if output is None else str(output)
         if out is not None:
             os.makedirs(out, exist_ok=True)
+            _rolldyn.remove_stale_points(out, len(points))
         futures = client.map(
             _dask_point, names, [source] * len(points), [text] * len(points),
             [base + sets for sets in overrides], [out] * len(points),
