@@ -16,9 +16,10 @@
 //! `OUT_DIR/table.txt` (also printed), which plot.py draws. See
 //! examples/ring_stability/README.md.
 
-use nalgebra::Complex;
+use nalgebra::{Complex, DMatrix};
 use rolldyn::integrate::OdeSystem;
-use rolldyn::stability::{Eigenmode, averaged_jacobian, eigenmodes};
+use rolldyn::stability::{Eigenmode, averaged_jacobian, eigenmodes, power_split};
+use rolldyn_case::Case;
 use rolldyn_case::simulation::Simulation;
 use rolldyn_case::{Override, load_case};
 use std::fmt::Write as _;
@@ -40,6 +41,12 @@ struct Point {
     mode: Eigenmode,
     whirl: &'static str,
     leading: String,
+    /// The averaged Jacobian, the states it averages and the states' names
+    /// and error scales.
+    jac: DMatrix<f64>,
+    states: Vec<(f64, Vec<f64>)>,
+    names: Vec<String>,
+    scale: Vec<f64>,
 }
 
 fn main() -> Result<(), String> {
@@ -88,6 +95,7 @@ fn main() -> Result<(), String> {
         println!("{line}");
         writeln!(table, "{line}").map_err(|e| e.to_string())?;
     }
+    split(&path, &text, base_speed, base_friction, &mut table)?;
     std::fs::create_dir_all(&out).map_err(|e| format!("{}: {e}", out.display()))?;
     let file = out.join("table.txt");
     std::fs::write(&file, table).map_err(|e| format!("{}: {e}", file.display()))?;
@@ -95,8 +103,75 @@ fn main() -> Result<(), String> {
     Ok(())
 }
 
-/// Runs the case at `speed_rpm` and `friction` and linearizes it.
-fn analyse(path: &str, text: &str, speed_rpm: f64, friction: f64) -> Result<Point, String> {
+/// The friction below which the traction is taken as off, for its share.
+const NO_TRACTION: f64 = 0.001;
+
+/// The power split of the base point's mode on the ring's tilt
+/// equations, by the states that drive them, for all forces and for the
+/// traction (the Jacobian's difference from the same model's at
+/// μ = 0.001, at the same states), appended to `table`.
+fn split(
+    path: &str,
+    text: &str,
+    speed_rpm: f64,
+    friction: f64,
+    table: &mut String,
+) -> Result<(), String> {
+    let p = analyse(path, text, speed_rpm, friction)?;
+    let low = Simulation::from_case(&case_at(path, text, speed_rpm, NO_TRACTION)?)
+        .map_err(|e| e.to_string())?;
+    let traction = &p.jac - averaged_jacobian(&low.model, &p.states);
+    let rows: Vec<usize> = (0..p.names.len())
+        .filter(|&k| p.names[k].starts_with("inner ring tilt rate"))
+        .collect();
+    let all = power_split(&p.jac, &p.mode, &p.scale, &rows);
+    let part = power_split(&traction, &p.mode, &p.scale, &rows);
+    // Groups: a ball state by its name without the ball's number; a ring
+    // state without its axis.
+    let mut groups: Vec<(String, f64, f64)> = Vec::new();
+    for (k, name) in p.names.iter().enumerate() {
+        let group = match name.strip_prefix("ball ") {
+            Some(rest) => format!("balls' {}", rest.split_once(' ').map_or(rest, |(_, s)| s)),
+            None => without_axis(name),
+        };
+        match groups.iter_mut().find(|g| g.0 == group) {
+            Some(g) => {
+                g.1 += all[k];
+                g.2 += part[k];
+            }
+            None => groups.push((group, all[k], part[k])),
+        }
+    }
+    let _ = writeln!(
+        table,
+        "# the {speed_rpm} rpm, μ = {friction} mode's power split on the ring's tilt equations \
+         (rolldyn::stability::power_split): split | driven by | all forces [1/s] | traction [1/s]"
+    );
+    for (group, a, t) in groups
+        .iter()
+        .filter(|g| g.1.abs() >= 1.0 || g.2.abs() >= 1.0)
+    {
+        let line = format!("   split | {group} | {a:>10.1} | {t:>8.1}");
+        println!("{line}");
+        let _ = writeln!(table, "{line}");
+    }
+    let (a, t): (f64, f64) = (all.iter().sum(), part.iter().sum());
+    let line = format!("   split | sum | {a:>10.1} | {t:>8.1}");
+    println!("{line}");
+    let _ = writeln!(table, "{line}");
+    Ok(())
+}
+
+/// A state's name without its trailing axis (`… θ̇_y`, `… velocity z`).
+fn without_axis(name: &str) -> String {
+    match name.rsplit_once(' ') {
+        Some((group, axis)) if axis.ends_with('y') || axis.ends_with('z') => group.to_string(),
+        _ => name.to_string(),
+    }
+}
+
+/// The case at `speed_rpm` and `friction`.
+fn case_at(path: &str, text: &str, speed_rpm: f64, friction: f64) -> Result<Case, String> {
     let overrides = [
         format!("operating.speed=\"{speed_rpm} rpm\""),
         format!("model.traction={{ law = \"fastsim\", friction = {friction} }}"),
@@ -104,7 +179,12 @@ fn analyse(path: &str, text: &str, speed_rpm: f64, friction: f64) -> Result<Poin
     .iter()
     .map(|s| Override::parse_set(s).map_err(|e| e.to_string()))
     .collect::<Result<Vec<_>, _>>()?;
-    let case = load_case(path, text, &overrides).map_err(|e| e.to_string())?;
+    load_case(path, text, &overrides).map_err(|e| e.to_string())
+}
+
+/// Runs the case at `speed_rpm` and `friction` and linearizes it.
+fn analyse(path: &str, text: &str, speed_rpm: f64, friction: f64) -> Result<Point, String> {
+    let case = case_at(path, text, speed_rpm, friction)?;
     let at = case
         .duration
         .ok_or("the case states no duration (solver.duration)")?;
@@ -154,17 +234,17 @@ fn analyse(path: &str, text: &str, speed_rpm: f64, friction: f64) -> Result<Poin
         .ok_or("no mode of the inner ring in the band")?;
     let whirl = whirl(&mode.shape, &index);
     // Its name without the axis: a whirl's y and z lead alike.
-    let leading = leading(&mode);
-    let leading = match leading.rsplit_once(' ') {
-        Some((group, axis)) if axis.ends_with('y') || axis.ends_with('z') => group.to_string(),
-        _ => leading,
-    };
+    let leading = without_axis(&leading(&mode));
     Ok(Point {
         speed_rpm,
         friction,
         mode,
         whirl,
         leading,
+        jac,
+        states,
+        names,
+        scale,
     })
 }
 
