@@ -78,8 +78,8 @@ impl From<Position> for Start {
 }
 
 /// Prepares `dir` for a fresh run: created, an older run's checkpoint
-/// removed (it is no longer valid), and the runs its `--verify` made, the
-/// run's record written.
+/// removed (it is no longer valid), and the runs its `--verify` made, an
+/// earlier sweep's tables and points removed, the run's record written.
 pub fn fresh_dir(dir: &Path, record: &RunRecord) -> Result<(), Failure> {
     let bad = Failure::BadInput;
     std::fs::create_dir_all(dir)
@@ -96,6 +96,12 @@ pub fn fresh_dir(dir: &Path, record: &RunRecord) -> Result<(), Failure> {
             "cannot remove an earlier run's {} or {} in {}: {e}",
             RunDir::VERIFY,
             RunDir::VERIFY_GRID,
+            dir.display()
+        ))
+    })?;
+    run_dir.remove_sweep().map_err(|e| {
+        bad(format!(
+            "cannot remove an earlier sweep's tables and points in {}: {e}",
             dir.display()
         ))
     })?;

@@ -532,17 +532,22 @@ pub fn run(
     Ok((rows, stop.load(Ordering::Relaxed)))
 }
 
-/// Removes the point directories an earlier, larger sweep left in `dir`:
-/// run directories named `point-` and digits that a sweep of `count`
-/// points does not write again.
+/// Removes what an earlier output left in `dir` that a sweep of `count`
+/// points does not write again: a larger sweep's point directories (run
+/// directories named `point-` and digits) and a single run's files.
 pub fn remove_stale_points(dir: &Path, count: usize) -> Result<(), Failure> {
     let ours = |name: &str| (0..count).any(|k| point_name(k, count) == name);
-    let point = |n: &str| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit());
-    let stale = |name: &str| name.strip_prefix("point-").is_some_and(point) && !ours(name);
-    RunDir::new(dir).remove_runs_named(stale).map_err(|e| {
-        let dir = dir.display();
+    let stale = |name: &str| RunDir::is_point_name(name) && !ours(name);
+    let run_dir = RunDir::new(dir);
+    let display = dir.display();
+    run_dir.remove_runs_named(stale).map_err(|e| {
         Failure::BadInput(format!(
-            "cannot remove an earlier sweep's points in {dir}: {e}"
+            "cannot remove an earlier sweep's points in {display}: {e}"
+        ))
+    })?;
+    run_dir.remove_run().map_err(|e| {
+        Failure::BadInput(format!(
+            "cannot remove an earlier run's files in {display}: {e}"
         ))
     })
 }
@@ -551,7 +556,7 @@ pub fn remove_stale_points(dir: &Path, count: usize) -> Result<(), Failure> {
 /// digits, all of the same width).
 pub fn point_name(k: usize, count: usize) -> String {
     let width = count.saturating_sub(1).to_string().len().max(4);
-    format!("point-{k:0width$}")
+    format!("{}{k:0width$}", RunDir::POINT_PREFIX)
 }
 
 /// A row's first columns: the point and the operating point it runs at.

@@ -9,7 +9,13 @@
 //! DIR/summary.json              the summary, rewritten at every checkpoint and at the end
 //! DIR/report.html               the HTML report (`--report`, `rolldyn report`)
 //! DIR/sweep.json, sweep.csv     a sweep's table (a sweep's directory instead of the above)
+//! DIR/point-NNNN/               a sweep's points, each a run directory
 //! ```
+//!
+//! A directory holds one run or one sweep: a run written into a sweep's
+//! directory removes the sweep ([`RunDir::remove_sweep`]), a sweep written
+//! into a run's removes the run ([`RunDir::remove_run`]), so that what a
+//! report or `--resume` finds there is the last one's.
 //!
 //! The names are defined here once; every writer and reader of a run
 //! directory goes through [`RunDir`]. Files other than the dataset are
@@ -41,6 +47,9 @@ impl RunDir {
     pub const SWEEP_JSON: &'static str = "sweep.json";
     /// A sweep's table as CSV.
     pub const SWEEP_CSV: &'static str = "sweep.csv";
+    /// The start of a sweep's point directories' names (`point-` and
+    /// digits).
+    pub const POINT_PREFIX: &'static str = "point-";
     /// `--verify`'s run at tighter tolerances and a finer grid (a run
     /// directory of its own inside this one).
     pub const VERIFY: &'static str = "verify";
@@ -145,6 +154,45 @@ impl RunDir {
         self.remove_runs_named(|name| name == Self::VERIFY || name == Self::VERIFY_GRID)
     }
 
+    /// Whether `name` is a sweep's point directory's name: `point-` and
+    /// digits.
+    pub fn is_point_name(name: &str) -> bool {
+        name.strip_prefix(Self::POINT_PREFIX)
+            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+    }
+
+    /// Removes an earlier sweep written into this directory: its tables,
+    /// its report and its point run directories. A fresh run's files would
+    /// otherwise sit beside them, and a report would describe the sweep.
+    pub fn remove_sweep(&self) -> std::io::Result<()> {
+        if !self.has_sweep() {
+            return Ok(());
+        }
+        for name in [Self::SWEEP_JSON, Self::SWEEP_CSV, Self::REPORT] {
+            self.remove(name)?;
+        }
+        self.remove_runs_named(Self::is_point_name)
+    }
+
+    /// Removes an earlier single run written into this directory (one with
+    /// a [`Self::RECORD`]): its record, series, checkpoint, summary,
+    /// report and `--verify` runs, before a sweep writes its points here.
+    pub fn remove_run(&self) -> std::io::Result<()> {
+        if !self.record().is_file() {
+            return Ok(());
+        }
+        for dataset in [Self::SERIES, Self::SLOW_SERIES] {
+            match std::fs::remove_dir_all(self.file(dataset)) {
+                Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(e),
+                _ => {}
+            }
+        }
+        for name in [Self::CHECKPOINT, Self::SUMMARY, Self::REPORT, Self::RECORD] {
+            self.remove(name)?;
+        }
+        self.remove_verify_runs()
+    }
+
     /// Removes the run directories in this directory whose names `stale`
     /// accepts (a sweep's points it does not write again, an earlier
     /// `--verify`'s runs). Only run directories (with a [`Self::RECORD`])
@@ -207,6 +255,44 @@ mod tests {
         assert!(!verify.path().exists());
         assert!(other.join("notes.txt").is_file());
         run.remove_verify_runs().unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_run_and_a_sweep_each_remove_the_other_from_their_directory() {
+        let dir = std::env::temp_dir().join(format!("rolldyn-run-or-sweep-{}", std::process::id()));
+        let run = RunDir::new(&dir);
+        // An earlier sweep: tables, report, two points and a user's folder.
+        std::fs::create_dir_all(&dir).unwrap();
+        run.write_sweep("[]", "").unwrap();
+        run.write(RunDir::REPORT, b"<html>").unwrap();
+        for point in ["point-0000", "point-0001"] {
+            std::fs::create_dir_all(run.file(point)).unwrap();
+            RunDir::new(run.file(point))
+                .write(RunDir::RECORD, b"{}")
+                .unwrap();
+        }
+        std::fs::create_dir_all(run.file("point-notes")).unwrap();
+        run.remove_sweep().unwrap();
+        assert!(!run.has_sweep() && !run.file(RunDir::SWEEP_CSV).exists());
+        assert!(!run.report().exists() && !run.file("point-0000").exists());
+        assert!(run.file("point-notes").is_dir());
+        // An earlier single run: record, series, summary, checkpoint.
+        run.write(RunDir::RECORD, b"{}").unwrap();
+        std::fs::create_dir_all(run.series()).unwrap();
+        std::fs::write(run.series().join("part-0.parquet"), b"x").unwrap();
+        run.write_summary("{}").unwrap();
+        run.write(RunDir::CHECKPOINT, b"x").unwrap();
+        run.remove_run().unwrap();
+        for gone in [run.record(), run.series(), run.summary(), run.checkpoint()] {
+            assert!(!gone.exists(), "{}", gone.display());
+        }
+        assert!(run.file("point-notes").is_dir());
+        // Nothing of either: nothing to do.
+        run.remove_run().unwrap();
+        run.remove_sweep().unwrap();
+        assert!(RunDir::is_point_name("point-0012") && !RunDir::is_point_name("point-"));
+        assert!(!RunDir::is_point_name("point-12a") && !RunDir::is_point_name("points-1"));
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

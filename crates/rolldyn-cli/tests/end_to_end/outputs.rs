@@ -160,6 +160,45 @@ fn a_run_removes_an_earlier_runs_verify_runs() {
 /// `point-*` would find them); folders that are not run directories
 /// named `point-` and digits stay.
 #[test]
+fn a_run_replaces_an_earlier_sweep_in_its_directory_and_a_sweep_a_run() {
+    let dir = temp_dir("run-or-sweep");
+    let d = dir.to_str().unwrap();
+    let sweep = [
+        "run",
+        "--duration",
+        "1 ms",
+        "--sweep",
+        "axial=100N,200N",
+        "-o",
+        d,
+        "--report",
+    ];
+    let o = rolldyn(&sweep, None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(dir.join("sweep.json").is_file() && dir.join("point-0001").is_dir());
+    // A run into the sweep's directory: the sweep goes, and the report
+    // describes the run (a report prefers a sweep's table when both are there).
+    let o = rolldyn(&["run", "--duration", "1 ms", "-o", d, "--report"], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!dir.join("sweep.json").exists() && !dir.join("sweep.csv").exists());
+    assert!(!dir.join("point-0000").exists() && !dir.join("point-0001").exists());
+    assert!(summary_of(&dir)["status"] == "completed");
+    let report = std::fs::read_to_string(dir.join("report.html")).unwrap();
+    assert!(
+        !report.contains("<title>rolldyn sweep</title>"),
+        "the report is the run's"
+    );
+    // A sweep into the run's directory: the run's files go.
+    let o = rolldyn(&sweep, None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for gone in ["run.json", "summary.json", "timeseries.parquet"] {
+        assert!(!dir.join(gone).exists(), "{gone}");
+    }
+    assert!(dir.join("sweep.json").is_file());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
 fn a_sweep_removes_an_earlier_sweeps_other_points() {
     let dir = temp_dir("stale-points");
     let plant = |name: &str, record: bool| {
