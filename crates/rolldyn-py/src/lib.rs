@@ -572,7 +572,8 @@ fn point_name(k: usize, count: usize) -> String {
 }
 
 /// Removes the point directories an earlier, larger sweep left in
-/// `directory` (as `rolldyn run --sweep` does before its points run).
+/// `directory`, and an earlier single run's files there (as `rolldyn run
+/// --sweep` does before its points run).
 #[pyfunction]
 fn remove_stale_points(directory: &str, count: usize) -> PyResult<()> {
     run_sweep::remove_stale_points(Path::new(directory), count).map_err(to_py)

@@ -585,7 +585,8 @@ def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any =
     either way (but for ``wall_time_s``). With ``output`` each point's run
     directory ``output/point-NNNN`` and ``sweep.json``/``sweep.csv`` are
     kept (on a cluster ``output`` must be a shared file system), and the
-    point directories an earlier, larger sweep left there are removed. With
+    point directories an earlier, larger sweep left there, or an earlier
+    single run's files, are removed. With
     ``sample=N`` the sweep runs N random points instead of the grid
     (``--sample N --seed S``): a range text ``"0.1 mm..0.5 mm"`` is drawn
     uniformly, a list by choice; the rows hold the drawn values."""
