@@ -2,13 +2,17 @@
 //! at which speed and friction its steady running turns into the whirl
 //! docs/dynamics.md ("Dry traction at speed") describes.
 //!
-//! For each point of a speed sweep (at the case's friction) and of a
-//! friction sweep (at the case's speed): a run at constant speed to the
+//! For each point of a speed sweep (at μ = 0.1) and of a friction sweep
+//! (at 10 000 rpm): a run at constant speed to the
 //! case's duration (5 ms), then the model's Jacobian averaged over one ball
 //! pass (40 states), its eigenvalues ([`rolldyn::stability`]) and the
 //! least stable oscillatory mode of the inner ring (its leading state the
 //! ring's) between 100 Hz and 5 kHz: its growth rate, frequency, damping
-//! ratio, whirl direction and leading state.
+//! ratio, whirl direction relative to the ring's rotation and leading state.
+//! Modes led by the balls or the cage, and real eigenvalues, are not
+//! reported. Last, at 10 000 rpm and μ = 0.1, the mode's growth rate split
+//! over the states whose influence makes it, for all forces and for the
+//! traction alone.
 //!
 //! `cargo run --release --example ring_stability [-- OUT_DIR [SPEEDS_RPM [FRICTIONS]]]`
 //! (default `examples/ring_stability/out`, the speeds 1000…12 000 rpm and
@@ -18,7 +22,7 @@
 
 use nalgebra::{Complex, DMatrix};
 use rolldyn::integrate::OdeSystem;
-use rolldyn::stability::{Eigenmode, averaged_jacobian, eigenmodes, power_split};
+use rolldyn::stability::{Eigenmode, averaged_jacobian, eigenmodes, growth_split};
 use rolldyn_case::Case;
 use rolldyn_case::simulation::Simulation;
 use rolldyn_case::{Override, load_case};
@@ -103,13 +107,14 @@ fn main() -> Result<(), String> {
     Ok(())
 }
 
-/// The friction below which the traction is taken as off, for its share.
+/// The reference friction whose model's Jacobian, taken from the base
+/// point's, leaves the traction's part.
 const NO_TRACTION: f64 = 0.001;
 
-/// The power split of the base point's mode on the ring's tilt
-/// equations, by the states that drive them, for all forces and for the
-/// traction (the Jacobian's difference from the same model's at
-/// μ = 0.001, at the same states), appended to `table`.
+/// The growth rate of the base point's mode split over the states whose
+/// influence makes it (`rolldyn::stability::growth_split`), for all forces
+/// and for the traction (the Jacobian's difference from the same model's
+/// at μ = 0.001, at the same states), appended to `table`.
 fn split(
     path: &str,
     text: &str,
@@ -121,11 +126,8 @@ fn split(
     let low = Simulation::from_case(&case_at(path, text, speed_rpm, NO_TRACTION)?)
         .map_err(|e| e.to_string())?;
     let traction = &p.jac - averaged_jacobian(&low.model, &p.states);
-    let rows: Vec<usize> = (0..p.names.len())
-        .filter(|&k| p.names[k].starts_with("inner ring tilt rate"))
-        .collect();
-    let all = power_split(&p.jac, &p.mode, &p.scale, &rows);
-    let part = power_split(&traction, &p.mode, &p.scale, &rows);
+    let all = growth_split(&p.jac, &p.jac, &p.mode, &p.scale);
+    let part = growth_split(&p.jac, &traction, &p.mode, &p.scale);
     // Groups: a ball state by its name without the ball's number; a ring
     // state without its axis.
     let mut groups: Vec<(String, f64, f64)> = Vec::new();
@@ -144,8 +146,8 @@ fn split(
     }
     let _ = writeln!(
         table,
-        "# the {speed_rpm} rpm, μ = {friction} mode's power split on the ring's tilt equations \
-         (rolldyn::stability::power_split): split | driven by | all forces [1/s] | traction [1/s]"
+        "# the {speed_rpm} rpm, μ = {friction} mode's growth rate split over the states whose \
+         influence makes it (rolldyn::stability::growth_split): split | state | all forces [1/s] | traction [1/s]"
     );
     for (group, a, t) in groups
         .iter()
@@ -164,8 +166,9 @@ fn split(
 
 /// A state's name without its trailing axis (`… θ̇_y`, `… velocity z`).
 fn without_axis(name: &str) -> String {
+    const AXES: [&str; 6] = ["y", "z", "θ_y", "θ_z", "θ̇_y", "θ̇_z"];
     match name.rsplit_once(' ') {
-        Some((group, axis)) if axis.ends_with('y') || axis.ends_with('z') => group.to_string(),
+        Some((group, axis)) if AXES.contains(&axis) => group.to_string(),
         _ => name.to_string(),
     }
 }
@@ -232,7 +235,7 @@ fn analyse(path: &str, text: &str, speed_rpm: f64, friction: f64) -> Result<Poin
             m.frequency > BAND.0 && m.frequency < BAND.1 && leading(m).starts_with("inner ring")
         })
         .ok_or("no mode of the inner ring in the band")?;
-    let whirl = whirl(&mode.shape, &index);
+    let whirl = whirl(&mode.shape, &index, speed_rpm);
     // Its name without the axis: a whirl's y and z lead alike.
     let leading = without_axis(&leading(&mode));
     Ok(Point {
@@ -248,11 +251,16 @@ fn analyse(path: &str, text: &str, speed_rpm: f64, friction: f64) -> Result<Poin
     })
 }
 
-/// The whirl of the inner ring's tilt (or, if it has none, of its centre)
-/// against its rotation about +x (`none` where neither leads the mode):
-/// forward where the z component lags the
-/// y component by a quarter period (z/y ≈ −i for e^{iωt}).
-fn whirl(shape: &[Complex<f64>], index: &dyn Fn(&str) -> Option<usize>) -> &'static str {
+/// The whirl of the inner ring's tilt (or, where its centre leads, of its
+/// centre) relative to its rotation about +x (`none` where neither leads
+/// the mode). With e^{iωt}, u = y + iz turning forward is y + iz's
+/// forward part |y + iz| against its backward part |y − iz| (z = −iy turns
+/// from y to z, with the rotation); `planar` where neither dominates.
+fn whirl(
+    shape: &[Complex<f64>],
+    index: &dyn Fn(&str) -> Option<usize>,
+    speed_rpm: f64,
+) -> &'static str {
     let pair = |y: &str, z: &str| Some((shape[index(y)?], shape[index(z)?]));
     let tilt = pair("inner ring tilt θ_y", "inner ring tilt θ_z");
     let centre = pair("inner ring position y", "inner ring position z");
@@ -267,12 +275,16 @@ fn whirl(shape: &[Complex<f64>], index: &dyn Fn(&str) -> Option<usize>) -> &'sta
     if y.norm() + z.norm() < 0.3 * largest {
         return "none";
     }
-    let ratio = z / y;
-    if (ratio.norm() - 1.0).abs() > 0.2 {
-        "elliptic"
-    } else if ratio.im < 0.0 {
+    let i = Complex::new(0.0, 1.0);
+    let (mut forward, mut backward) = ((y + i * z).norm(), (y - i * z).norm());
+    if speed_rpm < 0.0 {
+        std::mem::swap(&mut forward, &mut backward);
+    }
+    if forward > 2.0 * backward {
         "forward"
-    } else {
+    } else if backward > 2.0 * forward {
         "backward"
+    } else {
+        "planar"
     }
 }

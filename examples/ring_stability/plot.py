@@ -1,4 +1,4 @@
-"""The free 7218B inner ring's least stable tilting mode under dry traction:
+"""The free 7218B inner ring's least stable mode under dry traction:
 growth rate against speed (μ = 0.1) and against friction (10 000 rpm),
 from the example's table.
 
@@ -29,10 +29,10 @@ for ax, sweep, column, label in [
     ax.plot([p[0] for p in points], [p[1] for p in points], "o-")
     ax.axhline(0.0, color="grey", lw=0.8)
     ax.set_xlabel(label)
-    ax.set_ylabel("growth rate σ of the ring's least stable mode [1/s]")
+    ax.set_ylabel("growth rate σ [1/s]")
     if sweep == "friction":
         ax.set_xscale("log")
-fig.suptitle("7218B free inner ring: linearized stability (rolldyn::stability)")
+fig.suptitle("7218B free inner ring: growth rate of its least stable mode (rolldyn::stability)")
 fig.tight_layout()
 fig.savefig(out / "ring_stability.png", dpi=120)
 print("wrote", out / "ring_stability.png")

@@ -10,7 +10,7 @@
 //! Tolerances: frequency within 3 %; growth rate within 25 %, because the
 //! linearization is of one state of a run that has not settled (the
 //! orbit grows from the start's transient) and the mean over a period
-//! takes a little of a growing envelope. Measured: 600 1/s at 678 Hz
+//! takes a little of a growing envelope. Measured: 600 1/s at 679 Hz
 //! linearized, 684 1/s at 666 Hz integrated. At μ = 0.001 the linearized
 //! mode is neutral (|σ| < 20 1/s): undamped Hertz contacts and almost no
 //! traction.
@@ -75,7 +75,8 @@ fn analyse(friction: f64) -> (Vec<(f64, f64, f64)>, Linear) {
     let jac = averaged_jacobian(&sim.model, &states);
     let mut scale = vec![1.0; n];
     sim.model.error_scale(&mut scale);
-    // The tilting mode: the least stable one the ring's tilt rate leads.
+    // The tilting mode: the least stable one the ring's tilt rate leads
+    // (at μ = 0.001 a backward whirl, the forward one just below it).
     let mode = eigenmodes(&jac, &scale)
         .into_iter()
         .find(|m| {

@@ -5,9 +5,9 @@
 //! A = ∂f/∂y by central differences of the right-hand side, and the
 //! eigenvalues λ = σ ± iω of A are its small motions' growth rates σ and
 //! angular frequencies ω: σ > 0 grows as e^{σt}, ζ = −σ/|λ| is the
-//! damping ratio (Meirovitch, *Fundamentals of Vibrations*, 2001;
-//! in rotordynamics the logarithmic decrement, Genta, *Dynamics of
-//! Rotating Systems*, 2005).
+//! damping ratio (Meirovitch, *Fundamentals of Vibrations*, 2001); the
+//! logarithmic decrement of rotordynamics is δ = −2πσ/ω ≈ 2πζ (Genta,
+//! *Dynamics of Rotating Systems*, 2005).
 //!
 //! A bearing's equations are periodic in time (the balls turn), so a
 //! Jacobian frozen at one instant does not decide stability in general;
@@ -16,7 +16,10 @@
 //! first-order averaging approximation of the periodic system (Nayfeh &
 //! Mook, *Nonlinear Oscillations*, 1979, the method of averaging), good when the coefficients
 //! vary little over a period against their mean (a ring running under a
-//! centred load, whose contacts all carry alike). Where the contacts load
+//! centred load, whose contacts all carry alike) and the period is short
+//! against the mode's (on the free 7218B ring at 10 000 rpm the ball pass
+//! is 1.28 kHz against a 680 Hz mode, and a Floquet analysis agrees to
+//! 4 %). Where the contacts load
 //! and unload along the period, and above all where balls strike their
 //! pockets, the run is not smooth and neither the averaged Jacobian nor a
 //! differenced flow map describes it: docs/dynamics.md ("Dry traction at
@@ -60,12 +63,15 @@ pub fn jacobian(system: &impl OdeSystem, t: f64, y: &[f64]) -> DMatrix<f64> {
     for k in 0..n {
         let h = PERTURBATION * scale[k].max(f64::MIN_POSITIVE.sqrt());
         shifted[k] = y[k] + h;
+        let up = shifted[k];
         system.rhs(t, &shifted, &mut plus);
         shifted[k] = y[k] - h;
+        // The step actually taken (a large angle rounds its increment).
+        let step = up - shifted[k];
         system.rhs(t, &shifted, &mut minus);
         shifted[k] = y[k];
         for i in 0..n {
-            jac[(i, k)] = (plus[i] - minus[i]) / (2.0 * h);
+            jac[(i, k)] = (plus[i] - minus[i]) / step;
         }
     }
     jac
@@ -89,7 +95,13 @@ pub fn averaged_jacobian(system: &impl OdeSystem, states: &[(f64, Vec<f64>)]) ->
 /// complex pair only the one with positive frequency. `scale` is each
 /// state's error scale, used to normalize the shapes.
 pub fn eigenmodes(jac: &DMatrix<f64>, scale: &[f64]) -> Vec<Eigenmode> {
-    let mut modes: Vec<Eigenmode> = jac
+    // The eigenvalues of D⁻¹ J D, D = diag(scale): the same, from a
+    // matrix whose entries no longer span the states' units.
+    let floor = f64::MIN_POSITIVE.sqrt();
+    let balanced = DMatrix::from_fn(jac.nrows(), jac.ncols(), |r, c| {
+        jac[(r, c)] * scale[c].max(floor) / scale[r].max(floor)
+    });
+    let mut modes: Vec<Eigenmode> = balanced
         .complex_eigenvalues()
         .iter()
         .filter(|lambda| lambda.im >= 0.0)
@@ -108,42 +120,48 @@ pub fn eigenmodes(jac: &DMatrix<f64>, scale: &[f64]) -> Vec<Eigenmode> {
     modes
 }
 
-/// Where a mode's growth comes from: the power balance of the equations
-/// `rows` split by the states that drive them. For an eigenvector v with
-/// eigenvalue λ, λ v_r = Σ_c J_rc v_c on each row, so
-/// Σ_r Re(v̄_r J_rc v_c) / Σ_r |v_r|², summed over the columns c, is the
-/// growth rate σ; entry c of the result is column c's share \[1/s\]
-/// (positive feeds the mode). `jac` is the matrix the mode is of, or a
-/// part of it (a force's terms) to split that part alone; `scale` as for
-/// [`eigenmodes`].
-pub fn power_split(
+/// Where a mode's growth rate comes from: σ split over the Jacobian's
+/// columns. With v the mode's (right) eigenvector and w its left one
+/// (wᴴJ = λwᴴ), λ = wᴴJv / wᴴv exactly, a sum over the entries J_rc; entry
+/// c of the result is Re(Σ_r w̄_r J_rc v_c / wᴴv), the share of state c's
+/// influence \[1/s\] (positive raises σ), and the entries sum to σ. For a
+/// part of the Jacobian (a force's terms) in `part`, the same weights give
+/// that part's first-order share of σ (the eigenvalue's sensitivity,
+/// Golub & Van Loan 2013). `jac` is the matrix the mode is of, `scale` as
+/// for [`eigenmodes`]. Zeros where the left eigenvector is orthogonal to
+/// the mode (a defective eigenvalue).
+pub fn growth_split(
     jac: &DMatrix<f64>,
+    part: &DMatrix<f64>,
     mode: &Eigenmode,
     scale: &[f64],
-    rows: &[usize],
 ) -> Vec<f64> {
     let floor = f64::MIN_POSITIVE.sqrt();
+    let n = jac.nrows();
     let v: Vec<Complex<f64>> = mode
         .shape
         .iter()
         .zip(scale)
         .map(|(c, s)| c * s.max(floor))
         .collect();
-    let norm: f64 = rows.iter().map(|&r| v[r].norm_sqr()).sum();
-    (0..v.len())
+    let lambda = Complex::new(mode.growth_rate, mode.frequency * std::f64::consts::TAU);
+    // The left eigenvector: Jᵀ w = λ̄ w.
+    let w = inverse_iteration(&jac.transpose(), lambda.conj());
+    let denominator: Complex<f64> = (0..n).map(|r| w[r].conj() * v[r]).sum();
+    if denominator.norm() == 0.0 || !denominator.norm().is_finite() {
+        return vec![0.0; n];
+    }
+    (0..n)
         .map(|c| {
-            rows.iter()
-                .map(|&r| (v[r].conj() * jac[(r, c)] * v[c]).re)
-                .sum::<f64>()
-                / norm
+            let column: Complex<f64> = (0..n).map(|r| w[r].conj() * part[(r, c)]).sum();
+            (column * v[c] / denominator).re
         })
         .collect()
 }
 
-/// The eigenvector of `jac` for its eigenvalue `lambda` by inverse
-/// iteration (Golub & Van Loan, *Matrix Computations*, 2013),
-/// normalized over the scaled states.
-fn mode_shape(jac: &DMatrix<f64>, lambda: Complex<f64>, scale: &[f64]) -> Vec<Complex<f64>> {
+/// The eigenvector of `jac` for its eigenvalue `lambda`, unit length, by
+/// inverse iteration (Golub & Van Loan 2013).
+fn inverse_iteration(jac: &DMatrix<f64>, lambda: Complex<f64>) -> DVector<Complex<f64>> {
     let n = jac.nrows();
     // A shift a hair off the eigenvalue keeps the matrix invertible.
     let shift = lambda + Complex::new(1e-9 * lambda.norm().max(1.0), 0.0);
@@ -161,6 +179,13 @@ fn mode_shape(jac: &DMatrix<f64>, lambda: Complex<f64>, scale: &[f64]) -> Vec<Co
             v /= Complex::new(norm, 0.0);
         }
     }
+    v
+}
+
+/// The eigenvector of `jac` for `lambda`, normalized over the scaled
+/// states.
+fn mode_shape(jac: &DMatrix<f64>, lambda: Complex<f64>, scale: &[f64]) -> Vec<Complex<f64>> {
+    let v = inverse_iteration(jac, lambda);
     let mut shape: Vec<Complex<f64>> = v
         .iter()
         .zip(scale)
@@ -268,7 +293,7 @@ mod tests {
     }
 
     #[test]
-    fn a_modes_power_split_sums_to_its_growth_rate_and_names_the_cross_stiffness() {
+    fn a_modes_growth_split_sums_to_its_growth_rate_and_names_the_cross_stiffness() {
         let rotor = CrossCoupledRotor {
             mass: 2.0,
             damping: 40.0,
@@ -278,17 +303,33 @@ mod tests {
         let scale = [1e-6, 1e-6, 1e-3, 1e-3];
         let jac = jacobian(&rotor, 0.0, &[0.0; 4]);
         let mode = &eigenmodes(&jac, &scale)[0];
-        let split = power_split(&jac, mode, &scale, &[2, 3]);
+        let split = growth_split(&jac, &jac, mode, &scale);
         let sum: f64 = split.iter().sum();
         assert!((sum - mode.growth_rate).abs() < 1e-6 * mode.growth_rate.abs().max(1.0));
-        // The damping (velocity columns) drains −c/m; the positions feed
-        // the rest: the cross stiffness is what drives the forward whirl.
-        let damping = split[2] + split[3];
+        // The damping's part: c ∂λ/∂c = −cλ/(2mλ + c) from the
+        // characteristic equation, which takes about c/2m off σ.
+        let part = |entries: &[(usize, usize)]| {
+            let mut p = DMatrix::zeros(4, 4);
+            for &(r, c) in entries {
+                p[(r, c)] = jac[(r, c)];
+            }
+            growth_split(&jac, &p, mode, &scale).iter().sum::<f64>()
+        };
+        let lambda = Complex::new(mode.growth_rate, mode.frequency * std::f64::consts::TAU);
+        let (m, c) = (rotor.mass, rotor.damping);
+        let damping = part(&[(2, 2), (3, 3)]);
+        let exact = (-c * lambda / (2.0 * m * lambda + c)).re;
         assert!(
-            (damping + rotor.damping / rotor.mass).abs() < 1e-6 * 20.0,
-            "{damping}"
+            (damping - exact).abs() < 1e-6 * c / m,
+            "{damping} against {exact}"
         );
-        assert!(split[0] + split[1] > 0.0);
+        // The cross stiffness feeds the forward whirl more than the
+        // damping drains it: the mode grows.
+        let cross = part(&[(2, 1), (3, 0)]);
+        assert!(
+            cross > -damping && mode.growth_rate > 0.0,
+            "{cross}, {damping}"
+        );
     }
 
     /// A spring whose stiffness varies over a period, k (1 + ε cos t).
