@@ -155,25 +155,28 @@ fn a_run_removes_an_earlier_runs_verify_runs() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// A sweep into a directory an earlier, larger sweep ran into removes the
-/// points it does not write again (`sweep.json` would not list them, but
-/// `point-*` would find them); folders that are not run directories
-/// named `point-` and digits stay.
+/// `run --sweep axial=100N,200N` of 1 ms into `dir`.
+fn sweep_two_points(dir: &str) -> std::process::Output {
+    rolldyn(
+        &[
+            "run",
+            "--duration",
+            "1 ms",
+            "--sweep",
+            "axial=100N,200N",
+            "-o",
+            dir,
+        ],
+        None,
+    )
+}
+
+/// A directory holds one run or one sweep: each removes the other.
 #[test]
 fn a_run_replaces_an_earlier_sweep_in_its_directory_and_a_sweep_a_run() {
     let dir = temp_dir("run-or-sweep");
     let d = dir.to_str().unwrap();
-    let sweep = [
-        "run",
-        "--duration",
-        "1 ms",
-        "--sweep",
-        "axial=100N,200N",
-        "-o",
-        d,
-        "--report",
-    ];
-    let o = rolldyn(&sweep, None);
+    let o = sweep_two_points(d);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(dir.join("sweep.json").is_file() && dir.join("point-0001").is_dir());
     // A run into the sweep's directory: the sweep goes, and the report
@@ -189,7 +192,7 @@ fn a_run_replaces_an_earlier_sweep_in_its_directory_and_a_sweep_a_run() {
         "the report is the run's"
     );
     // A sweep into the run's directory: the run's files go.
-    let o = rolldyn(&sweep, None);
+    let o = sweep_two_points(d);
     assert!(o.status.success(), "{}", stderr(&o));
     for gone in ["run.json", "summary.json", "timeseries.parquet"] {
         assert!(!dir.join(gone).exists(), "{gone}");
@@ -198,6 +201,10 @@ fn a_run_replaces_an_earlier_sweep_in_its_directory_and_a_sweep_a_run() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A sweep into a directory an earlier, larger sweep ran into removes the
+/// points it does not write again (`sweep.json` would not list them, but
+/// `point-*` would find them); folders that are not run directories
+/// named `point-` and digits stay.
 #[test]
 fn a_sweep_removes_an_earlier_sweeps_other_points() {
     let dir = temp_dir("stale-points");
@@ -213,19 +220,7 @@ fn a_sweep_removes_an_earlier_sweeps_other_points() {
     let wider = plant("point-00001", true);
     let notes = plant("point-notes", true);
     let bare = plant("point-0009", false);
-    let d = dir.to_str().unwrap();
-    let o = rolldyn(
-        &[
-            "run",
-            "--duration",
-            "1 ms",
-            "--sweep",
-            "axial=100N,200N",
-            "-o",
-            d,
-        ],
-        None,
-    );
+    let o = sweep_two_points(dir.to_str().unwrap());
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(!stale.exists() && !wider.exists());
     assert!(notes.exists() && bare.exists());
