@@ -84,6 +84,8 @@ fn main() -> Result<(), String> {
         .map(|&n| ("speed", n, base_friction))
         .collect();
     points.extend(frictions.iter().map(|&mu| ("friction", base_speed, mu)));
+    // The base point, analysed once for its row and its split.
+    let mut base: Option<Point> = None;
     for (sweep, speed_rpm, friction) in points {
         let p = analyse(&path, &text, speed_rpm, friction)?;
         let line = format!(
@@ -98,8 +100,15 @@ fn main() -> Result<(), String> {
         );
         println!("{line}");
         writeln!(table, "{line}").map_err(|e| e.to_string())?;
+        if base.is_none() && speed_rpm == base_speed && friction == base_friction {
+            base = Some(p);
+        }
     }
-    split(&path, &text, base_speed, base_friction, &mut table)?;
+    let base = match base {
+        Some(p) => p,
+        None => analyse(&path, &text, base_speed, base_friction)?,
+    };
+    split(&path, &text, &base, &mut table)?;
     std::fs::create_dir_all(&out).map_err(|e| format!("{}: {e}", out.display()))?;
     let file = out.join("table.txt");
     std::fs::write(&file, table).map_err(|e| format!("{}: {e}", file.display()))?;
@@ -115,14 +124,8 @@ const NO_TRACTION: f64 = 0.001;
 /// influence makes it (`rolldyn::stability::growth_split`), for all forces
 /// and for the traction (the Jacobian's difference from the same model's
 /// at μ = 0.001, at the same states), appended to `table`.
-fn split(
-    path: &str,
-    text: &str,
-    speed_rpm: f64,
-    friction: f64,
-    table: &mut String,
-) -> Result<(), String> {
-    let p = analyse(path, text, speed_rpm, friction)?;
+fn split(path: &str, text: &str, p: &Point, table: &mut String) -> Result<(), String> {
+    let (speed_rpm, friction) = (p.speed_rpm, p.friction);
     let low = Simulation::from_case(&case_at(path, text, speed_rpm, NO_TRACTION)?)
         .map_err(|e| e.to_string())?;
     let traction = &p.jac - averaged_jacobian(&low.model, &p.states);

@@ -498,7 +498,7 @@ pub fn run(
         .zip(&cases)
         .enumerate()
         .map(|(k, (point, case))| {
-            let name = point_name(k, points.len());
+            let name = RunDir::point_name(k, points.len());
             let mut row = if stop.load(Ordering::Relaxed) {
                 let mut row = inputs_row(&name, case);
                 row.insert("status".into(), Value::from(NOT_STARTED));
@@ -532,31 +532,14 @@ pub fn run(
     Ok((rows, stop.load(Ordering::Relaxed)))
 }
 
-/// Removes what an earlier output left in `dir` that a sweep of `count`
-/// points does not write again: a larger sweep's point directories (run
-/// directories named `point-` and digits) and a single run's files.
+/// [`RunDir::remove_stale_points`], its failure named.
 pub fn remove_stale_points(dir: &Path, count: usize) -> Result<(), Failure> {
-    let ours = |name: &str| (0..count).any(|k| point_name(k, count) == name);
-    let stale = |name: &str| RunDir::is_point_name(name) && !ours(name);
-    let run_dir = RunDir::new(dir);
-    let display = dir.display();
-    run_dir.remove_runs_named(stale).map_err(|e| {
+    RunDir::new(dir).remove_stale_points(count).map_err(|e| {
         Failure::BadInput(format!(
-            "cannot remove an earlier sweep's points in {display}: {e}"
-        ))
-    })?;
-    run_dir.remove_run().map_err(|e| {
-        Failure::BadInput(format!(
-            "cannot remove an earlier run's files in {display}: {e}"
+            "cannot remove an earlier sweep's points or run in {}: {e}",
+            dir.display()
         ))
     })
-}
-
-/// The directory name of point `k` of `count`: `point-NNNN` (at least four
-/// digits, all of the same width).
-pub fn point_name(k: usize, count: usize) -> String {
-    let width = count.saturating_sub(1).to_string().len().max(4);
-    format!("{}{k:0width$}", RunDir::POINT_PREFIX)
 }
 
 /// A row's first columns: the point and the operating point it runs at.

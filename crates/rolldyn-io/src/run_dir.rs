@@ -161,6 +161,23 @@ impl RunDir {
             .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
     }
 
+    /// The directory name of point `k` of a sweep of `count` points:
+    /// `point-NNNN` (at least four digits, all of the same width).
+    pub fn point_name(k: usize, count: usize) -> String {
+        let width = count.saturating_sub(1).to_string().len().max(4);
+        format!("{}{k:0width$}", Self::POINT_PREFIX)
+    }
+
+    /// Prepares this directory for a sweep of `count` points: removes the
+    /// point directories an earlier, larger sweep left that this one does
+    /// not write again, and an earlier single run's files
+    /// ([`Self::remove_run`]).
+    pub fn remove_stale_points(&self, count: usize) -> std::io::Result<()> {
+        let ours = |name: &str| (0..count).any(|k| Self::point_name(k, count) == name);
+        self.remove_runs_named(|name| Self::is_point_name(name) && !ours(name))?;
+        self.remove_run()
+    }
+
     /// Removes an earlier sweep written into this directory: its tables,
     /// its report and its point run directories. A fresh run's files would
     /// otherwise sit beside them, and a report would describe the sweep.
@@ -293,6 +310,8 @@ mod tests {
         run.remove_sweep().unwrap();
         assert!(RunDir::is_point_name("point-0012") && !RunDir::is_point_name("point-"));
         assert!(!RunDir::is_point_name("point-12a") && !RunDir::is_point_name("points-1"));
+        assert_eq!(RunDir::point_name(3, 12), "point-0003");
+        assert_eq!(RunDir::point_name(3, 12_000), "point-00003");
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -568,7 +568,7 @@ fn run_point(
 /// The directory name of point `k` of `count` (`point-NNNN`).
 #[pyfunction]
 fn point_name(k: usize, count: usize) -> String {
-    run_sweep::point_name(k, count)
+    rolldyn_io::RunDir::point_name(k, count)
 }
 
 /// Removes the point directories an earlier, larger sweep left in
