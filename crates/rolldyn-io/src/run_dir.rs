@@ -173,7 +173,12 @@ impl RunDir {
     /// not write again, and an earlier single run's files
     /// ([`Self::remove_run`]).
     pub fn remove_stale_points(&self, count: usize) -> std::io::Result<()> {
-        let ours = |name: &str| (0..count).any(|k| Self::point_name(k, count) == name);
+        // Ours: `point-` and the number k < count, written at this width.
+        let ours = |name: &str| {
+            name.strip_prefix(Self::POINT_PREFIX)
+                .and_then(|n| n.parse::<usize>().ok())
+                .is_some_and(|k| k < count && Self::point_name(k, count) == name)
+        };
         self.remove_runs_named(|name| Self::is_point_name(name) && !ours(name))?;
         self.remove_run()
     }
