@@ -20,6 +20,11 @@ output that script reads).
         [--figure docs/figures/work-precision.png]
     python3 scripts/work-precision.py --defaults-only --reference-integrator auto \\
         --cases "6205 outer pit,6205 inner pit,6205 ball pit"  # also 6203, 6206
+    # docs/figures/work-precision-pit-ramp.png: the two runs' --raw files merged
+    # ({"results": {...both...}}), then --from-raw FILE --figure F
+    RAYON_NUM_THREADS=1 python3 scripts/work-precision.py --cases "6205 outer pit" \\
+        --reference-integrator auto --raw A.json   # about 10 minutes
+    RAYON_NUM_THREADS=1 python3 scripts/work-precision.py --cases "7218B ramp" --raw B.json  # about 1 hour
 
 Prints a Markdown table per case. About 50 minutes on one thread for the
 6304 and the default case over 1 s (the default case's reference at
@@ -47,6 +52,9 @@ CASES = {
         "--duration", "0.1 s",
         "--set", 'surface.outer.spall=[{ position = "270 deg", length = "0.533 mm", depth = "0.28 mm" }]',
         "--set", "operating.force_z=1 kN"]),
+    # Zhang et al. 2025's speed ramp (examples/seed002) as the 7218B preset
+    # writes it: the idle and most of the ramp, 1.2 s, FASTSIM 48 x 20.
+    "7218B ramp": (["new", "--preset", "7218B"], []),
 }
 # The fault matrix's pits (D_w/15 long, D_w/28 deep, at the load zone's
 # centre) on the mounted 6205 under 1 kN at 1772 rpm, 0.2 s: whether the
@@ -223,6 +231,7 @@ def plot(results, exudyn, path, cost):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    import matplotlib.ticker
     fig, axes = plt.subplots(1, len(results), figsize=(5.2 * len(results), 4.2), squeeze=False)
     for ax, (name, (reference, rows, defaults)) in zip(axes[0], results.items()):
         for integrator, marker in zip(INTEGRATORS, "os^"):
@@ -236,6 +245,7 @@ def plot(results, exudyn, path, cost):
         if name == "6304" and exudyn is not None and cost == "wall":
             ax.loglog([max(p[2], 1e-7) for p in exudyn[1]], [p[1] for p in exudyn[1]], "x--",
                       label="Exudyn DOPRI5 (cage speed only)")
+        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.set_xlabel("largest relative error of the outputs")
         ax.set_ylabel("wall time [s], one thread" if cost == "wall" else "right-hand sides (stages and Jacobian columns)")
         ax.set_title(name)

@@ -244,6 +244,8 @@ pub struct Cage {
     pub pocket_min_film: f64,
     /// Cavitation condition of the squeeze damping.
     pub pocket_squeeze_cavitation: rolldyn::cage::SqueezeCavitation,
+    /// Largest suction of the pocket film (vapour cavitation) \[Pa\].
+    pub pocket_squeeze_tension: f64,
     /// Cage material, if given.
     pub material: Option<NamedMaterial>,
     /// Unbalance m_u e \[kg·m\].

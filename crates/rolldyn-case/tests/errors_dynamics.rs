@@ -167,10 +167,8 @@ fn pocket_laws_and_the_pocket_squeeze_film() {
     let s = dynamics(&lubricated).unwrap().cage.pocket_squeeze.unwrap();
     assert_eq!((s.viscosity, s.min_film), (0.05, 1e-6));
     assert!((s.ball_radius - 3.175e-3).abs() < 1e-15);
-    assert_eq!(
-        s.cavitation,
-        rolldyn::cage::SqueezeCavitation::HalfSommerfeld
-    );
+    assert_eq!(s.cavitation, rolldyn::cage::SqueezeCavitation::Vapour);
+    assert_eq!(s.tension, rolldyn::cage::squeeze::ATMOSPHERIC_TENSION);
     let with = |line: &str| {
         lubricated.replace(
             "pocket_squeeze_film = true\n",
@@ -187,6 +185,31 @@ fn pocket_laws_and_the_pocket_squeeze_film() {
             .cavitation,
         rolldyn::cage::SqueezeCavitation::FullFilm
     );
+    let held = with("pocket_squeeze_tension = \"50 kPa\"");
+    assert_eq!(
+        dynamics(&held)
+            .unwrap()
+            .cage
+            .pocket_squeeze
+            .unwrap()
+            .tension,
+        5e4
+    );
+    let e = err(&with("pocket_squeeze_tension = \"-1 kPa\""));
+    assert_eq!(e.key.as_deref(), Some("cage.pocket_squeeze_tension"), "{e}");
+    // The cut-off is built for cylindrical pockets; a spherical pocket
+    // must say which idealisation it takes.
+    let spherical = with("pocket_shape = \"spherical\"");
+    let e = err(&spherical);
+    assert_eq!(
+        e.key.as_deref(),
+        Some("cage.pocket_squeeze_cavitation"),
+        "{e}"
+    );
+    assert!(e.rule.contains("cylindrical pockets only"), "{e}");
+    let spherical_half =
+        with("pocket_shape = \"spherical\"\npocket_squeeze_cavitation = \"half_sommerfeld\"");
+    assert!(dynamics(&spherical_half).is_ok());
     let e = err(&with("pocket_min_film = \"0.1 mm\""));
     assert_eq!(e.key.as_deref(), Some("cage.pocket_min_film"), "{e}");
     assert!(e.rule.contains("half of cage.pocket_clearance"), "{e}");

@@ -35,6 +35,12 @@ pub(super) fn cage(c: &RawCage) -> Result<Cage, Invalid> {
         pocket_min_film: checked("cage.pocket_min_film", &c.pocket_min_film, positive)?
             .unwrap_or(DEFAULT_POCKET_MIN_FILM),
         pocket_squeeze_cavitation: c.pocket_squeeze_cavitation.unwrap_or_default(),
+        pocket_squeeze_tension: checked(
+            "cage.pocket_squeeze_tension",
+            &c.pocket_squeeze_tension,
+            positive,
+        )?
+        .unwrap_or(rolldyn::cage::squeeze::ATMOSPHERIC_TENSION),
         material: c
             .material
             .as_ref()

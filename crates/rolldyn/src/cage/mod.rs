@@ -109,6 +109,15 @@ impl CageParameters {
                     ),
                 ));
             }
+            if squeeze.cavitation == SqueezeCavitation::Vapour
+                && self.pocket_shape == PocketShape::Spherical
+            {
+                return Err(InvalidParameter::new(
+                    "pocket_squeeze_cavitation",
+                    "vapour",
+                    "the vapour cut-off is built for cylindrical pockets only (use half_sommerfeld or full_film with spherical pockets)",
+                ));
+            }
         }
         self.pocket_friction.validate()?;
         require_non_negative("unbalance", self.unbalance)
@@ -219,6 +228,7 @@ mod tests {
             ball_radius: 4e-3,
             min_film: 1e-6,
             cavitation: SqueezeCavitation::HalfSommerfeld,
+            tension: squeeze::ATMOSPHERIC_TENSION,
         });
         c.validate().unwrap();
         c.pocket_squeeze.as_mut().unwrap().min_film = 0.0875e-3;

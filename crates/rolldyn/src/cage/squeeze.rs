@@ -6,8 +6,11 @@
 //! undamped mode (the 3.6–3.8 kHz rattle of docs/validation.md). An oil
 //! film between approaching surfaces resists the approach: this module
 //! adds that squeeze-film force, from the isoviscous Reynolds equation for
-//! rigid surfaces with the half-Sommerfeld (Gümbel) condition, i.e. only
-//! the film being squeezed carries pressure; the one being opened cavitates.
+//! rigid surfaces. The film being squeezed carries pressure; the one being
+//! opened holds suction down to the oil's vapour pressure
+//! (`SqueezeCavitation::Vapour`, the default, [`PocketSqueeze::force`]),
+//! none (half-Sommerfeld, Gümbel: it cavitates at ambient pressure) or any
+//! (full Sommerfeld).
 //!
 //! Ball radius R, per-side clearance c, ball-centre offset d = ε c
 //! towards the wall, approach rate ḋ. The gap at angle φ from the
@@ -48,7 +51,11 @@
 //! the spherical one has the same pressure gradient on both hemispheres,
 //! the damping is the sum of the two sides' (full sphere at ε = 0:
 //! 8π η R⁴/c³). It is smooth in ḋ; the half-Sommerfeld damping changes
-//! at ḋ = 0 from one side's film to the other's. The film on the approached side is held at
+//! at ḋ = 0 from one side's film to the other's. The vapour cut-off takes
+//! from the full film what the opened side's suction cannot hold (each
+//! strip's pressure clipped at the tension T; Sun & Brewe 1992 for why the
+//! vapour pressure, not ambient, bounds a film opened within microseconds;
+//! docs/dynamics.md, "Pocket squeeze film"). The film on the approached side is held at
 //! h ≥ h_min (`min_film`, e.g. the composite roughness), i.e. ε ≤ 1 −
 //! h_min/c; beyond the wall (d > c, the solid contact of the normal law)
 //! the squeeze damping stays at its h_min value. The force is purely
@@ -72,12 +79,24 @@ use std::sync::OnceLock;
 #[serde(rename_all = "snake_case")]
 pub enum SqueezeCavitation {
     /// Half-Sommerfeld (Gümbel): only the squeezed side; the opened side
-    /// cavitates.
-    #[default]
+    /// cavitates at ambient pressure.
     HalfSommerfeld,
     /// Full-Sommerfeld: both sides, the opened one in tension.
     FullFilm,
+    /// Both sides, the opened one in tension down to the oil's vapour
+    /// pressure: its suction is cut off at [`PocketSqueeze::tension`]
+    /// (cylindrical pockets). A cavity fills with vapour quickly, while
+    /// dissolved air is far too slow to come out of solution (Sun & Brewe
+    /// 1992), so a film opened within microseconds cavitates near the
+    /// vapour pressure, not at ambient.
+    #[default]
+    Vapour,
 }
+
+/// Default [`PocketSqueeze::tension`] \[Pa\]: a bath at standard
+/// atmospheric pressure, whose oil cavitates at its vapour pressure
+/// (below 1 Pa for mineral oils at bearing temperatures: taken as 0).
+pub const ATMOSPHERIC_TENSION: f64 = 101_325.0;
 
 /// Squeeze-film damping of the pocket oil film.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -91,6 +110,9 @@ pub struct PocketSqueeze {
     pub min_film: f64,
     /// Which side of the film carries pressure.
     pub cavitation: SqueezeCavitation,
+    /// Largest suction the opened film holds, ambient less vapour
+    /// pressure \[Pa\] ([`SqueezeCavitation::Vapour`] only).
+    pub tension: f64,
 }
 
 impl PocketSqueeze {
@@ -98,7 +120,8 @@ impl PocketSqueeze {
     pub fn validate(&self) -> Result<(), InvalidParameter> {
         require_non_negative("pocket_squeeze_viscosity", self.viscosity)?;
         require_positive("ball_radius", self.ball_radius)?;
-        require_positive("pocket_min_film", self.min_film)
+        require_positive("pocket_min_film", self.min_film)?;
+        require_positive("pocket_squeeze_tension", self.tension)
     }
 
     /// Squeeze-film force on the ball \[N\] at offset d from the pocket
@@ -107,22 +130,95 @@ impl PocketSqueeze {
     /// pocket centre. Its sign is that of ḋ, so F ḋ ≥ 0.
     #[inline]
     pub fn force(&self, shape: PocketShape, offset: f64, half_clearance: f64, rate: f64) -> f64 {
-        self.damping(shape, offset, half_clearance, rate) * rate
+        let full = self.damping(shape, offset, half_clearance, rate) * rate;
+        match self.cavitation {
+            SqueezeCavitation::Vapour => {
+                full - self.suction_cut(shape, offset, half_clearance, rate)
+            }
+            _ => full,
+        }
     }
 
     /// Damping coefficient F/ḋ \[N·s/m\] for an approach rate of the sign
-    /// of `rate`.
+    /// of `rate` (for [`SqueezeCavitation::Vapour`], the full film's: the
+    /// cut-off makes its force nonlinear in ḋ, [`Self::force`]).
     #[inline]
     pub fn damping(&self, shape: PocketShape, offset: f64, half_clearance: f64, rate: f64) -> f64 {
         match self.cavitation {
             SqueezeCavitation::HalfSommerfeld => {
                 self.side_damping(shape, offset, half_clearance, rate)
             }
-            SqueezeCavitation::FullFilm => {
+            SqueezeCavitation::FullFilm | SqueezeCavitation::Vapour => {
                 self.side_damping(shape, offset, half_clearance, 1.0)
                     + self.side_damping(shape, offset, half_clearance, -1.0)
             }
         }
+    }
+
+    /// The force the opened film loses to its suction's cut-off at the
+    /// tension T, of the sign of `rate` (so that the force stays F ḋ ≥ 0).
+    /// Each strip of the cylindrical pocket's film (angle φ, gap
+    /// h₀ = c(1 − ε_o cos φ) on the opened side, opened at V = |ḋ| cos φ)
+    /// has the pressure −6ηVR/h(x)², h = h₀(1 + ξ²), x = ξ√(2Rh₀); where
+    /// its peak p₀ = 6ηVR/h₀² exceeds T it is held at −T for |ξ| < ξ_c,
+    /// ξ_c² = √(p₀/T) − 1, which takes from the strip's force per unit
+    /// length
+    /// ```text
+    /// Δ = 2√(2Rh₀) [p₀ (ξ_c/(2(1 + ξ_c²)) + atan(ξ_c)/2) − T ξ_c]
+    /// ```
+    /// (0 at ξ_c = 0; the whole force but 2T x_c as ξ_c → ∞). The cut is
+    /// R ∫ Δ cos φ dφ over the strips whose peak exceeds T, cos φ > u_c
+    /// (p₀ grows with cos φ), by 8-point Gauss–Legendre on intervals that
+    /// double from the width √(1 − ε_o) of the film's narrowest part.
+    fn suction_cut(&self, shape: PocketShape, offset: f64, c: f64, rate: f64) -> f64 {
+        if rate == 0.0 || shape != PocketShape::Cylindrical {
+            return 0.0;
+        }
+        let (r, tension) = (self.ball_radius, self.tension);
+        let most = 1.0 - self.min_film / c;
+        let toward = (offset / c).min(1.0);
+        // The opened side: the far wall while approaching the near one.
+        let e = if rate > 0.0 { -toward } else { toward }.min(most);
+        let k = 6.0 * self.viscosity * rate.abs() * r;
+        let peak = |u: f64| k * u / (c * (1.0 - e * u)).powi(2);
+        if peak(1.0) <= tension {
+            return 0.0;
+        }
+        // p₀(u_c) = T: T c² (1 − e u)² = k u, the root in (0, 1].
+        let (qa, qb, qc) = (
+            tension * c * c * e * e,
+            -(2.0 * tension * c * c * e + k),
+            tension * c * c,
+        );
+        let u_c = if qa.abs() < 1e-300 {
+            -qc / qb
+        } else {
+            // The smaller root (the larger lies beyond 1/e).
+            (2.0 * qc) / (-qb + (qb * qb - 4.0 * qa * qc).max(0.0).sqrt())
+        };
+        let phi_c = u_c.clamp(0.0, 1.0).acos();
+        let strip = |phi: f64| {
+            let u = phi.cos();
+            let h0 = c * (1.0 - e * u);
+            let p0 = peak(u);
+            if p0 <= tension {
+                return 0.0;
+            }
+            let xi = ((p0 / tension).sqrt() - 1.0).sqrt();
+            let cut = 2.0
+                * (2.0 * r * h0).sqrt()
+                * (p0 * (xi / (2.0 * (1.0 + xi * xi)) + 0.5 * xi.atan()) - tension * xi);
+            cut.max(0.0) * u
+        };
+        let mut width = (1.0 - e).max(0.0).sqrt().min(phi_c).max(1e-3 * phi_c);
+        let (mut start, mut sum) = (0.0, 0.0);
+        while start < phi_c {
+            let end = (start + width).min(phi_c);
+            sum += gauss_legendre_8(&strip, start, end);
+            start = end;
+            width *= 2.0;
+        }
+        2.0 * r * sum * rate.signum()
     }
 
     /// The damping of one side's film: the side approached at a rate of
@@ -227,6 +323,22 @@ pub fn cylinder_film_quadrature(x: f64) -> f64 {
     }
 }
 
+/// 8-point Gauss–Legendre rule on [a, b] (Abramowitz & Stegun, Table 25.4).
+fn gauss_legendre_8(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+    const NODES: [(f64, f64); 4] = [
+        (0.183_434_642_495_649_8, 0.362_683_783_378_362_0),
+        (0.525_532_409_916_329_0, 0.313_706_645_877_887_3),
+        (0.796_666_477_413_626_7, 0.222_381_034_453_374_5),
+        (0.960_289_856_497_536_3, 0.101_228_536_290_376_3),
+    ];
+    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+    NODES
+        .iter()
+        .map(|&(x, w)| w * (f(mid - half * x) + f(mid + half * x)))
+        .sum::<f64>()
+        * half
+}
+
 /// Composite Simpson rule, 2000 intervals (smooth integrands: error
 /// below 1e-12).
 fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
@@ -305,6 +417,7 @@ mod tests {
             ball_radius: 4e-3,
             min_film: 1e-8,
             cavitation: SqueezeCavitation::HalfSommerfeld,
+            tension: ATMOSPHERIC_TENSION,
         }
     }
 
@@ -377,6 +490,89 @@ mod tests {
                 assert_eq!(full.damping(shape, d, c, -1.0), both);
             }
         }
+    }
+
+    /// The opened film's force by brute force: each strip's pressure
+    /// max(−6ηVR/h², −T) summed over ξ (midpoint, to |ξ| = 400) and φ.
+    fn brute_opened(s: &PocketSqueeze, e: f64, c: f64, speed: f64, tension: f64) -> f64 {
+        let (r, eta) = (s.ball_radius, s.viscosity);
+        let (n_phi, n_xi, top) = (2000, 40_000, 400.0);
+        let mut total = 0.0;
+        for i in 0..n_phi {
+            let phi = (i as f64 + 0.5) * 0.5 * PI / n_phi as f64;
+            let u = phi.cos();
+            let h0 = c * (1.0 - e * u);
+            let p0 = 6.0 * eta * speed * u * r / (h0 * h0);
+            // ξ on a grid graded as ξ = top t³, t ∈ (0, 1).
+            let mut strip = 0.0;
+            for j in 0..n_xi {
+                let t = (j as f64 + 0.5) / n_xi as f64;
+                let xi = top * t.powi(3);
+                let p = (p0 / (1.0 + xi * xi).powi(2)).min(tension);
+                strip += p * 3.0 * top * t * t / n_xi as f64;
+            }
+            total += 2.0 * (2.0 * r * h0).sqrt() * strip * u * 0.5 * PI / n_phi as f64;
+        }
+        2.0 * r * total
+    }
+
+    #[test]
+    fn vapour_cut_off_takes_what_the_suction_cannot_hold() {
+        let full = PocketSqueeze {
+            cavitation: SqueezeCavitation::FullFilm,
+            min_film: 1e-6,
+            ..squeeze()
+        };
+        let shape = PocketShape::Cylindrical;
+        let c = 1e-4;
+        for tension in [1e3, 1e5, 1e7] {
+            let vapour = PocketSqueeze {
+                cavitation: SqueezeCavitation::Vapour,
+                tension,
+                ..full
+            };
+            let half = PocketSqueeze {
+                cavitation: SqueezeCavitation::HalfSommerfeld,
+                ..full
+            };
+            for (d, rate) in [
+                (0.0, 1e-3),
+                (0.5 * c, -0.02),
+                (0.99 * c, -0.5),
+                (0.99 * c, 0.3),
+                (0.3 * c, 2.0),
+            ] {
+                let got = vapour.force(shape, d, c, rate);
+                let squeezed = half.force(shape, d, c, rate);
+                let opened_full = full.force(shape, d, c, rate) - squeezed;
+                let e = if rate > 0.0 { -d / c } else { d / c };
+                let want =
+                    squeezed + rate.signum() * brute_opened(&full, e, c, rate.abs(), tension);
+                assert!(
+                    (got - want).abs() <= 2e-4 * opened_full.abs() + 1e-12 * squeezed.abs(),
+                    "T {tension}, d {d}, ḋ {rate}: {got} vs {want} (opened film {opened_full})"
+                );
+                // Between the two idealisations, and dissipative.
+                let (lo, hi) = (squeezed.abs(), full.force(shape, d, c, rate).abs());
+                assert!(got.abs() >= lo * (1.0 - 1e-12) && got.abs() <= hi * (1.0 + 1e-12));
+                assert!(got * rate >= 0.0);
+                if tension == 1e3 && d > 0.9 * c && rate < 0.0 {
+                    // A fast rebound from the near wall: most of its
+                    // suction is cut off.
+                    assert!(got.abs() < lo + 0.05 * (hi - lo), "{got} in [{lo}, {hi}]");
+                }
+            }
+        }
+        // Slow: the suction stays below the tension and the film is whole.
+        let vapour = PocketSqueeze {
+            cavitation: SqueezeCavitation::Vapour,
+            tension: ATMOSPHERIC_TENSION,
+            ..full
+        };
+        assert_eq!(
+            vapour.force(shape, 0.9 * c, c, -1e-5),
+            full.force(shape, 0.9 * c, c, -1e-5)
+        );
     }
 
     #[test]

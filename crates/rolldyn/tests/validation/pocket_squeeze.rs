@@ -51,6 +51,7 @@ fn model(squeeze: bool) -> BearingModel {
         ball_radius: 0.5 * g.ball_diameter,
         min_film: 1e-6,
         cavitation: SqueezeCavitation::HalfSommerfeld,
+        tension: rolldyn::cage::squeeze::ATMOSPHERIC_TENSION,
     });
     BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap()
 }
