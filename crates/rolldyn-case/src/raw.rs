@@ -194,9 +194,9 @@ pub struct RawCage {
     /// 1 µm, of the order of the pocket's composite roughness).
     pub pocket_min_film: Option<Quantity<Length>>,
     /// Which side of the pocket film carries pressure in the squeeze
-    /// damping: "half_sommerfeld" (default; the opened side cavitates),
-    /// "full_film" or "vapour" (the opened side's suction held down to
-    /// the tension).
+    /// damping: "vapour" (default; the opened side's suction held down
+    /// to the tension), "half_sommerfeld" (the opened side cavitates) or
+    /// "full_film".
     pub pocket_squeeze_cavitation: Option<rolldyn::cage::SqueezeCavitation>,
     /// Largest suction the pocket film holds with "vapour" cavitation:
     /// ambient less the oil's vapour pressure (default 101.325 kPa).
