@@ -198,7 +198,8 @@ def main():
             results[name] = (reference, rows, defaults)
         exudyn = exudyn_points() if args.exudyn else None
     for name, (reference, rows, defaults) in results.items():
-        print(f"\n{name}: reference {args.reference_integrator} at rtol {REFERENCE:g} "
+        by = "" if args.from_raw else f" {args.reference_integrator}"
+        print(f"\n{name}: reference{by} at rtol {REFERENCE:g} "
               f"({reference['wall']:.1f} s, "
               f"{reference['steps']} steps)")
         names = list(reference["outputs"])

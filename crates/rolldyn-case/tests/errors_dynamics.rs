@@ -168,7 +168,7 @@ fn pocket_laws_and_the_pocket_squeeze_film() {
     assert_eq!((s.viscosity, s.min_film), (0.05, 1e-6));
     assert!((s.ball_radius - 3.175e-3).abs() < 1e-15);
     assert_eq!(s.cavitation, rolldyn::cage::SqueezeCavitation::Vapour);
-    assert_eq!(s.tension, rolldyn::cage::squeeze::ATMOSPHERIC_TENSION);
+    assert_eq!(s.tension, rolldyn::cage::squeeze::DEFAULT_POCKET_TENSION);
     let with = |line: &str| {
         lubricated.replace(
             "pocket_squeeze_film = true\n",
@@ -197,10 +197,21 @@ fn pocket_laws_and_the_pocket_squeeze_film() {
     );
     let e = err(&with("pocket_squeeze_tension = \"-1 kPa\""));
     assert_eq!(e.key.as_deref(), Some("cage.pocket_squeeze_tension"), "{e}");
-    // The cut-off is built for cylindrical pockets; a spherical pocket
-    // must say which idealisation it takes.
+    // The cut-off is built for cylindrical pockets: a spherical pocket
+    // keeps half-Sommerfeld by default, and refuses the cut-off.
     let spherical = with("pocket_shape = \"spherical\"");
-    let e = err(&spherical);
+    assert_eq!(
+        dynamics(&spherical)
+            .unwrap()
+            .cage
+            .pocket_squeeze
+            .unwrap()
+            .cavitation,
+        rolldyn::cage::SqueezeCavitation::HalfSommerfeld
+    );
+    let e = err(&with(
+        "pocket_shape = \"spherical\"\npocket_squeeze_cavitation = \"vapour\"",
+    ));
     assert_eq!(
         e.key.as_deref(),
         Some("cage.pocket_squeeze_cavitation"),

@@ -228,7 +228,7 @@ mod tests {
             ball_radius: 4e-3,
             min_film: 1e-6,
             cavitation: SqueezeCavitation::HalfSommerfeld,
-            tension: squeeze::ATMOSPHERIC_TENSION,
+            tension: squeeze::DEFAULT_POCKET_TENSION,
         });
         c.validate().unwrap();
         c.pocket_squeeze.as_mut().unwrap().min_film = 0.0875e-3;

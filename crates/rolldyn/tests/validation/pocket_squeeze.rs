@@ -51,7 +51,7 @@ fn model(squeeze: bool) -> BearingModel {
         ball_radius: 0.5 * g.ball_diameter,
         min_film: 1e-6,
         cavitation: SqueezeCavitation::HalfSommerfeld,
-        tension: rolldyn::cage::squeeze::ATMOSPHERIC_TENSION,
+        tension: rolldyn::cage::squeeze::DEFAULT_POCKET_TENSION,
     });
     BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap()
 }
