@@ -99,11 +99,12 @@ const IMPACT_MEANS: [&str; 3] = [
 /// flagged.
 #[test]
 fn low_speed_ehl_closes_its_balance() {
-    // 20 ms of the case's 50: after about 20 ms at this speed the cage and
-    // balls settle into a motion under their weights that takes a hundred
-    // times the steps (docs/dynamics.md, "Limits"); the balance failed
-    // from the first milliseconds.
-    let at_500 = ["--speed", "500 rpm", "--duration", "20 ms", "--verify"];
+    // The case's 50 ms: after about 30 ms at this speed the cage rests on
+    // light pocket contacts and jitters on them, which took a hundred times
+    // the steps with the half-Sommerfeld pocket film and takes few with the
+    // vapour cut-off, the default (docs/dynamics.md, "Limits"); the balance
+    // failed from the first milliseconds.
+    let at_500 = ["--speed", "500 rpm", "--duration", "50 ms", "--verify"];
     let (s, _) = run("500rpm", &at_500, None);
     assert_converged("500 rpm", &s, &MEANS);
     // Without gravity at 100 rpm: the 3 g cage, started centred, drops
