@@ -67,15 +67,21 @@ impl Override {
         };
         let key = key.trim();
         let raw = raw.trim();
-        let value = toml::from_str::<Table>(&format!("v = {raw}"))
-            .ok()
-            .and_then(|mut t| t.remove("v"))
-            .unwrap_or_else(|| Value::String(raw.to_string()));
         Ok(Self {
             key: key.to_string(),
-            value,
+            value: Self::value_from_text(raw),
             text: source.describe(&format!("{key}={raw}")),
         })
+    }
+
+    /// A value as `--set` reads its text: a TOML value when it is one
+    /// (`22`, `true`, `"6.35 mm"`, `{ law = "hertz" }`), the text itself
+    /// as a string otherwise (`6.35 mm`).
+    pub fn value_from_text(raw: &str) -> Value {
+        toml::from_str::<Table>(&format!("v = {raw}"))
+            .ok()
+            .and_then(|mut t| t.remove("v"))
+            .unwrap_or_else(|| Value::String(raw.to_string()))
     }
 
     /// A typed value for `key` from `source`: a number (`0.1`), or a

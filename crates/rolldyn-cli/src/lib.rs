@@ -75,11 +75,38 @@ pub struct CaseOverrides {
     /// Override any key: --set bearing.ball_count=22 (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
     pub set: Vec<String>,
-    /// The `set` assignments came from Python's `Case.set`, not `--set`
-    /// (messages name them so).
+    /// Typed assignments from Python's `Case.set`, applied before the
+    /// `set`s (so that `--resume --until` extends such a run).
     #[arg(skip)]
-    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
-    pub from_python: bool,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub values: Vec<CaseValue>,
+}
+
+/// A case key's value set from Python (`Case.set`), typed: a number, a
+/// bool, a string with its unit, an array or a table, as a case file
+/// holds it; `run.json` records it as it is.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct CaseValue {
+    /// Dotted key, e.g. `operating.speed`.
+    pub key: String,
+    /// The value.
+    pub value: toml::Value,
+}
+
+impl CaseValue {
+    /// The `--set KEY=VALUE` text that sets the same value: a string as
+    /// it is where `--set` reads it back as that string (`operating.speed=3000
+    /// rpm`), anything else as TOML (`bearing.ball_count=22`).
+    pub fn set_text(&self) -> String {
+        match &self.value {
+            toml::Value::String(s)
+                if s.trim() == s && Override::value_from_text(s) == self.value =>
+            {
+                format!("{}={s}", self.key)
+            }
+            other => format!("{}={other}", self.key),
+        }
+    }
 }
 
 /// Output directory of `rolldyn run` when none is given.
@@ -151,7 +178,7 @@ pub fn bad_arg(flag: &str, value: &str, rule: impl std::fmt::Display) -> Failure
 impl CaseOverrides {
     /// The case's overrides, in the order they apply: the operating
     /// point's flags ([`Self::operating_flags`]), `--fix-tilt`,
-    /// `--misalignment`, then the `--set`s.
+    /// `--misalignment`, Python's typed values, then the `--set`s.
     pub fn overrides(&self) -> Result<Vec<Override>, Failure> {
         let mut out: Vec<Override> = self.operating_flags().into_iter().flatten().collect();
         if self.fix_tilt {
@@ -160,13 +187,13 @@ impl CaseOverrides {
         if let Some(a) = &self.misalignment {
             out.push(Override::flag("--misalignment", "operating.tilt_y", a));
         }
-        let source = if self.from_python {
-            OverrideSource::Python
-        } else {
-            OverrideSource::CommandLine
-        };
+        out.extend(
+            self.values
+                .iter()
+                .map(|v| Override::typed(&v.key, v.value.clone(), OverrideSource::Python)),
+        );
         for s in &self.set {
-            out.push(Override::parse_from(s, source)?);
+            out.push(Override::parse_set(s)?);
         }
         Ok(out)
     }
@@ -316,6 +343,55 @@ mod tests {
         same(
             format!("{:?}", spectrum::SpectrumArgs::default()),
             format!("{:?}", parsed::<spectrum::SpectrumArgs>(&[""])),
+        );
+    }
+
+    /// A typed value's `--set` text sets the same value, and a run's
+    /// record reads back the values it wrote; `--set`s apply after them
+    /// (`--resume --until` extends a run from Python).
+    #[test]
+    fn typed_values_replay_as_set_text_and_apply_before_the_sets() {
+        use super::{CaseOverrides, CaseValue};
+        use rolldyn_case::Override;
+        let table: toml::Value =
+            toml::from_str("depth = \"20 um\"\nposition = \"90 deg\"").unwrap();
+        let values = [
+            toml::Value::String("3000 rpm".into()),
+            toml::Value::String("22".into()),
+            toml::Value::String(" padded".into()),
+            toml::Value::Integer(22),
+            toml::Value::Float(0.1 + 0.2),
+            toml::Value::Boolean(true),
+            toml::Value::Array(vec![table]),
+        ];
+        for value in values {
+            let v = CaseValue {
+                key: "a.b".into(),
+                value,
+            };
+            let back = Override::parse_set(&v.set_text()).unwrap();
+            assert_eq!(
+                (back.key.as_str(), &back.value),
+                ("a.b", &v.value),
+                "{}",
+                v.set_text()
+            );
+        }
+        let record = CaseOverrides {
+            set: vec!["solver.duration=2 ms".into()],
+            values: vec![CaseValue {
+                key: "solver.duration".into(),
+                value: toml::Value::String("1 ms".into()),
+            }],
+            ..Default::default()
+        };
+        let json = serde_json::to_string(&record).unwrap();
+        let read: CaseOverrides = serde_json::from_str(&json).unwrap();
+        assert_eq!(read, record);
+        let applied = read.overrides().unwrap();
+        assert_eq!(
+            applied.last().unwrap().value,
+            toml::Value::String("2 ms".into())
         );
     }
 }

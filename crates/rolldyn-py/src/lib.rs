@@ -5,7 +5,9 @@
 //! (`rolldyn_cli`, the application layer), so a case gives the same
 //! numbers from Python as from the CLI. A case crosses the boundary as its
 //! source name, its TOML text (None: the built-in default case) and its
-//! `KEY=VALUE` overrides, as `run.json` records it; reports come back as
+//! values set from Python, typed (`(key, value)` pairs: numbers, bools,
+//! strings with their units, lists, dicts), as `run.json` records them;
+//! reports come back as
 //! Python dicts and lists built from the engine's report types (the keys
 //! and values of the CLI's `--json` output, docs/cli.md; no JSON text in
 //! between); time
@@ -21,8 +23,9 @@
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
+use pyo3::types::PyString;
 use rolldyn_case::catalogue::CatalogueBearing;
-use rolldyn_case::{Case, presets};
+use rolldyn_case::{Case, Override, presets};
 use rolldyn_cli::checkpoint::RunRecord;
 use rolldyn_cli::contact::{ContactArgs, evaluate};
 use rolldyn_cli::power::{self, PowerArgs};
@@ -33,7 +36,7 @@ use rolldyn_cli::run_options::RunOptions;
 use rolldyn_cli::spectrum::{self, SpectrumArgs};
 use rolldyn_cli::thermal::{self, ThermalArgs};
 use rolldyn_cli::traction::{self, TractionArgs};
-use rolldyn_cli::{CaseArgs, CaseOverrides, Failure, finite, parse_angle, run_sweep};
+use rolldyn_cli::{CaseArgs, CaseOverrides, CaseValue, Failure, finite, parse_angle, run_sweep};
 use std::path::Path;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
@@ -86,18 +89,43 @@ fn to_python<T: serde::Serialize>(py: Python<'_>, value: &T) -> PyResult<Py<PyAn
         .map_err(|e| PyRuntimeError::new_err(e.to_string()))
 }
 
-fn overrides(sets: Vec<String>) -> CaseOverrides {
-    CaseOverrides {
-        set: sets,
-        from_python: true,
+/// A case's values from Python, `(key, value)` pairs as `Case.set` keeps
+/// them.
+type Values<'py> = Vec<(String, Bound<'py, PyAny>)>;
+
+/// Python's values typed as a case file holds them: numbers, bools, lists
+/// and dicts cross as they are (a string inside them stays a string); a
+/// string on its own is read as `--set` reads its text (`"10000 rpm"`, or
+/// a TOML value: `"22"`, `"{ law = \"hertz\" }"`).
+fn case_values(values: Values<'_>) -> PyResult<Vec<CaseValue>> {
+    values
+        .into_iter()
+        .map(|(key, value)| {
+            let value = if value.is_instance_of::<PyString>() {
+                Override::value_from_text(value.extract::<String>()?.trim())
+            } else {
+                pythonize::depythonize::<toml::Value>(&value).map_err(|e| {
+                    CaseError::new_err(format!(
+                        "override `{key}={value}` (Case.set): {e}; expected a number, a bool, a string with its unit, or a list or dict of them"
+                    ))
+                })?
+            };
+            Ok(CaseValue { key, value })
+        })
+        .collect()
+}
+
+fn overrides(values: Values<'_>) -> PyResult<CaseOverrides> {
+    Ok(CaseOverrides {
+        values: case_values(values)?,
         ..Default::default()
-    }
+    })
 }
 
 /// Loads and validates a case: its source name, text (None: the built-in
-/// default) and overrides.
-fn load(source: &str, text: Option<&str>, sets: Vec<String>) -> PyResult<Case> {
-    overrides(sets).load_text(source, text).map_err(to_py)
+/// default) and values.
+fn load(source: &str, text: Option<&str>, values: Values<'_>) -> PyResult<Case> {
+    overrides(values)?.load_text(source, text).map_err(to_py)
 }
 
 /// Names and one-line descriptions of the built-in bearings.
@@ -122,52 +150,52 @@ fn preset_text(name: &str) -> PyResult<&'static str> {
 
 /// Validates the case; returns `rolldyn check --json`.
 #[pyfunction]
-#[pyo3(signature = (source, text, sets))]
+#[pyo3(signature = (source, text, values))]
 fn check(
     py: Python<'_>,
     source: &str,
     text: Option<&str>,
-    sets: Vec<String>,
+    values: Values<'_>,
 ) -> PyResult<Py<PyAny>> {
-    let case = load(source, text, sets)?;
+    let case = load(source, text, values)?;
     let report = CheckReport::new(source, &case).map_err(CaseError::new_err)?;
     to_python(py, &report)
 }
 
 /// `rolldyn frequencies --json`.
 #[pyfunction]
-#[pyo3(signature = (source, text, sets, angle=None))]
+#[pyo3(signature = (source, text, values, angle=None))]
 fn frequencies(
     py: Python<'_>,
     source: &str,
     text: Option<&str>,
-    sets: Vec<String>,
+    values: Values<'_>,
     angle: Option<String>,
 ) -> PyResult<Py<PyAny>> {
     let angle = parse_angle("angle", angle.as_ref()).map_err(to_py)?;
-    let case = load(source, text, sets)?;
+    let case = load(source, text, values)?;
     let report = FrequencyReport::new(&case, angle).map_err(CaseError::new_err)?;
     to_python(py, &report)
 }
 
 /// The case of a typed function: its source, text and overrides.
-fn case_args(source: String, text: Option<String>, sets: Vec<String>) -> CaseArgs {
-    CaseArgs {
+fn case_args(source: String, text: Option<String>, values: Values<'_>) -> PyResult<CaseArgs> {
+    Ok(CaseArgs {
         case: None,
-        overrides: overrides(sets),
+        overrides: overrides(values)?,
         given: Some((source, text)),
-    }
+    })
 }
 
 /// `rolldyn contact --json`.
 #[pyfunction]
-#[pyo3(signature = (source, text, sets, load, angle=None, entrainment_speed=None, radii=None, ball_on_flat=None, inlet_distance_ratio=None))]
+#[pyo3(signature = (source, text, values, load, angle=None, entrainment_speed=None, radii=None, ball_on_flat=None, inlet_distance_ratio=None))]
 #[allow(clippy::too_many_arguments)]
 fn contact(
     py: Python<'_>,
     source: String,
     text: Option<String>,
-    sets: Vec<String>,
+    values: Values<'_>,
     load: String,
     angle: Option<String>,
     entrainment_speed: Option<String>,
@@ -176,7 +204,7 @@ fn contact(
     inlet_distance_ratio: Option<f64>,
 ) -> PyResult<Py<PyAny>> {
     let args = ContactArgs {
-        case: case_args(source, text, sets),
+        case: case_args(source, text, values)?,
         load,
         angle,
         entrainment_speed,
@@ -196,15 +224,15 @@ fn contact(
 
 /// `rolldyn power --json`.
 #[pyfunction]
-#[pyo3(signature = (source, text, sets))]
+#[pyo3(signature = (source, text, values))]
 fn power_report(
     py: Python<'_>,
     source: String,
     text: Option<String>,
-    sets: Vec<String>,
+    values: Values<'_>,
 ) -> PyResult<Py<PyAny>> {
     let args = PowerArgs {
-        case: case_args(source, text, sets),
+        case: case_args(source, text, values)?,
         json: true,
     };
     let report = py.detach(|| power::report(&args)).map_err(to_py)?;
@@ -214,18 +242,18 @@ fn power_report(
 /// `rolldyn thermal --json` (`--transient`, `--steps`: None keeps the
 /// CLI's default).
 #[pyfunction]
-#[pyo3(signature = (source, text, sets, transient=None, steps=None))]
+#[pyo3(signature = (source, text, values, transient=None, steps=None))]
 fn thermal_report(
     py: Python<'_>,
     source: String,
     text: Option<String>,
-    sets: Vec<String>,
+    values: Values<'_>,
     transient: Option<String>,
     steps: Option<usize>,
 ) -> PyResult<Py<PyAny>> {
     let defaults = ThermalArgs::default();
     let args = ThermalArgs {
-        case: case_args(source, text, sets),
+        case: case_args(source, text, values)?,
         transient,
         steps: steps.unwrap_or(defaults.steps),
         ..defaults
@@ -237,13 +265,13 @@ fn thermal_report(
 /// `rolldyn traction --json`: every flag of the command as a keyword
 /// (None keeps the CLI's default).
 #[pyfunction]
-#[pyo3(signature = (source, text, sets, rolling_speed, ring=None, load=None, approach=None, angle=None, creepages=None, slip=None, spin=None, semi_axes=None, shear_modulus=None, poisson_ratio=None, friction=None, method=None, cells=None, map=None))]
+#[pyo3(signature = (source, text, values, rolling_speed, ring=None, load=None, approach=None, angle=None, creepages=None, slip=None, spin=None, semi_axes=None, shear_modulus=None, poisson_ratio=None, friction=None, method=None, cells=None, map=None))]
 #[allow(clippy::too_many_arguments)]
 fn traction_report(
     py: Python<'_>,
     source: String,
     text: Option<String>,
-    sets: Vec<String>,
+    values: Values<'_>,
     rolling_speed: String,
     ring: Option<String>,
     load: Option<String>,
@@ -262,7 +290,7 @@ fn traction_report(
 ) -> PyResult<Py<PyAny>> {
     let defaults = TractionArgs::default();
     let args = TractionArgs {
-        case: case_args(source, text, sets),
+        case: case_args(source, text, values)?,
         ring: ring.unwrap_or(defaults.ring),
         load,
         approach,
@@ -321,28 +349,28 @@ fn spectrum_report(
 
 /// `rolldyn quasistatic --json`.
 #[pyfunction]
-#[pyo3(signature = (source, text, sets, control=None))]
+#[pyo3(signature = (source, text, values, control=None))]
 fn quasistatic_solve(
     py: Python<'_>,
     source: &str,
     text: Option<&str>,
-    sets: Vec<String>,
+    values: Values<'_>,
     control: Option<String>,
 ) -> PyResult<Py<PyAny>> {
     let control = ControlChoice::parse(control.as_deref()).map_err(to_py)?;
-    let case = load(source, text, sets)?;
+    let case = load(source, text, values)?;
     let output = py.detach(|| quasistatic::solve(&case, control).map_err(to_py))?;
     to_python(py, &output)
 }
 
 /// `rolldyn quasistatic --sweep … --json`: the rows of the sweep.
 #[pyfunction]
-#[pyo3(signature = (source, text, sets, sweeps, control=None))]
+#[pyo3(signature = (source, text, values, sweeps, control=None))]
 fn quasistatic_sweep(
     py: Python<'_>,
     source: &str,
     text: Option<&str>,
-    sets: Vec<String>,
+    values: Values<'_>,
     sweeps: Vec<String>,
     control: Option<String>,
 ) -> PyResult<Py<PyAny>> {
@@ -358,7 +386,7 @@ fn quasistatic_sweep(
         .map(|s| quasistatic::parse_sweep(s).map_err(|e| format!("sweep {s}: {e}")))
         .collect::<Result<Vec<_>, _>>()
         .map_err(CaseError::new_err)?;
-    let case = load(source, text, sets)?;
+    let case = load(source, text, values)?;
     let rows = py
         .detach(|| quasistatic::sweep_case(&case, control, &sweeps))
         .map_err(to_py)?;
@@ -441,19 +469,19 @@ fn watched<T: Send>(
 /// Returns the summary (a dict) and whether a Ctrl-C
 /// stopped the run.
 #[pyfunction]
-#[pyo3(signature = (source, text, sets, directory, force=false, progress=None, verify=false))]
+#[pyo3(signature = (source, text, values, directory, force=false, progress=None, verify=false))]
 #[allow(clippy::too_many_arguments)]
 fn run(
     py: Python<'_>,
     source: String,
     text: Option<String>,
-    sets: Vec<String>,
+    values: Values<'_>,
     directory: &str,
     force: bool,
     progress: Option<Bound<'_, PyAny>>,
     verify: bool,
 ) -> PyResult<(Py<PyAny>, bool)> {
-    let overrides = overrides(sets);
+    let overrides = overrides(values)?;
     let case = overrides
         .load_text(&source, text.as_deref())
         .map_err(to_py)?;
@@ -496,25 +524,31 @@ fn open_run(py: Python<'_>, directory: &str) -> PyResult<Py<PyAny>> {
 /// `sweep.json` and `sweep.csv`, and returns the rows (dicts) and whether
 /// a Ctrl-C stopped the sweep. Progress: the fraction of points done.
 #[pyfunction]
-#[pyo3(signature = (source, text, sets, points, directory, force=false, progress=None))]
+#[pyo3(signature = (source, text, values, points, directory, force=false, progress=None))]
 #[allow(clippy::too_many_arguments)]
 fn run_points(
     py: Python<'_>,
     source: String,
     text: Option<String>,
-    sets: Vec<String>,
-    points: Vec<Vec<String>>,
+    values: Values<'_>,
+    points: Vec<Values<'_>>,
     directory: &str,
     force: bool,
     progress: Option<Bound<'_, PyAny>>,
 ) -> PyResult<(Py<PyAny>, bool)> {
+    let base = case_values(values)?;
     let points = points
         .into_iter()
         .map(|p| {
-            run_sweep::GridPoint::from_record(overrides(sets.iter().cloned().chain(p).collect()))
+            let mut values = base.clone();
+            values.extend(case_values(p)?);
+            let record = CaseOverrides {
+                values,
+                ..Default::default()
+            };
+            run_sweep::GridPoint::from_record(record).map_err(to_py)
         })
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(to_py)?;
+        .collect::<PyResult<Vec<_>>>()?;
     let (options, stop, fraction) = run_options(force, false);
     let dir = Path::new(directory);
     let (rows, interrupted) = watched(py, &stop, &fraction, progress.as_ref(), || {
@@ -524,38 +558,50 @@ fn run_points(
     Ok((to_python(py, &rows)?, interrupted))
 }
 
+/// A sampled point's values and the drawn values' labels.
+type SampledPoint = (Vec<(String, Py<PyAny>)>, Vec<String>);
+
 /// `rolldyn run --sweep … --sample COUNT --seed SEED`'s random points:
-/// each point's `--set` overrides and the drawn values (in sweep order).
+/// each point's typed values `(key, value)` and the drawn values as text
+/// (in sweep order).
 #[pyfunction]
 fn sample_points(
+    py: Python<'_>,
     sweeps: Vec<String>,
     count: usize,
     seed: u64,
-) -> PyResult<Vec<(Vec<String>, Vec<String>)>> {
+) -> PyResult<Vec<SampledPoint>> {
     let sampling = run_sweep::Sampling { count, seed };
     let points = run_sweep::sample(&CaseOverrides::default(), &sweeps, sampling).map_err(to_py)?;
-    Ok(points
+    points
         .into_iter()
-        .map(|p| (p.record.set, p.labels.into_iter().map(|(_, v)| v).collect()))
-        .collect())
+        .map(|p| {
+            let values = p
+                .overrides
+                .into_iter()
+                .map(|o| Ok((o.key, to_python(py, &o.value)?)))
+                .collect::<PyResult<Vec<_>>>()?;
+            Ok((values, p.labels.into_iter().map(|(_, v)| v).collect()))
+        })
+        .collect()
 }
 
 /// One point of a sweep (a Dask task): runs the case with the point's
 /// overrides into `directory/name` and returns its row (a dict), the same
 /// row `run_points` gives.
 #[pyfunction]
-#[pyo3(signature = (name, source, text, sets, directory, force=false))]
+#[pyo3(signature = (name, source, text, values, directory, force=false))]
 #[allow(clippy::too_many_arguments)]
 fn run_point(
     py: Python<'_>,
     name: &str,
     source: &str,
     text: Option<&str>,
-    sets: Vec<String>,
+    values: Values<'_>,
     directory: &str,
     force: bool,
 ) -> PyResult<Py<PyAny>> {
-    let overrides = overrides(sets);
+    let overrides = overrides(values)?;
     let case = overrides.load_text(source, text).map_err(to_py)?;
     let (options, stop, fraction) = run_options(force, false);
     let dir = Path::new(directory);
@@ -563,6 +609,15 @@ fn run_point(
         run_sweep::run_point(name, source, text, &overrides, &case, dir, &options)
     })?;
     to_python(py, &row)
+}
+
+/// Each value's `--set KEY=VALUE` text (`Case.overrides`).
+#[pyfunction]
+fn set_texts(values: Values<'_>) -> PyResult<Vec<String>> {
+    Ok(case_values(values)?
+        .iter()
+        .map(CaseValue::set_text)
+        .collect())
 }
 
 /// The directory name of point `k` of `count` (`point-NNNN`).
@@ -639,6 +694,7 @@ fn _rolldyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run_points, m)?)?;
     m.add_function(wrap_pyfunction!(run_point, m)?)?;
     m.add_function(wrap_pyfunction!(point_name, m)?)?;
+    m.add_function(wrap_pyfunction!(set_texts, m)?)?;
     m.add_function(wrap_pyfunction!(sample_points, m)?)?;
     m.add_function(wrap_pyfunction!(write_sweep_tables, m)?)?;
     m.add_function(wrap_pyfunction!(remove_stale_points, m)?)?;

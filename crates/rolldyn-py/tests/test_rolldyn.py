@@ -85,6 +85,37 @@ def test_set_validates_at_once_and_leaves_the_case_unchanged():
     assert case.describe()["geometry"]["ball_count"] == 8
 
 
+def test_values_cross_typed_and_replay_on_the_command_line(tmp_path):
+    spall = [{"position": "90 deg", "length": "0.3 mm", "depth": "20 um"}]
+    case = rolldyn.Case.preset("6205").set("surface.outer.spall", spall)
+    case.set("cage.pocket_friction", np.float64(0.05)).set("bearing.ball_count", "9")
+    # Typed as they cross into the engine: a NumPy scalar as a float, a
+    # string on its own read as `--set` reads it ("9" is the integer 9).
+    assert case.values == [("surface.outer.spall", spall), ("cage.pocket_friction", 0.05),
+                           ("bearing.ball_count", "9")]
+    assert case.overrides == [
+        'surface.outer.spall=[{ depth = "20 um", length = "0.3 mm", position = "90 deg" }]',
+        "cage.pocket_friction=0.05", "bearing.ball_count=9"]
+    # `overrides` gives the same case on the command line.
+    preset = tmp_path / "6205.toml"
+    preset.write_text(case.text)
+    sets = [a for o in case.overrides for a in ("--set", o)]
+    expected = cli_json("check", str(preset), *sets, "--json")
+    described = case.describe()
+    assert {k: v for k, v in described.items() if k != "source"} == \
+        {k: v for k, v in expected.items() if k != "source"}
+    # A value of no case type is refused, naming its key.
+    with pytest.raises(rolldyn.CaseError, match="operating.speed"):
+        case.set("operating.speed", None)
+    # The run records the values typed; the CLI resumes and extends it.
+    rolldyn.run(case, duration="1 ms", output=tmp_path / "py")
+    record = json.loads((tmp_path / "py" / "run.json").read_text())
+    assert record["overrides"]["values"][0] == {"key": "surface.outer.spall", "value": spall}
+    cli("run", "--resume", str(tmp_path / "py"), "--until", "2 ms")
+    summary = json.loads((tmp_path / "py" / "summary.json").read_text())
+    assert summary["status"] == "completed" and summary["simulated_time_s"] == pytest.approx(2e-3)
+
+
 def test_unknown_preset_names_the_choices():
     with pytest.raises(rolldyn.CaseError, match="7008C"):
         rolldyn.Case.preset("nope")

@@ -33,7 +33,7 @@ Quantity = str
 
 
 def _value_text(value: Any) -> str:
-    """An override's value as the CLI's ``--set KEY=VALUE`` reads it."""
+    """A flag's value as the CLI reads its text (a load, a sweep's values)."""
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, (int, float, np.integer, np.floating)):
@@ -45,8 +45,37 @@ def _value_text(value: Any) -> str:
     raise CaseError(f"value {value!r}: expected a string with its unit, a number or a bool")
 
 
+def _plain(value: Any, key: str) -> Any:
+    """A case value as it crosses into Rust, typed: a bool, int, float or
+    string (a string read as ``--set`` reads its text), or a list or dict
+    of them; NumPy scalars and arrays become Python's."""
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    if isinstance(value, (bool, int, float, str)):
+        return value
+    if isinstance(value, (list, tuple)):
+        return [_plain(v, key) for v in value]
+    if isinstance(value, Mapping) and all(isinstance(k, str) for k in value):
+        return {k: _plain(v, key) for k, v in value.items()}
+    raise CaseError(f"override {key}={value!r} (Case.set): expected a string with its unit, "
+                    "a number, a bool, or a list or dict of them")
+
+
+def _values(values: Mapping[str, Any]) -> list:
+    """``(key, value)`` pairs of :meth:`Case.set`, the aliases resolved."""
+    out = []
+    for key, value in values.items():
+        key = SWEEP_ALIASES.get(key, key)
+        out.append((key, _plain(value, key)))
+    return out
+
+
 class Case:
-    """A validated case: its source, its TOML text and its overrides.
+    """A validated case: its source, its TOML text and its values.
 
     Build one with :meth:`default`, :meth:`preset`, :meth:`load` or
     :meth:`from_toml`; change values with :meth:`set` (validated at once,
@@ -55,10 +84,11 @@ class Case:
     """
 
     def __init__(self, source: str = DEFAULT_SOURCE, text: Optional[str] = None,
-                 overrides: Sequence[str] = ()):
+                 values: Sequence[tuple] = ()):
         self._source = str(source)
         self._text = text
-        self._overrides = list(overrides)
+        self._values = _values(dict(values)) if isinstance(values, Mapping) \
+            else [(k, _plain(v, k)) for k, v in values]
         self.describe()  # validates
 
     @classmethod
@@ -99,31 +129,31 @@ class Case:
         ``speed``, ``axial`` and ``radial`` stand for the operating speed and
         loads. Validated at once (the case is unchanged on error). Returns
         the case, so calls chain."""
-        override = f"{SWEEP_ALIASES.get(key, key)}={_value_text(value)}"
-        _rolldyn.check(self._source, self._text, self._overrides + [override])
-        self._overrides.append(override)
+        values = _values({key: value})
+        _rolldyn.check(self._source, self._text, self._values + values)
+        self._values.extend(values)
         return self
 
     def copy(self) -> "Case":
         """An independent copy."""
         new = object.__new__(Case)
-        new._source, new._text, new._overrides = self._source, self._text, list(self._overrides)
+        new._source, new._text, new._values = self._source, self._text, list(self._values)
         return new
 
     def with_values(self, values: Mapping[str, Any]) -> "Case":
         """A copy with several values set, validated together: keys that
         need each other go in one call, e.g. ``{"operating.drive_torque":
         "0 N.m", "operating.rotor_inertia": "1e-4 kg.m^2"}``."""
-        overrides = [f"{SWEEP_ALIASES.get(k, k)}={_value_text(v)}" for k, v in values.items()]
-        _rolldyn.check(self._source, self._text, self._overrides + overrides)
+        values = _values(values)
+        _rolldyn.check(self._source, self._text, self._values + values)
         new = self.copy()
-        new._overrides.extend(overrides)
+        new._values.extend(values)
         return new
 
     def describe(self) -> dict:
         """``rolldyn check --json``: derived geometry, contact constants,
         frequencies and the assumptions made."""
-        return _rolldyn.check(self._source, self._text, self._overrides)
+        return _rolldyn.check(self._source, self._text, self._values)
 
     @property
     def source(self) -> str:
@@ -135,18 +165,25 @@ class Case:
         return self._text
 
     @property
+    def values(self) -> list:
+        """The values set, ``(key, value)`` in order, typed as they cross
+        into the engine (``run.json`` records them so)."""
+        return list(self._values)
+
+    @property
     def overrides(self) -> list:
-        """The ``KEY=VALUE`` overrides, in order."""
-        return list(self._overrides)
+        """The values as ``rolldyn --set KEY=VALUE`` texts, in order: the
+        same case on the command line."""
+        return _rolldyn.set_texts(self._values)
 
     def _args(self) -> tuple:
-        return self._source, self._text, list(self._overrides)
+        return self._source, self._text, list(self._values)
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Case) and self._args() == other._args()
 
     def __repr__(self) -> str:
-        extra = "".join(f", {o!r}" for o in self._overrides)
+        extra = f", values={self._values!r}" if self._values else ""
         return f"Case({self._source!r}{extra})"
 
 
@@ -532,8 +569,7 @@ def _grid_points(grid: Mapping[str, Iterable[Any]]) -> tuple:
             raise CaseError(f"grid {key}: no values")
         values.append(v)
     points = list(itertools.product(*values))
-    overrides = [[f"{SWEEP_ALIASES.get(k, k)}={_value_text(x)}" for k, x in zip(keys, p)]
-                 for p in points]
+    overrides = [_values(dict(zip(keys, p))) for p in points]
     return keys, points, overrides
 
 
@@ -594,7 +630,7 @@ def sweep(case: Optional[Case], grid: Mapping[str, Iterable[Any]], client: Any =
     keys, points, overrides = _grid_points(grid) if sample is None \
         else _sampled_points(grid, sample, seed)
     for sets in overrides:  # every point's case is valid before any runs
-        _rolldyn.check(case._source, case._text, case._overrides + sets)
+        _rolldyn.check(case._source, case._text, case._values + sets)
     if client is None:
         with _Directory(output) as d:
             rows, interrupted = _rolldyn.run_points(
