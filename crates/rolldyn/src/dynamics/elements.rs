@@ -44,9 +44,9 @@ impl Elements {
         require_positive("inner_ring_mass", params.inner_ring_mass)?;
         require_positive("inner_ring_tilt_inertia", params.inner_ring_tilt_inertia)?;
         params.cage.validate()?;
-        if params.cage.pocket_squeeze.is_some() {
+        if let Some(squeeze) = &params.cage.pocket_squeeze {
             // Built here, not at the first force evaluation in the time loop.
-            crate::cage::squeeze::build_tables();
+            squeeze.build_tables();
         }
         params.normal_law.validate()?;
         require_positive("impact_speed_floor", params.impact_speed_floor)?;

@@ -82,18 +82,7 @@ impl UniformPchip {
         let last = self.y.len() - 1;
         let s = ((x - self.x0) / self.h).clamp(0.0, last as f64);
         let index = (s as usize).min(last - 1);
-        let t = s - index as f64;
-        let t2 = t * t;
-        let t3 = t2 * t;
-        GridCell {
-            index,
-            basis: [
-                2.0 * t3 - 3.0 * t2 + 1.0,
-                t3 - 2.0 * t2 + t,
-                -2.0 * t3 + 3.0 * t2,
-                t3 - t2,
-            ],
-        }
+        GridCell::at(index, s - index as f64)
     }
 
     /// The value in a cell from [`Self::locate`] of an interpolant on the
@@ -122,6 +111,22 @@ pub struct GridCell {
 }
 
 impl GridCell {
+    /// Cell `index` at local coordinate t ∈ [0, 1].
+    #[inline]
+    fn at(index: usize, t: f64) -> Self {
+        let t2 = t * t;
+        let t3 = t2 * t;
+        GridCell {
+            index,
+            basis: [
+                2.0 * t3 - 3.0 * t2 + 1.0,
+                t3 - 2.0 * t2 + t,
+                -2.0 * t3 + 3.0 * t2,
+                t3 - t2,
+            ],
+        }
+    }
+
     /// The cell's left node.
     #[inline]
     pub fn index(&self) -> usize {
@@ -134,6 +139,48 @@ impl GridCell {
     pub fn combine(&self, y0: f64, m0: f64, y1: f64, m1: f64) -> f64 {
         let [b0, b1, b2, b3] = self.basis;
         b0 * y0 + b1 * m0 + b2 * y1 + b3 * m1
+    }
+}
+
+/// A C¹ interpolant of samples z_ij at (x0 + i h, y_j), on rows that share
+/// one uniform y grid: along y each row is a [`UniformPchip`] (monotone),
+/// across the rows a cubic Hermite whose node slopes are the central
+/// differences of the rows' values at y (Catmull–Rom; one-sided at the
+/// ends). O(1) and allocation-free; outside the grid the point is clamped
+/// to it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct UniformPchipRows {
+    x0: f64,
+    h: f64,
+    rows: Vec<UniformPchip>,
+}
+
+impl UniformPchipRows {
+    /// Rows at x0 + i h, each over the same y grid. Needs two rows, h > 0.
+    pub fn new(x0: f64, h: f64, rows: Vec<UniformPchip>) -> Self {
+        assert!(
+            rows.len() >= 2 && h > 0.0,
+            "UniformPchipRows needs ≥ 2 rows and h > 0"
+        );
+        Self { x0, h, rows }
+    }
+
+    /// Interpolated value at (x, y).
+    #[inline]
+    pub fn eval(&self, x: f64, y: f64) -> f64 {
+        let last = self.rows.len() - 1;
+        let along = self.rows[0].locate(y);
+        let at = |i: usize| self.rows[i].eval_in(&along);
+        let s = ((x - self.x0) / self.h).clamp(0.0, last as f64);
+        let i = (s as usize).min(last - 1);
+        let (z0, z1) = (at(i), at(i + 1));
+        let before = if i > 0 { at(i - 1) } else { 2.0 * z0 - z1 };
+        let after = if i + 1 < last {
+            at(i + 2)
+        } else {
+            2.0 * z1 - z0
+        };
+        GridCell::at(i, s - i as f64).combine(z0, 0.5 * (z1 - before), z1, 0.5 * (after - z0))
     }
 }
 
@@ -182,6 +229,41 @@ mod tests {
             let fd = (p.eval(x + h) - p.eval(x - h)) / (2.0 * h);
             assert!((d - fd).abs() < 1e-6, "x = {x}: {d} vs {fd}");
         }
+    }
+
+    #[test]
+    fn rows_reproduce_nodes_and_converge_on_smooth_data() {
+        let f = |x: f64, y: f64| (2.0 * x).sin() * (0.5 + y).exp();
+        let table = |n: usize| {
+            let h = 1.0 / n as f64;
+            let rows = (0..=n)
+                .map(|i| {
+                    let y = (0..=n).map(|j| f(i as f64 * h, j as f64 * h)).collect();
+                    UniformPchip::new(0.0, h, y)
+                })
+                .collect();
+            UniformPchipRows::new(0.0, h, rows)
+        };
+        let t = table(16);
+        assert!((t.eval(0.25, 0.5) - f(0.25, 0.5)).abs() < 1e-15);
+        let err = |n: usize| {
+            let t = table(n);
+            (0..997)
+                .map(|k| {
+                    let (x, y) = (0.2 + 0.6 * k as f64 / 997.0, (k as f64 * 0.618).fract());
+                    (t.eval(x, y) - f(x, y)).abs()
+                })
+                .fold(0.0, f64::max)
+        };
+        // Catmull–Rom across the rows is O(h³).
+        let ratio = err(32) / err(64);
+        assert!(ratio > 6.0, "ratio {ratio}");
+        // C¹ across a row: the one-sided slopes agree at x = 0.5.
+        let t = table(8);
+        let d = 1e-6;
+        let left = (t.eval(0.5, 0.3) - t.eval(0.5 - d, 0.3)) / d;
+        let right = (t.eval(0.5 + d, 0.3) - t.eval(0.5, 0.3)) / d;
+        assert!((left - right).abs() < 1e-4, "{left} vs {right}");
     }
 
     #[test]
