@@ -187,22 +187,12 @@ fn pocket_laws_and_the_pocket_squeeze_film() {
     );
     let e = err(&with("pocket_squeeze_tension = \"-1 kPa\""));
     assert_eq!(e.key.as_deref(), Some("cage.pocket_squeeze_tension"), "{e}");
-    // The cut-off is built for cylindrical pockets: a spherical pocket
-    // keeps half-Sommerfeld by default, and refuses the cut-off.
+    // A spherical pocket has the cut-off too, by default.
     let spherical = "pocket_shape = \"spherical\"";
     assert_eq!(
         squeeze_of(&with(spherical)).cavitation,
-        rolldyn::cage::SqueezeCavitation::HalfSommerfeld
+        rolldyn::cage::SqueezeCavitation::Vapour
     );
-    let e = err(&with(&format!(
-        "{spherical}\npocket_squeeze_cavitation = \"vapour\""
-    )));
-    assert_eq!(
-        e.key.as_deref(),
-        Some("cage.pocket_squeeze_cavitation"),
-        "{e}"
-    );
-    assert!(e.rule.contains("cylindrical pockets only"), "{e}");
     let e = err(&with("pocket_min_film = \"0.1 mm\""));
     assert_eq!(e.key.as_deref(), Some("cage.pocket_min_film"), "{e}");
     assert!(e.rule.contains("half of cage.pocket_clearance"), "{e}");

@@ -34,15 +34,7 @@ pub(super) fn cage(c: &RawCage) -> Result<Cage, Invalid> {
         pocket_squeeze_film: c.pocket_squeeze_film.unwrap_or(false),
         pocket_min_film: checked("cage.pocket_min_film", &c.pocket_min_film, positive)?
             .unwrap_or(DEFAULT_POCKET_MIN_FILM),
-        // The vapour cut-off is built for cylindrical pockets; a spherical
-        // pocket keeps half-Sommerfeld unless the case says otherwise.
-        pocket_squeeze_cavitation: c.pocket_squeeze_cavitation.unwrap_or(
-            if c.pocket_shape == Some(rolldyn::cage::PocketShape::Spherical) {
-                rolldyn::cage::SqueezeCavitation::HalfSommerfeld
-            } else {
-                rolldyn::cage::SqueezeCavitation::Vapour
-            },
-        ),
+        pocket_squeeze_cavitation: c.pocket_squeeze_cavitation.unwrap_or_default(),
         pocket_squeeze_tension: checked(
             "cage.pocket_squeeze_tension",
             &c.pocket_squeeze_tension,

@@ -329,15 +329,6 @@ impl Case {
                 ),
             ));
         }
-        if c.pocket_squeeze_cavitation == rolldyn::cage::SqueezeCavitation::Vapour
-            && c.pocket_shape == rolldyn::cage::PocketShape::Spherical
-        {
-            return Err(Invalid::new(
-                "cage.pocket_squeeze_cavitation",
-                Some("\"vapour\"".into()),
-                "the vapour cut-off is built for cylindrical pockets only; with cage.pocket_shape = \"spherical\" use \"half_sommerfeld\" or \"full_film\"",
-            ));
-        }
         Ok(Some(PocketSqueeze {
             viscosity: lubricant.viscosity,
             ball_radius: 0.5 * self.bearing.geometry.ball_diameter,

@@ -109,15 +109,6 @@ impl CageParameters {
                     ),
                 ));
             }
-            if squeeze.cavitation == SqueezeCavitation::Vapour
-                && self.pocket_shape == PocketShape::Spherical
-            {
-                return Err(InvalidParameter::new(
-                    "pocket_squeeze_cavitation",
-                    "vapour",
-                    "the vapour cut-off is built for cylindrical pockets only (use half_sommerfeld or full_film with spherical pockets)",
-                ));
-            }
         }
         self.pocket_friction.validate()?;
         require_non_negative("unbalance", self.unbalance)

@@ -84,8 +84,8 @@ pub enum SqueezeCavitation {
     /// Full-Sommerfeld: both sides, the opened one in tension.
     FullFilm,
     /// Both sides, the opened one in tension down to the oil's vapour
-    /// pressure: its suction is cut off at [`PocketSqueeze::tension`]
-    /// (cylindrical pockets). A cavity fills with vapour quickly, while
+    /// pressure: its suction is cut off at [`PocketSqueeze::tension`].
+    /// A cavity fills with vapour quickly, while
     /// dissolved air is far too slow to come out of solution (Sun & Brewe
     /// 1992), so a film opened within microseconds cavitates near the
     /// vapour pressure, not at ambient.
@@ -169,11 +169,12 @@ impl PocketSqueeze {
     }
 
     /// The fraction of the opened film's force that its suction's cut-off
-    /// at the tension T takes (cylindrical pockets; 0 below the onset),
-    /// from the table of [`cut_fraction_quadrature`].
+    /// at the tension T takes (0 below the onset): from the table of
+    /// [`cut_fraction_quadrature`] (cylindrical pockets), in closed form
+    /// ([`sphere_cut_fraction`], spherical ones).
     #[inline]
     fn cut_fraction(&self, shape: PocketShape, offset: f64, c: f64, rate: f64) -> f64 {
-        if rate == 0.0 || shape != PocketShape::Cylindrical {
+        if rate == 0.0 {
             return 0.0;
         }
         let most = 1.0 - self.min_film / c;
@@ -181,15 +182,25 @@ impl PocketSqueeze {
         // The opened side: the far wall while approaching the near one.
         let e = if rate > 0.0 { -toward } else { toward }.min(most);
         let gap = 1.0 - e;
-        // The narrowest strip's suction peak 6η|ḋ|R/(c(1 − ε_o))².
-        let peak = 6.0 * self.viscosity * rate.abs() * self.ball_radius / (c * gap).powi(2);
-        if peak <= self.tension {
-            return 0.0;
+        let r = self.ball_radius;
+        match shape {
+            PocketShape::Cylindrical => {
+                // The narrowest strip's suction peak 6η|ḋ|R/(c(1 − ε_o))².
+                let peak = 6.0 * self.viscosity * rate.abs() * r / (c * gap).powi(2);
+                if peak <= self.tension {
+                    return 0.0;
+                }
+                let onset = self.tension / peak;
+                cut_table()
+                    .eval(gap.sqrt().sqrt(), onset.sqrt().sqrt())
+                    .clamp(0.0, 1.0)
+            }
+            PocketShape::Spherical => {
+                // The suction's scale 6ηR²|ḋ|/c³.
+                let scale = 6.0 * self.viscosity * r * r * rate.abs() / c.powi(3);
+                sphere_cut_fraction(e, self.tension / scale)
+            }
         }
-        let onset = self.tension / peak;
-        cut_table()
-            .eval(gap.sqrt().sqrt(), onset.sqrt().sqrt())
-            .clamp(0.0, 1.0)
     }
 
     /// The damping of one side's film: the side approached at a rate of
@@ -259,6 +270,49 @@ fn cylinder_table() -> &'static UniformPchip {
             .collect();
         UniformPchip::new(0.0, h, y)
     })
+}
+
+/// The spherical pocket's cut-off fraction, in closed form. The opened
+/// hemisphere (eccentricity ε_o = e) holds the suction p = K g(u),
+/// K = 6ηR²|ḋ|/c³, u = cos θ from its rim (0) to its pole (1),
+/// g(u) = ∫₀ᵘ (1 − e v)⁻³ dv = ((1 − e u)⁻² − 1)/(2e) (the axisymmetric
+/// Reynolds equation of the module doc); held at T = aK from u_c on,
+/// g(u_c) = a, it loses 2πR² ∫_{u_c}^1 (p − T) u du of the whole film's
+/// 2πR² ∫₀¹ p u du = πR² K J(e):
+/// ```text
+/// fraction = (2 ∫_{u_c}^1 g u du − a (1 − u_c²)) / J(e),   u_c = 2a / ((1 + 2ea)(1 + (1 + 2ea)^{−1/2}))
+/// ```
+/// 0 where the pole's suction K g(1) = K (2 − e)/(2(1 − e)²) is within T.
+pub fn sphere_cut_fraction(e: f64, a: f64) -> f64 {
+    let gap = 1.0 - e;
+    if (2.0 - e) / (2.0 * gap * gap) <= a {
+        return 0.0;
+    }
+    // u_c = (1 − (1 + 2ea)^{−1/2})/e, in the form without its cancellation.
+    let lift = 1.0 + 2.0 * e * a;
+    let u_c = 2.0 * a / (lift * (1.0 + lift.sqrt().recip()));
+    let lost = 2.0 * sphere_moment(e, u_c) - a * (1.0 - u_c * u_c);
+    (lost / sphere_film_integral(e)).clamp(0.0, 1.0)
+}
+
+/// ∫_{u_c}^1 g(u) u du of [`sphere_cut_fraction`]: with w = 1 − e u,
+/// ∫ u (1 − e u)⁻² du = (1/w + ln w)/e², so
+/// ((1/w₁ − 1/w_c + ln(w₁/w_c))/e² − (1 − u_c²)/2)/(2e); near e = 0,
+/// where that cancels, the series g = Σ_{n≥1} (n + 1)/2 eⁿ⁻¹ uⁿ.
+fn sphere_moment(e: f64, u_c: f64) -> f64 {
+    if e.abs() < 0.05 {
+        // Terms to n = 14: the remainder is below 0.05¹⁴ ≈ 6e-19.
+        let mut sum = 0.0;
+        for n in (1..=14).rev() {
+            let k = n as f64;
+            sum = sum * e + 0.5 * (k + 1.0) * (1.0 - u_c.powi(n + 2)) / (k + 2.0);
+        }
+        sum
+    } else {
+        let (w1, wc) = (1.0 - e, 1.0 - e * u_c);
+        let logs = (e * (u_c - 1.0) / wc).ln_1p();
+        ((1.0 / w1 - 1.0 / wc + logs) / (e * e) - 0.5 * (1.0 - u_c * u_c)) / (2.0 * e)
+    }
 }
 
 /// Nodes of the cut-off table along σ = (1 − ε_o)^¼ ∈ [0, 2^¼] and
@@ -661,6 +715,87 @@ mod tests {
             vapour.force(shape, 0.9 * c, c, -1e-5),
             full.force(shape, 0.9 * c, c, -1e-5)
         );
+    }
+
+    /// The spherical pocket's opened film by brute force: the suction
+    /// min(K g(u), T) on the hemisphere, g by its own midpoint sum, the
+    /// force 2πR² ∫ p u du (midpoint, graded towards the pole).
+    fn brute_opened_sphere(s: &PocketSqueeze, e: f64, c: f64, speed: f64, tension: f64) -> f64 {
+        let r = s.ball_radius;
+        let k = 6.0 * s.viscosity * r * r * speed / c.powi(3);
+        let n = 400_000;
+        let (mut g, mut force, mut u_prev) = (0.0, 0.0, 0.0);
+        for i in 0..n {
+            // u = 1 − (1 − t)³: cells shrink towards the pole.
+            let t = (i as f64 + 1.0) / n as f64;
+            let u = 1.0 - (1.0 - t).powi(3);
+            let (du, mid) = (u - u_prev, 0.5 * (u + u_prev));
+            g += du / (1.0 - e * mid).powi(3);
+            force += (k * (g - 0.5 * du / (1.0 - e * mid).powi(3))).min(tension) * mid * du;
+            u_prev = u;
+        }
+        2.0 * PI * r * r * force
+    }
+
+    #[test]
+    fn sphere_cut_off_takes_what_the_suction_cannot_hold() {
+        let full = PocketSqueeze {
+            cavitation: SqueezeCavitation::FullFilm,
+            min_film: 1e-6,
+            ..squeeze()
+        };
+        let half = PocketSqueeze {
+            cavitation: SqueezeCavitation::HalfSommerfeld,
+            ..full
+        };
+        let shape = PocketShape::Spherical;
+        let c = 1e-4;
+        for tension in [1e3, 1e5, 1e7] {
+            let vapour = PocketSqueeze {
+                cavitation: SqueezeCavitation::Vapour,
+                tension,
+                ..full
+            };
+            for (d, rate) in [
+                (0.0, 1e-3),
+                (0.0, 0.3),
+                (0.02 * c, -0.4),
+                (0.5 * c, -0.02),
+                (0.99 * c, -0.5),
+                (0.99 * c, 0.3),
+                (0.3 * c, 2.0),
+                (1.2 * c, -0.05),
+                (1.2 * c, 5.0),
+            ] {
+                let got = vapour.force(shape, d, c, rate);
+                let squeezed = half.force(shape, d, c, rate);
+                let opened_full = full.force(shape, d, c, rate) - squeezed;
+                let toward = (d / c).min(1.0);
+                let e = if rate > 0.0 { -toward } else { toward }.min(1.0 - full.min_film / c);
+                let want = squeezed
+                    + rate.signum() * brute_opened_sphere(&full, e, c, rate.abs(), tension);
+                assert!(
+                    (got - want).abs() <= 1e-5 * opened_full.abs() + 1e-12 * squeezed.abs(),
+                    "T {tension}, d {d}, ḋ {rate}: {got} vs {want} (opened film {opened_full})"
+                );
+                let (lo, hi) = (squeezed.abs(), full.force(shape, d, c, rate).abs());
+                assert!(got.abs() >= lo * (1.0 - 1e-12) && got.abs() <= hi * (1.0 + 1e-12));
+                assert!(got * rate >= 0.0);
+            }
+        }
+        // The series and the closed form meet at |e| = 0.05.
+        for e in [-0.05, 0.05] {
+            let a = 0.2;
+            let below = sphere_cut_fraction(e * (1.0 - 1e-12), a);
+            let above = sphere_cut_fraction(e * (1.0 + 1e-12), a);
+            assert!((below - above).abs() < 1e-11, "ε {e}: {below} vs {above}");
+        }
+        // Continuous at the onset: the pole's suction at T.
+        for e in [-0.8, 0.0, 0.6] {
+            let onset = (2.0 - e) / (2.0 * (1.0 - e) * (1.0 - e));
+            assert_eq!(sphere_cut_fraction(e, onset), 0.0);
+            assert!(sphere_cut_fraction(e, onset * (1.0 - 1e-6)) < 1e-8);
+        }
     }
 
     #[test]

@@ -10,7 +10,9 @@
 //! the squeeze film of the 7008C's oil (η₀ 0.0467 Pa·s, h_min 1 µm); the
 //! cage displaced 20 µm, turned 0.05 mm (inside the 87.5 µm clearance: on
 //! the films) and moving at 0.2 m/s, so every ball squeezes its pocket
-//! film; 0.2 ms of motion.
+//! film; 0.2 ms of motion. Cylindrical pockets with the half-Sommerfeld
+//! film and with the vapour cut-off (the default), and spherical ones with
+//! the cut-off.
 
 use super::b2_power_balance::{power_residual, worst_power_residual};
 use super::common::{bearing_7008c, drag_7008c, dynamics_7008c, guide_land_7008c};
@@ -21,7 +23,7 @@ use rolldyn::dynamics::BearingModel;
 use rolldyn::material::{Material, effective_modulus};
 use rolldyn::operating::{LoadProfile, Loads};
 
-fn model(squeeze: bool) -> BearingModel {
+fn model(shape: PocketShape, squeeze: Option<SqueezeCavitation>) -> BearingModel {
     let g = bearing_7008c();
     let (mut params, _) = dynamics_7008c(drag_7008c());
     params.cage.guide = Some(guide_land_7008c());
@@ -35,10 +37,11 @@ fn model(squeeze: bool) -> BearingModel {
         density: 1400.0,
     };
     let steel = Material::STEEL_52100;
+    params.cage.pocket_shape = shape;
     params.cage.pocket_law = PocketLaw::GuptaFilm {
         wall_force: 11.0,
         stiffness: hertz_pocket_stiffness(
-            PocketShape::Cylindrical,
+            shape,
             g.ball_diameter,
             params.cage.pocket_clearance,
             effective_modulus(&steel, &phenolic),
@@ -46,11 +49,11 @@ fn model(squeeze: bool) -> BearingModel {
         .unwrap(),
         damping: 0.0,
     };
-    params.cage.pocket_squeeze = squeeze.then_some(PocketSqueeze {
+    params.cage.pocket_squeeze = squeeze.map(|cavitation| PocketSqueeze {
         viscosity: 0.0467,
         ball_radius: 0.5 * g.ball_diameter,
         min_film: 1e-6,
-        cavitation: SqueezeCavitation::HalfSommerfeld,
+        cavitation,
         tension: rolldyn::cage::squeeze::DEFAULT_POCKET_TENSION,
     });
     BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap()
@@ -58,7 +61,17 @@ fn model(squeeze: bool) -> BearingModel {
 
 #[test]
 fn squeeze_film_power_is_dissipation_and_the_balance_holds() {
-    let mut squeezed = model(true);
+    for film in [
+        (PocketShape::Cylindrical, SqueezeCavitation::HalfSommerfeld),
+        (PocketShape::Cylindrical, SqueezeCavitation::Vapour),
+        (PocketShape::Spherical, SqueezeCavitation::Vapour),
+    ] {
+        balance_holds(film);
+    }
+}
+
+fn balance_holds((shape, cavitation): (PocketShape, SqueezeCavitation)) {
+    let mut squeezed = model(shape, Some(cavitation));
     let (_, eq) = dynamics_7008c(drag_7008c());
     let mut y0 = squeezed.state_from_equilibrium(&eq);
     let c = squeezed.layout().cage();
@@ -72,9 +85,10 @@ fn squeeze_film_power_is_dissipation_and_the_balance_holds() {
         let mut f = vec![0.0; y0.len()];
         m.rhs_with_power(0.0, &y0, &mut f).total()
     };
-    let share = dissipated(&squeezed) - dissipated(&model(false));
+    let dry = model(shape, None);
+    let share = dissipated(&squeezed) - dissipated(&dry);
     let (_, scale, _) = power_residual(&squeezed, 0.0, &y0);
-    eprintln!("squeeze film: {share:.4} W of {scale:.1} W");
+    eprintln!("{shape:?} {cavitation:?} squeeze film: {share:.4} W of {scale:.1} W");
     // 100 times the balance's tolerance below.
     assert!(
         share > 1e-3 * scale,
