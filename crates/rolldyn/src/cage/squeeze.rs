@@ -640,59 +640,95 @@ mod tests {
         2.0 * r * total
     }
 
-    #[test]
-    fn vapour_cut_off_takes_what_the_suction_cannot_hold() {
+    /// The films of a [`squeeze`] pocket with h_min 1 µm: full, half and
+    /// (at `tension`) vapour.
+    fn films(tension: f64) -> [PocketSqueeze; 3] {
         let full = PocketSqueeze {
             cavitation: SqueezeCavitation::FullFilm,
             min_film: 1e-6,
             ..squeeze()
         };
-        let shape = PocketShape::Cylindrical;
+        let with = |cavitation| PocketSqueeze {
+            cavitation,
+            tension,
+            ..full
+        };
+        [
+            full,
+            with(SqueezeCavitation::HalfSommerfeld),
+            with(SqueezeCavitation::Vapour),
+        ]
+    }
+
+    /// Offsets d/c and rates ḋ \[m/s\] the cut-off is checked at: centred,
+    /// off-centre, near the wall both ways, and beyond the wall (the near
+    /// film held at the least film, the far one at e = −1).
+    const CASES: [(f64, f64); 7] = [
+        (0.0, 1e-3),
+        (0.5, -0.02),
+        (0.99, -0.5),
+        (0.99, 0.3),
+        (0.3, 2.0),
+        (1.2, -0.05),
+        (1.2, 5.0),
+    ];
+
+    /// The opened film's clipped force by brute force: (squeeze, ε_o, c,
+    /// |ḋ|, T).
+    type Brute = fn(&PocketSqueeze, f64, f64, f64, f64) -> f64;
+
+    /// The vapour film's force at offsets d and rates ḋ against the
+    /// squeezed side's plus `brute`'s opened side, to `tolerance` of the
+    /// opened film's whole force; between the two idealisations, and
+    /// dissipative. Returns (T, d, ḋ, force, half's, full's) of each.
+    fn against_brute_force(
+        shape: PocketShape,
+        cases: &[(f64, f64)],
+        tolerance: f64,
+        brute: Brute,
+    ) -> Vec<[f64; 6]> {
         let c = 1e-4;
+        let mut out = Vec::new();
         for tension in [1e3, 1e5, 1e7] {
-            let vapour = PocketSqueeze {
-                cavitation: SqueezeCavitation::Vapour,
-                tension,
-                ..full
-            };
-            let half = PocketSqueeze {
-                cavitation: SqueezeCavitation::HalfSommerfeld,
-                ..full
-            };
-            for (d, rate) in [
-                (0.0, 1e-3),
-                (0.5 * c, -0.02),
-                (0.99 * c, -0.5),
-                (0.99 * c, 0.3),
-                (0.3 * c, 2.0),
-                // Beyond the wall: the near film held at the least film,
-                // the far one at e = −1.
-                (1.2 * c, -0.05),
-                (1.2 * c, 5.0),
-                (0.995 * c, -1e-3),
-            ] {
-                let got = vapour.force(shape, d, c, rate);
+            let [full, half, vapour] = films(tension);
+            for &(d, rate) in cases {
+                let (d, got) = (d * c, vapour.force(shape, d * c, c, rate));
                 let squeezed = half.force(shape, d, c, rate);
                 let opened_full = full.force(shape, d, c, rate) - squeezed;
                 // The opened film's eccentricity, clamped as the model's.
                 let toward = (d / c).min(1.0);
                 let e = if rate > 0.0 { -toward } else { toward }.min(1.0 - full.min_film / c);
-                let want =
-                    squeezed + rate.signum() * brute_opened(&full, e, c, rate.abs(), tension);
+                let want = squeezed + rate.signum() * brute(&full, e, c, rate.abs(), tension);
                 assert!(
-                    (got - want).abs() <= 2e-4 * opened_full.abs() + 1e-12 * squeezed.abs(),
+                    (got - want).abs() <= tolerance * opened_full.abs() + 1e-12 * squeezed.abs(),
                     "T {tension}, d {d}, ḋ {rate}: {got} vs {want} (opened film {opened_full})"
                 );
-                // Between the two idealisations, and dissipative.
                 let (lo, hi) = (squeezed.abs(), full.force(shape, d, c, rate).abs());
                 assert!(got.abs() >= lo * (1.0 - 1e-12) && got.abs() <= hi * (1.0 + 1e-12));
                 assert!(got * rate >= 0.0);
-                if tension == 1e3 && d > 0.9 * c && rate < -0.01 {
-                    // A fast rebound from the near wall: most of its
-                    // suction is cut off.
-                    assert!(got.abs() < lo + 0.05 * (hi - lo), "{got} in [{lo}, {hi}]");
-                }
+                out.push([tension, d / c, rate, got.abs(), lo, hi]);
             }
+        }
+        out
+    }
+
+    #[test]
+    fn vapour_cut_off_takes_what_the_suction_cannot_hold() {
+        let shape = PocketShape::Cylindrical;
+        let mut cases = CASES.to_vec();
+        cases.push((0.995, -1e-3));
+        for [tension, d, rate, got, lo, hi] in
+            against_brute_force(shape, &cases, 2e-4, brute_opened)
+        {
+            if tension == 1e3 && d > 0.9 && rate < -0.01 {
+                // A fast rebound from the near wall: most of its suction
+                // is cut off.
+                assert!(got < lo + 0.05 * (hi - lo), "{got} in [{lo}, {hi}]");
+            }
+        }
+        let c = 1e-4;
+        for tension in [1e3, 1e5, 1e7] {
+            let [full, _, vapour] = films(tension);
             // Continuous where the cut sets in: the rebound rate at which
             // the narrowest strip's suction reaches T.
             let d = 0.9 * c;
@@ -706,11 +742,7 @@ mod tests {
             assert!((above / below - 1.0).abs() < 1e-5, "{below} → {above}");
         }
         // Slow: the suction stays below the tension and the film is whole.
-        let vapour = PocketSqueeze {
-            cavitation: SqueezeCavitation::Vapour,
-            tension: DEFAULT_POCKET_TENSION,
-            ..full
-        };
+        let [full, _, vapour] = films(DEFAULT_POCKET_TENSION);
         assert_eq!(
             vapour.force(shape, 0.9 * c, c, -1e-5),
             full.force(shape, 0.9 * c, c, -1e-5)
@@ -739,50 +771,15 @@ mod tests {
 
     #[test]
     fn sphere_cut_off_takes_what_the_suction_cannot_hold() {
-        let full = PocketSqueeze {
-            cavitation: SqueezeCavitation::FullFilm,
-            min_film: 1e-6,
-            ..squeeze()
-        };
-        let half = PocketSqueeze {
-            cavitation: SqueezeCavitation::HalfSommerfeld,
-            ..full
-        };
-        let shape = PocketShape::Spherical;
-        let c = 1e-4;
-        for tension in [1e3, 1e5, 1e7] {
-            let vapour = PocketSqueeze {
-                cavitation: SqueezeCavitation::Vapour,
-                tension,
-                ..full
-            };
-            for (d, rate) in [
-                (0.0, 1e-3),
-                (0.0, 0.3),
-                (0.02 * c, -0.4),
-                (0.5 * c, -0.02),
-                (0.99 * c, -0.5),
-                (0.99 * c, 0.3),
-                (0.3 * c, 2.0),
-                (1.2 * c, -0.05),
-                (1.2 * c, 5.0),
-            ] {
-                let got = vapour.force(shape, d, c, rate);
-                let squeezed = half.force(shape, d, c, rate);
-                let opened_full = full.force(shape, d, c, rate) - squeezed;
-                let toward = (d / c).min(1.0);
-                let e = if rate > 0.0 { -toward } else { toward }.min(1.0 - full.min_film / c);
-                let want = squeezed
-                    + rate.signum() * brute_opened_sphere(&full, e, c, rate.abs(), tension);
-                assert!(
-                    (got - want).abs() <= 1e-5 * opened_full.abs() + 1e-12 * squeezed.abs(),
-                    "T {tension}, d {d}, ḋ {rate}: {got} vs {want} (opened film {opened_full})"
-                );
-                let (lo, hi) = (squeezed.abs(), full.force(shape, d, c, rate).abs());
-                assert!(got.abs() >= lo * (1.0 - 1e-12) && got.abs() <= hi * (1.0 + 1e-12));
-                assert!(got * rate >= 0.0);
-            }
-        }
+        let mut cases = CASES.to_vec();
+        cases.extend([(0.0, 0.3), (0.02, -0.4)]);
+        let checked =
+            against_brute_force(PocketShape::Spherical, &cases, 1e-5, brute_opened_sphere);
+        // The cases reach from no cut to nearly all of the opened film.
+        let share = |[_, _, _, got, lo, hi]: [f64; 6]| (hi - got) / (hi - lo);
+        assert!(checked.iter().any(|&k| share(k) == 0.0));
+        assert!(checked.iter().any(|&k| share(k) > 0.999));
+        assert!(checked.iter().any(|&k| (0.1..0.9).contains(&share(k))));
         // The series and the closed form meet at |e| = 0.05.
         for e in [-0.05, 0.05] {
             let a = 0.2;
