@@ -80,6 +80,12 @@ pub struct CaseOverrides {
     #[arg(skip)]
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub values: Vec<CaseValue>,
+    /// The `set` assignments came from Python's `Case.set` (records that
+    /// rolldyn 0.1.0 wrote before Python's values crossed typed; kept so
+    /// that their checkpoints, tied to the record, still resume).
+    #[arg(skip)]
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub from_python: bool,
 }
 
 /// A case key's value set from Python (`Case.set`), typed: a number, a
@@ -192,8 +198,13 @@ impl CaseOverrides {
                 .iter()
                 .map(|v| Override::typed(&v.key, v.value.clone(), OverrideSource::Python)),
         );
+        let source = if self.from_python {
+            OverrideSource::Python
+        } else {
+            OverrideSource::CommandLine
+        };
         for s in &self.set {
-            out.push(Override::parse_set(s)?);
+            out.push(Override::parse_from(s, source)?);
         }
         Ok(out)
     }
@@ -388,6 +399,11 @@ mod tests {
         let json = serde_json::to_string(&record).unwrap();
         let read: CaseOverrides = serde_json::from_str(&json).unwrap();
         assert_eq!(read, record);
+        // A record from Python written before the values crossed typed
+        // reads back and writes again as it was (its checkpoint's hash).
+        let old = r#"{"speed":null,"axial_load":null,"radial_load":null,"fix_tilt":false,"misalignment":null,"set":["solver.duration=1 ms"],"from_python":true}"#;
+        let legacy: CaseOverrides = serde_json::from_str(old).unwrap();
+        assert_eq!(serde_json::to_string(&legacy).unwrap(), old);
         let applied = read.overrides().unwrap();
         assert_eq!(
             applied.last().unwrap().value,

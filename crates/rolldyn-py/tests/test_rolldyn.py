@@ -104,9 +104,18 @@ def test_values_cross_typed_and_replay_on_the_command_line(tmp_path):
     described = case.describe()
     assert {k: v for k, v in described.items() if k != "source"} == \
         {k: v for k, v in expected.items() if k != "source"}
-    # A value of no case type is refused, naming its key.
+    # A value of no case type, or not finite, is refused, naming its key.
     with pytest.raises(rolldyn.CaseError, match="operating.speed"):
         case.set("operating.speed", None)
+    with pytest.raises(rolldyn.CaseError, match="cage.pocket_friction"):
+        case.set("cage.pocket_friction", float("nan"))
+    # The constructor takes the values as pairs, a mapping or --set texts.
+    same = rolldyn.Case(case.source, case.text, case.overrides)
+    assert same.describe() == described
+    assert rolldyn.Case(case.source, case.text, [("speed", "3000 rpm")]).values == \
+        [("operating.speed", "3000 rpm")]
+    with pytest.raises(rolldyn.CaseError, match="KEY=VALUE"):
+        rolldyn.Case(case.source, case.text, ["bearing.ball_count"])
     # The run records the values typed; the CLI resumes and extends it.
     rolldyn.run(case, duration="1 ms", output=tmp_path / "py")
     record = json.loads((tmp_path / "py" / "run.json").read_text())

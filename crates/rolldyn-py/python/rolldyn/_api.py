@@ -65,10 +65,23 @@ def _plain(value: Any, key: str) -> Any:
                     "a number, a bool, or a list or dict of them")
 
 
-def _values(values: Mapping[str, Any]) -> list:
-    """``(key, value)`` pairs of :meth:`Case.set`, the aliases resolved."""
+def _values(values: Union[Mapping[str, Any], Iterable[Any]]) -> list:
+    """``(key, value)`` pairs of :meth:`Case.set`, the aliases resolved,
+    from a mapping, from ``(key, value)`` pairs, or from ``"KEY=VALUE"``
+    texts as ``rolldyn --set`` takes them."""
+    items = values.items() if isinstance(values, Mapping) else values
     out = []
-    for key, value in values.items():
+    for item in items:
+        if isinstance(item, str):
+            key, sep, value = item.partition("=")
+            if not sep:
+                raise CaseError(f"override {item!r}: expected KEY=VALUE or a (key, value) pair")
+            item = (key.strip(), value.strip())
+        try:
+            key, value = item
+        except (TypeError, ValueError):
+            raise CaseError(f"override {item!r}: expected KEY=VALUE or a (key, value) pair") \
+                from None
         key = SWEEP_ALIASES.get(key, key)
         out.append((key, _plain(value, key)))
     return out
@@ -84,11 +97,10 @@ class Case:
     """
 
     def __init__(self, source: str = DEFAULT_SOURCE, text: Optional[str] = None,
-                 values: Sequence[tuple] = ()):
+                 values: Union[Mapping[str, Any], Sequence[Any]] = ()):
         self._source = str(source)
         self._text = text
-        self._values = _values(dict(values)) if isinstance(values, Mapping) \
-            else [(k, _plain(v, k)) for k, v in values]
+        self._values = _values(values)
         self.describe()  # validates
 
     @classmethod
@@ -166,8 +178,10 @@ class Case:
 
     @property
     def values(self) -> list:
-        """The values set, ``(key, value)`` in order, typed as they cross
-        into the engine (``run.json`` records them so)."""
+        """The values set, ``(key, value)`` in order, as given (NumPy
+        values as Python's). They cross into the engine typed, a string on
+        its own read as ``--set`` reads it (``"9"`` is the number 9, as
+        ``run.json`` records it)."""
         return list(self._values)
 
     @property

@@ -46,7 +46,7 @@ impl Elements {
         params.cage.validate()?;
         if let Some(squeeze) = &params.cage.pocket_squeeze {
             // Built here, not at the first force evaluation in the time loop.
-            squeeze.build_tables();
+            squeeze.build_tables(params.cage.pocket_shape);
         }
         params.normal_law.validate()?;
         require_positive("impact_speed_floor", params.impact_speed_floor)?;

@@ -162,6 +162,11 @@ impl UniformPchipRows {
             rows.len() >= 2 && h > 0.0,
             "UniformPchipRows needs ≥ 2 rows and h > 0"
         );
+        let grid = |r: &UniformPchip| (r.x0, r.h, r.y.len());
+        assert!(
+            rows.iter().all(|r| grid(r) == grid(&rows[0])),
+            "UniformPchipRows needs rows on one y grid"
+        );
         Self { x0, h, rows }
     }
 
