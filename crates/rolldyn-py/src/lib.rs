@@ -110,7 +110,8 @@ fn case_values(values: Values<'_>) -> PyResult<Vec<CaseValue>> {
                     ))
                 })?
             };
-            if !finite(&value) {
+            // run.json records the values, and JSON has no NaN or infinity.
+            if finite::non_finite(&value).is_some() {
                 return Err(CaseError::new_err(format!(
                     "override `{key}={value}` (Case.set): a number must be finite"
                 )));
@@ -118,17 +119,6 @@ fn case_values(values: Values<'_>) -> PyResult<Vec<CaseValue>> {
             Ok(CaseValue { key, value })
         })
         .collect()
-}
-
-/// Whether every number in `value` is finite (`run.json` records the
-/// values, and JSON has no NaN or infinity).
-fn finite(value: &toml::Value) -> bool {
-    match value {
-        toml::Value::Float(x) => x.is_finite(),
-        toml::Value::Array(items) => items.iter().all(finite),
-        toml::Value::Table(table) => table.values().all(finite),
-        _ => true,
-    }
 }
 
 fn overrides(values: Values<'_>) -> PyResult<CaseOverrides> {
