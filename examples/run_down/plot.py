@@ -15,14 +15,12 @@ import math
 import pathlib
 import sys
 
-import matplotlib
 import pyarrow.dataset as ds
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+from plotting import label, output_dir, plt, save  # noqa: E402
 
-here = pathlib.Path(__file__).parent
-out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else here / "out"
+out = output_dir(__file__)
 INERTIA = 1.2e-4  # operating.rotor_inertia of case.toml [kg m^2]
 RPM = 2 * math.pi / 60
 
@@ -50,26 +48,16 @@ for d in sorted(out.glob("steady_*")):
 
 fig, (ax_speed, ax_torque, ax_cage) = plt.subplots(1, 3, figsize=(13, 3.8))
 ax_speed.plot(t, speed)
-ax_speed.set_xlabel("time [s]")
-ax_speed.set_ylabel("inner-ring speed [rpm]")
-ax_speed.set_title("run-down from 10 000 rpm")
+label(ax_speed, "time [s]", "inner-ring speed [rpm]", "run-down from 10 000 rpm")
 
 ax_torque.plot(coast_speed, coast_torque, "o", ms=3, label="coast-down: −J dω/dt")
 ax_torque.plot(coast_speed, channel, "-", label="friction torque channel")
 if steady:
     s, m = zip(*steady)
     ax_torque.plot(s, m, "s", ms=6, label="prescribed speed, 0.2 s")
-ax_torque.set_xlabel("inner-ring speed [rpm]")
-ax_torque.set_ylabel("friction torque [N·m]")
-ax_torque.set_title("friction torque")
-ax_torque.legend(fontsize=8)
+label(ax_torque, "inner-ring speed [rpm]", "friction torque [N·m]", "friction torque", legend=8)
 
 ax_cage.plot(t[1:], data["cage_speed_rpm"][1:] / speed[1:])
-ax_cage.set_xlabel("time [s]")
-ax_cage.set_ylabel("cage / inner-ring speed")
-ax_cage.set_title("cage speed ratio")
+label(ax_cage, "time [s]", "cage / inner-ring speed", "cage speed ratio")
 
-fig.tight_layout()
-target = out / "run_down.png"
-fig.savefig(target, dpi=120)
-print(f"wrote {target}")
+save(fig, out / "run_down.png", dpi=120)

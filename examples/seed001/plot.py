@@ -5,39 +5,27 @@ inner-ring acceleration spectra of the waviness families.
     cargo run --release --example seed001      # writes examples/seed001/out
     python3 examples/seed001/plot.py [OUT_DIR]
 """
-import csv
 import pathlib
 import sys
 
-import matplotlib
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+from plotting import label, numbers, output_dir, plt, rows, save  # noqa: E402
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-
-here = pathlib.Path(__file__).parent
-out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else here / "out"
-rows = list(csv.DictReader(open(out / "c3.csv")))
-load = [float(r["axial_load_n"]) for r in rows]
+out = output_dir(__file__)
+c3 = rows(out / "c3.csv")
+load = numbers(c3, "axial_load_n")
 fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4))
-a.plot(load, [float(r["cage_speed_ratio"]) for r in rows], "o-", label="rolldyn")
-a.plot(load, [float(r["pure_rolling_cage_speed_ratio"]) for r in rows], "--", label="pure rolling")
-a.set_xlabel("axial load F_x [N]")
-a.set_ylabel("cage speed ratio ω_c/ω_i")
-a.set_title("C3: Deng et al. 2022 Fig. 10b")
-a.legend()
+a.plot(load, numbers(c3, "cage_speed_ratio"), "o-", label="rolldyn")
+a.plot(load, numbers(c3, "pure_rolling_cage_speed_ratio"), "--", label="pure rolling")
+label(a, "axial load F_x [N]", "cage speed ratio ω_c/ω_i", "C3: Deng et al. 2022 Fig. 10b", legend=True)
 for path in sorted(out.glob("spectrum_*.csv")):
-    spectrum = list(csv.DictReader(open(path)))
+    spectrum = rows(path)
     b.semilogy(
-        [float(r["frequency_hz"]) for r in spectrum],
-        [max(float(r["acceleration_m_s2"]), 1e-9) for r in spectrum],
+        numbers(spectrum, "frequency_hz"),
+        [max(v, 1e-9) for v in numbers(spectrum, "acceleration_m_s2")],
         lw=0.8,
         label=path.stem.removeprefix("spectrum_"),
     )
 b.set_xlim(0, 4000)
-b.set_xlabel("frequency [Hz]")
-b.set_ylabel("acceleration amplitude [m/s²]")
-b.set_title("C4: waviness lines (Deng et al. 2022 Table 2)")
-b.legend(fontsize=6)
-fig.tight_layout()
-fig.savefig(out / "seed001.png", dpi=150)
-print(f"wrote {out / 'seed001.png'}")
+label(b, "frequency [Hz]", "acceleration amplitude [m/s²]", "C4: waviness lines (Deng et al. 2022 Table 2)", legend=6)
+save(fig, out / "seed001.png")

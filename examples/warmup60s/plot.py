@@ -9,14 +9,12 @@ every 100th sample.
 import pathlib
 import sys
 
-import matplotlib
 import pyarrow.dataset as ds
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+from plotting import output_dir, plt, save  # noqa: E402
 
-here = pathlib.Path(__file__).parent
-run = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else here / "out"
+run = output_dir(__file__)
 series = ds.dataset(run / "timeseries.parquet", format="parquet")
 nodes = ["ball", "inner_ring", "outer_ring", "housing", "oil"]
 columns = ["time_s", "inner_ring_speed_rpm", "cage_speed_rpm", "power_total_w"] + [
@@ -40,6 +38,4 @@ heat.set_ylabel("temperature [°C]")
 heat.set_xlabel("time [s]")
 heat.legend(fontsize=8)
 speed.set_title("7008C: run-up and the first minute of the warm-up")
-fig.tight_layout()
-fig.savefig(run / "warmup.png", dpi=150)
-print(f"wrote {run / 'warmup.png'}")
+save(fig, run / "warmup.png")

@@ -16,7 +16,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, summary_of, temp_dir};
+use crate::common::{assert_refused, rolldyn, stderr, summary_of, temp_dir};
 use serde_json::Value;
 
 /// Runs `rolldyn run` with `args` (and the case text on stdin when
@@ -540,12 +540,7 @@ fn bad_accuracy_settings_are_refused() {
         "{err}"
     );
     let o = rolldyn(&["run", "--sweep", "axial=100N,200N", "--verify"], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("--verify: not with --sweep"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["--verify: not with --sweep"]);
 }
 
 /// A bearing set in motion (`examples/spindle_pair`: two 7008C back to

@@ -5,7 +5,10 @@
 
 use crate::common;
 
-use crate::common::{FASTSIM, json, keys, rolldyn, stderr, stdout, summary_of, temp_dir};
+use crate::common::{
+    FASTSIM, assert_ok, assert_refused, json, keys, rolldyn, run_into, stderr, stdout, summary_of,
+    temp_dir,
+};
 use rolldyn_case::presets::PRESETS;
 use serde_json::Value;
 
@@ -169,24 +172,14 @@ fn bad_input_exits_2_with_a_located_message() {
         &["check", "--set", "bearing.free_contact_angle=75 deg"],
         None,
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("--set bearing.free_contact_angle=75 deg"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["--set bearing.free_contact_angle=75 deg"]);
 
     let o = rolldyn(&["check", "/nonexistent/case.toml"], None);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("cannot read case file"));
 
     let o = rolldyn(&["contact", "--load", "500"], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("--load 500: missing unit"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["--load 500: missing unit"]);
 
     let o = rolldyn(&["new", "--preset", "nope"], None);
     assert_eq!(o.status.code(), Some(2));
@@ -196,8 +189,7 @@ fn bad_input_exits_2_with_a_located_message() {
         &["frequencies", "-"],
         Some("[bearing]\npreset = \"6205\"\n"),
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("no speed"), "{}", stderr(&o));
+    assert_refused(&o, &["no speed"]);
 }
 
 #[test]
@@ -230,7 +222,7 @@ fn schema_and_presets() {
 #[test]
 fn check_lists_assumptions() {
     let o = rolldyn(&["check", "-"], Some("[bearing]\npreset = \"7218B\"\n"));
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let out = stdout(&o);
     assert!(
         out.contains("bearing.inner_groove_curvature") && out.contains("0.5232"),
@@ -309,7 +301,7 @@ fn quasistatic_sweep_writes_csv_and_json() {
         ],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
     assert_eq!(csv.lines().count(), 1 + 6);
     assert!(csv.starts_with("speed_rpm,force_x_n"));
@@ -326,8 +318,7 @@ fn quasistatic_sweep_writes_csv_and_json() {
     assert_eq!(rows[5]["force_x_n"].as_f64(), Some(1000.0));
     std::fs::remove_dir_all(&dir).ok();
     let o = rolldyn(&["quasistatic", "--sweep", "speed=0rpm..1rpm"], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("point count"), "{}", stderr(&o));
+    assert_refused(&o, &["point count"]);
     let o = rolldyn(&["quasistatic", "--control", "sideways"], None);
     assert_eq!(o.status.code(), Some(2));
 }
@@ -359,7 +350,7 @@ fn quasistatic_sweep_reports_refused_points_with_their_least_axial_load() {
         ],
         Some(&case),
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert!(
         stdout(&o).contains("(1 refused: below the least axial load")
             && stdout(&o).contains("; 0 failed;"),
@@ -389,8 +380,8 @@ fn run_writes_parquet_and_summary() {
     use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
     let dir = temp_dir("run");
     let d = dir.to_string_lossy().into_owned();
-    let o = rolldyn(&["run", "--duration", "1 ms", "-o", &d], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_into(&d, None, "1 ms", &[]);
+    assert_ok(&o);
     let summary: Value = summary_of(&dir);
     assert_eq!(summary["status"], "completed");
     assert_eq!(summary["simulated_time_s"].as_f64(), Some(0.001));
@@ -498,8 +489,7 @@ fn run_reports_missing_dynamic_data() {
              width = \"15 mm\"\n[operating]\nspeed = \"1797 rpm\"\nforce_z = \"100 N\"\n",
         ),
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("cage.mass"), "{}", stderr(&o));
+    assert_refused(&o, &["cage.mass"]);
     assert!(
         !dir.join("summary.json").exists(),
         "nothing written on bad input"
@@ -512,7 +502,7 @@ fn run_reports_missing_dynamic_data() {
 fn spectrum_lines_stop_at_the_band() {
     let dir = temp_dir("spectrum-band");
     let d = dir.to_string_lossy().into_owned();
-    let o = rolldyn(&["run", "--duration", "2 ms", "-o", &d], None);
+    let o = run_into(&d, None, "2 ms", &[]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let o = rolldyn(&["spectrum", &d, "--harmonics", "1000000", "--json"], None);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -556,7 +546,7 @@ fn negative_conventional_stiffness_is_explained() {
         ],
         Some(case),
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let text = stdout(&o);
     assert!(text.contains("axial -"), "{text}");
     assert!(text.contains("K is not positive definite"), "{text}");
@@ -568,11 +558,8 @@ fn fastsim_run_records_creepages() {
     use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
     let dir = temp_dir("fastsim-run");
     let d = dir.to_string_lossy().into_owned();
-    let o = rolldyn(
-        &["run", "--set", FASTSIM, "--duration", "1 ms", "-o", &d],
-        None,
-    );
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_into(&d, None, "1 ms", &[FASTSIM]);
+    assert_ok(&o);
     let summary: Value = summary_of(&dir);
     for k in [
         "mean_creepage_longitudinal_inner",
@@ -603,11 +590,7 @@ fn fastsim_run_records_creepages() {
     // Without FASTSIM there are no creepage keys.
     let plain = temp_dir("plain-run");
     let p = plain.to_string_lossy().into_owned();
-    assert!(
-        rolldyn(&["run", "--duration", "0.2 ms", "-o", &p], None)
-            .status
-            .success()
-    );
+    assert!(run_into(&p, None, "0.2 ms", &[]).status.success());
     let s: Value = summary_of(&plain);
     assert!(s.get("mean_stick_fraction_inner").is_none());
     std::fs::remove_dir_all(&dir).ok();
@@ -698,16 +681,10 @@ fn traction_consistent_quasistatic_refusals() {
         ],
         None,
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("not with --sweep"), "{}", stderr(&o));
+    assert_refused(&o, &["not with --sweep"]);
     let low = "[bearing]\npreset = \"7218B\"\n[operating]\nspeed = \"1000 rpm\"\nforce_x = \"10 kN\"\n[model]\ntraction = { law = \"fastsim\", friction = 0.001 }\n";
     let o = rolldyn(&["quasistatic", "-", "--control", "traction"], Some(low));
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("no traction-consistent equilibrium"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["no traction-consistent equilibrium"]);
 }
 
 /// A run started from the traction-consistent state stays there.
@@ -732,23 +709,17 @@ fn a_run_starts_from_the_traction_consistent_state() {
     );
     let dir = temp_dir("traction-start");
     let d = dir.to_string_lossy().into_owned();
-    let o = rolldyn(
-        &[
-            "run",
-            "--set",
-            "solver.start=quasistatic_traction",
-            "--set",
-            "cage.guidance=ball",
-            "--set",
-            "model.gravity=false",
-            "--duration",
-            "1 ms",
-            "-o",
-            &d,
-        ],
+    let o = run_into(
+        &d,
         None,
+        "1 ms",
+        &[
+            "solver.start=quasistatic_traction",
+            "cage.guidance=ball",
+            "model.gravity=false",
+        ],
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let summary: Value = summary_of(&dir);
     let mean = summary["mean_load_inner_n"].as_f64().unwrap();
     let qs = ball_guided["balls"][0]["load_inner_n"].as_f64().unwrap();

@@ -47,6 +47,43 @@ pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// Asserts that a command succeeded, showing its stderr where not.
+#[track_caller]
+pub fn assert_ok(o: &Output) {
+    assert!(o.status.success(), "{}", stderr(o));
+}
+
+/// Asserts that a command was refused as bad input (exit 2) with each of
+/// `needles` in its message.
+#[track_caller]
+pub fn assert_refused(o: &Output, needles: &[&str]) {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    for needle in needles {
+        assert!(err.contains(needle), "no {needle:?} in: {err}");
+    }
+}
+
+/// `rolldyn run` of `case` (None: the built-in default) for `duration`
+/// into `dir`, each of `sets` given as a `--set`.
+pub fn run_into(
+    dir: impl AsRef<std::path::Path>,
+    case: Option<&str>,
+    duration: &str,
+    sets: &[&str],
+) -> Output {
+    let dir = dir.as_ref().to_str().unwrap();
+    let mut args = vec!["run"];
+    if case.is_some() {
+        args.push("-");
+    }
+    args.extend(["--duration", duration, "-o", dir]);
+    for s in sets {
+        args.extend(["--set", s]);
+    }
+    rolldyn(&args, case)
+}
+
 pub fn json(args: &[&str], stdin: Option<&str>) -> Value {
     let o = rolldyn(args, stdin);
     assert!(o.status.success(), "{args:?}: {}", stderr(&o));
@@ -96,16 +133,7 @@ pub fn summary_of(dir: &std::path::Path) -> Value {
 /// and returns its summary (the run directory removed).
 pub fn run_summary(tag: &str, case: Option<&str>, duration: &str, sets: &[&str]) -> Value {
     let dir = temp_dir(tag);
-    let mut args = vec!["run"];
-    if case.is_some() {
-        args.push("-");
-    }
-    args.extend(["--duration", duration, "-o", dir.to_str().unwrap()]);
-    for s in sets {
-        args.extend(["--set", s]);
-    }
-    let o = rolldyn(&args, case);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&run_into(&dir, case, duration, sets));
     let summary = summary_of(&dir);
     std::fs::remove_dir_all(&dir).ok();
     summary

@@ -9,7 +9,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{envelope_json, rolldyn, stderr, summary_of, temp_dir};
+use crate::common::{assert_ok, envelope_json, rolldyn, summary_of, temp_dir};
 use std::collections::HashMap;
 use std::path::PathBuf;
 
@@ -58,7 +58,7 @@ fn the_outer_race_pit_against_cwru_record_130() {
         &["run", case.to_str().unwrap(), "-o", dir.to_str().unwrap()],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let summary: serde_json::Value = summary_of(&dir);
     let sensor = &summary["sensor"];
     let ratio =

@@ -10,7 +10,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, temp_dir};
+use crate::common::{assert_ok, rolldyn, stderr, temp_dir};
 use serde_json::Value;
 use std::path::Path;
 
@@ -142,9 +142,9 @@ fn a_spall_grows_between_ball_passes_and_a_resumed_run_keeps_its_length() {
         ],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let o = rolldyn(&["run", "--resume", d, "--until", "0.06 s"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
     let (time, length) = (
         series.column("time_s").unwrap(),
@@ -196,7 +196,7 @@ fn a_spall_that_cannot_grow_says_so() {
         ],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert!(
         stderr(&o).contains("growing spall 0 reached"),
         "{}",

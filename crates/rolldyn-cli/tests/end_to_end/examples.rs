@@ -8,7 +8,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, temp_dir};
+use crate::common::{assert_ok, rolldyn, run_into, stderr, temp_dir};
 use std::path::PathBuf;
 
 fn examples() -> PathBuf {
@@ -39,9 +39,12 @@ const SCRIPTED: [&str; 1] = ["cwru_matrix"];
 
 #[test]
 fn every_example_has_its_files_and_its_case_runs() {
+    // The directories: examples/plotting.py is the plot scripts' helper.
     let mut dirs: Vec<String> = std::fs::read_dir(examples())
         .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .map(|e| e.unwrap())
+        .filter(|e| e.file_type().unwrap().is_dir())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
         .collect();
     dirs.sort();
     let mut listed: Vec<&str> = EXAMPLES.iter().map(|(d, _)| *d).chain(SCRIPTED).collect();
@@ -87,7 +90,7 @@ fn the_cwru_matrix_script_writes_its_labelled_table() {
         .env("DURATION", "8 ms")
         .output()
         .expect("sh runs");
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let table = std::fs::read_to_string(out.join("features.csv")).unwrap();
     let rows: Vec<&str> = table.lines().collect();
     assert_eq!(rows.len(), 1 + 64);
@@ -137,17 +140,7 @@ fn every_preset_runs() {
             preset.name
         );
         let out = temp_dir(&format!("preset-{}", preset.name));
-        let o = rolldyn(
-            &[
-                "run",
-                "-",
-                "--duration",
-                "1 ms",
-                "-o",
-                out.to_str().unwrap(),
-            ],
-            Some(&case),
-        );
+        let o = run_into(out.to_str().unwrap(), Some(&case), "1 ms", &[]);
         assert!(o.status.success(), "{}: {}", preset.name, stderr(&o));
         std::fs::remove_dir_all(&out).ok();
     }

@@ -11,7 +11,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{pair, rolldyn, stderr, temp_dir};
+use crate::common::{assert_ok, pair, rolldyn, run_into, stderr, temp_dir};
 
 #[test]
 fn unbounded_work_is_refused_before_it_starts() {
@@ -105,8 +105,8 @@ fn unbounded_work_is_refused_before_it_starts() {
 fn every_quantity_option_refuses_a_bare_number_alike() {
     let dir = temp_dir("quantity-options");
     let d = dir.to_str().unwrap();
-    let o = rolldyn(&["run", "--duration", "1 ms", "-o", d], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_into(d, None, "1 ms", &[]);
+    assert_ok(&o);
     let rows: [(&[&str], &str); 13] = [
         (&["run", "--duration", "0.01"], "--duration"),
         (

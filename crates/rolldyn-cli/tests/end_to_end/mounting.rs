@@ -4,7 +4,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, stdout, summary_of, temp_dir};
+use crate::common::{assert_ok, rolldyn, stdout, summary_of, temp_dir};
 
 /// The 6205 preset's case text (read from standard input as `-`).
 fn preset() -> String {
@@ -35,7 +35,7 @@ fn check_reports_the_mounting_frequencies() {
         ],
         Some(&case),
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let m = &v["mounting"];
     let f = |k: &str| m[k].as_f64().unwrap();
@@ -96,7 +96,7 @@ fn run_preset(tag: &str, args: &[&str]) -> serde_json::Value {
     let mut all = vec!["run", "-", "-o", dir.to_str().unwrap()];
     all.extend_from_slice(args);
     let o = rolldyn(&all, Some(&preset()));
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let summary = summary_of(&dir);
     std::fs::remove_dir_all(&dir).ok();
     summary
@@ -109,7 +109,7 @@ fn run_preset(tag: &str, args: &[&str]) -> serde_json::Value {
 fn bearing_damping_is_reported_and_dissipates() {
     let damping = "model.bearing_damping=\"1.25e-5 s\"";
     let o = rolldyn(&["check", "-", "--set", damping, "--json"], Some(&preset()));
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let m = &v["mounting"];
     let f = |k: &str| m[k].as_f64().unwrap();

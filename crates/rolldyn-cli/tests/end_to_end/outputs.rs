@@ -4,7 +4,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, stdout, summary_of, temp_dir};
+use crate::common::{assert_ok, assert_refused, rolldyn, run_into, stdout, summary_of, temp_dir};
 use serde_json::Value;
 
 /// `output.channels`, `output.balls` and `output.precision` choose what the
@@ -14,25 +14,19 @@ fn recorded_channels_are_chosen_and_the_summary_does_not_change() {
     let all = temp_dir("record-all");
     let some = temp_dir("record-some");
     let (a, s) = (all.to_str().unwrap(), some.to_str().unwrap());
-    let o = rolldyn(&["run", "--duration", "2 ms", "-o", a], None);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let o = rolldyn(
+    let o = run_into(a, None, "2 ms", &[]);
+    assert_ok(&o);
+    let o = run_into(
+        s,
+        None,
+        "2 ms",
         &[
-            "run",
-            "--duration",
-            "2 ms",
-            "-o",
-            s,
-            "--set",
             "output.channels=[\"cage\", \"contacts\"]",
-            "--set",
             "output.balls=[1]",
-            "--set",
             "output.precision=\"float32\"",
         ],
-        None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let summary = |d: &std::path::Path| {
         let mut v: Value = summary_of(d);
         v["wall_time_s"] = Value::Null;
@@ -66,20 +60,8 @@ fn recorded_channels_are_chosen_and_the_summary_does_not_change() {
         assert_eq!(*x, f64::from(*y as f32));
     }
     // An unknown group is refused, naming the entry.
-    let o = rolldyn(
-        &[
-            "run",
-            "--duration",
-            "1 ms",
-            "-o",
-            s,
-            "--set",
-            "output.channels=[\"sensors\"]",
-        ],
-        None,
-    );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("output.channels[0]"), "{}", stderr(&o));
+    let o = run_into(s, None, "1 ms", &["output.channels=[\"sensors\"]"]);
+    assert_refused(&o, &["output.channels[0]"]);
     std::fs::remove_dir_all(&all).ok();
     std::fs::remove_dir_all(&some).ok();
 }
@@ -91,25 +73,19 @@ fn recorded_channels_are_chosen_and_the_summary_does_not_change() {
 fn slow_channels_are_recorded_at_their_rate_and_resume() {
     let dir = temp_dir("record-slow");
     let d = dir.to_str().unwrap();
-    let o = rolldyn(
+    let o = run_into(
+        d,
+        None,
+        "2 ms",
         &[
-            "run",
-            "--duration",
-            "2 ms",
-            "-o",
-            d,
-            "--set",
             "output.sample_rate=\"20 kHz\"",
-            "--set",
             "output.slow_channels=[\"energy\", \"power\"]",
-            "--set",
             "output.slow_rate=\"2 kHz\"",
         ],
-        None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let o = rolldyn(&["run", "--resume", d, "--until", "3 ms", "--report"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let main = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
     let slow = rolldyn_io::read_parquet(&dir.join("timeseries_slow.parquet")).unwrap();
     assert_eq!(main.len(), 61);
@@ -144,8 +120,8 @@ fn a_run_removes_an_earlier_runs_verify_runs() {
     std::fs::create_dir_all(&mine).unwrap();
     std::fs::write(mine.join("notes.txt"), "mine").unwrap();
     let d = dir.to_str().unwrap();
-    let o = rolldyn(&["run", "--duration", "1 ms", "-o", d], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_into(d, None, "1 ms", &[]);
+    assert_ok(&o);
     assert!(!verify.exists());
     assert_eq!(
         std::fs::read_to_string(mine.join("notes.txt")).unwrap(),
@@ -177,12 +153,12 @@ fn a_run_replaces_an_earlier_sweep_in_its_directory_and_a_sweep_a_run() {
     let dir = temp_dir("run-or-sweep");
     let d = dir.to_str().unwrap();
     let o = sweep_two_points(d);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert!(dir.join("sweep.json").is_file() && dir.join("point-0001").is_dir());
     // A run into the sweep's directory: the sweep goes, and the report
     // describes the run (a report prefers a sweep's table when both are there).
     let o = rolldyn(&["run", "--duration", "1 ms", "-o", d, "--report"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert!(!dir.join("sweep.json").exists() && !dir.join("sweep.csv").exists());
     assert!(!dir.join("point-0000").exists() && !dir.join("point-0001").exists());
     assert!(summary_of(&dir)["status"] == "completed");
@@ -193,7 +169,7 @@ fn a_run_replaces_an_earlier_sweep_in_its_directory_and_a_sweep_a_run() {
     );
     // A sweep into the run's directory: the run's files go.
     let o = sweep_two_points(d);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     for gone in ["run.json", "summary.json", "timeseries.parquet"] {
         assert!(!dir.join(gone).exists(), "{gone}");
     }
@@ -221,7 +197,7 @@ fn a_sweep_removes_an_earlier_sweeps_other_points() {
     let notes = plant("point-notes", true);
     let bare = plant("point-0009", false);
     let o = sweep_two_points(dir.to_str().unwrap());
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert!(!stale.exists() && !wider.exists());
     assert!(notes.exists() && bare.exists());
     for point in ["point-0000", "point-0001"] {

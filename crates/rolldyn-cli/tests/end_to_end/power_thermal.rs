@@ -3,7 +3,7 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{rolldyn, stderr, summary_of, temp_dir};
+use crate::common::{assert_ok, assert_refused, rolldyn, run_into, stderr, summary_of, temp_dir};
 use serde_json::Value;
 
 /// The default case's run: the component means sum to the mean
@@ -14,19 +14,8 @@ use serde_json::Value;
 fn run_reports_power_by_component() {
     let dir = temp_dir("power-run");
     let d = dir.to_string_lossy().into_owned();
-    let o = rolldyn(
-        &[
-            "run",
-            "--duration",
-            "8 ms",
-            "-o",
-            &d,
-            "--set",
-            "output.power_per_ball=true",
-        ],
-        None,
-    );
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_into(&d, None, "8 ms", &["output.power_per_ball=true"]);
+    assert_ok(&o);
     let s: Value = summary_of(&dir);
     let f = |k: &str| s[k].as_f64().unwrap_or_else(|| panic!("{k} missing"));
     let (sum, exact) = (f("mean_sampled_power_loss_w"), f("mean_dissipated_power_w"));
@@ -94,7 +83,7 @@ fn seals_add_their_moment_to_the_drive() {
             args.extend(["--set", s]);
         }
         let o = rolldyn(&args, None);
-        assert!(o.status.success(), "{}", stderr(&o));
+        assert_ok(&o);
         let s: Value = summary_of(&dir);
         let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
         std::fs::remove_dir_all(&dir).ok();
@@ -145,12 +134,7 @@ fn seals_add_their_moment_to_the_drive() {
     assert!((gained / (moment * omega) - 1.0).abs() < 1e-9, "{gained} W");
     // A [seals] table without its moment is refused, naming the key.
     let o = rolldyn(&["check", "--set", "seals.transition_speed=2 rpm"], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("seals.friction_torque"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["seals.friction_torque"]);
 }
 
 fn preset(name: &str) -> String {
@@ -219,18 +203,12 @@ fn power_needs_a_sliding_friction() {
         .map(|l| format!("{l}\n"))
         .collect();
     let o = rolldyn(&["power", "-"], Some(&case));
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("power.sliding_friction"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["power.sliding_friction"]);
     let o = rolldyn(
         &["power", "-", "--set", "power.sliding_friction=1.5"],
         Some(&case),
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("[0, 1]"), "{}", stderr(&o));
+    assert_refused(&o, &["[0, 1]"]);
 }
 
 /// `rolldyn thermal`: converged, heat in = heat out, the warm-up rises
@@ -348,7 +326,7 @@ fn quasistatic_sweep_has_power_columns() {
         ],
         Some(&case),
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let rows: Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
     let p = |i: usize| rows[i]["power_loss_w"].as_f64().unwrap();
@@ -369,22 +347,15 @@ fn a_coupled_run_stops_beyond_the_temperature_limit() {
     let case = preset("acbb_30x62");
     let dir = temp_dir("thermal-limit");
     let d = dir.to_string_lossy().into_owned();
-    let o = rolldyn(
+    let o = run_into(
+        &d,
+        Some(&case),
+        "1 ms",
         &[
-            "run",
-            "-",
-            "--duration",
-            "1 ms",
-            "-o",
-            &d,
-            "--set",
             "thermal.run_coupling=true",
-            "--set",
             "thermal.run_start=\"ambient\"",
-            "--set",
             "thermal.ambient_temperature=\"350 degC\"",
         ],
-        Some(&case),
     );
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
     assert!(stderr(&o).contains("beyond the 315 °C"), "{}", stderr(&o));
@@ -401,22 +372,13 @@ fn run_with_thermal_coupling() {
     let case = preset("acbb_30x62");
     let dir = temp_dir("thermal-run");
     let d = dir.to_string_lossy().into_owned();
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--duration",
-            "3 ms",
-            "-o",
-            &d,
-            "--set",
-            "thermal.run_coupling=true",
-            "--set",
-            "thermal.update_interval=0.5ms",
-        ],
+    let o = run_into(
+        &d,
         Some(&case),
+        "3 ms",
+        &["thermal.run_coupling=true", "thermal.update_interval=0.5ms"],
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let s: Value = summary_of(&dir);
     let t = &s["thermal_coupling"];
     assert_eq!(t["updates"].as_u64(), Some(5), "{t}");
@@ -433,51 +395,23 @@ fn run_with_thermal_coupling() {
     // Not coupled: the key is null.
     let plain = temp_dir("thermal-run-plain");
     let p = plain.to_string_lossy().into_owned();
-    assert!(
-        rolldyn(&["run", "-", "--duration", "1 ms", "-o", &p], Some(&case))
-            .status
-            .success()
-    );
+    assert!(run_into(&p, Some(&case), "1 ms", &[]).status.success());
     let s: Value = summary_of(&plain);
     assert!(s["thermal_coupling"].is_null());
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--duration",
-            "1 ms",
-            "-o",
-            &p,
-            "--set",
-            "thermal.update_interval=1ms",
-        ],
-        Some(&case),
-    );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("thermal.run_coupling"),
-        "{}",
-        stderr(&o)
-    );
+    let o = run_into(&p, Some(&case), "1 ms", &["thermal.update_interval=1ms"]);
+    assert_refused(&o, &["thermal.run_coupling"]);
     // From cold: every part at the ambient temperature, warming.
-    let o = rolldyn(
+    let o = run_into(
+        &d,
+        Some(&case),
+        "3 ms",
         &[
-            "run",
-            "-",
-            "--duration",
-            "3 ms",
-            "-o",
-            &d,
-            "--set",
             "thermal.run_coupling=true",
-            "--set",
             "thermal.run_start=\"ambient\"",
-            "--set",
             "thermal.ambient_temperature=\"25 degC\"",
         ],
-        Some(&case),
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let s: Value = summary_of(&dir);
     let t = &s["thermal_coupling"];
     for node in ["ball", "inner_ring", "outer_ring", "housing", "oil"] {
@@ -486,21 +420,8 @@ fn run_with_thermal_coupling() {
         assert!((start - 25.0).abs() < 1e-9, "{node} starts at {start}");
         assert!(end > start, "{node} warms: {start} → {end}");
     }
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--duration",
-            "1 ms",
-            "-o",
-            &p,
-            "--set",
-            "thermal.run_start=\"ambient\"",
-        ],
-        Some(&case),
-    );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("thermal.run_start"), "{}", stderr(&o));
+    let o = run_into(&p, Some(&case), "1 ms", &["thermal.run_start=\"ambient\""]);
+    assert_refused(&o, &["thermal.run_start"]);
     std::fs::remove_dir_all(&dir).ok();
     std::fs::remove_dir_all(&plain).ok();
 }
@@ -515,10 +436,7 @@ fn every_preset_reports_the_torque_that_did_the_work() {
     for name in rolldyn_case::presets::PRESETS.iter().map(|p| p.name) {
         let dir = temp_dir(&format!("torque-{name}"));
         let d = dir.to_string_lossy().into_owned();
-        let o = rolldyn(
-            &["run", "-", "--duration", "2 ms", "-o", &d],
-            Some(&preset(name)),
-        );
+        let o = run_into(&d, Some(&preset(name)), "2 ms", &[]);
         assert!(o.status.success(), "{name}: {}", stderr(&o));
         let s: Value = summary_of(&dir);
         let f = |k: &str| s[k].as_f64().unwrap_or_else(|| panic!("{name}: {k}"));
@@ -597,8 +515,7 @@ fn lubrication_refusals_name_the_key() {
         &["check", "-", "--set", "lubrication.method=\"oil_jet\""],
         Some(&preset("6304")),
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("[lubricant]"), "{}", stderr(&o));
+    assert_refused(&o, &["[lubricant]"]);
 }
 
 /// The drive power over a run's averaging window from its `drive_work_j`

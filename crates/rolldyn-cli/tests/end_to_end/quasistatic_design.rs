@@ -6,7 +6,7 @@
 
 use crate::common;
 
-use crate::common::{json, rolldyn, stderr};
+use crate::common::{assert_ok, assert_refused, json, rolldyn, stderr};
 
 #[test]
 fn radial_load_direction_ball_azimuth_and_compliance() {
@@ -161,8 +161,7 @@ fn fixed_tilt_and_misalignment() {
         ],
         None,
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("quasi-static only"), "{}", stderr(&o));
+    assert_refused(&o, &["quasi-static only"]);
     assert!(stderr(&o).contains("operating.tilt_y"), "{}", stderr(&o));
     let dir = common::temp_dir("fixed-tilt-run");
     let d = dir.to_str().unwrap();
@@ -179,7 +178,7 @@ fn fixed_tilt_and_misalignment() {
         ],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let series = rolldyn_io::read_parquet(&dir.join("timeseries.parquet")).unwrap();
     for name in ["inner_ring_tilt_y_rad", "inner_ring_tilt_z_rad"] {
         assert!(

@@ -6,7 +6,7 @@
 
 use crate::common;
 
-use crate::common::{rolldyn, stderr, stdout, summary_of, temp_dir};
+use crate::common::{assert_ok, assert_refused, rolldyn, stderr, stdout, summary_of, temp_dir};
 use serde_json::Value;
 
 /// Sections of a report page, checked to be well-formed XML with inline
@@ -35,7 +35,7 @@ fn run_report_shows_every_section() {
     let dir = temp_dir("run-report");
     let d = dir.to_str().unwrap();
     let o = rolldyn(&["run", "--duration", "2 ms", "--report", "-o", d], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert!(stdout(&o).contains("report.html"));
     let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
     let (ids, plots) = sections(&html);
@@ -54,7 +54,7 @@ fn run_report_shows_every_section() {
     // `rolldyn report` rewrites the same page.
     std::fs::remove_file(dir.join("report.html")).unwrap();
     let o = rolldyn(&["report", d], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert_eq!(
         std::fs::read_to_string(dir.join("report.html")).unwrap(),
         html
@@ -80,7 +80,7 @@ fn report_leaves_out_what_a_run_has_not() {
         ],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
     let (ids, _) = sections(&html);
     assert!(!ids.contains(&"orbit".to_string()), "{ids:?}");
@@ -94,12 +94,7 @@ fn report_of_a_directory_without_results_is_refused() {
     let dir = temp_dir("no-results");
     std::fs::create_dir_all(&dir).unwrap();
     let o = rolldyn(&["report", dir.to_str().unwrap()], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("not a run or sweep directory"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["not a run or sweep directory"]);
     assert!(!dir.join("report.html").exists());
 }
 
@@ -119,9 +114,9 @@ fn quasistatic_sweep_report() {
         ],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let o = rolldyn(&["report", d], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
     let (ids, plots) = sections(&html);
     assert_eq!(ids, ["points", "quantities"]);
@@ -165,7 +160,7 @@ fn dynamic_sweep_is_deterministic_whatever_the_thread_count() {
             .env("RAYON_NUM_THREADS", threads)
             .output()
             .unwrap();
-        assert!(o.status.success(), "{}", stderr(&o));
+        assert_ok(&o);
         assert!(
             stdout(&o).contains("4 of 4 runs completed"),
             "{}",
@@ -237,7 +232,7 @@ fn dynamic_sweep_over_case_keys_labels_its_rows() {
         ],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
     let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
     assert_eq!(
@@ -295,7 +290,7 @@ fn sampled_sweep_is_seeded_and_labelled() {
             ],
             None,
         );
-        assert!(o.status.success(), "{}", stderr(&o));
+        assert_ok(&o);
         let rows = rows(&dir);
         std::fs::remove_dir_all(&dir).ok();
         rows.iter()
@@ -317,25 +312,14 @@ fn sampled_sweep_is_seeded_and_labelled() {
 #[test]
 fn dynamic_sweep_input_errors() {
     let o = rolldyn(&["run", "--sweep", "temperature=1,2"], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("unknown sweep variable"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["unknown sweep variable"]);
     let o = rolldyn(
         &["run", "--sweep", "speed=1rpm,2rpm", "--resume", "x"],
         None,
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("not with --sweep"), "{}", stderr(&o));
+    assert_refused(&o, &["not with --sweep"]);
     let o = rolldyn(&["run", "--sweep", "speed=0rpm..1000rpm/2000"], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("above the limit of 1000"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["above the limit of 1000"]);
     // A bad point fails before any run starts.
     let dir = temp_dir("run-sweep-bad");
     let o = rolldyn(
@@ -381,7 +365,7 @@ fn the_report_fits_the_page_in_a_browser() {
         &["run", case, "--duration", "0.05 s", "-o", d, "--report"],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let html = std::fs::read_to_string(dir.join("report.html")).unwrap();
     let probe = html.replace(
         "</body>",

@@ -8,7 +8,9 @@
 
 use crate::common;
 
-use crate::common::{pair, rolldyn, stderr, summary_of, temp_dir};
+use crate::common::{
+    assert_ok, assert_refused, pair, rolldyn, run_into, stderr, summary_of, temp_dir,
+};
 use std::path::Path;
 use std::process::{Command, Stdio};
 
@@ -54,7 +56,7 @@ fn killed_run_is_readable_and_resumes_bit_identically() {
         let killed = temp_dir(&format!("resume-killed-{tag}"));
         let (w, k) = (whole.to_str().unwrap(), killed.to_str().unwrap());
         let o = rolldyn(&args(w, integrator, duration), None);
-        assert!(o.status.success(), "{}", stderr(&o));
+        assert_ok(&o);
         assert!(
             whole.join("checkpoint.bin").exists(),
             "a completed run keeps its last state (for --until)"
@@ -91,8 +93,7 @@ fn killed_run_is_readable_and_resumes_bit_identically() {
         assert_ne!(edited, record);
         std::fs::write(killed.join("run.json"), &edited).unwrap();
         let o = rolldyn(&["run", "--resume", k], None);
-        assert_eq!(o.status.code(), Some(2));
-        assert!(stderr(&o).contains("does not belong"), "{}", stderr(&o));
+        assert_refused(&o, &["does not belong"]);
         std::fs::write(killed.join("run.json"), &record).unwrap();
 
         let o = rolldyn(&["run", "--resume", k], None);
@@ -115,10 +116,10 @@ fn an_extended_run_rewrites_its_report() {
     let dir = temp_dir("resume-report");
     let d = dir.to_str().unwrap();
     let o = rolldyn(&["run", "-o", d, "--duration", "0.2 ms", "--report"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let before = std::fs::read_to_string(dir.join("report.html")).unwrap();
     let o = rolldyn(&["run", "--resume", d, "--until", "0.4 ms"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert!(String::from_utf8_lossy(&o.stdout).contains("report.html"));
     let after = std::fs::read_to_string(dir.join("report.html")).unwrap();
     assert_ne!(before, after);
@@ -135,25 +136,20 @@ fn resume_refuses_what_it_cannot_continue() {
     let d = dir.to_str().unwrap();
     // Nothing there.
     let o = rolldyn(&["run", "--resume", d], None);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("run.json"), "{}", stderr(&o));
+    assert_refused(&o, &["run.json"]);
     // A completed run is complete: --until extends it, not --resume alone.
-    let o = rolldyn(&["run", "-o", d, "--duration", "0.2 ms"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_into(d, None, "0.2 ms", &[]);
+    assert_ok(&o);
     let o = rolldyn(&["run", "--resume", d], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--until"), "{}", stderr(&o));
+    assert_refused(&o, &["--until"]);
     // --until must go beyond where the run is, and only with --resume.
     let o = rolldyn(&["run", "--resume", d, "--until", "0.1 ms"], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("already at"), "{}", stderr(&o));
+    assert_refused(&o, &["already at"]);
     let o = rolldyn(&["run", "--until", "1 ms"], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--resume"), "{}", stderr(&o));
+    assert_refused(&o, &["--resume"]);
     // The case comes from the directory, not the command line.
     let o = rolldyn(&["run", "--resume", d, "--speed", "1000 rpm"], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--resume"), "{}", stderr(&o));
+    assert_refused(&o, &["--resume"]);
     // The checkpoint's own checks, on a run whose summary says it did not
     // complete (a completed one is refused before them, above).
     let summary = std::fs::read_to_string(dir.join("summary.json"))
@@ -163,21 +159,18 @@ fn resume_refuses_what_it_cannot_continue() {
     // No checkpoint at all (removed): refused, naming it.
     std::fs::remove_file(dir.join("checkpoint.bin")).unwrap();
     let o = rolldyn(&["run", "--resume", d], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("checkpoint.bin"), "{}", stderr(&o));
+    assert_refused(&o, &["checkpoint.bin"]);
     // A damaged checkpoint is refused with the reason.
     std::fs::write(dir.join("checkpoint.bin"), b"not a checkpoint").unwrap();
     let o = rolldyn(&["run", "--resume", d], None);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("checkpoint"), "{}", stderr(&o));
+    assert_refused(&o, &["checkpoint"]);
     // A run of another format (an older rolldyn's) is refused, saying so.
     let record = std::fs::read_to_string(dir.join("run.json")).unwrap();
     let mut old: serde_json::Value = serde_json::from_str(&record).unwrap();
     old["format"] = 2.into();
     std::fs::write(dir.join("run.json"), old.to_string()).unwrap();
     let o = rolldyn(&["run", "--resume", d], None);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("format 2"), "{}", stderr(&o));
+    assert_refused(&o, &["format 2"]);
     // Same version, another build: named as such.
     assert!(
         stderr(&o).contains("written by another build of rolldyn")
@@ -189,12 +182,7 @@ fn resume_refuses_what_it_cannot_continue() {
     old["rolldyn_version"] = "0.0.9".into();
     std::fs::write(dir.join("run.json"), old.to_string()).unwrap();
     let o = rolldyn(&["run", "--resume", d], None);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains("written by rolldyn 0.0.9 (this rolldyn reads format"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["written by rolldyn 0.0.9 (this rolldyn reads format"]);
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -206,12 +194,12 @@ fn until_extends_a_finished_run() {
     let dir = temp_dir("resume-until");
     let straight = temp_dir("resume-until-straight");
     let (d, s) = (dir.to_str().unwrap(), straight.to_str().unwrap());
-    let o = rolldyn(&["run", "-o", d, "--duration", "2 ms"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_into(d, None, "2 ms", &[]);
+    assert_ok(&o);
     let o = rolldyn(&["run", "--resume", d, "--until", "4 ms"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let o = rolldyn(&["run", "-o", s, "--duration", "4 ms"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
+    let o = run_into(s, None, "4 ms", &[]);
+    assert_ok(&o);
     let (extended, whole) = (summary(&dir), summary(&straight));
     assert_eq!(extended["status"], "completed");
     assert_eq!(extended["requested_duration_s"], 0.004);
@@ -227,7 +215,7 @@ fn until_extends_a_finished_run() {
     let record = std::fs::read_to_string(dir.join("run.json")).unwrap();
     assert!(record.contains("solver.duration=0.004 s"), "{record}");
     let o = rolldyn(&["run", "--resume", d, "--until", "5 ms"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert_eq!(summary(&dir)["requested_duration_s"], 0.005);
     std::fs::remove_dir_all(&dir).ok();
     std::fs::remove_dir_all(&straight).ok();
@@ -280,7 +268,7 @@ fn a_set_run_resumes_bit_identically() {
     };
     assert_eq!(read(&killed)["status"], "partial");
     let o = rolldyn(&["run", "--resume", killed.to_str().unwrap()], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert_eq!(
         common::series_bytes(&killed),
         common::series_bytes(&whole),
@@ -297,7 +285,7 @@ fn a_set_run_resumes_bit_identically() {
         ],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let extended = read(&whole);
     assert_eq!(extended["status"], "completed");
     assert_eq!(extended["samples"], 821);

@@ -7,7 +7,7 @@
 
 use crate::common;
 
-use crate::common::{stderr, summary_of, temp_dir};
+use crate::common::{assert_ok, stderr, summary_of, temp_dir};
 use serde_json::Value;
 
 #[test]
@@ -23,7 +23,7 @@ fn run_is_deterministic_whatever_the_thread_count() {
                 .env("RAYON_NUM_THREADS", threads)
                 .output()
                 .expect("rolldyn runs");
-            assert!(o.status.success(), "{}", stderr(&o));
+            assert_ok(&o);
             let parquet = common::series_bytes(&dir);
             let mut summary: Value = summary_of(&dir);
             summary["wall_time_s"] = Value::Null;
@@ -53,7 +53,7 @@ fn auto_switches_identically_whatever_the_thread_count() {
                 .env("RAYON_NUM_THREADS", threads)
                 .output()
                 .expect("rolldyn runs");
-            assert!(o.status.success(), "{}", stderr(&o));
+            assert_ok(&o);
             let mut summary: Value = summary_of(&dir);
             summary["wall_time_s"] = Value::Null;
             std::fs::remove_dir_all(&dir).ok();
@@ -77,7 +77,7 @@ fn default_case_closes_its_energy_balance_in_the_whirl_limit_cycle() {
         .arg(&dir)
         .output()
         .expect("rolldyn runs");
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let summary: Value = summary_of(&dir);
     std::fs::remove_dir_all(&dir).ok();
     let whirl = summary["cage_whirl_radius_mean_m"].as_f64().unwrap();
@@ -113,7 +113,7 @@ fn film_pockets_cap_the_default_step() {
             .arg(&dir)
             .output()
             .expect("rolldyn runs");
-        assert!(o.status.success(), "{}", stderr(&o));
+        assert_ok(&o);
         let summary = summary_of(&dir);
         std::fs::remove_dir_all(&dir).ok();
         summary
@@ -140,7 +140,7 @@ fn an_odd_cell_count_along_the_rolling_direction_is_warned_of() {
         }
         let o = command.output().expect("rolldyn runs");
         std::fs::remove_dir_all(&dir).ok();
-        assert!(o.status.success(), "{}", stderr(&o));
+        assert_ok(&o);
         stderr(&o)
     };
     let odd = run(Some(r#"{ method = "graded", across = 12, along = 5 }"#));

@@ -6,7 +6,7 @@
 
 use crate::common;
 
-use crate::common::{rolldyn, stderr, summary_of, temp_dir};
+use crate::common::{assert_ok, rolldyn, run_into, stderr, summary_of, temp_dir};
 use rolldyn_io::read_parquet;
 
 const CASE: &str = concat!(
@@ -55,23 +55,13 @@ fn run(tag: &str, sensor: bool, extra: &[&str]) -> (std::path::PathBuf, serde_js
 #[test]
 fn a_constant_sensor_record_has_no_crest_factor() {
     let dir = temp_dir("sensor-constant");
-    let o = rolldyn(
-        &[
-            "run",
-            "-o",
-            dir.to_str().unwrap(),
-            "--duration",
-            "0.2 ms",
-            "--set",
-            "sensor={}",
-            "--set",
-            "sensor.noise=0 m/s^2",
-            "--set",
-            "model.gravity=false",
-        ],
+    let o = run_into(
+        dir.to_str().unwrap(),
         None,
+        "0.2 ms",
+        &["sensor={}", "sensor.noise=0 m/s^2", "model.gravity=false"],
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert!(!stderr(&o).contains("non-finite"), "{}", stderr(&o));
     let summary: serde_json::Value = summary_of(&dir);
     let s = &summary["sensor"];
@@ -115,7 +105,7 @@ fn a_sensor_records_the_housing_and_the_summary_analyses_it() {
         ],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let spectrum: serde_json::Value = serde_json::from_str(&common::stdout(&o)).unwrap();
     assert_eq!(spectrum["channel"], "sensor_acceleration_m_s2");
     // Without a sensor: no channels, a null key, the ring's channel analysed.
@@ -197,7 +187,7 @@ fn a_small_range_clips_and_warns() {
         ],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     assert!(
         stderr(&o).contains("raise sensor.full_scale"),
         "{}",
@@ -307,20 +297,13 @@ fn the_rings_velocity_rms_does_not_fold_the_vibration_above_nyquist() {
     let text = case_text(false);
     let at = |rate: &str| {
         let dir = temp_dir(&format!("alias-{rate}"));
-        let o = rolldyn(
-            &[
-                "run",
-                "-",
-                "--duration",
-                "0.1 s",
-                "--set",
-                &format!("output.sample_rate={rate}"),
-                "-o",
-                dir.to_str().unwrap(),
-            ],
+        let o = run_into(
+            dir.to_str().unwrap(),
             Some(&text),
+            "0.1 s",
+            &[&format!("output.sample_rate={rate}")],
         );
-        assert!(o.status.success(), "{}", stderr(&o));
+        assert_ok(&o);
         dir
     };
     let (coarse, fine) = (at("12 kHz"), at("48 kHz"));

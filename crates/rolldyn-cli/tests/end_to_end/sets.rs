@@ -4,7 +4,9 @@
 
 #![allow(clippy::unwrap_used)]
 
-use crate::common::{SHAFT, json, keys, pair, rolldyn, stderr, stdout, temp_dir};
+use crate::common::{
+    SHAFT, assert_ok, assert_refused, json, keys, pair, rolldyn, stderr, stdout, temp_dir,
+};
 
 #[test]
 fn back_to_back_pair_report() {
@@ -139,7 +141,7 @@ fn sweep_over_speed_writes_the_preload() {
         ],
         Some(&case),
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let rows: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
     let preload: Vec<f64> = rows
@@ -197,7 +199,7 @@ fn set_sweep_rows_are_the_single_solves_whatever_the_threads() {
             .write_all(case.as_bytes())
             .unwrap();
         let o = child.wait_with_output().unwrap();
-        assert!(o.status.success(), "{}", stderr(&o));
+        assert_ok(&o);
         let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
         let rows: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap())
@@ -265,7 +267,7 @@ fn a_shaft_sweeps_over_speed_and_load() {
         ],
         Some(&case),
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let rows: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
     std::fs::remove_dir_all(&dir).ok();
@@ -370,12 +372,7 @@ preload_offset = "8 um"
         1,
     );
     let o = rolldyn(&["quasistatic", "-"], Some(&floating));
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("shaft.bearings[0].preload_offset"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["shaft.bearings[0].preload_offset"]);
 }
 
 #[test]
@@ -453,8 +450,7 @@ fn errors_name_the_key() {
     assert!((sum - v["power_loss_w"].as_f64().unwrap()).abs() < 1e-12);
     assert!(sum > 0.0);
     let o = rolldyn(&["quasistatic", "-", "--control", "traction"], Some(&case));
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--control traction"), "{}", stderr(&o));
+    assert_refused(&o, &["--control traction"]);
 }
 
 /// The shaft's loads balance the applied ones; the radial reactions are
@@ -626,8 +622,7 @@ fn shaft_errors_name_the_key() {
     }
     // A shaft's thermal network has its steady state only.
     let o = rolldyn(&["thermal", "-", "--transient", "10 min"], Some(&case));
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--transient"), "{}", stderr(&o));
+    assert_refused(&o, &["--transient"]);
 }
 
 /// `[fits]`: the 6206's 12.5 µm shrink to −4.3 µm with a 15 µm shaft and a
@@ -733,8 +728,7 @@ fn a_floating_bearing_carries_no_thrust() {
             "preset = \"6206\"\nposition = \"-60 mm\"\naxial = \"floating\"",
         )),
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("shaft.bearings"), "{}", stderr(&o));
+    assert_refused(&o, &["shaft.bearings"]);
 }
 
 /// A pair whose second bearing lifts off prints a dash for its contact
@@ -745,7 +739,7 @@ fn an_unloaded_bearing_of_a_set_prints_no_nan() {
         &["quasistatic", "--set", "arrangement.kind=back_to_back"],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(text.contains("(unloaded beyond lift-off)"), "{text}");
     assert!(!text.contains("NaN"), "{text}");
@@ -756,7 +750,7 @@ fn an_unloaded_bearing_of_a_set_prints_no_nan() {
 #[test]
 fn a_preload_the_clearance_takes_up_prints_no_nan() {
     let o = rolldyn(&["new", "--bearing", "6309", "--clearance", "C4"], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let case = String::from_utf8(o.stdout).unwrap();
     let o = rolldyn(
         &[
@@ -769,7 +763,7 @@ fn a_preload_the_clearance_takes_up_prints_no_nan() {
         ],
         Some(&case),
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(text.contains("no preload left"), "{text}");
     assert!(!text.contains("NaN") && !text.contains("-0.0 N"), "{text}");
@@ -786,11 +780,10 @@ fn resuming_a_completed_set_is_refused_at_once() {
         "/../../examples/spindle_pair/case.toml"
     );
     let o = rolldyn(&["run", case, "--duration", "0.2 ms", "-o", d], None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let begun = std::time::Instant::now();
     let o = rolldyn(&["run", "--resume", d], None);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("--until"), "{}", stderr(&o));
+    assert_refused(&o, &["--until"]);
     // Not the seconds of a set's start (generous for a loaded machine).
     assert!(begun.elapsed().as_secs_f64() < 5.0);
     std::fs::remove_dir_all(&dir).ok();

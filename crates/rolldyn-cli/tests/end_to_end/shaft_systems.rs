@@ -7,7 +7,10 @@
 
 use crate::common;
 
-use crate::common::{SHAFT, json, keys, pair, rolldyn, stderr, stdout, summary_of, temp_dir};
+use crate::common::{
+    SHAFT, assert_refused, json, keys, pair, rolldyn, run_into, stderr, stdout, summary_of,
+    temp_dir,
+};
 
 /// `rolldyn thermal` of a pair: every bearing's network with the set in
 /// the loop; the preload at the operating temperatures above the one at
@@ -87,8 +90,7 @@ fn thermal_preload_of_a_pair() {
     assert!(f(a, "operating_clearance_m") < f(a, "reference_clearance_m"));
     assert!(f(a, "operating_axial_offset_m") > f(a, "reference_axial_offset_m"));
     let o = rolldyn(&["thermal", "-", "--transient", "10 min"], Some(&case));
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--transient"), "{}", stderr(&o));
+    assert_refused(&o, &["--transient"]);
     // Under 200 N of thrust the +x bearing runs hotter and the pair
     // still balances it.
     let v = json(&["thermal", "-", "--json"], Some(&case));
@@ -161,8 +163,7 @@ fn dynamic_run_of_a_pair() {
     assert_pair_sweep(&case, &dir);
     // A completed run is not resumed, only extended.
     let o = rolldyn(&["run", "--resume", out.to_str().unwrap()], None);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--until"), "{}", stderr(&o));
+    assert_refused(&o, &["--until"]);
 }
 
 /// The summary of a pair's run: its keys and each bearing's, the balance
@@ -291,17 +292,7 @@ fn dynamic_run_of_a_shaft() {
     let case = SHAFT.replace("ORIENTATION", "forward");
     let dir = temp_dir("shaft-run");
     let out = dir.join("run");
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--duration",
-            "3 ms",
-            "-o",
-            out.to_str().unwrap(),
-        ],
-        Some(&case),
-    );
+    let o = run_into(out.to_str().unwrap(), Some(&case), "3 ms", &[]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let v: serde_json::Value = summary_of(&out);
     assert_eq!(v["kind"], "shaft");
@@ -327,16 +318,11 @@ fn dynamic_run_of_a_shaft() {
         "axial = \"floating\"\nhousing_friction = 0",
         1,
     );
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--duration",
-            "3 ms",
-            "-o",
-            dir.join("floating").to_str().unwrap(),
-        ],
+    let o = run_into(
+        dir.join("floating").to_str().unwrap(),
         Some(&floating),
+        "3 ms",
+        &[],
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let v: serde_json::Value = summary_of(&dir.join("floating"));
@@ -352,12 +338,8 @@ fn dynamic_run_of_a_shaft() {
 
 /// A 1 ms run of `case` is refused (exit 2) with `key` in its message.
 fn assert_run_refused(case: &str, key: &str) {
-    let o = rolldyn(
-        &["run", "-", "--duration", "1 ms", "-o", "/nonexistent/never"],
-        Some(case),
-    );
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains(key), "{}", stderr(&o));
+    let o = run_into("/nonexistent/never", Some(case), "1 ms", &[]);
+    assert_refused(&o, &[key]);
 }
 
 /// An elastic shaft (`shaft.diameter`): nodes at the bearings, the load
@@ -490,12 +472,7 @@ fn a_shaft_bearing_takes_its_fits() {
         &["quasistatic", "-"],
         Some(&case.replace("\"k5\"", "\"q9\"")),
     );
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("shaft.bearings[0].fits"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["shaft.bearings[0].fits"]);
 }
 
 /// `rolldyn thermal` of a `[shaft]`: every bearing's network under the
@@ -529,8 +506,7 @@ fn thermal_steady_state_of_a_shaft() {
     }
     let elastic = case.replacen("[shaft]\n", "[shaft]\ndiameter = \"25 mm\"\n", 1);
     let o = rolldyn(&["thermal", "-"], Some(&elastic));
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("shaft.diameter"), "{}", stderr(&o));
+    assert_refused(&o, &["shaft.diameter"]);
 }
 
 /// A set's run is the same bytes on one thread as on two (the balls of
@@ -578,17 +554,7 @@ fn a_gear_mesh_shakes_the_shaft() {
     let dir = temp_dir("mesh");
     let shake = |case: &str, tag: &str| {
         let out = dir.join(tag);
-        let o = rolldyn(
-            &[
-                "run",
-                "-",
-                "--duration",
-                "4 ms",
-                "-o",
-                out.to_str().unwrap(),
-            ],
-            Some(case),
-        );
+        let o = run_into(out.to_str().unwrap(), Some(case), "4 ms", &[]);
         assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
         let s: serde_json::Value = summary_of(&out);
         assert!(s["energy_balance_relative_error"].as_f64().unwrap() < 1e-3);
@@ -614,12 +580,7 @@ fn a_gear_mesh_shakes_the_shaft() {
         1,
     );
     let o = rolldyn(&["check", "-"], Some(&half));
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("shaft.loads[0].mesh_fluctuation"),
-        "{}",
-        stderr(&o)
-    );
+    assert_refused(&o, &["shaft.loads[0].mesh_fluctuation"]);
     std::fs::remove_dir_all(&dir).ok();
 }
 

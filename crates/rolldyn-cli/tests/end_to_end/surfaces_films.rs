@@ -7,7 +7,9 @@
 
 use crate::common;
 
-use crate::common::{json, keys, rolldyn, stderr, stdout, summary_of, temp_dir};
+use crate::common::{
+    assert_ok, json, keys, rolldyn, run_into, stderr, stdout, summary_of, temp_dir,
+};
 use rolldyn_case::presets::PRESETS;
 use serde_json::Value;
 
@@ -99,8 +101,8 @@ fn spectrum_of_a_wavy_run_names_bpfo() {
     );
     let dir = temp_dir("spectrum");
     let d = dir.to_string_lossy().into_owned();
-    let o = rolldyn(&["run", "-", "--duration", "12 ms", "-o", &d], Some(&case));
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run_into(&d, Some(&case), "12 ms", &[]);
+    assert_ok(&o);
     assert_summary_of_a_wavy_run(&dir);
     let check = json(&["check", "-", "--json"], Some(&case));
     assert_eq!(check["surfaces"][0]["part"], "outer");
@@ -302,23 +304,16 @@ fn ball_surfaces_work_with_the_traction_quasistatic() {
         &["quasistatic", "-", "--control", "traction", "--json"],
         Some(&case),
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let dir = temp_dir("ball-surface");
     let d = dir.to_string_lossy().into_owned();
-    let o = rolldyn(
-        &[
-            "run",
-            "-",
-            "--duration",
-            "1 ms",
-            "--set",
-            "solver.start=\"quasistatic_traction\"",
-            "-o",
-            &d,
-        ],
+    let o = run_into(
+        &d,
         Some(&case),
+        "1 ms",
+        &["solver.start=\"quasistatic_traction\""],
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -469,7 +464,7 @@ fn the_film_in_the_approach_in_quasistatic_and_run() {
         &["run", "--duration", "4 ms", "-o", &d, film[0], film[1]],
         None,
     );
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let summary: Value = summary_of(&dir);
     assert!(summary["film_work_j"].is_f64());
     let balance = g(&summary["energy_balance_relative_error"]);
@@ -518,7 +513,7 @@ fn mixed_lubrication_in_run_and_its_refusals() {
     let mut args = vec!["run", "--duration", "2 ms", "-o", &d, "--set", mixed];
     args.extend_from_slice(&rough);
     let o = rolldyn(&args, None);
-    assert!(o.status.success(), "{}", stderr(&o));
+    assert_ok(&o);
     let table = parquet::file::reader::SerializedFileReader::new(
         std::fs::File::open(common::first_part(&dir)).unwrap(),
     )

@@ -18,25 +18,13 @@
 //! under combined load; back-to-back is stiffer against moments than
 //! face-to-face.
 
-use super::common::{bearing_7008c, rel, thrust_curve};
+use super::common::{bearing_7008c, rel, steel_solver, thrust_curve};
 use rolldyn::BearingGeometry;
-use rolldyn::contact::HertzModel;
-use rolldyn::material::Material;
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::system::{SetKind, ShaftSystem, SystemConditions};
-use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
+use rolldyn::quasistatic::{Conditions, RacewayControl, SolverOptions};
 
 const SPACING: f64 = 15e-3;
-
-fn solver(g: &BearingGeometry) -> QuasiStaticSolver {
-    QuasiStaticSolver::new(
-        g,
-        &Material::STEEL_52100,
-        &Material::STEEL_52100,
-        HertzModel::Exact,
-    )
-    .unwrap()
-}
 
 /// The contact angle at which the textbook curve gives `target` (of δ_a
 /// with `pick = 0`, of F_a with `pick = 1`), by bisection.
@@ -70,7 +58,7 @@ fn back_to_back_preload_and_lift_off_follow_the_thrust_curve() {
     let g = bearing_7008c();
     let options = SolverOptions::default();
     for preload in [50.0, 200.0, 1000.0] {
-        let set = ShaftSystem::matched(&solver(&g), SetKind::BackToBack, SPACING);
+        let set = ShaftSystem::matched(&steel_solver(&g), SetKind::BackToBack, SPACING);
         let offset = set
             .offset_for_preload(preload, 0.0, RacewayControl::Outer, &options)
             .unwrap();
@@ -95,7 +83,7 @@ fn back_to_back_preload_and_lift_off_follow_the_thrust_curve() {
             "{preload} N: lift-off {lift_off} vs textbook {textbook}"
         );
         // Face-to-face: the same preload and lift-off along the axis.
-        let df = ShaftSystem::matched(&solver(&g), SetKind::FaceToFace, SPACING)
+        let df = ShaftSystem::matched(&steel_solver(&g), SetKind::FaceToFace, SPACING)
             .with_axial_offset(offset)
             .lift_off_load(0.0, RacewayControl::Outer, &options)
             .unwrap()
@@ -115,7 +103,7 @@ fn tandem_triples_preload_and_lift_off_follow_the_thrust_curve() {
     let options = SolverOptions::default();
     for kind in [SetKind::TandemBackToBack, SetKind::TandemFaceToFace] {
         for preload in [100.0, 500.0] {
-            let set = ShaftSystem::matched(&solver(&g), kind, SPACING);
+            let set = ShaftSystem::matched(&steel_solver(&g), kind, SPACING);
             let offset = set
                 .offset_for_preload(preload, 0.0, RacewayControl::Outer, &options)
                 .unwrap();
@@ -161,7 +149,7 @@ fn pair_axial_stiffness_is_twice_the_bearing_stiffness_at_the_preload() {
     let g = bearing_7008c();
     let options = SolverOptions::default();
     let preload = 200.0;
-    let set = ShaftSystem::matched(&solver(&g), SetKind::BackToBack, SPACING);
+    let set = ShaftSystem::matched(&steel_solver(&g), SetKind::BackToBack, SPACING);
     let offset = set
         .offset_for_preload(preload, 0.0, RacewayControl::Outer, &options)
         .unwrap();
@@ -174,7 +162,7 @@ fn pair_axial_stiffness_is_twice_the_bearing_stiffness_at_the_preload() {
         "{:?}",
         pair.displacement
     );
-    let single = solver(&g)
+    let single = steel_solver(&g)
         .solve(
             &Conditions {
                 loads: Loads {
@@ -203,7 +191,7 @@ fn combined_load_balances_and_the_stiffness_predicts_small_changes() {
     let options = SolverOptions::default();
     for speed_rpm in [0.0, 10_000.0] {
         let speed = speed_rpm * std::f64::consts::TAU / 60.0;
-        let set = ShaftSystem::matched(&solver(&g), SetKind::BackToBack, SPACING);
+        let set = ShaftSystem::matched(&steel_solver(&g), SetKind::BackToBack, SPACING);
         let offset = set
             .offset_for_preload(200.0, speed, RacewayControl::Outer, &options)
             .unwrap();
@@ -254,7 +242,7 @@ fn combined_load_balances_and_the_stiffness_predicts_small_changes() {
 fn tandem_pair_shares_the_thrust() {
     let g = bearing_7008c();
     let options = SolverOptions::default();
-    let set = ShaftSystem::matched(&solver(&g), SetKind::Tandem, SPACING);
+    let set = ShaftSystem::matched(&steel_solver(&g), SetKind::Tandem, SPACING);
     let eq = set
         .solve(
             &at_rest(Loads {
@@ -280,7 +268,7 @@ fn back_to_back_is_stiffer_against_tilt_than_face_to_face() {
     let g = bearing_7008c();
     let options = SolverOptions::default();
     let tilt_stiffness = |kind| {
-        let set = ShaftSystem::matched(&solver(&g), kind, SPACING);
+        let set = ShaftSystem::matched(&steel_solver(&g), kind, SPACING);
         let offset = set
             .offset_for_preload(200.0, 0.0, RacewayControl::Outer, &options)
             .unwrap();

@@ -10,27 +10,15 @@
 //! * robustness: converges from the built-in start over 0–20 000 rpm ×
 //!   F_x = 10 N–50 kN for the 7008C and the 7218B, or reports why.
 
-use super::common::{bearing_7008c, bearing_7218b, rel};
+use super::common::{bearing_7008c, bearing_7218b, rel, steel_solver};
 use rolldyn::BearingGeometry;
-use rolldyn::contact::HertzModel;
 use rolldyn::kinematics::cage_speed_ratio;
-use rolldyn::material::Material;
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::{
     Conditions, QuasiStaticError, QuasiStaticSolver, RacewayControl, SolverOptions,
 };
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
-
-fn solver(g: &BearingGeometry) -> QuasiStaticSolver {
-    QuasiStaticSolver::new(
-        g,
-        &Material::STEEL_52100,
-        &Material::STEEL_52100,
-        HertzModel::Exact,
-    )
-    .unwrap()
-}
 
 fn axial(fa: f64, rpm: f64, control: RacewayControl) -> Conditions {
     Conditions {
@@ -46,7 +34,7 @@ fn axial(fa: f64, rpm: f64, control: RacewayControl) -> Conditions {
 #[test]
 fn b4_axial_load_at_speed_gives_identical_balls() {
     let g = bearing_7008c();
-    let sol = solver(&g)
+    let sol = steel_solver(&g)
         .solve(
             &axial(200.0, 10_000.0, RacewayControl::Outer),
             &SolverOptions::default(),
@@ -78,7 +66,7 @@ fn b4_axial_load_at_speed_gives_identical_balls() {
 #[test]
 fn outer_control_kinematics() {
     let g = bearing_7218b();
-    let sol = solver(&g)
+    let sol = steel_solver(&g)
         .solve(
             &axial(20_000.0, 10_000.0, RacewayControl::Outer),
             &SolverOptions::default(),
@@ -114,7 +102,7 @@ fn outer_control_kinematics() {
 #[test]
 fn b5_at_speed_residual_and_stiffness() {
     let g = bearing_7008c();
-    let s = solver(&g);
+    let s = steel_solver(&g);
     let options = SolverOptions::default();
     let base = Conditions {
         loads: Loads {
@@ -154,7 +142,7 @@ fn b5_at_speed_residual_and_stiffness() {
 #[test]
 fn converges_over_the_speed_load_range() {
     for (name, g) in [("7008C", bearing_7008c()), ("7218B", bearing_7218b())] {
-        let s = solver(&g);
+        let s = steel_solver(&g);
         let mut worst_iterations = 0;
         for rpm in [0.0, 1_000.0, 5_000.0, 10_000.0, 15_000.0, 20_000.0] {
             for fa in [10.0, 100.0, 1_000.0, 10_000.0, 50_000.0] {
@@ -198,7 +186,7 @@ fn grid(speeds: &[f64], loads: &[f64]) -> Vec<Conditions> {
 fn b7_sweep_is_deterministic_across_thread_counts() {
     use rolldyn::quasistatic::sweep;
     let g = bearing_7008c();
-    let s = solver(&g);
+    let s = steel_solver(&g);
     let speeds: Vec<f64> = (0..8).map(|i| 2500.0 * i as f64).collect();
     let loads: Vec<f64> = (0..9).map(|i| 10.0 * 2f64.powi(i)).collect();
     let points = grid(&speeds, &loads);
@@ -229,7 +217,7 @@ fn b7_sweep_is_deterministic_across_thread_counts() {
 /// requirement, and the loads balance.
 #[test]
 fn combined_load_7218b_point_converges_under_every_control() {
-    let s = solver(&bearing_7218b());
+    let s = steel_solver(&bearing_7218b());
     for control in [
         RacewayControl::Outer,
         RacewayControl::Inner,
@@ -258,7 +246,7 @@ fn combined_load_7218b_point_converges_under_every_control() {
 /// combined load. 7218B, F_x = F_z = 10 kN, at rest and at 3550 rpm.
 #[test]
 fn conventional_stiffness_is_the_load_deflection_slope() {
-    let s = solver(&bearing_7218b());
+    let s = steel_solver(&bearing_7218b());
     for rpm in [0.0, 3550.0] {
         let at = |fx: f64, fz: f64| {
             s.solve(
@@ -336,7 +324,7 @@ fn grid_points(controls: &[RacewayControl]) -> Vec<Conditions> {
 /// F_z 0–50 kN (5), outer, inner and Harris control (375 points). Returns
 /// per point the conditions and the solve's result.
 fn stress_grid(g: &BearingGeometry) -> (QuasiStaticSolver, Grid) {
-    let s = solver(g);
+    let s = steel_solver(g);
     let points = grid_points(&[
         RacewayControl::Outer,
         RacewayControl::Inner,
@@ -451,7 +439,7 @@ fn stress_grid_7218b() {
 #[test]
 fn stress_grid_with_misalignment() {
     for (name, g) in [("7008C", bearing_7008c()), ("7218B", bearing_7218b())] {
-        let s = solver(&g);
+        let s = steel_solver(&g);
         let mut failed = Vec::new();
         for tilt in [5e-4, 2e-3] {
             let options = SolverOptions {
@@ -489,7 +477,7 @@ fn stress_grid_with_misalignment() {
 /// the drive).
 #[test]
 fn race_drive_changes_only_free_balls() {
-    let s = solver(&bearing_7008c());
+    let s = steel_solver(&bearing_7008c());
     let conditions = Conditions {
         loads: Loads {
             force: [100.0, 0.0, 20000.0],
@@ -574,7 +562,7 @@ fn assert_refusal_checks(s: &QuasiStaticSolver, p: &Conditions, least_axial_load
 /// checks.
 #[test]
 fn light_axial_heavy_radial_corner_7218b() {
-    let s = solver(&bearing_7218b());
+    let s = steel_solver(&bearing_7218b());
     let at = |fx: f64, fz: f64, rpm: f64| Conditions {
         loads: Loads {
             force: [fx, 0.0, fz],

@@ -9,24 +9,12 @@
 //! * B5: residual < 1e-8 of the applied load; the stiffness matrix (implicit
 //!   function theorem) equals finite differences of re-solves.
 
-use super::common::{bearing_6304, bearing_7008c, bearing_7218b, rel, thrust_curve};
-use rolldyn::contact::HertzModel;
-use rolldyn::material::Material;
+use super::common::{bearing_6304, bearing_7008c, bearing_7218b, rel, steel_solver, thrust_curve};
 use rolldyn::operating::Loads;
 use rolldyn::quasistatic::{
     Conditions, Equilibrium, QuasiStaticError, QuasiStaticSolver, RacewayControl, SolverOptions,
 };
 use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
-
-fn solver(g: &BearingGeometry) -> QuasiStaticSolver {
-    QuasiStaticSolver::new(
-        g,
-        &Material::STEEL_52100,
-        &Material::STEEL_52100,
-        HertzModel::Exact,
-    )
-    .unwrap()
-}
 
 /// Static solve (zero speed).
 trait SolveStatic {
@@ -68,7 +56,7 @@ fn thrust_equation() {
         (bearing_7008c(), 5000.0),
         (bearing_7218b(), 40_000.0),
     ] {
-        let sol = solver(&g)
+        let sol = steel_solver(&g)
             .solve_static(&loads(fa, 0.0, 0.0, 0.0, 0.0), &SolverOptions::default())
             .unwrap();
         let alpha = sol.balls[0].inner.contact_angle;
@@ -101,7 +89,7 @@ fn stribeck_limit_for_many_balls() {
         ..Default::default()
     };
     let fr = 500.0;
-    let sol = solver(&g)
+    let sol = steel_solver(&g)
         .solve_static(&loads(0.0, 0.0, fr, 0.0, 0.0), &options)
         .unwrap();
     let q_max = sol.balls.iter().map(|b| b.inner.load).fold(0.0, f64::max);
@@ -114,7 +102,7 @@ fn stribeck_limit_for_many_balls() {
 #[test]
 fn b4_pure_axial_load_gives_identical_balls() {
     let g = bearing_7008c();
-    let sol = solver(&g)
+    let sol = steel_solver(&g)
         .solve_static(&loads(300.0, 0.0, 0.0, 0.0, 0.0), &SolverOptions::default())
         .unwrap();
     let first = sol.balls[0];
@@ -139,7 +127,7 @@ fn b4_pure_axial_load_gives_identical_balls() {
 #[test]
 fn b5_residual_and_stiffness_against_finite_differences() {
     let g = bearing_7008c();
-    let s = solver(&g);
+    let s = steel_solver(&g);
     let options = SolverOptions::default();
     let base = loads(400.0, 150.0, -250.0, 2.0, -1.5);
     let sol = s.solve_static(&base, &options).unwrap();
@@ -192,7 +180,7 @@ fn radial_load_with_clearance_loads_a_sector() {
         first_ball_azimuth: std::f64::consts::FRAC_PI_2,
         ..Default::default()
     };
-    let sol = solver(&g)
+    let sol = steel_solver(&g)
         .solve_static(&loads(0.0, 0.0, 1000.0, 0.0, 0.0), &options)
         .unwrap();
     let loaded = sol.balls.iter().filter(|b| b.inner.load > 0.0).count();
@@ -211,7 +199,7 @@ fn zero_load_inside_clearance_is_reported() {
     let g = bearing_6304();
     // Zero load: the ring is anywhere in the clearance; rolldyn reports the
     // centred position with all balls unloaded and zero stiffness.
-    let sol = solver(&g)
+    let sol = steel_solver(&g)
         .solve_static(&loads(0.0, 0.0, 0.0, 0.0, 0.0), &SolverOptions::default())
         .unwrap();
     assert!(
@@ -230,7 +218,7 @@ fn zero_load_inside_clearance_is_reported() {
         clearance: Clearance::Diametral(-4e-6),
         preload: true,
     };
-    let pre = solver(&BearingGeometry::new(&spec).unwrap())
+    let pre = steel_solver(&BearingGeometry::new(&spec).unwrap())
         .solve_static(&loads(0.0, 0.0, 0.0, 0.0, 0.0), &SolverOptions::default())
         .unwrap();
     assert!(pre.balls.iter().all(|b| b.inner.load > 0.0));

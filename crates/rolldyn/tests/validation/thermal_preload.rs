@@ -18,7 +18,7 @@
 //! from the new touching position); this checks that bookkeeping, the
 //! signs of both growths and the arrangement's role.
 
-use super::common::{bearing_7008c, rel};
+use super::common::{bearing_7008c, rel, series_stiffness};
 use rolldyn::BearingGeometry;
 use rolldyn::contact::HertzModel;
 use rolldyn::material::Material;
@@ -36,18 +36,9 @@ const REFERENCE: f64 = 293.15;
 /// F_a of the rigid-ring geometry (module doc) at groove-centre distances
 /// (R, X).
 fn rigid_ring_thrust(g: &BearingGeometry, radial: f64, axial: f64) -> f64 {
-    let ep = rolldyn::material::effective_modulus(&Material::STEEL_52100, &Material::STEEL_52100);
     let length = radial.hypot(axial);
     let alpha = axial.atan2(radial);
-    let k = |ring| {
-        rolldyn::contact::RacewayContactModel::new(g, ring, ep, HertzModel::Exact)
-            .coefficients(alpha)
-            .unwrap()
-            .stiffness
-    };
-    let kn = ((1.0 / k(rolldyn::RingKind::Inner)).powf(2.0 / 3.0)
-        + (1.0 / k(rolldyn::RingKind::Outer)).powf(2.0 / 3.0))
-    .powf(-1.5);
+    let kn = series_stiffness(g, alpha);
     let delta = length - g.total_curvature() * g.ball_diameter;
     g.ball_count as f64 * kn * delta.powf(1.5) * alpha.sin()
 }
