@@ -264,11 +264,9 @@ mod tests {
     use crate::material::Material;
     use crate::operating::{LoadProfile, Loads, SpeedProfile};
     use crate::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
-    use crate::thermal::bearing::Solid;
     use crate::traction::EhlRheology;
     use crate::traction::TractionModel;
     use crate::traction::ellipse::TractionIntegration;
-    use crate::{BearingGeometry, Clearance, GeometrySpec};
 
     /// A 30×62×16-like bearing with EHL traction, coupled every 0.1 ms over
     /// 0.45 ms: the heat handed to the network equals the dissipated energy
@@ -277,16 +275,7 @@ mod tests {
     /// The 30×62×16-like bearing with EHL traction, coupled every 0.1 ms,
     /// from its Jones–Harris state; with the viscosity law.
     fn coupled_model() -> (BearingModel, Vec<f64>, Walther) {
-        let g = BearingGeometry::new(&GeometrySpec {
-            ball_diameter: 9.525e-3,
-            ball_count: 11,
-            pitch_diameter: 46e-3,
-            inner_groove_curvature: 0.52,
-            outer_groove_curvature: 0.52,
-            clearance: Clearance::FreeContactAngle(30f64.to_radians()),
-            preload: false,
-        })
-        .unwrap();
+        let g = crate::testing::bearing_30x62();
         let steel = Material::STEEL_52100;
         let speed = 9000.0 * std::f64::consts::TAU / 60.0;
         let loads = Loads {
@@ -339,31 +328,7 @@ mod tests {
         };
         let mut model = BearingModel::new(&g, &steel, &steel, HertzModel::Exact, params).unwrap();
         let y0 = model.state_from_equilibrium(&eq);
-        let inputs = ThermalInputs {
-            bore: 30e-3,
-            outside_diameter: 62e-3,
-            width: 16e-3,
-            ball_diameter: g.ball_diameter,
-            pitch_diameter: g.pitch_diameter,
-            ball_count: 11,
-            ball: Solid::STEEL,
-            ring: Solid::STEEL,
-            housing: Solid::STEEL,
-            housing_diameter: 0.1,
-            housing_width: 0.032,
-            shaft_length: 0.016,
-            ambient_temperature: 293.15,
-            oil_inlet_temperature: 313.15,
-            oil_flow: 2e-3 / 60.0,
-            oil_density: 860.0,
-            oil_specific_heat: 1900.0,
-            oil_conductivity: 0.13,
-            oil_kinematic_viscosity: 32e-6,
-            housing_convection: 15.0,
-            shaft_convection: 15.0,
-            oil_convection: None,
-        };
-        let walther = Walther::through((313.15, 0.0275), (373.15, 4.6e-3), 860.0).unwrap();
+        let (inputs, walther) = crate::testing::thermal_30x62();
         let start = [333.15; 10];
         let coupling = ThermalCoupling::new(inputs, Some(walther), 1e-4, start).unwrap();
         model.couple_thermal(coupling, 0.0, &y0);

@@ -160,13 +160,8 @@ mod tests {
     /// A curved patch (R_d = 4 mm) under Coulomb friction.
     fn evaluate(slip: Vector3<f64>, spin: Vector3<f64>) -> crate::traction::TractionResult {
         let patch = ContactPatch {
-            point: Vector3::new(0.0, 0.0, -3e-3),
-            normal: Vector3::new(0.0, 0.0, -1.0),
-            rolling_direction: Vector3::new(0.0, 1.0, 0.0),
-            semi_major: 1.0e-3,
-            semi_minor: 0.2e-3,
-            load: 200.0,
             deformed_radius: 4e-3,
+            ..crate::traction::ellipse::test_patch()
         };
         let law = ModifiedCoulomb {
             friction: 0.1,

@@ -118,15 +118,7 @@ pub(super) mod tests {
 
     /// The default case's EHL rheology (also the traction module's batch test).
     pub(crate) fn law() -> EhlRheology {
-        EhlRheology {
-            eyring_stress: 5e6,
-            limiting_shear_coefficient: 0.08,
-            lubricant: Lubricant {
-                viscosity: 0.0467,
-                pressure_viscosity: 2.2e-8,
-                pressure_model: Default::default(),
-            },
-        }
+        crate::testing::ehl_7008c()
     }
 
     #[test]

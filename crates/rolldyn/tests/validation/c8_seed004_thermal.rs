@@ -11,7 +11,7 @@
 //! And one cross-check: the quasi-static and dynamic hysteresis of the same
 //! Jones–Harris state agree (the same law, Lei et al. 2023 eq 21 / Harris), 1 %.
 
-use super::common::{bearing_7008c, dynamics_7008c};
+use super::common::{bearing_30x62, bearing_7008c, dynamics_7008c, thermal_30x62};
 use rolldyn::contact::HertzModel;
 use rolldyn::dynamics::{BearingModel, DragParameters};
 use rolldyn::integrate::OdeSystem;
@@ -19,25 +19,9 @@ use rolldyn::material::Material;
 use rolldyn::operating::Loads;
 use rolldyn::power::{LocalMethodInputs, local_power_loss};
 use rolldyn::quasistatic::{Conditions, QuasiStaticSolver, RacewayControl, SolverOptions};
-use rolldyn::thermal::ThermalInputs;
-use rolldyn::thermal::bearing::Solid;
 use rolldyn::thermal::coupled::{CoupledOptions, CoupledProblem, Expansion, coupled_steady};
-use rolldyn::{BearingGeometry, Clearance, GeometrySpec};
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
-
-fn bearing() -> BearingGeometry {
-    BearingGeometry::new(&GeometrySpec {
-        ball_diameter: 9.525e-3,
-        ball_count: 11,
-        pitch_diameter: 46e-3,
-        inner_groove_curvature: 0.52,
-        outer_groove_curvature: 0.52,
-        clearance: Clearance::FreeContactAngle(30f64.to_radians()),
-        preload: false,
-    })
-    .unwrap()
-}
 
 fn inputs() -> LocalMethodInputs {
     LocalMethodInputs {
@@ -67,7 +51,7 @@ fn conditions(rpm: f64, axial: f64, radial: f64) -> Conditions {
 
 #[test]
 fn c8_power_trends_of_seed004() {
-    let g = bearing();
+    let g = bearing_30x62();
     let steel = Material::STEEL_52100;
     let qs = QuasiStaticSolver::new(&g, &steel, &steel, HertzModel::Exact).unwrap();
     let power = |rpm, axial, radial| {
@@ -132,38 +116,9 @@ fn c8_hysteresis_same_in_quasistatic_and_dynamic() {
 
 #[test]
 fn c8_outer_ring_warms_with_speed() {
-    let g = bearing();
+    let g = bearing_30x62();
     let steel = Material::STEEL_52100;
-    let thermal = ThermalInputs {
-        bore: 30e-3,
-        outside_diameter: 62e-3,
-        width: 16e-3,
-        ball_diameter: g.ball_diameter,
-        pitch_diameter: g.pitch_diameter,
-        ball_count: 11,
-        ball: Solid::STEEL,
-        ring: Solid::STEEL,
-        housing: Solid::STEEL,
-        housing_diameter: 1.6 * 62e-3,
-        housing_width: 32e-3,
-        shaft_length: 16e-3,
-        ambient_temperature: 293.15,
-        oil_inlet_temperature: 313.15,
-        oil_flow: 2e-3 / 60.0,
-        oil_density: 860.0,
-        oil_specific_heat: 1900.0,
-        oil_conductivity: 0.13,
-        oil_kinematic_viscosity: 32e-6,
-        housing_convection: 15.0,
-        shaft_convection: 15.0,
-        oil_convection: None,
-    };
-    let walther = rolldyn::thermal::Walther::through(
-        (313.15, 32e-6 * 860.0),
-        (373.15, 5.4e-6 * 860.0),
-        860.0,
-    )
-    .unwrap();
+    let (thermal, walther) = thermal_30x62();
     let mut last = 0.0;
     let mut row = Vec::new();
     for rpm in [9000.0, 13_000.0, 17_000.0] {

@@ -398,5 +398,20 @@ impl Sums {
     }
 }
 
+/// A test contact: 1 × 0.2 mm, 200 N, 3 mm below the ball centre at the
+/// origin, rolling along +y, flat.
+#[cfg(test)]
+pub(crate) fn test_patch() -> ContactPatch {
+    ContactPatch {
+        point: Vector3::new(0.0, 0.0, -3e-3),
+        normal: Vector3::new(0.0, 0.0, -1.0),
+        rolling_direction: Vector3::new(0.0, 1.0, 0.0),
+        semi_major: 1.0e-3,
+        semi_minor: 0.2e-3,
+        load: 200.0,
+        deformed_radius: f64::INFINITY,
+    }
+}
+
 #[cfg(test)]
 mod tests;

@@ -2,15 +2,7 @@ use super::*;
 use crate::traction::ContactConditions;
 
 fn patch() -> ContactPatch {
-    ContactPatch {
-        point: Vector3::new(0.0, 0.0, -3e-3),
-        normal: Vector3::new(0.0, 0.0, -1.0),
-        rolling_direction: Vector3::new(0.0, 1.0, 0.0),
-        semi_major: 1.0e-3,
-        semi_minor: 0.2e-3,
-        load: 200.0,
-        deformed_radius: f64::INFINITY,
-    }
+    crate::traction::ellipse::test_patch()
 }
 
 fn rolling(speed: f64) -> ContactConditions {
